@@ -1,0 +1,201 @@
+/**
+ * The thin geometry facade: union, difference, intersection, offset and open-path clipping over
+ * Clipper2 (clipper2-ts), in integer micrometres. Nothing else in Strata imports the clipping library.
+ */
+import {
+  Clipper64,
+  ClipperOffset,
+  ClipType,
+  EndType,
+  FillRule,
+  JoinType,
+  PolyTree64,
+  Clipper,
+} from 'clipper2-ts';
+import type { PolyPath64 } from 'clipper2-ts';
+import type { Bounds, ExPolygon, Polygon, Polyline, Pt } from './types.js';
+
+export type Join = 'miter' | 'round' | 'square';
+
+/** Arc tolerance for round joins, µm: chord error allowed when offsetting curves. */
+const ARC_TOLERANCE_UM = 5;
+const MITER_LIMIT = 3;
+
+function joinType(join: Join): JoinType {
+  return join === 'round' ? JoinType.Round : join === 'square' ? JoinType.Square : JoinType.Miter;
+}
+
+/** Rings of a list of islands, as one flat list for the clipper (outer CCW, holes CW). */
+export function flatten(areas: readonly ExPolygon[]): Polygon[] {
+  const out: Polygon[] = [];
+  for (const a of areas) {
+    out.push(a.outer);
+    for (const h of a.holes) out.push(h);
+  }
+  return out;
+}
+
+function collectTree(node: PolyPath64, out: ExPolygon[]): void {
+  for (let i = 0; i < node.count; i++) {
+    const outer = node.child(i) as PolyPath64;
+    const holes: Polygon[] = [];
+    for (let j = 0; j < outer.count; j++) {
+      const hole = outer.child(j) as PolyPath64;
+      holes.push(hole.poly as Polygon);
+      collectTree(hole, out);
+    }
+    out.push({ outer: outer.poly as Polygon, holes });
+  }
+}
+
+function run(type: ClipType, subject: readonly Polygon[], clip: readonly Polygon[], rule: FillRule): ExPolygon[] {
+  const c = new Clipper64();
+  if (subject.length) c.addSubject(subject as Polygon[]);
+  if (clip.length) c.addClip(clip as Polygon[]);
+  const tree = new PolyTree64();
+  c.execute(type, rule, tree);
+  const out: ExPolygon[] = [];
+  collectTree(tree, out);
+  return out;
+}
+
+/** Union of rings with the non-zero rule (overlapping islands merge). */
+export function unionRings(rings: readonly Polygon[]): ExPolygon[] {
+  return run(ClipType.Union, rings, [], FillRule.NonZero);
+}
+
+/** Union of rings with the even-odd rule: nested rings alternate solid/hole (raw slice loops). */
+export function evenOddAreas(rings: readonly Polygon[]): ExPolygon[] {
+  return run(ClipType.Union, rings, [], FillRule.EvenOdd);
+}
+
+export function union(a: readonly ExPolygon[], b: readonly ExPolygon[] = []): ExPolygon[] {
+  return run(ClipType.Union, flatten(a), flatten(b), FillRule.NonZero);
+}
+
+export function difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
+  if (a.length === 0) return [];
+  if (b.length === 0) return a.slice();
+  return run(ClipType.Difference, flatten(a), flatten(b), FillRule.NonZero);
+}
+
+export function intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
+  if (a.length === 0 || b.length === 0) return [];
+  return run(ClipType.Intersection, flatten(a), flatten(b), FillRule.NonZero);
+}
+
+/** Grow (delta > 0) or shrink (delta < 0) areas by delta µm. */
+export function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join = 'miter'): ExPolygon[] {
+  if (areas.length === 0) return [];
+  if (deltaUm === 0) return areas.slice();
+  const co = new ClipperOffset(MITER_LIMIT, ARC_TOLERANCE_UM);
+  co.addPaths(flatten(areas), joinType(join), EndType.Polygon);
+  const tree = new PolyTree64();
+  co.execute(deltaUm, tree);
+  const out: ExPolygon[] = [];
+  collectTree(tree, out);
+  return out;
+}
+
+/** Open-then-close (shrink then grow): removes features narrower than 2·radius µm. */
+export function opening(areas: readonly ExPolygon[], radiusUm: number): ExPolygon[] {
+  return offset(offset(areas, -radiusUm), radiusUm);
+}
+
+/** Clip open polylines to areas: the parts inside. */
+export function clipLines(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
+  if (lines.length === 0 || areas.length === 0) return [];
+  const c = new Clipper64();
+  c.addOpenSubject(lines as Polyline[]);
+  c.addClip(flatten(areas));
+  const closed: Polygon[] = [];
+  const open: Polyline[] = [];
+  c.execute(ClipType.Intersection, FillRule.NonZero, closed, open);
+  return open;
+}
+
+/** Clip open polylines to areas: the parts outside. */
+export function clipLinesOutside(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
+  if (lines.length === 0) return [];
+  if (areas.length === 0) return lines.slice();
+  const c = new Clipper64();
+  c.addOpenSubject(lines as Polyline[]);
+  c.addClip(flatten(areas));
+  const closed: Polygon[] = [];
+  const open: Polyline[] = [];
+  c.execute(ClipType.Difference, FillRule.NonZero, closed, open);
+  return open;
+}
+
+/** Signed area of a ring in µm² (positive = counter-clockwise). */
+export function ringArea(ring: readonly Pt[]): number {
+  let a = 0;
+  const n = ring.length;
+  for (let i = 0, j = n - 1; i < n; j = i++) a += (ring[j].x + ring[i].x) * (ring[j].y - ring[i].y);
+  return -a / 2;
+}
+
+/** Area of islands (outer minus holes) in µm². */
+export function area(areas: readonly ExPolygon[]): number {
+  let a = 0;
+  for (const e of areas) {
+    a += Math.abs(ringArea(e.outer));
+    for (const h of e.holes) a -= Math.abs(ringArea(h));
+  }
+  return a;
+}
+
+/** Simplify rings: drop vertices closer than toleranceUm to the line through their neighbours. */
+export function simplifyRings(rings: readonly Polygon[], toleranceUm: number): Polygon[] {
+  const out: Polygon[] = [];
+  for (const r of rings) {
+    const s = Clipper.simplifyPath(r as Polygon, toleranceUm, true) as Polygon;
+    if (s.length >= 3) out.push(s);
+  }
+  return out;
+}
+
+export function simplifyAreas(areas: readonly ExPolygon[], toleranceUm: number): ExPolygon[] {
+  const out: ExPolygon[] = [];
+  for (const a of areas) {
+    const outer = Clipper.simplifyPath(a.outer, toleranceUm, true) as Polygon;
+    if (outer.length < 3) continue;
+    const holes = simplifyRings(a.holes, toleranceUm);
+    out.push({ outer, holes });
+  }
+  return out;
+}
+
+export function boundsOf(areas: readonly ExPolygon[]): Bounds {
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (const a of areas) {
+    for (const p of a.outer) {
+      if (p.x < minX) minX = p.x;
+      if (p.y < minY) minY = p.y;
+      if (p.x > maxX) maxX = p.x;
+      if (p.y > maxY) maxY = p.y;
+    }
+  }
+  return { minX, minY, maxX, maxY };
+}
+
+/** Whether a point lies inside a ring (even-odd; on-edge counts as inside). */
+export function pointInRing(p: Pt, ring: readonly Pt[]): boolean {
+  let inside = false;
+  const n = ring.length;
+  for (let i = 0, j = n - 1; i < n; j = i++) {
+    const a = ring[i], b = ring[j];
+    if ((a.y > p.y) !== (b.y > p.y)) {
+      const x = a.x + ((p.y - a.y) * (b.x - a.x)) / (b.y - a.y);
+      if (p.x < x) inside = !inside;
+    }
+  }
+  return inside;
+}
+
+/** Whether a point lies inside an island (inside the outer ring and in no hole). */
+export function pointInArea(p: Pt, a: ExPolygon): boolean {
+  if (!pointInRing(p, a.outer)) return false;
+  for (const h of a.holes) if (pointInRing(p, h)) return false;
+  return true;
+}

@@ -1,0 +1,43 @@
+/**
+ * Plain-data 2D geometry. Every polygon that goes through clipping is in integer
+ * micrometres (µm); a `Pt` is a plain object so it crosses worker boundaries without a codec.
+ */
+
+/** Micrometres per millimetre: the one integer scale used for all clipping. */
+export const UM_PER_MM = 1000;
+
+/** A point in integer micrometres. */
+export interface Pt {
+  x: number;
+  y: number;
+}
+
+/** A closed ring (last point not repeated). Outer rings counter-clockwise, holes clockwise. */
+export type Polygon = Pt[];
+
+/** An open path (polyline). */
+export type Polyline = Pt[];
+
+/** One connected area: an outer ring and the holes inside it. */
+export interface ExPolygon {
+  outer: Polygon;
+  holes: Polygon[];
+}
+
+/** Axis-aligned bounds in µm. */
+export interface Bounds {
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+}
+
+/** Convert millimetres to integer micrometres. */
+export function mmToUm(mm: number): number {
+  return Math.round(mm * UM_PER_MM);
+}
+
+/** Convert micrometres to millimetres. */
+export function umToMm(um: number): number {
+  return um / UM_PER_MM;
+}

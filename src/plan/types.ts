@@ -1,0 +1,82 @@
+/**
+ * The structured toolpath plan between planning and G-code text. Layers hold ordered steps: extrusions
+ * with a feature type, width, height and speed, and travels (with retraction and combing waypoints).
+ * Cooling, time and filament estimates are passes over this plan; the G-code writer prints it last.
+ * Coordinates are integer µm in bed space; widths, heights and Z are mm; speeds mm/s.
+ */
+import type { Pt } from '../geometry/types.js';
+
+export const FEATURE_TYPES = [
+  'WALL-OUTER',
+  'WALL-INNER',
+  'SKIN',
+  'FILL',
+  'SUPPORT',
+  'SKIRT',
+  'BRIM',
+  'RAFT',
+] as const;
+/** Feature types, named as Cura's `;TYPE:` markers so viewers understand them. */
+export type FeatureType = (typeof FEATURE_TYPES)[number];
+
+/** An extrusion along `points` (a closed loop returns to its first point when `closed`). */
+export interface ExtrudeStep {
+  kind: 'extrude';
+  feature: FeatureType;
+  points: Pt[];
+  closed: boolean;
+  /** Line width, mm. */
+  width: number;
+  /** Layer height the line is laid at, mm (first layer may differ). */
+  height: number;
+  /** Feed rate, mm/s (after cooling slow-down). */
+  speed: number;
+  /** Flow multiplier (1 = nominal). */
+  flow: number;
+}
+
+/** A travel to `points[points.length-1]` through the given waypoints (combing). */
+export interface TravelStep {
+  kind: 'travel';
+  points: Pt[];
+  /** Retract before and prime after this travel. */
+  retract: boolean;
+  /** Lift Z by this much during the travel, mm (0 = no hop). Only with retract. */
+  zHop: number;
+  /** Travel speed, mm/s. */
+  speed: number;
+}
+
+export type PlanStep = ExtrudeStep | TravelStep;
+
+export interface LayerPlan {
+  index: number;
+  /** Nozzle Z for this layer, mm. */
+  z: number;
+  /** Layer thickness, mm. */
+  height: number;
+  /** Part-cooling fan, 0..1, set at the start of the layer. */
+  fan: number;
+  /** Nozzle temperature to set at the start of the layer (°C), when it changes. */
+  nozzleTemperature?: number;
+  /** Bed temperature to set at the start of the layer (°C), when it changes. */
+  bedTemperature?: number;
+  steps: PlanStep[];
+}
+
+export interface PrintPlan {
+  layers: LayerPlan[];
+  /** Bounds of all extrusions, mm. */
+  bounds: { minX: number; minY: number; minZ: number; maxX: number; maxY: number; maxZ: number };
+}
+
+/** Results of the estimate passes over a plan. */
+export interface PlanEstimate {
+  printTimeSeconds: number;
+  /** Filament length, mm. */
+  filamentMm: number;
+  /** Filament weight, g. */
+  filamentGrams: number;
+  /** Per layer: estimated seconds. */
+  layerSeconds: number[];
+}

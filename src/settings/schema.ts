@@ -1,0 +1,199 @@
+/**
+ * The one settings schema. Each setting is declared once: key, type, unit, default, range, description
+ * and the stage it affects. Options objects, CLI flags, JSON profiles and presets are all validated
+ * against it and resolved once into a frozen typed config (see resolve.ts).
+ * Key names follow the seeds' library where the concept is the same.
+ */
+import { PATTERN_IDS } from '../infill/types.js';
+
+export type Unit = 'mm' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '';
+export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' | 'adhesion' | 'travel' | 'cooling' | 'gcode' | 'runtime';
+
+interface Base {
+  unit: Unit;
+  description: string;
+  stage: Stage;
+}
+export interface NumberDef extends Base {
+  type: 'number' | 'integer';
+  default: number | null;
+  min: number;
+  max: number;
+  /** When true the value may be null, meaning "derived": the description says from what. */
+  nullable?: boolean;
+}
+export interface BooleanDef extends Base {
+  type: 'boolean';
+  default: boolean;
+}
+export interface EnumDef extends Base {
+  type: 'enum';
+  default: string;
+  values: readonly string[];
+}
+export interface StringDef extends Base {
+  type: 'string';
+  default: string;
+  /** Longest accepted value, characters. */
+  maxLength: number;
+}
+export type SettingDef = NumberDef | BooleanDef | EnumDef | StringDef;
+
+const MARLIN_START = [
+  'G90 ; absolute positioning',
+  'M82 ; absolute extrusion (overridden below for relative E)',
+  'M140 S{firstLayerBedTemperature} ; bed heat, no wait',
+  'M104 S{firstLayerNozzleTemperature} ; nozzle heat, no wait',
+  'G28 ; home all axes',
+  'M190 S{firstLayerBedTemperature} ; wait for bed',
+  'M109 S{firstLayerNozzleTemperature} ; wait for nozzle',
+  'G92 E0',
+  'G1 Z2.0 F3000',
+  'G1 X0.1 Y20 Z0.3 F5000.0 ; prime line start',
+  'G1 X0.1 Y200.0 Z0.3 F1500.0 E15',
+  'G1 X0.4 Y200.0 Z0.3 F5000.0',
+  'G1 X0.4 Y20 Z0.3 F1500.0 E30',
+  'G92 E0',
+  'G1 Z2.0 F3000',
+].join('\n');
+
+const MARLIN_END = [
+  'G91 ; relative positioning',
+  'G1 E-2 F2700 ; retract',
+  'G1 Z10 F3000 ; lift',
+  'G90 ; absolute positioning',
+  'G1 X0 Y{buildPlateLength} F3000 ; present the print',
+  'M106 S0 ; fan off',
+  'M104 S0 ; nozzle off',
+  'M140 S0 ; bed off',
+  'M84 X Y E ; motors off',
+].join('\n');
+
+const num = (def: number, min: number, max: number, unit: Unit, stage: Stage, description: string) =>
+  ({ type: 'number', default: def, min, max, unit, stage, description, nullable: false }) as NumberDef & { nullable: false };
+const int = (def: number, min: number, max: number, unit: Unit, stage: Stage, description: string) =>
+  ({ type: 'integer', default: def, min, max, unit, stage, description, nullable: false }) as NumberDef & { nullable: false };
+/** A number whose empty (null) default is derived from other settings, as its description says. */
+const optNum = (min: number, max: number, unit: Unit, stage: Stage, description: string, type: 'number' | 'integer' = 'number') =>
+  ({ type, default: null, min, max, unit, stage, description, nullable: true }) as NumberDef & { nullable: true };
+const bool = (def: boolean, stage: Stage, description: string): BooleanDef => ({ type: 'boolean', default: def, unit: '', stage, description });
+const enm = <V extends readonly string[]>(values: V, def: V[number], stage: Stage, description: string) =>
+  ({ type: 'enum', default: def, values, unit: '', stage, description }) as const;
+const str = (def: string, stage: Stage, description: string, maxLength = 65536): StringDef => ({
+  type: 'string',
+  default: def,
+  unit: '',
+  stage,
+  description,
+  maxLength,
+});
+
+export const SCHEMA = {
+  // ── machine ──────────────────────────────────────────────────────────────────
+  buildPlateWidth: num(220, 10, 2000, 'mm', 'machine', 'Build plate size in X.'),
+  buildPlateLength: num(220, 10, 2000, 'mm', 'machine', 'Build plate size in Y.'),
+  buildVolumeHeight: num(250, 10, 2000, 'mm', 'machine', 'Largest printable Z.'),
+  originAtCenter: bool(false, 'machine', 'Bed coordinates have (0,0) at the plate centre (delta printers) instead of the front-left corner.'),
+  heatedBed: bool(true, 'machine', 'The printer has a heated bed (bed temperature commands are written).'),
+  nozzleDiameter: num(0.4, 0.1, 2, 'mm', 'machine', 'Nozzle orifice diameter.'),
+  filamentDiameter: num(1.75, 1, 3.5, 'mm', 'machine', 'Filament diameter.'),
+  gcodeFlavor: enm(['marlin', 'klipper', 'reprap'] as const, 'marlin', 'gcode', 'G-code dialect.'),
+  extruderMode: enm(['absolute', 'relative'] as const, 'absolute', 'gcode', 'Absolute (M82) or relative (M83) extrusion distances.'),
+  acceleration: num(500, 10, 100000, 'mm/s²', 'machine', 'Print acceleration used by the time estimate (and written as M204 when set by a preset).'),
+  cornerVelocity: num(8, 0.1, 100, 'mm/s', 'machine', 'Speed change allowed at a sharp corner without slowing (jerk / square-corner velocity), for the time estimate.'),
+  maxSpeed: num(300, 5, 2000, 'mm/s', 'machine', 'Fastest XY feed rate the printer accepts; faster requested speeds are capped.'),
+  startGcode: str(MARLIN_START, 'gcode', 'G-code before the print. {key} placeholders are replaced by setting values (e.g. {nozzleTemperature}).'),
+  endGcode: str(MARLIN_END, 'gcode', 'G-code after the print, with the same {key} placeholders.'),
+
+  // ── layers and lines ─────────────────────────────────────────────────────────
+  layerHeight: num(0.2, 0.02, 1.2, 'mm', 'slice', 'Thickness of every layer after the first.'),
+  firstLayerHeight: num(0.2, 0.02, 1.2, 'mm', 'slice', 'Thickness of the first layer, printed at Z = firstLayerHeight.'),
+  lineWidth: optNum(0.1, 3, 'mm', 'walls', 'Extrusion line width. Empty (null) = nozzleDiameter.'),
+  firstLayerLineWidth: optNum(0.1, 3, 'mm', 'walls', 'Line width on the first layer. Empty (null) = lineWidth.'),
+  meshTolerance: num(0.01, 0.0005, 0.5, 'mm', 'slice', 'Outlines are simplified to this deviation before offsetting.'),
+  center: bool(true, 'mesh', 'Place the models (kept together) on the bed centre; false keeps their coordinates.'),
+
+  // ── walls ────────────────────────────────────────────────────────────────────
+  shellWallThickness: num(0.8, 0, 20, 'mm', 'walls', 'Total wall thickness; the wall count is this over the line width, rounded.'),
+  wallCount: optNum(0, 50, 'count', 'walls', 'Number of walls; overrides shellWallThickness when set.', 'integer'),
+  wallOrder: enm(['inner-first', 'outer-first'] as const, 'inner-first', 'walls', 'Print inner walls before the outer wall (better surface) or the outer wall first (better dimensions).'),
+  seamPosition: enm(['aligned', 'nearest', 'rear', 'random'] as const, 'aligned', 'walls', 'Where each wall loop starts: aligned on a sharp corner, nearest to the nozzle, at the rear, or random (seeded).'),
+  randomSeed: int(1, 0, 2147483647, '', 'walls', 'Seed for random seams: the same seed gives the same G-code.'),
+
+  // ── skin ─────────────────────────────────────────────────────────────────────
+  shellSkinThickness: num(0.8, 0, 20, 'mm', 'skin', 'Thickness of solid top and bottom skin; the layer count is this over the layer height, rounded up.'),
+  topSkinThickness: optNum(0, 20, 'mm', 'skin', 'Top skin thickness. Empty (null) = shellSkinThickness.'),
+  bottomSkinThickness: optNum(0, 20, 'mm', 'skin', 'Bottom skin thickness. Empty (null) = shellSkinThickness.'),
+  skinWall: bool(true, 'skin', 'Print one perimeter around each skin region before its lines.'),
+  skinOverlap: num(15, 0, 100, '%', 'skin', 'How far skin lines reach into the innermost wall, % of the line width.'),
+  skinAngle: num(45, -180, 180, '°', 'skin', 'Direction of skin lines on even layers; odd layers are turned 90°.'),
+
+  // ── infill ───────────────────────────────────────────────────────────────────
+  infillDensity: num(20, 0, 100, '%', 'infill', 'Sparse infill density: extruded area over region area.'),
+  infillPattern: enm(PATTERN_IDS, 'grid', 'infill', 'Sparse infill pattern.'),
+  infillPatternCentering: enm(['object', 'global'] as const, 'object', 'infill', 'Centre the pattern on each object or on the build plate.'),
+  infillAngle: num(45, -180, 180, '°', 'infill', 'Base direction of the infill lines.'),
+  infillOverlap: num(15, 0, 100, '%', 'infill', 'How far infill reaches into the innermost wall, % of the line width.'),
+  infillConnect: bool(true, 'infill', 'Join infill line ends along the region boundary where that avoids a travel.'),
+
+  // ── speeds ───────────────────────────────────────────────────────────────────
+  perimeterSpeed: num(30, 1, 1000, 'mm/s', 'walls', 'Outer wall speed.'),
+  innerWallSpeed: num(50, 1, 1000, 'mm/s', 'walls', 'Inner wall speed.'),
+  skinSpeed: num(40, 1, 1000, 'mm/s', 'skin', 'Top/bottom skin speed.'),
+  infillSpeed: num(60, 1, 1000, 'mm/s', 'infill', 'Sparse infill speed.'),
+  firstLayerSpeed: num(20, 1, 1000, 'mm/s', 'walls', 'Speed of every extrusion on the first layer.'),
+  travelSpeed: num(150, 1, 2000, 'mm/s', 'travel', 'Travel speed.'),
+  firstLayerTravelSpeed: num(100, 1, 2000, 'mm/s', 'travel', 'Travel speed on the first layer.'),
+
+  // ── travel and retraction ────────────────────────────────────────────────────
+  combing: bool(true, 'travel', 'Keep travels inside the current island, around holes, where possible.'),
+  retractionEnabled: bool(true, 'travel', 'Retract filament before travels that leave the island or are long.'),
+  retractionDistance: num(5, 0, 20, 'mm', 'travel', 'Filament pulled back per retraction.'),
+  retractionSpeed: num(45, 1, 200, 'mm/s', 'travel', 'Retraction and prime speed.'),
+  retractionExtraPrime: num(0, 0, 5, 'mm', 'travel', 'Extra filament pushed after a retraction.'),
+  retractionMinTravel: num(1.5, 0, 100, 'mm', 'travel', 'Travels shorter than this inside one island do not retract.'),
+  retractOnLayerChange: bool(true, 'travel', 'Retract when moving to the next layer.'),
+  zHop: num(0, 0, 10, 'mm', 'travel', 'Lift the nozzle by this much during retracted travels (0 = off).'),
+
+  // ── cooling and temperature ──────────────────────────────────────────────────
+  fanSpeed: num(100, 0, 100, '%', 'cooling', 'Part-cooling fan from the second layer on.'),
+  firstLayerFanSpeed: num(0, 0, 100, '%', 'cooling', 'Part-cooling fan on the first layer.'),
+  minLayerTime: num(10, 0, 600, 's', 'cooling', 'Slow a layer down so it takes at least this long.'),
+  minPrintSpeed: num(10, 1, 1000, 'mm/s', 'cooling', 'Never slow down below this for minimum layer time.'),
+  nozzleTemperature: num(200, 0, 450, '°C', 'cooling', 'Nozzle temperature from the second layer on.'),
+  firstLayerNozzleTemperature: optNum(0, 450, '°C', 'cooling', 'Nozzle temperature on the first layer. Empty (null) = nozzleTemperature.'),
+  bedTemperature: num(60, 0, 150, '°C', 'cooling', 'Bed temperature from the second layer on.'),
+  firstLayerBedTemperature: optNum(0, 150, '°C', 'cooling', 'Bed temperature on the first layer. Empty (null) = bedTemperature.'),
+
+  // ── filament ─────────────────────────────────────────────────────────────────
+  filamentDensity: num(1.24, 0.5, 5, 'g/cm³', 'gcode', 'Filament density, for the weight estimate.'),
+  flowRate: num(100, 10, 300, '%', 'gcode', 'Extrusion multiplier.'),
+
+  // ── adhesion ─────────────────────────────────────────────────────────────────
+  adhesionType: enm(['skirt', 'brim', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, or none.'),
+  skirtLoops: int(1, 1, 20, 'count', 'adhesion', 'Skirt loops.'),
+  skirtDistance: num(3, 0, 50, 'mm', 'adhesion', 'Gap between the skirt and the print.'),
+  brimWidth: num(8, 0, 50, 'mm', 'adhesion', 'Brim width.'),
+
+  // ── runtime ──────────────────────────────────────────────────────────────────
+  threads: int(0, 0, 256, 'count', 'runtime', 'Worker threads for the per-layer stages (0 = one per core). The G-code is the same for any count.'),
+} as const satisfies Record<string, SettingDef>;
+
+export type SettingKey = keyof typeof SCHEMA;
+export const SETTING_KEYS = Object.keys(SCHEMA) as SettingKey[];
+
+type ValueOfDef<D> = D extends { type: 'enum'; values: readonly (infer V)[] }
+  ? V
+  : D extends { type: 'boolean' }
+    ? boolean
+    : D extends { type: 'string' }
+      ? string
+      : D extends { nullable: true }
+        ? number | null
+        : number;
+
+/** Every setting with its value type, as given by a user (before derivation). */
+export type Settings = { -readonly [K in SettingKey]: ValueOfDef<(typeof SCHEMA)[K]> };
+
+/** Options as a caller passes them: any subset, plus preset names. */
+export type SliceOptions = Partial<Settings> & { printer?: string; filament?: string };
