@@ -1,0 +1,26 @@
+/**
+ * The error Strata throws for bad input: a broken or hostile file, a nonsense setting, a model that
+ * does not fit. The CLI prints its message on one line, without a stack trace.
+ */
+export type ErrorCode =
+  | 'BAD_MESH'
+  | 'BAD_FILE'
+  | 'UNSUPPORTED_FORMAT'
+  | 'BAD_SETTING'
+  | 'UNKNOWN_SETTING'
+  | 'UNKNOWN_PRESET'
+  | 'DOES_NOT_FIT'
+  | 'EMPTY_MODEL'
+  | 'BAD_SHADER'
+  | 'BAD_IMAGE'
+  | 'LIMIT_EXCEEDED'
+  | 'CANCELLED';
+
+export class StrataError extends Error {
+  readonly code: ErrorCode;
+  constructor(code: ErrorCode, message: string) {
+    super(message);
+    this.name = 'StrataError';
+    this.code = code;
+  }
+}
