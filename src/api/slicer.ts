@@ -1,0 +1,195 @@
+/**
+ * The library API: `new Slicer(options)`, chainable `setX`/`getX` for every setting, and
+ * `await slicer.slice(input)` → `{ gcode, stats, warnings }`, or `sliceToSink` to stream the G-code.
+ */
+import { StrataError } from '../errors.js';
+import { mergeObjects, placeOnBed, prepareMesh, toMeshObjects } from '../mesh/index.js';
+import type { Mesh, MeshReport } from '../mesh/types.js';
+import { runPipeline, type Progress } from '../pipeline/run.js';
+import { SCHEMA, SETTING_KEYS, type SettingKey, type Settings, type SliceOptions } from '../settings/schema.js';
+import { checkKey, resolveConfig, validateValue, type Config } from '../settings/resolve.js';
+
+export interface SliceStats {
+  layers: number;
+  printTimeSeconds: number;
+  filamentMm: number;
+  filamentGrams: number;
+  triangles: number;
+  /** Wall-clock seconds the slice took. */
+  sliceSeconds: number;
+  /** Extents of the printed part, mm. */
+  bounds: { minX: number; minY: number; minZ: number; maxX: number; maxY: number; maxZ: number };
+  threads: number;
+}
+
+export interface SliceResult {
+  gcode: string;
+  stats: SliceStats;
+  warnings: string[];
+}
+
+export interface SliceCallOptions {
+  onProgress?: (p: Progress) => void;
+  signal?: AbortSignal;
+}
+
+export interface PreparedModel {
+  mesh: Mesh;
+  report: MeshReport;
+  /** Translation applied to place the model on the bed, mm. */
+  offset: [number, number, number];
+  warnings: string[];
+}
+
+/** Load, repair-check and place whatever the caller passed (bytes, text, three.js objects, arrays, or a list of them). */
+export function prepareModel(input: unknown, cfg: Config): PreparedModel {
+  const objects = toMeshObjects(input);
+  if (objects.length === 0) throw new StrataError('EMPTY_MODEL', 'the input holds no mesh');
+  const merged = mergeObjects(objects);
+  const { mesh, report } = prepareMesh(merged);
+  if (mesh.indices.length === 0) throw new StrataError('EMPTY_MODEL', 'the model has no printable triangles');
+  const placed = placeOnBed(mesh, {
+    center: cfg.center,
+    bedWidth: cfg.buildPlateWidth,
+    bedLength: cfg.buildPlateLength,
+    bedHeight: cfg.buildVolumeHeight,
+    originAtCenter: cfg.originAtCenter,
+  });
+  const warnings = [...report.warnings];
+  if (objects.length > 1) warnings.unshift(`${objects.length} objects placed together on the plate`);
+  return { mesh: placed.mesh, report, offset: placed.offset, warnings };
+}
+
+async function coreCount(): Promise<number> {
+  const nav = (globalThis as { navigator?: { hardwareConcurrency?: number } }).navigator;
+  if (typeof process !== 'undefined' && process.versions?.node) {
+    const os = await import('node:os');
+    return os.availableParallelism?.() ?? os.cpus().length;
+  }
+  return nav?.hardwareConcurrency ?? 1;
+}
+
+function meshBounds(mesh: Mesh): { min: [number, number, number]; max: [number, number, number] } {
+  const p = mesh.positions;
+  const min: [number, number, number] = [Infinity, Infinity, Infinity];
+  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < p.length; i += 3) {
+    for (let k = 0; k < 3; k++) {
+      const v = p[i + k];
+      if (v < min[k]) min[k] = v;
+      if (v > max[k]) max[k] = v;
+    }
+  }
+  return { min, max };
+}
+
+type Accessors = { [K in SettingKey as `set${Capitalize<K>}`]: (value: Settings[K]) => Slicer } & {
+  [K in SettingKey as `get${Capitalize<K>}`]: () => Settings[K];
+};
+
+// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
+export interface Slicer extends Accessors {}
+
+// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
+export class Slicer {
+  #options: SliceOptions;
+  #config: Config;
+
+  constructor(options: SliceOptions = {}) {
+    this.#config = resolveConfig(options);
+    this.#options = { ...options };
+  }
+
+  /** The resolved, frozen configuration (presets and defaults applied). */
+  get config(): Config {
+    return this.#config;
+  }
+
+  /** Set one setting by key (validated now); chainable. */
+  set<K extends SettingKey>(key: K, value: Settings[K]): this {
+    checkKey(key);
+    validateValue(key, value);
+    const next = { ...this.#options, [key]: value };
+    this.#config = resolveConfig(next);
+    this.#options = next;
+    return this;
+  }
+
+  /** The resolved value of one setting. */
+  get<K extends SettingKey>(key: K): Settings[K] {
+    checkKey(key);
+    return this.#config[key] as Settings[K];
+  }
+
+  /** Choose a printer preset (validated now); chainable. */
+  setPrinter(name: string): this {
+    const next = { ...this.#options, printer: name };
+    this.#config = resolveConfig(next);
+    this.#options = next;
+    return this;
+  }
+
+  /** Choose a filament preset (validated now); chainable. */
+  setFilament(name: string): this {
+    const next = { ...this.#options, filament: name };
+    this.#config = resolveConfig(next);
+    this.#options = next;
+    return this;
+  }
+
+  /** Slice and return the whole G-code as a string. */
+  async slice(input: unknown, opts: SliceCallOptions = {}): Promise<SliceResult> {
+    const chunks: string[] = [];
+    const { stats, warnings } = await this.sliceToSink(input, (c) => chunks.push(c), opts);
+    return { gcode: chunks.join(''), stats, warnings };
+  }
+
+  /** Slice and stream the G-code to `sink` in chunks. */
+  async sliceToSink(input: unknown, sink: (chunk: string) => void, opts: SliceCallOptions = {}): Promise<{ stats: SliceStats; warnings: string[] }> {
+    const t0 = performance.now();
+    const cfg = this.#config;
+    const model = prepareModel(input, cfg);
+    const b = meshBounds(model.mesh);
+    const threads = cfg.threads > 0 ? cfg.threads : await coreCount();
+    const run = await runPipeline(model.mesh, cfg, {
+      threads,
+      sink,
+      onProgress: opts.onProgress,
+      signal: opts.signal,
+      objectCenter: [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2],
+      height: b.max[2],
+    });
+    const stats: SliceStats = {
+      layers: run.layers,
+      printTimeSeconds: run.estimate.printTimeSeconds,
+      filamentMm: run.estimate.filamentMm,
+      filamentGrams: run.estimate.filamentGrams,
+      triangles: model.mesh.indices.length / 3,
+      sliceSeconds: (performance.now() - t0) / 1000,
+      bounds: run.plan.bounds,
+      threads,
+    };
+    return { stats, warnings: model.warnings };
+  }
+}
+
+for (const key of SETTING_KEYS) {
+  const cap = key[0].toUpperCase() + key.slice(1);
+  Object.defineProperty(Slicer.prototype, `set${cap}`, {
+    value: function (this: Slicer, v: unknown) {
+      return this.set(key, v as never);
+    },
+    writable: false,
+    enumerable: false,
+  });
+  Object.defineProperty(Slicer.prototype, `get${cap}`, {
+    value: function (this: Slicer) {
+      return this.get(key);
+    },
+    writable: false,
+    enumerable: false,
+  });
+}
+
+/** Every setting's definition, for UIs and documentation. */
+export const settingsSchema = SCHEMA;

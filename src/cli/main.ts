@@ -1,0 +1,194 @@
+#!/usr/bin/env node
+/**
+ * The `strata` command: slice, info, presets, settings. Bad input gives a one-line error and a
+ * non-zero exit, never a stack trace (set STRATA_DEBUG=1 to see one).
+ */
+import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
+import { basename, extname } from 'node:path';
+import { Slicer } from '../api/slicer.js';
+import { StrataError } from '../errors.js';
+import { loadModelBytes, prepareMesh, mergeObjects } from '../mesh/index.js';
+import { VERSION } from '../pipeline/run.js';
+import { listPresets } from '../settings/presets/index.js';
+import { SCHEMA, SETTING_KEYS, type SliceOptions } from '../settings/schema.js';
+import { parseArgs, kebab, type ParsedArgs } from './args.js';
+import { progressBar } from './progress.js';
+
+const HELP = `strata ${VERSION}: a fast FFF slicer
+
+Usage:
+  strata slice MODEL... [-o OUT.gcode] [options]   slice STL/OBJ/3MF models (- reads stdin) to G-code
+  strata info MODEL...                             triangles, size, volume, open and non-manifold edges
+  strata presets                                   list printer and filament presets
+  strata settings                                  list every setting with its flag, unit, default and range
+
+Slice options:
+  -o, --output FILE      where to write G-code (- for stdout; default: MODEL.gcode)
+  --printer NAME         printer preset (default creality-ender-3)
+  --filament NAME        filament preset (default pla)
+  --config FILE.json     settings from a JSON object (may name printer and filament); repeatable
+  --set key=value        any setting by its key; repeatable
+  --no-center            keep the models' own XY coordinates instead of centring them on the bed
+  --threads N            worker threads (default: one per core); output is identical for any N
+  -q, --quiet            no progress bar or summary
+  --<setting> VALUE      every setting has a flag, e.g. --layer-height 0.2 --infill-density 20
+                         --infill-pattern gyroid --wall-count 3 (see: strata settings)
+`;
+
+function readInput(path: string): Uint8Array {
+  try {
+    return path === '-' ? readFileSync(0) : readFileSync(path);
+  } catch (e) {
+    const code = (e as NodeJS.ErrnoException).code;
+    throw new StrataError('BAD_FILE', `cannot read ${path}: ${code === 'ENOENT' ? 'no such file' : code === 'EISDIR' ? 'it is a folder' : (e as Error).message}`);
+  }
+}
+
+function readConfigFile(path: string): Record<string, unknown> {
+  const text = new TextDecoder().decode(readInput(path));
+  let obj: unknown;
+  try {
+    obj = JSON.parse(text);
+  } catch (e) {
+    throw new StrataError('BAD_FILE', `${path} is not valid JSON: ${(e as Error).message}`);
+  }
+  if (!obj || typeof obj !== 'object' || Array.isArray(obj)) throw new StrataError('BAD_FILE', `${path} must hold a JSON object of settings`);
+  return obj as Record<string, unknown>;
+}
+
+function optionsFrom(args: ParsedArgs): SliceOptions {
+  const opts: Record<string, unknown> = {};
+  for (const f of args.configFiles) Object.assign(opts, readConfigFile(f));
+  if (args.printer) opts.printer = args.printer;
+  if (args.filament) opts.filament = args.filament;
+  Object.assign(opts, args.settings);
+  return opts as SliceOptions;
+}
+
+function formatDuration(s: number): string {
+  const h = Math.floor(s / 3600), m = Math.floor((s % 3600) / 60), sec = Math.round(s % 60);
+  return h ? `${h}h ${m}m` : m ? `${m}m ${sec}s` : `${sec}s`;
+}
+
+async function cmdSlice(args: ParsedArgs): Promise<void> {
+  if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'slice needs at least one model file (see strata --help)');
+  const slicer = new Slicer(optionsFrom(args));
+  const inputs = args.positional.map((p) => loadModelBytes(readInput(p), p === '-' ? undefined : basename(p)));
+  const first = args.positional[0];
+  const out = args.output ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
+  const fd = out === '-' ? 1 : openFileForWrite(out);
+  const showProgress = !args.quiet && process.stderr.isTTY && out !== '-';
+  const bar = showProgress ? progressBar(process.stderr) : null;
+  try {
+    const { stats, warnings } = await slicer.sliceToSink(inputs.flat(), (chunk) => writeAll(fd, chunk), {
+      onProgress: bar ? (p) => bar.update(p.fraction, p.stage) : undefined,
+    });
+    bar?.done();
+    if (!args.quiet) {
+      for (const w of warnings) process.stderr.write(`strata: warning: ${w}\n`);
+      process.stderr.write(
+        `${out === '-' ? 'G-code' : out}: ${stats.layers} layers, print time ${formatDuration(stats.printTimeSeconds)}, ` +
+          `filament ${(stats.filamentMm / 1000).toFixed(2)} m (${stats.filamentGrams.toFixed(1)} g), ` +
+          `sliced in ${stats.sliceSeconds.toFixed(2)} s on ${stats.threads} thread${stats.threads === 1 ? '' : 's'}\n`,
+      );
+    }
+  } finally {
+    bar?.done();
+    if (fd !== 1) closeSync(fd);
+  }
+}
+
+function openFileForWrite(path: string): number {
+  try {
+    return openSync(path, 'w');
+  } catch (e) {
+    throw new StrataError('BAD_FILE', `cannot write ${path}: ${(e as Error).message}`);
+  }
+}
+
+function writeAll(fd: number, chunk: string): void {
+  const buf = Buffer.from(chunk, 'utf8');
+  let off = 0;
+  while (off < buf.length) off += writeSync(fd, buf, off, buf.length - off);
+}
+
+function cmdInfo(args: ParsedArgs): void {
+  if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'info needs a model file');
+  for (const p of args.positional) {
+    const objects = loadModelBytes(readInput(p), basename(p));
+    const { report } = prepareMesh(mergeObjects(objects));
+    const size = report.max.map((v, k) => v - report.min[k]);
+    const lines = [
+      `${p}:`,
+      `  objects:            ${objects.length}`,
+      `  triangles:          ${report.triangles}${report.degenerateRemoved ? ` (${report.degenerateRemoved} degenerate removed)` : ''}`,
+      `  size:               ${size.map((v) => v.toFixed(2)).join(' × ')} mm`,
+      `  bounds:             (${report.min.map((v) => v.toFixed(2)).join(', ')}) – (${report.max.map((v) => v.toFixed(2)).join(', ')})`,
+      `  volume:             ${(Math.abs(report.volume) / 1000).toFixed(2)} cm³`,
+      `  open edges:         ${report.openEdges}`,
+      `  non-manifold edges: ${report.nonManifoldEdges}`,
+      `  watertight:         ${report.openEdges === 0 && report.nonManifoldEdges === 0 ? 'yes' : 'no'}`,
+    ];
+    process.stdout.write(lines.join('\n') + '\n');
+  }
+}
+
+function cmdPresets(): void {
+  const { printers, filaments } = listPresets();
+  const w = Math.max(...printers.map((p) => p.id.length), ...filaments.map((f) => f.id.length));
+  process.stdout.write('Printers:\n');
+  for (const p of printers) process.stdout.write(`  ${p.id.padEnd(w)}  ${p.name}\n`);
+  process.stdout.write('Filaments:\n');
+  for (const f of filaments) process.stdout.write(`  ${f.id.padEnd(w)}  ${f.name}\n`);
+}
+
+function cmdSettings(): void {
+  for (const key of SETTING_KEYS) {
+    const d = SCHEMA[key];
+    const range =
+      d.type === 'number' || d.type === 'integer' ? ` [${d.min}–${d.max}]` : d.type === 'enum' ? ` {${d.values.join('|')}}` : d.type === 'boolean' ? ' (--no-' + kebab(key) + ')' : '';
+    const def = d.type === 'string' ? '(template)' : JSON.stringify(d.default);
+    process.stdout.write(`--${kebab(key)} ${d.unit ? `(${d.unit}) ` : ''}default ${def}${range}\n    ${d.description}\n`);
+  }
+}
+
+export async function main(argv: readonly string[]): Promise<number> {
+  try {
+    const args = parseArgs(argv);
+    if (args.flags.version) {
+      process.stdout.write(`strata ${VERSION}\n`);
+      return 0;
+    }
+    if (args.help || !args.command || args.command === 'help') {
+      process.stdout.write(HELP);
+      return 0;
+    }
+    switch (args.command) {
+      case 'slice':
+        await cmdSlice(args);
+        return 0;
+      case 'info':
+        cmdInfo(args);
+        return 0;
+      case 'presets':
+        cmdPresets();
+        return 0;
+      case 'settings':
+        cmdSettings();
+        return 0;
+      default:
+        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, presets, settings)`);
+    }
+  } catch (e) {
+    if (e instanceof StrataError) {
+      process.stderr.write(`strata: error: ${e.message}\n`);
+      return 1;
+    }
+    if (process.env.STRATA_DEBUG) throw e;
+    process.stderr.write(`strata: internal error: ${e instanceof Error ? e.message : String(e)} (STRATA_DEBUG=1 shows details)\n`);
+    return 2;
+  }
+}
+
+const code = await main(process.argv.slice(2));
+process.exitCode = code;

@@ -1,0 +1,126 @@
+/**
+ * The per-layer middle of the pipeline for a range of layers: slice (with a window of neighbours
+ * for exposure detection), walls, skin and infill regions, and their lines. Pure over plain data, so
+ * it runs the same inline or in a worker, and gives the same result however layers are split up.
+ */
+import { difference, offset, union } from '../geometry/clip.js';
+import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
+import { generateInfill, solidFill } from '../infill/index.js';
+import type { InfillParams, PatternId } from '../infill/types.js';
+import type { Mesh } from '../mesh/types.js';
+import type { IslandPaths, LayerPaths } from '../paths/types.js';
+import { allSkin, skinAreas } from '../regions/skin-areas.js';
+import { computeWalls } from '../regions/walls.js';
+import type { Config } from '../settings/resolve.js';
+import { sliceMesh } from '../slice/index.js';
+import type { LayerSection, LayerZ } from '../slice/types.js';
+
+/** Per-layer regions, as a whole-model infill pass (lightning) needs them. */
+export interface LayerRegions {
+  index: number;
+  /** Sparse-infill centreline area of the whole layer, µm. */
+  infill: ExPolygon[];
+  /** Top skin of the whole layer, µm. */
+  topSkin: ExPolygon[];
+}
+
+export interface RangeResult {
+  paths: LayerPaths[];
+  regions: LayerRegions[];
+}
+
+export interface RangeJob {
+  layers: readonly LayerZ[];
+  from: number;
+  to: number;
+  /** Only compute regions (for the whole-model infill pass), not lines. */
+  regionsOnly: boolean;
+  infillParams: InfillParams;
+  /** Per-layer data from the pattern's whole-model pass, indexed by layer index. */
+  prepared?: readonly unknown[];
+}
+
+function rings(areas: readonly ExPolygon[]): Polygon[] {
+  const out: Polygon[] = [];
+  for (const a of areas) {
+    out.push(a.outer);
+    for (const h of a.holes) out.push(h);
+  }
+  return out;
+}
+
+export function lineWidthUm(cfg: Config, layerIndex: number): number {
+  return Math.round((layerIndex === 0 ? cfg.firstLayerLineWidthMm : cfg.lineWidthMm) * UM_PER_MM);
+}
+
+/** Compute paths (or only regions) for layers [job.from, job.to). */
+export function computeRange(mesh: Mesh, cfg: Config, job: RangeJob): RangeResult {
+  const n = job.layers.length;
+  const lo = Math.max(0, job.from - cfg.bottomLayers);
+  const hi = Math.min(n, job.to + cfg.topLayers);
+  const sections: LayerSection[] = sliceMesh(mesh, job.layers.slice(lo, hi) as LayerZ[], Math.round(cfg.meshTolerance * UM_PER_MM));
+  const sectionAt = (i: number): ExPolygon[] => (i >= lo && i < hi ? sections[i - lo].islands : []);
+  const paths: LayerPaths[] = [];
+  const regions: LayerRegions[] = [];
+  const infillOn = cfg.infillDensity > 0;
+  for (let i = job.from; i < job.to; i++) {
+    const section = sections[i - lo];
+    const w = lineWidthUm(cfg, i);
+    const above: ExPolygon[][] = [];
+    for (let k = 1; k <= cfg.topLayers && i + k < n; k++) above.push(sectionAt(i + k));
+    const below: ExPolygon[][] = [];
+    for (let k = 1; k <= cfg.bottomLayers && i - k >= 0; k++) below.push(sectionAt(i - k));
+    const walls = computeWalls(section.islands, cfg.walls, w);
+    const overlapSkin = (cfg.skinOverlap / 100) * w;
+    const overlapInfill = (cfg.infillOverlap / 100) * w;
+    const islands: IslandPaths[] = [];
+    const layerInfill: ExPolygon[] = [];
+    const layerTop: ExPolygon[] = [];
+    for (const iw of walls) {
+      const skin = skinAreas(iw.inner, above, below, cfg.topLayers, cfg.bottomLayers, w);
+      const skinAll = allSkin(skin);
+      const sparse = infillOn ? offset(skinAll.length ? difference(iw.inner, skinAll) : iw.inner, -(w / 2 - overlapInfill)) : [];
+      for (const a of sparse) layerInfill.push(a);
+      for (const a of skin.top) layerTop.push(a);
+      if (job.regionsOnly) continue;
+      let skinWalls: Polygon[] = [];
+      let skinFillArea: ExPolygon[];
+      if (cfg.skinWall && skinAll.length) {
+        const wallCentre = offset(skinAll, -w / 2);
+        skinWalls = rings(wallCentre);
+        skinFillArea = offset(wallCentre, -(w - overlapSkin));
+      } else {
+        skinFillArea = offset(skinAll, -(w / 2 - overlapSkin));
+      }
+      const skinAngle = cfg.skinAngle + (i % 2 === 1 ? 90 : 0);
+      const skinLines = skinFillArea.length ? solidFill(skinFillArea, skinAngle, w, job.infillParams.origin) : [];
+      let infillLines: Pt[][] = [];
+      let infillLoops: Polygon[] = [];
+      if (sparse.length) {
+        const res = generateInfill(
+          cfg.infillPattern as PatternId,
+          { layerIndex: i, z: section.z, layerHeight: section.height, region: sparse },
+          { ...job.infillParams, lineWidth: w },
+          job.prepared ? job.prepared[i] : undefined,
+        );
+        infillLines = res.lines;
+        infillLoops = res.loops;
+      }
+      islands.push({ outline: iw.outline, walls: iw.wallLoops, skinWalls, skinLines, infillLines, infillLoops });
+    }
+    regions.push({ index: i, infill: layerInfill.length > 1 ? union(layerInfill) : layerInfill, topSkin: layerTop });
+    if (!job.regionsOnly) {
+      paths.push({
+        index: section.index,
+        z: section.z,
+        height: section.height,
+        sliceZ: section.sliceZ,
+        lineWidth: w / UM_PER_MM,
+        islands,
+        adhesion: [],
+        adhesionFeature: 'SKIRT',
+      });
+    }
+  }
+  return { paths, regions };
+}

@@ -1,0 +1,181 @@
+/**
+ * The whole pipeline for a placed mesh: layer plan, per-layer work (inline or on a worker pool),
+ * the whole-model infill pass where a pattern needs one, adhesion, travel planning, cooling,
+ * estimates and G-code written to a sink.
+ */
+import { StrataError } from '../errors.js';
+import { UM_PER_MM, type Pt } from '../geometry/types.js';
+import { writeGcode } from '../gcode/writer.js';
+import { PATTERNS } from '../infill/registry.js';
+import type { InfillParams, PatternId } from '../infill/types.js';
+import type { Mesh } from '../mesh/types.js';
+import type { LayerPaths } from '../paths/types.js';
+import { applyMinLayerTime } from '../plan/cooling.js';
+import { estimatePlan } from '../plan/estimate.js';
+import { planLayer } from '../plan/layer-plan.js';
+import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
+import { adhesionLoops } from '../regions/adhesion.js';
+import type { Config } from '../settings/resolve.js';
+import { planLayers } from '../slice/index.js';
+import type { LayerZ } from '../slice/types.js';
+import { createPool, type LayerPool } from '../workers/pool.js';
+import { computeRange, lineWidthUm, type RangeJob, type RangeResult } from './layer-work.js';
+
+export const VERSION = '0.1.0';
+
+export interface Progress {
+  stage: 'slicing' | 'planning' | 'writing';
+  /** 0..1 over the whole run. */
+  fraction: number;
+}
+
+export interface RunOptions {
+  /** Worker threads; 1 runs inline. */
+  threads: number;
+  onProgress?: (p: Progress) => void;
+  signal?: AbortSignal;
+  /** Receives the G-code in chunks. */
+  sink: (chunk: string) => void;
+  /** Centre of the model's bounding box on the bed, mm (object centering origin). */
+  objectCenter: [number, number];
+  /** Model height, mm. */
+  height: number;
+}
+
+export interface RunResult {
+  plan: PrintPlan;
+  estimate: PlanEstimate;
+  layers: number;
+}
+
+function checkAbort(signal?: AbortSignal): void {
+  if (signal?.aborted) throw new StrataError('CANCELLED', 'slicing was cancelled');
+}
+
+function infillParamsFor(cfg: Config, objectCenter: [number, number]): InfillParams {
+  const bedCentre: Pt = cfg.originAtCenter
+    ? { x: 0, y: 0 }
+    : { x: Math.round((cfg.buildPlateWidth / 2) * UM_PER_MM), y: Math.round((cfg.buildPlateLength / 2) * UM_PER_MM) };
+  const objCentre: Pt = { x: Math.round(objectCenter[0] * UM_PER_MM), y: Math.round(objectCenter[1] * UM_PER_MM) };
+  return {
+    density: cfg.infillDensity / 100,
+    lineWidth: Math.round(cfg.lineWidthMm * UM_PER_MM),
+    nozzleDiameter: Math.round(cfg.nozzleDiameter * UM_PER_MM),
+    angle: cfg.infillAngle,
+    centering: cfg.infillPatternCentering,
+    origin: cfg.infillPatternCentering === 'global' ? bedCentre : objCentre,
+    connect: cfg.infillConnect,
+  };
+}
+
+/** Split [0, n) into ranges: several per thread for balance, each a few layers at least. */
+function ranges(n: number, threads: number): Array<[number, number]> {
+  if (threads <= 1) return [[0, n]];
+  const pieces = Math.min(n, threads * 6);
+  const out: Array<[number, number]> = [];
+  for (let k = 0; k < pieces; k++) {
+    const a = Math.floor((k * n) / pieces), b = Math.floor(((k + 1) * n) / pieces);
+    if (b > a) out.push([a, b]);
+  }
+  return out;
+}
+
+async function runJobs(jobs: RangeJob[], mesh: Mesh, cfg: Config, pool: LayerPool | null, onDone: (j: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]> {
+  if (!pool) {
+    const out: RangeResult[] = [];
+    for (const j of jobs) {
+      checkAbort(signal);
+      out.push(computeRange(mesh, cfg, j));
+      onDone(j);
+      // let the event loop breathe (progress, cancellation)
+      await new Promise((r) => setTimeout(r, 0));
+    }
+    return out;
+  }
+  return pool.run(jobs, onDone, signal);
+}
+
+export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Promise<RunResult> {
+  const { signal } = opts;
+  checkAbort(signal);
+  const layers: LayerZ[] = planLayers(opts.height, cfg.firstLayerHeight, cfg.layerHeight);
+  if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
+  const params = infillParamsFor(cfg, opts.objectCenter);
+  const pattern = PATTERNS[cfg.infillPattern as PatternId];
+  const split = ranges(layers.length, opts.threads);
+  const pool = opts.threads > 1 ? await createPool(Math.min(opts.threads, split.length), mesh, cfg) : null;
+  const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
+  try {
+    let prepared: unknown[] | undefined;
+    const passes = pattern.prepare && cfg.infillDensity > 0 ? 2 : 1;
+    let doneLayers = 0;
+    const total = layers.length * passes;
+    const onDone = (j: RangeJob) => {
+      doneLayers += j.to - j.from;
+      report('slicing', (0.8 * doneLayers) / total);
+    };
+    if (passes === 2 && pattern.prepare) {
+      const regionJobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: true, infillParams: params }));
+      const regionResults = await runJobs(regionJobs, mesh, cfg, pool, onDone, signal);
+      const regions = regionResults.flatMap((r) => r.regions);
+      prepared = pattern.prepare(
+        {
+          layers: regions.map((r) => ({ layerIndex: r.index, z: layers[r.index].z, layerHeight: layers[r.index].height, region: r.infill })),
+          supportNeeded: regions.map((_, i) => (i + 1 < regions.length ? regions[i + 1].topSkin : [])),
+        },
+        params,
+      );
+    }
+    const jobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: false, infillParams: params, prepared }));
+    const results = await runJobs(jobs, mesh, cfg, pool, onDone, signal);
+    const paths: LayerPaths[] = results.flatMap((r) => r.paths);
+    checkAbort(signal);
+
+    // adhesion on the first layer
+    const first = paths[0];
+    first.adhesion = adhesionLoops(
+      first.islands.map((i) => i.outline),
+      cfg,
+      lineWidthUm(cfg, 0),
+    );
+    first.adhesionFeature = cfg.adhesionType === 'brim' ? 'BRIM' : 'SKIRT';
+
+    // travel planning is sequential: each layer starts where the last one ended
+    report('planning', 0.8);
+    const state = { at: { x: 0, y: 0 } as Pt };
+    const planned: LayerPlan[] = [];
+    for (const lp of paths) {
+      const layerPlan = planLayer(lp, cfg, state);
+      applyMinLayerTime(layerPlan, cfg.minLayerTime, cfg.minPrintSpeed);
+      planned.push(layerPlan);
+    }
+    const plan: PrintPlan = { layers: planned, bounds: planBounds(planned) };
+    checkAbort(signal);
+    const estimate = estimatePlan(plan, cfg);
+    report('writing', 0.9);
+    writeGcode(plan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}` });
+    report('writing', 1);
+    return { plan, estimate, layers: planned.length };
+  } finally {
+    await pool?.close();
+  }
+}
+
+function planBounds(layers: readonly LayerPlan[]): PrintPlan['bounds'] {
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity, minZ = Infinity, maxZ = -Infinity;
+  for (const l of layers) {
+    for (const s of l.steps) {
+      if (s.kind !== 'extrude') continue;
+      if (l.z < minZ) minZ = l.z;
+      if (l.z > maxZ) maxZ = l.z;
+      for (const p of s.points) {
+        if (p.x < minX) minX = p.x;
+        if (p.y < minY) minY = p.y;
+        if (p.x > maxX) maxX = p.x;
+        if (p.y > maxY) maxY = p.y;
+      }
+    }
+  }
+  if (minX === Infinity) return { minX: 0, minY: 0, minZ: 0, maxX: 0, maxY: 0, maxZ: 0 };
+  return { minX: minX / UM_PER_MM, minY: minY / UM_PER_MM, minZ, maxX: maxX / UM_PER_MM, maxY: maxY / UM_PER_MM, maxZ };
+}

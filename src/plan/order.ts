@@ -1,0 +1,124 @@
+/**
+ * Nearest-neighbour ordering of open paths (either end may start) and closed loops, using a uniform
+ * grid over path ends so the search stays near-linear.
+ */
+import type { Polyline, Pt } from '../geometry/types.js';
+
+interface Grid {
+  cell: number;
+  minX: number;
+  minY: number;
+  cols: number;
+  rows: number;
+  buckets: Map<number, number[]>;
+}
+
+function buildGrid(ends: Float64Array, count: number): Grid {
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (let i = 0; i < count; i++) {
+    const x = ends[2 * i], y = ends[2 * i + 1];
+    if (x < minX) minX = x;
+    if (y < minY) minY = y;
+    if (x > maxX) maxX = x;
+    if (y > maxY) maxY = y;
+  }
+  const span = Math.max(maxX - minX, maxY - minY, 1);
+  const cols0 = Math.max(1, Math.ceil(Math.sqrt(count)));
+  const cell = Math.max(span / cols0, 1);
+  const cols = Math.floor((maxX - minX) / cell) + 1;
+  const rows = Math.floor((maxY - minY) / cell) + 1;
+  const buckets = new Map<number, number[]>();
+  for (let i = 0; i < count; i++) {
+    const key = Math.floor((ends[2 * i + 1] - minY) / cell) * cols + Math.floor((ends[2 * i] - minX) / cell);
+    let b = buckets.get(key);
+    if (!b) buckets.set(key, (b = []));
+    b.push(i);
+  }
+  return { cell, minX, minY, cols, rows, buckets };
+}
+
+/**
+ * Order items by nearest end. Each item offers candidate start points (`starts(i)`), and ends where
+ * `endOf(i, startIdx)` says. Returns [item, startIdx] pairs in print order.
+ */
+export function orderNearest(
+  count: number,
+  candidates: (i: number) => readonly Pt[],
+  endOf: (i: number, startIdx: number) => Pt,
+  from: Pt,
+): Array<[number, number]> {
+  if (count === 0) return [];
+  // flatten candidate start points
+  const owner: number[] = [];
+  const which: number[] = [];
+  const pts: number[] = [];
+  for (let i = 0; i < count; i++) {
+    const c = candidates(i);
+    for (let k = 0; k < c.length; k++) {
+      owner.push(i);
+      which.push(k);
+      pts.push(c[k].x, c[k].y);
+    }
+  }
+  const n = owner.length;
+  const ends = Float64Array.from(pts);
+  const grid = buildGrid(ends, n);
+  const used = new Uint8Array(count);
+  const out: Array<[number, number]> = [];
+  let at = from;
+  for (let done = 0; done < count; done++) {
+    const cx = Math.floor((at.x - grid.minX) / grid.cell);
+    const cy = Math.floor((at.y - grid.minY) / grid.cell);
+    let best = -1;
+    let bestD = Infinity;
+    // rings of cells around (cx, cy), starting at the first ring that touches the grid
+    const dxOut = cx < 0 ? -cx : cx >= grid.cols ? cx - grid.cols + 1 : 0;
+    const dyOut = cy < 0 ? -cy : cy >= grid.rows ? cy - grid.rows + 1 : 0;
+    const r0 = Math.max(dxOut, dyOut);
+    const rMax = Math.max(Math.abs(cx), Math.abs(cx - grid.cols + 1), Math.abs(cy), Math.abs(cy - grid.rows + 1));
+    const visit = (gx: number, gy: number) => {
+      const b = grid.buckets.get(gy * grid.cols + gx);
+      if (!b) return;
+      for (let k = 0; k < b.length; k++) {
+        const e = b[k];
+        if (used[owner[e]]) continue;
+        const ddx = ends[2 * e] - at.x, ddy = ends[2 * e + 1] - at.y;
+        const d = ddx * ddx + ddy * ddy;
+        if (d < bestD || (d === bestD && e < best)) {
+          bestD = d;
+          best = e;
+        }
+      }
+    };
+    for (let r = r0; r <= rMax; r++) {
+      // every point in ring r is at least (r - 1) cells away
+      if (best >= 0 && (r - 1) * grid.cell > Math.sqrt(bestD)) break;
+      const y0 = Math.max(0, cy - r), y1 = Math.min(grid.rows - 1, cy + r);
+      const x0 = Math.max(0, cx - r), x1 = Math.min(grid.cols - 1, cx + r);
+      for (let gy = y0; gy <= y1; gy++) {
+        if (gy === cy - r || gy === cy + r) {
+          for (let gx = x0; gx <= x1; gx++) visit(gx, gy);
+        } else {
+          if (cx - r >= 0 && cx - r < grid.cols) visit(cx - r, gy);
+          if (r > 0 && cx + r >= 0 && cx + r < grid.cols) visit(cx + r, gy);
+        }
+      }
+    }
+    const item = owner[best];
+    used[item] = 1;
+    out.push([item, which[best]]);
+    at = endOf(item, which[best]);
+  }
+  return out;
+}
+
+/** Order open polylines nearest-first, reversing those entered from their far end. */
+export function orderPolylines(lines: readonly Polyline[], from: Pt): Polyline[] {
+  const order = orderNearest(
+    lines.length,
+    (i) => [lines[i][0], lines[i][lines[i].length - 1]],
+    (i, s) => (s === 0 ? lines[i][lines[i].length - 1] : lines[i][0]),
+    from,
+  );
+  return order.map(([i, s]) => (s === 0 ? lines[i] : lines[i].slice().reverse()));
+}

@@ -1,0 +1,46 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { computeWalls } from './walls.js';
+import { area, ringArea } from '../geometry/clip.js';
+import type { ExPolygon } from '../geometry/types.js';
+
+const square = (x0: number, y0: number, s: number): ExPolygon => ({
+  outer: [
+    { x: x0, y: y0 },
+    { x: x0 + s, y: y0 },
+    { x: x0 + s, y: y0 + s },
+    { x: x0, y: y0 + s },
+  ],
+  holes: [],
+});
+
+test('a 20 mm square gets two walls at 0.2 and 0.6 mm inside, and an inner area 0.8 mm in', () => {
+  const [w] = computeWalls([square(0, 0, 20000)], 2, 400);
+  assert.equal(w.wallLoops.length, 2);
+  assert.equal(Math.round(Math.abs(ringArea(w.wallLoops[0][0]))), 19600 * 19600);
+  assert.equal(Math.round(Math.abs(ringArea(w.wallLoops[1][0]))), 18800 * 18800);
+  assert.equal(Math.round(area(w.inner)), 18400 * 18400);
+});
+
+test('a hole gets its own wall loop in each wall', () => {
+  const island: ExPolygon = {
+    ...square(0, 0, 20000),
+    holes: [[{ x: 5000, y: 5000 }, { x: 5000, y: 15000 }, { x: 15000, y: 15000 }, { x: 15000, y: 5000 }]],
+  };
+  const [w] = computeWalls([island], 2, 400);
+  assert.equal(w.wallLoops[0].length, 2);
+  assert.equal(w.wallLoops[1].length, 2);
+});
+
+test('a 1 mm strip gets the outer wall only: no inner wall that would overlap it', () => {
+  const strip: ExPolygon = { outer: [{ x: 0, y: 0 }, { x: 20000, y: 0 }, { x: 20000, y: 1000 }, { x: 0, y: 1000 }], holes: [] };
+  const [w] = computeWalls([strip], 3, 400);
+  assert.equal(w.wallLoops.length, 1);
+  assert.equal(w.inner.length, 0);
+});
+
+test('a strip thinner than one line width gets nothing rather than a crossing wall', () => {
+  const strip: ExPolygon = { outer: [{ x: 0, y: 0 }, { x: 20000, y: 0 }, { x: 20000, y: 300 }, { x: 0, y: 300 }], holes: [] };
+  const [w] = computeWalls([strip], 2, 400);
+  assert.equal(w.wallLoops.flat().length, 0);
+});

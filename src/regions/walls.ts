@@ -1,0 +1,65 @@
+/**
+ * Walls of one layer: concentric loops inset from each island's outline.
+ * The outer wall's centreline lies half a line width inside the outline, so its outer edge is the
+ * model's surface. Each inner wall k is printed only where its full width fits between wall k-1 and
+ * the inside (an opening of the region), so walls never overlap or cross in thin parts.
+ */
+import { offset, area } from '../geometry/clip.js';
+import type { ExPolygon, Polygon } from '../geometry/types.js';
+
+export interface IslandWalls {
+  /** The island's outline (the layer section), µm. */
+  outline: ExPolygon;
+  /** wallLoops[k] are the closed centrelines of wall k (0 = outer), each ring as printed. */
+  wallLoops: Polygon[][];
+  /** The area inside the innermost wall's inner edge (where skin and infill go), µm. */
+  inner: ExPolygon[];
+}
+
+/** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
+const MIN_LOOP_AREA_UM2 = 0.05 * 1000 * 0.05 * 1000;
+
+function rings(areas: readonly ExPolygon[]): Polygon[] {
+  const out: Polygon[] = [];
+  for (const a of areas) {
+    if (Math.abs(area([a])) < MIN_LOOP_AREA_UM2) continue;
+    out.push(a.outer);
+    for (const h of a.holes) out.push(h);
+  }
+  return out;
+}
+
+/**
+ * Compute the walls of each island.
+ * @param islands the layer's islands, µm
+ * @param wallCount number of walls
+ * @param lineWidthUm extrusion width, µm
+ */
+export function computeWalls(islands: readonly ExPolygon[], wallCount: number, lineWidthUm: number): IslandWalls[] {
+  const w = lineWidthUm;
+  const out: IslandWalls[] = [];
+  for (const island of islands) {
+    const wallLoops: Polygon[][] = [];
+    if (wallCount === 0) {
+      out.push({ outline: island, wallLoops, inner: [island] });
+      continue;
+    }
+    const outer = offset([island], -w / 2);
+    wallLoops.push(rings(outer));
+    // Inner edge of wall 0.
+    let inside = offset(outer, -w / 2);
+    for (let k = 1; k < wallCount && inside.length > 0; k++) {
+      // Wall k fits where the area inside wall k-1, shrunk by a full width, is not empty.
+      const fit = offset(inside, -w);
+      if (fit.length === 0) {
+        inside = [];
+        break;
+      }
+      const centre = offset(fit, w / 2);
+      wallLoops.push(rings(centre));
+      inside = fit;
+    }
+    out.push({ outline: island, wallLoops, inner: inside });
+  }
+  return out;
+}

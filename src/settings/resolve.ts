@@ -1,0 +1,194 @@
+/**
+ * Validation and resolution of settings: defaults < printer preset < filament preset < caller options,
+ * checked against the schema and resolved once into a frozen typed config with derived values.
+ */
+import { StrataError } from '../errors.js';
+import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey, type Settings, type SliceOptions } from './schema.js';
+import { findFilament, findPrinter, listPresets } from './presets/index.js';
+
+/** Values computed once from the settings; algorithms read these rather than re-deriving them. */
+export interface Derived {
+  /** Resolved line width, mm. */
+  lineWidthMm: number;
+  firstLayerLineWidthMm: number;
+  walls: number;
+  topLayers: number;
+  bottomLayers: number;
+  firstLayerNozzleTemp: number;
+  firstLayerBedTemp: number;
+  printerId: string;
+  filamentId: string;
+}
+
+export type Config = Readonly<Settings & Derived>;
+
+export const DEFAULT_PRINTER = 'creality-ender-3';
+export const DEFAULT_FILAMENT = 'pla';
+
+/** Levenshtein distance, for "did you mean" suggestions. */
+function editDistance(a: string, b: string): number {
+  const prev = new Array<number>(b.length + 1);
+  for (let j = 0; j <= b.length; j++) prev[j] = j;
+  for (let i = 1; i <= a.length; i++) {
+    let diag = prev[0];
+    prev[0] = i;
+    for (let j = 1; j <= b.length; j++) {
+      const tmp = prev[j];
+      prev[j] = Math.min(prev[j] + 1, prev[j - 1] + 1, diag + (a[i - 1] === b[j - 1] ? 0 : 1));
+      diag = tmp;
+    }
+  }
+  return prev[b.length];
+}
+
+export function suggest(word: string, candidates: readonly string[]): string | undefined {
+  let best: string | undefined;
+  let bestD = Infinity;
+  const w = word.toLowerCase();
+  for (const c of candidates) {
+    const d = editDistance(w, c.toLowerCase());
+    if (d < bestD) {
+      bestD = d;
+      best = c;
+    }
+  }
+  return best !== undefined && bestD <= Math.max(2, Math.floor(word.length / 3)) ? best : undefined;
+}
+
+function describeRange(def: SettingDef): string {
+  switch (def.type) {
+    case 'number':
+    case 'integer':
+      return `${def.type === 'integer' ? 'a whole number' : 'a number'} from ${def.min} to ${def.max}${def.unit ? ' ' + def.unit : ''}${def.nullable ? ' (or null)' : ''}`;
+    case 'boolean':
+      return 'true or false';
+    case 'enum':
+      return `one of ${def.values.join(', ')}`;
+    case 'string':
+      return `text of at most ${def.maxLength} characters`;
+  }
+}
+
+/** Check one value against its definition; returns the normalised value or throws naming the allowed values. */
+export function validateValue(key: SettingKey, value: unknown, source = 'option'): unknown {
+  const def: SettingDef = SCHEMA[key];
+  const bad = (): never => {
+    throw new StrataError('BAD_SETTING', `${source} ${key} = ${JSON.stringify(value)} is not allowed: expected ${describeRange(def)}`);
+  };
+  switch (def.type) {
+    case 'number':
+    case 'integer': {
+      if (value === null) return def.nullable ? null : bad();
+      if (typeof value !== 'number' || !Number.isFinite(value)) return bad();
+      if (def.type === 'integer' && !Number.isInteger(value)) return bad();
+      if (value < def.min || value > def.max) return bad();
+      return value;
+    }
+    case 'boolean':
+      return typeof value === 'boolean' ? value : bad();
+    case 'enum':
+      return typeof value === 'string' && def.values.includes(value) ? value : bad();
+    case 'string':
+      return typeof value === 'string' && value.length <= def.maxLength ? value : bad();
+  }
+}
+
+/** Parse a CLI/text value for a setting into the schema's type. */
+export function parseSettingText(key: SettingKey, text: string): unknown {
+  const def: SettingDef = SCHEMA[key];
+  const t = text.trim();
+  switch (def.type) {
+    case 'number':
+    case 'integer': {
+      if (def.nullable && (t === '' || t === 'null' || t === 'auto')) return null;
+      const n = t === '' ? NaN : Number(t.endsWith('%') && def.unit === '%' ? t.slice(0, -1) : t);
+      return Number.isFinite(n) ? n : text;
+    }
+    case 'boolean':
+      if (/^(true|yes|on|1)$/i.test(t)) return true;
+      if (/^(false|no|off|0)$/i.test(t)) return false;
+      return text;
+    case 'enum':
+      return t;
+    case 'string':
+      return text.replace(/\\n/g, '\n');
+  }
+}
+
+/** Throw for a key that is not a setting, suggesting the closest one. */
+export function checkKey(key: string, source = 'option'): SettingKey {
+  if (Object.prototype.hasOwnProperty.call(SCHEMA, key)) return key as SettingKey;
+  const s = suggest(key, SETTING_KEYS);
+  throw new StrataError('UNKNOWN_SETTING', `unknown ${source} "${key}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata settings\` lists them all`);
+}
+
+function applyLayer(target: Record<string, unknown>, values: Readonly<Record<string, unknown>>, source: string): void {
+  for (const [k, v] of Object.entries(values)) {
+    if (v === undefined) continue;
+    const key = checkKey(k, source);
+    target[key] = validateValue(key, v, source);
+  }
+}
+
+/**
+ * Resolve options into a frozen config. Order: schema defaults, printer preset, filament preset, the
+ * caller's options. The caller's object is never mutated.
+ */
+export function resolveConfig(options: SliceOptions = {}): Config {
+  if (options === null || typeof options !== 'object' || Array.isArray(options)) {
+    throw new StrataError('BAD_SETTING', 'options must be an object of settings');
+  }
+  const { printer: printerName, filament: filamentName, ...rest } = options as Record<string, unknown>;
+  const printerId = typeof printerName === 'string' ? printerName : DEFAULT_PRINTER;
+  const filamentId = typeof filamentName === 'string' ? filamentName : DEFAULT_FILAMENT;
+  if (printerName !== undefined && typeof printerName !== 'string') throw new StrataError('UNKNOWN_PRESET', 'printer must be a preset name');
+  if (filamentName !== undefined && typeof filamentName !== 'string') throw new StrataError('UNKNOWN_PRESET', 'filament must be a preset name');
+  const printer = findPrinter(printerId);
+  const presets = listPresets();
+  if (!printer) {
+    const s = suggest(printerId, presets.printers.map((p) => p.id));
+    throw new StrataError('UNKNOWN_PRESET', `unknown printer "${printerId}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata presets\` lists them`);
+  }
+  const filament = findFilament(filamentId);
+  if (!filament) {
+    const s = suggest(filamentId, presets.filaments.map((p) => p.id));
+    throw new StrataError('UNKNOWN_PRESET', `unknown filament "${filamentId}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata presets\` lists them`);
+  }
+
+  const values: Record<string, unknown> = {};
+  for (const key of SETTING_KEYS) values[key] = SCHEMA[key].default;
+  applyLayer(values, printer.settings, `printer preset ${printer.id}:`);
+  applyLayer(values, filament.settings, `filament preset ${filament.id}:`);
+  applyLayer(values, rest, 'option');
+  const s = values as Settings;
+
+  const lineWidthMm = s.lineWidth ?? s.nozzleDiameter;
+  const firstLayerLineWidthMm = s.firstLayerLineWidth ?? lineWidthMm;
+  if (s.layerHeight > s.nozzleDiameter * 0.85) {
+    throw new StrataError('BAD_SETTING', `layerHeight ${s.layerHeight} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most 85% of it: ${round3(s.nozzleDiameter * 0.85)} mm)`);
+  }
+  if (s.firstLayerHeight > s.nozzleDiameter * 0.9) {
+    throw new StrataError('BAD_SETTING', `firstLayerHeight ${s.firstLayerHeight} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most ${round3(s.nozzleDiameter * 0.9)} mm)`);
+  }
+  if (lineWidthMm < s.nozzleDiameter * 0.6 || lineWidthMm > s.nozzleDiameter * 2.5) {
+    throw new StrataError('BAD_SETTING', `lineWidth ${lineWidthMm} mm does not suit a ${s.nozzleDiameter} mm nozzle (allowed ${round3(s.nozzleDiameter * 0.6)} to ${round3(s.nozzleDiameter * 2.5)} mm)`);
+  }
+  const walls = s.wallCount ?? Math.max(0, Math.round(s.shellWallThickness / lineWidthMm + 1e-9));
+  const layersFor = (t: number) => (t <= 0 ? 0 : Math.max(1, Math.ceil(t / s.layerHeight - 1e-6)));
+  const derived: Derived = {
+    lineWidthMm,
+    firstLayerLineWidthMm,
+    walls,
+    topLayers: layersFor(s.topSkinThickness ?? s.shellSkinThickness),
+    bottomLayers: layersFor(s.bottomSkinThickness ?? s.shellSkinThickness),
+    firstLayerNozzleTemp: s.firstLayerNozzleTemperature ?? s.nozzleTemperature,
+    firstLayerBedTemp: s.firstLayerBedTemperature ?? s.bedTemperature,
+    printerId: printer.id,
+    filamentId: filament.id,
+  };
+  return Object.freeze({ ...s, ...derived });
+}
+
+function round3(x: number): number {
+  return Math.round(x * 1000) / 1000;
+}

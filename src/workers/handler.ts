@@ -1,0 +1,25 @@
+/** The worker side, independent of the host: keeps the mesh and config, runs range jobs. */
+import { StrataError } from '../errors.js';
+import type { Mesh } from '../mesh/types.js';
+import { computeRange } from '../pipeline/layer-work.js';
+import type { Config } from '../settings/resolve.js';
+import type { FromWorker, ToWorker } from './protocol.js';
+
+export function makeHandler(post: (msg: FromWorker) => void): (msg: ToWorker) => void {
+  let mesh: Mesh | null = null;
+  let cfg: Config | null = null;
+  return (msg) => {
+    if (msg.type === 'init') {
+      mesh = msg.mesh;
+      cfg = msg.cfg;
+      return;
+    }
+    try {
+      if (!mesh || !cfg) throw new Error('worker used before init');
+      post({ type: 'result', id: msg.id, result: computeRange(mesh, cfg, msg.job) });
+    } catch (e) {
+      const code = e instanceof StrataError ? e.code : 'INTERNAL';
+      post({ type: 'error', id: msg.id, code, message: e instanceof Error ? e.message : String(e) });
+    }
+  };
+}

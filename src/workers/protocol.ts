@@ -1,0 +1,12 @@
+/** Messages between the pipeline and its layer workers: plain data only. */
+import type { Mesh } from '../mesh/types.js';
+import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
+import type { Config } from '../settings/resolve.js';
+
+export type ToWorker =
+  | { type: 'init'; mesh: Mesh; cfg: Config }
+  | { type: 'range'; id: number; job: RangeJob };
+
+export type FromWorker =
+  | { type: 'result'; id: number; result: RangeResult }
+  | { type: 'error'; id: number; code: string; message: string };
