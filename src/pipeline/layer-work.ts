@@ -7,12 +7,11 @@ import { difference, offset, union } from '../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import { generateInfill, solidFill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
-import type { Mesh } from '../mesh/types.js';
 import type { IslandPaths, LayerPaths } from '../paths/types.js';
 import { allSkin, skinAreas } from '../regions/skin-areas.js';
 import { computeWalls } from '../regions/walls.js';
 import type { Config } from '../settings/resolve.js';
-import { sliceMesh } from '../slice/index.js';
+import { slicePrepared, type PreparedMesh } from '../slice/index.js';
 import type { LayerSection, LayerZ } from '../slice/types.js';
 
 /** Per-layer regions, as a whole-model infill pass (lightning) needs them. */
@@ -54,11 +53,11 @@ export function lineWidthUm(cfg: Config, layerIndex: number): number {
 }
 
 /** Compute paths (or only regions) for layers [job.from, job.to). */
-export function computeRange(mesh: Mesh, cfg: Config, job: RangeJob): RangeResult {
+export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob): RangeResult {
   const n = job.layers.length;
   const lo = Math.max(0, job.from - cfg.bottomLayers);
   const hi = Math.min(n, job.to + cfg.topLayers);
-  const sections: LayerSection[] = sliceMesh(mesh, job.layers.slice(lo, hi) as LayerZ[], Math.round(cfg.meshTolerance * UM_PER_MM));
+  const sections: LayerSection[] = slicePrepared(mesh, job.layers.slice(lo, hi) as LayerZ[], Math.round(cfg.meshTolerance * UM_PER_MM));
   const sectionAt = (i: number): ExPolygon[] => (i >= lo && i < hi ? sections[i - lo].islands : []);
   const paths: LayerPaths[] = [];
   const regions: LayerRegions[] = [];

@@ -16,7 +16,7 @@ import { planLayer } from '../plan/layer-plan.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
 import { adhesionLoops } from '../regions/adhesion.js';
 import type { Config } from '../settings/resolve.js';
-import { planLayers } from '../slice/index.js';
+import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { createPool, type LayerPool } from '../workers/pool.js';
 import { computeRange, lineWidthUm, type RangeJob, type RangeResult } from './layer-work.js';
@@ -80,12 +80,12 @@ function ranges(n: number, threads: number): Array<[number, number]> {
   return out;
 }
 
-async function runJobs(jobs: RangeJob[], mesh: Mesh, cfg: Config, pool: LayerPool | null, onDone: (j: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]> {
+async function runJobs(jobs: RangeJob[], prepared: () => PreparedMesh, cfg: Config, pool: LayerPool | null, onDone: (j: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]> {
   if (!pool) {
     const out: RangeResult[] = [];
     for (const j of jobs) {
       checkAbort(signal);
-      out.push(computeRange(mesh, cfg, j));
+      out.push(computeRange(prepared(), cfg, j));
       onDone(j);
       // let the event loop breathe (progress, cancellation)
       await new Promise((r) => setTimeout(r, 0));
@@ -104,6 +104,8 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   const pattern = PATTERNS[cfg.infillPattern as PatternId];
   const split = ranges(layers.length, opts.threads);
   const pool = opts.threads > 1 ? await createPool(Math.min(opts.threads, split.length), mesh, cfg) : null;
+  let sliceable: PreparedMesh | null = null;
+  const local = () => (sliceable ??= prepareForSlicing(mesh));
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
     let prepared: unknown[] | undefined;
@@ -116,7 +118,7 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
     };
     if (passes === 2 && pattern.prepare) {
       const regionJobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: true, infillParams: params }));
-      const regionResults = await runJobs(regionJobs, mesh, cfg, pool, onDone, signal);
+      const regionResults = await runJobs(regionJobs, local, cfg, pool, onDone, signal);
       const regions = regionResults.flatMap((r) => r.regions);
       prepared = pattern.prepare(
         {
@@ -127,7 +129,7 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
       );
     }
     const jobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: false, infillParams: params, prepared }));
-    const results = await runJobs(jobs, mesh, cfg, pool, onDone, signal);
+    const results = await runJobs(jobs, local, cfg, pool, onDone, signal);
     const paths: LayerPaths[] = results.flatMap((r) => r.paths);
     checkAbort(signal);
 

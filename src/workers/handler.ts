@@ -1,16 +1,16 @@
 /** The worker side, independent of the host: keeps the mesh and config, runs range jobs. */
 import { StrataError } from '../errors.js';
-import type { Mesh } from '../mesh/types.js';
+import { prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import { computeRange } from '../pipeline/layer-work.js';
 import type { Config } from '../settings/resolve.js';
 import type { FromWorker, ToWorker } from './protocol.js';
 
 export function makeHandler(post: (msg: FromWorker) => void): (msg: ToWorker) => void {
-  let mesh: Mesh | null = null;
+  let mesh: PreparedMesh | null = null;
   let cfg: Config | null = null;
   return (msg) => {
     if (msg.type === 'init') {
-      mesh = msg.mesh;
+      mesh = prepareForSlicing(msg.mesh);
       cfg = msg.cfg;
       return;
     }

@@ -1,0 +1,133 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import type { Pt } from '../geometry/types.js';
+import { Z_SPEED_MM_S } from '../gcode/moves.js';
+import { estimatePlan, pointToPointSeconds, segmentSeconds, type EstimateSettings } from './estimate.js';
+import type { ExtrudeStep, LayerPlan, PlanStep, PrintPlan, TravelStep } from './types.js';
+
+const S: EstimateSettings = {
+  maxSpeed: 300,
+  filamentDiameter: 1.75,
+  flowRate: 100,
+  retractionEnabled: true,
+  retractionDistance: 5,
+  retractionSpeed: 45,
+  retractionExtraPrime: 0,
+  travelSpeed: 150,
+  firstLayerTravelSpeed: 100,
+  acceleration: 500,
+  cornerVelocity: 8,
+  filamentDensity: 1.24,
+};
+
+const pt = (xMm: number, yMm: number): Pt => ({ x: Math.round(xMm * 1000), y: Math.round(yMm * 1000) });
+const line = (points: Pt[], speed: number, closed = false): ExtrudeStep => ({
+  kind: 'extrude',
+  feature: 'FILL',
+  points,
+  closed,
+  width: 0.4,
+  height: 0.2,
+  speed,
+  flow: 1,
+});
+const move = (points: Pt[], retract: boolean, zHop = 0, speed = 150): TravelStep => ({ kind: 'travel', points, retract, zHop, speed });
+const layer = (index: number, steps: PlanStep[], z = 0.2 * (index + 1)): LayerPlan => ({ index, z, height: 0.2, fan: 0, steps });
+const plan = (...layers: LayerPlan[]): PrintPlan => ({ layers, bounds: { minX: 0, minY: 0, minZ: 0, maxX: 100, maxY: 100, maxZ: 1 } });
+const close = (actual: number, expected: number, tolerance: number, what: string): void =>
+  assert.ok(Math.abs(actual - expected) <= tolerance, `${what}: ${actual} vs ${expected}`);
+
+/** Closed form of one trapezoid that reaches its cruise speed v: L/v + (v−v0)²/2av + (v−v1)²/2av. */
+const trapezoid = (L: number, v: number, v0: number, v1: number, a: number): number =>
+  L / v + (v - v0) ** 2 / (2 * a * v) + (v - v1) ** 2 / (2 * a * v);
+
+test('a long straight move takes L/v + v/a', () => {
+  const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(100, 0)], 50)])), S);
+  close(e.printTimeSeconds, 100 / 50 + 50 / 500, 1e-9, 'straight');
+  assert.deepEqual(e.layerSeconds.length, 1);
+});
+
+test('a short move that never reaches its speed takes 2·√(L/a)', () => {
+  const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(1, 0)], 50)])), S);
+  close(e.printTimeSeconds, 2 * Math.sqrt(1 / 500), 1e-9, 'triangle');
+  close(pointToPointSeconds(1, 50, 500), 2 * Math.sqrt(1 / 500), 1e-12, 'p2p');
+});
+
+test('collinear pieces cost the same as one straight move (no slow-down at straight junctions)', () => {
+  const pts: Pt[] = [];
+  for (let i = 0; i <= 200; i++) pts.push(pt(i * 0.5, 0));
+  const e = estimatePlan(plan(layer(0, [line(pts, 50)])), S);
+  close(e.printTimeSeconds, 100 / 50 + 50 / 500, 1e-6, 'split straight');
+});
+
+test('a 90° corner is taken at cornerVelocity', () => {
+  const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(100, 0), pt(100, 100)], 50)])), S);
+  const expected = trapezoid(100, 50, 0, 8, 500) + trapezoid(100, 50, 8, 0, 500);
+  close(e.printTimeSeconds, expected, 1e-9, 'corner');
+  // A full reversal stops the head.
+  const back = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(100, 0), pt(0, 0)], 50)])), S);
+  close(back.printTimeSeconds, 2 * (100 / 50 + 50 / 500), 1e-9, 'reversal');
+});
+
+test('a zig-zag of short segments is slower than the straight line of the same length', () => {
+  const pts: Pt[] = [];
+  for (let i = 0; i <= 100; i++) pts.push(pt(i, i % 2 === 0 ? 0 : 1));
+  const pathLength = 100 * Math.SQRT2;
+  const zig = estimatePlan(plan(layer(0, [line(pts, 60)])), S).printTimeSeconds;
+  const straight = pathLength / 60 + 60 / 500;
+  assert.ok(zig > straight * 1.5, `zig-zag ${zig} vs straight ${straight}`);
+});
+
+test('a finely divided circle runs near its centripetal speed √(a·r)', () => {
+  const r = 10;
+  const pts: Pt[] = [];
+  for (let i = 0; i < 100; i++) pts.push(pt(50 + r * Math.cos((i / 100) * 2 * Math.PI), 50 + r * Math.sin((i / 100) * 2 * Math.PI)));
+  const e = estimatePlan(plan(layer(0, [line(pts, 200, true)])), S);
+  const v = Math.sqrt(500 * r);
+  const expected = (2 * Math.PI * r) / v + v / 500; // cruise at v, start and end at rest
+  close(e.printTimeSeconds, expected, 0.05 * expected, 'circle');
+});
+
+test('speeds are capped at maxSpeed', () => {
+  const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(200, 0)], 1000)])), { ...S, maxSpeed: 100 });
+  close(e.printTimeSeconds, 200 / 100 + 100 / 500, 1e-9, 'capped');
+});
+
+test('retraction, Z hop and prime are timed as point-to-point moves', () => {
+  const s = { ...S, retractionExtraPrime: 0.5 };
+  const p = plan(layer(0, [move([pt(0, 0)], false), move([pt(30, 0)], true, 0.4)]));
+  const e = estimatePlan(p, s);
+  const expected =
+    pointToPointSeconds(5, 45, 500) + // retract
+    2 * pointToPointSeconds(0.4, Z_SPEED_MM_S, 500) + // lift and lower
+    pointToPointSeconds(30, 150, 500) + // the travel at its own speed
+    pointToPointSeconds(5.5, 45, 500); // prime with the extra
+  close(e.printTimeSeconds, expected, 1e-9, 'retracted travel');
+  close(e.filamentMm, 0.5, 1e-12, 'extra prime is filament used');
+  const off = estimatePlan(p, { ...s, retractionEnabled: false });
+  close(off.printTimeSeconds, pointToPointSeconds(30, 150, 500), 1e-9, 'no retraction');
+});
+
+test('per-layer seconds add up; a layer change costs a Z move', () => {
+  const p = plan(layer(0, [line([pt(0, 0), pt(100, 0)], 50)]), layer(1, [line([pt(100, 0), pt(0, 0)], 50)]));
+  const e = estimatePlan(p, S);
+  assert.equal(e.layerSeconds.length, 2);
+  close(e.layerSeconds[0]!, 2.1, 1e-9, 'layer 0');
+  close(e.layerSeconds[1]!, 2.1 + pointToPointSeconds(0.2, Z_SPEED_MM_S, 500), 1e-9, 'layer 1');
+  close(e.printTimeSeconds, e.layerSeconds[0]! + e.layerSeconds[1]!, 1e-12, 'total');
+});
+
+test('filament length from width × height × length over the cross-section; grams from density', () => {
+  const p = plan(layer(0, [line([pt(0, 0), pt(100, 0), pt(100, 50)], 50)]));
+  const area = Math.PI * 0.875 ** 2;
+  const e = estimatePlan(p, { ...S, flowRate: 110 });
+  const expectedMm = ((0.4 * 0.2 * 150) / area) * 1.1;
+  close(e.filamentMm, expectedMm, 1e-9, 'length');
+  close(e.filamentGrams, (expectedMm * area * 1.24) / 1000, 1e-12, 'grams');
+});
+
+test('segmentSeconds handles triangles between unequal entry and exit speeds', () => {
+  // Enter at 10, leave at 20 over 1 mm with a = 500: peak² = aL + (100 + 400)/2 = 750.
+  const peak = Math.sqrt(750);
+  close(segmentSeconds(1, 10, 100, 20, 500), (peak - 10) / 500 + (peak - 20) / 500, 1e-12, 'triangle');
+});

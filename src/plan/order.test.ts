@@ -1,0 +1,26 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { orderPolylines } from './order.js';
+import type { Polyline } from '../geometry/types.js';
+
+test('nearest-first ordering visits every line once and reverses lines entered at their far end', () => {
+  const lines: Polyline[] = [];
+  for (let i = 0; i < 50; i++) lines.push([{ x: 0, y: i * 1000 }, { x: 10000, y: i * 1000 }]);
+  const shuffled = lines.map((l, i) => ({ l, k: (i * 37) % 50 })).sort((a, b) => a.k - b.k).map((x) => x.l);
+  const out = orderPolylines(shuffled, { x: 0, y: -1000 });
+  assert.equal(out.length, 50);
+  // a zig-zag: consecutive lines start where the previous ended (same side)
+  let travel = 0;
+  for (let i = 1; i < out.length; i++) {
+    const e = out[i - 1][1], s = out[i][0];
+    travel += Math.hypot(e.x - s.x, e.y - s.y);
+  }
+  assert.equal(travel, 49 * 1000);
+  assert.equal(new Set(out.map((l) => l[0].y)).size, 50);
+});
+
+test('a start point far outside the paths still orders quickly and correctly', () => {
+  const lines: Polyline[] = [[{ x: 100000, y: 100000 }, { x: 101000, y: 100000 }], [{ x: 105000, y: 100000 }, { x: 106000, y: 100000 }]];
+  const out = orderPolylines(lines, { x: -1e9, y: -1e9 });
+  assert.equal(out[0][0].x, 100000);
+});
