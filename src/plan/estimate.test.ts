@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import type { Pt } from '../geometry/types.js';
-import { Z_SPEED_MM_S } from '../gcode/moves.js';
+import { Z_SPEED_MM_S } from './moves.js';
 import { estimatePlan, pointToPointSeconds, segmentSeconds, type EstimateSettings } from './estimate.js';
 import type { ExtrudeStep, LayerPlan, PlanStep, PrintPlan, TravelStep } from './types.js';
 

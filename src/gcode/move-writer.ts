@@ -1,0 +1,177 @@
+/**
+ * The MoveSink that prints the body of the file: per layer `;LAYER:n`, `;Z:`, `;HEIGHT:`, temperature
+ * and fan changes, `G92 E0` (absolute E, when E is not already 0), the moves with `;TYPE:` markers when
+ * the feature changes, `;TIME_ELAPSED:` at the layer end.
+ *
+ * Travels are G0, the rest G1; axes and F are modal (written only when they change); X/Y/Z to the µm,
+ * E to 1e-5 mm, F whole mm/min. E is accumulated unrounded and each written value is rounded from the
+ * running total, so relative E words add up to exactly the absolute values and rounding never drifts.
+ * A class with fields rather than closures, so the per-segment doubles are updated in place.
+ */
+import type { ExtrudeStep, FeatureType, LayerPlan } from '../plan/types.js';
+import type { ChunkedText } from './chunked-text.js';
+import type { FlavorCommands } from './flavor.js';
+import { E_SCALE, POSITION_SCALE, compact, feedrate, mm } from './format.js';
+import type { MoveSink } from '../plan/moves.js';
+
+/** The `;TYPE:` marker of each feature, as Cura names them (Cura writes its brim as SKIRT, its raft as SUPPORT-INTERFACE). */
+export const TYPE_MARKERS = {
+  'WALL-OUTER': 'WALL-OUTER',
+  'WALL-INNER': 'WALL-INNER',
+  SKIN: 'SKIN',
+  FILL: 'FILL',
+  SUPPORT: 'SUPPORT',
+  SKIRT: 'SKIRT',
+  BRIM: 'SKIRT',
+  RAFT: 'SUPPORT-INTERFACE',
+} as const satisfies Record<FeatureType, string>;
+
+const E_DECIMALS = 5;
+const POSITION_DECIMALS = 3;
+
+export interface MoveWriterOptions {
+  flavor: FlavorCommands;
+  relativeE: boolean;
+  heatedBed: boolean;
+  /** Estimated seconds per layer, for `;TIME_ELAPSED:`. */
+  layerSeconds: readonly number[];
+  /** Temperatures the start G-code leaves the heaters at (NaN = unknown). */
+  nozzleTemperature: number;
+  bedTemperature: number;
+}
+
+export class MoveWriter implements MoveSink {
+  /** Position as written, µm (NaN = not written yet). */
+  private x = NaN;
+  private y = NaN;
+  /** Modal feed rate as written, mm/min (-1 = not written yet). */
+  private f = -1;
+  /** Filament since the last G92 E0, unrounded, and the same rounded to E_SCALE as last written. */
+  private eTotal = 0;
+  private eUnits = 0;
+  private feature = '';
+  private nozzle: number;
+  private bed: number;
+  private fan = NaN;
+  private elapsed = 0;
+
+  constructor(
+    private readonly out: ChunkedText,
+    private readonly o: MoveWriterOptions,
+  ) {
+    this.nozzle = o.nozzleTemperature;
+    this.bed = o.bedTemperature;
+  }
+
+  private feed(speed: number): void {
+    const value = feedrate(speed);
+    if (value === this.f) return;
+    this.f = value;
+    this.out.text(' F');
+    this.out.int(value);
+  }
+
+  /** Write the X/Y words that changed (both rounded to the µm, at least one differing). */
+  private xy(ux: number, uy: number): void {
+    if (ux !== this.x) {
+      this.out.text(' X');
+      this.out.fixed(ux, POSITION_SCALE, POSITION_DECIMALS);
+      this.x = ux;
+    }
+    if (uy !== this.y) {
+      this.out.text(' Y');
+      this.out.fixed(uy, POSITION_SCALE, POSITION_DECIMALS);
+      this.y = uy;
+    }
+  }
+
+  private e(delta: number): void {
+    this.eTotal += delta;
+    const units = Math.round(this.eTotal * E_SCALE);
+    const written = this.o.relativeE ? units - this.eUnits : units;
+    this.eUnits = units;
+    this.out.text(' E');
+    this.out.fixed(written, E_SCALE, E_DECIMALS);
+  }
+
+  layerStart(layer: LayerPlan, position: number): void {
+    const { out, o } = this;
+    out.line(`;LAYER:${position}`);
+    out.line(`;Z:${mm(layer.z)}`);
+    out.line(`;HEIGHT:${mm(layer.height)}`);
+    if (layer.nozzleTemperature !== undefined && layer.nozzleTemperature !== this.nozzle) {
+      this.nozzle = layer.nozzleTemperature;
+      for (const l of o.flavor.setNozzle(this.nozzle)) out.line(l);
+    }
+    if (o.heatedBed && layer.bedTemperature !== undefined && layer.bedTemperature !== this.bed) {
+      this.bed = layer.bedTemperature;
+      out.line(o.flavor.setBed(this.bed));
+    }
+    if (layer.fan !== this.fan) {
+      this.fan = layer.fan;
+      out.line(o.flavor.fan(this.fan));
+    }
+    if (this.eUnits !== 0 && !o.relativeE) out.line('G92 E0');
+    this.eTotal = 0;
+    this.eUnits = 0;
+    this.feature = '';
+  }
+
+  layerEnd(_layer: LayerPlan, position: number): void {
+    this.elapsed += this.o.layerSeconds[position] ?? 0;
+    this.out.line(`;TIME_ELAPSED:${compact(this.elapsed, 3)}`);
+  }
+
+  zMove(z: number, _distance: number, speed: number): void {
+    this.out.text('G0');
+    this.feed(speed);
+    this.out.text(' Z');
+    this.out.fixed(Math.round(z * POSITION_SCALE), POSITION_SCALE, POSITION_DECIMALS);
+    this.out.endLine();
+  }
+
+  travel(x: number, y: number, _length: number, speed: number): void {
+    const ux = Math.round(x);
+    const uy = Math.round(y);
+    if (ux === this.x && uy === this.y) return;
+    this.out.text('G0');
+    this.feed(speed);
+    this.xy(ux, uy);
+    this.out.endLine();
+  }
+
+  extrudeStart(step: ExtrudeStep): void {
+    const marker = TYPE_MARKERS[step.feature];
+    if (marker === this.feature) return;
+    this.feature = marker;
+    this.out.line(';TYPE:' + marker);
+  }
+
+  extrude(x: number, y: number, _length: number, filament: number, speed: number): void {
+    const ux = Math.round(x);
+    const uy = Math.round(y);
+    if (ux === this.x && uy === this.y) {
+      this.eTotal += filament; // shorter than a micrometre: carried into the next segment
+      return;
+    }
+    this.out.text('G1');
+    this.feed(speed);
+    this.xy(ux, uy);
+    this.e(filament);
+    this.out.endLine();
+  }
+
+  retract(filament: number, speed: number): void {
+    this.out.text('G1');
+    this.feed(speed);
+    this.e(-filament);
+    this.out.endLine();
+  }
+
+  prime(filament: number, speed: number): void {
+    this.out.text('G1');
+    this.feed(speed);
+    this.e(filament);
+    this.out.endLine();
+  }
+}

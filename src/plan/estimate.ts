@@ -1,0 +1,223 @@
+/**
+ * Print time and filament estimate: a pass over the plan (through the same move expansion the G-code
+ * writer uses), never over G-code text.
+ *
+ * Motion model, as firmware planners (Marlin, Klipper) do it:
+ * - Consecutive XY moves form a chain; a retraction, a prime, a Z move or a layer end stops the head
+ *   (speed 0) and ends the chain.
+ * - Each segment has a nominal speed and a trapezoidal profile with the one `acceleration` of the settings.
+ * - The speed at a junction between two segments is limited by both nominal speeds, by the corner angle
+ *   through the junction-deviation rule calibrated so that a 90° corner allows exactly `cornerVelocity`
+ *   (Klipper's square-corner velocity; a full reversal stops), and by the centripetal speed of an arc
+ *   tangent to both segments within half of the shorter one (so many short segments around a curve are
+ *   taken at the speed of that curve).
+ * - A backward pass limits every junction so the head can still brake to the next one; a forward pass
+ *   limits it to what the head can reach from the previous one. Then each segment's time is summed.
+ * - Retractions, primes and Z moves: point-to-point trapezoids from rest at their own speeds.
+ * Heating, homing and the start/end G-code are not estimated.
+ *
+ * Filament: Σ E of the extrusions (width × height × length over the filament cross-section × flow ×
+ * flowRate) plus the extra prime after each retraction; weight from `filamentDensity` (g/cm³).
+ */
+import { filamentArea, walkPlan, type MoveSettings, type MoveSink } from './moves.js';
+import type { Settings } from '../settings/schema.js';
+import type { PlanEstimate, PrintPlan } from './types.js';
+
+/** The settings the estimate reads. */
+export type EstimateSettings = MoveSettings & Pick<Settings, 'acceleration' | 'cornerVelocity' | 'filamentDensity'>;
+
+/** √2 − 1: the junction-deviation factor that makes a 90° corner's speed equal the corner velocity. */
+const JUNCTION_FACTOR = Math.SQRT2 - 1;
+/** cos of the angle above which two segments count as a full reversal (the head must stop). */
+const REVERSAL_COS = 0.999999;
+
+/**
+ * Time of one trapezoidal segment of `length` mm: enter at speed v0, cruise at most at vc, leave at v1
+ * (mm/s). Assumes v0 and v1 are reachable from each other within `length` (the lookahead guarantees it).
+ */
+export function segmentSeconds(length: number, v0: number, vc: number, v1: number, accel: number): number {
+  const twoA = 2 * accel;
+  const entry2 = v0 * v0;
+  const exit2 = v1 * v1;
+  const cruise2 = vc * vc;
+  const accelDistance = (cruise2 - entry2) / twoA;
+  const decelDistance = (cruise2 - exit2) / twoA;
+  if (accelDistance + decelDistance <= length) return (2 * vc - v0 - v1) / accel + (length - accelDistance - decelDistance) / vc;
+  const peak = Math.sqrt(accel * length + (entry2 + exit2) / 2);
+  return (2 * peak - v0 - v1) / accel;
+}
+
+/** Time to move `distance` from rest to rest at cruise speed `speed` with acceleration `accel`. */
+export function pointToPointSeconds(distance: number, speed: number, accel: number): number {
+  return distance > 0 ? segmentSeconds(distance, 0, speed, 0, accel) : 0;
+}
+
+/**
+ * Squared speed allowed through the junction from direction (ux0,uy0) (segment length len0) into
+ * direction (ux1,uy1) (length len1), from the corner angle alone (nominal speeds not applied).
+ */
+export function junctionSpeed2(
+  ux0: number,
+  uy0: number,
+  len0: number,
+  ux1: number,
+  uy1: number,
+  len1: number,
+  accel: number,
+  cornerVelocity: number,
+): number {
+  // theta: angle between the reversed incoming direction and the outgoing one (π = straight on).
+  const cosTheta = -(ux0 * ux1 + uy0 * uy1);
+  if (cosTheta > REVERSAL_COS) return 0;
+  const sinHalf = Math.sqrt(0.5 * (1 - cosTheta));
+  const cosHalf = Math.sqrt(Math.max(0, 0.5 * (1 + cosTheta)));
+  if (cosHalf < 1e-9) return Infinity;
+  const deviation = cornerVelocity * cornerVelocity * JUNCTION_FACTOR * (sinHalf / (1 - sinHalf));
+  const arc = accel * 0.5 * Math.min(len0, len1) * (sinHalf / cosHalf);
+  return deviation < arc ? deviation : arc;
+}
+
+/**
+ * The motion timer: a MoveSink that collects chains of XY segments (growable typed arrays, owned by
+ * one estimate call), runs the lookahead passes when the head stops and adds up the time per layer.
+ * A class with fields rather than closures, so the per-segment doubles are updated in place.
+ */
+class MotionTimer implements MoveSink {
+  private length = new Float64Array(1024);
+  private cruise = new Float64Array(1024);
+  private entryMax2 = new Float64Array(1024);
+  private count = 0;
+  /** Last XY position (µm) and unit direction of the last chained segment. */
+  private px = 0;
+  private py = 0;
+  private ux = 0;
+  private uy = 0;
+  private layerTime = 0;
+  readonly layerSeconds: number[] = [];
+  filament = 0;
+
+  constructor(
+    private readonly accel: number,
+    private readonly cornerVelocity: number,
+  ) {}
+
+  /** Run the backward and forward passes over the chain (which starts and ends at rest), add its time, empty it. */
+  private stop(): void {
+    const n = this.count;
+    if (n === 0) return;
+    const { length, cruise, entryMax2, accel } = this;
+    const twoA = 2 * accel;
+    // Backward: every entry must allow braking to the next one.
+    let next2 = 0;
+    for (let i = n - 1; i >= 0; i--) {
+      const reachable = next2 + twoA * length[i]!;
+      const e = entryMax2[i]! < reachable ? entryMax2[i]! : reachable;
+      entryMax2[i] = e;
+      next2 = e;
+    }
+    // Forward: every exit is limited by what the head reaches from the entry; sum the trapezoids.
+    let seconds = 0;
+    let entry2 = 0;
+    let v0 = 0;
+    for (let i = 0; i < n; i++) {
+      const len = length[i]!;
+      const nextMax2 = i + 1 < n ? entryMax2[i + 1]! : 0;
+      const reachable = entry2 + twoA * len;
+      const exit2 = nextMax2 < reachable ? nextMax2 : reachable;
+      const v1 = Math.sqrt(exit2);
+      seconds += segmentSeconds(len, v0, cruise[i]!, v1, accel);
+      entry2 = exit2;
+      v0 = v1;
+    }
+    this.count = 0;
+    this.layerTime += seconds;
+  }
+
+  private grow(): void {
+    const size = this.length.length * 2;
+    const length = new Float64Array(size);
+    const cruise = new Float64Array(size);
+    const entryMax2 = new Float64Array(size);
+    length.set(this.length);
+    cruise.set(this.cruise);
+    entryMax2.set(this.entryMax2);
+    this.length = length;
+    this.cruise = cruise;
+    this.entryMax2 = entryMax2;
+  }
+
+  private push(x: number, y: number, length: number, speed: number): void {
+    if (!(length > 0)) {
+      // From an unknown position: no time can be given; the chain restarts here.
+      this.stop();
+      this.px = x;
+      this.py = y;
+      return;
+    }
+    const nx = (x - this.px) / (1000 * length);
+    const ny = (y - this.py) / (1000 * length);
+    const i = this.count;
+    let entry2 = 0;
+    if (i > 0) {
+      entry2 = junctionSpeed2(this.ux, this.uy, this.length[i - 1]!, nx, ny, length, this.accel, this.cornerVelocity);
+      const slower = speed < this.cruise[i - 1]! ? speed : this.cruise[i - 1]!;
+      if (slower * slower < entry2) entry2 = slower * slower;
+    }
+    if (i === this.length.length) this.grow();
+    this.length[i] = length;
+    this.cruise[i] = speed;
+    this.entryMax2[i] = entry2;
+    this.count = i + 1;
+    this.px = x;
+    this.py = y;
+    this.ux = nx;
+    this.uy = ny;
+  }
+
+  private pointToPoint(distance: number, speed: number): void {
+    this.stop();
+    this.layerTime += pointToPointSeconds(distance, speed, this.accel);
+  }
+
+  layerStart(): void {
+    this.layerTime = 0;
+  }
+  layerEnd(): void {
+    this.stop();
+    this.layerSeconds.push(this.layerTime);
+  }
+  zMove(_z: number, distance: number, speed: number): void {
+    this.pointToPoint(distance, speed);
+  }
+  travel(x: number, y: number, length: number, speed: number): void {
+    this.push(x, y, length, speed);
+  }
+  extrudeStart(): void {}
+  extrude(x: number, y: number, length: number, filament: number, speed: number): void {
+    this.filament += filament;
+    this.push(x, y, length, speed);
+  }
+  retract(filament: number, speed: number): void {
+    this.filament -= filament;
+    this.pointToPoint(filament, speed);
+  }
+  prime(filament: number, speed: number): void {
+    this.filament += filament;
+    this.pointToPoint(filament, speed);
+  }
+}
+
+/** Estimate print time (per layer and total) and filament use of a plan. */
+export function estimatePlan(plan: PrintPlan, s: EstimateSettings): PlanEstimate {
+  const timer = new MotionTimer(s.acceleration, s.cornerVelocity);
+  walkPlan(plan, s, timer);
+  let printTimeSeconds = 0;
+  for (const t of timer.layerSeconds) printTimeSeconds += t;
+  const volumeCm3 = (timer.filament * filamentArea(s.filamentDiameter)) / 1000;
+  return {
+    printTimeSeconds,
+    filamentMm: timer.filament,
+    filamentGrams: volumeCm3 * s.filamentDensity,
+    layerSeconds: timer.layerSeconds,
+  };
+}

@@ -1,0 +1,148 @@
+/**
+ * The machine moves a print plan turns into, in order: Z moves, travels, extrusion segments,
+ * retractions and primes. The G-code writer and the time/filament estimate both walk a plan through
+ * `walkPlan`, so the estimate describes exactly the moves that get written.
+ *
+ * Conventions (documented once, here):
+ * - A travel step goes from the current position through each of its points in turn.
+ * - An extrude step starts at `points[0]`; when the nozzle is elsewhere an implicit travel (no
+ *   retraction) goes there first, at the layer's travel speed. A closed step returns to `points[0]`.
+ * - A retracting travel: retract, lift to layer Z + zHop (or just move to layer Z), travel, come back
+ *   down to layer Z, prime `retractionDistance + retractionExtraPrime`. Retractions happen only when the
+ *   step asks for one and `retractionEnabled` is on; the Z hop only with a retraction.
+ * - Otherwise every layer's first move is preceded by a Z move to the layer's Z.
+ * - E per mm of path = width × height / (π·(filamentDiameter/2)²) × flow × flowRate/100: the
+ *   rectangular cross-section model (the same one the planner's widths are computed for).
+ * - XY speeds are capped at `maxSpeed` (and floored at MIN_SPEED_MM_S so a feed rate is never 0).
+ * - Zero-length segments are dropped.
+ */
+import type { ExtrudeStep, LayerPlan, PrintPlan } from './types.js';
+import type { Settings } from '../settings/schema.js';
+
+/** Speed of standalone Z moves (layer change, Z hop), mm/s: a rate every common printer's Z axis accepts. */
+export const Z_SPEED_MM_S = 5;
+/** Slowest feed rate ever written, mm/s: keeps F positive whatever a plan asks. */
+export const MIN_SPEED_MM_S = 0.1;
+
+/** The settings the move expansion reads. */
+export type MoveSettings = Pick<
+  Settings,
+  | 'maxSpeed'
+  | 'filamentDiameter'
+  | 'flowRate'
+  | 'retractionEnabled'
+  | 'retractionDistance'
+  | 'retractionSpeed'
+  | 'retractionExtraPrime'
+  | 'travelSpeed'
+  | 'firstLayerTravelSpeed'
+>;
+
+/**
+ * Receives the moves of a plan. Positions are µm (bed space), Z and lengths mm, speeds mm/s (already
+ * capped), filament amounts mm of filament. A length or distance is NaN when the move starts from an
+ * unknown position (the first move after the start G-code).
+ */
+export interface MoveSink {
+  layerStart(layer: LayerPlan, position: number): void;
+  layerEnd(layer: LayerPlan, position: number): void;
+  zMove(z: number, distance: number, speed: number): void;
+  travel(x: number, y: number, length: number, speed: number): void;
+  /** Called before the segments of each extrude step (after any implicit travel to its start). */
+  extrudeStart(step: ExtrudeStep): void;
+  extrude(x: number, y: number, length: number, filament: number, speed: number): void;
+  retract(filament: number, speed: number): void;
+  prime(filament: number, speed: number): void;
+}
+
+/** Filament cross-section area, mm². */
+export function filamentArea(filamentDiameter: number): number {
+  const r = filamentDiameter / 2;
+  return Math.PI * r * r;
+}
+
+/** Millimetres of filament per millimetre of an extrusion path (rectangular cross-section). */
+export function filamentPerMm(step: ExtrudeStep, s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>): number {
+  return ((step.width * step.height) / filamentArea(s.filamentDiameter)) * step.flow * (s.flowRate / 100);
+}
+
+function capSpeed(speed: number, maxSpeed: number): number {
+  if (!(speed > MIN_SPEED_MM_S)) return MIN_SPEED_MM_S;
+  return speed < maxSpeed ? speed : maxSpeed;
+}
+
+/** Where the walk has left the nozzle (µm; Z mm, NaN until the first Z move). */
+interface Position {
+  x: number;
+  y: number;
+  z: number;
+  /** False until the first XY move: the start G-code leaves the nozzle somewhere unknown. */
+  known: boolean;
+}
+
+function moveZ(pos: Position, target: number, sink: MoveSink): void {
+  if (target === pos.z) return;
+  sink.zMove(target, Number.isNaN(pos.z) ? NaN : Math.abs(target - pos.z), Z_SPEED_MM_S);
+  pos.z = target;
+}
+
+function travelTo(pos: Position, x: number, y: number, speed: number, sink: MoveSink): void {
+  if (pos.known && x === pos.x && y === pos.y) return;
+  const dx = x - pos.x;
+  const dy = y - pos.y;
+  const length = pos.known ? Math.sqrt(dx * dx + dy * dy) / 1000 : NaN;
+  pos.x = x;
+  pos.y = y;
+  pos.known = true;
+  sink.travel(x, y, length, speed);
+}
+
+/** Walk `plan` in print order, telling `sink` every machine move. */
+export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void {
+  const retractDistance = s.retractionEnabled ? s.retractionDistance : 0;
+  const primeDistance = s.retractionEnabled ? s.retractionDistance + s.retractionExtraPrime : 0;
+  const pos: Position = { x: 0, y: 0, z: NaN, known: false };
+
+  for (let li = 0; li < plan.layers.length; li++) {
+    const layer = plan.layers[li]!;
+    const layerZ = layer.z;
+    const travelSpeed = capSpeed(li === 0 ? s.firstLayerTravelSpeed : s.travelSpeed, s.maxSpeed);
+    sink.layerStart(layer, li);
+    for (const step of layer.steps) {
+      if (step.kind === 'travel') {
+        const speed = capSpeed(step.speed, s.maxSpeed);
+        const retracting = step.retract && s.retractionEnabled;
+        if (retracting && retractDistance > 0) sink.retract(retractDistance, s.retractionSpeed);
+        moveZ(pos, retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, sink);
+        for (const p of step.points) travelTo(pos, p.x, p.y, speed, sink);
+        moveZ(pos, layerZ, sink);
+        if (retracting && primeDistance > 0) sink.prime(primeDistance, s.retractionSpeed);
+        continue;
+      }
+      const points = step.points;
+      const n = points.length;
+      if (n === 0) continue;
+      moveZ(pos, layerZ, sink);
+      travelTo(pos, points[0]!.x, points[0]!.y, travelSpeed, sink);
+      sink.extrudeStart(step);
+      const speed = capSpeed(step.speed, s.maxSpeed);
+      const perMm = filamentPerMm(step, s);
+      const last = step.closed ? n : n - 1;
+      let x = pos.x;
+      let y = pos.y;
+      for (let i = 1; i <= last; i++) {
+        const p = points[i === n ? 0 : i]!;
+        const dx = p.x - x;
+        const dy = p.y - y;
+        if (dx === 0 && dy === 0) continue;
+        const length = Math.sqrt(dx * dx + dy * dy) / 1000;
+        x = p.x;
+        y = p.y;
+        sink.extrude(x, y, length, length * perMm, speed);
+      }
+      pos.x = x;
+      pos.y = y;
+    }
+    sink.layerEnd(layer, li);
+  }
+}
