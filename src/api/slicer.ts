@@ -6,6 +6,7 @@ import { StrataError } from '../errors.js';
 import { mergeObjects, placeOnBed, prepareMesh, toMeshObjects } from '../mesh/index.js';
 import type { Mesh, MeshReport } from '../mesh/types.js';
 import { runPipeline, type Progress } from '../pipeline/run.js';
+import type { PrintPlan } from '../plan/types.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey, type Settings, type SliceOptions } from '../settings/schema.js';
 import { checkKey, resolveConfig, validateValue, type Config } from '../settings/resolve.js';
 
@@ -146,6 +147,16 @@ export class Slicer {
 
   /** Slice and stream the G-code to `sink` in chunks. */
   async sliceToSink(input: unknown, sink: (chunk: string) => void, opts: SliceCallOptions = {}): Promise<{ stats: SliceStats; warnings: string[] }> {
+    const { stats, warnings } = await this.slicePlan(input, opts, sink);
+    return { stats, warnings };
+  }
+
+  /** Slice and return the structured toolpath plan (layers of typed paths) as well as the stats. */
+  async slicePlan(
+    input: unknown,
+    opts: SliceCallOptions = {},
+    sink: (chunk: string) => void = () => {},
+  ): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
     const model = prepareModel(input, cfg);
@@ -169,7 +180,7 @@ export class Slicer {
       bounds: run.plan.bounds,
       threads,
     };
-    return { stats, warnings: model.warnings };
+    return { plan: run.plan, stats, warnings: model.warnings };
   }
 }
 

@@ -13,12 +13,15 @@ import { listPresets } from '../settings/presets/index.js';
 import { SCHEMA, SETTING_KEYS, type SliceOptions } from '../settings/schema.js';
 import { parseArgs, kebab, type ParsedArgs } from './args.js';
 import { progressBar } from './progress.js';
+import { layerToSvg } from '../preview/svg.js';
 
 const HELP = `strata ${VERSION}: a fast FFF slicer
 
 Usage:
   strata slice MODEL... [-o OUT.gcode] [options]   slice STL/OBJ/3MF models (- reads stdin) to G-code
   strata info MODEL...                             triangles, size, volume, open and non-manifold edges
+  strata preview MODEL [--layer N] [-o layer.svg]   slice and draw one layer as SVG (paths by feature,
+                                                   --travel adds travels, --width PX sets the size)
   strata presets                                   list printer and filament presets
   strata settings                                  list every setting with its flag, unit, default and range
 
@@ -133,6 +136,31 @@ function cmdInfo(args: ParsedArgs): void {
   }
 }
 
+async function cmdPreview(args: ParsedArgs): Promise<void> {
+  if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'preview needs a model file');
+  const slicer = new Slicer(optionsFrom(args));
+  const inputs = args.positional.map((p) => loadModelBytes(readInput(p), p === '-' ? undefined : basename(p)));
+  const { plan } = await slicer.slicePlan(inputs.flat());
+  const n = plan.layers.length;
+  const layerText = typeof args.flags.layer === 'string' ? args.flags.layer : String(Math.floor(n / 2));
+  const index = Number(layerText);
+  if (!Number.isInteger(index) || index < 0 || index >= n) throw new StrataError('BAD_SETTING', `--layer must be a layer number from 0 to ${n - 1}`);
+  const width = typeof args.flags.width === 'string' ? Number(args.flags.width) : 800;
+  if (!Number.isFinite(width) || width < 50 || width > 20000) throw new StrataError('BAD_SETTING', '--width must be 50 to 20000 pixels');
+  const svg = layerToSvg(plan.layers[index], { travel: args.flags.travel === true, widthPx: width, title: `layer ${index} at Z ${plan.layers[index].z}` });
+  const out = args.output ?? '-';
+  if (out === '-') process.stdout.write(svg + '\n');
+  else {
+    const fd = openFileForWrite(out);
+    try {
+      writeAll(fd, svg + '\n');
+    } finally {
+      closeSync(fd);
+    }
+    if (!args.quiet) process.stderr.write(`${out}: layer ${index} of ${n}\n`);
+  }
+}
+
 function cmdPresets(): void {
   const { printers, filaments } = listPresets();
   const w = Math.max(...printers.map((p) => p.id.length), ...filaments.map((f) => f.id.length));
@@ -170,6 +198,9 @@ export async function main(argv: readonly string[]): Promise<number> {
       case 'info':
         cmdInfo(args);
         return 0;
+      case 'preview':
+        await cmdPreview(args);
+        return 0;
       case 'presets':
         cmdPresets();
         return 0;
@@ -177,7 +208,7 @@ export async function main(argv: readonly string[]): Promise<number> {
         cmdSettings();
         return 0;
       default:
-        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, presets, settings)`);
+        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, preview, presets, settings)`);
     }
   } catch (e) {
     if (e instanceof StrataError) {

@@ -8,7 +8,7 @@ import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/ty
 import { generateInfill, solidFill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import type { IslandPaths, LayerPaths } from '../paths/types.js';
-import { allSkin, skinAreas } from '../regions/skin-areas.js';
+import { allSkin, coveredByAll, skinAreas } from '../regions/skin-areas.js';
 import { computeWalls } from '../regions/walls.js';
 import type { Config } from '../settings/resolve.js';
 import { slicePrepared, type PreparedMesh } from '../slice/index.js';
@@ -70,13 +70,16 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob): Ra
     const below: ExPolygon[][] = [];
     for (let k = 1; k <= cfg.bottomLayers && i - k >= 0; k++) below.push(sectionAt(i - k));
     const walls = computeWalls(section.islands, cfg.walls, w);
+    const anyInner = walls.some((iw) => iw.inner.length > 0);
+    const coveredAbove = anyInner && cfg.topLayers > 0 ? coveredByAll(above, cfg.topLayers) : [];
+    const coveredBelow = anyInner && cfg.bottomLayers > 0 ? coveredByAll(below, cfg.bottomLayers) : [];
     const overlapSkin = (cfg.skinOverlap / 100) * w;
     const overlapInfill = (cfg.infillOverlap / 100) * w;
     const islands: IslandPaths[] = [];
     const layerInfill: ExPolygon[] = [];
     const layerTop: ExPolygon[] = [];
     for (const iw of walls) {
-      const skin = skinAreas(iw.inner, above, below, cfg.topLayers, cfg.bottomLayers, w);
+      const skin = skinAreas(iw.inner, coveredAbove, coveredBelow, cfg.topLayers, cfg.bottomLayers, w);
       const skinAll = allSkin(skin);
       const sparse = infillOn ? offset(skinAll.length ? difference(iw.inner, skinAll) : iw.inner, -(w / 2 - overlapInfill)) : [];
       for (const a of sparse) layerInfill.push(a);

@@ -16,7 +16,7 @@ export interface SkinAreas {
  * The region covered by material on every one of the given layers (their sections intersected).
  * An empty or missing layer covers nothing.
  */
-function coveredByAll(sections: readonly (readonly ExPolygon[])[], count: number): ExPolygon[] {
+export function coveredByAll(sections: readonly (readonly ExPolygon[])[], count: number): ExPolygon[] {
   if (sections.length < count) return [];
   let covered: ExPolygon[] | null = null;
   for (let k = 0; k < count; k++) {
@@ -29,26 +29,25 @@ function coveredByAll(sections: readonly (readonly ExPolygon[])[], count: number
 }
 
 /**
- * Skin areas of one layer.
- * @param inner the layer's area inside its walls, µm
- * @param above sections of the layers above, nearest first (fewer than topLayers near the top of the model)
- * @param below sections of the layers below, nearest first (fewer than bottomLayers near the bed)
+ * Skin areas of one island.
+ * @param inner the island's area inside its walls, µm
+ * @param coveredAbove area with material on each of the `topLayers` layers above (coveredByAll), µm
+ * @param coveredBelow the same for the `bottomLayers` layers below
  * @param minWidthUm features of skin narrower than this are dropped (they are slivers along the walls)
  */
 export function skinAreas(
   inner: readonly ExPolygon[],
-  above: readonly (readonly ExPolygon[])[],
-  below: readonly (readonly ExPolygon[])[],
+  coveredAbove: readonly ExPolygon[],
+  coveredBelow: readonly ExPolygon[],
   topLayers: number,
   bottomLayers: number,
   minWidthUm: number,
 ): SkinAreas {
   if (inner.length === 0) return { top: [], bottom: [] };
-  const top = topLayers > 0 ? difference(inner, coveredByAll(above, topLayers)) : [];
-  const bottomRaw = bottomLayers > 0 ? difference(inner, coveredByAll(below, bottomLayers)) : [];
+  const top = topLayers > 0 ? difference(inner, coveredAbove) : [];
   // A region that is both top and bottom is printed once, as bottom (it rests on nothing).
-  const bottom = bottomRaw;
-  const topOnly = bottom.length ? difference(top, bottom) : top;
+  const bottom = bottomLayers > 0 ? difference(inner, coveredBelow) : [];
+  const topOnly = bottom.length && top.length ? difference(top, bottom) : top;
   const clean = (a: ExPolygon[]) => (a.length && minWidthUm > 0 ? opening(a, minWidthUm / 2) : a);
   return { top: clean(topOnly), bottom: clean(bottom) };
 }

@@ -1,0 +1,103 @@
+/**
+ * Entry points that take "a model" in whatever form: file bytes (format detected), text, three.js
+ * objects, raw arrays, meshes, or arrays of these.
+ */
+import { StrataError } from '../errors.js';
+import { fromArrays } from './arrays.js';
+import { parseObj } from './obj.js';
+import { parseStl } from './stl.js';
+import { isThreeLike, fromThree } from './three.js';
+import { parse3mf } from './threemf.js';
+import type { MeshObject, RawMeshArrays } from './types.js';
+
+export type ModelFormat = 'stl' | 'obj' | '3mf';
+
+/** Deepest nesting of arrays accepted by toMeshObjects. */
+const MAX_INPUT_DEPTH = 16;
+
+/**
+ * Detect the format of file bytes: zip magic → 3mf; exact binary-STL size → stl; then the file
+ * extension; then the text ("solid" → stl; v/f/o/g statements → obj).
+ */
+export function detectFormat(bytes: Uint8Array, fileName?: string): ModelFormat {
+  if (bytes.length >= 4 && bytes[0] === 0x50 && bytes[1] === 0x4b && bytes[2] === 3 && bytes[3] === 4) return '3mf';
+  if (bytes.length >= 84) {
+    const n = (bytes[80] | (bytes[81] << 8) | (bytes[82] << 16) | (bytes[83] << 24)) >>> 0;
+    if (84 + 50 * n === bytes.length) return 'stl';
+  }
+  const ext = fileName ? extension(fileName) : '';
+  if (ext === 'stl' || ext === 'obj' || ext === '3mf') return ext;
+  const head = new TextDecoder('utf-8').decode(bytes.subarray(0, 4096));
+  if (/^\s*solid(\s|$)/i.test(head)) return 'stl';
+  if (/^\s*(v|vn|vt|f|o|g|mtllib|usemtl)\s/m.test(head) && !/[\x00-\x08\x0e-\x1f]/.test(head)) return 'obj';
+  throw new StrataError(
+    'UNSUPPORTED_FORMAT',
+    `cannot tell the format of ${fileName ? `"${fileName}"` : 'the file'}: expected STL, OBJ or 3MF`,
+  );
+}
+
+/** Parse model file bytes; `fileName` helps detection and names the objects. */
+export function loadModelBytes(bytes: Uint8Array, fileName?: string): MeshObject[] {
+  const name = fileName ? baseName(fileName) : 'model';
+  switch (detectFormat(bytes, fileName)) {
+    case '3mf':
+      return parse3mf(bytes, name);
+    case 'obj':
+      return parseObj(bytes, name);
+    case 'stl':
+      return parseStl(bytes, name);
+  }
+}
+
+/**
+ * Whatever a library caller passes: Uint8Array / ArrayBuffer (file bytes), a string (ASCII STL or
+ * OBJ text), a three.js Object3D or BufferGeometry, `{ positions, indices? }`, a Mesh, a MeshObject,
+ * or an array of these.
+ */
+export function toMeshObjects(input: unknown): MeshObject[] {
+  return convert(input, 0);
+}
+
+function convert(input: unknown, depth: number): MeshObject[] {
+  if (depth > MAX_INPUT_DEPTH) throw new StrataError('UNSUPPORTED_FORMAT', 'the input is nested too deeply');
+  if (input instanceof Uint8Array) return loadModelBytes(input);
+  if (input instanceof ArrayBuffer) return loadModelBytes(new Uint8Array(input));
+  if (input instanceof DataView) return loadModelBytes(new Uint8Array(input.buffer, input.byteOffset, input.byteLength));
+  if (typeof input === 'string') {
+    if (/^\s*solid(\s|$)/i.test(input.slice(0, 256))) return parseStl(new TextEncoder().encode(input));
+    if (/^\s*(v|vn|vt|f|o|g|mtllib|usemtl|#)/m.test(input.slice(0, 4096))) return parseObj(input);
+    throw new StrataError('UNSUPPORTED_FORMAT', 'the string is neither ASCII STL nor OBJ text');
+  }
+  if (Array.isArray(input)) {
+    if (input.length > 0 && input.every((v) => typeof v === 'number')) {
+      throw new StrataError('UNSUPPORTED_FORMAT', 'got an array of numbers: pass { positions, indices } for raw arrays');
+    }
+    return input.flatMap((item) => convert(item, depth + 1));
+  }
+  if (typeof input === 'object' && input !== null) {
+    const o = input as Record<string, unknown>;
+    if (isThreeLike(o)) return fromThree(o);
+    if ('positions' in o) return [fromArrays(o as unknown as RawMeshArrays, typeof o.name === 'string' ? o.name : 'mesh')];
+    if (typeof o.mesh === 'object' && o.mesh !== null && 'positions' in o.mesh) {
+      const name = typeof o.name === 'string' && o.name !== '' ? o.name : 'mesh';
+      return [fromArrays(o.mesh as RawMeshArrays, name)];
+    }
+  }
+  const what = input === null ? 'null' : Array.isArray(input) ? 'array' : typeof input === 'object' ? (input.constructor?.name ?? 'object') : typeof input;
+  throw new StrataError(
+    'UNSUPPORTED_FORMAT',
+    `cannot make a mesh from ${what}: pass file bytes, STL/OBJ text, a three.js object, { positions, indices } or a Mesh`,
+  );
+}
+
+function extension(fileName: string): string {
+  const base = fileName.split(/[\\/]/).pop() ?? '';
+  const dot = base.lastIndexOf('.');
+  return dot > 0 ? base.slice(dot + 1).toLowerCase() : '';
+}
+
+function baseName(fileName: string): string {
+  const base = fileName.split(/[\\/]/).pop() ?? fileName;
+  const dot = base.lastIndexOf('.');
+  return dot > 0 ? base.slice(0, dot) : base || 'model';
+}

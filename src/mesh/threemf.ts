@@ -1,0 +1,123 @@
+/**
+ * 3MF reader: every <build><item> becomes one MeshObject in millimetres, with the item transform
+ * and any (nested) component transforms applied. Objects in other model parts (production
+ * extension p:path) are followed. Colours, materials and other extensions are ignored.
+ */
+import { StrataError } from '../errors.js';
+import { compose, determinant, identity, transformPoints, type Affine } from './transform.js';
+import { parseModelPart, type ModelObject, type ModelPart, type ObjectRef } from './threemf-model.js';
+import { printable } from './printable.js';
+import { openPackage } from './threemf-package.js';
+import type { MeshObject } from './types.js';
+import { weld } from './weld.js';
+
+/** Most triangles a 3MF may expand to (components can instance an object many times). */
+export const MAX_3MF_TRIANGLES = 20_000_000;
+/** Deepest component nesting followed. */
+const MAX_COMPONENT_DEPTH = 32;
+
+interface Size {
+  vertices: number;
+  triangles: number;
+}
+
+export function parse3mf(bytes: Uint8Array, name = 'model'): MeshObject[] {
+  const pkg = openPackage(bytes);
+  const parsed = new Map<string, ModelPart>();
+  const part = (key: string): ModelPart => {
+    let p = parsed.get(key);
+    if (p === undefined) {
+      const data = pkg.parts.get(key);
+      if (data === undefined) throw new StrataError('BAD_FILE', `3MF: a component refers to part /${printable(key)}, which is not in the archive`);
+      p = parseModelPart(data, key);
+      parsed.set(key, p);
+    }
+    return p;
+  };
+  const lookup = (key: string, id: number): ModelObject => {
+    const o = part(key).objects.get(id);
+    if (o === undefined) throw new StrataError('BAD_FILE', `3MF: object ${id} is referenced but not defined in /${printable(key)}`);
+    return o;
+  };
+
+  // Sizes first (memoised, with cycle detection), so a hostile file cannot make us allocate unbounded memory.
+  const sizes = new Map<string, Size>();
+  const inProgress = new Set<string>();
+  const sizeOf = (key: string, id: number, depth: number): Size => {
+    const k = `${key}#${id}`;
+    const known = sizes.get(k);
+    if (known !== undefined) return known;
+    if (inProgress.has(k)) throw new StrataError('BAD_FILE', `3MF: object ${id} contains itself through its components`);
+    if (depth > MAX_COMPONENT_DEPTH) {
+      throw new StrataError('LIMIT_EXCEEDED', `3MF: components nested deeper than ${MAX_COMPONENT_DEPTH} levels`);
+    }
+    inProgress.add(k);
+    const o = lookup(key, id);
+    let vertices = o.vertices ? o.vertices.length / 3 : 0;
+    let triangles = o.triangles ? o.triangles.length / 3 : 0;
+    for (const c of o.components) {
+      const s = sizeOf(c.path ?? key, c.objectId, depth + 1);
+      vertices += s.vertices;
+      triangles += s.triangles;
+      if (triangles > MAX_3MF_TRIANGLES || vertices > 3 * MAX_3MF_TRIANGLES) tooMany();
+    }
+    inProgress.delete(k);
+    const size = { vertices, triangles };
+    sizes.set(k, size);
+    return size;
+  };
+
+  const root = part(pkg.root);
+  if (root.items.length === 0) throw new StrataError('EMPTY_MODEL', '3MF: the build has no items');
+  let total = 0;
+  let totalVertices = 0;
+  const itemSizes = root.items.map((item) => {
+    const s = sizeOf(item.path ?? pkg.root, item.objectId, 0);
+    total += s.triangles;
+    totalVertices += s.vertices;
+    if (total > MAX_3MF_TRIANGLES || totalVertices > 3 * MAX_3MF_TRIANGLES) tooMany();
+    return s;
+  });
+
+  const out: MeshObject[] = [];
+  const used = new Set<string>();
+  root.items.forEach((item, i) => {
+    const size = itemSizes[i];
+    if (size.triangles === 0) return;
+    const positions = new Float32Array(size.vertices * 3);
+    const indices = new Uint32Array(size.triangles * 3);
+    let vOff = 0;
+    let tOff = 0;
+    const emit = (key: string, ref: ObjectRef, parent: Affine): void => {
+      const o = lookup(key, ref.objectId);
+      const m = ref.transform ? compose(ref.transform, parent) : parent;
+      if (o.vertices !== null && o.triangles !== null) {
+        const nv = o.vertices.length / 3;
+        transformPoints(m, o.vertices, nv, positions, vOff * 3);
+        const tr = o.triangles;
+        const flip = determinant(m) < 0;
+        for (let t = 0; t < tr.length; t += 3) {
+          indices[tOff + t] = tr[t] + vOff;
+          indices[tOff + t + 1] = tr[flip ? t + 2 : t + 1] + vOff;
+          indices[tOff + t + 2] = tr[flip ? t + 1 : t + 2] + vOff;
+        }
+        vOff += nv;
+        tOff += tr.length;
+      }
+      for (const c of o.components) emit(c.path ?? key, c, m);
+    };
+    const key = item.path ?? pkg.root;
+    emit(key, item, identity());
+    const objName = lookup(key, item.objectId).name;
+    let label = objName !== '' ? objName : root.items.length === 1 ? name : `${name} ${i + 1}`;
+    if (used.has(label)) label = `${label} (${i + 1})`;
+    used.add(label);
+    out.push({ name: label, mesh: weld(positions, indices, '3MF') });
+  });
+  if (out.length === 0) throw new StrataError('EMPTY_MODEL', '3MF: the build items hold no triangles');
+  return out;
+}
+
+function tooMany(): never {
+  throw new StrataError('LIMIT_EXCEEDED', `3MF: the build expands to more than ${MAX_3MF_TRIANGLES} triangles`);
+}
