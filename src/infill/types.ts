@@ -61,13 +61,53 @@ export interface InfillModelInput {
   supportNeeded: ExPolygon[][];
 }
 
+/**
+ * One family of parallel lines for the shared scanline clipper: lines in direction `angle` (degrees
+ * counter-clockwise from +X), `spacing` µm apart, one of them passing through origin + offset·n, where n is
+ * the unit normal (−sin angle, cos angle).
+ */
+export interface Sweep {
+  angle: number;
+  spacing: number;
+  offset: number;
+}
+
+/**
+ * What a pattern's `generate` returns: raw lines (drawn over the region's bounds, clipped by the shared
+ * code), closed loops (already inside the region), optional line families for the scanline clipper, and
+ * hints for linking. A plain InfillResult is a valid PatternOutput.
+ */
+export interface PatternOutput extends InfillResult {
+  /** Families of straight parallel lines, clipped exactly by the scanline engine (faster than `lines`). */
+  sweeps?: Sweep[];
+  /** Typical distance between neighbouring lines, µm; line ends closer than a small multiple of it along the boundary are joined. */
+  linkSpacing?: number;
+  /** false: never join these lines along the boundary (trees, loops the pattern linked itself). */
+  link?: boolean;
+  /** Fraction of the lines' length × width that overlaps at crossings (0 or absent: lines never cross). */
+  overlap?: number;
+}
+
+/**
+ * How the density setting maps to material. 'layer' (default): every layer's extruded area over region area
+ * is the setting. 'volume': the mean over one Z period (`zPeriod`) is the setting, single layers vary (gyroid).
+ * 'support': the pattern prints only what top skins need and reports its own, lower, figure (lightning).
+ */
+export type DensityModel = 'layer' | 'volume' | 'support';
+
 export interface InfillPattern {
   readonly id: PatternId;
   readonly description: string;
+  /** Defaults to 'layer'. */
+  readonly densityModel?: DensityModel;
+  /** true: the pattern follows the region (or the skins), so `params.origin` / centering has no effect. */
+  readonly followsRegion?: boolean;
+  /** Z period of a 'volume' pattern, mm. */
+  zPeriod?(params: InfillParams): number;
   /**
    * Optional whole-object pass run once before the per-layer calls (lightning's trees).
    * Returns one plain-data value per layer, handed back to `generate` as `prepared`.
    */
   prepare?(model: InfillModelInput, params: InfillParams): unknown[];
-  generate(layer: InfillLayerInput, params: InfillParams, prepared?: unknown): InfillResult;
+  generate(layer: InfillLayerInput, params: InfillParams, prepared?: unknown): PatternOutput;
 }

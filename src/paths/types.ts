@@ -10,6 +10,8 @@ export interface IslandPaths {
   outline: ExPolygon;
   /** walls[k] = closed centrelines of wall k (0 = outer wall). */
   walls: Polygon[][];
+  /** Gap fill between walls: thin loops with their own bead width (mm). */
+  gapFill: { loop: Polygon; width: number }[];
   /** Perimeters around skin regions. */
   skinWalls: Polygon[];
   /** Solid skin lines. */

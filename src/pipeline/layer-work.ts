@@ -108,7 +108,7 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob): Ra
         infillLines = res.lines;
         infillLoops = res.loops;
       }
-      islands.push({ outline: iw.outline, walls: iw.wallLoops, skinWalls, skinLines, infillLines, infillLoops });
+      islands.push({ outline: iw.outline, walls: iw.wallLoops, gapFill: iw.gapFill.map((g) => ({ loop: g.loop, width: g.widthUm / UM_PER_MM })), skinWalls, skinLines, infillLines, infillLoops });
     }
     regions.push({ index: i, infill: layerInfill.length > 1 ? union(layerInfill) : layerInfill, topSkin: layerTop });
     if (!job.regionsOnly) {

@@ -76,7 +76,7 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   ctx.at = to;
 }
 
-function extrude(ctx: Ctx, feature: FeatureType, points: Pt[], closed: boolean): void {
+function extrude(ctx: Ctx, feature: FeatureType, points: Pt[], closed: boolean, width = ctx.width): void {
   if (points.length < 2) return;
   travelTo(ctx, points[0]);
   const step: ExtrudeStep = {
@@ -84,7 +84,7 @@ function extrude(ctx: Ctx, feature: FeatureType, points: Pt[], closed: boolean):
     feature,
     points,
     closed,
-    width: ctx.width,
+    width,
     height: ctx.layer.height,
     speed: speedFor(ctx.cfg, feature, ctx.first),
     flow: 1,
@@ -134,6 +134,10 @@ function printIsland(ctx: Ctx, island: IslandPaths): void {
     if (!ctx.comb && walls[k].length) ctx.comb = makeCombArea(island.outline, boundary);
   }
   if (!ctx.comb) ctx.comb = makeCombArea(island.outline, boundary);
+  for (const [i] of orderNearest(island.gapFill.length, (i) => [island.gapFill[i].loop[0]], (i) => island.gapFill[i].loop[0], ctx.at)) {
+    const g = island.gapFill[i];
+    extrude(ctx, 'WALL-INNER', rotateLoop(g.loop, chooseSeam(g.loop, 'nearest', ctx.at, 0, 0, 0)), true, g.width);
+  }
   printLoops(ctx, 'FILL', island.infillLoops);
   printLines(ctx, 'FILL', island.infillLines);
   printLoops(ctx, 'SKIN', island.skinWalls);
@@ -148,7 +152,7 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState): Lay
     const feature: FeatureType = layer.adhesionFeature;
     printLoops(ctx, feature, layer.adhesion);
   }
-  const islands = layer.islands.filter((i) => i.walls.some((w) => w.length) || i.infillLines.length || i.skinLines.length || i.infillLoops.length || i.skinWalls.length);
+  const islands = layer.islands.filter((i) => i.walls.some((w) => w.length) || i.gapFill.length || i.infillLines.length || i.skinLines.length || i.infillLoops.length || i.skinWalls.length);
   const order = orderNearest(
     islands.length,
     (i) => [islandEntry(islands[i])],

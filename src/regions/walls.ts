@@ -4,7 +4,7 @@
  * model's surface. Each inner wall k is printed only where its full width fits between wall k-1 and
  * the inside (an opening of the region), so walls never overlap or cross in thin parts.
  */
-import { offset, area } from '../geometry/clip.js';
+import { offset, area, difference, ringArea } from '../geometry/clip.js';
 import type { ExPolygon, Polygon } from '../geometry/types.js';
 
 export interface IslandWalls {
@@ -14,6 +14,42 @@ export interface IslandWalls {
   wallLoops: Polygon[][];
   /** The area inside the innermost wall's inner edge (where skin and infill go), µm. */
   inner: ExPolygon[];
+  /** Gap fill: thin loops (with their bead width, µm) for strips between walls too narrow for another wall. */
+  gapFill: GapLoop[];
+}
+
+export interface GapLoop {
+  loop: Polygon;
+  widthUm: number;
+}
+
+/** Strips narrower than this fraction of a line width are left empty (they would print nothing). */
+const MIN_GAP_FRACTION = 0.3;
+
+/** Perimeter of an island's rings, µm. */
+function perimeter(a: ExPolygon): number {
+  let p = 0;
+  for (const r of [a.outer, ...a.holes]) {
+    for (let i = 0, j = r.length - 1; i < r.length; j = i++) p += Math.hypot(r[i].x - r[j].x, r[i].y - r[j].y);
+  }
+  return p;
+}
+
+/**
+ * Fill thin strips (narrower than two line widths) with one loop each, whose bead is half the
+ * strip's mean width: going round the strip, its two passes cover it side by side.
+ * Mean width of a strip = 2·area / perimeter.
+ */
+function gapLoops(gaps: readonly ExPolygon[], w: number, out: GapLoop[]): void {
+  for (const g of gaps) {
+    const a = Math.abs(ringArea(g.outer)) - g.holes.reduce((s, h) => s + Math.abs(ringArea(h)), 0);
+    const d = (2 * a) / Math.max(perimeter(g), 1);
+    if (d < MIN_GAP_FRACTION * w || d > 2 * w) continue;
+    for (const piece of offset([g], -d / 4)) {
+      if (Math.abs(ringArea(piece.outer)) < MIN_LOOP_AREA_UM2 / 4) continue;
+      out.push({ loop: piece.outer, widthUm: Math.round(d / 2) });
+    }
+  }
 }
 
 /** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
@@ -40,8 +76,9 @@ export function computeWalls(islands: readonly ExPolygon[], wallCount: number, l
   const out: IslandWalls[] = [];
   for (const island of islands) {
     const wallLoops: Polygon[][] = [];
+    const gapFill: GapLoop[] = [];
     if (wallCount === 0) {
-      out.push({ outline: island, wallLoops, inner: [island] });
+      out.push({ outline: island, wallLoops, inner: [island], gapFill });
       continue;
     }
     const outer = offset([island], -w / 2);
@@ -51,6 +88,9 @@ export function computeWalls(islands: readonly ExPolygon[], wallCount: number, l
     for (let k = 1; k < wallCount && inside.length > 0; k++) {
       // Wall k fits where the area inside wall k-1, shrunk by a full width, is not empty.
       const fit = offset(inside, -w);
+      // what wall k's bead covers: from its inner edge (fit) out by one width
+      const covered = fit.length ? offset(fit, w) : [];
+      if (area(inside) - area(covered) > w * w) gapLoops(difference(inside, covered), w, gapFill);
       if (fit.length === 0) {
         inside = [];
         break;
@@ -59,7 +99,7 @@ export function computeWalls(islands: readonly ExPolygon[], wallCount: number, l
       wallLoops.push(rings(centre));
       inside = fit;
     }
-    out.push({ outline: island, wallLoops, inner: inside });
+    out.push({ outline: island, wallLoops, inner: inside, gapFill });
   }
   return out;
 }

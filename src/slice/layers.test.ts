@@ -20,7 +20,7 @@ test('a 0.3 mm first layer: first z 0.3, then 0.2 steps', () => {
   assert.equal(layers[10].z, 2.3);
   // The last plane (20.0) is at the top: it is kept (it cuts the top outline); 20.2 is not.
   assert.equal(layers.length, 100);
-  assert.equal(layers[99].sliceZ, 20);
+  assert.equal(layers[99].sliceZ, 19.9995);
 });
 
 test('heights come from integer µm: no float drift after thousands of layers', () => {

@@ -56,5 +56,9 @@ export function planLayers(modelHeight: number, firstLayerHeight: number, layerH
     const zUm = firstUm + i * stepUm;
     layers[i] = { index: i, z: zUm / 1000, height: stepUm / 1000, sliceZ: (2 * zUm - stepUm) / 2000 };
   }
+  // A cut exactly at the top face finds nothing (vertices on a plane count as above it): cut the
+  // last layer half a micrometre lower so it prints the top section instead of an empty layer.
+  const last = layers[count - 1];
+  if (toHalfUm(last.sliceZ) >= topHalf) last.sliceZ = (topHalf - 1) / HALF_UM_PER_MM;
   return layers;
 }

@@ -1,0 +1,118 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { analyzePrint } from './checks.js';
+import { formatReport } from './format-report.js';
+import type { BoxPrintOptions } from './synthetic-print.js';
+import { GcodeWriter, boxMesh, writeBoxPrint } from './synthetic-print.js';
+
+const near = (a: number | null, b: number, tol: number, what = '') =>
+  assert.ok(a !== null && Math.abs(a - b) <= tol, `${what} ${a} is not within ${tol} of ${b}`);
+
+const SIZE: [number, number, number] = [21.6, 21.6, 4];
+const ORIGIN: [number, number] = [50, 50];
+const mesh = boxMesh(ORIGIN[0], ORIGIN[1], 0, ORIGIN[0] + SIZE[0], ORIGIN[1] + SIZE[1], SIZE[2]);
+const OPTS = { layerHeight: 0.2, firstLayerHeight: 0.2, lineWidth: 0.4, filamentDiameter: 1.75 };
+
+function boxGcode(extra: Partial<BoxPrintOptions> = {}, relativeE = false, markers: 'cura' | 'prusa' | 'none' = 'cura') {
+  const writer = new GcodeWriter({ lineWidth: 0.4, filamentDiameter: 1.75, relativeE, markers });
+  writeBoxPrint({
+    size: SIZE, origin: ORIGIN, layerHeight: 0.2, lineWidth: 0.4, walls: 2, skinLayers: 4, infillSpacing: 4,
+    writer, ...extra,
+  });
+  return writer;
+}
+
+test('a perfect box print: walls, solid skin, 20 % infill, nothing outside', () => {
+  const report = analyzePrint(mesh, boxGcode().text(), OPTS);
+  const s = report.summary;
+  assert.equal(s.layerCount, 20);
+  assert.equal(s.expectedLayerCount, 20);
+  assert.equal(s.zMismatchCount, 0);
+  near(s.firstLayerZ, 0.2, 1e-9);
+  near(s.walls.minCoverage, 1, 1e-9, 'walls');
+  assert.deepEqual(s.walls.layersBelowThreshold, []);
+  near(s.outside.maxMm, 0, 1e-6, 'outside');
+  near(s.outside.areaMm2, 0, 0.01, 'outside area');
+  near(s.skin.bottom.minCoverage, 1, 0.005, 'bottom skin');
+  near(s.skin.top.minCoverage, 1, 0.005, 'top skin');
+  near(s.skin.bottom.areaMm2, 4 * SIZE[0] * SIZE[1], 1, 'bottom area');
+  near(s.infill.density, 0.2, 0.01, 'density');
+  assert.equal(s.infill.layersMeasured, 12);
+  assert.ok(s.shift.maxMm !== null && s.shift.maxMm < 0.01, `shift ${s.shift.maxMm}`);
+  assert.deepEqual(s.shift.shiftedLayers, []);
+  near(report.layers[5]!.shift!.inset, 0.2, 0.01, 'outer wall inset');
+  assert.equal(s.e.balance.unbalanced, 0);
+  near(s.e.flowRatio, 1 + (0.2 * (1 - Math.PI / 4)) / 0.4, 0.01, 'flow ratio');
+  assert.ok((s.featureLengthMm['WALL-OUTER'] ?? 0) > 20 * 4 * 20);
+  assert.ok(formatReport(report).includes('walls: outline coverage 100.0 %'));
+});
+
+test('absolute, relative and marker-less G-code give the same analysis', () => {
+  const a = analyzePrint(mesh, boxGcode({}, false).text(), OPTS).summary;
+  const r = analyzePrint(mesh, boxGcode({}, true, 'prusa').text(), OPTS).summary;
+  const n = analyzePrint(mesh, boxGcode({}, true, 'none').text(), OPTS).summary;
+  // Relative E rounds every move to 5 decimals, absolute E only the running total.
+  near(r.e.extruded, a.e.extruded, 1e-5 * a.e.extruded, 'relative vs absolute');
+  near(n.e.extruded, r.e.extruded, 1e-9, 'no markers');
+  assert.equal(n.layerCount, 20);
+  near(r.infill.density, a.infill.density!, 1e-5);
+  near(n.skin.top.coverage, a.skin.top.coverage!, 1e-5);
+});
+
+test('a line outside the part is flagged with its distance', () => {
+  const g = boxGcode();
+  // On the last layer, a line 1 mm beyond the +X side (the section grown by half a width ends 0.2 mm out).
+  const x = ORIGIN[0] + SIZE[0] + 1;
+  g.type('WALL-OUTER').travel(x, 55).line(x, 60);
+  const s = analyzePrint(mesh, g.text(), OPTS).summary;
+  near(s.outside.maxMm, 0.8, 0.002, 'distance');
+  assert.equal(s.outside.worstLayer, 19);
+  // A 5 mm bead of width ~0.44 lies fully outside the grown section (raster: ± one cell across its width).
+  near(s.outside.areaMm2, 5 * 0.443 + Math.PI * 0.22 * 0.22, 0.3, 'area');
+  // Support and skirt are allowed outside.
+  const h = boxGcode();
+  h.type('SKIRT').travel(40, 40).line(80, 40).type('SUPPORT').travel(x, 55).line(x, 60);
+  near(analyzePrint(mesh, h.text(), OPTS).summary.outside.maxMm, 0, 1e-9, 'skirt and support');
+});
+
+test('missing walls, missing skin and a shifted layer are caught', () => {
+  const s = analyzePrint(mesh, boxGcode({ skipWallsOn: [7], skipSkinOn: [18], shift: { layer: 10, dx: 0.3 } }).text(), OPTS);
+  const sum = s.summary;
+  // The shifted layer's wall is 0.5 mm from one side of the outline, more than a line width: not walled either.
+  assert.deepEqual(sum.walls.layersBelowThreshold, [7, 10]);
+  near(s.layers[10]!.outlineCoverage, 0.75, 0.01, 'shifted layer walls');
+  assert.equal(sum.skin.top.worstLayer, 18);
+  assert.ok(sum.skin.top.minCoverage! < 0.2, `top coverage ${sum.skin.top.minCoverage}`);
+  assert.deepEqual(sum.shift.shiftedLayers, [10]);
+  near(s.layers[10]!.shift!.dx, 0.3, 0.02, 'dx');
+  near(s.layers[10]!.shift!.dy, 0, 0.02, 'dy');
+  // Its outer wall centreline is 0.1 mm outside the model: within the half-width tolerance, so only the shift fit
+  // and the wall coverage tell.
+  near(sum.outside.maxMm, 0, 1e-9, 'shifted wall within tolerance');
+});
+
+test('infill density of hand-made line grids at known spacing', () => {
+  // Lines of width 0.4 at spacing s in two directions: 2·0.4/s where s divides the 20 mm core.
+  for (const [spacing, expected] of [[4, 0.2], [2, 0.4], [5, 0.16], [10, 0.08]] as const) {
+    const s = analyzePrint(mesh, boxGcode({ infillSpacing: spacing }).text(), OPTS).summary;
+    near(s.infill.density, expected, 0.01, `spacing ${spacing}`);
+  }
+  // Spacing 8 leaves room for only two lines per direction (at 4 and 12 mm): 2·2·0.4·20 / 20².
+  const s8 = analyzePrint(mesh, boxGcode({ infillSpacing: 8 }).text(), OPTS).summary;
+  near(s8.infill.density, 0.08, 0.01, 'spacing 8');
+});
+
+test('layer Z errors and sampling', () => {
+  const text = boxGcode().text().replace('G0 Z1.2 F600', 'G0 Z1.25 F600');
+  const report = analyzePrint(mesh, text, { ...OPTS, sampleEvery: 5 });
+  assert.deepEqual(report.summary.zMismatchLayers, [5]);
+  assert.deepEqual(report.layers.map((l) => l.index), [0, 5, 10, 15, 19]);
+  assert.equal(report.layerZ.length, 20);
+});
+
+test('bad options are errors', () => {
+  assert.throws(() => analyzePrint(mesh, '', { ...OPTS, layerHeight: 0 }), /layerHeight/);
+  const empty = analyzePrint(mesh, '', OPTS);
+  assert.equal(empty.summary.layerCount, 0);
+  assert.ok(empty.warnings.some((w) => w.includes('extrudes nothing')));
+});

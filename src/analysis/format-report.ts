@@ -1,0 +1,57 @@
+/** A human-readable summary of a PrintReport. */
+import type { PrintReport } from './report-types.js';
+
+const pct = (v: number | null) => (v === null ? 'n/a' : `${(v * 100).toFixed(1)} %`);
+const mm = (v: number | null, digits = 3) => (v === null ? 'n/a' : `${v.toFixed(digits)} mm`);
+const list = (xs: number[]) => (xs.length === 0 ? 'none' : xs.join(', '));
+
+export function formatReport(report: PrintReport): string {
+  const s = report.summary;
+  const lines: string[] = [];
+  lines.push(
+    `layers: ${s.layerCount} printed, ${s.expectedLayerCount} expected; first at ${mm(s.firstLayerZ)}; ` +
+      `off-grid Z: ${s.zMismatchCount}${s.zMismatchCount > 0 ? ` (${list(s.zMismatchLayers)})` : ''}`,
+  );
+  lines.push(`analysed layers: ${s.analysedLayers} (cell ${s.cellSizeMm.toFixed(3)} mm)`);
+  lines.push(
+    `walls: outline coverage ${pct(s.walls.coverage)}, worst ${pct(s.walls.minCoverage)}` +
+      (s.walls.worstLayer !== null ? ` (layer ${s.walls.worstLayer})` : '') +
+      `; layers below threshold: ${list(s.walls.layersBelowThreshold)}`,
+  );
+  lines.push(
+    `outside: max ${mm(s.outside.maxMm)}, p99 ${mm(s.outside.p99Mm)}, area ${s.outside.areaMm2.toFixed(2)} mm²` +
+      (s.outside.worstLayer !== null && s.outside.maxMm > 0 ? ` (worst layer ${s.outside.worstLayer})` : '') +
+      (s.outside.emptySectionLayers.length > 0
+        ? `; material on ${s.outside.emptySectionLayers.length} layers without model ` +
+          `(${s.outside.materialOnEmptySectionMm.toFixed(1)} mm)`
+        : ''),
+  );
+  const skin = (name: string, k: typeof s.skin.top) =>
+    `${name} ${pct(k.coverage)} of ${k.areaMm2.toFixed(1)} mm², worst ${pct(k.minCoverage)}` +
+    (k.worstLayer !== null ? ` (layer ${k.worstLayer})` : '');
+  lines.push(`skin: ${skin('top', s.skin.top)}; ${skin('bottom', s.skin.bottom)}`);
+  lines.push(
+    `infill: density ${pct(s.infill.density)} (range ${pct(s.infill.minDensity)}–${pct(s.infill.maxDensity)}) ` +
+      `over ${s.infill.layersMeasured} layers, ${s.infill.regionAreaMm2.toFixed(0)} mm²`,
+  );
+  lines.push(
+    `shift: max ${mm(s.shift.maxMm)}` + (s.shift.worstLayer !== null ? ` (layer ${s.shift.worstLayer})` : '') +
+      `; shifted layers: ${list(s.shift.shiftedLayers)}`,
+  );
+  const e = s.e;
+  lines.push(
+    `E (${e.mode}): extruded ${e.extruded.toFixed(2)} mm, retracted ${e.retracted.toFixed(2)}, primed ` +
+      `${e.primed.toFixed(2)}, net ${e.net.toFixed(2)}; retractions ${s.retractionCount}, unbalanced ` +
+      `${e.balance.unbalanced}${e.balance.unbalanced > 0 ? ` (lines ${list(e.balance.unbalancedLines)})` : ''}, ` +
+      `trailing ${e.balance.trailingMm.toFixed(2)} mm`,
+  );
+  lines.push(`bead width: median ${mm(e.widthMedianMm)}, ${e.flowRatio === null ? 'n/a' : e.flowRatio.toFixed(2)}× nominal`);
+  const features = Object.entries(s.featureLengthMm)
+    .map(([k, v]) => `${k} ${(v / 1000).toFixed(2)} m`)
+    .join(', ');
+  lines.push(`lengths: ${features || 'none'}; travel ${(s.travelLengthMm / 1000).toFixed(2)} m` +
+    (s.preambleExtrusionMm > 0 ? `; preamble extrusion ${s.preambleExtrusionMm.toFixed(1)} mm` : ''));
+  lines.push(`time: parse ${s.timingMs.parse.toFixed(0)} ms, analyse ${s.timingMs.analyse.toFixed(0)} ms`);
+  for (const w of report.warnings) lines.push(`warning: ${w}`);
+  return lines.join('\n');
+}

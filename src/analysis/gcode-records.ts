@@ -1,0 +1,87 @@
+/**
+ * The parser's raw, file-ordered records before they are grouped into layers. Every record carries the id of the
+ * block it was written in: a block starts at each layer marker, or (without markers) whenever extrusion continues
+ * at a new Z.
+ */
+import { GrowableF32, GrowableF64, GrowableU32, GrowableU8 } from './growable.js';
+
+export class RawRecords {
+  readonly ext = {
+    x0: new GrowableF32(4096),
+    y0: new GrowableF32(4096),
+    x1: new GrowableF32(4096),
+    y1: new GrowableF32(4096),
+    z: new GrowableF32(4096),
+    e: new GrowableF32(4096),
+    feedrate: new GrowableF32(4096),
+    feature: new GrowableU8(4096),
+    block: new GrowableU32(4096),
+  };
+  readonly travel = {
+    x0: new GrowableF32(4096),
+    y0: new GrowableF32(4096),
+    z0: new GrowableF32(4096),
+    x1: new GrowableF32(4096),
+    y1: new GrowableF32(4096),
+    z1: new GrowableF32(4096),
+    block: new GrowableU32(4096),
+  };
+  readonly retraction = {
+    kind: new GrowableU8(256),
+    amount: new GrowableF32(256),
+    line: new GrowableU32(256),
+    block: new GrowableU32(256),
+  };
+  /** Marker value per block (NaN for blocks not opened by a marker). */
+  readonly blockMarker = new GrowableF64(256);
+  /** Blocks with an id below this come before the first layer marker; Infinity when no marker was seen. */
+  firstMarkerBlock = Infinity;
+
+  constructor() {
+    this.blockMarker.push(NaN);
+  }
+
+  get blockCount(): number {
+    return this.blockMarker.length;
+  }
+
+  /** Opens a new block and returns its id. */
+  openBlock(marker: number): number {
+    this.blockMarker.push(marker);
+    return this.blockMarker.length - 1;
+  }
+
+  pushExtrusion(
+    x0: number, y0: number, x1: number, y1: number, z: number, e: number, f: number, feature: number, block: number,
+  ): void {
+    const t = this.ext;
+    t.x0.push(x0);
+    t.y0.push(y0);
+    t.x1.push(x1);
+    t.y1.push(y1);
+    t.z.push(z);
+    t.e.push(e);
+    t.feedrate.push(f);
+    t.feature.push(feature);
+    t.block.push(block);
+  }
+
+  pushTravel(x0: number, y0: number, z0: number, x1: number, y1: number, z1: number, block: number): void {
+    const t = this.travel;
+    t.x0.push(x0);
+    t.y0.push(y0);
+    t.z0.push(z0);
+    t.x1.push(x1);
+    t.y1.push(y1);
+    t.z1.push(z1);
+    t.block.push(block);
+  }
+
+  pushRetraction(kind: number, amount: number, line: number, block: number): void {
+    const r = this.retraction;
+    r.kind.push(kind);
+    r.amount.push(amount);
+    r.line.push(line);
+    r.block.push(block);
+  }
+}

@@ -1,0 +1,82 @@
+/**
+ * The benchmark's models: listing the shared folder, unpacking gzipped STL once into a work folder, and
+ * counting triangles (for the table only; the slicers parse the files themselves).
+ */
+import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { gunzipSync } from 'node:zlib';
+import { strFromU8, unzipSync } from 'fflate';
+
+export interface BenchModel {
+  /** Display name: the file name, without .gz for unpacked files. */
+  name: string;
+  /** Path the slicers read (inside the work folder for unpacked files). */
+  path: string;
+  triangles: number | null;
+}
+
+const MODEL_EXTENSIONS = Object.freeze(['.stl', '.stl.gz', '.3mf', '.obj']);
+
+/** ../shared/models beside the repository, from dist/bench/ (or src/bench/). */
+export function defaultModelsDir(): string {
+  return fileURLToPath(new URL('../../../shared/models/', import.meta.url));
+}
+
+/** Model file names in a folder (STL, gzipped STL, 3MF, OBJ), sorted by name. */
+export function listModelFiles(dir: string): string[] {
+  return readdirSync(dir, { withFileTypes: true })
+    .filter((e) => e.isFile() && MODEL_EXTENSIONS.some((ext) => e.name.toLowerCase().endsWith(ext)))
+    .map((e) => e.name)
+    .sort((a, b) => a.localeCompare(b, 'en'));
+}
+
+/**
+ * Triangle count of a model file's bytes: binary STL from its header (when the size matches), ASCII STL by
+ * counting facets, 3MF by counting <triangle> elements, OBJ by counting faces as triangle fans. Null if unknown.
+ */
+export function countTriangles(name: string, bytes: Uint8Array): number | null {
+  const lower = name.toLowerCase().replace(/\.gz$/, '');
+  if (lower.endsWith('.stl')) {
+    if (bytes.length >= 84) {
+      const n = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength).getUint32(80, true);
+      if (84 + 50 * n === bytes.length) return n;
+    }
+    const text = Buffer.from(bytes.buffer, bytes.byteOffset, bytes.byteLength).toString('latin1');
+    return text.match(/\bfacet\s+normal\b/g)?.length ?? 0;
+  }
+  if (lower.endsWith('.3mf')) {
+    try {
+      const files = unzipSync(bytes, { filter: (f) => f.name.toLowerCase().endsWith('.model') });
+      let n = 0;
+      for (const data of Object.values(files)) n += strFromU8(data).match(/<(?:\w+:)?triangle\b/g)?.length ?? 0;
+      return n;
+    } catch {
+      return null;
+    }
+  }
+  if (lower.endsWith('.obj')) {
+    let n = 0;
+    const text = Buffer.from(bytes.buffer, bytes.byteOffset, bytes.byteLength).toString('latin1');
+    for (const line of text.split('\n')) {
+      if (line.startsWith('f ')) n += Math.max(0, line.trim().split(/\s+/).length - 3);
+    }
+    return n;
+  }
+  return null;
+}
+
+/** Reads the chosen files; gzipped ones are unpacked once into workDir. */
+export function prepareModels(dir: string, names: readonly string[], workDir: string): BenchModel[] {
+  return names.map((file) => {
+    const bytes: Uint8Array = readFileSync(join(dir, file));
+    if (file.toLowerCase().endsWith('.gz')) {
+      const name = file.slice(0, -3);
+      const unpacked = gunzipSync(bytes);
+      const path = join(workDir, name);
+      writeFileSync(path, unpacked);
+      return { name, path, triangles: countTriangles(name, unpacked) };
+    }
+    return { name: file, path: join(dir, file), triangles: countTriangles(file, bytes) };
+  });
+}

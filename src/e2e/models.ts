@@ -1,0 +1,59 @@
+/** Test helpers: the shared models and slicing one with the analyser's report. */
+import { existsSync, readFileSync } from 'node:fs';
+import { gunzipSync } from 'node:zlib';
+import { fileURLToPath } from 'node:url';
+import { Slicer, prepareModel } from '../api/slicer.js';
+import { analyzePrint } from '../analysis/checks.js';
+import type { PrintReport } from '../analysis/checks.js';
+import type { SliceOptions } from '../settings/schema.js';
+
+/** ../shared/models beside the repository (dist/e2e → repo → ..). */
+export const MODELS_DIR = fileURLToPath(new URL('../../../shared/models/', import.meta.url));
+
+export const MODEL_FILES = [
+  'CalibrationCube.stl',
+  'HollowCalibrationCube.stl',
+  'HoleTest.stl',
+  'Overhang.stl',
+  'SupportTest.stl',
+  'BridgeTest.stl',
+  'spot.stl',
+  'stanford-bunny.stl',
+  '3DBenchy.stl.gz',
+  '3DBenchy.3mf',
+] as const;
+
+export function modelsAvailable(): boolean {
+  return existsSync(MODELS_DIR + 'CalibrationCube.stl');
+}
+
+export function readModel(name: string): Uint8Array {
+  const bytes = readFileSync(MODELS_DIR + name);
+  return name.endsWith('.gz') ? gunzipSync(bytes) : bytes;
+}
+
+export interface SlicedModel {
+  gcode: string;
+  report: PrintReport;
+  layers: number;
+  warnings: string[];
+}
+
+/** Slice a model with options and analyse the G-code against the placed mesh. */
+export async function sliceAndAnalyze(name: string, options: SliceOptions = {}): Promise<SlicedModel> {
+  const bytes = readModel(name);
+  const slicer = new Slicer({ threads: 1, ...options });
+  const { gcode, stats, warnings } = await slicer.slice(bytes);
+  const cfg = slicer.config;
+  const placed = prepareModel(bytes, cfg).mesh;
+  const report = analyzePrint(placed, gcode, {
+    layerHeight: cfg.layerHeight,
+    firstLayerHeight: cfg.firstLayerHeight,
+    lineWidth: cfg.lineWidthMm,
+    filamentDiameter: cfg.filamentDiameter,
+    wallThickness: cfg.walls * cfg.lineWidthMm,
+    topThickness: cfg.topLayers * cfg.layerHeight,
+    bottomThickness: cfg.bottomLayers * cfg.layerHeight,
+  });
+  return { gcode, report, layers: stats.layers, warnings };
+}

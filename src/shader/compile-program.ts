@@ -1,0 +1,447 @@
+/**
+ * Whole-program GLSL → JS: globals, uniforms (`u_Pass`, `ui_*`), functions (overloads, in/out/inout
+ * parameters, no recursion), the entry point, and assembly of the factory body. The produced source
+ * names only its own generated identifiers and the math table `M` (its single parameter).
+ */
+import type { GType } from './glsl-types.js';
+import { parseTypeName, size, typeName } from './glsl-types.js';
+import type { Ctx, FnParam, FnSym, ParamQualifier, VarSym } from './compiler-context.js';
+import { Buf, newFnCtx, short } from './compiler-context.js';
+import { compileInitializer, nodeLine, rootIdentifier, typeSpecifierType } from './compile-expr.js';
+import { arrayLength, compileStatement, declareArray, initArray } from './compile-stmt.js';
+import type { UiParamDecl } from './preprocess.js';
+import { TABLE_KEYS } from './math-table.js';
+import { lit } from './values.js';
+
+// eslint-disable-next-line @typescript-eslint/no-explicit-any
+type Node = any;
+
+export type UniformKind = 'pass' | 'param' | 'other';
+
+export interface UniformSlot {
+  name: string;
+  kind: UniformKind;
+  type: GType;
+  /** Default component values. */
+  defaults: (number | boolean)[];
+}
+
+export type EntryKind = 'cellular' | 'density';
+
+export interface ProgramOptions {
+  entry: EntryKind;
+  evalBudget: number;
+  layerBudget: number;
+  uiParams: readonly UiParamDecl[];
+}
+
+export interface CompiledProgram {
+  /** Body of `new Function('M', body)`. */
+  body: string;
+  uniforms: UniformSlot[];
+  /** numPasses when known at compile time; undefined when it depends on uniforms. */
+  numPassesConst: number | undefined;
+  hasNumPasses: boolean;
+  usesDensity: boolean;
+}
+
+function qualifiers(node: Node): string[] {
+  const q = node?.qualifiers ?? node?.qualifier ?? [];
+  return q.map((k: Node) => (k.type === 'keyword' ? String(k.token) : String(k.type)));
+}
+
+/** Names assigned anywhere (conservatively: also every root passed to a function with out params). */
+function writtenNames(program: Node[], outFns: ReadonlySet<string>): Set<string> {
+  const out = new Set<string>();
+  const stack: unknown[] = [...program];
+  let steps = 0;
+  while (stack.length > 0) {
+    if (++steps > 5_000_000) break;
+    const n = stack.pop() as Node;
+    if (n === null || typeof n !== 'object') continue;
+    if (Array.isArray(n)) {
+      for (const x of n) stack.push(x);
+      continue;
+    }
+    const add = (e: Node) => {
+      const r = rootIdentifier(e);
+      if (r !== undefined) out.add(r);
+    };
+    if (n.type === 'assignment') add(n.left);
+    else if ((n.type === 'unary' || n.type === 'postfix') && (n.operator?.literal === '++' || n.operator?.literal === '--' || n.postfix?.literal === '++' || n.postfix?.literal === '--')) {
+      add(n.expression);
+    } else if (n.type === 'function_call' && n.identifier?.type === 'identifier' && outFns.has(n.identifier.identifier)) {
+      for (const a of n.args ?? []) add(a);
+    }
+    for (const k of Object.keys(n)) {
+      if (k === 'location' || k === 'whitespace') continue;
+      const v = n[k];
+      if (v !== null && typeof v === 'object') stack.push(v);
+    }
+  }
+  return out;
+}
+
+function paramsOf(ctx: Ctx, proto: Node): { params: FnParam[]; names: (string | undefined)[] } {
+  const params: FnParam[] = [];
+  const names: (string | undefined)[] = [];
+  for (const p of proto.parameters ?? []) {
+    const spec = p.specifier;
+    const tName: string = spec?.specifier?.token ?? spec?.specifier?.identifier ?? '?';
+    if (tName === 'void' && (proto.parameters ?? []).length === 1 && !p.identifier) break;
+    const t = typeSpecifierType(ctx, spec);
+    if ((spec.quantifier && spec.quantifier.length) || (p.quantifier && p.quantifier.length)) throw ctx.error('array parameters are not supported');
+    const qs = qualifiers(p);
+    const q: ParamQualifier = qs.includes('inout') ? 'inout' : qs.includes('out') ? 'out' : 'in';
+    params.push({ t, q });
+    names.push(p.identifier?.identifier);
+  }
+  return { params, names };
+}
+
+function returnType(ctx: Ctx, proto: Node): GType {
+  const spec = proto.header.returnType.specifier;
+  const name: string = spec?.specifier?.token ?? spec?.specifier?.identifier ?? '?';
+  if (name === 'void') return { base: 'float', rows: 0, cols: 0 };
+  if (spec.quantifier && spec.quantifier.length) throw ctx.error('functions cannot return arrays');
+  return typeSpecifierType(ctx, spec);
+}
+
+function sameParams(a: FnParam[], b: FnParam[]): boolean {
+  return a.length === b.length && a.every((p, i) => p.t.base === b[i].t.base && p.t.rows === b[i].t.rows && p.t.cols === b[i].t.cols);
+}
+
+function registerFunction(ctx: Ctx, proto: Node, isDefinition: boolean): FnSym {
+  ctx.line = nodeLine(proto) ?? ctx.line;
+  const name: string = proto.header.name.identifier;
+  if (parseTypeName(name) !== undefined) throw ctx.error(`'${short(name)}' is a type name`);
+  const ret = returnType(ctx, proto);
+  const { params } = paramsOf(ctx, proto);
+  let list = ctx.functions.get(name);
+  if (list === undefined) ctx.functions.set(name, (list = []));
+  const existing = list.find((f) => sameParams(f.params, params));
+  if (existing !== undefined) {
+    if (existing.ret.rows !== ret.rows || existing.ret.base !== ret.base || existing.ret.cols !== ret.cols) {
+      throw ctx.error(`${short(name)}() is declared with two return types`);
+    }
+    if (isDefinition) {
+      if (existing.defined) throw ctx.error(`${short(name)}() is defined twice`);
+      existing.defined = true;
+      existing.line = ctx.line;
+    }
+    return existing;
+  }
+  const fn: FnSym = {
+    glslName: name,
+    jsName: ctx.id('f'),
+    ret,
+    params,
+    defined: isDefinition,
+    line: ctx.line,
+    outOffset: ret.rows === 0 ? 0 : size(ret),
+  };
+  list.push(fn);
+  return fn;
+}
+
+function zeroOf(base: string): string {
+  return base === 'bool' ? 'false' : '0';
+}
+
+function compileFunction(ctx: Ctx, node: Node, fn: FnSym, isEntry: boolean): string {
+  const fctx = newFnCtx(fn, fn.ret, false);
+  fctx.isEntry = isEntry;
+  const savedFn = ctx.fn;
+  const savedBuf = ctx.buf;
+  ctx.fn = fctx;
+  ctx.buf = new Buf();
+  ctx.pushScope();
+  try {
+    const { names } = paramsOf(ctx, node.prototype);
+    const jsParams: string[] = [];
+    fn.params.forEach((p, i) => {
+      const comps: string[] = [];
+      for (let k = 0; k < size(p.t); k++) {
+        if (p.q === 'out') comps.push(ctx.local('v', p.t.base));
+        else {
+          const n = ctx.id('v');
+          comps.push(n);
+          jsParams.push(n);
+        }
+      }
+      if (p.q !== 'in') fctx.outNames.push({ names: comps, base: p.t.base });
+      const pname = names[i];
+      if (pname !== undefined) {
+        const sym: VarSym = { kind: 'var', t: p.t, names: comps, global: false };
+        ctx.declare(pname, sym);
+      }
+    });
+    let outSize = 0;
+    for (const o of fctx.outNames) outSize += o.names.length;
+    ctx.rSize = Math.max(ctx.rSize, fn.outOffset + outSize);
+    ctx.line = fn.line;
+    ctx.emit(`if (--B < 0) m_clim(${fn.line});`);
+    ctx.pushScope();
+    for (const s of node.body.statements ?? []) compileStatement(ctx, s, 1);
+    ctx.popScope();
+    // Falling off the end: void returns; others return zeros (GLSL leaves this undefined).
+    if (fn.ret.rows === 0) {
+      let off = fn.outOffset;
+      for (const o of fctx.outNames) for (const n of o.names) ctx.emit(`R[${off++}] = ${n};`);
+    } else if (size(fn.ret) === 1) {
+      let off = fn.outOffset;
+      for (const o of fctx.outNames) for (const n of o.names) ctx.emit(`R[${off++}] = ${n};`);
+      ctx.emit(`return ${zeroOf(fn.ret.base)};`);
+    } else {
+      for (let i = 0; i < size(fn.ret); i++) ctx.emit(`R[${i}] = 0;`);
+      let off = fn.outOffset;
+      for (const o of fctx.outNames) for (const n of o.names) ctx.emit(`R[${off++}] = ${n};`);
+    }
+    return wrapFunction(fn.jsName, jsParams, fctx.locals, ctx.buf.lines);
+  } finally {
+    ctx.popScope();
+    ctx.fn = savedFn;
+    ctx.buf = savedBuf;
+  }
+}
+
+function wrapFunction(name: string, params: string[], locals: { name: string; base: string }[], lines: string[]): string {
+  const decl = locals.length > 0 ? `let ${locals.map((l) => `${l.name} = ${zeroOf(l.base)}`).join(', ')};\n` : '';
+  return `function ${name}(${params.join(', ')}) {\n${decl}${lines.join('\n')}\n}`;
+}
+
+function checkRecursion(ctx: Ctx): void {
+  const byJs = new Map<string, FnSym>();
+  for (const list of ctx.functions.values()) for (const f of list) byJs.set(f.jsName, f);
+  const state = new Map<string, number>(); // 1 = on stack, 2 = done
+  const visit = (f: string, path: string[]): void => {
+    state.set(f, 1);
+    for (const g of ctx.calls.get(f) ?? []) {
+      const s = state.get(g);
+      if (s === 1) {
+        const fn = byJs.get(g);
+        throw ctx.error(`recursion is not allowed in GLSL (${short(fn?.glslName ?? '?')}() calls itself)`, fn?.line);
+      }
+      if (s === undefined) visit(g, [...path, g]);
+    }
+    state.set(f, 2);
+  };
+  for (const f of ctx.calls.keys()) if (!state.has(f)) visit(f, [f]);
+}
+
+/** Compile a parsed program into the body of the shader factory. */
+export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions): CompiledProgram {
+  // Functions first (signatures only), so call order in the source does not matter.
+  const fnNodes: { node: Node; fn: FnSym }[] = [];
+  for (const st of program) {
+    if (st.type === 'function') fnNodes.push({ node: st, fn: registerFunction(ctx, st.prototype, true) });
+    else if (st.type === 'declaration_statement' && st.declaration?.type === 'function_prototype') registerFunction(ctx, st.declaration, false);
+  }
+  const outFns = new Set<string>();
+  for (const [name, list] of ctx.functions) if (list.some((f) => f.params.some((p) => p.q !== 'in'))) outFns.add(name);
+  const written = writtenNames(program, outFns);
+
+  const uiByName = new Map<string, UiParamDecl>();
+  for (const p of opts.uiParams) uiByName.set(p.name, p);
+  const uniforms: UniformSlot[] = [];
+  const uniformNames: string[][] = [];
+  const globalDecls: string[] = [];
+  const onceCtx = newFnCtx(undefined, { base: 'float', rows: 0, cols: 0 }, true);
+  const eachCtx = newFnCtx(undefined, { base: 'float', rows: 0, cols: 0 }, true);
+  const onceBuf = new Buf();
+  const eachBuf = new Buf();
+  let hasEach = false;
+  let numPassesSym: VarSym | undefined;
+  let numPassesDeclared = false;
+  const functionsJs: string[] = [];
+
+  const inGlobal = <T>(fc: typeof onceCtx, buf: Buf, f: () => T): T => {
+    const savedFn = ctx.fn;
+    const savedBuf = ctx.buf;
+    ctx.fn = fc;
+    ctx.buf = buf;
+    try {
+      return f();
+    } finally {
+      ctx.fn = savedFn;
+      ctx.buf = savedBuf;
+    }
+  };
+
+  const fnByNode = new Map<Node, FnSym>();
+  for (const f of fnNodes) fnByNode.set(f.node, f.fn);
+  let entryFn: FnSym | undefined;
+
+  for (const st of program) {
+    ctx.line = nodeLine(st) ?? ctx.line;
+    if (st.type === 'preprocessor') continue;
+    if (st.type === 'function') {
+      const fn = fnByNode.get(st) as FnSym;
+      const isEntry = fn.glslName === opts.entry;
+      if (isEntry) {
+        if (entryFn !== undefined) throw ctx.error(`${opts.entry}() is defined twice`);
+        entryFn = fn;
+      }
+      functionsJs.push(compileFunction(ctx, st, fn, isEntry));
+      continue;
+    }
+    if (st.type !== 'declaration_statement') throw ctx.error(`unsupported top-level statement (${short(String(st.type))})`);
+    const d = st.declaration;
+    if (d.type === 'precision' || d.type === 'function_prototype') continue;
+    if (d.type === 'qualifier_declarator') continue; // `invariant x;` and the like
+    if (d.type === 'interface_declarator') throw ctx.error('interface blocks are not supported');
+    if (d.type !== 'declarator_list') throw ctx.error(`unsupported declaration (${short(String(d.type))})`);
+    const spec = d.specified_type.specifier;
+    if (spec?.specifier?.type === 'struct') throw ctx.error('structs are not supported');
+    const quals = qualifiers(d.specified_type);
+    const t = typeSpecifierType(ctx, spec);
+    for (const decl of d.declarations ?? []) {
+      ctx.line = nodeLine(decl) ?? ctx.line;
+      const name: string = decl.identifier.identifier;
+      const init: Node | undefined = decl.initializer ?? undefined;
+      const len = arrayLength(ctx, spec.quantifier, decl.quantifier);
+      const isUniform = quals.includes('uniform');
+      const isConst = quals.includes('const');
+      if (quals.includes('in') || quals.includes('out') || quals.includes('varying') || quals.includes('attribute') || quals.includes('buffer')) {
+        ctx.warnings.push(`${ctx.fileName} line ${ctx.line}: '${short(name)}' is a shader input/output; it is treated as a plain global`);
+      }
+      if (len !== undefined) {
+        if (isUniform) throw ctx.error('uniform arrays are not supported');
+        const readOnly = isConst ? `cannot assign to const array '${short(name)}'` : undefined;
+        const sym = inGlobal(onceCtx, onceBuf, () => declareArray(ctx, name, t, len, init, readOnly, true));
+        if (written.has(name)) {
+          hasEach = true;
+          inGlobal(eachCtx, eachBuf, () => initArray(ctx, sym, init));
+        }
+        continue;
+      }
+      // Uniforms: u_Pass, ui_ parameters, anything else (its initialiser or zero).
+      if (name === 'u_Pass' || isUniform) {
+        const ui = uiByName.get(name);
+        const kind: UniformKind = name === 'u_Pass' ? 'pass' : ui !== undefined ? 'param' : 'other';
+        if (kind === 'pass' && (t.base !== 'int' || size(t) !== 1)) throw ctx.error('u_Pass must be an int');
+        let defaults: (number | boolean)[] = new Array<number | boolean>(size(t)).fill(t.base === 'bool' ? false : 0);
+        if (ui !== undefined) defaults = [ui.defaultValue];
+        else if (init !== undefined && kind === 'other') {
+          const v = inGlobal(onceCtx, onceBuf, () => compileInitializer(ctx, init, t));
+          if (!v.k) throw ctx.error(`uniform '${short(name)}' needs a constant initialiser`);
+          defaults = v.k;
+        } else if (kind === 'other') {
+          ctx.warnings.push(`${ctx.fileName} line ${ctx.line}: uniform '${short(name)}' is not provided by Strata; it is ${typeName(t)}(0)`);
+        }
+        const names: string[] = [];
+        for (let i = 0; i < size(t); i++) names.push(ctx.id('u'));
+        uniforms.push({ name, kind, type: t, defaults });
+        uniformNames.push(names);
+        globalDecls.push(`let ${names.map((n, i) => `${n} = ${lit(defaults[i])}`).join(', ')};`);
+        ctx.declare(name, { kind: 'var', t, names, readOnly: `cannot assign to uniform '${short(name)}'`, global: true });
+        continue;
+      }
+      if (isConst && init === undefined) throw ctx.error(`const '${short(name)}' needs an initialiser`);
+      const isWritten = written.has(name) && !isConst;
+      let value = init !== undefined ? inGlobal(onceCtx, onceBuf, () => compileInitializer(ctx, init, t)) : undefined;
+      if (!isWritten && (value?.k !== undefined || (init === undefined && !isConst))) {
+        // Never written with a constant (or default zero) value: fold it into the code.
+        const k = value?.k ?? new Array<number | boolean>(size(t)).fill(t.base === 'bool' ? false : 0);
+        const sym: VarSym = { kind: 'var', t, names: [], k, readOnly: isConst ? `cannot assign to const '${short(name)}'` : undefined, global: true };
+        ctx.declare(name, sym);
+        if (name === 'numPasses') numPassesSym = sym;
+        if (name === 'numPasses') numPassesDeclared = true;
+        continue;
+      }
+      const names: string[] = [];
+      for (let i = 0; i < size(t); i++) names.push(ctx.id('g'));
+      globalDecls.push(`let ${names.map((n) => `${n} = ${zeroOf(t.base)}`).join(', ')};`);
+      const emitInit = (v: typeof value) => {
+        if (v === undefined) names.forEach((n) => ctx.emit(`${n} = ${zeroOf(t.base)};`));
+        else names.forEach((n, i) => ctx.emit(`${n} = ${v.c[i]};`));
+      };
+      inGlobal(onceCtx, onceBuf, () => emitInit(value));
+      if (isWritten) {
+        hasEach = true;
+        inGlobal(eachCtx, eachBuf, () => {
+          value = init !== undefined ? compileInitializer(ctx, init, t) : undefined;
+          emitInit(value);
+        });
+      }
+      const sym: VarSym = { kind: 'var', t, names, readOnly: isConst ? `cannot assign to const '${short(name)}'` : undefined, global: true };
+      ctx.declare(name, sym);
+      if (name === 'numPasses') {
+        numPassesSym = sym;
+        numPassesDeclared = true;
+      }
+    }
+  }
+
+  if (entryFn === undefined) {
+    const sig = opts.entry === 'cellular' ? 'vec4 cellular(vec3 world)' : 'float density(vec3 world)';
+    throw ctx.error(`the shader must define ${sig}`, 0);
+  }
+  const ef = entryFn;
+  if (ef.params.length !== 1 || ef.params[0].q !== 'in' || ef.params[0].t.base !== 'float' || ef.params[0].t.rows !== 3 || ef.params[0].t.cols !== 1) {
+    throw ctx.error(`${opts.entry}() must take one vec3 argument`, ef.line);
+  }
+  if (ef.ret.rows === 0 || ef.ret.cols !== 1 || ef.ret.base === 'bool' || (opts.entry === 'density' && ef.ret.rows !== 1)) {
+    throw ctx.error(opts.entry === 'cellular' ? 'cellular() must return a vec4' : 'density() must return a float', ef.line);
+  }
+  for (const list of ctx.functions.values()) {
+    for (const f of list) {
+      if (!f.defined && [...ctx.calls.values()].some((s) => s.has(f.jsName))) {
+        throw ctx.error(`${short(f.glslName)}() is declared but never defined`, f.line);
+      }
+    }
+  }
+  checkRecursion(ctx);
+
+  if (numPassesSym !== undefined && (numPassesSym.t.base !== 'int' || size(numPassesSym.t) !== 1)) {
+    throw ctx.error('numPasses must be an int', 0);
+  }
+  const numPassesConst = numPassesSym?.k !== undefined ? (numPassesSym.k[0] as number) : numPassesSym === undefined ? 1 : undefined;
+  const numPassesExpr = numPassesSym === undefined ? '1' : numPassesSym.k !== undefined ? lit(numPassesSym.k[0]) : numPassesSym.names[0];
+
+  const EB = opts.evalBudget;
+  const lines: string[] = [];
+  lines.push('"use strict";');
+  lines.push(`const ${TABLE_KEYS.map((k) => `m_${k} = M.${k}`).join(', ')};`);
+  lines.push(`const R = new m_F64(${Math.max(4, ctx.rSize)});`);
+  lines.push('let B = 0, W = 0;');
+  lines.push('let h_den = m_den0, h_noz = 0.4, h_lh = 0.2;');
+  for (const g of globalDecls) lines.push(g);
+  for (const c of ctx.closureDecls) lines.push(c);
+  for (const f of functionsJs) lines.push(f);
+  lines.push(wrapFunction('I1', [], onceCtx.locals, onceBuf.lines));
+  lines.push(wrapFunction('I2', [], eachCtx.locals, eachBuf.lines));
+  const retN = size(ef.ret);
+  const call = `${ef.jsName}(X, Y, Z)`;
+  const entryLines: string[] = [`B = ${EB};`];
+  if (hasEach) entryLines.push('I2();');
+  if (opts.entry === 'density') {
+    entryLines.push(`const r = ${call};`, `W += ${EB} - B;`, `if (W > ${opts.layerBudget}) m_wlim();`, 'return r;');
+  } else if (retN === 1) {
+    entryLines.push(`const r = ${call};`, `W += ${EB} - B;`, `if (W > ${opts.layerBudget}) m_wlim();`, 'return m_key(r, 0, 0, 0);');
+  } else {
+    const ch = [0, 1, 2, 3].map((i) => (i < retN ? `R[${i}]` : '0'));
+    entryLines.push(`${call};`, `W += ${EB} - B;`, `if (W > ${opts.layerBudget}) m_wlim();`, `return m_key(${ch.join(', ')});`);
+  }
+  lines.push(`function E(X, Y, Z) {\n${entryLines.join('\n')}\n}`);
+  const setLines: string[] = [];
+  let k = 0;
+  uniforms.forEach((u, i) => {
+    for (const n of uniformNames[i]) {
+      setLines.push(u.type.base === 'bool' ? `${n} = A[${k}] !== 0;` : u.type.base === 'int' ? `${n} = A[${k}] | 0;` : u.type.base === 'uint' ? `${n} = A[${k}] >>> 0;` : `${n} = A[${k}];`);
+      k++;
+    }
+  });
+  lines.push(`function S(A, D, N, T) {\n${setLines.join('\n')}\nh_den = D;\nh_noz = N;\nh_lh = T;\nB = ${EB};\nI1();\n}`);
+  lines.push(`function NP() { return ${numPassesExpr}; }`);
+  lines.push('function WR(V) { W = V; }');
+  lines.push('function WG() { return W; }');
+  lines.push('return [E, S, NP, WR, WG, R];');
+  return {
+    body: lines.join('\n'),
+    uniforms,
+    numPassesConst,
+    hasNumPasses: numPassesDeclared,
+    usesDensity: ctx.hostUsed.has('density'),
+  };
+}

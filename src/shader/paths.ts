@@ -1,0 +1,147 @@
+/**
+ * Infill paths from a label field (shader or image): the boundaries between cells of different
+ * labels over the infill region, refined by bisection, linked, simplified, clipped to the region and
+ * chained with short travel. A multi-pass shader gives one set of paths per pass.
+ */
+import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
+import { boundsOf, clipLines, offset } from '../geometry/clip.js';
+import { StrataError } from '../errors.js';
+import { orderPaths } from './chain.js';
+import { linkCrossings } from './contour-link.js';
+import type { LabelFn } from './label-grid.js';
+import { sampleLabelGrid } from './label-grid.js';
+import { polylineLength, simplifyMmPath, toMicrons } from './polyline-tools.js';
+import type { CompiledShader, ParamValues, ShaderInstance } from './shader.js';
+
+/** Density: a constant percentage, or a field of (x, y, z) in mm → percentage (0–100). */
+export type DensitySource = number | ((x: number, y: number, z: number) => number);
+
+export interface ExtractOptions {
+  /** Nozzle diameter, mm (default 0.4). */
+  nozzleDiameter?: number;
+  /** Grid spacing, mm (default nozzleDiameter / 4). */
+  resolution?: number;
+  /** Bisection accuracy, mm (default 0.0005). */
+  tolerance?: number;
+  /** Douglas–Peucker tolerance for the linked paths, mm (default 0.005). */
+  simplify?: number;
+  /** Clipped pieces shorter than this are dropped, mm (default nozzleDiameter / 2). */
+  minLength?: number;
+  /** Largest number of grid samples per pass (default 16 million). */
+  maxSamples?: number;
+  /** Where the nozzle is before the first path, µm (default: the region's lower-left corner). */
+  start?: Pt;
+  /** Lattice shift as a fraction of the grid spacing (default 0.2718). */
+  phase?: number;
+}
+
+export interface ShaderLayerInput {
+  /** The area to fill, µm. */
+  region: ExPolygon[];
+  /** Height of the layer's top (the z passed to the shader), mm. */
+  z: number;
+  /** Layer thickness, mm (layer_height()). Default 0.2. */
+  layerHeight?: number;
+  /** density() in percent (default 20). */
+  density?: DensitySource;
+  /** ui_ parameter overrides. */
+  params?: ParamValues;
+}
+
+interface Resolved {
+  h: number;
+  tolerance: number;
+  simplify: number;
+  minLength: number;
+  maxSamples: number;
+  phase: number;
+}
+
+function resolve(opts: ExtractOptions): Resolved {
+  const nozzle = opts.nozzleDiameter ?? 0.4;
+  const h = opts.resolution ?? nozzle / 4;
+  if (!(h > 0) || !Number.isFinite(h)) throw new StrataError('BAD_SETTING', `custom infill: resolution must be a positive number of mm, got ${h}`);
+  if (!(nozzle > 0)) throw new StrataError('BAD_SETTING', `custom infill: nozzle diameter must be positive, got ${nozzle}`);
+  return {
+    h,
+    tolerance: Math.max(1e-6, Math.min(opts.tolerance ?? 0.0005, h / 4)),
+    simplify: opts.simplify ?? 0.005,
+    minLength: opts.minLength ?? nozzle / 2,
+    maxSamples: opts.maxSamples ?? 16_000_000,
+    phase: opts.phase ?? 0.2718,
+  };
+}
+
+/**
+ * Boundaries between the cells of a label field over a region: one pass. Returns ordered
+ * polylines in µm, clipped to the region.
+ */
+export function labelBoundaries(label: LabelFn, region: readonly ExPolygon[], opts: ExtractOptions = {}): Polyline[] {
+  if (region.length === 0) return [];
+  const r = resolve(opts);
+  const b = boundsOf(region);
+  if (!(b.maxX > b.minX && b.maxY > b.minY)) return [];
+  const marginMm = 2 * r.h;
+  const grown = offset(region, Math.ceil(marginMm * 1000));
+  const bounds = { minX: b.minX / 1000 - marginMm, minY: b.minY / 1000 - marginMm, maxX: b.maxX / 1000 + marginMm, maxY: b.maxY / 1000 + marginMm };
+  const grid = sampleLabelGrid(label, grown, bounds, { h: r.h, tolerance: r.tolerance, margin: marginMm, maxSamples: r.maxSamples, phase: r.phase });
+  const mmPaths = linkCrossings(grid, label);
+  const lines: Polyline[] = [];
+  for (const p of mmPaths) {
+    const q = toMicrons(simplifyMmPath(p, r.simplify));
+    if (q.length >= 2) lines.push(q);
+  }
+  const clipped = clipLines(lines, region as ExPolygon[]).filter((p) => p.length >= 2 && polylineLength(p) >= r.minLength * 1000);
+  return orderPaths(clipped, opts.start ?? { x: b.minX, y: b.minY });
+}
+
+function densityFn(d: DensitySource | undefined): (x: number, y: number, z: number) => number {
+  if (d === undefined) return () => 20;
+  if (typeof d === 'number') {
+    if (!Number.isFinite(d)) throw new StrataError('BAD_SETTING', 'custom infill: density must be a number');
+    return () => d;
+  }
+  return (x, y, z) => {
+    const v = d(x, y, z);
+    return Number.isFinite(v) ? Math.min(100, Math.max(0, v)) : 0;
+  };
+}
+
+/** One instance per call site: pass a ShaderInstance to reuse its warmed-up code across layers. */
+function instanceOf(shader: CompiledShader | ShaderInstance): ShaderInstance {
+  return 'instantiate' in shader ? shader.instantiate() : shader;
+}
+
+/**
+ * Paths of an infill shader for one layer, one list per pass (pass 0 first). Each pass is
+ * extracted and ordered separately; pass k+1 starts where pass k ended.
+ */
+export function shaderPathsByPass(shader: CompiledShader | ShaderInstance, layer: ShaderLayerInput, opts: ExtractOptions = {}): Polyline[][] {
+  const inst = instanceOf(shader);
+  const env = {
+    params: layer.params,
+    density: densityFn(layer.density),
+    nozzleDiameter: opts.nozzleDiameter ?? 0.4,
+    layerHeight: layer.layerHeight ?? 0.2,
+  };
+  inst.configure({ ...env, pass: 0 });
+  const passes = inst.numPasses();
+  inst.resetWork();
+  const z = layer.z;
+  const out: Polyline[][] = [];
+  let start = opts.start;
+  for (let pass = 0; pass < passes; pass++) {
+    if (pass > 0) inst.configure({ ...env, pass });
+    const label: LabelFn = (x, y) => inst.label(x, y, z);
+    const paths = labelBoundaries(label, layer.region, { ...opts, start });
+    out.push(paths);
+    const last = paths[paths.length - 1];
+    if (last !== undefined) start = last[last.length - 1];
+  }
+  return out;
+}
+
+/** All passes' paths of an infill shader for one layer, in print order. */
+export function shaderPaths(shader: CompiledShader | ShaderInstance, layer: ShaderLayerInput, opts: ExtractOptions = {}): Polyline[] {
+  return shaderPathsByPass(shader, layer, opts).flat();
+}
