@@ -7,7 +7,7 @@ import type { ExtrusionTable, GcodeLayer } from './gcode-types.js';
 import type { Grid } from './grid.js';
 import { bitmapAt, countSet, gridAround, newBitmap } from './grid.js';
 import { outlineMetrics } from './outline.js';
-import { beadWidth, dilateBitmap, rasterizeExtrusions, segmentLength, volumeWidth } from './raster.js';
+import { beadWidth, dilateBitmap, rasterizeExtrusions, segmentLength, stampCapsule, volumeWidth } from './raster.js';
 import type { AnalyzeOptions } from './report-types.js';
 import type { CachedSection, SectionCache } from './section-cache.js';
 import { SegmentIndex, WindingIndex } from './segment-index.js';
@@ -268,12 +268,20 @@ function measureInfill(
   let region = erodeSpans(section, o.wallThickness);
   if (!isEmptySpans(skin)) region = spansBoolean(region, skin, 'subtract');
   if (!isEmptySpans(region)) {
-    // Excluded: model skin and (with feature types) the solid infill the G-code prints, both grown by the margin.
-    const excluded = ctx.hasTypes
-      ? rasterizeExtrusions(t, grid, widths, (i) => t.feature[i] === Feature.Skin)
-      : newBitmap(grid);
-    spansToBitmap(skin, grid, excluded);
-    region = spansBoolean(region, bitmapToSpans(dilateBitmap(excluded, grid, o.skinMargin), grid), 'subtract');
+    // Excluded: the model's skin grown by skinMargin (slicers widen skin into the infill), and with feature types
+    // the solid infill the G-code prints, grown by a line width.
+    let excluded = newBitmap(grid);
+    if (!isEmptySpans(skin)) {
+      spansToBitmap(skin, grid, excluded);
+      excluded = dilateBitmap(excluded, grid, o.skinMargin);
+    }
+    if (ctx.hasTypes) {
+      for (let i = 0; i < t.count; i++) {
+        if (t.feature[i] !== Feature.Skin) continue;
+        stampCapsule(excluded, grid, t.x0[i]!, t.y0[i]!, t.x1[i]!, t.y1[i]!, widths[i]! / 2 + o.lineWidth);
+      }
+    }
+    region = spansBoolean(region, bitmapToSpans(excluded, grid), 'subtract');
   }
   const area = spansArea(region);
   r.infillRegionAreaMm2 = area;

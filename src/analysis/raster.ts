@@ -110,18 +110,21 @@ export function stampCapsule(
 export function dilateBitmap(bitmap: Uint8Array, grid: Grid, r: number): Uint8Array {
   const out = bitmap.slice();
   const { cols, rows, cell } = grid;
-  const isSet = (i: number, j: number) => i >= 0 && j >= 0 && i < cols && j < rows && bitmap[j * cols + i] !== 0;
   for (let j = 0; j < rows; j++) {
+    const base = j * cols;
     const y = (grid.j0 + j + 0.5) * cell;
     let runStart = -1;
     for (let i = 0; i <= cols; i++) {
+      const k = base + i;
       const boundary =
-        i < cols && isSet(i, j) && (!isSet(i - 1, j) || !isSet(i + 1, j) || !isSet(i, j - 1) || !isSet(i, j + 1));
-      if (boundary && runStart < 0) runStart = i;
-      if (!boundary && runStart >= 0) {
-        const xa = (grid.i0 + runStart + 0.5) * cell;
-        const xb = (grid.i0 + i - 1 + 0.5) * cell;
-        stampCapsule(out, grid, xa, y, xb, y, r);
+        i < cols &&
+        bitmap[k] !== 0 &&
+        (i === 0 || bitmap[k - 1] === 0 || i === cols - 1 || bitmap[k + 1] === 0 ||
+          j === 0 || bitmap[k - cols] === 0 || j === rows - 1 || bitmap[k + cols] === 0);
+      if (boundary) {
+        if (runStart < 0) runStart = i;
+      } else if (runStart >= 0) {
+        stampCapsule(out, grid, (grid.i0 + runStart + 0.5) * cell, y, (grid.i0 + i - 0.5) * cell, y, r);
         runStart = -1;
       }
     }

@@ -21,7 +21,10 @@ export interface AnalyzeOptions {
   sampleEvery?: number;
   /** A layer whose Z is off the expected grid by more than this is reported (mm), default 0.005. */
   zTolerance?: number;
-  /** The infill region keeps this far from skin (model skin and solid infill the G-code prints), mm; default 1. */
+  /**
+   * The infill region keeps this far from the model's top and bottom surfaces (mm; default 1), and a line width
+   * from the solid infill (SKIN) the G-code prints.
+   */
   skinMargin?: number;
   /** A layer with outline coverage below this is listed as missing walls; default 0.95. */
   wallCoverageThreshold?: number;

@@ -25,8 +25,12 @@ import { traceContours } from '../contour.js';
 const SPACING_FACTORS = [1, 0.95, 1.05, 0.9, 1.1, 0.85, 1.15, 0.8, 1.2, 0.75, 1.25];
 /** Depth of the first loop in spacings, tried for each factor: the middle of its band first. */
 const PHASES = [0.5, 0.4, 0.6];
-/** A candidate this close to the setting (relative) is taken at once. */
+/** A candidate predicted this close to the setting (relative) ends the search. */
 const GOOD_ENOUGH = 0.02;
+/** The best few predicted candidates are traced for real (the prediction halves thin parts cell by cell,
+ * the output decides per loop) until one is within TRACED_GOOD_ENOUGH. */
+const TRACED_CANDIDATES = 4;
+const TRACED_GOOD_ENOUGH = 0.04;
 /** Grid cells per spacing for the distance field. */
 const CELLS_PER_SPACING = 4;
 /** Upper bound on distance-field nodes (the cell grows for huge regions). */
@@ -169,45 +173,61 @@ export const concentric: InfillPattern = {
     const span = (geom.maxX - geom.minX) * (geom.maxY - geom.minY);
     const h = Math.max(s / CELLS_PER_SPACING, Math.sqrt(span / MAX_NODES));
     const field = distanceField(ix, h);
-    // choose the spacing
-    const target = (params.density * geom.area) / params.lineWidth;
-    const near = nearbyMax(field);
-    let sp = s, phase = 0.5, bestErr = Infinity;
-    search: for (const f of SPACING_FACTORS) {
-      for (const ph of PHASES) {
-        const err = Math.abs(predictedLength(field, near, s * f, ph) - target);
-        if (err < bestErr) {
-          bestErr = err;
-          sp = s * f;
-          phase = ph;
-        }
-        if (bestErr <= GOOD_ENOUGH * target) break search;
-      }
-    }
-    // trace the loops, depth by depth
     const W = field.nx + 1;
     const centre = (i: number, j: number) => {
       const n = j * W + i;
       return (field.v[n] + field.v[n + 1] + field.v[n + W] + field.v[n + W + 1]) / 4;
     };
-    const levels: Polygon[][] = [];
-    const open: Pt[][] = [];
-    for (const t of depths(sp, phase, field.maxDepth)) {
-      const rings: Polygon[] = [];
-      for (const c of traceContours(field, t, centre, (x, y, a, b) => refineToDepth(ix, field, x, y, a, b, t))) {
-        const pts: Pt[] = [];
-        for (const q of c.pts) {
-          const p = { x: Math.round(q.x), y: Math.round(q.y) };
-          const last = pts[pts.length - 1];
-          if (!last || last.x !== p.x || last.y !== p.y) pts.push(p);
+    /** Trace the loops of one candidate, depth by depth; thin loops become centre lines. */
+    const build = (sp: number, phase: number) => {
+      const levels: Polygon[][] = [];
+      const open: Pt[][] = [];
+      let printed = 0;
+      for (const t of depths(sp, phase, field.maxDepth)) {
+        const rings: Polygon[] = [];
+        for (const c of traceContours(field, t, centre, (x, y, a, b) => refineToDepth(ix, field, x, y, a, b, t))) {
+          const pts: Pt[] = [];
+          for (const q of c.pts) {
+            const p = { x: Math.round(q.x), y: Math.round(q.y) };
+            const last = pts[pts.length - 1];
+            if (!last || last.x !== p.x || last.y !== p.y) pts.push(p);
+          }
+          if (pts.length < 3) continue;
+          const len = ringLength(pts);
+          if ((2 * ringArea2(pts)) / len < sp / 2) {
+            const side = oneSide(pts);
+            open.push(side);
+            for (let k = 1; k < side.length; k++) printed += Math.hypot(side[k].x - side[k - 1].x, side[k].y - side[k - 1].y);
+          } else {
+            rings.push(pts);
+            printed += len;
+          }
         }
-        if (pts.length < 3) continue;
-        const len = ringLength(pts);
-        if ((2 * ringArea2(pts)) / len < sp / 2) open.push(oneSide(pts));
-        else rings.push(pts);
+        levels.push(rings);
       }
-      levels.push(rings);
+      return { sp, levels, open, printed };
+    };
+    // the first candidate predicted close enough is traced; if the trace misses, all candidates are
+    // ranked by prediction and the best few traced
+    const target = (params.density * geom.area) / params.lineWidth;
+    const near = nearbyMax(field);
+    const all: Array<{ sp: number; phase: number; err: number }> = [];
+    for (const f of SPACING_FACTORS) for (const ph of PHASES) all.push({ sp: s * f, phase: ph, err: NaN });
+    const predict = (c: { sp: number; phase: number; err: number }) => {
+      if (Number.isNaN(c.err)) c.err = Math.abs(predictedLength(field, near, c.sp, c.phase) - target);
+      return c.err;
+    };
+    const first = all.find((c) => predict(c) <= GOOD_ENOUGH * target) ?? all.reduce((a, b) => (predict(b) < predict(a) ? b : a));
+    let chosen = build(first.sp, first.phase);
+    if (Math.abs(chosen.printed - target) > TRACED_GOOD_ENOUGH * target) {
+      const ranked = all.filter((c) => c !== first).sort((a, b) => predict(a) - predict(b));
+      for (let k = 0; k < Math.min(ranked.length, TRACED_CANDIDATES - 1); k++) {
+        const b = build(ranked[k].sp, ranked[k].phase);
+        if (Math.abs(b.printed - target) < Math.abs(chosen.printed - target)) chosen = b;
+        if (Math.abs(chosen.printed - target) <= TRACED_GOOD_ENOUGH * target) break;
+      }
     }
+    const { sp, levels, open } = chosen;
     const all = levels.flat();
     if (!params.connect) return { lines: open, loops: all, link: false };
     // child → parent links: each inner loop to the nearest loop one level out, each parent taking one child
