@@ -103,30 +103,33 @@ export function stampCapsule(
 }
 
 /**
- * The bitmap grown by r (mm): every cell whose centre is within r of a set cell's centre. Only the set cells on
- * the region's boundary are stamped (runs of them along a row as one capsule), so the cost follows the outline,
- * not the area.
+ * The bitmap grown by about r (mm): a superset of every cell whose centre is within r of a set cell's centre,
+ * larger by at most r/4. Discs are stamped only at boundary cells, and at most one per square of side r/8 (with
+ * the radius grown by that square's diagonal), so the cost follows the outline length, not the area.
  */
 export function dilateBitmap(bitmap: Uint8Array, grid: Grid, r: number): Uint8Array {
   const out = bitmap.slice();
   const { cols, rows, cell } = grid;
+  const block = Math.max(1, Math.floor(r / 8 / cell));
+  const radius = r + block * cell * Math.SQRT2;
+  const bCols = Math.ceil(cols / block);
+  const stamped = new Uint8Array(bCols * Math.ceil(rows / block));
   for (let j = 0; j < rows; j++) {
     const base = j * cols;
-    const y = (grid.j0 + j + 0.5) * cell;
-    let runStart = -1;
-    for (let i = 0; i <= cols; i++) {
+    const bRow = Math.floor(j / block) * bCols;
+    for (let i = 0; i < cols; i++) {
       const k = base + i;
+      if (bitmap[k] === 0) continue;
       const boundary =
-        i < cols &&
-        bitmap[k] !== 0 &&
-        (i === 0 || bitmap[k - 1] === 0 || i === cols - 1 || bitmap[k + 1] === 0 ||
-          j === 0 || bitmap[k - cols] === 0 || j === rows - 1 || bitmap[k + cols] === 0);
-      if (boundary) {
-        if (runStart < 0) runStart = i;
-      } else if (runStart >= 0) {
-        stampCapsule(out, grid, (grid.i0 + runStart + 0.5) * cell, y, (grid.i0 + i - 0.5) * cell, y, r);
-        runStart = -1;
-      }
+        i === 0 || bitmap[k - 1] === 0 || i === cols - 1 || bitmap[k + 1] === 0 ||
+        j === 0 || bitmap[k - cols] === 0 || j === rows - 1 || bitmap[k + cols] === 0;
+      if (!boundary) continue;
+      const b = bRow + Math.floor(i / block);
+      if (stamped[b] !== 0) continue;
+      stamped[b] = 1;
+      const x = (grid.i0 + i + 0.5) * cell;
+      const y = (grid.j0 + j + 0.5) * cell;
+      stampCapsule(out, grid, x, y, x, y, radius);
     }
   }
   return out;

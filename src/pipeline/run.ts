@@ -92,7 +92,7 @@ async function runJobs(jobs: RangeJob[], prepared: () => PreparedMesh, cfg: Conf
     }
     return out;
   }
-  return pool.run(jobs, onDone, signal);
+  return pool.run(jobs, (j) => computeRange(prepared(), cfg, j), onDone, signal);
 }
 
 export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Promise<RunResult> {
@@ -103,7 +103,8 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   const params = infillParamsFor(cfg, opts.objectCenter);
   const pattern = PATTERNS[cfg.infillPattern as PatternId];
   const split = ranges(layers.length, opts.threads);
-  const pool = opts.threads > 1 ? await createPool(Math.min(opts.threads, split.length), mesh, cfg) : null;
+  // N threads: the calling thread and N-1 workers
+  const pool = opts.threads > 1 ? await createPool(Math.min(opts.threads, split.length) - 1, mesh, cfg) : null;
   let sliceable: PreparedMesh | null = null;
   const local = () => (sliceable ??= prepareForSlicing(mesh));
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });

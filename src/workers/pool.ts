@@ -56,9 +56,16 @@ function shareMesh(mesh: Mesh): Mesh {
 }
 
 export interface LayerPool {
-  run(jobs: RangeJob[], onDone?: (job: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]>;
+  /**
+   * Run jobs on the workers and, through `local`, on the calling thread too. Results are returned in
+   * job order, so they do not depend on who computed what.
+   */
+  run(jobs: RangeJob[], local: (job: RangeJob) => RangeResult, onDone?: (job: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]>;
   close(): Promise<void>;
 }
+
+/** Jobs each worker holds at once, so it never waits for the busy main thread to hand out the next. */
+const IN_FLIGHT = 2;
 
 export async function createPool(size: number, mesh: Mesh, cfg: Config): Promise<LayerPool> {
   const shared = shareMesh(mesh);
@@ -71,7 +78,7 @@ export async function createPool(size: number, mesh: Mesh, cfg: Config): Promise
     p.onError((e) => current?.fail(e));
   }
   return {
-    run(jobs, onDone, signal) {
+    run(jobs, local, onDone, signal) {
       return new Promise<RangeResult[]>((resolve, reject) => {
         const results: RangeResult[] = new Array(jobs.length);
         let next = 0;
@@ -84,10 +91,26 @@ export async function createPool(size: number, mesh: Mesh, cfg: Config): Promise
           if (e) reject(e);
           else resolve(results);
         };
+        const complete = (id: number, r: RangeResult) => {
+          results[id] = r;
+          onDone?.(jobs[id]);
+          if (++done === jobs.length) finish(null);
+        };
         const feed = (p: Port) => {
           if (finished || next >= jobs.length) return;
           const id = next++;
           p.post({ type: 'range', id, job: jobs[id] });
+        };
+        // the calling thread takes a job whenever it is free, between handling worker messages
+        const work = () => {
+          if (finished || next >= jobs.length) return;
+          const id = next++;
+          try {
+            complete(id, local(jobs[id]));
+          } catch (e) {
+            return finish(e as Error);
+          }
+          setTimeout(work, 0);
         };
         if (signal?.aborted) return finish(new StrataError('CANCELLED', 'slicing was cancelled'));
         signal?.addEventListener('abort', () => finish(new StrataError('CANCELLED', 'slicing was cancelled')), { once: true });
@@ -99,13 +122,12 @@ export async function createPool(size: number, mesh: Mesh, cfg: Config): Promise
             if (m.type === 'error') {
               return finish(m.code === 'INTERNAL' ? new Error(m.message) : new StrataError(m.code as never, m.message));
             }
-            results[m.id] = m.result;
-            onDone?.(jobs[m.id]);
-            if (++done === jobs.length) finish(null);
-            else feed(p);
+            complete(m.id, m.result);
+            feed(p);
           },
         };
-        for (const p of ports) feed(p);
+        for (let k = 0; k < IN_FLIGHT; k++) for (const p of ports) feed(p);
+        setTimeout(work, 0);
       });
     },
     async close() {

@@ -161,6 +161,58 @@ function walkFrom(ring: readonly Pt[], i: number, start: Pt): Pt[] {
   return out;
 }
 
+/**
+ * Join each loop to one loop of the next depth (the nearest one whose parent is free): round the outer
+ * loop, across to the nearest point of the inner one, round it, and so on. Unjoined loops stay loops.
+ */
+function linkLevels(levels: Polygon[][], open: Pt[][], sp: number): { lines: Pt[][]; loops: Polygon[] } {
+  const childOf = new Map<Polygon, Polygon>();
+  const hasParent = new Set<Polygon>();
+  for (let l = 1; l < levels.length; l++) {
+    for (const child of levels[l]) {
+      let best: Polygon | null = null;
+      let bestD = 1.5 * sp;
+      for (const parent of levels[l - 1]) {
+        if (childOf.has(parent)) continue;
+        const d = nearestOnRing(parent, child[0]).d;
+        if (d < bestD) {
+          bestD = d;
+          best = parent;
+        }
+      }
+      if (best) {
+        childOf.set(best, child);
+        hasParent.add(child);
+      }
+    }
+  }
+  const lines: Pt[][] = open.slice();
+  const loops: Polygon[] = [];
+  for (const ring of levels.flat()) {
+    if (hasParent.has(ring)) continue;
+    if (!childOf.has(ring)) {
+      loops.push(ring);
+      continue;
+    }
+    let path = walkFrom(ring, 0, ring[0]);
+    let r: Polygon | undefined = ring;
+    while ((r = childOf.get(r))) {
+      const end = path[path.length - 1];
+      const q = nearestOnRing(r, end);
+      path = path.concat(walkFrom(r, q.i, { x: Math.round(q.x), y: Math.round(q.y) }));
+    }
+    lines.push(path);
+  }
+  return { lines, loops };
+}
+
+function pathsLength(lines: readonly Pt[][], loops: readonly Pt[][]): number {
+  let l = 0;
+  for (const p of lines) for (let k = 1; k < p.length; k++) l += Math.hypot(p[k].x - p[k - 1].x, p[k].y - p[k - 1].y);
+  for (const p of loops) l += ringLength(p);
+  return l;
+}
+
 export const concentric: InfillPattern = {
   id: 'concentric',
   description: 'Successive insets of the region until empty, each loop linked to the next.',
@@ -182,7 +234,6 @@ export const concentric: InfillPattern = {
     const build = (sp: number, phase: number) => {
       const levels: Polygon[][] = [];
       const open: Pt[][] = [];
-      let printed = 0;
       for (const t of depths(sp, phase, field.maxDepth)) {
         const rings: Polygon[] = [];
         for (const c of traceContours(field, t, centre, (x, y, a, b) => refineToDepth(ix, field, x, y, a, b, t))) {
@@ -195,79 +246,36 @@ export const concentric: InfillPattern = {
           if (pts.length < 3) continue;
           const len = ringLength(pts);
           if ((2 * ringArea2(pts)) / len < sp / 2) {
-            const side = oneSide(pts);
-            open.push(side);
-            for (let k = 1; k < side.length; k++) printed += Math.hypot(side[k].x - side[k - 1].x, side[k].y - side[k - 1].y);
+            open.push(oneSide(pts));
           } else {
             rings.push(pts);
-            printed += len;
           }
         }
         levels.push(rings);
       }
-      return { sp, levels, open, printed };
+      const out = params.connect ? linkLevels(levels, open, sp) : { lines: open, loops: levels.flat() };
+      return { ...out, printed: pathsLength(out.lines, out.loops) };
     };
     // the first candidate predicted close enough is traced; if the trace misses, all candidates are
     // ranked by prediction and the best few traced
     const target = (params.density * geom.area) / params.lineWidth;
     const near = nearbyMax(field);
-    const all: Array<{ sp: number; phase: number; err: number }> = [];
-    for (const f of SPACING_FACTORS) for (const ph of PHASES) all.push({ sp: s * f, phase: ph, err: NaN });
+    const cands: Array<{ sp: number; phase: number; err: number }> = [];
+    for (const f of SPACING_FACTORS) for (const ph of PHASES) cands.push({ sp: s * f, phase: ph, err: NaN });
     const predict = (c: { sp: number; phase: number; err: number }) => {
       if (Number.isNaN(c.err)) c.err = Math.abs(predictedLength(field, near, c.sp, c.phase) - target);
       return c.err;
     };
-    const first = all.find((c) => predict(c) <= GOOD_ENOUGH * target) ?? all.reduce((a, b) => (predict(b) < predict(a) ? b : a));
+    const first = cands.find((c) => predict(c) <= GOOD_ENOUGH * target) ?? cands.reduce((a, b) => (predict(b) < predict(a) ? b : a));
     let chosen = build(first.sp, first.phase);
     if (Math.abs(chosen.printed - target) > TRACED_GOOD_ENOUGH * target) {
-      const ranked = all.filter((c) => c !== first).sort((a, b) => predict(a) - predict(b));
+      const ranked = cands.filter((c) => c !== first).sort((a, b) => predict(a) - predict(b));
       for (let k = 0; k < Math.min(ranked.length, TRACED_CANDIDATES - 1); k++) {
         const b = build(ranked[k].sp, ranked[k].phase);
         if (Math.abs(b.printed - target) < Math.abs(chosen.printed - target)) chosen = b;
         if (Math.abs(chosen.printed - target) <= TRACED_GOOD_ENOUGH * target) break;
       }
     }
-    const { sp, levels, open } = chosen;
-    const all = levels.flat();
-    if (!params.connect) return { lines: open, loops: all, link: false };
-    // child → parent links: each inner loop to the nearest loop one level out, each parent taking one child
-    const childOf = new Map<Polygon, Polygon>();
-    const hasParent = new Set<Polygon>();
-    for (let l = 1; l < levels.length; l++) {
-      for (const child of levels[l]) {
-        let best: Polygon | null = null;
-        let bestD = 1.5 * sp;
-        for (const parent of levels[l - 1]) {
-          if (childOf.has(parent)) continue;
-          const d = nearestOnRing(parent, child[0]).d;
-          if (d < bestD) {
-            bestD = d;
-            best = parent;
-          }
-        }
-        if (best) {
-          childOf.set(best, child);
-          hasParent.add(child);
-        }
-      }
-    }
-    const lines: Pt[][] = open.slice();
-    const loops: Polygon[] = [];
-    for (const ring of all) {
-      if (hasParent.has(ring)) continue;
-      if (!childOf.has(ring)) {
-        loops.push(ring);
-        continue;
-      }
-      let path = walkFrom(ring, 0, ring[0]);
-      let r: Polygon | undefined = ring;
-      while ((r = childOf.get(r))) {
-        const end = path[path.length - 1];
-        const q = nearestOnRing(r, end);
-        path = path.concat(walkFrom(r, q.i, { x: Math.round(q.x), y: Math.round(q.y) }));
-      }
-      lines.push(path);
-    }
-    return { lines, loops, link: false };
+    return { lines: chosen.lines, loops: chosen.loops, link: false };
   },
 };
