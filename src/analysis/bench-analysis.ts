@@ -4,27 +4,18 @@
  */
 import { readFileSync } from 'node:fs';
 import { gunzipSync } from 'node:zlib';
-import type { Mesh } from '../mesh/types.js';
 import { analyzePrint } from './checks.js';
 import { formatReport } from './format-report.js';
 import { parseGcode } from './gcode-parse.js';
-import { readBinaryStl, toyGcode } from './toy-slicer.js';
+import { placeOnBed, readStl, toyGcode } from './toy-slicer.js';
 
 const OPTS = { layerHeight: 0.2, firstLayerHeight: 0.2, lineWidth: 0.4, filamentDiameter: 1.75 };
-
-function dropToBed(mesh: Mesh): Mesh {
-  const p = mesh.positions.slice();
-  let zMin = Infinity;
-  for (let k = 2; k < p.length; k += 3) zMin = Math.min(zMin, p[k]!);
-  for (let k = 2; k < p.length; k += 3) p[k] = p[k]! - zMin;
-  return { positions: p, indices: mesh.indices };
-}
 
 function main(): void {
   const path = process.argv[2] ?? new URL('../../../shared/models/3DBenchy.stl.gz', import.meta.url).pathname;
   let bytes: Uint8Array = readFileSync(path);
   if (path.endsWith('.gz')) bytes = gunzipSync(bytes);
-  const mesh = dropToBed(readBinaryStl(bytes));
+  const mesh = placeOnBed(readStl(bytes), 110, 110);
   let t = performance.now();
   const gcode = toyGcode(mesh, { ...OPTS, infillSpacing: 4, skinLayers: 4 });
   console.log(`toy G-code: ${(gcode.length / 1e6).toFixed(1)} MB in ${(performance.now() - t).toFixed(0)} ms`);

@@ -256,7 +256,7 @@ function surfaceCoverage(surface: Spans, edge: number, grid: Grid, material: Uin
 }
 
 /**
- * Infill density: in the section shrunk by the wall thickness, minus model skin and (with feature types) the
+ * Infill density: in the section shrunk by the wall thickness and a line width, minus model skin and (with feature types) the
  * G-code's own solid infill, each grown by skinMargin, the FILL lines' extruded volume per layer height (their
  * full-density area) over the region's area.
  */
@@ -265,7 +265,8 @@ function measureInfill(
   ctx: LayerContext,
 ): void {
   const o = ctx.opts;
-  let region = erodeSpans(section, o.wallThickness);
+  // One line width more than the walls: where infill meets them it overlaps or runs along them (anchors).
+  let region = erodeSpans(section, o.wallThickness + o.lineWidth);
   if (!isEmptySpans(skin)) region = spansBoolean(region, skin, 'subtract');
   if (!isEmptySpans(region)) {
     // Excluded: the model's skin grown by skinMargin (slicers widen skin into the infill), and with feature types

@@ -10,7 +10,10 @@ export interface AnalyzeOptions {
   filamentDiameter: number;
   /** Raster cell size (mm), default 0.05; grown automatically when a layer would exceed the cell budget. */
   cellSize?: number;
-  /** Width of the wall zone excluded from the infill region (mm), default 2 × lineWidth. */
+  /**
+   * Width of the wall zone (mm), default 2 × lineWidth. The infill region starts a line width further in, past
+   * where infill overlaps or runs along the innermost wall.
+   */
   wallThickness?: number;
   /** Skin thickness that defines top / bottom surfaces (mm), default 0.8 each. */
   topThickness?: number;

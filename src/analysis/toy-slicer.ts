@@ -71,14 +71,33 @@ export function toyGcode(mesh: Mesh, o: ToyOptions): string {
   return out.join('\n') + '\n';
 }
 
-/** Triangles of a binary STL as an unwelded mesh. */
-export function readBinaryStl(bytes: Uint8Array): Mesh {
+/** Triangles of a binary or ASCII STL as an unwelded mesh (test and benchmark input only). */
+export function readStl(bytes: Uint8Array): Mesh {
   const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-  const count = view.getUint32(80, true);
-  const positions = new Float32Array(count * 9);
-  for (let t = 0; t < count; t++) {
-    const base = 84 + t * 50 + 12;
-    for (let k = 0; k < 9; k++) positions[t * 9 + k] = view.getFloat32(base + 4 * k, true);
+  const binaryCount = bytes.length >= 84 ? view.getUint32(80, true) : -1;
+  if (binaryCount >= 0 && 84 + binaryCount * 50 === bytes.length) {
+    const positions = new Float32Array(binaryCount * 9);
+    for (let t = 0; t < binaryCount; t++) {
+      const base = 84 + t * 50 + 12;
+      for (let k = 0; k < 9; k++) positions[t * 9 + k] = view.getFloat32(base + 4 * k, true);
+    }
+    return { positions, indices: Uint32Array.from({ length: binaryCount * 3 }, (_, i) => i) };
   }
-  return { positions, indices: Uint32Array.from({ length: count * 3 }, (_, i) => i) };
+  const text = new TextDecoder().decode(bytes);
+  const values: number[] = [];
+  for (const m of text.matchAll(/vertex\s+(\S+)\s+(\S+)\s+(\S+)/g)) values.push(+m[1]!, +m[2]!, +m[3]!);
+  return { positions: Float32Array.from(values), indices: Uint32Array.from({ length: values.length / 3 }, (_, i) => i) };
+}
+
+/** The mesh moved so that its bounding box is centred on (cx, cy) and rests on z = 0, as slicers place it. */
+export function placeOnBed(mesh: Mesh, cx: number, cy: number): Mesh {
+  const p = mesh.positions;
+  const min = [Infinity, Infinity, Infinity];
+  const max = [-Infinity, -Infinity, -Infinity];
+  for (let k = 0; k < p.length; k++) {
+    min[k % 3] = Math.min(min[k % 3]!, p[k]!);
+    max[k % 3] = Math.max(max[k % 3]!, p[k]!);
+  }
+  const shift = [cx - (min[0]! + max[0]!) / 2, cy - (min[1]! + max[1]!) / 2, -min[2]!];
+  return { positions: p.map((v, k) => v + shift[k % 3]!), indices: mesh.indices };
 }

@@ -18,12 +18,19 @@ export interface ScalarGrid {
   v: Float64Array;
 }
 
+/** A contour point; `tag` is free for the refine function (concentric stores the nearest boundary edge). */
+export interface ContourPt {
+  x: number;
+  y: number;
+  tag?: number;
+}
+
 export interface Contour {
-  pts: Array<{ x: number; y: number }>;
+  pts: ContourPt[];
   closed: boolean;
 }
 
-export type Refine = (x: number, y: number, nodeA: number, nodeB: number) => { x: number; y: number };
+export type Refine = (x: number, y: number, nodeA: number, nodeB: number) => ContourPt;
 
 /**
  * Trace the level set `level`. `centre(i, j)` gives the field at the centre of cell (i, j) for saddle
@@ -86,7 +93,7 @@ export function traceContours(g: ScalarGrid, level: number, centre: (i: number, 
   const seen = new Uint8Array(nE);
   const out: Contour[] = [];
   const walk = (start: number, closed: boolean) => {
-    const pts: Array<{ x: number; y: number }> = [];
+    const pts: ContourPt[] = [];
     let prev = -1, cur = start;
     while (cur !== -1 && !seen[cur]) {
       seen[cur] = 1;

@@ -141,11 +141,15 @@ export function distanceField(ix: RegionIndex, h: number): DistanceField {
   return { nx, ny, x0, y0, h, v, edge, maxDepth };
 }
 
-/** Move a point near the level set {distance = t} onto it, using the nearest edges of two grid nodes. */
-export function refineToDepth(ix: RegionIndex, f: DistanceField, x: number, y: number, na: number, nb: number, t: number): { x: number; y: number } {
-  let px = x, py = y;
+/**
+ * Move a point near the level set {distance = t} onto it, using the nearest edges of two grid nodes.
+ * `tag` is the edge the point ends up nearest to when that nearest point lies inside the edge (not at a
+ * vertex), else −1: the contour there runs parallel to that edge.
+ */
+export function refineToDepth(ix: RegionIndex, f: DistanceField, x: number, y: number, na: number, nb: number, t: number): { x: number; y: number; tag: number } {
+  let px = x, py = y, tag = -1;
   for (let it = 0; it < 2; it++) {
-    let bestD = Infinity, qx = 0, qy = 0;
+    let bestD = Infinity, qx = 0, qy = 0, be = -1;
     for (const e of [f.edge[na], f.edge[nb]]) {
       if (e < 0) continue;
       const r = edgeDistance(ix, e, px, py);
@@ -153,15 +157,56 @@ export function refineToDepth(ix: RegionIndex, f: DistanceField, x: number, y: n
         bestD = r.d;
         qx = r.qx;
         qy = r.qy;
+        be = e;
       }
     }
     if (!(bestD > 0) || !isFinite(bestD)) break;
-    const k = (t - bestD) / bestD;
     // never move farther than a cell: a wrong edge candidate must not throw the point away
-    const step = Math.abs(t - bestD);
-    if (step > f.h) break;
+    if (Math.abs(t - bestD) > f.h) break;
+    const k = (t - bestD) / bestD;
     px += (px - qx) * k;
     py += (py - qy) * k;
+    const atVertex = (qx === ix.ex0[be] && qy === ix.ey0[be]) || (qx === ix.ex1[be] && qy === ix.ey1[be]);
+    tag = atVertex ? -1 : be;
   }
-  return { x: px, y: py };
+  return { x: px, y: py, tag };
+}
+
+/**
+ * Restore the sharp corners the sampling cut off: where two consecutive contour points run parallel to
+ * different boundary edges, the contour turns where the two parallels meet (a convex corner of the inset);
+ * that point is inserted when it lies within `reach` of both.
+ */
+export function restoreCorners(ix: RegionIndex, pts: ContourPtIn[], closed: boolean, reach: number): ContourPtIn[] {
+  const out: ContourPtIn[] = [];
+  const n = pts.length;
+  const dir = (e: number) => {
+    const ux = ix.ex1[e] - ix.ex0[e], uy = ix.ey1[e] - ix.ey0[e];
+    const l = Math.hypot(ux, uy);
+    return { x: ux / l, y: uy / l };
+  };
+  for (let k = 0; k < n; k++) {
+    const a = pts[k];
+    out.push(a);
+    if (!closed && k === n - 1) break;
+    const b = pts[(k + 1) % n];
+    const ea = a.tag ?? -1, eb = b.tag ?? -1;
+    if (ea < 0 || eb < 0 || ea === eb) continue;
+    const da = dir(ea), db = dir(eb);
+    const den = da.x * db.y - da.y * db.x;
+    if (Math.abs(den) < 1e-6) continue;
+    // a + s·da = b + r·db
+    const wx = b.x - a.x, wy = b.y - a.y;
+    const sA = (wx * db.y - wy * db.x) / den;
+    const cx = a.x + sA * da.x, cy = a.y + sA * da.y;
+    if (Math.hypot(cx - a.x, cy - a.y) > reach || Math.hypot(cx - b.x, cy - b.y) > reach) continue;
+    out.push({ x: cx, y: cy, tag: -1 });
+  }
+  return out;
+}
+
+interface ContourPtIn {
+  x: number;
+  y: number;
+  tag?: number;
 }

@@ -244,6 +244,18 @@ export interface Hit {
 /** All intersections of segment (x0,y0)→(x1,y1) with region edges, sorted by t. Parallel overlaps are ignored. */
 export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number, y1: number, out: Hit[]): void {
   out.length = 0;
+  // fast path: a short segment well inside one cell that holds no edge cannot cross anything
+  const fx0 = (x0 - ix.minX) / ix.cell, fy0 = (y0 - ix.minY) / ix.cell;
+  const fx1 = (x1 - ix.minX) / ix.cell, fy1 = (y1 - ix.minY) / ix.cell;
+  const cx = Math.floor(fx0), cy = Math.floor(fy0);
+  if (cx === Math.floor(fx1) && cy === Math.floor(fy1) && cx >= 0 && cy >= 0 && cx < ix.nx && cy < ix.ny) {
+    const c = cy * ix.nx + cx;
+    if (ix.cellStart[c] === ix.cellStart[c + 1]) {
+      const pad = GRID_PAD_UM / ix.cell;
+      const inner = (f: number) => f - Math.floor(f) > pad && Math.ceil(f) - f > pad;
+      if (inner(fx0) && inner(fy0) && inner(fx1) && inner(fy1)) return;
+    }
+  }
   const stamp = ++ix.stampNow.v;
   const dx = x1 - x0, dy = y1 - y0;
   forCells(ix, x0, y0, x1, y1, (c) => {

@@ -3,12 +3,11 @@
  * indexing, operators, assignments, ternaries, short-circuit logic, constructors and calls.
  * Side effects (assignments, ++/--, user calls) are emitted as statements in evaluation order.
  */
-import type { AstNode } from '@shaderfrog/glsl-parser/ast/index.js';
 import type { Base, GType } from './glsl-types.js';
 import { BOOL, FLOAT, INT, UINT, gtype, implicitlyConvertible, isMatrix, isScalar, parseTypeName, size, typeName } from './glsl-types.js';
 import type { ArraySym, Ctx, FnSym, LValue, Slot, Value } from './compiler-context.js';
-import { Buf, VOID_TYPE, isAtom, isVoid, short } from './compiler-context.js';
-import { constValue, construct, convert, lit, splat } from './values.js';
+import { Buf, VOID_TYPE, isVoid, short } from './compiler-context.js';
+import { constValue, construct, convert, lit } from './values.js';
 import type { ArithOp } from './operators.js';
 import { arith, bitNot, compare, equality, logicalNot, logicalXor, negate, requireBool } from './operators.js';
 import { callBuiltin, isBuiltinName, isUnavailable } from './builtins.js';
@@ -290,7 +289,7 @@ export function compileLValue(ctx: Ctx, node: Node, sels?: Node[]): LValue {
 
 const ARITH = new Set(['+', '-', '*', '/', '%', '&', '|', '^', '<<', '>>']);
 
-function one(ctx: Ctx, base: Base): Value {
+function one(base: Base): Value {
   return constValue(gtype(base), [1]);
 }
 
@@ -299,7 +298,7 @@ function compileIncDec(ctx: Ctx, target: Node, op: '++' | '--', prefix: boolean,
   if (lv.t.base === 'bool') throw ctx.error(`operator ${op} needs a number`);
   const cur = readLValue(lv);
   const old = prefix ? cur : ctx.snapshotValue(cur);
-  const next = arith(ctx, op === '++' ? '+' : '-', old, one(ctx, lv.t.base));
+  const next = arith(ctx, op === '++' ? '+' : '-', old, one(lv.t.base));
   assign(ctx, lv, next);
   return prefix ? readLValue(lv) : old;
 }
@@ -626,4 +625,4 @@ export function compileInitializer(ctx: Ctx, node: Node, t: GType): Value {
   return convert(v, t.base);
 }
 
-export { typeSpecifierType, callArgs, rootIdentifier, splat, isAtom };
+export { typeSpecifierType, callArgs, rootIdentifier };

@@ -334,7 +334,12 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
         uniforms.push({ name, kind, type: t, defaults });
         uniformNames.push(names);
         globalDecls.push(`let ${names.map((n, i) => `${n} = ${lit(defaults[i])}`).join(', ')};`);
-        ctx.declare(name, { kind: 'var', t, names, readOnly: `cannot assign to uniform '${short(name)}'`, global: true });
+        const usym: VarSym = { kind: 'var', t, names, readOnly: `cannot assign to uniform '${short(name)}'`, global: true };
+        ctx.declare(name, usym);
+        if (name === 'numPasses') {
+          numPassesSym = usym;
+          numPassesDeclared = true;
+        }
         continue;
       }
       if (isConst && init === undefined) throw ctx.error(`const '${short(name)}' needs an initialiser`);

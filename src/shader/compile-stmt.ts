@@ -4,9 +4,9 @@
  * budget `B` and stops the shader with LIMIT_EXCEEDED when it runs out.
  */
 import type { GType } from './glsl-types.js';
-import { gtype, size, typeName } from './glsl-types.js';
+import { size, typeName } from './glsl-types.js';
 import type { ArraySym, Ctx, Value, VarSym } from './compiler-context.js';
-import { Buf, isVoid, short } from './compiler-context.js';
+import { isVoid, short } from './compiler-context.js';
 import { callArgs, compileCondition, compileExpr, compileInitializer, nodeLine, typeSpecifierType } from './compile-expr.js';
 import { convert, lit } from './values.js';
 import { implicitlyConvertible } from './glsl-types.js';
@@ -347,4 +347,3 @@ export function compileStatement(ctx: Ctx, node: Node, depth = 0): void {
   throw ctx.error(`unsupported statement (${short(String(node.type))})`);
 }
 
-export { Buf, gtype };

@@ -183,3 +183,25 @@ test('compile errors name the line', () => {
     );
   }
 });
+
+test('line numbers survive comments, directives, continuations and inactive branches', () => {
+  const src = [
+    '#version 430', // 1
+    '/* a block comment', // 2
+    '   over two lines */', // 3
+    '#define LONG(a) \\', // 4
+    '  ((a) + 1.0)', // 5
+    '#ifdef NOT_DEFINED', // 6
+    'this is not GLSL', // 7
+    '#endif', // 8
+    'vec4 cellular(vec3 world) { // 9',
+    '  float x = LONG(1.0);', // 10
+    '  return vec4(x, missing, 0.0, 1.0);', // 11
+    '}',
+  ].join('\n');
+  assert.throws(() => compileShader(src), (e: unknown) => e instanceof StrataError && /^shader\.glsl line 11: unknown identifier 'missing'/.test(e.message));
+  assert.throws(
+    () => compileShader('vec4 cellular(vec3 world) {\n  return vec4(1.0)\n}', { fileName: 'foam/shader.glsl' }),
+    (e: unknown) => e instanceof StrataError && /^foam\/shader\.glsl line [23]: syntax error/.test(e.message),
+  );
+});

@@ -91,8 +91,41 @@ export function labelBoundaries(label: LabelFn, region: readonly ExPolygon[], op
     const q = toMicrons(simplifyMmPath(p, r.simplify));
     if (q.length >= 2) lines.push(q);
   }
-  const clipped = clipLines(lines, region as ExPolygon[]).filter((p) => p.length >= 2 && polylineLength(p) >= r.minLength * 1000);
+  const clipped = clipLines(lines, region as ExPolygon[]).filter((p) => p.length >= 2 && polylineLength(p) >= r.minLength * 1000 && !alongBoundary(p, region));
   return orderPaths(clipped, opts.start ?? { x: b.minX, y: b.minY });
+}
+
+/** Squared distance from (px, py) to segment ab, µm². */
+function segDist2(px: number, py: number, a: Pt, b: Pt): number {
+  const dx = b.x - a.x;
+  const dy = b.y - a.y;
+  const len2 = dx * dx + dy * dy;
+  let t = len2 === 0 ? 0 : ((px - a.x) * dx + (py - a.y) * dy) / len2;
+  t = Math.max(0, Math.min(1, t));
+  const qx = a.x + t * dx - px;
+  const qy = a.y + t * dy - py;
+  return qx * qx + qy * qy;
+}
+
+function nearBoundary(px: number, py: number, region: readonly ExPolygon[], tol2: number): boolean {
+  for (const e of region) {
+    for (const ring of [e.outer, ...e.holes]) {
+      for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) if (segDist2(px, py, ring[j], ring[i]) <= tol2) return true;
+    }
+  }
+  return false;
+}
+
+/**
+ * Whether a clipped path runs along the region's edge (a cell boundary that coincides with it):
+ * such a path would only retrace the wall, and the clipper keeps or drops it inconsistently.
+ */
+function alongBoundary(p: Polyline, region: readonly ExPolygon[]): boolean {
+  const tol2 = 4;
+  for (let i = 1; i < p.length; i++) {
+    if (!nearBoundary((p[i - 1].x + p[i].x) / 2, (p[i - 1].y + p[i].y) / 2, region, tol2)) return false;
+  }
+  return true;
 }
 
 function densityFn(d: DensitySource | undefined): (x: number, y: number, z: number) => number {

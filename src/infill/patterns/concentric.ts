@@ -8,8 +8,9 @@
  * 15 mm arm at 10 % holds two or four lines where 3.3 are due). Because the loops need not line up with
  * other layers, spacing and phase are chosen per region: spacing s·{1, 0.95, 1.05, …, 0.75, 1.25}, first
  * loop at {0.5, 0.4, 0.6} spacings; the candidate whose predicted extrusion is nearest the setting wins
- * (the first one within 2 %). A loop thinner than half a spacing (two sides of a ridge) is printed as one
- * side only: a centre line, not a doubled one.
+ * (the first one within 2 %; the prediction is checked by tracing). A loop thinner than half a spacing
+ * (two sides of a ridge) is printed as one side only, a centre line rather than a doubled one, or left out
+ * when that is nearer the setting (the inset is then taken as empty).
  *
  * With `connect`, each loop is joined to one loop of the next depth (the one nearest to it): the path runs
  * round the outer loop, steps across to the nearest point of the inner one, runs round it, and so on.
@@ -18,7 +19,7 @@ import type { InfillPattern } from '../types.js';
 import type { Polygon, Pt } from '../../geometry/types.js';
 import { familySpacing } from '../density.js';
 import { indexRegion, regionGeom } from '../region-index.js';
-import { type DistanceField, distanceField, refineToDepth } from '../distance-field.js';
+import { type DistanceField, distanceField, refineToDepth, restoreCorners } from '../distance-field.js';
 import { traceContours } from '../contour.js';
 
 /** Spacing factors tried, nearest to 1 first. */
@@ -162,6 +163,45 @@ function walkFrom(ring: readonly Pt[], i: number, start: Pt): Pt[] {
 }
 
 /**
+ * Split a loop with thin stretches: each wide stretch stays as it is (open), each thin stretch (out along
+ * one side of a ridge and back along the other) keeps its first half: one line along the ridge.
+ */
+function splitThin(pts: readonly Pt[], thin: readonly boolean[], wide: Pt[][], centre: Pt[][]): void {
+  const n = pts.length;
+  const s0 = thin.findIndex((b) => !b);
+  let run: Pt[] = [];
+  let runThin = false;
+  const flush = () => {
+    if (run.length < 2) return;
+    if (!runThin) {
+      wide.push(run);
+      return;
+    }
+    let total = 0;
+    for (let k = 1; k < run.length; k++) total += Math.hypot(run[k].x - run[k - 1].x, run[k].y - run[k - 1].y);
+    const half: Pt[] = [run[0]];
+    let acc = 0;
+    for (let k = 1; k < run.length && acc < total / 2; k++) {
+      acc += Math.hypot(run[k].x - run[k - 1].x, run[k].y - run[k - 1].y);
+      half.push(run[k]);
+    }
+    centre.push(half);
+  };
+  for (let k = 0; k <= n; k++) {
+    const i = (s0 + k) % n;
+    const isThin = k < n && thin[i];
+    if (k > 0 && (isThin !== runThin || k === n)) {
+      const last = run[run.length - 1];
+      if (k === n) run.push(pts[i]);
+      flush();
+      run = [last];
+    }
+    runThin = isThin;
+    if (k < n) run.push(pts[i]);
+  }
+}
+
+/**
  * Join each loop to one loop of the next depth (the nearest one whose parent is free): round the outer
  * loop, across to the nearest point of the inner one, round it, and so on. Unjoined loops stay loops.
  */
@@ -230,15 +270,17 @@ export const concentric: InfillPattern = {
       const n = j * W + i;
       return (field.v[n] + field.v[n + 1] + field.v[n + W] + field.v[n + W + 1]) / 4;
     };
+    const target = (params.density * geom.area) / params.lineWidth;
     /** Trace the loops of one candidate, depth by depth; thin loops become centre lines. */
     const build = (sp: number, phase: number) => {
       const levels: Polygon[][] = [];
-      const open: Pt[][] = [];
+      const wideParts: Pt[][] = [];
+      const centreLines: Pt[][] = [];
       for (const t of depths(sp, phase, field.maxDepth)) {
         const rings: Polygon[] = [];
         for (const c of traceContours(field, t, centre, (x, y, a, b) => refineToDepth(ix, field, x, y, a, b, t))) {
           const pts: Pt[] = [];
-          for (const q of c.pts) {
+          for (const q of restoreCorners(ix, c.pts, c.closed, 1.5 * field.h)) {
             const p = { x: Math.round(q.x), y: Math.round(q.y) };
             const last = pts[pts.length - 1];
             if (!last || last.x !== p.x || last.y !== p.y) pts.push(p);
@@ -246,19 +288,32 @@ export const concentric: InfillPattern = {
           if (pts.length < 3) continue;
           const len = ringLength(pts);
           if ((2 * ringArea2(pts)) / len < sp / 2) {
-            open.push(oneSide(pts));
-          } else {
-            rings.push(pts);
+            centreLines.push(oneSide(pts));
+            continue;
           }
+          // thin stretches (a ridge within sp/4: the loop's two sides closer than sp/2) keep one side
+          const thin = pts.map((p) => {
+            const i = Math.min(field.nx - 1, Math.max(0, Math.floor((p.x - field.x0) / field.h)));
+            const j = Math.min(field.ny - 1, Math.max(0, Math.floor((p.y - field.y0) / field.h)));
+            return near[j * field.nx + i] - t < sp / 4;
+          });
+          if (!thin.some((b) => b)) rings.push(pts);
+          else splitThin(pts, thin, wideParts, centreLines);
         }
         levels.push(rings);
       }
-      const out = params.connect ? linkLevels(levels, open, sp) : { lines: open, loops: levels.flat() };
-      return { ...out, printed: pathsLength(out.lines, out.loops) };
+      // with the centre lines, and (if there are any) without them: whichever is nearer the setting
+      let best: { lines: Pt[][]; loops: Polygon[]; printed: number } | null = null;
+      for (const centre of centreLines.length ? [centreLines, []] : [centreLines]) {
+        const open = wideParts.concat(centre);
+        const out = params.connect ? linkLevels(levels, open, sp) : { lines: open, loops: levels.flat() };
+        const printed = pathsLength(out.lines, out.loops);
+        if (!best || Math.abs(printed - target) < Math.abs(best.printed - target)) best = { ...out, printed };
+      }
+      return best as { lines: Pt[][]; loops: Polygon[]; printed: number };
     };
     // the first candidate predicted close enough is traced; if the trace misses, all candidates are
     // ranked by prediction and the best few traced
-    const target = (params.density * geom.area) / params.lineWidth;
     const near = nearbyMax(field);
     const cands: Array<{ sp: number; phase: number; err: number }> = [];
     for (const f of SPACING_FACTORS) for (const ph of PHASES) cands.push({ sp: s * f, phase: ph, err: NaN });
