@@ -8,7 +8,7 @@ import { GcodeWriter, boxMesh, writeBoxPrint } from './synthetic-print.js';
 const near = (a: number | null, b: number, tol: number, what = '') =>
   assert.ok(a !== null && Math.abs(a - b) <= tol, `${what} ${a} is not within ${tol} of ${b}`);
 
-const SIZE: [number, number, number] = [21.6, 21.6, 4];
+const SIZE: [number, number, number] = [21.6, 21.6, 6];
 const ORIGIN: [number, number] = [50, 50];
 const mesh = boxMesh(ORIGIN[0], ORIGIN[1], 0, ORIGIN[0] + SIZE[0], ORIGIN[1] + SIZE[1], SIZE[2]);
 const OPTS = { layerHeight: 0.2, firstLayerHeight: 0.2, lineWidth: 0.4, filamentDiameter: 1.75 };
@@ -25,8 +25,8 @@ function boxGcode(extra: Partial<BoxPrintOptions> = {}, relativeE = false, marke
 test('a perfect box print: walls, solid skin, 20 % infill, nothing outside', () => {
   const report = analyzePrint(mesh, boxGcode().text(), OPTS);
   const s = report.summary;
-  assert.equal(s.layerCount, 20);
-  assert.equal(s.expectedLayerCount, 20);
+  assert.equal(s.layerCount, 30);
+  assert.equal(s.expectedLayerCount, 30);
   assert.equal(s.zMismatchCount, 0);
   near(s.firstLayerZ, 0.2, 1e-9);
   near(s.walls.minCoverage, 1, 1e-9, 'walls');
@@ -36,7 +36,9 @@ test('a perfect box print: walls, solid skin, 20 % infill, nothing outside', () 
   near(s.skin.bottom.minCoverage, 1, 0.005, 'bottom skin');
   near(s.skin.top.minCoverage, 1, 0.005, 'top skin');
   near(s.skin.bottom.areaMm2, 4 * SIZE[0] * SIZE[1], 1, 'bottom area');
+  // 20.8 %: five lines per direction in the measured 19.2 mm (see the line-grid test).
   near(s.infill.density, 0.2, 0.01, 'density');
+  // Measured on layers 9..20: 4 skin layers and 1 mm (5 layers) of margin at each end.
   assert.equal(s.infill.layersMeasured, 12);
   assert.ok(s.shift.maxMm !== null && s.shift.maxMm < 0.01, `shift ${s.shift.maxMm}`);
   assert.deepEqual(s.shift.shiftedLayers, []);
@@ -54,7 +56,7 @@ test('absolute, relative and marker-less G-code give the same analysis', () => {
   // Relative E rounds every move to 5 decimals, absolute E only the running total.
   near(r.e.extruded, a.e.extruded, 1e-5 * a.e.extruded, 'relative vs absolute');
   near(n.e.extruded, r.e.extruded, 1e-9, 'no markers');
-  assert.equal(n.layerCount, 20);
+  assert.equal(n.layerCount, 30);
   near(r.infill.density, a.infill.density!, 1e-5);
   near(n.skin.top.coverage, a.skin.top.coverage!, 1e-5);
 });
@@ -66,7 +68,7 @@ test('a line outside the part is flagged with its distance', () => {
   g.type('WALL-OUTER').travel(x, 55).line(x, 60);
   const s = analyzePrint(mesh, g.text(), OPTS).summary;
   near(s.outside.maxMm, 0.8, 0.002, 'distance');
-  assert.equal(s.outside.worstLayer, 19);
+  assert.equal(s.outside.worstLayer, 29);
   // A 5 mm bead of width ~0.44 lies fully outside the grown section (raster: ± one cell across its width).
   near(s.outside.areaMm2, 5 * 0.443 + Math.PI * 0.22 * 0.22, 0.3, 'area');
   // Support and skirt are allowed outside.
@@ -76,12 +78,12 @@ test('a line outside the part is flagged with its distance', () => {
 });
 
 test('missing walls, missing skin and a shifted layer are caught', () => {
-  const s = analyzePrint(mesh, boxGcode({ skipWallsOn: [7], skipSkinOn: [18], shift: { layer: 10, dx: 0.3 } }).text(), OPTS);
+  const s = analyzePrint(mesh, boxGcode({ skipWallsOn: [7], skipSkinOn: [28], shift: { layer: 10, dx: 0.3 } }).text(), OPTS);
   const sum = s.summary;
   // The shifted layer's wall is 0.5 mm from one side of the outline, more than a line width: not walled either.
   assert.deepEqual(sum.walls.layersBelowThreshold, [7, 10]);
   near(s.layers[10]!.outlineCoverage, 0.75, 0.01, 'shifted layer walls');
-  assert.equal(sum.skin.top.worstLayer, 18);
+  assert.equal(sum.skin.top.worstLayer, 28);
   assert.ok(sum.skin.top.minCoverage! < 0.2, `top coverage ${sum.skin.top.minCoverage}`);
   assert.deepEqual(sum.shift.shiftedLayers, [10]);
   near(s.layers[10]!.shift!.dx, 0.3, 0.02, 'dx');
@@ -105,12 +107,24 @@ test('infill density of hand-made line grids at known spacing', () => {
   }
 });
 
-test('layer Z errors and sampling', () => {
+test('layer Z errors, missing layers and sampling', () => {
   const text = boxGcode().text().replace('G0 Z1.2 F600', 'G0 Z1.25 F600');
   const report = analyzePrint(mesh, text, { ...OPTS, sampleEvery: 5 });
   assert.deepEqual(report.summary.zMismatchLayers, [5]);
-  assert.deepEqual(report.layers.map((l) => l.index), [0, 5, 10, 15, 19]);
-  assert.equal(report.layerZ.length, 20);
+  assert.equal(report.summary.missingLayerCount, 1);
+  near(report.summary.missingLayerZ[0]!, 1.2, 1e-9);
+  assert.deepEqual(report.layers.map((l) => l.index), [0, 5, 10, 15, 20, 25, 29]);
+  assert.equal(report.layers[1]!.zOk, false);
+  assert.equal(report.layerZ.length, 30);
+  // Drop layer 12 entirely: every later layer stays on the grid, one grid Z is missing.
+  const lines = boxGcode().text().split('\n');
+  const from = lines.indexOf(';LAYER:12');
+  const to = lines.indexOf(';LAYER:13');
+  const dropped = analyzePrint(mesh, [...lines.slice(0, from), ...lines.slice(to)].join('\n'), OPTS).summary;
+  assert.equal(dropped.layerCount, 29);
+  assert.equal(dropped.zMismatchCount, 0);
+  assert.equal(dropped.missingLayerCount, 1);
+  near(dropped.missingLayerZ[0]!, 2.6, 1e-9);
 });
 
 test('bad options are errors', () => {

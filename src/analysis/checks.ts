@@ -10,7 +10,7 @@ import { FEATURE_NAMES } from './feature-names.js';
 import { parseGcode } from './gcode-parse.js';
 import type { GcodeLayer, ParsedGcode } from './gcode-types.js';
 import type { LayerContext, LayerMeasure, ResolvedOptions } from './layer-analysis.js';
-import { measureLayer } from './layer-analysis.js';
+import { measureLayer, skinMarginLayers } from './layer-analysis.js';
 import { filamentArea, segmentLength } from './raster.js';
 import type { AnalyzeOptions, LayerReport, PrintReport, PrintSummary } from './report-types.js';
 import { SectionCache } from './section-cache.js';
@@ -24,6 +24,8 @@ const MAX_LAYER_CELLS = 16e6;
 /** Margin around the model assumed when sizing rasters (mm). */
 const RASTER_MARGIN_MM = 10;
 const MAX_LISTED = 50;
+/** Surfaces smaller than this many line widths squared do not count for the worst skin layer. */
+const MIN_SKIN_LINE_WIDTHS_SQUARED = 10;
 /** Bead-width histogram resolution (mm). */
 const WIDTH_BIN_MM = 0.001;
 /** A flow ratio outside this range is warned about. */
@@ -73,7 +75,8 @@ export function analyzeParsed(mesh: Mesh, parsed: ParsedGcode, options: AnalyzeO
     positives.push(m.outsidePositives);
     samples += m.outsideSamples;
     layers.push(layerReport(layer, m, opts, retractionsByLayer[i]!));
-    sections.dropBelow(m.sectionZ - (Math.round(opts.bottomThickness / opts.layerHeight) + 2) * opts.layerHeight);
+    const keep = Math.round(opts.bottomThickness / opts.layerHeight) + skinMarginLayers(opts) + 2;
+    sections.dropBelow(m.sectionZ - keep * opts.layerHeight);
   }
 
   const summary = summarize(parsed, layers, opts, sections, widths, positives, samples);
@@ -127,8 +130,10 @@ function cellSizeFor(mesh: Mesh, requested: number): number {
   return Math.max(requested, Math.sqrt(area / MAX_LAYER_CELLS));
 }
 
-function expectedZ(index: number, o: ResolvedOptions): number {
-  return o.firstLayerHeight + index * o.layerHeight;
+/** The nearest Z of the layer grid (firstLayerHeight, then every layerHeight) and its grid index. */
+function gridZ(z: number, o: ResolvedOptions): [number, number] {
+  const k = Math.max(0, Math.round((z - o.firstLayerHeight) / o.layerHeight));
+  return [o.firstLayerHeight + k * o.layerHeight, k];
 }
 
 /** Layers whose mid-height lies below the model top: the first at firstLayerHeight/2, then every layerHeight. */
@@ -161,7 +166,7 @@ function travelLength(layer: GcodeLayer): number {
 const orNull = (v: number) => (Number.isFinite(v) ? v : null);
 
 function layerReport(layer: GcodeLayer, m: LayerMeasure, o: ResolvedOptions, retractions: number): LayerReport {
-  const ez = expectedZ(layer.index, o);
+  const [ez] = gridZ(layer.z, o);
   const shiftMm = m.shift ? Math.hypot(m.shift.dx, m.shift.dy) : null;
   return {
     index: layer.index,
@@ -192,7 +197,10 @@ function layerReport(layer: GcodeLayer, m: LayerMeasure, o: ResolvedOptions, ret
   };
 }
 
-/** Skin summary over layers with an exposed surface of at least a line width squared. */
+/**
+ * Skin summary: coverage weighted by surface area over all layers; the worst layer among those whose surface is
+ * at least minArea (slivers of a fraction of a mm² that no slicer fills would otherwise always be the worst).
+ */
 function skinSummary(layers: LayerReport[], pick: (l: LayerReport) => { areaMm2: number; coverage: number | null },
   minArea: number) {
   let area = 0;
@@ -201,9 +209,10 @@ function skinSummary(layers: LayerReport[], pick: (l: LayerReport) => { areaMm2:
   let worst: number | null = null;
   for (const l of layers) {
     const s = pick(l);
-    if (s.coverage === null || s.areaMm2 < minArea) continue;
+    if (s.coverage === null) continue;
     area += s.areaMm2;
     coveredArea += s.areaMm2 * s.coverage;
+    if (s.areaMm2 < minArea) continue;
     if (min === null || s.coverage < min) {
       min = s.coverage;
       worst = l.index;
@@ -218,11 +227,23 @@ function summarize(
 ): PrintSummary {
   const zMismatch: number[] = [];
   let zMismatchCount = 0;
+  const onGrid = new Set<number>();
   for (const l of parsed.layers) {
-    if (Math.abs(l.z - expectedZ(l.index, o)) > o.zTolerance) {
+    const [z, k] = gridZ(l.z, o);
+    if (Math.abs(l.z - z) > o.zTolerance) {
       zMismatchCount++;
       if (zMismatch.length < MAX_LISTED) zMismatch.push(l.index);
+    } else {
+      onGrid.add(k);
     }
+  }
+  const expectedCount = expectedLayerCount(sections.zMax, o);
+  const missing: number[] = [];
+  let missingCount = 0;
+  for (let k = 0; k < expectedCount; k++) {
+    if (onGrid.has(k)) continue;
+    missingCount++;
+    if (missing.length < MAX_LISTED) missing.push(o.firstLayerHeight + k * o.layerHeight);
   }
 
   let wallLen = 0, wallCovered = 0;
@@ -298,10 +319,12 @@ function summarize(
   for (let i = 0; i < parsed.preamble.extrusions.count; i++) preamble += segmentLength(parsed.preamble.extrusions, i);
 
   const widthMedian = widths.quantile(0.5);
-  const minSkinArea = o.lineWidth * o.lineWidth;
+  const minSkinArea = MIN_SKIN_LINE_WIDTHS_SQUARED * o.lineWidth * o.lineWidth;
   return {
     layerCount: parsed.layers.length,
-    expectedLayerCount: expectedLayerCount(sections.zMax, o),
+    expectedLayerCount: expectedCount,
+    missingLayerZ: missing,
+    missingLayerCount: missingCount,
     firstLayerZ: parsed.layers.length > 0 ? parsed.layers[0]!.z : null,
     zMismatchLayers: zMismatch,
     zMismatchCount,
@@ -362,7 +385,9 @@ function collectWarnings(parsed: ParsedGcode, s: PrintSummary, sections: Section
   if (!parsed.hasTypeMarkers) w.push('no ;TYPE: markers: infill density counts every extrusion in the infill region');
   if (parsed.unknownTypes.length > 0) w.push(`unknown ;TYPE: names treated as part material: ${parsed.unknownTypes.join(', ')}`);
   if (parsed.e.mode === 'mixed') w.push('E switches between absolute and relative mode while extruding');
-  if (sections.gapsClosed > 0) w.push(`open mesh: ${sections.gapsClosed} gaps in sections closed`);
+  if (sections.gapsClosed > 0 || sections.chainsDropped > 0) {
+    w.push(`open mesh: ${sections.gapsClosed} gaps in sections closed, ${sections.chainsDropped} open runs left out`);
+  }
   if (Math.abs(sections.zMin) > o.zTolerance && sections.zMax > sections.zMin) {
     w.push(`the mesh is not on the bed (lowest Z ${sections.zMin.toFixed(3)} mm)`);
   }

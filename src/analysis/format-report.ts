@@ -10,7 +10,9 @@ export function formatReport(report: PrintReport): string {
   const lines: string[] = [];
   lines.push(
     `layers: ${s.layerCount} printed, ${s.expectedLayerCount} expected; first at ${mm(s.firstLayerZ)}; ` +
-      `off-grid Z: ${s.zMismatchCount}${s.zMismatchCount > 0 ? ` (${list(s.zMismatchLayers)})` : ''}`,
+      `off-grid Z: ${s.zMismatchCount}${s.zMismatchCount > 0 ? ` (layers ${list(s.zMismatchLayers)})` : ''}; ` +
+      `missing: ${s.missingLayerCount}` +
+      (s.missingLayerCount > 0 ? ` (Z ${s.missingLayerZ.map((z) => z.toFixed(2)).join(', ')})` : ''),
   );
   lines.push(`analysed layers: ${s.analysedLayers} (cell ${s.cellSizeMm.toFixed(3)} mm)`);
   lines.push(

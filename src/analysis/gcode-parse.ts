@@ -462,8 +462,10 @@ class GcodeParserState implements GcodeParser {
     this.raw.pushRetraction(RetractionKind.Retract, amount, this.lineNo, this.block);
   }
 
+  /** Positive E without XY motion: a prime when a retraction is pending, else a stationary purge. */
   private prime(amount: number): void {
     this.primed += amount;
+    if (this.pending <= BALANCE_TOLERANCE_MM) return;
     this.pending -= amount;
     this.primes++;
     this.raw.pushRetraction(RetractionKind.Prime, amount, this.lineNo, this.block);

@@ -3,37 +3,37 @@
  * block it was written in: a block starts at each layer marker, or (without markers) whenever extrusion continues
  * at a new Z.
  */
-import { GrowableF32, GrowableF64, GrowableU32, GrowableU8 } from './growable.js';
+import { growableF32, growableF64, growableU32, growableU8 } from './growable.js';
 
 export class RawRecords {
   readonly ext = {
-    x0: new GrowableF32(4096),
-    y0: new GrowableF32(4096),
-    x1: new GrowableF32(4096),
-    y1: new GrowableF32(4096),
-    z: new GrowableF32(4096),
-    e: new GrowableF32(4096),
-    feedrate: new GrowableF32(4096),
-    feature: new GrowableU8(4096),
-    block: new GrowableU32(4096),
+    x0: growableF32(4096),
+    y0: growableF32(4096),
+    x1: growableF32(4096),
+    y1: growableF32(4096),
+    z: growableF32(4096),
+    e: growableF32(4096),
+    feedrate: growableF32(4096),
+    feature: growableU8(4096),
+    block: growableU32(4096),
   };
   readonly travel = {
-    x0: new GrowableF32(4096),
-    y0: new GrowableF32(4096),
-    z0: new GrowableF32(4096),
-    x1: new GrowableF32(4096),
-    y1: new GrowableF32(4096),
-    z1: new GrowableF32(4096),
-    block: new GrowableU32(4096),
+    x0: growableF32(4096),
+    y0: growableF32(4096),
+    z0: growableF32(4096),
+    x1: growableF32(4096),
+    y1: growableF32(4096),
+    z1: growableF32(4096),
+    block: growableU32(4096),
   };
   readonly retraction = {
-    kind: new GrowableU8(256),
-    amount: new GrowableF32(256),
-    line: new GrowableU32(256),
-    block: new GrowableU32(256),
+    kind: growableU8(256),
+    amount: growableF32(256),
+    line: growableU32(256),
+    block: growableU32(256),
   };
   /** Marker value per block (NaN for blocks not opened by a marker). */
-  readonly blockMarker = new GrowableF64(256);
+  readonly blockMarker = growableF64(256);
   /** Blocks with an id below this come before the first layer marker; Infinity when no marker was seen. */
   firstMarkerBlock = Infinity;
 

@@ -31,7 +31,10 @@ export interface TravelTable {
 /** Kinds of entries in a RetractionTable. */
 export const RetractionKind = { Retract: 0, Prime: 1, FirmwareRetract: 2, FirmwarePrime: 3 } as const;
 
-/** Retractions (negative E) and primes (positive E without XY motion), and G10/G11 firmware retractions. */
+/**
+ * Retractions (negative E), primes (positive E without XY motion while a retraction is pending), and G10/G11
+ * firmware retractions.
+ */
 export interface RetractionTable {
   count: number;
   kind: Uint8Array;
@@ -69,7 +72,7 @@ export interface ETotals {
   extruded: number;
   /** Sum of retraction lengths (negative E). */
   retracted: number;
-  /** Sum of primes (positive E without XY motion). */
+  /** Sum of positive E without XY motion: primes after retractions and stationary purges. */
   primed: number;
   /** Net filament: extruded + primed - retracted. */
   net: number;

@@ -68,6 +68,11 @@ export interface LayerMeasure {
   partLengthMm: number;
 }
 
+/** Layers beyond the skin thickness that the infill region keeps away from top and bottom surfaces. */
+export function skinMarginLayers(o: ResolvedOptions): number {
+  return Math.ceil(o.skinMargin / o.layerHeight - 1e-9);
+}
+
 /** Layer height used to turn E into width: the measured thickness when plausible, else the nominal one. */
 export function effectiveThickness(layer: GcodeLayer, o: ResolvedOptions): number {
   const nominal = layer.index === 0 ? o.firstLayerHeight : o.layerHeight;
@@ -147,16 +152,20 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
     result.outlineCoverage = result.outlineLengthMm > 0 ? 0 : NaN;
   }
 
-  const skin = skinRegions(
-    section.spans,
-    neighbourSpans(ctx, sectionZ, +1, Math.round(o.topThickness / o.layerHeight)),
-    neighbourSpans(ctx, sectionZ, -1, Math.round(o.bottomThickness / o.layerHeight)),
-  );
+  const nTop = Math.round(o.topThickness / o.layerHeight);
+  const nBottom = Math.round(o.bottomThickness / o.layerHeight);
+  const extra = skinMarginLayers(o);
+  const above = neighbourSpans(ctx, sectionZ, +1, nTop + extra);
+  const below = neighbourSpans(ctx, sectionZ, -1, nBottom + extra);
+  const skin = skinRegions(section.spans, above.slice(0, nTop), below.slice(0, nBottom));
   const edge = ctx.cell;
   [result.topAreaMm2, result.topCoverage] = surfaceCoverage(skin.top, edge, grid, material);
   [result.bottomAreaMm2, result.bottomCoverage] = surfaceCoverage(skin.bottom, edge, grid, material);
 
-  measureInfill(result, t, grid, widths, h, section.spans, spansBoolean(skin.top, skin.bottom, 'union'), ctx);
+  // The infill region also keeps skinMargin (in layers) away from skin above and below: slicers add solid or
+  // supporting lines there (more top layers, skin edge support).
+  const near = skinRegions(section.spans, above, below);
+  measureInfill(result, t, grid, widths, h, section.spans, spansBoolean(near.top, near.bottom, 'union'), ctx);
   return result;
 }
 

@@ -104,13 +104,13 @@ export function stampCapsule(
 
 /**
  * The bitmap grown by about r (mm): a superset of every cell whose centre is within r of a set cell's centre,
- * larger by at most r/4. Discs are stamped only at boundary cells, and at most one per square of side r/8 (with
- * the radius grown by that square's diagonal), so the cost follows the outline length, not the area.
+ * larger by at most r·√2/4. Discs are stamped only at boundary cells, and at most one per square of side r/4
+ * (with the radius grown by that square's diagonal), so the cost follows the outline length, not the area.
  */
 export function dilateBitmap(bitmap: Uint8Array, grid: Grid, r: number): Uint8Array {
   const out = bitmap.slice();
   const { cols, rows, cell } = grid;
-  const block = Math.max(1, Math.floor(r / 8 / cell));
+  const block = Math.max(1, Math.floor(r / 4 / cell));
   const radius = r + block * cell * Math.SQRT2;
   const bCols = Math.ceil(cols / block);
   const stamped = new Uint8Array(bCols * Math.ceil(rows / block));

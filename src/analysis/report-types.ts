@@ -25,8 +25,8 @@ export interface AnalyzeOptions {
   /** A layer whose Z is off the expected grid by more than this is reported (mm), default 0.005. */
   zTolerance?: number;
   /**
-   * The infill region keeps this far from the model's top and bottom surfaces (mm; default 1), and a line width
-   * from the solid infill (SKIN) the G-code prints.
+   * The infill region keeps this far (mm; default 1) from the model's skin — sideways, and in Z beyond the skin
+   * thickness — and a line width from the solid infill (SKIN) the G-code prints.
    */
   skinMargin?: number;
   /** A layer with outline coverage below this is listed as missing walls; default 0.95. */
@@ -46,7 +46,7 @@ export interface LayerReport {
   index: number;
   z: number;
   thickness: number;
-  /** firstLayerHeight + index × layerHeight. */
+  /** The nearest Z of the layer grid (firstLayerHeight, then every layerHeight), and whether Z is on it. */
   expectedZ: number;
   zOk: boolean;
   /** The `;LAYER:` marker merged into this layer, if any. */
@@ -86,9 +86,12 @@ export interface PrintSummary {
   /** Layers a slicer needs for the model's height with the given first and other layer heights. */
   expectedLayerCount: number;
   firstLayerZ: number | null;
-  /** Indices of layers whose Z is off the expected grid (first 50). */
+  /** Indices of printed layers whose Z is off the layer grid (first 50). */
   zMismatchLayers: number[];
   zMismatchCount: number;
+  /** Grid Z values up to the model's top with no printed layer (first 50). */
+  missingLayerZ: number[];
+  missingLayerCount: number;
   analysedLayers: number;
   walls: {
     /** Outline-length-weighted coverage over analysed layers. */

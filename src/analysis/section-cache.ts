@@ -26,8 +26,9 @@ const VERTEX_NUDGE_MM = 1e-4;
 export class SectionCache {
   private readonly sectioner: Sectioner;
   private readonly byKey = new Map<number, CachedSection>();
-  /** Total gap-closing joins over the sections computed, for warnings about open meshes. */
+  /** Gap-closing joins and dropped open runs over the sections computed, for warnings about open meshes. */
   gapsClosed = 0;
+  chainsDropped = 0;
 
   constructor(
     mesh: Mesh,
@@ -51,6 +52,7 @@ export class SectionCache {
       const ambiguous = this.sectioner.touchesVertex(z, VERTEX_TOLERANCE_MM);
       const segments = this.sectioner.section(ambiguous ? z - VERTEX_NUDGE_MM : z);
       this.gapsClosed += segments.gapsClosed;
+      this.chainsDropped += segments.chainsDropped;
       let above: CachedSection['above'] = null;
       if (ambiguous) {
         const up = this.sectioner.section(z + VERTEX_NUDGE_MM);

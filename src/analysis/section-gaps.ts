@@ -1,8 +1,9 @@
 /**
  * Closing the gaps of an open mesh's section. Segments are chained end-to-start (points matched at 0.1 µm, or in a
- * neighbouring 0.1 µm cell); each
- * chain that does not close on itself is then joined from its last point to the nearest free chain start (its
- * own start included), greedily. The added segments are marked synthetic. Afterwards every chain is a loop, so a
+ * neighbouring 0.1 µm cell). Chains that do not close on themselves are then joined end to start, nearest pairs
+ * first, where the gap is at most MAX_JOIN_MM (the added segments are marked synthetic). A run of chains that
+ * still does not close is closed on itself when its gap is small next to its length (a wall with a hole), and
+ * dropped otherwise (a stray flap of surface, as slicers drop them). Afterwards every chain is a loop, so a
  * winding-number fill cannot leak along a scanline through a hole in the mesh.
  */
 
@@ -20,6 +21,8 @@ export interface SectionSegments {
    * rounding at T-junctions and non-manifold edges).
    */
   gapsClosed: number;
+  /** Open runs of surface that could not be closed and were left out. */
+  chainsDropped: number;
 }
 
 const KEYS_PER_MM = 1e4;
@@ -27,8 +30,12 @@ const KEY_OFFSET = 2 ** 25;
 const KEY_SPAN = 2 ** 26;
 /** Joins shorter than this (mm) are not counted as gaps. */
 const GAP_REPORT_MM = 1e-3;
-/** Above this many open chains, each open chain is closed on itself instead of matched (keeps the cost linear). */
+/** Above this many open chains, chains are only closed on themselves (keeps the cost linear). */
 const MAX_MATCHED_CHAINS = 4000;
+/** Chain ends farther apart than this (mm) are not joined. */
+const MAX_JOIN_MM = 2;
+/** An open run is closed on itself when its gap is at most this fraction of its length, else dropped. */
+const MAX_SELF_CLOSE_RATIO = 0.25;
 
 function pointKey(x: number, y: number): number {
   return (Math.round(x * KEYS_PER_MM) + KEY_OFFSET) * KEY_SPAN + (Math.round(y * KEYS_PER_MM) + KEY_OFFSET);
@@ -80,32 +87,60 @@ export function closeGaps(seg: SectionSegments): SectionSegments {
     heads.push(i);
     tails.push(t);
   }
-  if (heads.length === 0) return { ...seg, gapsClosed: 0 };
+  if (heads.length === 0) return { ...seg, gapsClosed: 0, chainsDropped: 0 };
 
   const k = heads.length;
-  const joinTo = new Int32Array(k);
-  if (k > MAX_MATCHED_CHAINS) {
-    for (let c = 0; c < k; c++) joinTo[c] = c;
-  } else {
-    const used = new Uint8Array(k);
+  const endX = (c: number) => seg.x1[tails[c]!]!;
+  const endY = (c: number) => seg.y1[tails[c]!]!;
+  const startX = (c: number) => seg.x0[heads[c]!]!;
+  const startY = (c: number) => seg.y0[heads[c]!]!;
+  const joinTo = new Int32Array(k).fill(-1);
+  const joinedFrom = new Int32Array(k).fill(-1);
+  const join = (c: number, h: number) => {
+    joinTo[c] = h;
+    joinedFrom[h] = c;
+  };
+  if (k <= MAX_MATCHED_CHAINS) {
+    const pairs: number[][] = [];
     for (let c = 0; c < k; c++) {
-      const tx = seg.x1[tails[c]!]!;
-      const ty = seg.y1[tails[c]!]!;
-      let best = -1;
-      let bestD = Infinity;
       for (let h = 0; h < k; h++) {
-        if (used[h] !== 0) continue;
-        const d = Math.hypot(seg.x0[heads[h]!]! - tx, seg.y0[heads[h]!]! - ty);
-        if (d < bestD) {
-          bestD = d;
-          best = h;
-        }
+        const d = Math.hypot(startX(h) - endX(c), startY(h) - endY(c));
+        if (d <= MAX_JOIN_MM) pairs.push([d, c, h]);
       }
-      used[best] = 1;
-      joinTo[c] = best;
+    }
+    pairs.sort((a, b) => a[0]! - b[0]!);
+    for (const [, c, h] of pairs) if (joinTo[c!] === -1 && joinedFrom[h!] === -1) join(c!, h!);
+  }
+  // Runs of chains that are still open: from a chain nothing joins into, along the joins, to one that joins on to
+  // nothing. Close each on itself or drop it.
+  const dropped = new Uint8Array(k);
+  let chainsDropped = 0;
+  for (let c = 0; c < k; c++) {
+    if (joinedFrom[c] !== -1) continue;
+    let last = c;
+    let length = 0;
+    for (let r = c; r !== -1; r = joinTo[r]!) {
+      last = r;
+      length += chainLength(seg, heads[r]!, succ);
+      if (joinTo[r] !== -1) length += Math.hypot(startX(joinTo[r]!) - endX(r), startY(joinTo[r]!) - endY(r));
+    }
+    const gap = Math.hypot(startX(c) - endX(last), startY(c) - endY(last));
+    if (gap <= MAX_SELF_CLOSE_RATIO * length) {
+      join(last, c);
+    } else {
+      chainsDropped++;
+      for (let r = c; r !== -1; r = joinTo[r]!) dropped[r] = 1;
     }
   }
-  const total = n + k;
+
+  const droppedSegment = new Uint8Array(n);
+  for (let c = 0; c < k; c++) {
+    if (dropped[c] === 0) continue;
+    for (let i = heads[c]!, guard = 0; i !== -1 && guard <= n; i = succ[i]!, guard++) droppedSegment[i] = 1;
+  }
+  let total = 0;
+  for (let i = 0; i < n; i++) if (droppedSegment[i] === 0) total++;
+  for (let c = 0; c < k; c++) if (dropped[c] === 0) total++;
   const out: SectionSegments = {
     count: total,
     x0: new Float64Array(total),
@@ -114,23 +149,37 @@ export function closeGaps(seg: SectionSegments): SectionSegments {
     y1: new Float64Array(total),
     synthetic: new Uint8Array(total),
     gapsClosed: 0,
+    chainsDropped,
   };
-  out.x0.set(seg.x0.subarray(0, n));
-  out.y0.set(seg.y0.subarray(0, n));
-  out.x1.set(seg.x1.subarray(0, n));
-  out.y1.set(seg.y1.subarray(0, n));
-  out.synthetic.set(seg.synthetic.subarray(0, n));
-  let w = n;
+  let w = 0;
+  for (let i = 0; i < n; i++) {
+    if (droppedSegment[i] !== 0) continue;
+    out.x0[w] = seg.x0[i]!;
+    out.y0[w] = seg.y0[i]!;
+    out.x1[w] = seg.x1[i]!;
+    out.y1[w] = seg.y1[i]!;
+    out.synthetic[w] = seg.synthetic[i]!;
+    w++;
+  }
   for (let c = 0; c < k; c++) {
-    const t = tails[c]!;
-    const h = heads[joinTo[c]!]!;
-    out.x0[w] = seg.x1[t]!;
-    out.y0[w] = seg.y1[t]!;
-    out.x1[w] = seg.x0[h]!;
-    out.y1[w] = seg.y0[h]!;
+    if (dropped[c] !== 0) continue;
+    const h = joinTo[c]!;
+    out.x0[w] = endX(c);
+    out.y0[w] = endY(c);
+    out.x1[w] = startX(h);
+    out.y1[w] = startY(h);
     out.synthetic[w] = 1;
     if (Math.hypot(out.x1[w]! - out.x0[w]!, out.y1[w]! - out.y0[w]!) > GAP_REPORT_MM) out.gapsClosed++;
     w++;
   }
   return out;
+}
+
+/** Length of the chain starting at segment `head`. */
+function chainLength(seg: SectionSegments, head: number, succ: Int32Array): number {
+  let sum = 0;
+  for (let i = head, guard = 0; i !== -1 && guard <= seg.count; i = succ[i]!, guard++) {
+    sum += Math.hypot(seg.x1[i]! - seg.x0[i]!, seg.y1[i]! - seg.y0[i]!);
+  }
+  return sum;
 }

@@ -58,6 +58,18 @@ test('an open mesh is closed, not leaked along scanlines', () => {
   assert.equal(spansContain(spans, 5, 2), false, 'the gap between the boxes stays empty');
 });
 
+test('a stray open flap is left out rather than joined across the part', () => {
+  // A closed box plus one lone triangle inside it: the triangle's cut is an open segment far from anything.
+  const box = boxMesh(0, 0, 0, 10, 10, 2);
+  const flap = {
+    positions: new Float32Array([2, 3, 0, 8, 3, 0, 5, 3, 2]),
+    indices: new Uint32Array([0, 1, 2]),
+  };
+  const s = meshSection(mergeMeshes(box, flap), 1);
+  assert.equal(s.chainsDropped, 1);
+  near(spansArea(sectionSpans(s, 0.05)), 100, 0.5, 'box area');
+});
+
 test('span booleans, growing and shrinking', () => {
   const a = sectionSpans(meshSection(boxMesh(0, 0, 0, 10, 10, 1), 0.5), 0.05);
   const b = sectionSpans(meshSection(boxMesh(5, 5, 0, 15, 15, 1), 0.5), 0.05);

@@ -15,7 +15,7 @@ import { newBitmap } from './grid.js';
 import type { SectionSegments } from './section-gaps.js';
 import { closeGaps } from './section-gaps.js';
 import type { Spans } from './spans.js';
-import { SpansBuilder, emptySpans, spansToBitmap } from './spans.js';
+import { SpansBuilder, emptySpans, sortByKey, spansToBitmap } from './spans.js';
 
 export type { SectionSegments } from './section-gaps.js';
 
@@ -170,7 +170,7 @@ export function sectionSpans(seg: SectionSegments, cell: number): Spans {
   for (let r = 0; r < rows; r++) {
     const a = counts[r]!;
     const b = counts[r + 1]!;
-    sortCrossings(crossX, crossW, a, b);
+    sortByKey(crossX, crossW, a, b - 1);
     let w = 0;
     let from = 0;
     for (let k = a; k < b; k++) {
@@ -181,29 +181,6 @@ export function sectionSpans(seg: SectionSegments, cell: number): Spans {
     }
   }
   return out.finish();
-}
-
-function sortCrossings(x: Float64Array, w: Int8Array, a: number, b: number): void {
-  if (b - a <= 32) {
-    for (let i = a + 1; i < b; i++) {
-      const kx = x[i]!;
-      const kw = w[i]!;
-      let j = i - 1;
-      while (j >= a && x[j]! > kx) {
-        x[j + 1] = x[j]!;
-        w[j + 1] = w[j]!;
-        j--;
-      }
-      x[j + 1] = kx;
-      w[j + 1] = kw;
-    }
-    return;
-  }
-  const order = Array.from({ length: b - a }, (_, i) => a + i).sort((p, q) => x[p]! - x[q]!);
-  const cx = Float64Array.from(order, (i) => x[i]!);
-  const cw = Int8Array.from(order, (i) => w[i]!);
-  x.set(cx, a);
-  w.set(cw, a);
 }
 
 function checkMesh(mesh: Mesh): void {
@@ -248,6 +225,7 @@ class SegmentCollector {
       y1: this.y1.slice(0, n),
       synthetic: new Uint8Array(n),
       gapsClosed: 0,
+      chainsDropped: 0,
     };
   }
 }

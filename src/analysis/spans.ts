@@ -3,7 +3,7 @@
  * x-intervals in mm. Exact in x, sampled in y; booleans, growing and shrinking are cheap row-wise operations.
  */
 import type { Grid } from './grid.js';
-import { columnsOf } from './grid.js';
+import { columnsOf, countRange } from './grid.js';
 
 export interface Spans {
   cell: number;
@@ -201,10 +201,17 @@ export function spansToBitmap(s: Spans, grid: Grid, bitmap: Uint8Array, value = 
 export function bitmapToSpans(bitmap: Uint8Array, grid: Grid): Spans {
   const c = grid.cell;
   const out = new SpansBuilder(c, grid.j0, grid.rows);
+  const wordsPerRow = grid.cols % 4 === 0 && bitmap.byteOffset % 4 === 0 ? grid.cols >>> 2 : 0;
+  const words = wordsPerRow > 0 ? new Uint32Array(bitmap.buffer, bitmap.byteOffset, bitmap.length >>> 2) : null;
   for (let r = 0; r < grid.rows; r++) {
     const base = r * grid.cols;
     let i = 0;
     while (i < grid.cols) {
+      // Skip empty cells four at a time where the row is word-aligned.
+      if (words && (i & 3) === 0 && words[(base + i) >>> 2] === 0) {
+        i += 4;
+        continue;
+      }
       if (bitmap[base + i] === 0) {
         i++;
         continue;
@@ -227,10 +234,9 @@ export function countInSpans(s: Spans, grid: Grid, bitmap: Uint8Array): [number,
     const base = r * grid.cols;
     for (let q = s.start[rs]!; q < s.start[rs + 1]!; q++) {
       const [first, last] = columnsOf(grid, s.xs[2 * q]!, s.xs[2 * q + 1]!);
-      for (let i = first; i <= last; i++) {
-        total++;
-        if (bitmap[base + i] !== 0) set++;
-      }
+      if (last < first) continue;
+      total += last - first + 1;
+      set += countRange(bitmap, base + first, base + last + 1);
     }
   }
   return [total, set];
@@ -278,12 +284,15 @@ class RowScratch {
   }
 }
 
-/** Sorts parallel arrays a[0..n), b[0..n) by `a`: quicksort on ranges, insertion sort below 16 elements. */
+/** Sorts parallel arrays a[0..n), b[0..n) by `a`. */
 function sortIntervals(a: Float64Array, b: Float64Array, n: number): void {
-  sortRange(a, b, 0, n - 1);
+  sortByKey(a, b, 0, n - 1);
 }
 
-function sortRange(a: Float64Array, b: Float64Array, lo: number, hi: number): void {
+/**
+ * Sorts a[lo..hi] ascending, moving b's entries along: quicksort on ranges, insertion sort below 16 elements.
+ */
+export function sortByKey(a: Float64Array, b: Float64Array | Int8Array, lo: number, hi: number): void {
   while (hi - lo >= 16) {
     const pivot = a[(lo + hi) >>> 1]!;
     let i = lo;
@@ -304,10 +313,10 @@ function sortRange(a: Float64Array, b: Float64Array, lo: number, hi: number): vo
     }
     // Recurse into the smaller part, loop on the larger.
     if (j - lo < hi - i) {
-      sortRange(a, b, lo, j);
+      sortByKey(a, b, lo, j);
       lo = i;
     } else {
-      sortRange(a, b, i, hi);
+      sortByKey(a, b, i, hi);
       hi = j;
     }
   }

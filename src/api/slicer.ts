@@ -7,6 +7,7 @@ import { mergeObjects, placeOnBed, prepareMesh, toMeshObjects } from '../mesh/in
 import type { Mesh, MeshReport } from '../mesh/types.js';
 import { runPipeline, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
+import { customGenerator, type CustomInfillSpec } from '../pipeline/custom-infill.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey, type Settings, type SliceOptions } from '../settings/schema.js';
 import { checkKey, resolveConfig, validateValue, type Config } from '../settings/resolve.js';
 
@@ -95,10 +96,35 @@ export interface Slicer extends Accessors {}
 export class Slicer {
   #options: SliceOptions;
   #config: Config;
+  #custom: CustomInfillSpec | undefined;
 
-  constructor(options: SliceOptions = {}) {
-    this.#config = resolveConfig(options);
-    this.#options = { ...options };
+  /**
+   * @param options settings (any subset), `printer` and `filament` preset names, and optionally
+   *   `customInfill`: an IceSL-style infiller `{ name, shader?: glslText, image?: pngBytes, params? }`.
+   */
+  constructor(options: SliceOptions & { customInfill?: CustomInfillSpec } = {}) {
+    const { customInfill, ...settings } = options;
+    this.#config = resolveConfig(settings);
+    this.#options = { ...settings };
+    if (customInfill) this.setCustomInfill(customInfill);
+  }
+
+  /**
+   * Use a custom infiller (IceSL format: a GLSL `cellular()` shader or a cells.png image) instead
+   * of the built-in pattern; null goes back to `infillPattern`. Compiled now, so errors show here.
+   */
+  setCustomInfill(spec: CustomInfillSpec | null): this {
+    if (spec) {
+      customGenerator(spec, this.#config);
+      this.#custom = { ...spec, params: spec.params ? { ...spec.params } : undefined };
+    } else {
+      this.#custom = undefined;
+    }
+    return this;
+  }
+
+  getCustomInfill(): CustomInfillSpec | undefined {
+    return this.#custom;
   }
 
   /** The resolved, frozen configuration (presets and defaults applied). */
@@ -169,6 +195,7 @@ export class Slicer {
       signal: opts.signal,
       objectCenter: [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2],
       height: b.max[2],
+      custom: this.#custom,
     });
     const stats: SliceStats = {
       layers: run.layers,

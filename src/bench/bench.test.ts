@@ -84,6 +84,23 @@ test('runBench with a stub CLI: times every model, reports failures, runs every 
   }
 });
 
+test('runBench repeats round-robin across jobs and reports the median', async () => {
+  const f = fixture();
+  try {
+    const options = parseBenchArgs(['--models', f.models, '--strata-cli', f.cli, '--no-peers', '--only', '3DBenchy', '--repeat', '2']);
+    const log: string[] = [];
+    const report = await runBench(options, { workDir: f.work, log: (l) => log.push(l.trim()) });
+    assert.equal(report.models[0]!.strata.samples.length, 2);
+    assert.equal(report.patterns[0]!.strata.samples.length, 2);
+    const patternRuns = log.filter((l) => l.includes('--infill-pattern'));
+    assert.equal(patternRuns.length, 2 * PATTERN_IDS.length);
+    // Round 1 of every pattern comes before round 2 of any.
+    assert.ok(patternRuns.slice(0, PATTERN_IDS.length).every((l) => l.includes('run 1/2')), patternRuns.join('\n'));
+  } finally {
+    rmSync(f.root, { recursive: true, force: true });
+  }
+});
+
 test('runBench without a built CLI reports it instead of crashing', async () => {
   const f = fixture();
   try {

@@ -33,6 +33,15 @@ export function defaultStrataCli(): string {
   return fileURLToPath(new URL('../cli/main.js', import.meta.url));
 }
 
+/** One slicer invocation to measure. */
+interface Job {
+  label: string;
+  command: string;
+  args: string[];
+}
+
+const isJob = (x: Job | SlicerStats): x is Job => 'command' in x;
+
 const safeName = (s: string) => s.replace(/[^A-Za-z0-9._-]+/g, '_');
 
 /** The model the infill-pattern section uses: 3DBenchy as STL if selected, else its 3MF, else none. */
@@ -71,57 +80,66 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
 
   const measure = (command: string, args: readonly string[]) => measureCommand(command, args, { method: memoryMethod, timeoutMs, env, ...(ctx.signal ? { signal: ctx.signal } : {}) });
 
-  /** Runs one slicer `repeat` times (stopping at the first failure) and folds the results. */
-  const repeatRuns = async (label: string, run: (i: number) => Promise<Measurement>): Promise<SlicerStats> => {
-    const runs: Measurement[] = [];
-    for (let i = 0; i < options.repeat; i++) {
-      if (ctx.signal?.aborted) return notRun('skipped', 'interrupted');
-      const m = await run(i);
-      runs.push(m);
-      ctx.log(`  ${label} run ${i + 1}/${options.repeat}: ${m.wallSeconds.toFixed(2)} s${m.exitCode === 0 ? '' : ' (failed)'}`);
-      if (m.exitCode !== 0 || m.timedOut) break;
+  /**
+   * Runs each job `repeat` times, round-robin (one run of every job per round, so a change in machine load
+   * during the run hits every slicer alike), dropping a job after its first failure; folds each job's runs.
+   * An entry that is already a SlicerStats (missing, unsupported) is passed through.
+   */
+  const runRounds = async <K extends string>(jobs: Record<K, Job | SlicerStats>): Promise<Record<K, SlicerStats>> => {
+    const keys = Object.keys(jobs) as K[];
+    const runs = new Map<K, Measurement[]>();
+    const active = new Set(keys.filter((k) => isJob(jobs[k])));
+    for (const k of active) runs.set(k, []);
+    for (let round = 1; round <= options.repeat && active.size > 0; round++) {
+      for (const k of [...active]) {
+        if (ctx.signal?.aborted) break;
+        const job = jobs[k] as Job;
+        const m = await measure(job.command, job.args);
+        runs.get(k)!.push(m);
+        ctx.log(`  ${job.label} run ${round}/${options.repeat}: ${m.wallSeconds.toFixed(2)} s${m.exitCode === 0 && !m.timedOut ? '' : ' (failed)'}`);
+        if (m.exitCode !== 0 || m.timedOut) active.delete(k);
+      }
     }
-    return summarize(runs);
+    const out = {} as Record<K, SlicerStats>;
+    for (const k of keys) {
+      const job: Job | SlicerStats = jobs[k];
+      if (!isJob(job)) out[k] = job;
+      else out[k] = runs.get(k)!.length > 0 ? summarize(runs.get(k)!) : notRun('skipped', 'interrupted');
+    }
+    return out;
   };
 
-  const strataRun = (model: BenchModel, tag: string, extra: readonly string[]) => {
-    if (!strataBuilt) return Promise.resolve(notRun('missing', 'strata CLI not built'));
+  const strataJob = (model: BenchModel, tag: string, extra: readonly string[]): Job | SlicerStats => {
+    if (!strataBuilt) return notRun('missing', 'strata CLI not built');
     const out = join(outDir, `${safeName(model.name)}.${tag}.gcode`);
     const args = [strataPath, 'slice', model.path, '-o', out, '--threads', String(threads), ...extra];
-    return repeatRuns(['Strata', ...extra].join(' '), () => measure(process.execPath, args));
+    return { label: ['Strata', ...extra].join(' '), command: process.execPath, args };
+  };
+  const curaJob = (model: BenchModel): Job | SlicerStats => {
+    if (!curaExe || !curaDefs) return notRun('missing');
+    if (!peerReads('cura', model.path)) return notRun('unsupported', 'CuraEngine reads STL only');
+    return { label: 'CuraEngine', ...curaCommand(curaExe, curaDefs, model.path, join(outDir, `${safeName(model.name)}.cura.gcode`), threads) };
+  };
+  const prusaJob = (model: BenchModel): Job | SlicerStats => {
+    if (!prusaExe) return notRun('missing');
+    if (!peerReads('prusa', model.path)) return notRun('unsupported');
+    return { label: 'PrusaSlicer', ...prusaCommand(prusaExe, prusaData, model.path, join(outDir, `${safeName(model.name)}.prusa.gcode`)) };
   };
 
   const rows: ModelRow[] = [];
   for (const [index, model] of models.entries()) {
     ctx.log(`[${index + 1}/${models.length}] ${model.name}`);
-    const strata = await strataRun(model, 'strata', []);
-    let cura: SlicerStats = notRun('missing');
-    if (curaExe && curaDefs) {
-      if (!peerReads('cura', model.path)) cura = notRun('unsupported', 'CuraEngine reads STL only');
-      else {
-        const { command, args } = curaCommand(curaExe, curaDefs, model.path, join(outDir, `${safeName(model.name)}.cura.gcode`), threads);
-        cura = await repeatRuns('CuraEngine', () => measure(command, args));
-      }
-    }
-    let prusa: SlicerStats = notRun('missing');
-    if (prusaExe) {
-      if (!peerReads('prusa', model.path)) prusa = notRun('unsupported');
-      else {
-        const { command, args } = prusaCommand(prusaExe, prusaData, model.path, join(outDir, `${safeName(model.name)}.prusa.gcode`));
-        prusa = await repeatRuns('PrusaSlicer', () => measure(command, args));
-      }
-    }
-    rows.push({ model: model.name, triangles: model.triangles, strata, cura, prusa });
+    const r = await runRounds({ strata: strataJob(model, 'strata', []), cura: curaJob(model), prusa: prusaJob(model) });
+    rows.push({ model: model.name, triangles: model.triangles, ...r });
   }
 
   const benchy = options.patterns && strataBuilt ? patternModel(models) : null;
   let patterns: PatternRow[] = [];
   if (benchy) {
     ctx.log(`infill patterns on ${benchy.name}`);
-    const raw: Omit<PatternRow, 'relativeToGrid'>[] = [];
-    for (const pattern of PATTERN_IDS) {
-      raw.push({ pattern, strata: await strataRun(benchy, `infill-${pattern}`, ['--infill-pattern', pattern]) });
-    }
+    const jobs = Object.fromEntries(PATTERN_IDS.map((p) => [p, strataJob(benchy, `infill-${p}`, ['--infill-pattern', p])])) as Record<string, Job | SlicerStats>;
+    const results = await runRounds(jobs);
+    const raw = PATTERN_IDS.map((pattern) => ({ pattern, strata: results[pattern]! }));
     patterns = relativeToGrid(raw);
   } else if (options.patterns && strataBuilt) {
     notes.push('infill-pattern section skipped: 3DBenchy is not among the selected models');

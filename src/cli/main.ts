@@ -14,6 +14,10 @@ import { SCHEMA, SETTING_KEYS, type SliceOptions } from '../settings/schema.js';
 import { parseArgs, kebab, type ParsedArgs } from './args.js';
 import { progressBar } from './progress.js';
 import { layerToSvg } from '../preview/svg.js';
+import { PATTERN_IDS } from '../infill/types.js';
+import { loadInfiller, parseInfillParams } from '../shader/index.js';
+import { iceslInfillersDirs, listInfillers, readInfillersFolder, shippedInfillersDir } from '../shader/node-folder.js';
+import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 
 const HELP = `strata ${VERSION}: a fast FFF slicer
 
@@ -22,6 +26,7 @@ Usage:
   strata info MODEL...                             triangles, size, volume, open and non-manifold edges
   strata preview MODEL [--layer N] [-o layer.svg]   slice and draw one layer as SVG (paths by feature,
                                                    --travel adds travels, --width PX sets the size)
+  strata infillers [DIR...]                         list custom infillers (IceSL layout) and their parameters
   strata presets                                   list printer and filament presets
   strata settings                                  list every setting with its flag, unit, default and range
 
@@ -34,6 +39,11 @@ Slice options:
   --no-center            keep the models' own XY coordinates instead of centring them on the bed
   --threads N            worker threads (default: one per core); output is identical for any N
   -q, --quiet            no progress bar or summary
+  --infill-shader FILE   custom infill from a GLSL cellular() shader (IceSL infiller format)
+  --infill-image FILE    custom infill from a cells.png image (with --infill-image-pixel-size MM)
+  --infill-pattern NAME  a built-in pattern, or an infiller folder NAME/shader.glsl|cells.png
+                         (shipped infillers/, ~/.icesl/icesl-infillers, or --infillers DIR)
+  --infill-param N=V     set a shader's ui_ parameter; repeatable
   --<setting> VALUE      every setting has a flag, e.g. --layer-height 0.2 --infill-density 20
                          --infill-pattern gyroid --wall-count 3 (see: strata settings)
 `;
@@ -59,13 +69,67 @@ function readConfigFile(path: string): Record<string, unknown> {
   return obj as Record<string, unknown>;
 }
 
-function optionsFrom(args: ParsedArgs): SliceOptions {
+function infillerDirs(args: ParsedArgs): string[] {
+  const extra = typeof args.flags.infillers === 'string' ? args.flags.infillers.split('\n') : [];
+  return [...extra, shippedInfillersDir(), ...iceslInfillersDirs()];
+}
+
+/** A custom infiller named by --infill-shader, --infill-image, or an --infill-pattern that is not built in. */
+async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>): Promise<CustomInfillSpec | undefined> {
+  let spec: CustomInfillSpec | undefined;
+  const shader = args.flags['infill-shader'];
+  const image = args.flags['infill-image'];
+  if (typeof shader === 'string' && typeof image === 'string') throw new StrataError('BAD_SETTING', '--infill-shader and --infill-image exclude each other');
+  if (typeof shader === 'string') spec = { name: basename(shader), shader: new TextDecoder().decode(readInput(shader)) };
+  else if (typeof image === 'string') spec = { name: basename(image), image: readInput(image) };
+  else if (typeof opts.infillPattern === 'string' && !(PATTERN_IDS as readonly string[]).includes(opts.infillPattern)) {
+    const name = opts.infillPattern;
+    for (const dir of infillerDirs(args)) {
+      const found = (await readInfillersFolder(dir)).find((f) => f.name === name);
+      if (found) {
+        spec = found;
+        break;
+      }
+    }
+    if (!spec) {
+      throw new StrataError('BAD_SETTING', `infillPattern "${name}" is neither a built-in pattern (${PATTERN_IDS.join(', ')}) nor an infiller folder (see strata infillers)`);
+    }
+    delete opts.infillPattern;
+  }
+  const assignments = typeof args.flags['infill-param'] === 'string' ? args.flags['infill-param'].split('\n') : [];
+  if (!spec) {
+    if (assignments.length) throw new StrataError('BAD_SETTING', '--infill-param needs a custom infiller (--infill-shader, --infill-image or an infiller --infill-pattern)');
+    return undefined;
+  }
+  if (assignments.length) spec.params = parseInfillParams(loadInfiller(spec).params, assignments);
+  return spec;
+}
+
+async function optionsFrom(args: ParsedArgs): Promise<SliceOptions & { customInfill?: CustomInfillSpec }> {
   const opts: Record<string, unknown> = {};
   for (const f of args.configFiles) Object.assign(opts, readConfigFile(f));
   if (args.printer) opts.printer = args.printer;
   if (args.filament) opts.filament = args.filament;
   Object.assign(opts, args.settings);
-  return opts as SliceOptions;
+  const customInfill = await customInfillFrom(args, opts);
+  return { ...(opts as SliceOptions), ...(customInfill ? { customInfill } : {}) };
+}
+
+async function cmdInfillers(args: ParsedArgs): Promise<void> {
+  const dirs = args.positional.length ? args.positional : infillerDirs(args);
+  for (const dir of dirs) {
+    const list = await listInfillers(dir);
+    if (!list.length) continue;
+    process.stdout.write(`${dir}:\n`);
+    for (const inf of list) {
+      if (inf.error) {
+        process.stdout.write(`  ${inf.name}  (cannot load: ${inf.error})\n`);
+        continue;
+      }
+      process.stdout.write(`  ${inf.name}  ${inf.kind}${inf.numPasses && inf.numPasses > 1 ? `, ${inf.numPasses} passes` : ''}\n`);
+      for (const p of inf.params ?? []) process.stdout.write(`      --infill-param ${p.name}=${p.default}  (${p.type})${p.tooltip ? '  ' + p.tooltip : ''}\n`);
+    }
+  }
 }
 
 function formatDuration(s: number): string {
@@ -75,7 +139,7 @@ function formatDuration(s: number): string {
 
 async function cmdSlice(args: ParsedArgs): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'slice needs at least one model file (see strata --help)');
-  const slicer = new Slicer(optionsFrom(args));
+  const slicer = new Slicer(await optionsFrom(args));
   const inputs = args.positional.map((p) => loadModelBytes(readInput(p), p === '-' ? undefined : basename(p)));
   const first = args.positional[0];
   const out = args.output ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
@@ -138,7 +202,7 @@ function cmdInfo(args: ParsedArgs): void {
 
 async function cmdPreview(args: ParsedArgs): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'preview needs a model file');
-  const slicer = new Slicer(optionsFrom(args));
+  const slicer = new Slicer(await optionsFrom(args));
   const inputs = args.positional.map((p) => loadModelBytes(readInput(p), p === '-' ? undefined : basename(p)));
   const { plan } = await slicer.slicePlan(inputs.flat());
   const n = plan.layers.length;
@@ -201,6 +265,9 @@ export async function main(argv: readonly string[]): Promise<number> {
       case 'preview':
         await cmdPreview(args);
         return 0;
+      case 'infillers':
+        await cmdInfillers(args);
+        return 0;
       case 'presets':
         cmdPresets();
         return 0;
@@ -208,7 +275,7 @@ export async function main(argv: readonly string[]): Promise<number> {
         cmdSettings();
         return 0;
       default:
-        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, preview, presets, settings)`);
+        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, preview, infillers, presets, settings)`);
     }
   } catch (e) {
     if (e instanceof StrataError) {

@@ -8,9 +8,12 @@
  *  3. fit: nodes outside this layer's region go, branches crossing the boundary are cut, and each loose
  *     subtree or root is grounded again on the nearest boundary point (snapped when the wall only moved a
  *     little, otherwise joined to it by a new segment, which stays inside by construction);
- *  4. grow: this layer's newly needed support (the top skin directly above) is sampled on a grid anchored
- *     at the pattern origin, points nearest the walls first; every point farther than the support radius
- *     from the forest is joined to whichever is nearer, the forest or the boundary (a new tree).
+ *  4. grow: this layer's newly needed support (the top skin directly above) is sampled on a grid of half
+ *     the support radius anchored at the bed origin; samples within the radius of the walls are held by
+ *     the walls. The rest are taken farthest from the walls first, and each one farther than the radius
+ *     from the forest is joined to whichever is nearer, the forest or the boundary (a new tree): the first
+ *     ones make trunks, later ones branch off them. Every point of the skin is then within 1.35 radii of
+ *     a branch or the wall.
  * All plain arrays; one forest value per layer is handed to the next.
  */
 import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
@@ -30,7 +33,7 @@ export interface ForestParams {
   pruneDist: number;
   /** How far a node may move per layer when straightening, µm. */
   straightenDist: number;
-  /** Sampling grid anchor, µm. */
+  /** Sampling grid anchor, µm (the bed origin: the same grid for every layer and object). */
   origin: Pt;
 }
 
@@ -250,14 +253,16 @@ function samplePoints(areas: readonly ExPolygon[], g: number, origin: Pt): Pt[] 
 /** Add branches so every point of `need` (inside the region) is within the support radius of the forest. */
 export function grow(f: Forest, need: readonly ExPolygon[], ix: RegionIndex, fp: ForestParams): void {
   if (need.length === 0) return;
-  // sample at half the radius; a sample within R − g/√2 of a branch keeps every point of its cell within R
+  // sample at half the radius: every sample within R of a branch keeps every point within R + g/√2 ≈ 1.35 R
   const g = fp.radius / 2;
-  const reach = fp.radius - g / Math.SQRT2;
+  const reach = fp.radius;
+  // the walls hold up whatever lies within the radius of them; farthest samples first, so long trunks
+  // come first and later samples branch off them
   const samples = samplePoints(need, g, fp.origin)
     .filter((p) => pointInside(ix, p.x, p.y))
     .map((p) => ({ p, b: nearestBoundary(ix, p.x, p.y, FAR_UM) }))
-    .filter((s) => s.b !== null) as Array<{ p: Pt; b: NonNullable<ReturnType<typeof nearestBoundary>> }>;
-  samples.sort((a, b) => a.b.dist - b.b.dist || a.p.y - b.p.y || a.p.x - b.p.x);
+    .filter((s) => s.b !== null && s.b.dist > reach) as Array<{ p: Pt; b: NonNullable<ReturnType<typeof nearestBoundary>> }>;
+  samples.sort((a, b) => b.b.dist - a.b.dist || a.p.y - b.p.y || a.p.x - b.p.x);
   const grid = new EdgeGrid(f, fp.radius);
   const scratch: Hit[] = [];
   for (const { p, b } of samples) {

@@ -12,6 +12,7 @@ import { allSkin, coveredByAll, skinAreas } from '../regions/skin-areas.js';
 import { computeWalls } from '../regions/walls.js';
 import type { Config } from '../settings/resolve.js';
 import { slicePrepared, type PreparedMesh } from '../slice/index.js';
+import type { CustomInfillGenerator } from '../shader/index.js';
 import type { LayerSection, LayerZ } from '../slice/types.js';
 
 /** Per-layer regions, as a whole-model infill pass (lightning) needs them. */
@@ -52,8 +53,11 @@ export function lineWidthUm(cfg: Config, layerIndex: number): number {
   return Math.round((layerIndex === 0 ? cfg.firstLayerLineWidthMm : cfg.lineWidthMm) * UM_PER_MM);
 }
 
-/** Compute paths (or only regions) for layers [job.from, job.to). */
-export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob): RangeResult {
+/**
+ * Compute paths (or only regions) for layers [job.from, job.to); `custom` replaces the built-in
+ * pattern with a custom infiller.
+ */
+export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, custom?: CustomInfillGenerator): RangeResult {
   const n = job.layers.length;
   const lo = Math.max(0, job.from - cfg.bottomLayers);
   const hi = Math.min(n, job.to + cfg.topLayers);
@@ -99,12 +103,11 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob): Ra
       let infillLines: Pt[][] = [];
       let infillLoops: Polygon[] = [];
       if (sparse.length) {
-        const res = generateInfill(
-          cfg.infillPattern as PatternId,
-          { layerIndex: i, z: section.z, layerHeight: section.height, region: sparse },
-          { ...job.infillParams, lineWidth: w },
-          job.prepared ? job.prepared[i] : undefined,
-        );
+        const layerInput = { layerIndex: i, z: section.z, layerHeight: section.height, region: sparse };
+        const layerParams = { ...job.infillParams, lineWidth: w };
+        const res = custom
+          ? custom(layerInput, layerParams)
+          : generateInfill(cfg.infillPattern as PatternId, layerInput, layerParams, job.prepared ? job.prepared[i] : undefined);
         infillLines = res.lines;
         infillLoops = res.loops;
       }

@@ -20,6 +20,8 @@ import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from 
 import type { LayerZ } from '../slice/types.js';
 import { createPool, type LayerPool } from '../workers/pool.js';
 import { computeRange, lineWidthUm, type RangeJob, type RangeResult } from './layer-work.js';
+import { customGenerator, type CustomInfillSpec } from './custom-infill.js';
+import type { CustomInfillGenerator } from '../shader/index.js';
 
 export const VERSION = '0.1.0';
 
@@ -40,6 +42,8 @@ export interface RunOptions {
   objectCenter: [number, number];
   /** Model height, mm. */
   height: number;
+  /** Custom infill (shader or image) replacing the built-in pattern. */
+  custom?: CustomInfillSpec;
 }
 
 export interface RunResult {
@@ -80,19 +84,19 @@ function ranges(n: number, threads: number): Array<[number, number]> {
   return out;
 }
 
-async function runJobs(jobs: RangeJob[], prepared: () => PreparedMesh, cfg: Config, pool: LayerPool | null, onDone: (j: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]> {
+async function runJobs(jobs: RangeJob[], prepared: () => PreparedMesh, custom: CustomInfillGenerator | undefined, cfg: Config, pool: LayerPool | null, onDone: (j: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]> {
   if (!pool) {
     const out: RangeResult[] = [];
     for (const j of jobs) {
       checkAbort(signal);
-      out.push(computeRange(prepared(), cfg, j));
+      out.push(computeRange(prepared(), cfg, j, custom));
       onDone(j);
       // let the event loop breathe (progress, cancellation)
       await new Promise((r) => setTimeout(r, 0));
     }
     return out;
   }
-  return pool.run(jobs, (j) => computeRange(prepared(), cfg, j), onDone, signal);
+  return pool.run(jobs, (j) => computeRange(prepared(), cfg, j, custom), onDone, signal);
 }
 
 export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Promise<RunResult> {
@@ -104,13 +108,15 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   const pattern = PATTERNS[cfg.infillPattern as PatternId];
   const split = ranges(layers.length, opts.threads);
   // N threads: the calling thread and N-1 workers
-  const pool = opts.threads > 1 ? await createPool(Math.min(opts.threads, split.length) - 1, mesh, cfg) : null;
+  const workers = Math.min(opts.threads, split.length) - 1;
+  const pool = workers > 0 ? await createPool(workers, mesh, cfg, opts.custom) : null;
   let sliceable: PreparedMesh | null = null;
   const local = () => (sliceable ??= prepareForSlicing(mesh));
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
     let prepared: unknown[] | undefined;
-    const passes = pattern.prepare && cfg.infillDensity > 0 ? 2 : 1;
+    const custom = opts.custom ? customGenerator(opts.custom, cfg) : undefined;
+    const passes = pattern.prepare && !custom && cfg.infillDensity > 0 ? 2 : 1;
     let doneLayers = 0;
     const total = layers.length * passes;
     const onDone = (j: RangeJob) => {
@@ -119,7 +125,7 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
     };
     if (passes === 2 && pattern.prepare) {
       const regionJobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: true, infillParams: params }));
-      const regionResults = await runJobs(regionJobs, local, cfg, pool, onDone, signal);
+      const regionResults = await runJobs(regionJobs, local, custom, cfg, pool, onDone, signal);
       const regions = regionResults.flatMap((r) => r.regions);
       prepared = pattern.prepare(
         {
@@ -130,7 +136,7 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
       );
     }
     const jobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: false, infillParams: params, prepared }));
-    const results = await runJobs(jobs, local, cfg, pool, onDone, signal);
+    const results = await runJobs(jobs, local, custom, cfg, pool, onDone, signal);
     const paths: LayerPaths[] = results.flatMap((r) => r.paths);
     checkAbort(signal);
 

@@ -134,6 +134,7 @@ export const SCHEMA = {
   infillPatternCentering: enm(['object', 'global'] as const, 'object', 'infill', 'Centre the pattern on each object or on the build plate.'),
   infillAngle: num(45, -180, 180, '°', 'infill', 'Base direction of the infill lines.'),
   infillOverlap: num(15, 0, 100, '%', 'infill', 'How far infill reaches into the innermost wall, % of the line width.'),
+  infillImagePixelSize: num(0.1, 0.001, 10, 'mm', 'infill', "Size of one pixel of a custom infill image (cells.png), IceSL's labeling_mm_per_pixel."),
   infillConnect: bool(true, 'infill', 'Join infill line ends along the region boundary where that avoids a travel.'),
 
   // ── speeds ───────────────────────────────────────────────────────────────────

@@ -180,7 +180,7 @@ function selectors(p: Node, out: Node[] = [], depth = 0): Node[] {
   return out;
 }
 
-function applySelector(ctx: Ctx, base: Ref, sel: Node, depth: number): Ref {
+function applySelector(ctx: Ctx, base: Ref, sel: Node): Ref {
   if (sel.type === 'field_selection') {
     const name: string = sel.selection?.identifier ?? sel.selection?.literal ?? '';
     if (base.kind === 'arr') throw ctx.error(`arrays have no field '.${short(name)}' (only .length())`);
@@ -220,7 +220,6 @@ function applySelector(ctx: Ctx, base: Ref, sel: Node, depth: number): Ref {
     const iv = indexValue(ctx, sel.expression);
     return { kind: 'lv', lv: indexInto(ctx, base.lv, iv) };
   }
-  void depth;
   throw ctx.error('unsupported selector');
 }
 
@@ -246,10 +245,10 @@ function compileRef(ctx: Ctx, node: Node, depth: number, sels?: Node[]): Ref {
   if (node.type === 'identifier') base = identifierRef(ctx, node.identifier);
   else if (node.type === 'type_specifier' && node.identifier?.type === 'identifier') {
     base = identifierRef(ctx, node.identifier.identifier);
-    for (const q of node.quantifier ?? []) base = applySelector(ctx, base, q, depth);
+    for (const q of node.quantifier ?? []) base = applySelector(ctx, base, q);
   } else if (node.type === 'group') base = compileRef(ctx, node.expression, depth + 1);
   else base = { kind: 'val', v: compileExpr(ctx, node, depth + 1) };
-  for (const s of sels ?? []) base = applySelector(ctx, base, s, depth);
+  for (const s of sels ?? []) base = applySelector(ctx, base, s);
   return base;
 }
 
@@ -609,6 +608,25 @@ export function compileExpr(ctx: Ctx, node: Node, depth = 0): Value {
       throw ctx.error('unexpected selector');
   }
   throw ctx.error(`unsupported expression (${short(String(node.type))})`);
+}
+
+/** An expression whose value is not used (statements, for-loop updates): `i++` compiles as `++i`. */
+export function compileDiscarded(ctx: Ctx, node: Node): void {
+  if (node?.type === 'postfix') {
+    const sels = selectors(node.postfix);
+    const last = sels[sels.length - 1];
+    if (last?.type === 'literal' && (last.literal === '++' || last.literal === '--')) {
+      at(ctx, node);
+      compileIncDec(ctx, node.expression, last.literal, true, sels.slice(0, -1));
+      return;
+    }
+  }
+  if (node?.type === 'binary' && node.operator?.literal === ',') {
+    compileDiscarded(ctx, node.left);
+    compileDiscarded(ctx, node.right);
+    return;
+  }
+  compileExpr(ctx, node);
 }
 
 /** A condition: bool scalar expression; returns the JS expression. */

@@ -4,11 +4,12 @@
  * names only its own generated identifiers and the math table `M` (its single parameter).
  */
 import type { GType } from './glsl-types.js';
-import { parseTypeName, size, typeName } from './glsl-types.js';
-import type { Ctx, FnParam, FnSym, ParamQualifier, VarSym } from './compiler-context.js';
+import { size, typeName } from './glsl-types.js';
+import type { Ctx, FnSym, VarSym } from './compiler-context.js';
 import { Buf, newFnCtx, short } from './compiler-context.js';
 import { compileInitializer, nodeLine, rootIdentifier, typeSpecifierType } from './compile-expr.js';
-import { arrayLength, compileStatement, declareArray, initArray } from './compile-stmt.js';
+import { arrayLength, declareArray, initArray } from './compile-stmt.js';
+import { checkRecursion, compileFunction, qualifiers, registerFunction, wrapFunction, zeroOf } from './compile-function.js';
 import type { UiParamDecl } from './preprocess.js';
 import { TABLE_KEYS } from './math-table.js';
 import { lit } from './values.js';
@@ -17,6 +18,8 @@ import { lit } from './values.js';
 type Node = any;
 
 export type UniformKind = 'pass' | 'param' | 'other';
+
+const HOST_FUNCTIONS = new Set(['density', 'nozzle_diameter', 'layer_height']);
 
 export interface UniformSlot {
   name: string;
@@ -43,11 +46,6 @@ export interface CompiledProgram {
   numPassesConst: number | undefined;
   hasNumPasses: boolean;
   usesDensity: boolean;
-}
-
-function qualifiers(node: Node): string[] {
-  const q = node?.qualifiers ?? node?.qualifier ?? [];
-  return q.map((k: Node) => (k.type === 'keyword' ? String(k.token) : String(k.type)));
 }
 
 /** Names assigned anywhere (conservatively: also every root passed to a function with out params). */
@@ -82,160 +80,17 @@ function writtenNames(program: Node[], outFns: ReadonlySet<string>): Set<string>
   return out;
 }
 
-function paramsOf(ctx: Ctx, proto: Node): { params: FnParam[]; names: (string | undefined)[] } {
-  const params: FnParam[] = [];
-  const names: (string | undefined)[] = [];
-  for (const p of proto.parameters ?? []) {
-    const spec = p.specifier;
-    const tName: string = spec?.specifier?.token ?? spec?.specifier?.identifier ?? '?';
-    if (tName === 'void' && (proto.parameters ?? []).length === 1 && !p.identifier) break;
-    const t = typeSpecifierType(ctx, spec);
-    if ((spec.quantifier && spec.quantifier.length) || (p.quantifier && p.quantifier.length)) throw ctx.error('array parameters are not supported');
-    const qs = qualifiers(p);
-    const q: ParamQualifier = qs.includes('inout') ? 'inout' : qs.includes('out') ? 'out' : 'in';
-    params.push({ t, q });
-    names.push(p.identifier?.identifier);
-  }
-  return { params, names };
-}
-
-function returnType(ctx: Ctx, proto: Node): GType {
-  const spec = proto.header.returnType.specifier;
-  const name: string = spec?.specifier?.token ?? spec?.specifier?.identifier ?? '?';
-  if (name === 'void') return { base: 'float', rows: 0, cols: 0 };
-  if (spec.quantifier && spec.quantifier.length) throw ctx.error('functions cannot return arrays');
-  return typeSpecifierType(ctx, spec);
-}
-
-function sameParams(a: FnParam[], b: FnParam[]): boolean {
-  return a.length === b.length && a.every((p, i) => p.t.base === b[i].t.base && p.t.rows === b[i].t.rows && p.t.cols === b[i].t.cols);
-}
-
-function registerFunction(ctx: Ctx, proto: Node, isDefinition: boolean): FnSym {
-  ctx.line = nodeLine(proto) ?? ctx.line;
-  const name: string = proto.header.name.identifier;
-  if (parseTypeName(name) !== undefined) throw ctx.error(`'${short(name)}' is a type name`);
-  const ret = returnType(ctx, proto);
-  const { params } = paramsOf(ctx, proto);
-  let list = ctx.functions.get(name);
-  if (list === undefined) ctx.functions.set(name, (list = []));
-  const existing = list.find((f) => sameParams(f.params, params));
-  if (existing !== undefined) {
-    if (existing.ret.rows !== ret.rows || existing.ret.base !== ret.base || existing.ret.cols !== ret.cols) {
-      throw ctx.error(`${short(name)}() is declared with two return types`);
-    }
-    if (isDefinition) {
-      if (existing.defined) throw ctx.error(`${short(name)}() is defined twice`);
-      existing.defined = true;
-      existing.line = ctx.line;
-    }
-    return existing;
-  }
-  const fn: FnSym = {
-    glslName: name,
-    jsName: ctx.id('f'),
-    ret,
-    params,
-    defined: isDefinition,
-    line: ctx.line,
-    outOffset: ret.rows === 0 ? 0 : size(ret),
-  };
-  list.push(fn);
-  return fn;
-}
-
-function zeroOf(base: string): string {
-  return base === 'bool' ? 'false' : '0';
-}
-
-function compileFunction(ctx: Ctx, node: Node, fn: FnSym, isEntry: boolean): string {
-  const fctx = newFnCtx(fn, fn.ret, false);
-  fctx.isEntry = isEntry;
-  const savedFn = ctx.fn;
-  const savedBuf = ctx.buf;
-  ctx.fn = fctx;
-  ctx.buf = new Buf();
-  ctx.pushScope();
-  try {
-    const { names } = paramsOf(ctx, node.prototype);
-    const jsParams: string[] = [];
-    fn.params.forEach((p, i) => {
-      const comps: string[] = [];
-      for (let k = 0; k < size(p.t); k++) {
-        if (p.q === 'out') comps.push(ctx.local('v', p.t.base));
-        else {
-          const n = ctx.id('v');
-          comps.push(n);
-          jsParams.push(n);
-        }
-      }
-      if (p.q !== 'in') fctx.outNames.push({ names: comps, base: p.t.base });
-      const pname = names[i];
-      if (pname !== undefined) {
-        const sym: VarSym = { kind: 'var', t: p.t, names: comps, global: false };
-        ctx.declare(pname, sym);
-      }
-    });
-    let outSize = 0;
-    for (const o of fctx.outNames) outSize += o.names.length;
-    ctx.rSize = Math.max(ctx.rSize, fn.outOffset + outSize);
-    ctx.line = fn.line;
-    ctx.emit(`if (--B < 0) m_clim(${fn.line});`);
-    ctx.pushScope();
-    for (const s of node.body.statements ?? []) compileStatement(ctx, s, 1);
-    ctx.popScope();
-    // Falling off the end: void returns; others return zeros (GLSL leaves this undefined).
-    if (fn.ret.rows === 0) {
-      let off = fn.outOffset;
-      for (const o of fctx.outNames) for (const n of o.names) ctx.emit(`R[${off++}] = ${n};`);
-    } else if (size(fn.ret) === 1) {
-      let off = fn.outOffset;
-      for (const o of fctx.outNames) for (const n of o.names) ctx.emit(`R[${off++}] = ${n};`);
-      ctx.emit(`return ${zeroOf(fn.ret.base)};`);
-    } else {
-      for (let i = 0; i < size(fn.ret); i++) ctx.emit(`R[${i}] = 0;`);
-      let off = fn.outOffset;
-      for (const o of fctx.outNames) for (const n of o.names) ctx.emit(`R[${off++}] = ${n};`);
-    }
-    return wrapFunction(fn.jsName, jsParams, fctx.locals, ctx.buf.lines);
-  } finally {
-    ctx.popScope();
-    ctx.fn = savedFn;
-    ctx.buf = savedBuf;
-  }
-}
-
-function wrapFunction(name: string, params: string[], locals: { name: string; base: string }[], lines: string[]): string {
-  const decl = locals.length > 0 ? `let ${locals.map((l) => `${l.name} = ${zeroOf(l.base)}`).join(', ')};\n` : '';
-  return `function ${name}(${params.join(', ')}) {\n${decl}${lines.join('\n')}\n}`;
-}
-
-function checkRecursion(ctx: Ctx): void {
-  const byJs = new Map<string, FnSym>();
-  for (const list of ctx.functions.values()) for (const f of list) byJs.set(f.jsName, f);
-  const state = new Map<string, number>(); // 1 = on stack, 2 = done
-  const visit = (f: string, path: string[]): void => {
-    state.set(f, 1);
-    for (const g of ctx.calls.get(f) ?? []) {
-      const s = state.get(g);
-      if (s === 1) {
-        const fn = byJs.get(g);
-        throw ctx.error(`recursion is not allowed in GLSL (${short(fn?.glslName ?? '?')}() calls itself)`, fn?.line);
-      }
-      if (s === undefined) visit(g, [...path, g]);
-    }
-    state.set(f, 2);
-  };
-  for (const f of ctx.calls.keys()) if (!state.has(f)) visit(f, [f]);
-}
-
 /** Compile a parsed program into the body of the shader factory. */
 export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions): CompiledProgram {
   // Functions first (signatures only), so call order in the source does not matter.
   const fnNodes: { node: Node; fn: FnSym }[] = [];
   for (const st of program) {
     if (st.type === 'function') fnNodes.push({ node: st, fn: registerFunction(ctx, st.prototype, true) });
-    else if (st.type === 'declaration_statement' && st.declaration?.type === 'function_prototype') registerFunction(ctx, st.declaration, false);
+    else if (st.type === 'declaration_statement' && st.declaration?.type === 'function_prototype') {
+      // A prototype of a host built-in (`float density(vec3 p);`) only declares what the host provides.
+      if (HOST_FUNCTIONS.has(st.declaration.header?.name?.identifier)) continue;
+      registerFunction(ctx, st.declaration, false);
+    }
   }
   const outFns = new Set<string>();
   for (const [name, list] of ctx.functions) if (list.some((f) => f.params.some((p) => p.q !== 'in'))) outFns.add(name);

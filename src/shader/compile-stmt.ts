@@ -7,7 +7,7 @@ import type { GType } from './glsl-types.js';
 import { size, typeName } from './glsl-types.js';
 import type { ArraySym, Ctx, Value, VarSym } from './compiler-context.js';
 import { isVoid, short } from './compiler-context.js';
-import { callArgs, compileCondition, compileExpr, compileInitializer, nodeLine, typeSpecifierType } from './compile-expr.js';
+import { callArgs, compileCondition, compileDiscarded, compileExpr, compileInitializer, nodeLine, typeSpecifierType } from './compile-expr.js';
 import { convert, lit } from './values.js';
 import { implicitlyConvertible } from './glsl-types.js';
 
@@ -137,7 +137,7 @@ function compileDeclaratorList(ctx: Ctx, decl: Node): void {
 }
 
 function budgetCheck(ctx: Ctx): string {
-  return `if (--B < 0) m_lim(${ctx.line});`;
+  return `if (--B < 0) m_lim(${ctx.line | 0});`;
 }
 
 function compileBody(ctx: Ctx, node: Node, depth: number): void {
@@ -170,8 +170,8 @@ function compileFor(ctx: Ctx, node: Node, depth: number): void {
       if (init.type === 'declarator_list') compileDeclaratorList(ctx, init);
       else if (init.type === 'declaration_statement') compileStatement(ctx, init, depth + 1);
       else if (init.type === 'expression_statement') {
-        if (init.expression) compileExpr(ctx, init.expression);
-      } else compileExpr(ctx, init);
+        if (init.expression) compileDiscarded(ctx, init.expression);
+      } else compileDiscarded(ctx, init);
     }
     const label = ctx.id('L');
     const inner = ctx.id('L');
@@ -185,7 +185,7 @@ function compileFor(ctx: Ctx, node: Node, depth: number): void {
     compileBody(ctx, node.body, depth);
     ctx.fn.loops.pop();
     ctx.emit('}');
-    if (node.operation !== null && node.operation !== undefined) compileExpr(ctx, node.operation);
+    if (node.operation !== null && node.operation !== undefined) compileDiscarded(ctx, node.operation);
     ctx.emit('}');
   } finally {
     ctx.popScope();
@@ -291,7 +291,7 @@ export function compileStatement(ctx: Ctx, node: Node, depth = 0): void {
       }
       return;
     case 'expression_statement':
-      if (node.expression !== null && node.expression !== undefined) compileExpr(ctx, node.expression);
+      if (node.expression !== null && node.expression !== undefined) compileDiscarded(ctx, node.expression);
       return;
     case 'declaration_statement': {
       const d = node.declaration;

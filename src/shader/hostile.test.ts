@@ -94,6 +94,11 @@ test('pathological sources fail cleanly', { timeout: 20_000 }, () => {
   for (let i = 1; i <= 40; i++) bomb.push(`#define A${i} A${i - 1} A${i - 1}`);
   bomb.push('vec4 cellular(vec3 w) { float x = 1.0; return vec4(A40); }');
   assert.throws(() => compileShader(bomb.join('\n')), isError('BAD_SHADER', /macro expansion is too large/));
+  const quiet = ['#define E0(x)'];
+  for (let i = 1; i <= 40; i++) quiet.push(`#define E${i}(x) E${i - 1}(x) E${i - 1}(x)`);
+  quiet.push('E40(1)', 'vec4 cellular(vec3 w) { return vec4(1.0); }');
+  assert.throws(() => compileShader(quiet.join('\n')), isError('BAD_SHADER', /macro expansion is too complex/));
+  assert.throws(() => compileShader(`uniform float ui_x = ${' '.repeat(200_000)}x\nvec4 cellular(vec3 w) { return vec4(1.0); }`), isError('BAD_SHADER', /default value/));
   assert.throws(() => compileShader('float a[100000000];\nvec4 cellular(vec3 w) { return vec4(a[0]); }'), isError('BAD_SHADER', /arrays are too large/));
   assert.throws(() => compileShader('x'.repeat(300_000)), isError('BAD_SHADER', /larger than/));
   assert.throws(() => compileShader(`/* ${'c'.repeat(50_000)} */ ${'float x;'.repeat(14_000)}`), isError('BAD_SHADER', /characters of code/));

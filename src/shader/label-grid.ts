@@ -21,9 +21,9 @@ export interface LabelGrid {
   /** Label per vertex (index j * nx + i); NaN where the vertex is outside the sampled area. */
   labels: Float64Array;
   /** Crossing x (mm) on horizontal edge (i,j)-(i+1,j), index j * (nx - 1) + i; NaN if none. */
-  hx: Float64Array;
+  hx: Float32Array;
   /** Crossing y (mm) on vertical edge (i,j)-(i,j+1), index j * nx + i; NaN if none. */
-  vy: Float64Array;
+  vy: Float32Array;
 }
 
 export interface GridOptions {
@@ -101,8 +101,9 @@ export function sampleLabelGrid(label: LabelFn, regionGrown: readonly ExPolygon[
       }
     }
   }
-  const hx = new Float64Array((nx - 1) * ny).fill(NaN);
-  const vy = new Float64Array(nx * (ny - 1)).fill(NaN);
+  // Float32 is ample for crossings (0.03 µm at 300 mm) and halves the memory of big grids.
+  const hx = new Float32Array((nx - 1) * ny).fill(NaN);
+  const vy = new Float32Array(nx * (ny - 1)).fill(NaN);
   const tol = opts.tolerance;
   for (let j = 0; j < ny; j++) {
     const y = y0 + j * h;

@@ -27,7 +27,7 @@ export interface ExtractOptions {
   simplify?: number;
   /** Clipped pieces shorter than this are dropped, mm (default nozzleDiameter / 2). */
   minLength?: number;
-  /** Largest number of grid samples per pass (default 16 million). */
+  /** Largest number of grid samples per pass (default 8 million, about 160 MB of grid). */
   maxSamples?: number;
   /** Where the nozzle is before the first path, µm (default: the region's lower-left corner). */
   start?: Pt;
@@ -67,7 +67,7 @@ function resolve(opts: ExtractOptions): Resolved {
     tolerance: Math.max(1e-6, Math.min(opts.tolerance ?? 0.0005, h / 4)),
     simplify: opts.simplify ?? 0.005,
     minLength: opts.minLength ?? nozzle / 2,
-    maxSamples: opts.maxSamples ?? 16_000_000,
+    maxSamples: opts.maxSamples ?? 8_000_000,
     phase: opts.phase ?? 0.2718,
   };
 }
@@ -79,20 +79,30 @@ function resolve(opts: ExtractOptions): Resolved {
 export function labelBoundaries(label: LabelFn, region: readonly ExPolygon[], opts: ExtractOptions = {}): Polyline[] {
   if (region.length === 0) return [];
   const r = resolve(opts);
-  const b = boundsOf(region);
-  if (!(b.maxX > b.minX && b.maxY > b.minY)) return [];
-  const marginMm = 2 * r.h;
-  const grown = offset(region, Math.ceil(marginMm * 1000));
-  const bounds = { minX: b.minX / 1000 - marginMm, minY: b.minY / 1000 - marginMm, maxX: b.maxX / 1000 + marginMm, maxY: b.maxY / 1000 + marginMm };
-  const grid = sampleLabelGrid(label, grown, bounds, { h: r.h, tolerance: r.tolerance, margin: marginMm, maxSamples: r.maxSamples, phase: r.phase });
-  const mmPaths = linkCrossings(grid, label);
-  const lines: Polyline[] = [];
-  for (const p of mmPaths) {
-    const q = toMicrons(simplifyMmPath(p, r.simplify));
-    if (q.length >= 2) lines.push(q);
+  const all = boundsOf(region);
+  if (!(all.maxX > all.minX && all.maxY > all.minY)) return [];
+  // Islands are sampled one by one, so far-apart parts do not make one huge grid.
+  const out: Polyline[] = [];
+  let budget = r.maxSamples;
+  for (const island of region) {
+    const part = [island];
+    const b = boundsOf(part);
+    if (!(b.maxX > b.minX && b.maxY > b.minY)) continue;
+    const marginMm = 2 * r.h;
+    const grown = offset(part, Math.ceil(marginMm * 1000));
+    const bounds = { minX: b.minX / 1000 - marginMm, minY: b.minY / 1000 - marginMm, maxX: b.maxX / 1000 + marginMm, maxY: b.maxY / 1000 + marginMm };
+    const grid = sampleLabelGrid(label, grown, bounds, { h: r.h, tolerance: r.tolerance, margin: marginMm, maxSamples: budget, phase: r.phase });
+    budget -= grid.nx * grid.ny;
+    const lines: Polyline[] = [];
+    for (const p of linkCrossings(grid, label)) {
+      const q = toMicrons(simplifyMmPath(p, r.simplify));
+      if (q.length >= 2) lines.push(q);
+    }
+    for (const p of clipLines(lines, part)) {
+      if (p.length >= 2 && polylineLength(p) >= r.minLength * 1000 && !alongBoundary(p, part)) out.push(p);
+    }
   }
-  const clipped = clipLines(lines, region as ExPolygon[]).filter((p) => p.length >= 2 && polylineLength(p) >= r.minLength * 1000 && !alongBoundary(p, region));
-  return orderPaths(clipped, opts.start ?? { x: b.minX, y: b.minY });
+  return orderPaths(out, opts.start ?? { x: all.minX, y: all.minY });
 }
 
 /** Squared distance from (px, py) to segment ab, µm². */

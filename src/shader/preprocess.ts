@@ -45,12 +45,16 @@ interface CondFrame {
 /** Largest preprocessed output accepted, characters (guards against macro bombs). */
 const MAX_OUTPUT = 200_000;
 const MAX_DEPTH = 64;
+/** Most macro invocations expanded in one shader. */
+const MAX_MACRO_STEPS = 200_000;
 /** Lines a function-like macro invocation may span. */
 const MAX_JOINED_LINES = 32;
 
 interface ExpandState {
   macros: Map<string, Macro>;
   size: number;
+  /** Macro invocations so far (bounds expansions that produce little text). */
+  steps: number;
   fileName: string;
   line: number;
 }
@@ -174,6 +178,7 @@ function expand(src: string, hidden: readonly string[], st: ExpandState): string
         out += name;
         continue;
       }
+      if (++st.steps > MAX_MACRO_STEPS) throw badShader(st.fileName, st.line, 'macro expansion is too complex');
       if (m.params === undefined) {
         out += expand(m.body, [...hidden, name], st);
       } else {
@@ -222,7 +227,14 @@ function parseDefine(rest: string, fileName: string, line: number): { name: stri
   return { name, macro: { body: m[4].trim() } };
 }
 
-const UI_LINE = /^\s*uniform\s+(bool|int|float)\s+(ui_[A-Za-z0-9_]*)\s*=\s*([^;]*?)\s*;?\s*$/;
+const UI_LINE = /^\s*uniform\s+(bool|int|float)\s+(ui_[A-Za-z0-9_]*)\s*=(.*)$/s;
+
+/** The value text of a ui_ line: everything after '=', without a trailing ';'. */
+function uiValueText(rest: string): string | undefined {
+  let t = rest.trim();
+  if (t.endsWith(';')) t = t.slice(0, -1).trim();
+  return t.includes(';') ? undefined : t;
+}
 
 function parseUiDefault(type: UiParamType, text: string): number | boolean | undefined {
   const t = text.trim();
@@ -247,19 +259,28 @@ export function preprocessGlsl(source: string, fileName: string, predefined: Rea
   macros.set('__VERSION__', { body: '430' });
   macros.set('GL_core_profile', { body: '1' });
   for (const [k, v] of predefined) macros.set(k, { body: v });
-  const st: ExpandState = { macros, size: 0, fileName, line: 0 };
+  const st: ExpandState = { macros, size: 0, steps: 0, fileName, line: 0 };
   const stack: CondFrame[] = [];
   const uiParams: UiParamDecl[] = [];
   const active = () => stack.length === 0 || stack[stack.length - 1].active;
 
   // Line continuations: join, keep the line count.
   for (let i = 0; i < lines.length; i++) {
+    if (!lines[i].endsWith('\\')) continue;
+    const parts = [lines[i].slice(0, -1)];
     let j = i;
-    while (lines[i].endsWith('\\') && j + 1 < lines.length) {
+    while (j + 1 < lines.length) {
       j++;
-      lines[i] = lines[i].slice(0, -1) + lines[j];
+      const next = lines[j];
       lines[j] = '';
+      if (next.endsWith('\\')) parts.push(next.slice(0, -1));
+      else {
+        parts.push(next);
+        break;
+      }
     }
+    lines[i] = parts.join('');
+    i = j;
   }
 
   for (let i = 0; i < lines.length; i++) {
@@ -329,10 +350,11 @@ export function preprocessGlsl(source: string, fileName: string, predefined: Rea
     if (!active()) continue;
 
     const ui = UI_LINE.exec(raw);
-    if (ui) {
+    const uiText = ui ? uiValueText(ui[3]) : undefined;
+    if (ui && uiText !== undefined) {
       const type = ui[1] as UiParamType;
-      const value = parseUiDefault(type, expand(ui[3], [], st));
-      if (value === undefined) throw badShader(fileName, lineNo, `${ui[2]}: default value '${ui[3].slice(0, 40)}' is not a ${type}`);
+      const value = parseUiDefault(type, expand(uiText, [], st));
+      if (value === undefined) throw badShader(fileName, lineNo, `${ui[2]}: default value '${uiText.slice(0, 40)}' is not a ${type}`);
       let tooltip = (lineComments.get(i) ?? '').trim();
       if (tooltip.endsWith(';')) tooltip = tooltip.slice(0, -1).trim();
       uiParams.push({ name: ui[2], type, defaultValue: value, tooltip, line: lineNo });

@@ -8,6 +8,7 @@ import type { Mesh } from '../mesh/types.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
 import type { Config } from '../settings/resolve.js';
 import type { FromWorker, ToWorker } from './protocol.js';
+import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 
 interface Port {
   post(msg: ToWorker): void;
@@ -67,13 +68,13 @@ export interface LayerPool {
 /** Jobs each worker holds at once, so it never waits for the busy main thread to hand out the next. */
 const IN_FLIGHT = 2;
 
-export async function createPool(size: number, mesh: Mesh, cfg: Config): Promise<LayerPool> {
+export async function createPool(size: number, mesh: Mesh, cfg: Config, custom?: CustomInfillSpec): Promise<LayerPool> {
   const shared = shareMesh(mesh);
   const ports = await Promise.all(Array.from({ length: size }, () => spawn()));
   // The run in progress: one at a time, so the ports' listeners are installed once.
   let current: { onMessage(p: Port, m: FromWorker): void; fail(e: Error): void } | null = null;
   for (const p of ports) {
-    p.post({ type: 'init', mesh: shared, cfg });
+    p.post({ type: 'init', mesh: shared, cfg, custom });
     p.onMessage((m) => current?.onMessage(p, m));
     p.onError((e) => current?.fail(e));
   }

@@ -2,9 +2,10 @@
 import type { Mesh } from '../mesh/types.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
 import type { Config } from '../settings/resolve.js';
+import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 
 export type ToWorker =
-  | { type: 'init'; mesh: Mesh; cfg: Config }
+  | { type: 'init'; mesh: Mesh; cfg: Config; custom?: CustomInfillSpec }
   | { type: 'range'; id: number; job: RangeJob };
 
 export type FromWorker =

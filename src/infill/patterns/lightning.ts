@@ -39,7 +39,7 @@ function prepareTrees(model: InfillModelInput, params: InfillParams): Polyline[]
       radius: lightningRadius(params),
       pruneDist: h * tan(LIGHTNING_OVERHANG_DEG),
       straightenDist: h * tan(LIGHTNING_STRAIGHTEN_DEG),
-      origin: params.origin,
+      origin: { x: 0, y: 0 },
     };
     if (layer.region.length === 0) {
       forest = emptyForest();

@@ -1,0 +1,33 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { generateInfill, solidFill } from './generate.js';
+import { measuredDensity } from './measure.js';
+import { PATTERN_IDS } from './types.js';
+import { TEST_SHAPES, testParams, SHAPE_CENTRE } from './test-shapes.js';
+
+test('solid fill covers the region and is one zig-zag in a convex region', () => {
+  const region = TEST_SHAPES.square();
+  const lines = solidFill(region, 45, 450, SHAPE_CENTRE);
+  assert.equal(lines.length, 1);
+  const d = measuredDensity({ lines, loops: [] }, region, 450);
+  assert.ok(d > 0.97, `${d}`);
+  assert.ok(solidFill(region, 45, 450, SHAPE_CENTRE, { connect: false }).length > 50);
+});
+
+test('output is integer micrometres, and the first path starts near the given start point', () => {
+  const region = TEST_SHAPES['disc with hole']();
+  for (const id of PATTERN_IDS) {
+    const start = { x: SHAPE_CENTRE.x + 16_000, y: SHAPE_CENTRE.y };
+    const r = generateInfill(id, { layerIndex: 2, z: 0.6, layerHeight: 0.2, region }, testParams(0.2), undefined, start);
+    for (const p of [...r.lines.flat(), ...r.loops.flat()]) assert.ok(Number.isInteger(p.x) && Number.isInteger(p.y), id);
+    const first = r.loops[0]?.[0] ?? r.lines[0][0];
+    let nearest = Infinity;
+    for (const l of r.lines) for (const q of [l[0], l[l.length - 1]]) nearest = Math.min(nearest, Math.hypot(q.x - start.x, q.y - start.y));
+    for (const l of r.loops) for (const q of l) nearest = Math.min(nearest, Math.hypot(q.x - start.x, q.y - start.y));
+    assert.ok(Math.hypot(first.x - start.x, first.y - start.y) <= nearest + 1, id);
+  }
+});
+
+test('an unknown pattern id is an error', () => {
+  assert.throws(() => generateInfill('nope' as never, { layerIndex: 0, z: 0.2, layerHeight: 0.2, region: TEST_SHAPES.square() }, testParams(0.2)));
+});

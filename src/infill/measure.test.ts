@@ -1,0 +1,38 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { extrudedArea } from './measure.js';
+import { familyCoverage, familySpacing } from './density.js';
+import { hexSide } from './patterns/hexagons.js';
+
+const W = 400;
+
+test('one line: length × width plus two half-disc caps', () => {
+  const a = extrudedArea({ lines: [[{ x: 0, y: 0 }, { x: 10_000, y: 0 }]], loops: [] }, W);
+  const expected = 10_000 * W + Math.PI * (W / 2) ** 2;
+  assert.ok(Math.abs(a - expected) / expected < 0.01, `${a} vs ${expected}`);
+});
+
+test('a crossing counts once', () => {
+  const a = extrudedArea({ lines: [[{ x: -5_000, y: 0 }, { x: 5_000, y: 0 }], [{ x: 0, y: -5_000 }, { x: 0, y: 5_000 }]], loops: [] }, W);
+  const expected = 2 * (10_000 * W + Math.PI * (W / 2) ** 2) - W * W;
+  assert.ok(Math.abs(a - expected) / expected < 0.01, `${a} vs ${expected}`);
+});
+
+test('inside a region only the inner part counts: a line on the boundary is half in', () => {
+  const region = [{ outer: [{ x: 0, y: 0 }, { x: 10_000, y: 0 }, { x: 10_000, y: 10_000 }, { x: 0, y: 10_000 }], holes: [] }];
+  const a = extrudedArea({ lines: [[{ x: 2_000, y: 0 }, { x: 8_000, y: 0 }]], loops: [] }, W, region);
+  const expected = 6_000 * (W / 2) + (Math.PI * (W / 2) ** 2) / 2; // the inner halves of the caps too
+  assert.ok(Math.abs(a - expected) / expected < 0.02, `${a} vs ${expected}`);
+});
+
+test('spacing rules invert the coverage rules', () => {
+  for (const [F, c] of [[1, 0], [2, 1], [3, 2.25], [3, 3]]) {
+    for (const d of [0.05, 0.1, 0.2, 0.4, 0.6]) {
+      const s = familySpacing(d, W, F, c);
+      assert.ok(Math.abs(familyCoverage(s, W, F, c) - d) < 1e-9);
+    }
+  }
+  // the seed's grid rule misses at 40 % (width = nozzle): 2·0.2 − 0.2² = 36 %
+  assert.ok(Math.abs(familyCoverage((W / 0.4) * 2, W, 2, 1) - 0.36) < 1e-9);
+  assert.ok(hexSide(0.2, W) > hexSide(0.4, W));
+});
