@@ -180,6 +180,7 @@ function layerReport(layer: GcodeLayer, m: LayerMeasure, o: ResolvedOptions, ret
     sectionEmpty: m.section.segments.count === 0,
     materialAreaMm2: m.materialAreaMm2,
     outlineLengthMm: m.outlineLengthMm,
+    thinOutlineMm: m.thinOutlineMm,
     outlineCoverage: orNull(m.outlineCoverage),
     shift: m.shift,
     shiftMm,

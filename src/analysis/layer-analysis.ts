@@ -50,6 +50,7 @@ export interface LayerMeasure {
   sectionAreaMm2: number;
   materialAreaMm2: number;
   outlineLengthMm: number;
+  thinOutlineMm: number;
   outlineCoverage: number;
   shift: { dx: number; dy: number; inset: number } | null;
   /** Nonzero outside distances of centreline samples, and the number of samples. */
@@ -110,6 +111,7 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
     sectionAreaMm2: spansArea(section.spans),
     materialAreaMm2: 0,
     outlineLengthMm: 0,
+    thinOutlineMm: 0,
     outlineCoverage: NaN,
     shift: null,
     outsidePositives: new Float64Array(0),
@@ -134,23 +136,22 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
   const materialCells = countSet(material);
   result.materialAreaMm2 = materialCells * ctx.cell * ctx.cell;
 
-  measureOutside(result, t, partIds, section, grid, material, materialCells, ctx);
+  const seg = section.segments;
+  const inside = new WindingIndex(seg.x0, seg.y0, seg.x1, seg.y1, seg.count, 1);
+  const index = new SegmentIndex(t.x0, t.y0, t.x1, t.y1, partIds, t.count, Math.max(0.5, o.lineWidth * 2));
+  const outline = outlineMetrics(seg, inside, index, {
+    coverRadius: o.lineWidth,
+    searchRadius: SHIFT_SEARCH_LINE_WIDTHS * o.lineWidth,
+    step: Math.min(2 * ctx.cell, o.lineWidth / 4),
+    outlier: o.lineWidth / 2,
+    minThickness: o.lineWidth / 2,
+  });
+  result.outlineLengthMm = outline.lengthMm;
+  result.thinOutlineMm = outline.thinLengthMm;
+  result.outlineCoverage = outline.coverage;
+  result.shift = outline.shift;
 
-  if (partIds.length > 0) {
-    const index = new SegmentIndex(t.x0, t.y0, t.x1, t.y1, partIds, t.count, Math.max(0.5, o.lineWidth * 2));
-    const outline = outlineMetrics(section.segments, index, {
-      coverRadius: o.lineWidth,
-      searchRadius: SHIFT_SEARCH_LINE_WIDTHS * o.lineWidth,
-      step: Math.min(2 * ctx.cell, o.lineWidth / 4),
-      outlier: o.lineWidth / 2,
-    });
-    result.outlineLengthMm = outline.lengthMm;
-    result.outlineCoverage = outline.coverage;
-    result.shift = outline.shift;
-  } else {
-    result.outlineLengthMm = outlineLength(section);
-    result.outlineCoverage = result.outlineLengthMm > 0 ? 0 : NaN;
-  }
+  measureOutside(result, t, partIds, section, inside, grid, material, materialCells, ctx);
 
   const nTop = Math.round(o.topThickness / o.layerHeight);
   const nBottom = Math.round(o.bottomThickness / o.layerHeight);
@@ -191,13 +192,12 @@ function layerGrid(
  * the section is ambiguous (the plane runs through mesh vertices), material inside either reading is inside.
  */
 function measureOutside(
-  r: LayerMeasure, t: ExtrusionTable, partIds: Uint32Array, section: CachedSection, grid: Grid,
-  material: Uint8Array, materialCells: number, ctx: LayerContext,
+  r: LayerMeasure, t: ExtrusionTable, partIds: Uint32Array, section: CachedSection, windMain: WindingIndex,
+  grid: Grid, material: Uint8Array, materialCells: number, ctx: LayerContext,
 ): void {
   const o = ctx.opts;
   const main = section.segments;
   const up = section.above?.segments ?? null;
-  const windMain = new WindingIndex(main.x0, main.y0, main.x1, main.y1, main.count, 1);
   const windUp = up ? new WindingIndex(up.x0, up.y0, up.x1, up.y1, up.count, 1) : null;
   const nearMain = new SegmentIndex(main.x0, main.y0, main.x1, main.y1, null, main.count, 1);
   const nearUp = up ? new SegmentIndex(up.x0, up.y0, up.x1, up.y1, null, up.count, 1) : null;
@@ -314,15 +314,6 @@ function measureInfill(
     covered += (len * inside * w) / n;
   }
   r.infillDensity = covered / area;
-}
-
-function outlineLength(section: CachedSection): number {
-  const s = section.segments;
-  let sum = 0;
-  for (let i = 0; i < s.count; i++) {
-    if (s.synthetic[i] === 0) sum += Math.hypot(s.x1[i]! - s.x0[i]!, s.y1[i]! - s.y0[i]!);
-  }
-  return sum;
 }
 
 function weightedMedianOfMap(m: Map<number, number>): number {

@@ -1,6 +1,7 @@
 /**
  * The section outline against the extrusions: how much of the outline has an extrusion centreline within a line
- * width (walls present), and by how much the extrusions are shifted in XY relative to the outline.
+ * width (walls present), and by how much the extrusions are shifted in XY relative to the outline. Outline along
+ * features thinner than half a line width (no slicer can wall them) is counted apart.
  *
  * Shift: at outline samples p with outward normal n, the nearest extrusion point q gives the offset
  * s = (q − p)·n. A wall inset by c and shifted by d gives s ≈ −c + d·n, so (c, d) follow from a least-squares fit
@@ -8,7 +9,7 @@
  * residual exceeds half a line width after a first fit (corners, nearby features) are dropped and the fit redone.
  */
 import type { SectionSegments } from './section-gaps.js';
-import type { SegmentIndex } from './segment-index.js';
+import type { SegmentIndex, WindingIndex } from './segment-index.js';
 
 export interface OutlineOptions {
   /** Outline samples with an extrusion centreline within this distance count as walled (mm). */
@@ -19,11 +20,18 @@ export interface OutlineOptions {
   step: number;
   /** Residual (mm) beyond which a sample is dropped from the second fit. */
   outlier: number;
+  /**
+   * Outline samples where the section is thinner than this (the point this far inside is not inside) belong to
+   * features too thin to print a wall along (mm).
+   */
+  minThickness: number;
 }
 
 export interface OutlineMetrics {
-  /** Outline length (synthetic gap-closing segments excluded), mm. */
+  /** Outline length (synthetic gap-closing segments and thin features excluded), mm. */
   lengthMm: number;
+  /** Outline length along features thinner than minThickness, mm. */
+  thinLengthMm: number;
   /** Fraction of the outline length with an extrusion within coverRadius (NaN without outline). */
   coverage: number;
   /** Fitted XY shift of the extrusions relative to the outline (mm), null when too few samples. */
@@ -33,8 +41,11 @@ export interface OutlineMetrics {
 /** Fewer fitted samples than this give no shift estimate. */
 const MIN_FIT_SAMPLES = 8;
 
-export function outlineMetrics(section: SectionSegments, extrusions: SegmentIndex, o: OutlineOptions): OutlineMetrics {
+export function outlineMetrics(
+  section: SectionSegments, inside: WindingIndex, extrusions: SegmentIndex, o: OutlineOptions,
+): OutlineMetrics {
   let length = 0;
+  let thin = 0;
   let covered = 0;
   const nx: number[] = [];
   const ny: number[] = [];
@@ -46,7 +57,6 @@ export function outlineMetrics(section: SectionSegments, extrusions: SegmentInde
     const dx = section.x1[i]! - ax, dy = section.y1[i]! - ay;
     const len = Math.hypot(dx, dy);
     if (len <= 0) continue;
-    length += len;
     const n = Math.max(1, Math.ceil(len / o.step));
     const w = len / n;
     // Solid on the left, so the outward normal is the right-hand normal.
@@ -56,6 +66,11 @@ export function outlineMetrics(section: SectionSegments, extrusions: SegmentInde
       const t = (k + 0.5) / n;
       const px = ax + t * dx;
       const py = ay + t * dy;
+      if (inside.winding(px - ox * o.minThickness, py - oy * o.minThickness) === 0) {
+        thin += w;
+        continue;
+      }
+      length += w;
       const d = extrusions.nearest(px, py, o.searchRadius);
       if (d <= o.coverRadius) covered += w;
       if (d !== Infinity) {
@@ -70,6 +85,7 @@ export function outlineMetrics(section: SectionSegments, extrusions: SegmentInde
   if (fit) fit = fitShift(nx, ny, off, wt, fit, o.outlier) ?? fit;
   return {
     lengthMm: length,
+    thinLengthMm: thin,
     coverage: length > 0 ? covered / length : NaN,
     shift: fit ? { dx: fit[1], dy: fit[2], inset: -fit[0] } : null,
   };

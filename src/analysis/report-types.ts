@@ -58,8 +58,10 @@ export interface LayerReport {
   sectionEmpty: boolean;
   /** Area covered by the part's extruded material (raster of beads). */
   materialAreaMm2: number;
+  /** Outline length that should carry a wall, and outline along features thinner than half a line width. */
   outlineLengthMm: number;
-  /** Fraction of the outline with an extrusion within one line width; null without outline. */
+  thinOutlineMm: number;
+  /** Fraction of the (wallable) outline with an extrusion within one line width; null without outline. */
   outlineCoverage: number | null;
   /** Fitted XY shift of the extrusions against the section outline, and the fitted wall inset (mm). */
   shift: { dx: number; dy: number; inset: number } | null;

@@ -18,6 +18,9 @@ interface Cut {
   s: number;
   edge: number;
   u: number;
+  /** The cut point. */
+  x: number;
+  y: number;
 }
 
 function pointAt(pl: Polyline, s: number): { x: number; y: number } {
@@ -40,14 +43,11 @@ export function clipPolylines(ix: RegionIndex, lines: readonly Polyline[], out: 
       if (a.x === b.x && a.y === b.y) continue;
       segmentHits(ix, a.x, a.y, b.x, b.y, hits);
       for (const h of hits) {
-        const sNew = i + h.t;
+        const qx = a.x + h.t * (b.x - a.x), qy = a.y + h.t * (b.y - a.y);
         const last = cuts[cuts.length - 1];
-        if (last) {
-          // merge with the previous cut when it is the same point
-          const p = pointAt(pl, last.s), q = { x: a.x + h.t * (b.x - a.x), y: a.y + h.t * (b.y - a.y) };
-          if (Math.abs(p.x - q.x) + Math.abs(p.y - q.y) <= CUT_MERGE_UM) continue;
-        }
-        cuts.push({ s: sNew, edge: h.edge, u: h.u });
+        // merge with the previous cut when it is the same point (a crossing through a region vertex)
+        if (last && Math.abs(last.x - qx) + Math.abs(last.y - qy) <= CUT_MERGE_UM) continue;
+        cuts.push({ s: i + h.t, edge: h.edge, u: h.u, x: qx, y: qy });
       }
     }
     const sEnd = n - 1;

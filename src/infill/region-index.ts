@@ -241,6 +241,19 @@ export interface Hit {
   u: number;
 }
 
+function hitEdge(ix: RegionIndex, e: number, x0: number, y0: number, dx: number, dy: number, out: Hit[]): void {
+  const ax = ix.ex0[e], ay = ix.ey0[e];
+  const ux = ix.ex1[e] - ax, uy = ix.ey1[e] - ay;
+  const den = dx * uy - dy * ux;
+  if (den === 0) return;
+  const wx = ax - x0, wy = ay - y0;
+  const t = (wx * uy - wy * ux) / den;
+  if (t < 0 || t > 1) return;
+  const u = (wx * dy - wy * dx) / den;
+  if (u < 0 || u > 1) return;
+  out.push({ t, edge: e, u });
+}
+
 /** All intersections of segment (x0,y0)→(x1,y1) with region edges, sorted by t. Parallel overlaps are ignored. */
 export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number, y1: number, out: Hit[]): void {
   out.length = 0;
@@ -248,30 +261,25 @@ export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number,
   const fx0 = (x0 - ix.minX) / ix.cell, fy0 = (y0 - ix.minY) / ix.cell;
   const fx1 = (x1 - ix.minX) / ix.cell, fy1 = (y1 - ix.minY) / ix.cell;
   const cx = Math.floor(fx0), cy = Math.floor(fy0);
+  const dx = x1 - x0, dy = y1 - y0;
   if (cx === Math.floor(fx1) && cy === Math.floor(fy1) && cx >= 0 && cy >= 0 && cx < ix.nx && cy < ix.ny) {
-    const c = cy * ix.nx + cx;
-    if (ix.cellStart[c] === ix.cellStart[c + 1]) {
-      const pad = GRID_PAD_UM / ix.cell;
-      const inner = (f: number) => f - Math.floor(f) > pad && Math.ceil(f) - f > pad;
-      if (inner(fx0) && inner(fy0) && inner(fx1) && inner(fy1)) return;
+    const pad = GRID_PAD_UM / ix.cell;
+    const inner = (f: number) => f - Math.floor(f) > pad && Math.ceil(f) - f > pad;
+    if (inner(fx0) && inner(fy0) && inner(fx1) && inner(fy1)) {
+      // a short segment well inside one cell meets only that cell's edges
+      const c = cy * ix.nx + cx;
+      for (let k = ix.cellStart[c], end = ix.cellStart[c + 1]; k < end; k++) hitEdge(ix, ix.cellEdges[k], x0, y0, dx, dy, out);
+      if (out.length > 1) out.sort((a, b) => a.t - b.t || a.edge - b.edge);
+      return;
     }
   }
   const stamp = ++ix.stampNow.v;
-  const dx = x1 - x0, dy = y1 - y0;
   forCells(ix, x0, y0, x1, y1, (c) => {
     for (let k = ix.cellStart[c], end = ix.cellStart[c + 1]; k < end; k++) {
       const e = ix.cellEdges[k];
       if (ix.stamp[e] === stamp) continue;
       ix.stamp[e] = stamp;
-      const ax = ix.ex0[e], ay = ix.ey0[e];
-      const ux = ix.ex1[e] - ax, uy = ix.ey1[e] - ay;
-      const den = dx * uy - dy * ux;
-      if (den === 0) continue;
-      const wx = ax - x0, wy = ay - y0;
-      const t = (wx * uy - wy * ux) / den;
-      const u = (wx * dy - wy * dx) / den;
-      if (t < 0 || t > 1 || u < 0 || u > 1) continue;
-      out.push({ t, edge: e, u });
+      hitEdge(ix, e, x0, y0, dx, dy, out);
     }
   });
   if (out.length > 1) out.sort((a, b) => a.t - b.t || a.edge - b.edge);

@@ -41,3 +41,11 @@ test('wallCount overrides shellWallThickness; text values parse by type', () => 
   assert.equal(parseSettingText('combing', 'off'), false);
   assert.equal(parseSettingText('lineWidth', 'auto'), null);
 });
+
+test('setting the nozzle or bed temperature moves the first-layer one with it, keeping the preset offset', () => {
+  const base = resolveConfig();
+  const c = resolveConfig({ nozzleTemperature: 230, bedTemperature: 70 });
+  assert.equal(c.firstLayerNozzleTemp - 230, base.firstLayerNozzleTemp - base.nozzleTemperature);
+  assert.equal(c.firstLayerBedTemp - 70, base.firstLayerBedTemp - base.bedTemperature);
+  assert.equal(resolveConfig({ nozzleTemperature: 230, firstLayerNozzleTemperature: 240 }).firstLayerNozzleTemp, 240);
+});

@@ -159,7 +159,17 @@ export function resolveConfig(options: SliceOptions = {}): Config {
   for (const key of SETTING_KEYS) values[key] = SCHEMA[key].default;
   applyLayer(values, printer.settings, `printer preset ${printer.id}:`);
   applyLayer(values, filament.settings, `filament preset ${filament.id}:`);
+  const preset = { ...values } as Settings;
   applyLayer(values, rest, 'option');
+  // A caller who sets the temperature but not the first-layer one means the first layer to follow it,
+  // keeping the preset's first-layer offset (e.g. +5 °C).
+  const follow = (main: 'nozzleTemperature' | 'bedTemperature', first: 'firstLayerNozzleTemperature' | 'firstLayerBedTemperature') => {
+    if (rest[main] !== undefined && rest[first] === undefined && preset[first] !== null) {
+      values[first] = Math.max(0, (values[main] as number) + ((preset[first] as number) - (preset[main] as number)));
+    }
+  };
+  follow('nozzleTemperature', 'firstLayerNozzleTemperature');
+  follow('bedTemperature', 'firstLayerBedTemperature');
   const s = values as Settings;
 
   const lineWidthMm = s.lineWidth ?? s.nozzleDiameter;

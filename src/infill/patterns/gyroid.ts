@@ -20,7 +20,7 @@ import { traceContours } from '../contour.js';
 export const GYROID_KAPPA = 2.4587;
 /** Sampling cells per period: fine enough that the contour topology is right; a Newton step fixes the
  * positions (after linear interpolation on L/16 cells one step leaves well under 1 µm). */
-const CELLS_PER_PERIOD = 16;
+const CELLS_PER_PERIOD = 12;
 const NEWTON_STEPS = 1;
 
 /** Gyroid period (µm) for a density. */
