@@ -13,7 +13,9 @@ const ORIGIN: [number, number] = [50, 50];
 const mesh = boxMesh(ORIGIN[0], ORIGIN[1], 0, ORIGIN[0] + SIZE[0], ORIGIN[1] + SIZE[1], SIZE[2]);
 const OPTS = { layerHeight: 0.2, firstLayerHeight: 0.2, lineWidth: 0.4, filamentDiameter: 1.75 };
 
-function boxGcode(extra: Partial<BoxPrintOptions> = {}, relativeE = false, markers: 'cura' | 'prusa' | 'none' = 'cura') {
+type Markers = 'cura' | 'prusa' | 'none';
+
+function boxGcode(extra: Partial<BoxPrintOptions> = {}, relativeE = false, markers: Markers = 'cura') {
   const writer = new GcodeWriter({ lineWidth: 0.4, filamentDiameter: 1.75, relativeE, markers });
   writeBoxPrint({
     size: SIZE, origin: ORIGIN, layerHeight: 0.2, lineWidth: 0.4, walls: 2, skinLayers: 4, infillSpacing: 4,
@@ -78,7 +80,8 @@ test('a line outside the part is flagged with its distance', () => {
 });
 
 test('missing walls, missing skin and a shifted layer are caught', () => {
-  const s = analyzePrint(mesh, boxGcode({ skipWallsOn: [7], skipSkinOn: [28], shift: { layer: 10, dx: 0.3 } }).text(), OPTS);
+  const faulty = boxGcode({ skipWallsOn: [7], skipSkinOn: [28], shift: { layer: 10, dx: 0.3 } });
+  const s = analyzePrint(mesh, faulty.text(), OPTS);
   const sum = s.summary;
   // The shifted layer's wall is 0.5 mm from one side of the outline, more than a line width: not walled either.
   assert.deepEqual(sum.walls.layersBelowThreshold, [7, 10]);

@@ -47,7 +47,8 @@ export function formatReport(report: PrintReport): string {
       `${e.balance.unbalanced}${e.balance.unbalanced > 0 ? ` (lines ${list(e.balance.unbalancedLines)})` : ''}, ` +
       `trailing ${e.balance.trailingMm.toFixed(2)} mm`,
   );
-  lines.push(`bead width: median ${mm(e.widthMedianMm)}, ${e.flowRatio === null ? 'n/a' : e.flowRatio.toFixed(2)}× nominal`);
+  const ratio = e.flowRatio === null ? 'n/a' : e.flowRatio.toFixed(2);
+  lines.push(`bead width: median ${mm(e.widthMedianMm)}, ${ratio}× nominal`);
   const features = Object.entries(s.featureLengthMm)
     .map(([k, v]) => `${k} ${(v / 1000).toFixed(2)} m`)
     .join(', ');

@@ -26,7 +26,6 @@ export interface GroupedLayers {
 export function groupLayers(raw: RawRecords): GroupedLayers {
   const blocks = raw.blockCount;
   const segBlock = raw.ext.block.data;
-  const segZ = raw.ext.z.data;
   const nSeg = raw.ext.block.length;
 
   // Print Z of each block with extrusion.

@@ -2,35 +2,31 @@
  * The raster checks of one printed layer against the model section at its mid-height: walls, stray material,
  * skin coverage, infill density and XY shift.
  */
-import { Feature, isPartFeature } from './feature-names.js';
+import { isPartFeature } from './feature-names.js';
 import type { ExtrusionTable, GcodeLayer } from './gcode-types.js';
 import type { Grid } from './grid.js';
-import { bitmapAt, countSet, gridAround, newBitmap } from './grid.js';
+import { countSet, gridAround } from './grid.js';
+import { measureInfill } from './infill-density.js';
 import { outlineMetrics } from './outline.js';
-import { beadWidth, dilateBitmap, rasterizeExtrusions, segmentLength, stampCapsule, volumeWidth } from './raster.js';
+import { measureOutside } from './outside.js';
+import { beadWidth, rasterizeExtrusions, segmentLength } from './raster.js';
 import type { AnalyzeOptions } from './report-types.js';
 import type { CachedSection, SectionCache } from './section-cache.js';
 import { SegmentIndex, WindingIndex } from './segment-index.js';
 import { skinRegions } from './skin.js';
 import type { Spans } from './spans.js';
-import {
-  bitmapToSpans, countInSpans, dilateSpans, erodeSpans, isEmptySpans, spansArea, spansBoolean, spansBounds,
-  spansContain, spansToBitmap,
-} from './spans.js';
-import type { WeightedHistogram } from './stats.js';
-import { quantileWithZeros } from './stats.js';
+import { countInSpans, erodeSpans, isEmptySpans, spansArea, spansBoolean, spansBounds } from './spans.js';
+import { WeightedHistogram } from './stats.js';
 
 export type ResolvedOptions = Required<AnalyzeOptions>;
 
 /** Material farther than this outside the section is not rasterised (its distance is still measured), mm. */
 const RASTER_CLIP_MARGIN_MM = 5;
-/** Outside-distance searches look this far before falling back to a search of the whole section, mm. */
-const OUTSIDE_SEARCH_MM = 5;
 /** Bead widths are clamped to [MIN_BEAD_MM, MAX_BEAD_LINE_WIDTHS × lineWidth]. */
 const MIN_BEAD_MM = 0.05;
 const MAX_BEAD_LINE_WIDTHS = 4;
-/** Infill regions smaller than this (mm²) give no density. */
-const MIN_INFILL_REGION_MM2 = 1;
+/** Resolution of bead-width medians (mm). */
+const WIDTH_BIN_MM = 0.001;
 /** The shift fit looks for extrusions up to this many line widths from the outline. */
 const SHIFT_SEARCH_LINE_WIDTHS = 3;
 
@@ -69,6 +65,11 @@ export interface LayerMeasure {
   partLengthMm: number;
 }
 
+/** An empty length-weighted histogram of bead widths. */
+export function widthHistogram(o: ResolvedOptions): WeightedHistogram {
+  return new WeightedHistogram(MAX_BEAD_LINE_WIDTHS * o.lineWidth, WIDTH_BIN_MM);
+}
+
 /** Layers beyond the skin thickness that the infill region keeps away from top and bottom surfaces. */
 export function skinMarginLayers(o: ResolvedOptions): number {
   return Math.ceil(o.skinMargin / o.layerHeight - 1e-9);
@@ -93,7 +94,7 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
   for (let i = 0; i < t.count; i++) if (isPartFeature(t.feature[i]!)) part.push(i);
   const partIds = Uint32Array.from(part);
   const widths = new Float32Array(t.count);
-  const layerWidths = new Map<number, number>();
+  const layerWidths = widthHistogram(o);
   let partLength = 0;
   for (const i of partIds) {
     const len = segmentLength(t, i);
@@ -101,8 +102,7 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
     const w = o.widthSource === 'nominal' ? o.lineWidth : beadWidth(t.e[i]!, len, h, ctx.filamentArea);
     widths[i] = Math.min(MAX_BEAD_LINE_WIDTHS * o.lineWidth, Math.max(MIN_BEAD_MM, w));
     ctx.widths.add(w, len);
-    const key = Math.round(w * 1000);
-    layerWidths.set(key, (layerWidths.get(key) ?? 0) + len);
+    layerWidths.add(w, len);
   }
 
   const result: LayerMeasure = {
@@ -125,7 +125,7 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
     bottomCoverage: NaN,
     infillRegionAreaMm2: 0,
     infillDensity: NaN,
-    widthMedianMm: weightedMedianOfMap(layerWidths) / 1000,
+    widthMedianMm: layerWidths.quantile(0.5),
     partLengthMm: partLength,
   };
   const bounds = spansBounds(section.spans);
@@ -151,7 +151,12 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
   result.outlineCoverage = outline.coverage;
   result.shift = outline.shift;
 
-  measureOutside(result, t, partIds, section, inside, grid, material, materialCells, ctx);
+  const out = measureOutside(t, partIds, section, inside, grid, material, materialCells, o.lineWidth / 2, ctx.cell);
+  result.outsidePositives = out.positives;
+  result.outsideSamples = out.samples;
+  result.outsideMaxMm = out.maxMm;
+  result.outsideP99Mm = out.p99Mm;
+  result.outsideAreaMm2 = out.areaMm2;
 
   const nTop = Math.round(o.topThickness / o.layerHeight);
   const nBottom = Math.round(o.bottomThickness / o.layerHeight);
@@ -166,7 +171,17 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
   // The infill region also keeps skinMargin (in layers) away from skin above and below: slicers add solid or
   // supporting lines there (more top layers, skin edge support).
   const near = skinRegions(section.spans, above, below);
-  measureInfill(result, t, grid, widths, h, section.spans, spansBoolean(near.top, near.bottom, 'union'), ctx);
+  const infill = measureInfill(t, grid, widths, section.spans, spansBoolean(near.top, near.bottom, 'union'), {
+    wallThickness: o.wallThickness,
+    lineWidth: o.lineWidth,
+    skinMargin: o.skinMargin,
+    typed: ctx.hasTypes,
+    widthSource: o.widthSource,
+    layerHeight: h,
+    filamentArea: ctx.filamentArea,
+  });
+  result.infillRegionAreaMm2 = infill.regionAreaMm2;
+  result.infillDensity = infill.density;
   return result;
 }
 
@@ -185,61 +200,6 @@ function layerGrid(
   xmax = Math.min(xmax, bounds[2] + RASTER_CLIP_MARGIN_MM);
   ymax = Math.min(ymax, bounds[3] + RASTER_CLIP_MARGIN_MM);
   return gridAround(xmin, ymin, xmax, ymax, cell, 2 * lineWidth + cell);
-}
-
-/**
- * Distances of part material outside the section grown by half a line width, and the area of beads there. Where
- * the section is ambiguous (the plane runs through mesh vertices), material inside either reading is inside.
- */
-function measureOutside(
-  r: LayerMeasure, t: ExtrusionTable, partIds: Uint32Array, section: CachedSection, windMain: WindingIndex,
-  grid: Grid, material: Uint8Array, materialCells: number, ctx: LayerContext,
-): void {
-  const o = ctx.opts;
-  const main = section.segments;
-  const up = section.above?.segments ?? null;
-  const windUp = up ? new WindingIndex(up.x0, up.y0, up.x1, up.y1, up.count, 1) : null;
-  const nearMain = new SegmentIndex(main.x0, main.y0, main.x1, main.y1, null, main.count, 1);
-  const nearUp = up ? new SegmentIndex(up.x0, up.y0, up.x1, up.y1, null, up.count, 1) : null;
-  const tolerance = o.lineWidth / 2;
-  const region = section.above ? spansBoolean(section.spans, section.above.spans, 'union') : section.spans;
-  // Samples in cells whose centre lies within (tolerance - 3/4 cell) of the section are within the tolerance
-  // wherever they sit in the cell: no exact test needed. (Spans sample the section, so they never overstate it.)
-  const safe = newBitmap(grid);
-  const safeRadius = tolerance - 0.75 * ctx.cell;
-  spansToBitmap(safeRadius > 0 ? dilateSpans(region, safeRadius) : erodeSpans(region, 2 * ctx.cell), grid, safe);
-  const step = ctx.cell;
-  const positives: number[] = [];
-  let samples = 0;
-  for (const i of partIds) {
-    const ax = t.x0[i]!, ay = t.y0[i]!;
-    const dx = t.x1[i]! - ax, dy = t.y1[i]! - ay;
-    const n = Math.max(1, Math.ceil(Math.hypot(dx, dy) / step));
-    samples += n + 1;
-    for (let k = 0; k <= n; k++) {
-      const px = ax + (dx * k) / n;
-      const py = ay + (dy * k) / n;
-      if (bitmapAt(safe, grid, px, py)) continue;
-      if (windMain.winding(px, py) !== 0 || (windUp !== null && windUp.winding(px, py) !== 0)) continue;
-      const d = Math.min(outsideDistance(nearMain, px, py, tolerance), nearUp ? outsideDistance(nearUp, px, py, tolerance) : Infinity);
-      if (d > tolerance) positives.push(d - tolerance);
-    }
-  }
-  const arr = Float64Array.from(positives);
-  r.outsidePositives = arr;
-  r.outsideSamples = samples;
-  r.outsideMaxMm = arr.reduce((m, v) => Math.max(m, v), 0);
-  r.outsideP99Mm = quantileWithZeros(arr.slice(), samples, 0.99);
-  const [, inside] = countInSpans(dilateSpans(region, tolerance), grid, material);
-  r.outsideAreaMm2 = (materialCells - inside) * ctx.cell * ctx.cell;
-}
-
-/** Distance to the nearest outline segment, searched first within the tolerance, then farther, then everywhere. */
-function outsideDistance(index: SegmentIndex, px: number, py: number, tolerance: number): number {
-  let d = index.nearest(px, py, tolerance);
-  if (d === Infinity) d = index.nearest(px, py, OUTSIDE_SEARCH_MM);
-  if (d === Infinity) d = index.nearest(px, py, Number.MAX_SAFE_INTEGER);
-  return d;
 }
 
 /** Sections at the mid-heights of the next `count` layers up (dir +1) or down (dir -1). */
@@ -262,68 +222,4 @@ function surfaceCoverage(surface: Spans, edge: number, grid: Grid, material: Uin
   if (isEmptySpans(surface)) return [0, NaN];
   const [total, hit] = countInSpans(erodeSpans(surface, edge), grid, material);
   return [area, total > 0 ? hit / total : NaN];
-}
-
-/**
- * Infill density: in the section shrunk by the wall thickness and a line width, minus model skin and (with feature types) the
- * G-code's own solid infill, each grown by skinMargin, the FILL lines' extruded volume per layer height (their
- * full-density area) over the region's area.
- */
-function measureInfill(
-  r: LayerMeasure, t: ExtrusionTable, grid: Grid, widths: Float32Array, h: number, section: Spans, skin: Spans,
-  ctx: LayerContext,
-): void {
-  const o = ctx.opts;
-  // One line width more than the walls: where infill meets them it overlaps or runs along them (anchors).
-  let region = erodeSpans(section, o.wallThickness + o.lineWidth);
-  if (!isEmptySpans(skin)) region = spansBoolean(region, skin, 'subtract');
-  if (!isEmptySpans(region)) {
-    // Excluded: the model's skin grown by skinMargin (slicers widen skin into the infill), and with feature types
-    // the solid infill the G-code prints, grown by a line width.
-    let excluded = newBitmap(grid);
-    if (!isEmptySpans(skin)) {
-      spansToBitmap(skin, grid, excluded);
-      excluded = dilateBitmap(excluded, grid, o.skinMargin);
-    }
-    if (ctx.hasTypes) {
-      for (let i = 0; i < t.count; i++) {
-        if (t.feature[i] !== Feature.Skin) continue;
-        stampCapsule(excluded, grid, t.x0[i]!, t.y0[i]!, t.x1[i]!, t.y1[i]!, widths[i]! / 2 + o.lineWidth);
-      }
-    }
-    region = spansBoolean(region, bitmapToSpans(excluded, grid), 'subtract');
-  }
-  const area = spansArea(region);
-  r.infillRegionAreaMm2 = area;
-  if (area < MIN_INFILL_REGION_MM2) return;
-  const step = ctx.cell / 2;
-  let covered = 0;
-  for (let i = 0; i < t.count; i++) {
-    const f = t.feature[i]!;
-    if (ctx.hasTypes ? f !== Feature.Fill : !isPartFeature(f)) continue;
-    const ax = t.x0[i]!, ay = t.y0[i]!;
-    const dx = t.x1[i]! - ax, dy = t.y1[i]! - ay;
-    const len = Math.hypot(dx, dy);
-    const n = Math.max(1, Math.ceil(len / step));
-    let inside = 0;
-    for (let k = 0; k < n; k++) {
-      if (spansContain(region, ax + (dx * (k + 0.5)) / n, ay + (dy * (k + 0.5)) / n)) inside++;
-    }
-    if (inside === 0) continue;
-    const w = o.widthSource === 'nominal' ? o.lineWidth : volumeWidth(t.e[i]!, len, h, ctx.filamentArea);
-    covered += (len * inside * w) / n;
-  }
-  r.infillDensity = covered / area;
-}
-
-function weightedMedianOfMap(m: Map<number, number>): number {
-  const keys = [...m.keys()].sort((a, b) => a - b);
-  let total = 0;
-  for (const k of keys) total += m.get(k)!;
-  let acc = 0;
-  for (const k of keys) {
-    acc += m.get(k)!;
-    if (acc >= total / 2) return k;
-  }
-  return NaN;
 }

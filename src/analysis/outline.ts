@@ -4,9 +4,10 @@
  * features thinner than half a line width (no slicer can wall them) is counted apart.
  *
  * Shift: at outline samples p with outward normal n, the nearest extrusion point q gives the offset
- * s = (q − p)·n. A wall inset by c and shifted by d gives s ≈ −c + d·n, so (c, d) follow from a least-squares fit
- * over the samples; because ∮ n ds = 0 around a closed outline, a uniform inset does not leak into d. Samples whose
- * residual exceeds half a line width after a first fit (corners, nearby features) are dropped and the fit redone.
+ * s = (q − p)·n. A wall inset by c and shifted by d gives s ≈ −c + d·n, so (c, d) follow from a least-squares
+ * fit over the samples; because ∮ n ds = 0 around a closed outline, a uniform inset does not leak into d.
+ * Samples whose residual exceeds half a line width after a first fit (corners, nearby features) are dropped and
+ * the fit redone.
  */
 import type { SectionSegments } from './section-gaps.js';
 import type { SegmentIndex, WindingIndex } from './segment-index.js';

@@ -51,7 +51,10 @@ test('an open mesh is closed, not leaked along scanlines', () => {
   const grid = gridAround(0, 0, 10, 5, 0.05, 3);
   near(countSet(rasterizeSection(s, grid)) * 0.0025, 50, 0.5, 'closed area');
   // Two separate boxes, each missing a face, stay two regions.
-  const twoOpen = [dropTriangles(boxMesh(0, 0, 0, 4, 4, 2), (t) => t === 10), dropTriangles(boxMesh(6, 0, 0, 10, 4, 2), (t) => t === 4)];
+  const twoOpen = [
+    dropTriangles(boxMesh(0, 0, 0, 4, 4, 2), (t) => t === 10),
+    dropTriangles(boxMesh(6, 0, 0, 10, 4, 2), (t) => t === 4),
+  ];
   const merged = mergeMeshes(twoOpen[0]!, twoOpen[1]!);
   const spans = sectionSpans(meshSection(merged, 1), 0.05);
   near(spansArea(spans), 32, 0.5, 'two boxes');

@@ -58,7 +58,6 @@ export class GcodeWriter {
   private readonly out: string[] = [];
   private x = 0;
   private y = 0;
-  private z = 0;
   private e = 0;
   private h = 0.2;
   private readonly area: number;
@@ -77,7 +76,6 @@ export class GcodeWriter {
   layer(index: number, z: number, height: number): this {
     if (this.o.markers === 'cura') this.out.push(`;LAYER:${index}`);
     if (this.o.markers === 'prusa') this.out.push(';LAYER_CHANGE', `;Z:${z}`);
-    this.z = z;
     this.h = height;
     this.out.push(`G0 Z${fmt(z)} F600`);
     return this;

@@ -86,7 +86,8 @@ export function readStl(bytes: Uint8Array): Mesh {
   const text = new TextDecoder().decode(bytes);
   const values: number[] = [];
   for (const m of text.matchAll(/vertex\s+(\S+)\s+(\S+)\s+(\S+)/g)) values.push(+m[1]!, +m[2]!, +m[3]!);
-  return { positions: Float32Array.from(values), indices: Uint32Array.from({ length: values.length / 3 }, (_, i) => i) };
+  const indices = Uint32Array.from({ length: values.length / 3 }, (_, i) => i);
+  return { positions: Float32Array.from(values), indices };
 }
 
 /** The mesh moved so that its bounding box is centred on (cx, cy) and rests on z = 0, as slicers place it. */

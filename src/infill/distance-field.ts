@@ -6,6 +6,7 @@
  */
 import type { RegionIndex } from './region-index.js';
 import type { ScalarGrid } from './contour.js';
+import { closestOnSegment } from './geom-util.js';
 
 export interface DistanceField extends ScalarGrid {
   /** Nearest boundary edge of each node (−1 if none). */
@@ -16,23 +17,8 @@ export interface DistanceField extends ScalarGrid {
 
 /** Exact distance from (x, y) to edge e, with the nearest point. */
 export function edgeDistance(ix: RegionIndex, e: number, x: number, y: number): { d: number; qx: number; qy: number } {
-  const ax = ix.ex0[e], ay = ix.ey0[e], ux = ix.ex1[e] - ax, uy = ix.ey1[e] - ay;
-  const l2 = ux * ux + uy * uy;
-  let t = l2 > 0 ? ((x - ax) * ux + (y - ay) * uy) / l2 : 0;
-  if (t < 0) t = 0;
-  else if (t > 1) t = 1;
-  const qx = ax + t * ux, qy = ay + t * uy;
-  return { d: Math.hypot(x - qx, y - qy), qx, qy };
-}
-
-function segDist2(ix: RegionIndex, e: number, x: number, y: number): number {
-  const ax = ix.ex0[e], ay = ix.ey0[e], ux = ix.ex1[e] - ax, uy = ix.ey1[e] - ay;
-  const l2 = ux * ux + uy * uy;
-  let t = l2 > 0 ? ((x - ax) * ux + (y - ay) * uy) / l2 : 0;
-  if (t < 0) t = 0;
-  else if (t > 1) t = 1;
-  const dx = x - ax - t * ux, dy = y - ay - t * uy;
-  return dx * dx + dy * dy;
+  const q = closestOnSegment(ix.ex0[e], ix.ey0[e], ix.ex1[e], ix.ey1[e], x, y);
+  return { d: Math.sqrt(q.d2), qx: q.x, qy: q.y };
 }
 
 /** Signed distance field of the region on a grid of cell size h (µm), one cell of margin outside. */
@@ -62,7 +48,7 @@ export function distanceField(ix: RegionIndex, h: number): DistanceField {
       const i0 = Math.max(0, Math.floor((xa - x0) / h) - 1), i1 = Math.min(nx, Math.ceil((xb - x0) / h) + 1);
       for (let i = i0; i <= i1; i++) {
         const n = j * W + i;
-        const d2 = segDist2(ix, e, x0 + i * h, y);
+        const d2 = closestOnSegment(ix.ex0[e], ix.ey0[e], ix.ex1[e], ix.ey1[e], x0 + i * h, y).d2;
         if (d2 < best[n] || (d2 === best[n] && e < edge[n])) {
           best[n] = d2;
           edge[n] = e;

@@ -10,8 +10,10 @@
  * by ±10 % or more. So each run is measured (clipped line length × width less the pattern's crossing
  * overlap, plus the connectors) and, if it misses the setting by more than 3 %, the pattern is run again
  * with its density scaled by what was missing (or halfway between runs on either side of the setting);
- * at most five runs (two for most layers), the best one wins. The factor is
- * rounded to 1/64 so layers of similar shape get exactly the same spacing and their lines stack.
+ * at most five runs (two for most layers), the best one wins. The factor is rounded to 1/64 so layers of
+ * similar outline get exactly the same spacing and their lines stack. Patterns that change with Z on
+ * purpose ('volume': gyroid, cubic) only pay for their connectors, measured at two fixed reference heights,
+ * so their period stays the same from layer to layer and the 3D structure is kept.
  */
 import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
 import type { InfillLayerInput, InfillParams, InfillPattern, InfillResult, PatternId } from './types.js';
@@ -94,12 +96,26 @@ function quantize(f: number): number {
 /**
  * Run the pattern and steer its density factor so that lines plus connectors cover the setting (see the
  * head of this file). 'layer' patterns are steered on what they actually cover (which also absorbs the
- * phase error of few lines in a small region); 'volume' patterns only pay for their connectors, since their
- * layers vary on purpose; 'support' patterns are left alone. At most MAX_RUNS runs; the best one wins.
+ * phase error of few lines in a small region), at most MAX_RUNS runs, the best one wins; 'volume' patterns
+ * only pay for their connectors, measured at a reference height, since their layers vary on purpose;
+ * 'support' patterns are left alone.
  */
 function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: InfillParams, prepared: unknown, ctx: Ctx): Run {
   const d = params.density;
   const model = pattern.densityModel ?? 'layer';
+  if (model === 'volume') {
+    // The pattern changes with Z, and so would its connectors and any correction measured on this layer:
+    // its period would then jump from layer to layer and break the 3D structure. The connectors are
+    // measured at fixed reference heights instead, so layers of the same outline get the same period.
+    const period = pattern.zPeriod ? pattern.zPeriod(params) : 0;
+    let share = 0;
+    for (let k = 0; k < VOLUME_REFERENCES; k++) {
+      const z = layer.layerHeight + (k * period) / VOLUME_REFERENCES;
+      share += runPattern(pattern, { ...layer, layerIndex: 0, z }, params, prepared, ctx, 1).connectorShare / VOLUME_REFERENCES;
+    }
+    const f = share > CORRECTION_SETTLED * d ? quantize(1 - share / d) : 1;
+    return runPattern(pattern, layer, params, prepared, ctx, f);
+  }
   const r0 = runPattern(pattern, layer, params, prepared, ctx, 1);
   if (model === 'support') return r0;
   const total = (r: Run) => (model === 'layer' ? r.lineShare : d * r.factor) + r.connectorShare;
@@ -133,6 +149,8 @@ function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: I
 /** A run whose predicted total is within this fraction of the setting needs no further step. */
 const CORRECTION_SETTLED = 0.03;
 const MAX_RUNS = 5;
+/** Reference heights (spread over one Z period) at which a 'volume' pattern's connectors are measured. */
+const VOLUME_REFERENCES = 2;
 const MAX_CORRECTION = 1.5;
 
 /**

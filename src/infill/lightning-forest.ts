@@ -18,6 +18,7 @@
  */
 import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
 import { type Hit, type RegionIndex, nearestBoundary, pointInside, segmentCrosses } from './region-index.js';
+import { closestOnSegment, ringsOf, rowCrossings } from './geom-util.js';
 
 export interface Forest {
   xs: number[];
@@ -204,14 +205,11 @@ class EdgeGrid {
         for (const v of list) {
           const p = f.par[v];
           if (p < 0) continue;
-          const ax = f.xs[v], ay = f.ys[v], ux = f.xs[p] - ax, uy = f.ys[p] - ay;
-          const l2 = ux * ux + uy * uy;
-          const t = l2 > 0 ? Math.max(0, Math.min(1, ((x - ax) * ux + (y - ay) * uy) / l2)) : 0;
-          const px = ax + t * ux, py = ay + t * uy;
-          const d = Math.hypot(px - x, py - y);
+          const q = closestOnSegment(f.xs[v], f.ys[v], f.xs[p], f.ys[p], x, y);
+          const d = Math.sqrt(q.d2);
           if (d < bestD || (d === bestD && best && v < best.v)) {
             bestD = d;
-            best = { v, t, x: px, y: py, d };
+            best = { v, t: q.t, x: q.x, y: q.y, d };
           }
         }
       }
@@ -222,27 +220,17 @@ class EdgeGrid {
 
 /** Grid points (spacing g, anchored at origin) inside the areas, row by row. */
 function samplePoints(areas: readonly ExPolygon[], g: number, origin: Pt): Pt[] {
+  const rings = ringsOf(areas);
   let minY = Infinity, maxY = -Infinity;
-  const rings: Pt[][] = [];
-  for (const a of areas) {
-    rings.push(a.outer, ...a.holes);
-    for (const p of a.outer) {
-      if (p.y < minY) minY = p.y;
-      if (p.y > maxY) maxY = p.y;
-    }
+  for (const r of rings) for (const p of r) {
+    if (p.y < minY) minY = p.y;
+    if (p.y > maxY) maxY = p.y;
   }
   const out: Pt[] = [];
   const xs: number[] = [];
   for (let j = Math.ceil((minY - origin.y) / g); origin.y + j * g <= maxY; j++) {
     const y = origin.y + j * g;
-    xs.length = 0;
-    for (const ring of rings) {
-      for (let i = 0, k = ring.length - 1; i < ring.length; k = i++) {
-        const a = ring[k], b = ring[i];
-        if (a.y > y !== b.y > y) xs.push(a.x + ((y - a.y) / (b.y - a.y)) * (b.x - a.x));
-      }
-    }
-    xs.sort((p, q) => p - q);
+    rowCrossings(rings, y, xs);
     for (let k = 0; k + 1 < xs.length; k += 2) {
       for (let i = Math.ceil((xs[k] - origin.x) / g); origin.x + i * g <= xs[k + 1]; i++) out.push({ x: origin.x + i * g, y });
     }

@@ -7,6 +7,7 @@
 import type { ExPolygon, Pt } from '../geometry/types.js';
 import type { InfillResult } from './types.js';
 import { area as regionArea } from '../geometry/clip.js';
+import { ringsOf, rowCrossings } from './geom-util.js';
 
 interface Raster {
   minX: number;
@@ -68,19 +69,10 @@ function drawCapsule(R: Raster, A: Pt, B: Pt, r: number): void {
 }
 
 function drawRegion(R: Raster, region: readonly ExPolygon[]): void {
-  const rings: Pt[][] = [];
-  for (const e of region) rings.push(e.outer, ...e.holes);
+  const rings = ringsOf(region);
   const xs: number[] = [];
   for (let j = 0; j < R.H; j++) {
-    const y = R.minY + (j + 0.5) * R.p;
-    xs.length = 0;
-    for (const ring of rings) {
-      for (let i = 0, k = ring.length - 1; i < ring.length; k = i++) {
-        const a = ring[k], b = ring[i];
-        if (a.y > y !== b.y > y) xs.push(a.x + ((y - a.y) / (b.y - a.y)) * (b.x - a.x));
-      }
-    }
-    xs.sort((p, q) => p - q);
+    rowCrossings(rings, R.minY + (j + 0.5) * R.p, xs);
     for (let i = 0; i + 1 < xs.length; i += 2) fillRow(R, j, xs[i], xs[i + 1], 2);
   }
 }

@@ -4,6 +4,7 @@
  * queries, and horizontal bands for point-in-region tests. Built once per layer call, plain arrays only.
  */
 import type { ExPolygon, Polygon } from '../geometry/types.js';
+import { closestOnSegment } from './geom-util.js';
 
 /** One closed ring: vertex coordinates and cumulative arc length (cum[i] = length up to vertex i, cum[n] = total). */
 export interface Ring {
@@ -342,16 +343,10 @@ export function nearestBoundary(ix: RegionIndex, x: number, y: number, maxDist: 
           const e = ix.cellEdges[k];
           if (ix.stamp[e] === stamp) continue;
           ix.stamp[e] = stamp;
-          const ax = ix.ex0[e], ay = ix.ey0[e], ux = ix.ex1[e] - ax, uy = ix.ey1[e] - ay;
-          const l2 = ux * ux + uy * uy;
-          let u = l2 > 0 ? ((x - ax) * ux + (y - ay) * uy) / l2 : 0;
-          if (u < 0) u = 0;
-          else if (u > 1) u = 1;
-          const px = ax + u * ux, py = ay + u * uy;
-          const d2 = (px - x) * (px - x) + (py - y) * (py - y);
-          if (d2 < bestD2 || (d2 === bestD2 && best && e < best.edge)) {
-            bestD2 = d2;
-            best = { x: px, y: py, dist: Math.sqrt(d2), edge: e, u };
+          const q = closestOnSegment(ix.ex0[e], ix.ey0[e], ix.ex1[e], ix.ey1[e], x, y);
+          if (q.d2 < bestD2 || (q.d2 === bestD2 && best && e < best.edge)) {
+            bestD2 = q.d2;
+            best = { x: q.x, y: q.y, dist: Math.sqrt(q.d2), edge: e, u: q.t };
           }
         }
       }

@@ -8,7 +8,7 @@ import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/ty
 import { generateInfill, solidFill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import type { IslandPaths, LayerPaths } from '../paths/types.js';
-import { allSkin, coveredByAll, skinAreas } from '../regions/skin-areas.js';
+import { allSkin, CoverWindows, skinAreas } from '../regions/skin-areas.js';
 import { computeWalls } from '../regions/walls.js';
 import type { Config } from '../settings/resolve.js';
 import { slicePrepared, type PreparedMesh } from '../slice/index.js';
@@ -65,18 +65,16 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, cus
   const sectionAt = (i: number): ExPolygon[] => (i >= lo && i < hi ? sections[i - lo].islands : []);
   const paths: LayerPaths[] = [];
   const regions: LayerRegions[] = [];
+  const topWindows = new CoverWindows(sectionAt, cfg.topLayers, n);
+  const bottomWindows = cfg.bottomLayers === cfg.topLayers ? topWindows : new CoverWindows(sectionAt, cfg.bottomLayers, n);
   const infillOn = cfg.infillDensity > 0;
   for (let i = job.from; i < job.to; i++) {
     const section = sections[i - lo];
     const w = lineWidthUm(cfg, i);
-    const above: ExPolygon[][] = [];
-    for (let k = 1; k <= cfg.topLayers && i + k < n; k++) above.push(sectionAt(i + k));
-    const below: ExPolygon[][] = [];
-    for (let k = 1; k <= cfg.bottomLayers && i - k >= 0; k++) below.push(sectionAt(i - k));
     const walls = computeWalls(section.islands, cfg.walls, w);
     const anyInner = walls.some((iw) => iw.inner.length > 0);
-    const coveredAbove = anyInner && cfg.topLayers > 0 ? coveredByAll(above, cfg.topLayers) : [];
-    const coveredBelow = anyInner && cfg.bottomLayers > 0 ? coveredByAll(below, cfg.bottomLayers) : [];
+    const coveredAbove = anyInner ? topWindows.window(i + 1) : [];
+    const coveredBelow = anyInner ? bottomWindows.window(i - cfg.bottomLayers) : [];
     const overlapSkin = (cfg.skinOverlap / 100) * w;
     const overlapInfill = (cfg.infillOverlap / 100) * w;
     const islands: IslandPaths[] = [];

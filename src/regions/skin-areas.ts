@@ -13,25 +13,9 @@ export interface SkinAreas {
 }
 
 /**
- * The region covered by material on every one of the given layers (their sections intersected).
- * An empty or missing layer covers nothing.
- */
-export function coveredByAll(sections: readonly (readonly ExPolygon[])[], count: number): ExPolygon[] {
-  if (sections.length < count) return [];
-  let covered: ExPolygon[] | null = null;
-  for (let k = 0; k < count; k++) {
-    const s = sections[k];
-    if (s.length === 0) return [];
-    covered = covered === null ? s.slice() : intersection(covered, s);
-    if (covered.length === 0) return [];
-  }
-  return covered ?? [];
-}
-
-/**
  * Skin areas of one island.
  * @param inner the island's area inside its walls, µm
- * @param coveredAbove area with material on each of the `topLayers` layers above (coveredByAll), µm
+ * @param coveredAbove area with material on each of the `topLayers` layers above (CoverWindows.window), µm
  * @param coveredBelow the same for the `bottomLayers` layers below
  * @param minWidthUm features of skin narrower than this are dropped (they are slivers along the walls)
  */
@@ -50,6 +34,58 @@ export function skinAreas(
   const topOnly = bottom.length && top.length ? difference(top, bottom) : top;
   const clean = (a: ExPolygon[]) => (a.length && minWidthUm > 0 ? opening(a, minWidthUm / 2) : a);
   return { top: clean(topOnly), bottom: clean(bottom) };
+}
+
+/**
+ * Intersections of `count` consecutive layer sections, computed once per window start and shared:
+ * the area covered above layer i (window i+1) is the area covered below layer i+count+1. Windows of
+ * any count are built from pairwise intersections, so each costs about two booleans.
+ */
+export class CoverWindows {
+  readonly #sectionAt: (i: number) => readonly ExPolygon[];
+  readonly #count: number;
+  readonly #layers: number;
+  readonly #pairs = new Map<number, ExPolygon[]>();
+  readonly #windows = new Map<number, ExPolygon[]>();
+
+  /**
+   * @param sectionAt the section of layer i ([] outside the model)
+   * @param count layers per window
+   * @param layers number of layers of the model (a window reaching past them covers nothing)
+   */
+  constructor(sectionAt: (i: number) => readonly ExPolygon[], count: number, layers: number) {
+    this.#sectionAt = sectionAt;
+    this.#count = count;
+    this.#layers = layers;
+  }
+
+  /** ∩ sections[a .. a+1] */
+  #pair(a: number): ExPolygon[] {
+    let p = this.#pairs.get(a);
+    if (!p) {
+      const s0 = this.#sectionAt(a), s1 = this.#sectionAt(a + 1);
+      p = s0.length && s1.length ? intersection(s0, s1) : [];
+      this.#pairs.set(a, p);
+    }
+    return p;
+  }
+
+  /** The area covered by material on every layer a .. a+count-1. */
+  window(a: number): ExPolygon[] {
+    const n = this.#count;
+    if (n <= 0 || a < 0 || a + n > this.#layers) return [];
+    let w = this.#windows.get(a);
+    if (w) return w;
+    if (n === 1) w = this.#sectionAt(a).slice();
+    else {
+      // cover [a, a+n) with pairs starting at a, a+2, …, and a final pair ending at a+n-1
+      w = this.#pair(a);
+      for (let k = a + 2; k + 1 < a + n && w.length; k += 2) w = intersection(w, this.#pair(k));
+      if (n % 2 === 1 && w.length) w = intersection(w, this.#pair(a + n - 2));
+    }
+    this.#windows.set(a, w);
+    return w;
+  }
 }
 
 /** All skin of a layer as one area. */

@@ -21,6 +21,9 @@ import { familySpacing } from '../density.js';
 import { indexRegion, regionGeom } from '../region-index.js';
 import { type DistanceField, distanceField, refineToDepth, restoreCorners } from '../distance-field.js';
 import { traceContours } from '../contour.js';
+import { closestOnSegment } from '../geom-util.js';
+import { pathLength } from '../measure.js';
+import { ringArea } from '../../geometry/clip.js';
 
 /** Spacing factors tried, nearest to 1 first. */
 const SPACING_FACTORS = [1, 0.95, 1.05, 0.9, 1.1, 0.85, 1.15, 0.8, 1.2, 0.75, 1.25];
@@ -106,12 +109,6 @@ function cellLength(a: number, b: number, c: number, d: number): number {
   return n >= 2 ? Math.hypot(x1 - x0, y1 - y0) + extra : 0;
 }
 
-function ringArea2(pts: readonly Pt[]): number {
-  let a = 0;
-  for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) a += (pts[j].x + pts[i].x) * (pts[j].y - pts[i].y);
-  return Math.abs(a / 2);
-}
-
 function ringLength(pts: readonly Pt[]): number {
   let l = 0;
   for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) l += Math.hypot(pts[i].x - pts[j].x, pts[i].y - pts[j].y);
@@ -142,13 +139,8 @@ function nearestOnRing(ring: readonly Pt[], p: Pt): { i: number; x: number; y: n
   let best = { i: 0, x: ring[0].x, y: ring[0].y, d: Infinity };
   for (let i = 0; i < ring.length; i++) {
     const a = ring[i], b = ring[(i + 1) % ring.length];
-    const ux = b.x - a.x, uy = b.y - a.y;
-    const l2 = ux * ux + uy * uy;
-    let t = l2 > 0 ? ((p.x - a.x) * ux + (p.y - a.y) * uy) / l2 : 0;
-    t = Math.max(0, Math.min(1, t));
-    const x = a.x + t * ux, y = a.y + t * uy;
-    const d = Math.hypot(x - p.x, y - p.y);
-    if (d < best.d) best = { i, x, y, d };
+    const q = closestOnSegment(a.x, a.y, b.x, b.y, p.x, p.y);
+    if (q.d2 < best.d * best.d) best = { i, x: q.x, y: q.y, d: Math.sqrt(q.d2) };
   }
   return best;
 }
@@ -246,13 +238,6 @@ function linkLevels(levels: Polygon[][], open: Pt[][], sp: number): { lines: Pt[
   return { lines, loops };
 }
 
-function pathsLength(lines: readonly Pt[][], loops: readonly Pt[][]): number {
-  let l = 0;
-  for (const p of lines) for (let k = 1; k < p.length; k++) l += Math.hypot(p[k].x - p[k - 1].x, p[k].y - p[k - 1].y);
-  for (const p of loops) l += ringLength(p);
-  return l;
-}
-
 export const concentric: InfillPattern = {
   id: 'concentric',
   description: 'Successive insets of the region until empty, each loop linked to the next.',
@@ -287,7 +272,7 @@ export const concentric: InfillPattern = {
           }
           if (pts.length < 3) continue;
           const len = ringLength(pts);
-          if ((2 * ringArea2(pts)) / len < sp / 2) {
+          if ((2 * Math.abs(ringArea(pts))) / len < sp / 2) {
             centreLines.push(oneSide(pts));
             continue;
           }
@@ -298,6 +283,7 @@ export const concentric: InfillPattern = {
             return near[j * field.nx + i] - t < sp / 4;
           });
           if (!thin.some((b) => b)) rings.push(pts);
+          else if (thin.every((b) => b)) centreLines.push(oneSide(pts));
           else splitThin(pts, thin, wideParts, centreLines);
         }
         levels.push(rings);
@@ -307,7 +293,7 @@ export const concentric: InfillPattern = {
       for (const centre of centreLines.length ? [centreLines, []] : [centreLines]) {
         const open = wideParts.concat(centre);
         const out = params.connect ? linkLevels(levels, open, sp) : { lines: open, loops: levels.flat() };
-        const printed = pathsLength(out.lines, out.loops);
+        const printed = pathLength(out);
         if (!best || Math.abs(printed - target) < Math.abs(best.printed - target)) best = { ...out, printed };
       }
       return best as { lines: Pt[][]; loops: Polygon[]; printed: number };

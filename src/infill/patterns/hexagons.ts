@@ -13,6 +13,7 @@
 import type { InfillPattern } from '../types.js';
 import type { Pt } from '../../geometry/types.js';
 import { solveDecreasing } from '../density.js';
+import { frameBounds } from '../geom-util.js';
 
 /** Line length per area of the chains for side a and width w (the footprint has no crossings). */
 function coverage(a: number, w: number): number {
@@ -39,15 +40,7 @@ export const hexagons: InfillPattern = {
     const Ap = Math.max(0, A - w / 2);
     const th = (params.angle * Math.PI) / 180, c = Math.cos(th), s = Math.sin(th);
     const o = params.origin;
-    let uMin = Infinity, uMax = -Infinity, vMin = Infinity, vMax = -Infinity;
-    for (const e of layer.region) for (const p of e.outer) {
-      const dx = p.x - o.x, dy = p.y - o.y;
-      const u = dx * c + dy * s, v = -dx * s + dy * c;
-      if (u < uMin) uMin = u;
-      if (u > uMax) uMax = u;
-      if (v < vMin) vMin = v;
-      if (v > vMax) vMax = v;
-    }
+    const { uMin, uMax, vMin, vMax } = frameBounds(layer.region, o, th);
     const lines: Pt[][] = [];
     if (!(uMin <= uMax)) return { lines, loops: [] };
     // put a cell centre on the origin: cells sit at (2a, A) in chain-0 coordinates
