@@ -109,6 +109,10 @@ export function curaSettings(): { global: readonly string[]; extruder: readonly 
     `top_thickness=${p.topBottomMm}`,
     `bottom_thickness=${p.topBottomMm}`,
     `infill_sparse_density=${p.infillPercent}`,
+    // CuraEngine on its own does not evaluate the definitions' formulas: give the derived values too
+    `infill_line_distance=${+((p.lineWidthMm * 100 * 2) / p.infillPercent).toFixed(4)}`,
+    `top_layers=${Math.ceil(p.topBottomMm / p.layerHeightMm - 1e-9)}`,
+    `bottom_layers=${Math.ceil(p.topBottomMm / p.layerHeightMm - 1e-9)}`,
     'infill_pattern=grid',
     'adhesion_type=skirt',
     'support_enable=false',

@@ -43,6 +43,8 @@ interface Ctx {
 interface Run {
   lines: Pt[][];
   loops: Pt[][];
+  /** The pattern fitted its own spacing (no further runs). */
+  fitted: boolean;
   /** Region share covered by the pattern's own lines (length × width less crossing overlaps). */
   lineShare: number;
   /** Region share covered by boundary connectors. */
@@ -75,9 +77,9 @@ function runPattern(pattern: InfillPattern, layer: InfillLayerInput, params: Inf
   const lineShare = ((own * w) / A) * (1 - (out.overlap ?? 0));
   if (p.connect && out.link !== false && out.linkSpacing && out.linkSpacing > 0) {
     const linked = linkPieces(ctx.geom, pieces, LINK_REACH * out.linkSpacing);
-    return { lines: linked.lines, loops: out.loops, lineShare, connectorShare: connectorShare(linked.connectorLength, w, A), factor };
+    return { lines: linked.lines, loops: out.loops, fitted: !!out.fitted, lineShare, connectorShare: connectorShare(linked.connectorLength, w, A), factor };
   }
-  return { lines: pieces.map((pc) => pc.pts), loops: out.loops, lineShare, connectorShare: 0, factor };
+  return { lines: pieces.map((pc) => pc.pts), loops: out.loops, fitted: !!out.fitted, lineShare, connectorShare: 0, factor };
 }
 
 /**
@@ -117,7 +119,7 @@ function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: I
     return runPattern(pattern, layer, params, prepared, ctx, f);
   }
   const r0 = runPattern(pattern, layer, params, prepared, ctx, 1);
-  if (model === 'support') return r0;
+  if (model === 'support' || r0.fitted) return r0;
   const total = (r: Run) => (model === 'layer' ? r.lineShare : d * r.factor) + r.connectorShare;
   const err = (r: Run) => Math.abs(total(r) - d);
   let best = r0;

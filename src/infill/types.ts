@@ -86,6 +86,8 @@ export interface PatternOutput extends InfillResult {
   link?: boolean;
   /** Fraction of the lines' length × width that overlaps at crossings (0 or absent: lines never cross). */
   overlap?: number;
+  /** true: the pattern already fitted its spacing to this region's density; the engine runs it only once. */
+  fitted?: boolean;
 }
 
 /**

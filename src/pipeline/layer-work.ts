@@ -93,6 +93,12 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, cus
         const wallCentre = offset(skinAll, -w / 2);
         skinWalls = rings(wallCentre);
         skinFillArea = offset(wallCentre, -(w - overlapSkin));
+        // pieces too narrow for a skin-wall loop still get their lines
+        if (skinAll.length > 1 || wallCentre.length === 0) {
+          for (const piece of skinAll) {
+            if (offset([piece], -w / 2).length === 0) skinFillArea.push(...offset([piece], -(w / 2 - overlapSkin)));
+          }
+        }
       } else {
         skinFillArea = offset(skinAll, -(w / 2 - overlapSkin));
       }

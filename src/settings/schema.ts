@@ -125,7 +125,7 @@ export const SCHEMA = {
   topSkinThickness: optNum(0, 20, 'mm', 'skin', 'Top skin thickness. Empty (null) = shellSkinThickness.'),
   bottomSkinThickness: optNum(0, 20, 'mm', 'skin', 'Bottom skin thickness. Empty (null) = shellSkinThickness.'),
   skinWall: bool(true, 'skin', 'Print one perimeter around each skin region before its lines.'),
-  skinOverlap: num(15, 0, 100, '%', 'skin', 'How far skin lines reach into the innermost wall, % of the line width.'),
+  skinOverlap: num(25, 0, 100, '%', 'skin', 'How far skin lines reach into the innermost wall, % of the line width.'),
   skinAngle: num(45, -180, 180, '°', 'skin', 'Direction of skin lines on even layers; odd layers are turned 90°.'),
 
   // ── infill ───────────────────────────────────────────────────────────────────
@@ -133,7 +133,7 @@ export const SCHEMA = {
   infillPattern: enm(PATTERN_IDS, 'grid', 'infill', 'Sparse infill pattern.'),
   infillPatternCentering: enm(['object', 'global'] as const, 'object', 'infill', 'Centre the pattern on each object or on the build plate.'),
   infillAngle: num(45, -180, 180, '°', 'infill', 'Base direction of the infill lines.'),
-  infillOverlap: num(15, 0, 100, '%', 'infill', 'How far infill reaches into the innermost wall, % of the line width.'),
+  infillOverlap: num(25, 0, 100, '%', 'infill', 'How far infill reaches into the innermost wall, % of the line width.'),
   infillImagePixelSize: num(0.1, 0.001, 10, 'mm', 'infill', "Size of one pixel of a custom infill image (cells.png), IceSL's labeling_mm_per_pixel."),
   infillConnect: bool(true, 'infill', 'Join infill line ends along the region boundary where that avoids a travel.'),
 

@@ -317,6 +317,6 @@ export const concentric: InfillPattern = {
         if (Math.abs(chosen.printed - target) <= TRACED_GOOD_ENOUGH * target) break;
       }
     }
-    return { lines: chosen.lines, loops: chosen.loops, link: false };
+    return { lines: chosen.lines, loops: chosen.loops, link: false, fitted: true };
   },
 };
