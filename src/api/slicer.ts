@@ -3,7 +3,7 @@
  * `await slicer.slice(input)` → `{ gcode, stats, warnings }`, or `sliceToSink` to stream the G-code.
  */
 import { StrataError } from '../errors.js';
-import { mergeObjects, placeOnBed, prepareMesh, toMeshObjects } from '../mesh/index.js';
+import { mergeObjects, placeOnBed, positionBounds, prepareMesh, toMeshObjects } from '../mesh/index.js';
 import type { Mesh, MeshReport } from '../mesh/types.js';
 import { runPipeline, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
@@ -69,20 +69,6 @@ async function coreCount(): Promise<number> {
     return os.availableParallelism?.() ?? os.cpus().length;
   }
   return nav?.hardwareConcurrency ?? 1;
-}
-
-function meshBounds(mesh: Mesh): { min: [number, number, number]; max: [number, number, number] } {
-  const p = mesh.positions;
-  const min: [number, number, number] = [Infinity, Infinity, Infinity];
-  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
-  for (let i = 0; i < p.length; i += 3) {
-    for (let k = 0; k < 3; k++) {
-      const v = p[i + k];
-      if (v < min[k]) min[k] = v;
-      if (v > max[k]) max[k] = v;
-    }
-  }
-  return { min, max };
 }
 
 type Accessors = { [K in SettingKey as `set${Capitalize<K>}`]: (value: Settings[K]) => Slicer } & {
@@ -186,7 +172,7 @@ export class Slicer {
     const t0 = performance.now();
     const cfg = this.#config;
     const model = prepareModel(input, cfg);
-    const b = meshBounds(model.mesh);
+    const b = positionBounds(model.mesh.positions);
     const threads = cfg.threads > 0 ? cfg.threads : await coreCount();
     const run = await runPipeline(model.mesh, cfg, {
       threads,

@@ -19,7 +19,7 @@ export function prepareMesh(mesh: Mesh): PreparedMesh {
   const welded = weld(mesh.positions, mesh.indices, 'mesh');
   const { mesh: clean, removed } = dropRepeatedCorners(welded);
   const edges = countEdges(clean.indices, clean.positions.length / 3);
-  const { min, max } = bounds(clean.positions);
+  const { min, max } = positionBounds(clean.positions);
   const volume = signedVolume(clean, min, max);
   const triangles = clean.indices.length / 3;
   const report: MeshReport = {
@@ -180,7 +180,8 @@ function countEdges(indices: Uint32Array, nVerts: number): EdgeCounts {
   return { open, nonManifold, flipped };
 }
 
-function bounds(p: Float32Array): { min: [number, number, number]; max: [number, number, number] } {
+/** Bounding box of a position array (x,y,z per vertex), mm. */
+export function positionBounds(p: Float32Array): { min: [number, number, number]; max: [number, number, number] } {
   if (p.length === 0) return { min: [0, 0, 0], max: [0, 0, 0] };
   let x0 = Infinity, y0 = Infinity, z0 = Infinity;
   let x1 = -Infinity, y1 = -Infinity, z1 = -Infinity;
