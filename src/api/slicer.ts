@@ -71,6 +71,9 @@ async function coreCount(): Promise<number> {
   return nav?.hardwareConcurrency ?? 1;
 }
 
+/** Below this (thousands of triangles + layers / 50) a slice runs on one thread when threads = 0 (auto). */
+const SMALL_JOB = 4;
+
 type Accessors = { [K in SettingKey as `set${Capitalize<K>}`]: (value: Settings[K]) => Slicer } & {
   [K in SettingKey as `get${Capitalize<K>}`]: () => Settings[K];
 };
@@ -173,7 +176,10 @@ export class Slicer {
     const cfg = this.#config;
     const model = prepareModel(input, cfg);
     const b = positionBounds(model.mesh.positions);
-    const threads = cfg.threads > 0 ? cfg.threads : await coreCount();
+    // automatic thread count: workers only pay off when there is enough work to share
+    const layersEstimate = b.max[2] / cfg.layerHeight;
+    const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
+    const threads = cfg.threads > 0 ? cfg.threads : small ? 1 : await coreCount();
     const run = await runPipeline(model.mesh, cfg, {
       threads,
       sink,

@@ -33,44 +33,78 @@ export interface Contour {
 export type Refine = (x: number, y: number, nodeA: number, nodeB: number) => ContourPt;
 
 /**
- * Trace the level set `level`. `centre(i, j)` gives the field at the centre of cell (i, j) for saddle
- * cells; `refine` (optional) moves each linearly interpolated crossing onto the true level set.
+ * The two crossed cell sides (0 bottom, 1 right, 2 top, 3 left) for each corner sign pattern
+ * (bit 0: (0,0), bit 1: (1,0), bit 2: (1,1), bit 3: (0,1) at or above the level); saddles 5 and 10 apart.
  */
-export function traceContours(g: ScalarGrid, level: number, centre: (i: number, j: number) => number, refine?: Refine): Contour[] {
+const CASE_EDGES: ReadonlyArray<readonly [number, number]> = [
+  [0, 0], [0, 3], [0, 1], [1, 3], [1, 2], [0, 0], [0, 2], [2, 3],
+  [2, 3], [0, 2], [0, 0], [1, 2], [1, 3], [0, 1], [0, 3], [0, 0],
+];
+
+/** Reusable per-grid work arrays for traceContours (sized for the grid; cleaned after every call). */
+export interface ContourScratch {
+  nb: Int32Array;
+  seen: Uint8Array;
+}
+
+export function contourScratch(g: ScalarGrid): ContourScratch {
+  const nE = g.nx * (g.ny + 1) + (g.nx + 1) * g.ny;
+  return { nb: new Int32Array(2 * nE).fill(-1), seen: new Uint8Array(nE) };
+}
+
+/**
+ * Trace the level set `level`. `centre(i, j)` gives the field at the centre of cell (i, j) for saddle
+ * cells; `refine` (optional) moves each linearly interpolated crossing onto the true level set. `cells`
+ * (optional) limits the work to the listed cells (j·nx + i), which must include every cell the level
+ * crosses; `scratch` avoids allocating the work arrays on every call.
+ */
+export function traceContours(
+  g: ScalarGrid, level: number, centre: (i: number, j: number) => number, refine?: Refine,
+  cells?: ArrayLike<number>, scratch?: ContourScratch,
+): Contour[] {
   const { nx, ny, x0, y0, h, v } = g;
   const W = nx + 1;
   const nH = nx * (ny + 1);
-  const nE = nH + W * ny;
-  const nb = new Int32Array(2 * nE).fill(-1);
+  const { nb, seen } = scratch ?? contourScratch(g);
+  const touched: number[] = [];
   const link = (e1: number, e2: number) => {
-    nb[2 * e1 + (nb[2 * e1] === -1 ? 0 : 1)] = e2;
-    nb[2 * e2 + (nb[2 * e2] === -1 ? 0 : 1)] = e1;
+    if (nb[2 * e1] === -1) {
+      nb[2 * e1] = e2;
+      touched.push(e1);
+    } else nb[2 * e1 + 1] = e2;
+    if (nb[2 * e2] === -1) {
+      nb[2 * e2] = e1;
+      touched.push(e2);
+    } else nb[2 * e2 + 1] = e1;
   };
-  const es: number[] = [];
-  for (let j = 0; j < ny; j++) {
-    for (let i = 0; i < nx; i++) {
-      const a = v[j * W + i] >= level, b = v[j * W + i + 1] >= level;
-      const c = v[(j + 1) * W + i + 1] >= level, d = v[(j + 1) * W + i] >= level;
-      if (a === b && b === c && c === d) continue;
-      const bottom = j * nx + i, top = (j + 1) * nx + i, left = nH + j * W + i, right = nH + j * W + i + 1;
-      const cb = a !== b, cr = b !== c, ct = c !== d, cl = d !== a;
-      if (cb && cr && ct && cl) {
-        if (centre(i, j) >= level === a) {
-          link(bottom, right);
-          link(top, left);
-        } else {
-          link(bottom, left);
-          link(right, top);
-        }
-        continue;
+  const cell = (i: number, j: number) => {
+    const n = j * W + i;
+    const a = v[n] >= level, b = v[n + 1] >= level, c = v[n + W + 1] >= level, d = v[n + W] >= level;
+    const code = (a ? 1 : 0) | (b ? 2 : 0) | (c ? 4 : 0) | (d ? 8 : 0);
+    if (code === 0 || code === 15) return;
+    const bottom = j * nx + i, top = (j + 1) * nx + i, left = nH + n, right = nH + n + 1;
+    if (code === 5 || code === 10) {
+      if (centre(i, j) >= level === a) {
+        link(bottom, right);
+        link(top, left);
+      } else {
+        link(bottom, left);
+        link(right, top);
       }
-      es.length = 0;
-      if (cb) es.push(bottom);
-      if (cr) es.push(right);
-      if (ct) es.push(top);
-      if (cl) es.push(left);
-      if (es.length === 2) link(es[0], es[1]);
+      return;
     }
+    const pair = CASE_EDGES[code];
+    const e0 = pair[0] === 0 ? bottom : pair[0] === 1 ? right : pair[0] === 2 ? top : left;
+    const e1 = pair[1] === 0 ? bottom : pair[1] === 1 ? right : pair[1] === 2 ? top : left;
+    link(e0, e1);
+  };
+  if (cells) {
+    for (let k = 0; k < cells.length; k++) {
+      const c = cells[k], j = Math.floor(c / nx);
+      cell(c - j * nx, j);
+    }
+  } else {
+    for (let j = 0; j < ny; j++) for (let i = 0; i < nx; i++) cell(i, j);
   }
   const pointOf = (e: number) => {
     let na: number, nbN: number, xa: number, ya: number, xb: number, yb: number;
@@ -90,7 +124,6 @@ export function traceContours(g: ScalarGrid, level: number, centre: (i: number, 
     const x = xa + t * (xb - xa), y = ya + t * (yb - ya);
     return refine ? refine(x, y, na, nbN) : { x, y };
   };
-  const seen = new Uint8Array(nE);
   const out: Contour[] = [];
   const walk = (start: number, closed: boolean) => {
     const pts: ContourPt[] = [];
@@ -105,8 +138,15 @@ export function traceContours(g: ScalarGrid, level: number, centre: (i: number, 
     }
     if (pts.length >= 2) out.push({ pts, closed: closed && pts.length > 2 });
   };
-  for (let e = 0; e < nE; e++) if (!seen[e] && nb[2 * e] !== -1 && nb[2 * e + 1] === -1) walk(e, false);
-  for (let e = 0; e < nE; e++) if (!seen[e] && nb[2 * e] !== -1) walk(e, true);
+  // open contours from their ends first (they leave the grid), then the closed ones; edges in id order
+  touched.sort((p, q) => p - q);
+  for (const e of touched) if (!seen[e] && nb[2 * e + 1] === -1) walk(e, false);
+  for (const e of touched) if (!seen[e]) walk(e, true);
+  for (const e of touched) {
+    nb[2 * e] = -1;
+    nb[2 * e + 1] = -1;
+    seen[e] = 0;
+  }
   return out;
 }
 

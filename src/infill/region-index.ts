@@ -257,7 +257,7 @@ function hitEdge(ix: RegionIndex, e: number, x0: number, y0: number, dx: number,
 
 /** All intersections of segment (x0,y0)→(x1,y1) with region edges, sorted by t. Parallel overlaps are ignored. */
 export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number, y1: number, out: Hit[]): void {
-  out.length = 0;
+  if (out.length) out.length = 0;
   // fast path: a short segment well inside one cell that holds no edge cannot cross anything
   const fx0 = (x0 - ix.minX) / ix.cell, fy0 = (y0 - ix.minY) / ix.cell;
   const fx1 = (x1 - ix.minX) / ix.cell, fy1 = (y1 - ix.minY) / ix.cell;

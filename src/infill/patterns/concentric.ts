@@ -20,7 +20,7 @@ import type { Polygon, Pt } from '../../geometry/types.js';
 import { familySpacing } from '../density.js';
 import { indexRegion, regionGeom } from '../region-index.js';
 import { type DistanceField, distanceField, refineToDepth, restoreCorners } from '../distance-field.js';
-import { traceContours } from '../contour.js';
+import { contourScratch, traceContours } from '../contour.js';
 import { closestOnSegment } from '../geom-util.js';
 import { pathLength } from '../measure.js';
 import { ringArea } from '../../geometry/clip.js';
@@ -92,6 +92,24 @@ function predictedLength(f: DistanceField, near: Float64Array, sp: number, phase
     }
   }
   return total;
+}
+
+/** For each depth t_k = (k − phase)·sp (k = 1 … count), the cells whose corner values span it. */
+function cellsByDepth(f: DistanceField, count: number, sp: number, phase: number): number[][] {
+  const { nx, ny, v } = f;
+  const W = nx + 1;
+  const out: number[][] = Array.from({ length: count }, () => []);
+  for (let j = 0; j < ny; j++) {
+    for (let i = 0; i < nx; i++) {
+      const n = j * W + i;
+      const a = v[n], b = v[n + 1], c = v[n + W + 1], d = v[n + W];
+      const lo = Math.min(a, b, c, d), hi = Math.max(a, b, c, d);
+      if (hi <= 0) continue;
+      const k0 = Math.max(1, Math.floor(lo / sp + phase)), k1 = Math.min(count, Math.floor(hi / sp + phase) + 1);
+      for (let k = k0; k <= k1; k++) out[k - 1].push(j * nx + i);
+    }
+  }
+  return out;
 }
 
 /** Length of the zero set in a unit cell with corner values a (0,0), b (1,0), c (1,1), d (0,1). */
@@ -256,14 +274,18 @@ export const concentric: InfillPattern = {
       return (field.v[n] + field.v[n + 1] + field.v[n + W] + field.v[n + W + 1]) / 4;
     };
     const target = (params.density * geom.area) / params.lineWidth;
+    const scratch = contourScratch(field);
     /** Trace the loops of one candidate, depth by depth; thin loops become centre lines. */
     const build = (sp: number, phase: number) => {
       const levels: Polygon[][] = [];
       const wideParts: Pt[][] = [];
       const centreLines: Pt[][] = [];
-      for (const t of depths(sp, phase, field.maxDepth)) {
+      const ts = depths(sp, phase, field.maxDepth);
+      const buckets = cellsByDepth(field, ts.length, sp, phase);
+      for (let li = 0; li < ts.length; li++) {
+        const t = ts[li];
         const rings: Polygon[] = [];
-        for (const c of traceContours(field, t, centre, (x, y, a, b) => refineToDepth(ix, field, x, y, a, b, t))) {
+        for (const c of traceContours(field, t, centre, (x, y, a, b) => refineToDepth(ix, field, x, y, a, b, t), buckets[li], scratch)) {
           const pts: Pt[] = [];
           for (const q of restoreCorners(ix, c.pts, c.closed, 1.5 * field.h)) {
             const p = { x: Math.round(q.x), y: Math.round(q.y) };
