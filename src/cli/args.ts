@@ -28,7 +28,7 @@ export interface ParsedArgs {
 }
 
 /** Command-specific flags that take a value. */
-const VALUE_FLAGS = new Set(['layer', 'width', 'infill-param', 'infill-shader', 'infill-image', 'infill-image-pixel-size', 'infillers', 'scale']);
+const VALUE_FLAGS = new Set(['layer', 'width', 'infill-param', 'infill-shader', 'infill-image', 'infill-density-shader', 'infill-density-layers', 'infill-image-pixel-size', 'infillers', 'scale']);
 const BOOL_FLAGS = new Set(['json', 'travel']);
 
 export function parseArgs(argv: readonly string[]): ParsedArgs {

@@ -44,6 +44,8 @@ Slice options:
   --infill-pattern NAME  a built-in pattern, or an infiller folder NAME/shader.glsl|cells.png
                          (shipped infillers/, ~/.icesl/icesl-infillers, or --infillers DIR)
   --infill-param N=V     set a shader's ui_ parameter; repeatable
+  --infill-density-shader FILE   density() from a shader defining float density(vec3 world), 0-100
+  --infill-density-layers A,B,…  density() per layer (the last value holds for the layers above)
   --<setting> VALUE      every setting has a flag, e.g. --layer-height 0.2 --infill-density 20
                          --infill-pattern gyroid --wall-count 3 (see: strata settings)
 `;
@@ -97,11 +99,21 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>)
     delete opts.infillPattern;
   }
   const assignments = typeof args.flags['infill-param'] === 'string' ? args.flags['infill-param'].split('\n') : [];
+  const densityShader = args.flags['infill-density-shader'];
+  const densityLayers = args.flags['infill-density-layers'];
   if (!spec) {
-    if (assignments.length) throw new StrataError('BAD_SETTING', '--infill-param needs a custom infiller (--infill-shader, --infill-image or an infiller --infill-pattern)');
+    if (assignments.length || densityShader || densityLayers) {
+      throw new StrataError('BAD_SETTING', '--infill-param and --infill-density-shader/-layers need a custom infiller (--infill-shader, --infill-image or an infiller --infill-pattern)');
+    }
     return undefined;
   }
   if (assignments.length) spec.params = parseInfillParams(loadInfiller(spec).params, assignments);
+  if (typeof densityShader === 'string') spec.density = { shader: new TextDecoder().decode(readInput(densityShader)), fileName: basename(densityShader) };
+  else if (typeof densityLayers === 'string') {
+    const list = densityLayers.split(',').map((v) => Number(v.trim()));
+    if (!list.length || list.some((v) => !Number.isFinite(v) || v < 0 || v > 100)) throw new StrataError('BAD_SETTING', '--infill-density-layers expects comma-separated percentages 0-100, one per layer');
+    spec.density = list;
+  }
   return spec;
 }
 

@@ -55,3 +55,18 @@ test('CLI: a shipped infiller by name, with a parameter', () => {
   assert.equal(r.status, 0, r.stderr);
   assert.ok(fillLength(readFileSync(out, 'utf8')) > 100);
 });
+
+test('density() from a JS field, a per-layer list and a density shader changes the paths', async () => {
+  const VORONOI = readFileSync(root + 'infillers/voronoi-foam/shader.glsl', 'utf8');
+  const run = async (density: unknown, threads = 2) =>
+    fillLength((await new Slicer({ threads, adhesionType: 'none', customInfill: { name: 'foam', shader: VORONOI, density: density as never } }).slice(cube)).gcode);
+  const sparse = await run(10), dense = await run(40);
+  assert.ok(dense > 1.5 * sparse, `40 % prints more than 10 %: ${sparse} → ${dense}`);
+  // a JS field runs on the calling thread (functions cannot travel to workers) and still works
+  const field = await run((x: number) => (x < 110 ? 10 : 40));
+  assert.ok(field > sparse * 1.2 && field < dense * 0.9, `graded field between the two: ${field}`);
+  const shader = await run({ shader: 'float density(vec3 w) { return w.x < 110.0 ? 10.0 : 40.0; }' });
+  assert.ok(Math.abs(shader - field) < 0.1 * field, `shader field ${shader} ≈ JS field ${field}`);
+  const layers = await run(Array.from({ length: 100 }, (_, i) => (i < 50 ? 10 : 40)));
+  assert.ok(layers > sparse * 1.2 && layers < dense * 0.9, `per-layer list between the two: ${layers}`);
+});

@@ -49,16 +49,46 @@ export function cleanPaths(lines: readonly Pt[][], loops: readonly Pt[][], minLe
   C.forEach((l, o) => {
     for (let i = 0; i < l.length; i++) add(l[i], l[(i + 1) % l.length], L.length + o, i);
   });
-  const order = new Int32Array(n);
-  for (let i = 0; i < n; i++) order[i] = i;
-  order.sort((a, b) => key[4 * a] - key[4 * b] || key[4 * a + 1] - key[4 * b + 1] || key[4 * a + 2] - key[4 * b + 2] || key[4 * a + 3] - key[4 * b + 3] || a - b);
+  // find equal segments: sort by a hash of the four coordinates (native numeric sort of hash·2²⁰ + index),
+  // then compare exactly within runs of equal hash; the lowest index of a set of copies is kept
   const drop = new Uint8Array(n);
   let any = false;
-  for (let i = 1; i < n; i++) {
-    const a = order[i - 1], b = order[i];
-    if (key[4 * a] === key[4 * b] && key[4 * a + 1] === key[4 * b + 1] && key[4 * a + 2] === key[4 * b + 2] && key[4 * a + 3] === key[4 * b + 3]) {
-      drop[b] = 1; // keep the first (lowest index) copy
-      any = true;
+  const same = (a: number, b: number) =>
+    key[4 * a] === key[4 * b] && key[4 * a + 1] === key[4 * b + 1] && key[4 * a + 2] === key[4 * b + 2] && key[4 * a + 3] === key[4 * b + 3];
+  if (n < 1 << 20) {
+    const sk = new Float64Array(n);
+    for (let i = 0; i < n; i++) {
+      let h = Math.imul(key[4 * i] | 0, 73856093) ^ Math.imul(key[4 * i + 1] | 0, 19349663);
+      h ^= Math.imul(key[4 * i + 2] | 0, 83492791) ^ Math.imul(key[4 * i + 3] | 0, 49979687);
+      sk[i] = (h >>> 0) * 1048576 + i;
+    }
+    sk.sort();
+    for (let r = 0; r < n; ) {
+      const hr = Math.floor(sk[r] / 1048576);
+      let e = r + 1;
+      while (e < n && Math.floor(sk[e] / 1048576) === hr) e++;
+      for (let a = r; a < e; a++) {
+        const ia = sk[a] % 1048576;
+        if (drop[ia]) continue;
+        for (let b = a + 1; b < e; b++) {
+          const ib = sk[b] % 1048576;
+          if (!drop[ib] && same(ia, ib)) {
+            drop[ib] = 1;
+            any = true;
+          }
+        }
+      }
+      r = e;
+    }
+  } else {
+    const order = new Int32Array(n);
+    for (let i = 0; i < n; i++) order[i] = i;
+    order.sort((a, b) => key[4 * a] - key[4 * b] || key[4 * a + 1] - key[4 * b + 1] || key[4 * a + 2] - key[4 * b + 2] || key[4 * a + 3] - key[4 * b + 3] || a - b);
+    for (let i = 1; i < n; i++) {
+      if (same(order[i - 1], order[i])) {
+        drop[order[i]] = 1;
+        any = true;
+      }
     }
   }
   let outLines: Pt[][] = L;

@@ -113,7 +113,7 @@ function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: I
     let share = 0;
     for (let k = 0; k < VOLUME_REFERENCES; k++) {
       const z = layer.layerHeight + (k * period) / VOLUME_REFERENCES;
-      share += runPattern(pattern, { ...layer, layerIndex: 0, z }, params, prepared, ctx, 1).connectorShare / VOLUME_REFERENCES;
+      share += runPattern(pattern, { ...layer, layerIndex: 0, z, draft: true }, params, prepared, ctx, 1).connectorShare / VOLUME_REFERENCES;
     }
     const f = share > CORRECTION_SETTLED * d ? quantize(1 - share / d) : 1;
     return runPattern(pattern, layer, params, prepared, ctx, f);

@@ -29,6 +29,11 @@ export interface InfillLayerInput {
   layerHeight: number;
   /** The area to fill, µm. Lines must stay inside it. */
   region: ExPolygon[];
+  /**
+   * Set by the engine for throwaway runs that only measure where lines meet the boundary (the connector
+   * estimate of 'volume' patterns): a pattern may then trace its curves more coarsely.
+   */
+  draft?: boolean;
 }
 
 /** Settings-derived parameters, the same for every layer of one object. */

@@ -2,15 +2,34 @@
  * Custom infill in IceSL's infiller format (a GLSL cellular() shader or a cells.png image), as plain
  * data that crosses a worker boundary: each thread compiles it once into a per-layer generator.
  */
-import { customInfillGenerator, loadInfiller, type CustomInfillGenerator, type InfillerFiles } from '../shader/index.js';
+import { compileShader, customInfillGenerator, loadInfiller, type CustomInfillGenerator, type DensityInput, type InfillerFiles } from '../shader/index.js';
 import type { Config } from '../settings/resolve.js';
+
+/** What density() returns (0–100): a constant, one value per layer, a density shader, or a JS field. */
+export type CustomDensity = number | readonly number[] | { shader: string; fileName?: string } | ((x: number, y: number, z: number) => number);
 
 export interface CustomInfillSpec extends InfillerFiles {
   /** Values for the shader's ui_ parameters (names with or without the ui_ prefix). */
   params?: Readonly<Record<string, number | boolean>>;
+  /**
+   * The field density(world) reads; default: the infillDensity setting. A JS function cannot be
+   * sent to worker threads, so a slice that uses one runs on the calling thread.
+   */
+  density?: CustomDensity;
+}
+
+/** Whether the spec can be sent to workers (plain data only). */
+export function isTransferable(spec: CustomInfillSpec): boolean {
+  return typeof spec.density !== 'function';
+}
+
+function densityInput(d: CustomDensity | undefined): DensityInput | undefined {
+  if (d === undefined || typeof d === 'number' || typeof d === 'function' || Array.isArray(d)) return d as DensityInput | undefined;
+  const s = d as { shader: string; fileName?: string };
+  return compileShader(s.shader, { entry: 'density', fileName: s.fileName ?? 'density.glsl' });
 }
 
 /** Compile the spec into the generator the layer work calls instead of a built-in pattern. */
 export function customGenerator(spec: CustomInfillSpec, cfg: Config): CustomInfillGenerator {
-  return customInfillGenerator(loadInfiller(spec), { params: spec.params, pixelSize: cfg.infillImagePixelSize });
+  return customInfillGenerator(loadInfiller(spec), { params: spec.params, pixelSize: cfg.infillImagePixelSize, density: densityInput(spec.density) });
 }

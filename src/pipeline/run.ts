@@ -20,7 +20,7 @@ import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from 
 import type { LayerZ } from '../slice/types.js';
 import { createPool, type LayerPool } from '../workers/pool.js';
 import { computeRange, lineWidthUm, type RangeJob, type RangeResult } from './layer-work.js';
-import { customGenerator, type CustomInfillSpec } from './custom-infill.js';
+import { customGenerator, isTransferable, type CustomInfillSpec } from './custom-infill.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 
 export const VERSION = '0.1.0';
@@ -108,7 +108,8 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   const pattern = PATTERNS[cfg.infillPattern as PatternId];
   const split = ranges(layers.length, opts.threads);
   // N threads: the calling thread and N-1 workers
-  const workers = Math.min(opts.threads, split.length) - 1;
+  // (a custom density given as a JS function cannot travel to a worker)
+  const workers = opts.custom && !isTransferable(opts.custom) ? 0 : Math.min(opts.threads, split.length) - 1;
   const pool = workers > 0 ? await createPool(workers, mesh, cfg, opts.custom) : null;
   let sliceable: PreparedMesh | null = null;
   const local = () => (sliceable ??= prepareForSlicing(mesh));
