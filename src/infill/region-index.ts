@@ -274,15 +274,32 @@ export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number,
       return;
     }
   }
+  // general case: the cells of each row the segment passes (as in forCells, inlined: this is hot)
   const stamp = ++ix.stampNow.v;
-  forCells(ix, x0, y0, x1, y1, (c) => {
-    for (let k = ix.cellStart[c], end = ix.cellStart[c + 1]; k < end; k++) {
-      const e = ix.cellEdges[k];
-      if (ix.stamp[e] === stamp) continue;
-      ix.stamp[e] = stamp;
-      hitEdge(ix, e, x0, y0, dx, dy, out);
+  const yLo = Math.min(y0, y1), yHi = Math.max(y0, y1);
+  const r0 = Math.max(0, Math.floor((yLo - GRID_PAD_UM - ix.minY) / ix.cell));
+  const r1 = Math.min(ix.ny - 1, Math.floor((yHi + GRID_PAD_UM - ix.minY) / ix.cell));
+  for (let r = r0; r <= r1; r++) {
+    let xa: number, xb: number;
+    if (dy === 0) {
+      xa = x0;
+      xb = x1;
+    } else {
+      const ya = Math.max(yLo, ix.minY + r * ix.cell - GRID_PAD_UM), yb = Math.min(yHi, ix.minY + (r + 1) * ix.cell + GRID_PAD_UM);
+      xa = x0 + ((ya - y0) / dy) * dx;
+      xb = x0 + ((yb - y0) / dy) * dx;
     }
-  });
+    const c0 = Math.max(0, Math.floor((Math.min(xa, xb) - GRID_PAD_UM - ix.minX) / ix.cell));
+    const c1 = Math.min(ix.nx - 1, Math.floor((Math.max(xa, xb) + GRID_PAD_UM - ix.minX) / ix.cell));
+    for (let c = r * ix.nx + c0, cEnd = r * ix.nx + c1; c <= cEnd; c++) {
+      for (let k = ix.cellStart[c], end = ix.cellStart[c + 1]; k < end; k++) {
+        const e = ix.cellEdges[k];
+        if (ix.stamp[e] === stamp) continue;
+        ix.stamp[e] = stamp;
+        hitEdge(ix, e, x0, y0, dx, dy, out);
+      }
+    }
+  }
   if (out.length > 1) out.sort((a, b) => a.t - b.t || a.edge - b.edge);
 }
 

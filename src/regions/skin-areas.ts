@@ -28,12 +28,17 @@ export function skinAreas(
   minWidthUm: number,
 ): SkinAreas {
   if (inner.length === 0) return { top: [], bottom: [] };
-  const top = topLayers > 0 ? difference(inner, coveredAbove) : [];
-  // A region that is both top and bottom is printed once, as bottom (it rests on nothing).
-  const bottom = bottomLayers > 0 ? difference(inner, coveredBelow) : [];
-  const topOnly = bottom.length && top.length ? difference(top, bottom) : top;
-  const clean = (a: ExPolygon[]) => (a.length && minWidthUm > 0 ? opening(a, minWidthUm / 2) : a);
-  return { top: clean(topOnly), bottom: clean(bottom) };
+  const topRaw = topLayers > 0 ? difference(inner, coveredAbove) : [];
+  const bottomRaw = bottomLayers > 0 ? difference(inner, coveredBelow) : [];
+  if (topRaw.length === 0 && bottomRaw.length === 0) return { top: [], bottom: [] };
+  // Drop slivers from the skin as a whole (cleaning top and bottom apart would also drop the seam
+  // between them), then split it: a region that is both is printed once, as bottom (it rests on nothing).
+  const raw = topRaw.length === 0 ? bottomRaw : bottomRaw.length === 0 ? topRaw : union(topRaw, bottomRaw);
+  const all = minWidthUm > 0 ? opening(raw, minWidthUm / 2) : raw;
+  if (bottomRaw.length === 0) return { top: all, bottom: [] };
+  if (topRaw.length === 0) return { top: [], bottom: all };
+  const bottom = intersection(all, bottomRaw);
+  return { top: difference(all, bottom), bottom };
 }
 
 /**
