@@ -99,12 +99,13 @@ function quantize(f: number): number {
  * Run the pattern and steer its density factor so that lines plus connectors cover the setting (see the
  * head of this file). 'layer' patterns are steered on what they actually cover (which also absorbs the
  * phase error of few lines in a small region), at most MAX_RUNS runs, the best one wins; 'volume' patterns
- * only pay for their connectors, measured at a reference height, since their layers vary on purpose;
- * 'support' patterns are left alone.
+ * only pay for their connectors, measured at reference heights, since their layers vary on purpose;
+ * 'support' patterns and patterns that fitted themselves are left alone.
  */
 function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: InfillParams, prepared: unknown, ctx: Ctx): Run {
   const d = params.density;
   const model = pattern.densityModel ?? 'layer';
+  if (model === 'volume' && !params.connect) return runPattern(pattern, layer, params, prepared, ctx, 1);
   if (model === 'volume') {
     // The pattern changes with Z, and so would its connectors and any correction measured on this layer:
     // its period would then jump from layer to layer and break the 3D structure. The connectors are
@@ -120,7 +121,7 @@ function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: I
   }
   const r0 = runPattern(pattern, layer, params, prepared, ctx, 1);
   if (model === 'support' || r0.fitted) return r0;
-  const total = (r: Run) => (model === 'layer' ? r.lineShare : d * r.factor) + r.connectorShare;
+  const total = (r: Run) => r.lineShare + r.connectorShare;
   const err = (r: Run) => Math.abs(total(r) - d);
   let best = r0;
   let cur = r0;
@@ -136,9 +137,8 @@ function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: I
     let f: number;
     if (below && above && below.factor < above.factor) f = quantize((below.factor + above.factor) / 2);
     else {
-      const lines = model === 'layer' ? cur.lineShare : d * cur.factor;
-      if (!(lines > 0)) break;
-      f = quantize((cur.factor * (d - cur.connectorShare)) / lines);
+      if (!(cur.lineShare > 0)) break;
+      f = quantize((cur.factor * (d - cur.connectorShare)) / cur.lineShare);
     }
     if (tried.has(f)) break;
     tried.add(f);
