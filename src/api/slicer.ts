@@ -176,10 +176,12 @@ export class Slicer {
     const cfg = this.#config;
     const model = prepareModel(input, cfg);
     const b = positionBounds(model.mesh.positions);
-    // automatic thread count: workers only pay off when there is enough work to share
+    // Automatic thread count: workers only pay off with enough work to share, and with more than two
+    // cores (the per-layer work is allocation-heavy: on two cores, two threads measured slower than one).
     const layersEstimate = b.max[2] / cfg.layerHeight;
     const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
-    const threads = cfg.threads > 0 ? cfg.threads : small ? 1 : await coreCount();
+    const cores = small ? 1 : await coreCount();
+    const threads = cfg.threads > 0 ? cfg.threads : cores > 2 ? cores : 1;
     const run = await runPipeline(model.mesh, cfg, {
       threads,
       sink,

@@ -75,7 +75,7 @@ function infillParamsFor(cfg: Config, objectCenter: [number, number]): InfillPar
 /** Split [0, n) into ranges: several per thread for balance, each a few layers at least. */
 function ranges(n: number, threads: number): Array<[number, number]> {
   if (threads <= 1) return [[0, n]];
-  const pieces = Math.min(n, threads * 6);
+  const pieces = Math.min(n, threads * 4);
   const out: Array<[number, number]> = [];
   for (let k = 0; k < pieces; k++) {
     const a = Math.floor((k * n) / pieces), b = Math.floor(((k + 1) * n) / pieces);

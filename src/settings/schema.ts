@@ -110,7 +110,7 @@ export const SCHEMA = {
   firstLayerHeight: num(0.2, 0.02, 1.2, 'mm', 'slice', 'Thickness of the first layer, printed at Z = firstLayerHeight.'),
   lineWidth: optNum(0.1, 3, 'mm', 'walls', 'Extrusion line width. Empty (null) = nozzleDiameter.'),
   firstLayerLineWidth: optNum(0.1, 3, 'mm', 'walls', 'Line width on the first layer. Empty (null) = lineWidth.'),
-  meshTolerance: num(0.01, 0.0005, 0.5, 'mm', 'slice', 'Outlines are simplified to this deviation before offsetting.'),
+  meshTolerance: num(0.025, 0.0005, 0.5, 'mm', 'slice', 'Outlines are simplified to this deviation before offsetting (CuraEngine uses the same 0.025 mm).'),
   center: bool(true, 'mesh', 'Place the models (kept together) on the bed centre; false keeps their coordinates.'),
 
   // ── walls ────────────────────────────────────────────────────────────────────
@@ -177,7 +177,7 @@ export const SCHEMA = {
   brimWidth: num(8, 0, 50, 'mm', 'adhesion', 'Brim width.'),
 
   // ── runtime ──────────────────────────────────────────────────────────────────
-  threads: int(0, 0, 256, 'count', 'runtime', 'Worker threads for the per-layer stages (0 = one per core). The G-code is the same for any count.'),
+  threads: int(0, 0, 256, 'count', 'runtime', 'Threads for the per-layer stages (0 = automatic: one per core above two cores, else one). The G-code is the same for any count.'),
 } as const satisfies Record<string, SettingDef>;
 
 export type SettingKey = keyof typeof SCHEMA;
