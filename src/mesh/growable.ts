@@ -3,15 +3,23 @@
  * their element count up front.
  */
 
-/** A growing list of float32 values. */
-export class GrowableF32 {
-  data: Float32Array;
+type NumericArray = Float32Array | Float64Array | Uint32Array;
+
+/** A growing list of numbers backed by one kind of typed array. */
+class Growable<A extends NumericArray> {
+  data: A;
   length = 0;
-  constructor(capacity = 1024) {
-    this.data = new Float32Array(Math.max(16, capacity));
+  readonly #make: (n: number) => A;
+  constructor(make: (n: number) => A, capacity: number) {
+    this.#make = make;
+    this.data = make(Math.max(16, capacity));
+  }
+  push(a: number): void {
+    if (this.length + 1 > this.data.length) this.#grow(this.length + 1);
+    this.data[this.length++] = a;
   }
   push3(a: number, b: number, c: number): void {
-    if (this.length + 3 > this.data.length) this.grow(this.length + 3);
+    if (this.length + 3 > this.data.length) this.#grow(this.length + 3);
     const d = this.data;
     const n = this.length;
     d[n] = a;
@@ -19,69 +27,31 @@ export class GrowableF32 {
     d[n + 2] = c;
     this.length = n + 3;
   }
-  private grow(min: number): void {
-    const next = new Float32Array(Math.max(min, this.data.length * 2));
+  #grow(min: number): void {
+    const next = this.#make(Math.max(min, this.data.length * 2));
     next.set(this.data.subarray(0, this.length));
     this.data = next;
   }
   /** A copy trimmed to the used length. */
-  toArray(): Float32Array {
-    return this.data.slice(0, this.length);
+  toArray(): A {
+    return this.data.slice(0, this.length) as A;
   }
 }
 
-/** A growing list of float64 values. */
-export class GrowableF64 {
-  data: Float64Array;
-  length = 0;
+export class GrowableF32 extends Growable<Float32Array> {
   constructor(capacity = 1024) {
-    this.data = new Float64Array(Math.max(16, capacity));
-  }
-  push3(a: number, b: number, c: number): void {
-    if (this.length + 3 > this.data.length) this.grow(this.length + 3);
-    const d = this.data;
-    const n = this.length;
-    d[n] = a;
-    d[n + 1] = b;
-    d[n + 2] = c;
-    this.length = n + 3;
-  }
-  private grow(min: number): void {
-    const next = new Float64Array(Math.max(min, this.data.length * 2));
-    next.set(this.data.subarray(0, this.length));
-    this.data = next;
-  }
-  toArray(): Float64Array {
-    return this.data.slice(0, this.length);
+    super((n) => new Float32Array(n), capacity);
   }
 }
 
-/** A growing list of uint32 values. */
-export class GrowableU32 {
-  data: Uint32Array;
-  length = 0;
+export class GrowableF64 extends Growable<Float64Array> {
   constructor(capacity = 1024) {
-    this.data = new Uint32Array(Math.max(16, capacity));
+    super((n) => new Float64Array(n), capacity);
   }
-  push(a: number): void {
-    if (this.length + 1 > this.data.length) this.grow(this.length + 1);
-    this.data[this.length++] = a;
-  }
-  push3(a: number, b: number, c: number): void {
-    if (this.length + 3 > this.data.length) this.grow(this.length + 3);
-    const d = this.data;
-    const n = this.length;
-    d[n] = a;
-    d[n + 1] = b;
-    d[n + 2] = c;
-    this.length = n + 3;
-  }
-  private grow(min: number): void {
-    const next = new Uint32Array(Math.max(min, this.data.length * 2));
-    next.set(this.data.subarray(0, this.length));
-    this.data = next;
-  }
-  toArray(): Uint32Array {
-    return this.data.slice(0, this.length);
+}
+
+export class GrowableU32 extends Growable<Uint32Array> {
+  constructor(capacity = 1024) {
+    super((n) => new Uint32Array(n), capacity);
   }
 }
