@@ -64,3 +64,23 @@ test('preview writes an SVG of the chosen layer', () => {
   assert.match(svg, /^<svg /);
   assert.match(svg, /#1f77b4/, 'infill drawn');
 });
+
+test('--config, --set and a model on standard input', () => {
+  const dir = mkdtempSync(join(tmpdir(), 'strata-'));
+  const cfg = join(dir, 'profile.json');
+  writeFileSync(cfg, JSON.stringify({ printer: 'prusa-mk4', layerHeight: 0.25, infillDensity: 10 }));
+  const out = join(dir, 'o.gcode');
+  const r = spawnSync(process.execPath, [CLI, 'slice', '-', '-o', out, '--config', cfg, '--set', 'wallCount=3', '--threads', '1'], {
+    input: readFileSync(CUBE),
+    encoding: 'utf8',
+  });
+  assert.equal(r.status, 0, r.stderr);
+  assert.match(r.stderr, /80 layers/);
+  const g = readFileSync(out, 'utf8');
+  assert.match(g, /^;Layer height: 0\.25$/m);
+  const bad = join(dir, 'bad.json');
+  writeFileSync(bad, '{ "layerHeight": ');
+  const e = run('slice', CUBE, '--config', bad, '-o', join(dir, 'x.gcode'));
+  assert.equal(e.status, 1);
+  assert.match(e.stderr, /not valid JSON/);
+});
