@@ -21,7 +21,7 @@ function binaryStl(n: number): Uint8Array {
 const STUB_CLI = `
 const args = process.argv.slice(2);
 const out = args[args.indexOf('-o') + 1];
-if (args[0] !== 'slice' || !out || !args.includes('--threads')) { console.error('stub: bad arguments ' + args.join(' ')); process.exit(2); }
+if (args[0] !== 'slice' || !out) { console.error('stub: bad arguments ' + args.join(' ')); process.exit(2); }
 if (args[1].includes('broken')) { console.error('stub: cannot slice ' + args[1]); process.exit(1); }
 require('node:fs').writeFileSync(out, ';stub ' + args.join(' ') + '\\n');
 `;

@@ -112,7 +112,8 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   const strataJob = (model: BenchModel, tag: string, extra: readonly string[]): Job | SlicerStats => {
     if (!strataBuilt) return notRun('missing', 'strata CLI not built');
     const out = join(outDir, `${safeName(model.name)}.${tag}.gcode`);
-    const args = [strataPath, 'slice', model.path, '-o', out, '--threads', String(threads), ...extra];
+    // without --threads, Strata picks its own default (what a user gets); CuraEngine gets one per core
+    const args = [strataPath, 'slice', model.path, '-o', out, ...(options.threads !== null ? ['--threads', String(options.threads)] : []), ...extra];
     return { label: ['Strata', ...extra].join(' '), command: process.execPath, args };
   };
   const curaJob = (model: BenchModel): Job | SlicerStats => {
@@ -156,6 +157,7 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
       loadAverage: { start: loadAtStart, end: loadavg()[0]! },
     },
     threads,
+    threadsGiven: options.threads !== null,
     repeat: options.repeat,
     memoryMethod,
     strataCli: { path: strataPath, built: strataBuilt },

@@ -54,6 +54,8 @@ export interface BenchReport {
     loadAverage: { start: number; end: number };
   };
   threads: number;
+  /** Whether --threads was given (else Strata used its automatic thread count). */
+  threadsGiven?: boolean;
   repeat: number;
   memoryMethod: MemoryMethod;
   strataCli: { path: string; built: boolean };
@@ -130,7 +132,7 @@ function failureNotes(report: BenchReport): string[] {
 export function renderReport(report: BenchReport): string {
   const out: string[] = [];
   const runs = report.repeat === 1 ? '1 run' : `median of ${report.repeat} runs`;
-  out.push(`Strata benchmark: ${report.threads} thread(s), ${runs} per slicer and model; ${MEMORY_METHOD_TEXT[report.memoryMethod]}`);
+  out.push(`Strata benchmark: ${report.threadsGiven ? `${report.threads} thread(s)` : `Strata automatic threads, CuraEngine ${report.threads}`}, ${runs} per slicer and model; ${MEMORY_METHOD_TEXT[report.memoryMethod]}`);
   const m = report.machine;
   out.push(`machine: ${m.cpus} x ${m.cpuModel}, node ${m.node}, ${m.platform}; load average ${m.loadAverage.start.toFixed(2)} before, ${m.loadAverage.end.toFixed(2)} after`);
   out.push(
