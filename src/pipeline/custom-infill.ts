@@ -31,5 +31,11 @@ function densityInput(d: CustomDensity | undefined): DensityInput | undefined {
 
 /** Compile the spec into the generator the layer work calls instead of a built-in pattern. */
 export function customGenerator(spec: CustomInfillSpec, cfg: Config): CustomInfillGenerator {
-  return customInfillGenerator(loadInfiller(spec), { params: spec.params, pixelSize: cfg.infillImagePixelSize, density: densityInput(spec.density) });
+  return customInfillGenerator(loadInfiller(spec), {
+    params: spec.params,
+    pixelSize: cfg.infillImagePixelSize,
+    // empty: the infiller default (nozzle / 4 for shaders, one pixel for images)
+    resolution: cfg.infillShaderResolution ?? undefined,
+    density: densityInput(spec.density),
+  });
 }

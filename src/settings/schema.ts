@@ -135,6 +135,7 @@ export const SCHEMA = {
   infillAngle: num(45, -180, 180, '°', 'infill', 'Base direction of the infill lines.'),
   infillOverlap: num(25, 0, 100, '%', 'infill', 'How far infill reaches into the innermost wall, % of the line width.'),
   infillImagePixelSize: num(0.1, 0.001, 10, 'mm', 'infill', "Size of one pixel of a custom infill image (cells.png), IceSL's labeling_mm_per_pixel."),
+  infillShaderResolution: optNum(0.005, 2, 'mm', 'infill', 'Grid spacing at which a custom infill shader is sampled before crossings are refined by bisection. Empty (null) = nozzleDiameter / 4 for shaders, one pixel for images.'),
   infillConnect: bool(true, 'infill', 'Join infill line ends along the region boundary where that avoids a travel.'),
 
   // ── speeds ───────────────────────────────────────────────────────────────────
