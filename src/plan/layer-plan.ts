@@ -3,7 +3,6 @@
  * (inner-first or outer-first, seams placed), then sparse infill, then skin; travels combed inside
  * the island, retracted when they leave it or are long.
  */
-import { pointInArea } from '../geometry/clip.js';
 import { UM_PER_MM, type Polygon, type Polyline, type Pt } from '../geometry/types.js';
 import type { IslandPaths, LayerPaths } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
@@ -159,12 +158,8 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState): Lay
     (i) => islandEntry(islands[i]),
     ctx.at,
   );
-  for (const [i] of order) {
-    // A travel into another island: route straight with retraction unless we are already inside it.
-    const island = islands[i];
-    if (ctx.comb && !pointInArea(ctx.at, island.outline)) ctx.comb = null;
-    printIsland(ctx, island);
-  }
+  // travels into another island are not combed (printIsland starts each island without a comb area)
+  for (const [i] of order) printIsland(ctx, islands[i]);
   state.at = ctx.at;
   const plan: LayerPlan = {
     index: layer.index,
