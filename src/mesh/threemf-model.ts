@@ -7,7 +7,7 @@ import { GrowableF64, GrowableU32 } from './growable.js';
 import { from3mf, type Affine } from './transform.js';
 import { printable } from './printable.js';
 import { partKey } from './threemf-package.js';
-import { XML_END, XML_EOF, XML_START, XmlScanner } from './xml-scanner.js';
+import { XML_END, XML_EOF, XmlScanner } from './xml-scanner.js';
 
 const CORE_NS = 'http://schemas.microsoft.com/3dmanufacturing/core/2015/02';
 
