@@ -3,6 +3,7 @@
  * `await slicer.slice(input)` → `{ gcode, stats, warnings }`, or `sliceToSink` to stream the G-code.
  */
 import { StrataError } from '../errors.js';
+import { isNode, nodeBuiltin } from '../runtime.js';
 import { mergeObjects, placeOnBed, positionBounds, prepareMesh, toMeshObjects } from '../mesh/index.js';
 import type { Mesh, MeshReport } from '../mesh/types.js';
 import { runPipeline, type Progress } from '../pipeline/run.js';
@@ -64,8 +65,8 @@ export function prepareModel(input: unknown, cfg: Config): PreparedModel {
 
 async function coreCount(): Promise<number> {
   const nav = (globalThis as { navigator?: { hardwareConcurrency?: number } }).navigator;
-  if (typeof process !== 'undefined' && process.versions?.node) {
-    const os = await import('node:os');
+  if (isNode) {
+    const os = await nodeBuiltin<typeof import('node:os')>('os');
     return os.availableParallelism?.() ?? os.cpus().length;
   }
   return nav?.hardwareConcurrency ?? 1;

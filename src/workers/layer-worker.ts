@@ -1,10 +1,10 @@
 /** Worker entry: Node worker_threads or a browser Web Worker (module type). */
 import { makeHandler } from './handler.js';
+import { isNode, nodeBuiltin } from '../runtime.js';
 import type { FromWorker, ToWorker } from './protocol.js';
 
-const isNode = typeof process !== 'undefined' && !!process.versions?.node;
 if (isNode) {
-  const { parentPort } = await import('node:worker_threads');
+  const { parentPort } = await nodeBuiltin<typeof import('node:worker_threads')>('worker_threads');
   if (parentPort) {
     const port = parentPort;
     const handle = makeHandler((m: FromWorker) => port.postMessage(m));

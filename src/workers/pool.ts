@@ -4,6 +4,7 @@
  * so the output does not depend on how many workers there are.
  */
 import { StrataError } from '../errors.js';
+import { isNode, nodeBuiltin } from '../runtime.js';
 import type { Mesh } from '../mesh/types.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
 import type { Config } from '../settings/resolve.js';
@@ -17,12 +18,11 @@ interface Port {
   terminate(): Promise<unknown> | void;
 }
 
-const isNode = typeof process !== 'undefined' && !!process.versions?.node;
 
 async function spawn(): Promise<Port> {
   const url = new URL('./layer-worker.js', import.meta.url);
   if (isNode) {
-    const { Worker } = await import('node:worker_threads');
+    const { Worker } = await nodeBuiltin<typeof import('node:worker_threads')>('worker_threads');
     const w = new Worker(url);
     w.unref();
     return {
