@@ -7,7 +7,7 @@ import { UM_PER_MM, type Polygon, type Polyline, type Pt } from '../geometry/typ
 import type { IslandPaths, LayerPaths } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
 import { combRoute, makeCombArea, pathLength, type CombArea } from './comb.js';
-import { orderNearest, orderPolylines } from './order.js';
+import { orderNearest, orderPolylines } from '../geometry/nearest-order.js';
 import { chooseSeam, rotateLoop } from './seam.js';
 import type { ExtrudeStep, FeatureType, LayerPlan, PlanStep } from './types.js';
 

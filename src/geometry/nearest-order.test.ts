@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { orderPolylines } from './order.js';
+import { orderLoops, orderPolylines } from './nearest-order.js';
 import type { Polyline } from '../geometry/types.js';
 
 test('nearest-first ordering visits every line once and reverses lines entered at their far end', () => {
@@ -23,4 +23,12 @@ test('a start point far outside the paths still orders quickly and correctly', (
   const lines: Polyline[] = [[{ x: 100000, y: 100000 }, { x: 101000, y: 100000 }], [{ x: 105000, y: 100000 }, { x: 106000, y: 100000 }]];
   const out = orderPolylines(lines, { x: -1e9, y: -1e9 });
   assert.equal(out[0][0].x, 100000);
+});
+
+test('loops are entered at their nearest vertex and rotated to start there', () => {
+  const sq = (x: number) => [{ x, y: 0 }, { x: x + 1000, y: 0 }, { x: x + 1000, y: 1000 }, { x, y: 1000 }];
+  const { loops, end } = orderLoops([sq(10000), sq(0)], { x: 900, y: 1100 });
+  assert.deepEqual(loops[0][0], { x: 1000, y: 1000 });
+  assert.equal(loops[1][0].x >= 10000, true);
+  assert.deepEqual(end, loops[1][0]);
 });

@@ -1,8 +1,10 @@
 /**
- * Nearest-neighbour ordering of open paths (either end may start) and closed loops, using a uniform
- * grid over path ends so the search stays near-linear.
+ * Nearest-neighbour ordering, shared by the planner and the infill engine: from the current position,
+ * take next the item whose nearest candidate entry point is closest (ties: lower item, then lower
+ * candidate). Entry points sit in a uniform grid searched in growing rings, so n items cost about O(n)
+ * grid work instead of the O(n²) of a plain scan.
  */
-import type { Polyline, Pt } from '../geometry/types.js';
+import type { Polyline, Pt } from './types.js';
 
 interface Grid {
   cell: number;
@@ -79,9 +81,11 @@ export function orderNearest(
     const visit = (gx: number, gy: number) => {
       const b = grid.buckets.get(gy * grid.cols + gx);
       if (!b) return;
+      let kept = 0;
       for (let k = 0; k < b.length; k++) {
         const e = b[k];
-        if (used[owner[e]]) continue;
+        if (used[owner[e]]) continue; // dead entry: dropped from the bucket below
+        b[kept++] = e;
         const ddx = ends[2 * e] - at.x, ddy = ends[2 * e + 1] - at.y;
         const d = ddx * ddx + ddy * ddy;
         if (d < bestD || (d === bestD && e < best)) {
@@ -89,6 +93,7 @@ export function orderNearest(
           best = e;
         }
       }
+      b.length = kept;
     };
     for (let r = r0; r <= rMax; r++) {
       // every point in ring r is at least (r - 1) cells away
@@ -110,6 +115,18 @@ export function orderNearest(
     at = endOf(item, which[best]);
   }
   return out;
+}
+
+/** Order closed loops nearest-first, each rotated to start at its nearest vertex; also returns where the last ends. */
+export function orderLoops(loops: readonly Polyline[], from: Pt): { loops: Polyline[]; end: Pt } {
+  const order = orderNearest(
+    loops.length,
+    (i) => loops[i],
+    (i, k) => loops[i][k],
+    from,
+  );
+  const out = order.map(([i, k]) => (k === 0 ? loops[i] : loops[i].slice(k).concat(loops[i].slice(0, k))));
+  return { loops: out, end: out.length ? out[out.length - 1][0] : from };
 }
 
 /** Order open polylines nearest-first, reversing those entered from their far end. */
