@@ -126,7 +126,11 @@ export class Slicer {
   set<K extends SettingKey>(key: K, value: Settings[K]): this {
     checkKey(key);
     validateValue(key, value);
-    const next = { ...this.#options, [key]: value };
+    return this.#apply({ ...this.#options, [key]: value });
+  }
+
+  /** Resolve new options (throws, leaving the slicer unchanged, if they are invalid) and keep them. */
+  #apply(next: SliceOptions): this {
     this.#config = resolveConfig(next);
     this.#options = next;
     return this;
@@ -140,18 +144,12 @@ export class Slicer {
 
   /** Choose a printer preset (validated now); chainable. */
   setPrinter(name: string): this {
-    const next = { ...this.#options, printer: name };
-    this.#config = resolveConfig(next);
-    this.#options = next;
-    return this;
+    return this.#apply({ ...this.#options, printer: name });
   }
 
   /** Choose a filament preset (validated now); chainable. */
   setFilament(name: string): this {
-    const next = { ...this.#options, filament: name };
-    this.#config = resolveConfig(next);
-    this.#options = next;
-    return this;
+    return this.#apply({ ...this.#options, filament: name });
   }
 
   /** Slice and return the whole G-code as a string. */

@@ -3,7 +3,7 @@
  * for exposure detection), walls, skin and infill regions, and their lines. Pure over plain data, so
  * it runs the same inline or in a worker, and gives the same result however layers are split up.
  */
-import { difference, offset, union } from '../geometry/clip.js';
+import { difference, flatten, offset, union } from '../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import { generateInfill, solidFill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
@@ -38,15 +38,6 @@ export interface RangeJob {
   infillParams: InfillParams;
   /** Per-layer data from the pattern's whole-model pass, indexed by layer index. */
   prepared?: readonly unknown[];
-}
-
-function rings(areas: readonly ExPolygon[]): Polygon[] {
-  const out: Polygon[] = [];
-  for (const a of areas) {
-    out.push(a.outer);
-    for (const h of a.holes) out.push(h);
-  }
-  return out;
 }
 
 export function lineWidthUm(cfg: Config, layerIndex: number): number {
@@ -91,7 +82,7 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, cus
       let skinFillArea: ExPolygon[];
       if (cfg.skinWall && skinAll.length) {
         const wallCentre = offset(skinAll, -w / 2);
-        skinWalls = rings(wallCentre);
+        skinWalls = flatten(wallCentre);
         skinFillArea = offset(wallCentre, -(w - overlapSkin));
         // pieces too narrow for a skin-wall loop still get their lines
         if (skinAll.length > 1 || wallCentre.length === 0) {
