@@ -6,6 +6,8 @@ import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { Slicer } from '../api/slicer.js';
 import { StrataError } from '../errors.js';
+import { parseGcode } from '../analysis/gcode-parse.js';
+import { featureLengths } from '../analysis/layer-report.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
 const cube = readFileSync(root + 'examples/calibration-cube.stl');
@@ -16,19 +18,9 @@ vec4 cellular(vec3 world) {
   return vec4(mod(k, 2.0), 0.0, 0.0, 1.0);
 }`;
 
+/** Length of FILL extrusion (mm), from the independent analyser's G-code parser. */
 function fillLength(gcode: string): number {
-  // sum XY length of extrusion moves under ;TYPE:FILL
-  let type = '', x = 0, y = 0, len = 0;
-  for (const line of gcode.split('\n')) {
-    if (line.startsWith(';TYPE:')) type = line.slice(6);
-    if (!/^G[01] /.test(line)) continue;
-    const nx = /X(-?[\d.]+)/.exec(line), ny = /Y(-?[\d.]+)/.exec(line);
-    const X = nx ? Number(nx[1]) : x, Y = ny ? Number(ny[1]) : y;
-    if (type === 'FILL' && / E/.test(line)) len += Math.hypot(X - x, Y - y);
-    x = X;
-    y = Y;
-  }
-  return len;
+  return parseGcode(gcode).layers.reduce((sum, layer) => sum + (featureLengths(layer).FILL ?? 0), 0);
 }
 
 test('a shader infiller replaces the pattern, its ui_ parameter changes the paths, threads agree', async () => {
