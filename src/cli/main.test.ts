@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawnSync } from 'node:child_process';
-import { mkdtempSync, readFileSync, writeFileSync } from 'node:fs';
+import { mkdtempSync, readFileSync, statSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -83,4 +83,8 @@ test('--config, --set and a model on standard input', () => {
   const e = run('slice', CUBE, '--config', bad, '-o', join(dir, 'x.gcode'));
   assert.equal(e.status, 1);
   assert.match(e.stderr, /not valid JSON/);
+});
+
+test('the built CLI is executable, so `npx strata` runs it', { skip: process.platform === 'win32' && 'no exec bit on Windows' }, () => {
+  assert.ok((statSync(CLI).mode & 0o111) !== 0, `${CLI} has no execute permission`);
 });
