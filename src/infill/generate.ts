@@ -3,17 +3,18 @@
  * families, general clipper for everything else), link neighbouring ends along the boundary, clean up
  * and order the result for short travel.
  *
- * Density: the pattern's spacing rule gets the lines' share right in a large region, but two things move
- * the real figure. Connectors along the boundary are extruded too (the inner half of their footprint lies
- * in the region): about half the boundary length whatever the spacing, which would add 15–25 % on a 30 mm
- * square at 10 %. And where few lines cross a small region, where they fall (their phase) moves the share
- * by ±10 % or more. So each run is measured (clipped line length × width less the pattern's crossing
- * overlap, plus the connectors) and, if it misses the setting by more than 3 %, the pattern is run again
- * with its density scaled by what was missing (or halfway between runs on either side of the setting);
- * at most five runs (two for most layers), the best one wins. The factor is rounded to 1/64 so layers of
- * similar outline get exactly the same spacing and their lines stack. Patterns that change with Z on
- * purpose ('volume': gyroid, cubic) only pay for their connectors, measured at two fixed reference heights,
- * so their period stays the same from layer to layer and the 3D structure is kept.
+ * Density (see density.ts): the pattern's spacing rule gets the lines' share of the region right in a large
+ * region, but where few lines cross a small region, where they fall (their phase) moves the share by ±10 %
+ * or more. So each run is measured (clipped line length × width over the region's area) and, if it misses
+ * the setting by more than 3 %, the pattern is run again with its density scaled by what was missing (or
+ * halfway between runs on either side of the setting); at most five runs (two for most layers), the best
+ * one wins. The factor is rounded to 1/64 so layers of similar outline get exactly the same spacing and
+ * their lines stack. Connectors joining line ends along the boundary are not counted: they run on the
+ * region's edge, half their width in the innermost wall's overlap and half in the band beside it, not in
+ * the sparse interior, as Cura's and PrusaSlicer's connectors do (the G-code analyser leaves them out for
+ * that reason); paying for them thinned the lines of small regions by 10–15 %. Patterns that change with Z
+ * on purpose ('volume': gyroid, cubic) run once, so their period stays the same from layer to layer and
+ * the 3D structure is kept.
  */
 import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
 import type { InfillLayerInput, InfillParams, InfillPattern, InfillResult, PatternId } from './types.js';
@@ -32,7 +33,7 @@ export const LINK_REACH = 2.5;
 const MIN_PRINTABLE_WIDTHS = 0.5;
 /** Steps of the connector density correction (see above). */
 const CORRECTION_STEPS = 64;
-/** The density is never lowered below this fraction of the setting to pay for connectors. */
+/** The density factor of a corrected run stays within [MIN_CORRECTION, MAX_CORRECTION]. */
 const MIN_CORRECTION = 0.5;
 
 interface Ctx {
@@ -41,14 +42,14 @@ interface Ctx {
 }
 
 interface Run {
-  lines: Pt[][];
+  pieces: Piece[];
   loops: Pt[][];
+  /** Line ends this far apart along the boundary are joined (0: none). */
+  linkReach: number;
   /** The pattern fitted its own spacing (no further runs). */
   fitted: boolean;
-  /** Region share covered by the pattern's own lines (length × width less crossing overlaps). */
+  /** Region share extruded by the pattern's own lines (length × width over area, connectors not counted). */
   lineShare: number;
-  /** Region share covered by boundary connectors. */
-  connectorShare: number;
   /** Density factor this run used. */
   factor: number;
 }
@@ -74,54 +75,27 @@ function runPattern(pattern: InfillPattern, layer: InfillLayerInput, params: Inf
   const w = params.lineWidth, A = ctx.geom.area;
   let own = out.loops.length ? lengthOf(out.loops, true) : 0;
   for (const pc of pieces) own += polylineLength(pc.pts);
-  const lineShare = ((own * w) / A) * (1 - (out.overlap ?? 0));
-  if (p.connect && out.link !== false && out.linkSpacing && out.linkSpacing > 0) {
-    const linked = linkPieces(ctx.geom, pieces, LINK_REACH * out.linkSpacing);
-    return { lines: linked.lines, loops: out.loops, fitted: !!out.fitted, lineShare, connectorShare: connectorShare(linked.connectorLength, w, A), factor };
-  }
-  return { lines: pieces.map((pc) => pc.pts), loops: out.loops, fitted: !!out.fitted, lineShare, connectorShare: 0, factor };
+  const lineShare = (own * w) / A;
+  const linkReach = p.connect && out.link !== false && out.linkSpacing && out.linkSpacing > 0 ? LINK_REACH * out.linkSpacing : 0;
+  return { pieces, loops: out.loops, linkReach, fitted: !!out.fitted, lineShare, factor };
 }
-
-/**
- * Share of the region covered by connectors: the inner half of their footprint, less the part that lies on
- * the line ends they join (about 15 % of it, measured by rasterising the test shapes).
- */
-export function connectorShare(connectorLength: number, lineWidth: number, area: number): number {
-  return area > 0 ? (CONNECTOR_INSIDE * connectorLength * lineWidth) / 2 / area : 0;
-}
-const CONNECTOR_INSIDE = 0.85;
 
 function quantize(f: number): number {
   return Math.round(Math.min(MAX_CORRECTION, Math.max(MIN_CORRECTION, f)) * CORRECTION_STEPS) / CORRECTION_STEPS;
 }
 
 /**
- * Run the pattern and steer its density factor so that lines plus connectors cover the setting (see the
- * head of this file). 'layer' patterns are steered on what they actually cover (which also absorbs the
- * phase error of few lines in a small region), at most MAX_RUNS runs, the best one wins; 'volume' patterns
- * only pay for their connectors, measured at reference heights, since their layers vary on purpose;
- * 'support' patterns and patterns that fitted themselves are left alone.
+ * Run the pattern and steer its density factor so that its lines extrude the setting (see the head of this
+ * file): at most MAX_RUNS runs, the best one wins. 'volume' and 'support' patterns and patterns that fitted
+ * themselves are run once.
  */
 function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: InfillParams, prepared: unknown, ctx: Ctx): Run {
   const d = params.density;
   const model = pattern.densityModel ?? 'layer';
-  if (model === 'volume' && !params.connect) return runPattern(pattern, layer, params, prepared, ctx, 1);
-  if (model === 'volume') {
-    // The pattern changes with Z, and so would its connectors and any correction measured on this layer:
-    // its period would then jump from layer to layer and break the 3D structure. The connectors are
-    // measured at fixed reference heights instead, so layers of the same outline get the same period.
-    const period = pattern.zPeriod ? pattern.zPeriod(params) : 0;
-    let share = 0;
-    for (let k = 0; k < VOLUME_REFERENCES; k++) {
-      const z = layer.layerHeight + (k * period) / VOLUME_REFERENCES;
-      share += runPattern(pattern, { ...layer, layerIndex: 0, z, draft: true }, params, prepared, ctx, 1).connectorShare / VOLUME_REFERENCES;
-    }
-    const f = share > CORRECTION_SETTLED * d ? quantize(1 - share / d) : 1;
-    return runPattern(pattern, layer, params, prepared, ctx, f);
-  }
+  if (model === 'volume') return runPattern(pattern, layer, params, prepared, ctx, 1);
   const r0 = runPattern(pattern, layer, params, prepared, ctx, 1);
   if (model === 'support' || r0.fitted) return r0;
-  const total = (r: Run) => r.lineShare + r.connectorShare;
+  const total = (r: Run) => r.lineShare;
   const err = (r: Run) => Math.abs(total(r) - d);
   let best = r0;
   let cur = r0;
@@ -138,7 +112,7 @@ function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: I
     if (below && above && below.factor < above.factor) f = quantize((below.factor + above.factor) / 2);
     else {
       if (!(cur.lineShare > 0)) break;
-      f = quantize((cur.factor * (d - cur.connectorShare)) / cur.lineShare);
+      f = quantize((cur.factor * d) / cur.lineShare);
     }
     if (tried.has(f)) break;
     tried.add(f);
@@ -151,8 +125,6 @@ function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: I
 /** A run whose predicted total is within this fraction of the setting needs no further step. */
 const CORRECTION_SETTLED = 0.03;
 const MAX_RUNS = 5;
-/** Reference heights (spread over one Z period) at which a 'volume' pattern's connectors are measured. */
-const VOLUME_REFERENCES = 2;
 const MAX_CORRECTION = 1.5;
 
 /**
@@ -168,7 +140,8 @@ export function generateInfill(patternId: PatternId, layer: InfillLayerInput, pa
   if (!(geom.area > 0)) return { lines: [], loops: [] };
   const ctx: Ctx = { geom, index: null };
   const run = runCorrected(pattern, layer, params, prepared, ctx);
-  const clean = cleanPaths(run.lines, run.loops, MIN_PRINTABLE_WIDTHS * params.lineWidth);
+  const lines = run.linkReach > 0 ? linkPieces(geom, run.pieces, run.linkReach).lines : run.pieces.map((pc) => pc.pts);
+  const clean = cleanPaths(lines, run.loops, MIN_PRINTABLE_WIDTHS * params.lineWidth);
   return orderPaths(clean.lines, clean.loops, start ?? { x: geom.minX, y: geom.minY });
 }
 

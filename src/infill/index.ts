@@ -1,8 +1,8 @@
 /** Public face of the infill module. */
-export { generateInfill, solidFill, connectorShare, LINK_REACH } from './generate.js';
+export { generateInfill, solidFill, LINK_REACH } from './generate.js';
 export type { SolidFillOptions } from './generate.js';
 export { PATTERNS } from './registry.js';
-export { extrudedArea, measuredDensity, pathLength } from './measure.js';
+export { extrudedArea, lineDensity, measuredDensity, pathLength } from './measure.js';
 export { clipSweep } from './sweep.js';
 export { clipPolylines, clipToRegion } from './clip-polylines.js';
 export { linkPieces } from './link.js';

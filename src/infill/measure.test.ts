@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { extrudedArea } from './measure.js';
-import { familyCoverage, familySpacing } from './density.js';
+import { familyDensity, familySpacing } from './density.js';
 import { hexSide } from './patterns/hexagons.js';
 
 const W = 400;
@@ -25,14 +25,14 @@ test('inside a region only the inner part counts: a line on the boundary is half
   assert.ok(Math.abs(a - expected) / expected < 0.02, `${a} vs ${expected}`);
 });
 
-test('spacing rules invert the coverage rules', () => {
-  for (const [F, c] of [[1, 0], [2, 1], [3, 2.25], [3, 3]]) {
+test('spacing rules invert the density rules, and the seed grid rule gives its setting', () => {
+  for (const F of [1, 2, 3]) {
     for (const d of [0.05, 0.1, 0.2, 0.4, 0.6]) {
-      const s = familySpacing(d, W, F, c);
-      assert.ok(Math.abs(familyCoverage(s, W, F, c) - d) < 1e-9);
+      const s = familySpacing(d, W, F);
+      assert.ok(Math.abs(familyDensity(s, W, F) - d) < 1e-9);
     }
   }
-  // the seed's grid rule misses at 40 % (width = nozzle): 2·0.2 − 0.2² = 36 %
-  assert.ok(Math.abs(familyCoverage((W / 0.4) * 2, W, 2, 1) - 0.36) < 1e-9);
+  // the seed: grid at 20 % with a 0.4 mm nozzle and line width has lines 4 mm apart in each direction
+  assert.equal(familySpacing(0.2, W, 2), 4_000);
   assert.ok(hexSide(0.2, W) > hexSide(0.4, W));
 });

@@ -3,10 +3,11 @@
  * as the nozzle leaves them) into a bitmap, so crossings and overlaps count once; with a region, only the
  * footprint inside the region counts (connectors running along the boundary are half inside, line ends
  * poke out by half a width). Pixel size defaults to a tenth of the line width: error well under 1 %.
+ * The density setting is not the footprint but the extruded lines (see density.ts): `lineDensity`.
  */
 import type { ExPolygon, Pt } from '../geometry/types.js';
 import type { InfillResult } from './types.js';
-import { area as regionArea } from '../geometry/clip.js';
+import { area as regionArea, clipLines, offset } from '../geometry/clip.js';
 import { ringsOf, rowCrossings } from './geom-util.js';
 
 interface Raster {
@@ -128,4 +129,18 @@ export function pathLength(result: InfillResult): number {
     l += Math.hypot(b.x - a.x, b.y - a.y);
   }
   return l;
+}
+
+/**
+ * Density as the setting means it (density.ts): the length × width of the lines and loops inside the region,
+ * over its area; lines that cross count twice. Connectors run on the region's edge, in the innermost wall's
+ * overlap, and are left out, as the G-code analyser leaves them out (src/analysis/infill-density.ts): only
+ * what lies deeper than `insetUm` (default a tenth of the line width) counts, over the area that deep.
+ */
+export function lineDensity(result: InfillResult, region: readonly ExPolygon[], lineWidthUm: number, insetUm = lineWidthUm / 10): number {
+  const inner = offset(region, -insetUm);
+  const a = regionArea(inner);
+  if (!(a > 0)) return 0;
+  const paths = [...result.lines, ...result.loops.map((l) => [...l, l[0]])];
+  return (pathLength({ lines: clipLines(paths, inner), loops: [] }) * lineWidthUm) / a;
 }

@@ -1,8 +1,9 @@
 /**
  * Properties every registered pattern must have, checked by iterating the registry: a pattern added to
- * PATTERN_IDS is tested here the day it is added. Density is measured by rasterising the extruded
- * footprint inside the region (measure.ts); 'volume' patterns are averaged over one Z period, 'support'
- * patterns (lightning) report their figure instead (lightning.test.ts checks what they must do).
+ * PATTERN_IDS is tested here the day it is added. Density is the lines' length × width inside the region
+ * less the connectors on its edge, as the G-code analyser measures it (measure.ts lineDensity); 'volume' patterns are
+ * averaged over one Z period, 'support' patterns (lightning) report their figure instead (lightning.test.ts
+ * checks what they must do).
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -11,7 +12,7 @@ import { clipLinesOutside, offset } from '../geometry/clip.js';
 import { PATTERN_IDS, type InfillLayerInput, type InfillResult, type PatternId } from './types.js';
 import { PATTERNS } from './registry.js';
 import { generateInfill } from './generate.js';
-import { measuredDensity } from './measure.js';
+import { lineDensity } from './measure.js';
 import { TEST_SHAPES, testParams } from './test-shapes.js';
 
 const DENSITIES = [0.1, 0.2, 0.4];
@@ -72,8 +73,8 @@ for (const id of PATTERN_IDS) {
           const period = pattern.zPeriod ? pattern.zPeriod(params) : 1;
           const k = 8;
           measured = 0;
-          for (let i = 0; i < k; i++) measured += measuredDensity(generateInfill(id, layerAt(region, 0.1 + (period * (i + 0.5)) / k), params), region, W) / k;
-        } else measured = measuredDensity(r, region, W);
+          for (let i = 0; i < k; i++) measured += lineDensity(generateInfill(id, layerAt(region, 0.1 + (period * (i + 0.5)) / k), params), region, W) / k;
+        } else measured = lineDensity(r, region, W);
         figures.push(`${(d * 100).toFixed(0)}% → ${(measured * 100).toFixed(1)}%`);
         if (model !== 'support') {
           assert.ok(Math.abs(measured - d) <= TOLERANCE * d, `${id} on ${shapeName} at ${d}: measured ${measured.toFixed(4)}`);

@@ -29,11 +29,6 @@ export interface InfillLayerInput {
   layerHeight: number;
   /** The area to fill, µm. Lines must stay inside it. */
   region: ExPolygon[];
-  /**
-   * Set by the engine for throwaway runs that only measure where lines meet the boundary (the connector
-   * estimate of 'volume' patterns): a pattern may then trace its curves more coarsely.
-   */
-  draft?: boolean;
 }
 
 /** Settings-derived parameters, the same for every layer of one object. */
@@ -89,15 +84,13 @@ export interface PatternOutput extends InfillResult {
   linkSpacing?: number;
   /** false: never join these lines along the boundary (trees, loops the pattern linked itself). */
   link?: boolean;
-  /** Fraction of the lines' length × width that overlaps at crossings (0 or absent: lines never cross). */
-  overlap?: number;
   /** true: the pattern already fitted its spacing to this region's density; the engine runs it only once. */
   fitted?: boolean;
 }
 
 /**
- * How the density setting maps to material. 'layer' (default): every layer's extruded area over region area
- * is the setting. 'volume': the mean over one Z period (`zPeriod`) is the setting, single layers vary (gyroid).
+ * How the density setting maps to material. 'layer' (default): every layer's extruded lines (length × width)
+ * over the region's area is the setting. 'volume': the mean over one Z period (`zPeriod`) is the setting, single layers vary (gyroid).
  * 'support': the pattern prints only what top skins need and reports its own, lower, figure (lightning).
  */
 export type DensityModel = 'layer' | 'volume' | 'support';

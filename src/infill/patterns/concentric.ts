@@ -261,7 +261,7 @@ export const concentric: InfillPattern = {
   description: 'Successive insets of the region until empty, each loop linked to the next.',
   followsRegion: true,
   generate(layer, params) {
-    const s = familySpacing(params.density, params.lineWidth, 1, 0);
+    const s = familySpacing(params.density, params.lineWidth, 1);
     const geom = regionGeom(layer.region);
     if (!(geom.area > 0) || !isFinite(s)) return { lines: [], loops: [], link: false };
     const ix = indexRegion(geom);

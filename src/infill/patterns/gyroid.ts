@@ -23,8 +23,6 @@ export const GYROID_KAPPA = 2.4587;
  * positions (after linear interpolation on L/12 cells one step leaves vertices well under 1 µm off the
  * surface; chords between them stay within about 30 µm). */
 const CELLS_PER_PERIOD = 12;
-/** Coarser sampling for draft runs (connector estimates), no Newton step. */
-const DRAFT_CELLS_PER_PERIOD = 6;
 const NEWTON_STEPS = 1;
 
 /** Gyroid period (µm) for a density. */
@@ -47,7 +45,7 @@ export const gyroid: InfillPattern = {
     const sz = Math.sin(Z), cz = Math.cos(Z);
     const { uMin, uMax, vMin, vMax } = frameBounds(layer.region, o, phi);
     if (!(uMin <= uMax)) return { lines: [], loops: [] };
-    const h = L / (layer.draft ? DRAFT_CELLS_PER_PERIOD : CELLS_PER_PERIOD);
+    const h = L / CELLS_PER_PERIOD;
     const u0 = (Math.floor(uMin / h) - 1) * h, v0 = (Math.floor(vMin / h) - 1) * h;
     const nx = Math.ceil((uMax - u0) / h) + 1, ny = Math.ceil((vMax - v0) / h) + 1; // cells
     const sinX = new Float64Array(nx + 1), cosX = new Float64Array(nx + 1);
@@ -90,7 +88,7 @@ export const gyroid: InfillPattern = {
       { nx, ny, x0: u0, y0: v0, h, v: F },
       0,
       (i, j) => field(u0 + (i + 0.5) * h, v0 + (j + 0.5) * h),
-      layer.draft ? undefined : newton,
+      newton,
     );
     const lines: Pt[][] = contours.map((cn) => {
       const pts = cn.pts.map((q) => ({ x: o.x + q.x * c - q.y * s, y: o.y + q.x * s + q.y * c }));

@@ -9,7 +9,7 @@ export const lines: InfillPattern = {
   id: 'lines',
   description: 'One line family per layer, turning 90° each layer.',
   generate(layer, params) {
-    const s = familySpacing(params.density, params.lineWidth, 1, 0);
+    const s = familySpacing(params.density, params.lineWidth, 1);
     const odd = ((layer.layerIndex % 2) + 2) % 2 === 1;
     return {
       lines: [],

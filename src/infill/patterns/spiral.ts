@@ -39,7 +39,7 @@ export const spiral: InfillPattern = {
   description: 'One Archimedean spiral per island from its centre, clipped, broken arcs linked.',
   followsRegion: true,
   generate(_layer, params) {
-    const sp = familySpacing(params.density, params.lineWidth, 1, 0);
+    const sp = familySpacing(params.density, params.lineWidth, 1);
     const lines: Pt[][] = [];
     const a0 = (params.angle * Math.PI) / 180;
     for (const isl of _layer.region) {
