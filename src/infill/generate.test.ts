@@ -1,9 +1,14 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { generateInfill, solidFill } from './generate.js';
-import { measuredDensity } from './measure.js';
+import { lineDensity, measuredDensity } from './measure.js';
 import { PATTERN_IDS } from './types.js';
 import { TEST_SHAPES, testParams, SHAPE_CENTRE } from './test-shapes.js';
+import type { ExPolygon } from '../geometry/types.js';
+
+function rect(x0: number, y0: number, w: number, h: number): ExPolygon {
+  return { outer: [{ x: x0, y: y0 }, { x: x0 + w, y: y0 }, { x: x0 + w, y: y0 + h }, { x: x0, y: y0 + h }], holes: [] };
+}
 
 test('solid fill covers the region and is one zig-zag in a convex region', () => {
   const region = TEST_SHAPES.square();
@@ -30,4 +35,21 @@ test('output is integer micrometres, and the first path starts near the given st
 
 test('an unknown pattern id is an error', () => {
   assert.throws(() => generateInfill('nope' as never, { layerIndex: 0, z: 0.2, layerHeight: 0.2, region: TEST_SHAPES.square() }, testParams(0.2)));
+});
+
+test('small, fragmented regions get the set density of lines: connectors on the edge do not thin them', () => {
+  // a few lines per piece and long connectors between them, as in Benchy's hull and cabin walls
+  const c = SHAPE_CENTRE;
+  const regions = {
+    'four 5 mm strips': [0, 1, 2, 3].map((k) => rect(c.x - 15_000 + k * 8_000, c.y - 15_000, 5_000, 30_000)),
+    'nine 8 mm squares': [0, 1, 2].flatMap((i) => [0, 1, 2].map((j) => rect(c.x - 15_000 + i * 11_000, c.y - 15_000 + j * 11_000, 8_000, 8_000))),
+  };
+  for (const [name, region] of Object.entries(regions)) {
+    for (const id of ['grid', 'lines', 'triangles', 'hexagons'] as const) {
+      const params = testParams(0.2);
+      const r = generateInfill(id, { layerIndex: 7, z: 1.4, layerHeight: 0.2, region }, params);
+      const d = lineDensity(r, region, params.lineWidth);
+      assert.ok(Math.abs(d - 0.2) <= 0.01, `${id} on ${name}: ${d.toFixed(4)}`);
+    }
+  }
 });
