@@ -10,11 +10,10 @@
  * halfway between runs on either side of the setting); at most five runs (two for most layers), the best
  * one wins. The factor is rounded to 1/64 so layers of similar outline get exactly the same spacing and
  * their lines stack. Connectors joining line ends along the boundary are not counted: they run on the
- * region's edge, half their width in the innermost wall's overlap and half in the band beside it, not in
- * the sparse interior, as Cura's and PrusaSlicer's connectors do (the G-code analyser leaves them out for
- * that reason); paying for them thinned the lines of small regions by 10–15 %. Patterns that change with Z
- * on purpose ('volume': gyroid, cubic) run once, so their period stays the same from layer to layer and
- * the 3D structure is kept.
+ * region's edge, beside the innermost wall or the skin, not through the sparse interior, as Cura's and
+ * PrusaSlicer's connectors do (the G-code analyser leaves that edge band out for this reason); paying for
+ * them thinned the lines of small regions by 10–15 %. Patterns that change with Z on purpose ('volume':
+ * gyroid, cubic) run once, so their period stays the same from layer to layer and the 3D structure is kept.
  */
 import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
 import type { InfillLayerInput, InfillParams, InfillPattern, InfillResult, PatternId } from './types.js';
@@ -31,7 +30,7 @@ import { type Piece, polylineLength } from './piece.js';
 export const LINK_REACH = 2.5;
 /** Open paths shorter than this fraction of the line width are dropped (a blob, not a line). */
 const MIN_PRINTABLE_WIDTHS = 0.5;
-/** Steps of the connector density correction (see above). */
+/** Steps of the density correction (see above). */
 const CORRECTION_STEPS = 64;
 /** The density factor of a corrected run stays within [MIN_CORRECTION, MAX_CORRECTION]. */
 const MIN_CORRECTION = 0.5;

@@ -1,9 +1,9 @@
 /**
  * Properties every registered pattern must have, checked by iterating the registry: a pattern added to
- * PATTERN_IDS is tested here the day it is added. Density is the lines' length × width inside the region
- * less the connectors on its edge, as the G-code analyser measures it (measure.ts lineDensity); 'volume' patterns are
- * averaged over one Z period, 'support' patterns (lightning) report their figure instead (lightning.test.ts
- * checks what they must do).
+ * PATTERN_IDS is tested here the day it is added. Density is the lines' length × width inside the region,
+ * leaving out the connectors on its edge, as the G-code analyser measures it (measure.ts lineDensity);
+ * 'volume' patterns are averaged over one Z period, 'support' patterns (lightning) report their figure
+ * instead (lightning.test.ts checks what they must do).
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
