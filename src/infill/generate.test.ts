@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { generateInfill, solidFill } from './generate.js';
-import { lineDensity, measuredDensity } from './measure.js';
+import { generateInfill } from './generate.js';
+import { lineDensity } from './measure.js';
 import { PATTERN_IDS } from './types.js';
 import { TEST_SHAPES, testParams, SHAPE_CENTRE } from './test-shapes.js';
 import type { ExPolygon } from '../geometry/types.js';
@@ -9,15 +9,6 @@ import type { ExPolygon } from '../geometry/types.js';
 function rect(x0: number, y0: number, w: number, h: number): ExPolygon {
   return { outer: [{ x: x0, y: y0 }, { x: x0 + w, y: y0 }, { x: x0 + w, y: y0 + h }, { x: x0, y: y0 + h }], holes: [] };
 }
-
-test('solid fill covers the region and is one zig-zag in a convex region', () => {
-  const region = TEST_SHAPES.square();
-  const lines = solidFill(region, 45, 450, SHAPE_CENTRE);
-  assert.equal(lines.length, 1);
-  const d = measuredDensity({ lines, loops: [] }, region, 450);
-  assert.ok(d > 0.97, `${d}`);
-  assert.ok(solidFill(region, 45, 450, SHAPE_CENTRE, { connect: false }).length > 50);
-});
 
 test('output is integer micrometres, and the first path starts near the given start point', () => {
   const region = TEST_SHAPES['disc with hole']();

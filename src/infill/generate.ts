@@ -15,7 +15,7 @@
  * them thinned the lines of small regions by 10–15 %. Patterns that change with Z on purpose ('volume':
  * gyroid, cubic) run once, so their period stays the same from layer to layer and the 3D structure is kept.
  */
-import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
+import type { Pt } from '../geometry/types.js';
 import type { InfillLayerInput, InfillParams, InfillPattern, InfillResult, PatternId } from './types.js';
 import { PATTERNS } from './registry.js';
 import { type RegionGeom, type RegionIndex, indexRegion, regionGeom } from './region-index.js';
@@ -142,25 +142,4 @@ export function generateInfill(patternId: PatternId, layer: InfillLayerInput, pa
   const lines = run.linkReach > 0 ? linkPieces(geom, run.pieces, run.linkReach).lines : run.pieces.map((pc) => pc.pts);
   const clean = cleanPaths(lines, run.loops, MIN_PRINTABLE_WIDTHS * params.lineWidth);
   return orderPaths(clean.lines, clean.loops, start ?? { x: geom.minX, y: geom.minY });
-}
-
-export interface SolidFillOptions {
-  /** Join neighbouring line ends along the boundary (zig-zag). Default true. */
-  connect?: boolean;
-  /** Where the nozzle is before the fill; the first line starts nearest to it. */
-  start?: Pt;
-}
-
-/**
- * Solid (skin) fill: one family of lines `spacingUm` apart at `angleDeg`, phase anchored at `origin`,
- * clipped exactly by the scanline engine, zig-zag linked and ordered.
- */
-export function solidFill(region: readonly ExPolygon[], angleDeg: number, spacingUm: number, origin: Pt, options: SolidFillOptions = {}): Polyline[] {
-  if (region.length === 0 || !(spacingUm > 0)) return [];
-  const geom = regionGeom(region);
-  const pieces: Piece[] = [];
-  clipSweep(geom, { angle: angleDeg, spacing: spacingUm, offset: 0 }, origin, pieces);
-  const lines = options.connect === false ? pieces.map((p) => p.pts) : linkPieces(geom, pieces, LINK_REACH * spacingUm).lines;
-  const clean = cleanPaths(lines, [], 0);
-  return orderPaths(clean.lines, [], options.start ?? { x: geom.minX, y: geom.minY }).lines;
 }

@@ -1,6 +1,7 @@
 /** Public face of the infill module. */
-export { generateInfill, solidFill, LINK_REACH } from './generate.js';
-export type { SolidFillOptions } from './generate.js';
+export { generateInfill, LINK_REACH } from './generate.js';
+export { solidFill } from './solid-fill.js';
+export type { SolidFillOptions } from './solid-fill.js';
 export { PATTERNS } from './registry.js';
 export { extrudedArea, lineDensity, measuredDensity, pathLength } from './measure.js';
 export { clipSweep } from './sweep.js';
