@@ -97,6 +97,26 @@ export function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join 
   return out;
 }
 
+/**
+ * What beads `widthUm` wide leave on the layer: the area swept along open polylines and closed loops, µm. With
+ * 'round' joins and ends it is the bead's footprint (arcs within ARC_TOLERANCE_UM); 'miter' joins and square ends
+ * are much cheaper and add a little at corners and ends (up to (1 - π/4)·(width/2)² each).
+ */
+export function strokeArea(
+  lines: readonly Polyline[], loops: readonly Polygon[], widthUm: number, join: 'round' | 'miter' = 'round',
+): ExPolygon[] {
+  if ((lines.length === 0 && loops.length === 0) || !(widthUm > 0)) return [];
+  const co = new ClipperOffset(MITER_LIMIT, ARC_TOLERANCE_UM);
+  const jt = joinType(join);
+  if (lines.length) co.addPaths(lines as Polyline[], jt, join === 'round' ? EndType.Round : EndType.Square);
+  if (loops.length) co.addPaths(loops as Polygon[], jt, EndType.Joined);
+  const tree = new PolyTree64();
+  co.execute(widthUm / 2, tree);
+  const out: ExPolygon[] = [];
+  collectTree(tree, out);
+  return out;
+}
+
 /** Open-then-close (shrink then grow): removes features narrower than 2·radius µm. */
 export function opening(areas: readonly ExPolygon[], radiusUm: number): ExPolygon[] {
   return offset(offset(areas, -radiusUm), radiusUm);

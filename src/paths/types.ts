@@ -16,6 +16,8 @@ export interface IslandPaths {
   skinWalls: Polygon[];
   /** Solid skin lines. */
   skinLines: Polyline[];
+  /** Skin gap fill: thin loops with their own bead width (mm) where skin walls and lines leave the surface bare. */
+  skinGaps: { loop: Polygon; width: number }[];
   /** Sparse infill lines and loops. */
   infillLines: Polyline[];
   infillLoops: Polygon[];

@@ -9,6 +9,7 @@ import { generateInfill, solidFill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import type { IslandPaths, LayerPaths } from '../paths/types.js';
 import { allSkin, CoverWindows, skinAreas } from '../regions/skin-areas.js';
+import { skinGapFill } from '../regions/skin-gaps.js';
 import { computeWalls } from '../regions/walls.js';
 import type { Config } from '../settings/resolve.js';
 import { slicePrepared, type PreparedMesh } from '../slice/index.js';
@@ -95,6 +96,7 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, cus
       }
       const skinAngle = cfg.skinAngle + (i % 2 === 1 ? 90 : 0);
       const skinLines = skinFillArea.length ? solidFill(skinFillArea, skinAngle, w, job.infillParams.origin) : [];
+      const skinGaps = skinGapFill(skin.exposed, skinWalls, skinLines, w).map((g) => ({ loop: g.loop, width: g.widthUm / UM_PER_MM }));
       let infillLines: Pt[][] = [];
       let infillLoops: Polygon[] = [];
       if (sparse.length) {
@@ -106,7 +108,7 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, cus
         infillLines = res.lines;
         infillLoops = res.loops;
       }
-      islands.push({ outline: iw.outline, walls: iw.wallLoops, gapFill: iw.gapFill.map((g) => ({ loop: g.loop, width: g.widthUm / UM_PER_MM })), skinWalls, skinLines, infillLines, infillLoops });
+      islands.push({ outline: iw.outline, walls: iw.wallLoops, gapFill: iw.gapFill.map((g) => ({ loop: g.loop, width: g.widthUm / UM_PER_MM })), skinWalls, skinLines, skinGaps, infillLines, infillLoops });
     }
     regions.push({ index: i, infill: layerInfill.length > 1 ? union(layerInfill) : layerInfill, topSkin: layerTop });
     if (!job.regionsOnly) {

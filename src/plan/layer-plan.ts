@@ -133,14 +133,20 @@ function printIsland(ctx: Ctx, island: IslandPaths): void {
     if (!ctx.comb && walls[k].length) ctx.comb = makeCombArea(island.outline, boundary);
   }
   if (!ctx.comb) ctx.comb = makeCombArea(island.outline, boundary);
-  for (const [i] of orderNearest(island.gapFill.length, (i) => [island.gapFill[i].loop[0]], (i) => island.gapFill[i].loop[0], ctx.at)) {
-    const g = island.gapFill[i];
-    extrude(ctx, 'WALL-INNER', rotateLoop(g.loop, chooseSeam(g.loop, 'nearest', ctx.at, 0, 0, 0)), true, g.width);
-  }
+  printGapLoops(ctx, 'WALL-INNER', island.gapFill);
   printLoops(ctx, 'FILL', island.infillLoops);
   printLines(ctx, 'FILL', island.infillLines);
   printLoops(ctx, 'SKIN', island.skinWalls);
   printLines(ctx, 'SKIN', island.skinLines);
+  printGapLoops(ctx, 'SKIN', island.skinGaps);
+}
+
+/** Thin loops with their own bead width, nearest first. */
+function printGapLoops(ctx: Ctx, feature: FeatureType, gaps: IslandPaths['gapFill']): void {
+  for (const [i] of orderNearest(gaps.length, (i) => [gaps[i].loop[0]], (i) => gaps[i].loop[0], ctx.at)) {
+    const g = gaps[i];
+    extrude(ctx, feature, rotateLoop(g.loop, chooseSeam(g.loop, 'nearest', ctx.at, 0, 0, 0)), true, g.width);
+  }
 }
 
 /** Build the plan of one layer, starting from where the nozzle is. */
@@ -151,7 +157,7 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState): Lay
     const feature: FeatureType = layer.adhesionFeature;
     printLoops(ctx, feature, layer.adhesion);
   }
-  const islands = layer.islands.filter((i) => i.walls.some((w) => w.length) || i.gapFill.length || i.infillLines.length || i.skinLines.length || i.infillLoops.length || i.skinWalls.length);
+  const islands = layer.islands.filter((i) => i.walls.some((w) => w.length) || i.gapFill.length || i.infillLines.length || i.skinLines.length || i.infillLoops.length || i.skinWalls.length || i.skinGaps.length);
   const order = orderNearest(
     islands.length,
     (i) => [islandEntry(islands[i])],

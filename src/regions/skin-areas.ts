@@ -10,6 +10,8 @@ import type { ExPolygon } from '../geometry/types.js';
 export interface SkinAreas {
   top: ExPolygon[];
   bottom: ExPolygon[];
+  /** All exposed area (top or bottom) before slivers were dropped: what skin gap fill must still reach. */
+  exposed: ExPolygon[];
 }
 
 /**
@@ -27,18 +29,18 @@ export function skinAreas(
   bottomLayers: number,
   minWidthUm: number,
 ): SkinAreas {
-  if (inner.length === 0) return { top: [], bottom: [] };
+  if (inner.length === 0) return { top: [], bottom: [], exposed: [] };
   const topRaw = topLayers > 0 ? difference(inner, coveredAbove) : [];
   const bottomRaw = bottomLayers > 0 ? difference(inner, coveredBelow) : [];
-  if (topRaw.length === 0 && bottomRaw.length === 0) return { top: [], bottom: [] };
+  if (topRaw.length === 0 && bottomRaw.length === 0) return { top: [], bottom: [], exposed: [] };
   // Drop slivers from the skin as a whole (cleaning top and bottom apart would also drop the seam
   // between them), then split it: a region that is both is printed once, as bottom (it rests on nothing).
   const raw = topRaw.length === 0 ? bottomRaw : bottomRaw.length === 0 ? topRaw : union(topRaw, bottomRaw);
   const all = minWidthUm > 0 ? opening(raw, minWidthUm / 2) : raw;
-  if (bottomRaw.length === 0) return { top: all, bottom: [] };
-  if (topRaw.length === 0) return { top: [], bottom: all };
+  if (bottomRaw.length === 0) return { top: all, bottom: [], exposed: raw };
+  if (topRaw.length === 0) return { top: [], bottom: all, exposed: raw };
   const bottom = intersection(all, bottomRaw);
-  return { top: difference(all, bottom), bottom };
+  return { top: difference(all, bottom), bottom, exposed: raw };
 }
 
 /**
