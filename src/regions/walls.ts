@@ -4,8 +4,11 @@
  * model's surface. Each inner wall k is printed only where its full width fits between wall k-1 and
  * the inside (an opening of the region), so walls never overlap or cross in thin parts.
  */
-import { offset, area, difference, ringArea } from '../geometry/clip.js';
+import { offset, area, difference } from '../geometry/clip.js';
 import type { ExPolygon, Polygon } from '../geometry/types.js';
+import { gapLoops, type GapLoop } from './gap-loops.js';
+
+export type { GapLoop } from './gap-loops.js';
 
 export interface IslandWalls {
   /** The island's outline (the layer section), µm. */
@@ -16,40 +19,6 @@ export interface IslandWalls {
   inner: ExPolygon[];
   /** Gap fill: thin loops (with their bead width, µm) for strips between walls too narrow for another wall. */
   gapFill: GapLoop[];
-}
-
-export interface GapLoop {
-  loop: Polygon;
-  widthUm: number;
-}
-
-/** Strips narrower than this fraction of a line width are left empty (they would print nothing). */
-const MIN_GAP_FRACTION = 0.3;
-
-/** Perimeter of an island's rings, µm. */
-function perimeter(a: ExPolygon): number {
-  let p = 0;
-  for (const r of [a.outer, ...a.holes]) {
-    for (let i = 0, j = r.length - 1; i < r.length; j = i++) p += Math.hypot(r[i].x - r[j].x, r[i].y - r[j].y);
-  }
-  return p;
-}
-
-/**
- * Fill thin strips (narrower than two line widths) with one loop each, whose bead is half the
- * strip's mean width: going round the strip, its two passes cover it side by side.
- * Mean width of a strip = 2·area / perimeter.
- */
-function gapLoops(gaps: readonly ExPolygon[], w: number, out: GapLoop[]): void {
-  for (const g of gaps) {
-    const a = Math.abs(ringArea(g.outer)) - g.holes.reduce((s, h) => s + Math.abs(ringArea(h)), 0);
-    const d = (2 * a) / Math.max(perimeter(g), 1);
-    if (d < MIN_GAP_FRACTION * w || d > 2 * w) continue;
-    for (const piece of offset([g], -d / 4)) {
-      if (Math.abs(ringArea(piece.outer)) < MIN_LOOP_AREA_UM2 / 4) continue;
-      out.push({ loop: piece.outer, widthUm: Math.round(d / 2) });
-    }
-  }
 }
 
 /** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
@@ -90,7 +59,7 @@ export function computeWalls(islands: readonly ExPolygon[], wallCount: number, l
       const fit = offset(inside, -w);
       // what wall k's bead covers: from its inner edge (fit) out by one width
       const covered = fit.length ? offset(fit, w) : [];
-      if (area(inside) - area(covered) > w * w) gapLoops(difference(inside, covered), w, gapFill);
+      if (area(inside) - area(covered) > w * w) gapFill.push(...gapLoops(difference(inside, covered), w));
       if (fit.length === 0) {
         inside = [];
         break;

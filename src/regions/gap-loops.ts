@@ -1,0 +1,48 @@
+/**
+ * Gap fill for thin strips (between walls, or skin the lines miss): loops a quarter of the strip's width in from
+ * its edge and half its width wide, so that going round the strip their two passes cover it side by side; where
+ * a piece widens (a wedge), further loops fill what the first leaves towards its wide end.
+ */
+import { difference, offset, opening, ringArea, strokeArea } from '../geometry/clip.js';
+import type { ExPolygon, Polygon } from '../geometry/types.js';
+import { islandArea, stripWidth } from './strip-width.js';
+
+export interface GapLoop {
+  loop: Polygon;
+  widthUm: number;
+}
+
+/** Strips narrower than this fraction of a line width are left empty (nothing prints that thin). */
+export const MIN_GAP_FRACTION = 0.3;
+/** Pieces wider than this many line widths are not gaps (a loop of half their width would not cover them). */
+const MAX_GAP_WIDTHS = 2;
+/** At most this many rounds of loops inside loops. */
+const MAX_ROUNDS = 3;
+/** Loops enclosing less than this (µm²) are specks the nozzle cannot draw. */
+const MIN_LOOP_AREA_UM2 = 25 * 25;
+
+/**
+ * Loops filling thin strips. Parts of the strips thinner than a printable bead are dropped first: besides
+ * printing nothing, they would join real gaps into long pieces whose width reads far too small. What a piece's
+ * loop leaves bare where the piece is wider than its width estimate (the wide end of a wedge) is filled again
+ * the same way, a few times over.
+ */
+export function gapLoops(gaps: readonly ExPolygon[], lineWidthUm: number): GapLoop[] {
+  const out: GapLoop[] = [];
+  fillGaps(gaps, lineWidthUm, MAX_ROUNDS, out);
+  return out;
+}
+
+function fillGaps(gaps: readonly ExPolygon[], w: number, rounds: number, out: GapLoop[]): void {
+  const minWidth = MIN_GAP_FRACTION * w;
+  const pieces = gaps.filter((g) => islandArea(g) >= minWidth * minWidth);
+  if (pieces.length === 0) return;
+  for (const g of opening(pieces, minWidth / 2)) {
+    const d = stripWidth(g);
+    if (d < minWidth || d > MAX_GAP_WIDTHS * w) continue;
+    const bead = d / 2;
+    const loops = offset([g], -bead / 2).filter((p) => Math.abs(ringArea(p.outer)) >= MIN_LOOP_AREA_UM2).map((p) => p.outer);
+    for (const loop of loops) out.push({ loop, widthUm: Math.round(bead) });
+    if (loops.length && rounds > 1) fillGaps(difference([g], strokeArea([], loops, bead, 'miter')), w, rounds - 1, out);
+  }
+}
