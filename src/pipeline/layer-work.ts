@@ -9,6 +9,7 @@ import { generateInfill, solidFill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import type { IslandPaths, LayerPaths } from '../paths/types.js';
 import { allSkin, CoverWindows, skinAreas } from '../regions/skin-areas.js';
+import { bridgeAngle } from '../regions/bridge-angle.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
 import { computeWalls } from '../regions/walls.js';
 import type { Config } from '../settings/resolve.js';
@@ -94,7 +95,7 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, cus
       } else {
         skinFillArea = offset(skinAll, -(w / 2 - overlapSkin));
       }
-      const skinAngle = cfg.skinAngle + (i % 2 === 1 ? 90 : 0);
+      const skinAngle = (i > 0 ? bridgeAngle(skin.bottom, sectionAt(i - 1), w) : null) ?? cfg.skinAngle + (i % 2 === 1 ? 90 : 0);
       const skinLines = skinFillArea.length ? solidFill(skinFillArea, skinAngle, w, job.infillParams.origin) : [];
       const skinGaps = skinGapFill(skin.exposed, skinWalls, skinLines, w).map((g) => ({ loop: g.loop, width: g.widthUm / UM_PER_MM }));
       let infillLines: Pt[][] = [];
