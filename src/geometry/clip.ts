@@ -76,12 +76,40 @@ export function union(a: readonly ExPolygon[], b: readonly ExPolygon[] = []): Ex
 export function difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
   if (a.length === 0) return [];
   if (b.length === 0) return a.slice();
-  return run(ClipType.Difference, flatten(a), flatten(b), FillRule.NonZero);
+  // islands of b clear of a's bounds cannot cut anything: leave them out of the sweep
+  return run(ClipType.Difference, flatten(a), flatten(touching(b, boundsOf(a))), FillRule.NonZero);
 }
 
 export function intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
   if (a.length === 0 || b.length === 0) return [];
-  return run(ClipType.Intersection, flatten(a), flatten(b), FillRule.NonZero);
+  // islands of either side clear of the other side's bounds add nothing to the result
+  const aIn = touching(a, boundsOf(b));
+  if (aIn.length === 0) return [];
+  const bIn = touching(b, boundsOf(aIn));
+  if (bIn.length === 0) return [];
+  return run(ClipType.Intersection, flatten(aIn), flatten(bIn), FillRule.NonZero);
+}
+
+/** The islands whose outer ring's bounds overlap `box` (all of them, as the same array, when none is clear of it). */
+function touching(areas: readonly ExPolygon[], box: Bounds): readonly ExPolygon[] {
+  let out: ExPolygon[] | null = null;
+  for (let i = 0; i < areas.length; i++) {
+    const keep = ringTouches(areas[i].outer, box);
+    if (!keep && !out) out = areas.slice(0, i);
+    else if (keep && out) out.push(areas[i]);
+  }
+  return out ?? areas;
+}
+
+function ringTouches(ring: readonly Pt[], box: Bounds): boolean {
+  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  for (const p of ring) {
+    if (p.x < minX) minX = p.x;
+    if (p.x > maxX) maxX = p.x;
+    if (p.y < minY) minY = p.y;
+    if (p.y > maxY) maxY = p.y;
+  }
+  return minX <= box.maxX && maxX >= box.minX && minY <= box.maxY && maxY >= box.minY;
 }
 
 /** Grow (delta > 0) or shrink (delta < 0) areas by delta µm. */
