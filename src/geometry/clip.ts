@@ -14,6 +14,7 @@ import {
 } from 'clipper2-ts';
 import type { PolyPath64 } from 'clipper2-ts';
 import type { Bounds, ExPolygon, Polygon, Polyline, Pt } from './types.js';
+import { rawMiterOffset } from './miter-offset.js';
 
 export type Join = 'miter' | 'round' | 'square';
 
@@ -116,10 +117,20 @@ function ringTouches(ring: readonly Pt[], box: Bounds): boolean {
 export function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join = 'miter'): ExPolygon[] {
   if (areas.length === 0) return [];
   if (deltaUm === 0) return areas.slice();
-  const co = new ClipperOffset(MITER_LIMIT, ARC_TOLERANCE_UM);
-  co.addPaths(flatten(areas), joinType(join), EndType.Polygon);
+  const rings = flatten(areas);
   const tree = new PolyTree64();
-  co.execute(deltaUm, tree);
+  const raw = join === 'miter' && Math.abs(deltaUm) >= 1 ? rawMiterOffset(rings, deltaUm, MITER_LIMIT) : null;
+  if (raw) {
+    // the union that resolves overlaps of the raw offset, as the general offsetter finishes
+    const c = new Clipper64();
+    c.preserveCollinear = false;
+    c.addSubject(raw);
+    c.execute(ClipType.Union, FillRule.Positive, tree);
+  } else {
+    const co = new ClipperOffset(MITER_LIMIT, ARC_TOLERANCE_UM);
+    co.addPaths(rings, joinType(join), EndType.Polygon);
+    co.execute(deltaUm, tree);
+  }
   const out: ExPolygon[] = [];
   collectTree(tree, out);
   return out;
