@@ -60,8 +60,21 @@ test('a shrink that eats thin parts splits or removes them like a full union', (
   assert.equal(area(out), 2 * 3200 * 3200);
 });
 
-test('corners past the mitre limit, repeated points and clockwise outers are left to the general offsetter', () => {
-  const spike: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 500 }];
+test('a corner past the mitre limit is squared off at the offset distance from the vertex', () => {
+  const sharp: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 2000 }];
+  const [raw] = rawMiterOffset([sharp], 200, 3) ?? [];
+  assert.equal(raw.length, 4);
+  // two points at the sharp tip, on the cut 200 µm beyond it, instead of one far mitre point
+  const tip = raw.slice(1, 3);
+  for (const p of tip) assert.ok(Math.hypot(p.x - 10000, p.y) > 199 && Math.hypot(p.x - 10000, p.y) < 600, `${p.x},${p.y}`);
+  assert.ok(Math.abs(tip[0].y - tip[1].y) > 100);
+  const out = offset([{ outer: sharp, holes: [] }], 200);
+  assert.equal(out.length, 1);
+  assert.ok(out[0].outer.every((p) => distToRing(p, sharp) >= 198 && distToRing(p, sharp) <= 3 * 200 + 2));
+});
+
+test('spikes, repeated points and clockwise outers are left to the general offsetter', () => {
+  const spike: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 200 }];
   assert.equal(rawMiterOffset([spike], 200, 3), null);
   const sq = regular(4, 5000);
   assert.equal(rawMiterOffset([[...sq].reverse()], -200, 3), null);

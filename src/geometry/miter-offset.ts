@@ -7,7 +7,8 @@
  * crossings per vertex to resolve. Here a concave corner whose offset edges cross inside both of
  * them (neither edge is used up by its two corners) gets that crossing point directly: the same
  * point the union would find, without the loop. Corners whose edges are used up keep the loop, so
- * reversals are still left to the union. Convex corners get the usual mitre point.
+ * reversals are still left to the union. Convex corners get the usual mitre point, or are squared
+ * off past the mitre limit.
  */
 import type { Polygon, Pt } from './types.js';
 
@@ -16,9 +17,9 @@ const SPIKE_COS = -0.999;
 
 /**
  * The raw offset rings (to be unioned with the positive fill rule), or null when some corner needs
- * a join this fast path does not make (a mitre past the limit, a spike, a repeated point, a ring
- * with fewer than three points, rings wound the other way round): the caller then uses the
- * general offsetter.
+ * a join this fast path does not make (a spike, a repeated point, a ring with fewer than three
+ * points, rings wound the other way round): the caller then uses the general offsetter. Convex
+ * corners past the mitre limit are squared off.
  * @param rings outer rings counter-clockwise, holes clockwise, µm
  * @param delta offset distance, µm (> 0 grows)
  * @param miterLimit mitre limit as a multiple of delta
@@ -46,7 +47,7 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
     // per corner j (between edge j-1 and edge j): cos of the turn, and how much of each adjacent
     // offset edge a concave corner uses up (0 for convex corners)
     const cosA = new Float64Array(n), used = new Float64Array(n);
-    const concave = new Uint8Array(n);
+    const concave = new Uint8Array(n), square = new Uint8Array(n);
     for (let j = 0, k = n - 1; j < n; k = j++) {
       let sin = ny[j] * nx[k] - ny[k] * nx[j];
       if (sin > 1) sin = 1;
@@ -57,7 +58,8 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
         concave[j] = 1;
         used[j] = (absDelta * Math.abs(sin)) / (1 + cos);
       } else if (cos <= 0.999 && cos <= mitreCos) {
-        return null;
+        if (cos <= SPIKE_COS) return null;
+        square[j] = 1;
       }
     }
     // a concave corner keeps the loop when an adjacent edge is used up by its two corners
@@ -76,6 +78,8 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
         path.push({ x: Math.round(p.x + nx[k] * delta), y: Math.round(p.y + ny[k] * delta) });
         path.push(p);
         path.push({ x: Math.round(p.x + nx[j] * delta), y: Math.round(p.y + ny[j] * delta) });
+      } else if (square[j]) {
+        squareCorner(p, nx[k], ny[k], nx[j], ny[j], delta, path);
       } else {
         const q = delta / (cosA[j] + 1);
         path.push({ x: Math.round(p.x + (nx[k] + nx[j]) * q), y: Math.round(p.y + (ny[k] + ny[j]) * q) });
@@ -84,6 +88,26 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
     out.push(path);
   }
   return out;
+}
+
+/**
+ * A corner too sharp for a mitre, squared off: cut by the line square to the corner's bisector at
+ * |delta| from the vertex; its two points are where that line meets the two offset edges.
+ */
+function squareCorner(p: Pt, n1x: number, n1y: number, n2x: number, n2y: number, delta: number, out: Pt[]): void {
+  // unit bisector, pointing the way the corner moves
+  const s = delta < 0 ? -1 : 1;
+  let mx = (n1x + n2x) * s, my = (n1y + n2y) * s;
+  const ml = Math.sqrt(mx * mx + my * my);
+  mx /= ml;
+  my /= ml;
+  const absDelta = Math.abs(delta);
+  // edge directions: the normal turned a quarter left
+  for (const [nx, ny] of [[n1x, n1y], [n2x, n2y]]) {
+    const ex = -ny, ey = nx;
+    const t = (absDelta - delta * (nx * mx + ny * my)) / (ex * mx + ey * my);
+    out.push({ x: Math.round(p.x + nx * delta + t * ex), y: Math.round(p.y + ny * delta + t * ey) });
+  }
 }
 
 /**
