@@ -73,9 +73,18 @@ test('a corner past the mitre limit is squared off at the offset distance from t
   assert.ok(out[0].outer.every((p) => distToRing(p, sharp) >= 198 && distToRing(p, sharp) <= 3 * 200 + 2));
 });
 
-test('spikes, repeated points and clockwise outers are left to the general offsetter', () => {
+test('a spike is squared off 200 µm beyond its tip', () => {
   const spike: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 200 }];
-  assert.equal(rawMiterOffset([spike], 200, 3), null);
+  const [raw] = rawMiterOffset([spike], 200, 3) ?? [];
+  assert.equal(raw.length, 4);
+  for (const p of raw.slice(1, 3)) assert.ok(p.x >= 10195 && p.x <= 10205, `${p.x}`);
+  const out = offset([{ outer: spike, holes: [] }], 200);
+  assert.ok(out[0].outer.every((p) => distToRing(p, spike) >= 198));
+  assert.deepEqual(offset([{ outer: spike, holes: [] }], -200), []);
+});
+
+test('repeated points and clockwise outers are left to the general offsetter', () => {
+  const spike: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 200 }];
   const sq = regular(4, 5000);
   assert.equal(rawMiterOffset([[...sq].reverse()], -200, 3), null);
   assert.equal(rawMiterOffset([[sq[0], sq[0], sq[1], sq[2]]], -200, 3), null);

@@ -12,14 +12,14 @@
  */
 import type { Polygon, Pt } from './types.js';
 
-/** cos of the turn beyond which the two offset edges are treated as a spike (left to the general offsetter). */
+/** cos of the turn beyond which a corner is a spike: squared off, whichever way it turns. */
 const SPIKE_COS = -0.999;
 
 /**
  * The raw offset rings (to be unioned with the positive fill rule), or null when some corner needs
- * a join this fast path does not make (a spike, a repeated point, a ring with fewer than three
- * points, rings wound the other way round): the caller then uses the general offsetter. Convex
- * corners past the mitre limit are squared off.
+ * a join this fast path does not make (a repeated point, a ring with fewer than three points,
+ * rings wound the other way round): the caller then uses the general offsetter. Convex corners
+ * past the mitre limit and spikes are squared off.
  * @param rings outer rings counter-clockwise, holes clockwise, µm
  * @param delta offset distance, µm (> 0 grows)
  * @param miterLimit mitre limit as a multiple of delta
@@ -58,7 +58,6 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
         concave[j] = 1;
         used[j] = (absDelta * Math.abs(sin)) / (1 + cos);
       } else if (cos <= 0.999 && cos <= mitreCos) {
-        if (cos <= SPIKE_COS) return null;
         square[j] = 1;
       }
     }
@@ -95,14 +94,13 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
  * |delta| from the vertex; its two points are where that line meets the two offset edges.
  */
 function squareCorner(p: Pt, n1x: number, n1y: number, n2x: number, n2y: number, delta: number, out: Pt[]): void {
-  // unit bisector, pointing the way the corner moves
-  const s = delta < 0 ? -1 : 1;
-  let mx = (n1x + n2x) * s, my = (n1y + n2y) * s;
+  // unit bisector, pointing to the wider side of the corner: the incoming edge's direction minus
+  // the outgoing one's (edge direction = the normal turned a quarter left); stable for spikes
+  let mx = n2y - n1y, my = n1x - n2x;
   const ml = Math.sqrt(mx * mx + my * my);
   mx /= ml;
   my /= ml;
   const absDelta = Math.abs(delta);
-  // edge directions: the normal turned a quarter left
   for (const [nx, ny] of [[n1x, n1y], [n2x, n2y]]) {
     const ex = -ny, ey = nx;
     const t = (absDelta - delta * (nx * mx + ny * my)) / (ex * mx + ey * my);
