@@ -15,6 +15,7 @@ import {
 import type { PolyPath64 } from 'clipper2-ts';
 import type { Bounds, ExPolygon, Polygon, Polyline, Pt } from './types.js';
 import { rawMiterOffset } from './miter-offset.js';
+import { ringInside } from './contain.js';
 
 export type Join = 'miter' | 'round' | 'square';
 
@@ -77,8 +78,10 @@ export function union(a: readonly ExPolygon[], b: readonly ExPolygon[] = []): Ex
 export function difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
   if (a.length === 0) return [];
   if (b.length === 0) return a.slice();
-  // islands of b clear of a's bounds cannot cut anything: leave them out of the sweep
-  return run(ClipType.Difference, flatten(a), flatten(touching(b, boundsOf(a))), FillRule.NonZero);
+  // islands of a strictly inside b leave nothing; islands of b clear of a's bounds cut nothing
+  const kept = a.filter((island) => !ringInside(island.outer, b));
+  if (kept.length === 0) return [];
+  return run(ClipType.Difference, flatten(kept), flatten(touching(b, boundsOf(kept))), FillRule.NonZero);
 }
 
 export function intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
