@@ -16,6 +16,7 @@ import type { PolyPath64 } from 'clipper2-ts';
 import type { Bounds, ExPolygon, Polygon, Polyline, Pt } from './types.js';
 import { rawMiterOffset } from './miter-offset.js';
 import { ringInside } from './contain.js';
+import { islandsIfSimple } from './simple-rings.js';
 
 export type Join = 'miter' | 'round' | 'square';
 
@@ -124,10 +125,13 @@ export function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join 
   const tree = new PolyTree64();
   const raw = join === 'miter' && Math.abs(deltaUm) >= 1 ? rawMiterOffset(rings, deltaUm, MITER_LIMIT) : null;
   if (raw) {
+    // most offsets of a layer's islands stay simple: then they need no union
+    const simple = raw.loops ? null : islandsIfSimple(raw.rings, areas);
+    if (simple) return simple;
     // the union that resolves overlaps of the raw offset, as the general offsetter finishes
     const c = new Clipper64();
     c.preserveCollinear = false;
-    c.addSubject(raw);
+    c.addSubject(raw.rings);
     c.execute(ClipType.Union, FillRule.Positive, tree);
   } else {
     const co = new ClipperOffset(MITER_LIMIT, ARC_TOLERANCE_UM);

@@ -62,7 +62,7 @@ test('a shrink that eats thin parts splits or removes them like a full union', (
 
 test('a corner past the mitre limit is squared off at the offset distance from the vertex', () => {
   const sharp: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 2000 }];
-  const [raw] = rawMiterOffset([sharp], 200, 3) ?? [];
+  const [raw] = rawMiterOffset([sharp], 200, 3)?.rings ?? [];
   assert.equal(raw.length, 4);
   // two points at the sharp tip, on the cut 200 µm beyond it, instead of one far mitre point
   const tip = raw.slice(1, 3);
@@ -75,7 +75,7 @@ test('a corner past the mitre limit is squared off at the offset distance from t
 
 test('a spike is squared off 200 µm beyond its tip', () => {
   const spike: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 200 }];
-  const [raw] = rawMiterOffset([spike], 200, 3) ?? [];
+  const [raw] = rawMiterOffset([spike], 200, 3)?.rings ?? [];
   assert.equal(raw.length, 4);
   for (const p of raw.slice(1, 3)) assert.ok(p.x >= 10195 && p.x <= 10205, `${p.x}`);
   const out = offset([{ outer: spike, holes: [] }], 200);

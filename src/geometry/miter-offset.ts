@@ -12,8 +12,36 @@
  */
 import type { Polygon, Pt } from './types.js';
 
+const CONCAVE = 1, SQUARE = 2, LOOP = 4;
+
+/** Per-vertex working arrays, reused between calls (grown as needed). */
+let scratch = makeScratch(256);
+
+function makeScratch(n: number) {
+  return {
+    nx: new Float64Array(n),
+    ny: new Float64Array(n),
+    len: new Float64Array(n),
+    cosA: new Float64Array(n),
+    used: new Float64Array(n),
+    flag: new Uint8Array(n),
+  };
+}
+
+function scratchFor(n: number): typeof scratch {
+  if (scratch.nx.length < n) scratch = makeScratch(Math.max(n, 2 * scratch.nx.length));
+  return scratch;
+}
+
 /** cos of the turn beyond which a corner is a spike: squared off, whichever way it turns. */
 const SPIKE_COS = -0.999;
+
+export interface RawOffset {
+  /** One raw ring per input ring, in the same order. */
+  rings: Pt[][];
+  /** Whether some concave corner kept its backward loop (the rings then certainly overlap themselves). */
+  loops: boolean;
+}
 
 /**
  * The raw offset rings (to be unioned with the positive fill rule), or null when some corner needs
@@ -24,16 +52,17 @@ const SPIKE_COS = -0.999;
  * @param delta offset distance, µm (> 0 grows)
  * @param miterLimit mitre limit as a multiple of delta
  */
-export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLimit: number): Pt[][] | null {
+export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLimit: number): RawOffset | null {
   if (!outermostIsCounterClockwise(rings)) return null;
   // a mitre is made while cos(turn) > mitreCos; beyond that the corner would be squared off
   const mitreCos = (miterLimit <= 1 ? 2 : 2 / (miterLimit * miterLimit)) - 1;
   const absDelta = Math.abs(delta);
   const out: Pt[][] = [];
+  let loops = false;
   for (const ring of rings) {
     const n = ring.length;
     if (n < 3) return null;
-    const nx = new Float64Array(n), ny = new Float64Array(n), len = new Float64Array(n);
+    const { nx, ny, len, cosA, used, flag } = scratchFor(n);
     for (let i = 0; i < n; i++) {
       const a = ring[i], b = ring[i + 1 === n ? 0 : i + 1];
       const dx = b.x - a.x, dy = b.y - a.y;
@@ -44,40 +73,40 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
       ny[i] = -dx * f;
       len[i] = l;
     }
-    // per corner j (between edge j-1 and edge j): cos of the turn, and how much of each adjacent
-    // offset edge a concave corner uses up (0 for convex corners)
-    const cosA = new Float64Array(n), used = new Float64Array(n);
-    const concave = new Uint8Array(n), square = new Uint8Array(n);
+    // per corner j (between edge j-1 and edge j): cos of the turn, its kind, and how much of each
+    // adjacent offset edge a concave corner uses up (0 for the others)
     for (let j = 0, k = n - 1; j < n; k = j++) {
       let sin = ny[j] * nx[k] - ny[k] * nx[j];
       if (sin > 1) sin = 1;
       else if (sin < -1) sin = -1;
       const cos = nx[j] * nx[k] + ny[j] * ny[k];
       cosA[j] = cos;
+      used[j] = 0;
+      flag[j] = 0;
       if (cos > SPIKE_COS && sin * delta < 0) {
-        concave[j] = 1;
+        flag[j] = CONCAVE;
         used[j] = (absDelta * Math.abs(sin)) / (1 + cos);
       } else if (cos <= 0.999 && cos <= mitreCos) {
-        square[j] = 1;
+        flag[j] = SQUARE;
       }
     }
     // a concave corner keeps the loop when an adjacent edge is used up by its two corners
-    const loop = new Uint8Array(n);
     for (let i = 0; i < n; i++) {
       const next = i + 1 === n ? 0 : i + 1;
       if (used[i] + used[next] >= len[i] - 1) {
-        loop[i] = concave[i];
-        loop[next] = concave[next];
+        if (flag[i] & CONCAVE) flag[i] |= LOOP;
+        if (flag[next] & CONCAVE) flag[next] |= LOOP;
       }
     }
     const path: Pt[] = [];
     for (let j = 0, k = n - 1; j < n; k = j++) {
       const p = ring[j];
-      if (loop[j]) {
+      if (flag[j] & LOOP) {
+        loops = true;
         path.push({ x: Math.round(p.x + nx[k] * delta), y: Math.round(p.y + ny[k] * delta) });
         path.push(p);
         path.push({ x: Math.round(p.x + nx[j] * delta), y: Math.round(p.y + ny[j] * delta) });
-      } else if (square[j]) {
+      } else if (flag[j] & SQUARE) {
         squareCorner(p, nx[k], ny[k], nx[j], ny[j], delta, path);
       } else {
         const q = delta / (cosA[j] + 1);
@@ -86,7 +115,7 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
     }
     out.push(path);
   }
-  return out;
+  return { rings: out, loops };
 }
 
 /**
@@ -101,11 +130,15 @@ function squareCorner(p: Pt, n1x: number, n1y: number, n2x: number, n2y: number,
   mx /= ml;
   my /= ml;
   const absDelta = Math.abs(delta);
-  for (const [nx, ny] of [[n1x, n1y], [n2x, n2y]]) {
-    const ex = -ny, ey = nx;
-    const t = (absDelta - delta * (nx * mx + ny * my)) / (ex * mx + ey * my);
-    out.push({ x: Math.round(p.x + nx * delta + t * ex), y: Math.round(p.y + ny * delta + t * ey) });
-  }
+  out.push(squarePoint(p, n1x, n1y, mx, my, delta, absDelta));
+  out.push(squarePoint(p, n2x, n2y, mx, my, delta, absDelta));
+}
+
+/** Where the offset edge with normal (nx, ny) meets the square cut with unit bisector (mx, my). */
+function squarePoint(p: Pt, nx: number, ny: number, mx: number, my: number, delta: number, absDelta: number): Pt {
+  const ex = -ny, ey = nx; // edge direction: the normal turned a quarter left
+  const t = (absDelta - delta * (nx * mx + ny * my)) / (ex * mx + ey * my);
+  return { x: Math.round(p.x + nx * delta + t * ex), y: Math.round(p.y + ny * delta + t * ey) };
 }
 
 /**

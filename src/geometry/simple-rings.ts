@@ -1,0 +1,182 @@
+/**
+ * Islands straight from raw offset rings when no clean-up union is needed: the rings are simple
+ * (no edge meets another except neighbours at their shared point), keep their winding, and keep
+ * the nesting of the islands they came from (each hole inside its own outer ring, no ring inside
+ * any other). Then the positive-fill union would return the same rings, so it is skipped.
+ */
+import type { ExPolygon, Polygon, Pt } from './types.js';
+
+/** Above this many rings the pairwise nesting check is left to the union. */
+const MAX_RINGS = 12;
+
+/**
+ * The islands the raw rings make, or null when the union has work to do (or this cannot tell).
+ * @param raw one ring per ring of `areas`, in flatten() order (outer, then its holes, per island)
+ * @param areas the islands that were offset
+ */
+export function islandsIfSimple(raw: readonly Pt[][], areas: readonly ExPolygon[]): ExPolygon[] | null {
+  if (raw.length > MAX_RINGS) return null;
+  const rings: Polygon[] = [];
+  for (const r of raw) {
+    const c = cleanRing(r);
+    if (!c) return null;
+    rings.push(c);
+  }
+  // winding kept: outer rings counter-clockwise, holes clockwise
+  let k = 0;
+  for (const a of areas) {
+    if (!(twiceArea(rings[k++]) > 0)) return null;
+    for (let h = 0; h < a.holes.length; h++) if (!(twiceArea(rings[k++]) < 0)) return null;
+  }
+  if (!edgesSimple(rings)) return null;
+  // nesting: with no contacts, ring j is inside ring i iff its first point is; the only nesting
+  // allowed is each island's holes inside its own outer ring
+  const ownerOf = new Int32Array(rings.length).fill(-1);
+  let k2 = 0;
+  for (const a of areas) {
+    for (let h = 1; h <= a.holes.length; h++) ownerOf[k2 + h] = k2;
+    k2 += 1 + a.holes.length;
+  }
+  for (let i = 0; i < rings.length; i++) {
+    for (let j = 0; j < rings.length; j++) {
+      if (i !== j && pointInRing(rings[j][0], rings[i]) !== (ownerOf[j] === i)) return null;
+    }
+  }
+  const out: ExPolygon[] = [];
+  k = 0;
+  for (const a of areas) {
+    out.push({ outer: rings[k], holes: rings.slice(k + 1, k + 1 + a.holes.length) });
+    k += 1 + a.holes.length;
+  }
+  return out;
+}
+
+/**
+ * The ring without repeated points and without points exactly on the line through their
+ * neighbours; null when it turns back on itself (a spike) or has fewer than three points left.
+ */
+function cleanRing(r: readonly Pt[]): Polygon | null {
+  const pts: Pt[] = [];
+  for (const p of r) {
+    const last = pts[pts.length - 1];
+    if (!last || last.x !== p.x || last.y !== p.y) pts.push(p);
+  }
+  while (pts.length > 1 && pts[0].x === pts[pts.length - 1].x && pts[0].y === pts[pts.length - 1].y) pts.pop();
+  // drop collinear points until none is left (a removal can make its neighbours collinear)
+  let n = pts.length;
+  let changed = true;
+  let ring = pts;
+  while (changed && n >= 3) {
+    changed = false;
+    const next: Pt[] = [];
+    for (let i = 0; i < n; i++) {
+      const a = ring[(i + n - 1) % n], b = ring[i], c = ring[(i + 1) % n];
+      const cross = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
+      if (cross === 0) {
+        // straight on: drop; turning back: a spike the union would cut off
+        if ((b.x - a.x) * (c.x - b.x) + (b.y - a.y) * (c.y - b.y) < 0) return null;
+        changed = true;
+        continue;
+      }
+      next.push(b);
+    }
+    ring = next;
+    n = ring.length;
+  }
+  return n >= 3 ? ring : null;
+}
+
+function twiceArea(r: Polygon): number {
+  let a = 0;
+  for (let i = 0, j = r.length - 1; i < r.length; j = i++) a += (r[j].x - r[i].x) * (r[j].y + r[i].y);
+  return a;
+}
+
+function pointInRing(p: Pt, ring: Polygon): boolean {
+  let inside = false;
+  for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
+    const a = ring[i], b = ring[j];
+    if (a.y > p.y !== b.y > p.y && p.x < a.x + ((p.y - a.y) * (b.x - a.x)) / (b.y - a.y)) inside = !inside;
+  }
+  return inside;
+}
+
+/** Edge sort keys pack the lower y with the edge index: at most this many edges. */
+const KEY_SPAN = 65536;
+
+/** Edge arrays reused between calls (grown as needed): per edge its ends, ring and index in the ring. */
+let edges = makeEdges(1024);
+
+function makeEdges(n: number) {
+  return {
+    ax: new Float64Array(n), ay: new Float64Array(n), bx: new Float64Array(n), by: new Float64Array(n),
+    maxY: new Float64Array(n), key: new Float64Array(n), ring: new Int32Array(n), at: new Int32Array(n), ringLen: new Int32Array(n),
+    open: new Int32Array(n),
+  };
+}
+
+/**
+ * Whether no two edges of the rings meet, other than consecutive edges of one ring at their shared
+ * point. A sweep over y: edges sorted by their lower end, each tested against the edges still open.
+ */
+function edgesSimple(rings: readonly Polygon[]): boolean {
+  let total = 0;
+  for (const r of rings) total += r.length;
+  if (total >= KEY_SPAN) return false;
+  if (edges.ax.length < total) edges = makeEdges(Math.max(total, 2 * edges.ax.length));
+  const { ax, ay, bx, by, maxY, ring, at, ringLen, open } = edges;
+  const key = edges.key.subarray(0, total);
+  let e = 0;
+  for (let ri = 0; ri < rings.length; ri++) {
+    const r = rings[ri];
+    for (let i = 0; i < r.length; i++) {
+      const p = r[i], q = r[i + 1 === r.length ? 0 : i + 1];
+      ax[e] = p.x;
+      ay[e] = p.y;
+      bx[e] = q.x;
+      by[e] = q.y;
+      ring[e] = ri;
+      at[e] = i;
+      ringLen[e] = r.length;
+      maxY[e] = p.y < q.y ? q.y : p.y;
+      key[e] = (p.y < q.y ? p.y : q.y) * KEY_SPAN + e;
+      e++;
+    }
+  }
+  key.sort();
+  let openCount = 0;
+  for (let o = 0; o < total; o++) {
+    const i = ((key[o] % KEY_SPAN) + KEY_SPAN) % KEY_SPAN;
+    const lowY = ay[i] < by[i] ? ay[i] : by[i];
+    let w = 0;
+    for (let t = 0; t < openCount; t++) {
+      const j = open[t];
+      if (maxY[j] < lowY) continue; // ended below this edge
+      open[w++] = j;
+      if (ring[i] === ring[j]) {
+        const d = at[i] > at[j] ? at[i] - at[j] : at[j] - at[i];
+        if (d === 1 || d === ringLen[i] - 1) continue; // neighbours: they share one point and are not collinear
+      }
+      if (meet(ax[i], ay[i], bx[i], by[i], ax[j], ay[j], bx[j], by[j])) return false;
+    }
+    open[w++] = i;
+    openCount = w;
+  }
+  return true;
+}
+
+function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
+  const v = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
+  return v > 0 ? 1 : v < 0 ? -1 : 0;
+}
+
+/** Closed segments pq and rs share a point. */
+function meet(px: number, py: number, qx: number, qy: number, rx: number, ry: number, sx: number, sy: number): boolean {
+  if (Math.max(px, qx) < Math.min(rx, sx) || Math.max(rx, sx) < Math.min(px, qx)) return false;
+  if (Math.max(py, qy) < Math.min(ry, sy) || Math.max(ry, sy) < Math.min(py, qy)) return false;
+  const o1 = orient(px, py, qx, qy, rx, ry), o2 = orient(px, py, qx, qy, sx, sy);
+  if (o1 !== 0 && o1 === o2) return false;
+  const o3 = orient(rx, ry, sx, sy, px, py), o4 = orient(rx, ry, sx, sy, qx, qy);
+  if (o3 !== 0 && o3 === o4) return false;
+  return true;
+}
