@@ -92,3 +92,27 @@ test('repeated points and clockwise outers are left to the general offsetter', (
   // the facade still offsets them
   assert.ok(area(offset([{ outer: spike, holes: [] }], 200)) > 0);
 });
+
+test('edges used up between concave corners are dropped, not left to the union as loops', () => {
+  // a 20 mm circle whose edges alternate long and short (126 µm), shrunk by 5 mm: the short
+  // offset edges are used up by their two corners
+  const r = 20000, d = 5000;
+  const ring: Polygon = [];
+  let a = 0;
+  for (let i = 0; i < 200; i++) {
+    ring.push({ x: Math.round(r * Math.cos(a)), y: Math.round(r * Math.sin(a)) });
+    a += ((i % 2 === 0 ? 1.8 : 0.2) * Math.PI) / 100;
+  }
+  const raw = rawMiterOffset([ring], -d, 3);
+  assert.ok(raw);
+  assert.equal(raw.loops, false);
+  assert.equal(raw.rings[0].length, 100);
+  const out = offset([{ outer: ring, holes: [] }], -d);
+  assert.equal(out.length, 1);
+  for (const p of out[0].outer) {
+    assert.ok(distToRing(p, ring) >= d - 2, `${p.x},${p.y}`);
+    assert.ok(Math.hypot(p.x, p.y) < r - d + 50, `${p.x},${p.y}`);
+  }
+  const inner = r * Math.cos((0.9 * Math.PI) / 100) - d;
+  assert.ok(area(out) > Math.PI * inner * inner && area(out) < Math.PI * (r - d) * (r - d));
+});

@@ -91,12 +91,20 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
       }
     }
     // a concave corner keeps the loop when an adjacent edge is used up by its two corners
+    let usedUp = false;
     for (let i = 0; i < n; i++) {
       const next = i + 1 === n ? 0 : i + 1;
       if (used[i] + used[next] >= len[i] - 1) {
+        usedUp = true;
         if (flag[i] & CONCAVE) flag[i] |= LOOP;
         if (flag[next] & CONCAVE) flag[next] |= LOOP;
       }
+    }
+    // unless used-up edges lie between concave corners only: then they are dropped instead
+    const collapsed = usedUp ? dropUsedUpEdges(ring, delta) : null;
+    if (collapsed) {
+      out.push(collapsed);
+      continue;
     }
     const path: Pt[] = [];
     for (let j = 0, k = n - 1; j < n; k = j++) {
@@ -116,6 +124,72 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
     out.push(path);
   }
   return { rings: out, loops };
+}
+
+/** Per-edge working arrays of dropUsedUpEdges, reused between calls. */
+let links = makeLinks(256);
+
+function makeLinks(n: number) {
+  return { prev: new Int32Array(n), next: new Int32Array(n), cx: new Float64Array(n), cy: new Float64Array(n), stack: new Int32Array(2 * n) };
+}
+
+/**
+ * The raw offset of one ring (whose normals, turns and corner kinds are in the scratch arrays)
+ * with every used-up offset edge between two concave corners dropped: its neighbours' offset lines
+ * meet instead, as in the union of the looped version, repeated until no edge is used up. Null
+ * when that does not settle it: a squared corner on the ring, a used-up edge next to a mitred
+ * corner, a merged corner that is no longer concave, or fewer than three edges left.
+ */
+function dropUsedUpEdges(ring: Polygon, delta: number): Pt[] | null {
+  const n = ring.length;
+  const { nx, ny, cosA, flag } = scratch;
+  if (links.prev.length < n) links = makeLinks(Math.max(n, 2 * links.prev.length));
+  const { prev, next, cx, cy, stack } = links;
+  for (let e = 0; e < n; e++) if (flag[e] & SQUARE) return null;
+  // cx, cy: the corner at the start of edge e, where the offset lines of prev[e] and e meet
+  for (let e = 0, k = n - 1; e < n; k = e++) {
+    prev[e] = k;
+    next[k] = e;
+    const q = delta / (cosA[e] + 1);
+    cx[e] = ring[e].x + (nx[k] + nx[e]) * q;
+    cy[e] = ring[e].y + (ny[k] + ny[e]) * q;
+    stack[e] = e;
+  }
+  let top = n, alive = n, first = 0;
+  while (top > 0) {
+    const e = stack[--top];
+    if (prev[e] < 0) continue; // dropped already
+    const b = next[e];
+    // the offset edge runs along (-ny, nx) from its start corner to the next one
+    if ((cx[b] - cx[e]) * -ny[e] + (cy[b] - cy[e]) * nx[e] >= 1) continue;
+    if (!(flag[e] & CONCAVE) || !(flag[b] & CONCAVE) || alive <= 3) return null;
+    const a = prev[e];
+    // drop e: the offset lines of a and b now meet
+    const turnSin = ny[b] * nx[a] - ny[a] * nx[b];
+    const turnCos = nx[a] * nx[b] + ny[a] * ny[b];
+    if (!(turnCos > SPIKE_COS && turnSin * delta < 0)) return null;
+    const pax = ring[a].x + nx[a] * delta, pay = ring[a].y + ny[a] * delta;
+    const pbx = ring[b].x + nx[b] * delta, pby = ring[b].y + ny[b] * delta;
+    // directions: da = (-ny[a], nx[a]), db = (-ny[b], nx[b]); pa + t·da = pb + s·db
+    const cross = nx[a] * ny[b] - ny[a] * nx[b]; // cross(da, db)
+    const t = ((pbx - pax) * nx[b] + (pby - pay) * ny[b]) / cross; // cross(pb - pa, db) / cross(da, db)
+    cx[b] = pax - ny[a] * t;
+    cy[b] = pay + nx[a] * t;
+    next[a] = b;
+    prev[b] = a;
+    prev[e] = -1;
+    if (e === first) first = b;
+    alive--;
+    stack[top++] = a;
+    stack[top++] = b;
+  }
+  const path: Pt[] = [];
+  let e = first;
+  do {
+    path.push({ x: Math.round(cx[e]), y: Math.round(cy[e]) });
+    e = next[e];
+  } while (e !== first);
+  return path;
 }
 
 /**
