@@ -28,6 +28,7 @@ export interface LayerRegions {
 
 export interface RangeResult {
   paths: LayerPaths[];
+  /** Only for a regionsOnly job (empty otherwise: the final pass needs none). */
   regions: LayerRegions[];
 }
 
@@ -111,7 +112,7 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, cus
       }
       islands.push({ outline: iw.outline, walls: iw.wallLoops, gapFill: iw.gapFill.map((g) => ({ loop: g.loop, width: g.widthUm / UM_PER_MM })), skinWalls, skinLines, skinGaps, infillLines, infillLoops });
     }
-    regions.push({ index: i, infill: layerInfill.length > 1 ? union(layerInfill) : layerInfill, topSkin: layerTop });
+    if (job.regionsOnly) regions.push({ index: i, infill: layerInfill.length > 1 ? union(layerInfill) : layerInfill, topSkin: layerTop });
     if (!job.regionsOnly) {
       paths.push({
         index: section.index,
