@@ -6,9 +6,10 @@
  * shrink every convex corner of the outline is such a corner, so the union has two extra
  * crossings per vertex to resolve. Here a concave corner whose offset edges cross inside both of
  * them (neither edge is used up by its two corners) gets that crossing point directly: the same
- * point the union would find, without the loop. Corners whose edges are used up keep the loop, so
- * reversals are still left to the union. Convex corners get the usual mitre point, or are squared
- * off past the mitre limit.
+ * point the union would find, without the loop. An offset edge used up between two concave corners
+ * is dropped and its neighbours meet instead; corners of other used-up edges keep their loops, so
+ * such reversals are still left to the union. Convex corners get the usual mitre point, or are
+ * squared off past the mitre limit.
  */
 import type { Polygon, Pt } from './types.js';
 
