@@ -110,9 +110,9 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   // N threads: the calling thread and N-1 workers
   // (a custom density given as a JS function cannot travel to a worker)
   const workers = opts.custom && !isTransferable(opts.custom) ? 0 : Math.min(opts.threads, split.length) - 1;
-  const pool = workers > 0 ? await createPool(workers, mesh, cfg, opts.custom) : null;
   let sliceable: PreparedMesh | null = null;
   const local = () => (sliceable ??= prepareForSlicing(mesh));
+  const pool = workers > 0 ? await createPool(workers, local, cfg, opts.custom) : null;
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
     let prepared: unknown[] | undefined;

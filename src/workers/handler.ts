@@ -1,6 +1,6 @@
 /** The worker side, independent of the host: keeps the mesh and config, runs range jobs. */
 import { StrataError } from '../errors.js';
-import { prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
+import type { PreparedMesh } from '../slice/index.js';
 import { computeRange } from '../pipeline/layer-work.js';
 import { customGenerator } from '../pipeline/custom-infill.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
@@ -13,7 +13,7 @@ export function makeHandler(post: (msg: FromWorker) => void): (msg: ToWorker) =>
   let custom: CustomInfillGenerator | undefined;
   return (msg) => {
     if (msg.type === 'init') {
-      mesh = prepareForSlicing(msg.mesh);
+      mesh = msg.mesh;
       cfg = msg.cfg;
       custom = msg.custom ? customGenerator(msg.custom, msg.cfg) : undefined;
       return;

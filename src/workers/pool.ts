@@ -1,59 +1,52 @@
 /**
- * A pool of layer workers (worker_threads in Node, Web Workers in browsers). The mesh is copied once
- * into shared memory and handed to every worker; jobs are layer ranges, results come back by range,
- * so the output does not depend on how many workers there are.
+ * A pool of layer workers (worker_threads in Node, Web Workers in browsers). The mesh is prepared for
+ * slicing once, on the calling thread, and handed to every worker in shared memory where there is
+ * some; jobs are layer ranges, results come back by range, so the output does not depend on how many
+ * workers there are.
  */
 import { StrataError } from '../errors.js';
-import { isNode, nodeBuiltin } from '../runtime.js';
-import type { Mesh } from '../mesh/types.js';
+import { isNode } from '../runtime.js';
+import type { PreparedMesh } from '../slice/index.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
 import type { Config } from '../settings/resolve.js';
-import type { FromWorker, ToWorker } from './protocol.js';
+import type { FromWorker } from './protocol.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import { nodeWorkerPort, webWorkerPort, type Port, type WebWorkerCtor } from './ports.js';
 
-interface Port {
-  post(msg: ToWorker): void;
-  onMessage(fn: (msg: FromWorker) => void): void;
-  onError(fn: (err: Error) => void): void;
-  terminate(): Promise<unknown> | void;
-}
+/** Start one worker. */
+export type Spawn = () => Port | Promise<Port>;
 
-
-async function spawn(): Promise<Port> {
+function defaultSpawn(): Port | Promise<Port> {
   const url = new URL('./layer-worker.js', import.meta.url);
-  if (isNode) {
-    const { Worker } = await nodeBuiltin<typeof import('node:worker_threads')>('worker_threads');
-    const w = new Worker(url);
-    w.unref();
-    return {
-      post: (m) => w.postMessage(m),
-      onMessage: (fn) => w.on('message', fn),
-      onError: (fn) => w.on('error', fn),
-      terminate: () => w.terminate(),
-    };
-  }
-  const W = (globalThis as unknown as { Worker: new (u: URL, o: { type: 'module' }) => { postMessage(m: unknown): void; onmessage: ((e: { data: FromWorker }) => void) | null; onerror: ((e: { message?: string }) => void) | null; terminate(): void } }).Worker;
-  const w = new W(url, { type: 'module' });
-  return {
-    post: (m) => w.postMessage(m),
-    onMessage: (fn) => (w.onmessage = (e) => fn(e.data)),
-    onError: (fn) => (w.onerror = (e) => fn(new Error(e.message ?? 'worker error'))),
-    terminate: () => w.terminate(),
-  };
+  if (isNode) return nodeWorkerPort(url);
+  const W = (globalThis as { Worker?: WebWorkerCtor }).Worker;
+  if (!W) throw new Error('this environment has no Worker: slice with threads: 1');
+  return webWorkerPort(W, url);
 }
 
-/** Copy typed arrays into SharedArrayBuffers (when available) so workers share one mesh. */
-function shareMesh(mesh: Mesh): Mesh {
-  if (typeof SharedArrayBuffer === 'undefined') return mesh;
+/** A copy of a typed array in a SharedArrayBuffer, or the array itself where there is none. */
+function shared<T extends Float32Array | Float64Array | Int32Array | Uint32Array | Uint8Array>(a: T): T {
+  if (typeof SharedArrayBuffer === 'undefined') return a;
   try {
-    const p = new Float32Array(new SharedArrayBuffer(mesh.positions.byteLength));
-    p.set(mesh.positions);
-    const i = new Uint32Array(new SharedArrayBuffer(mesh.indices.byteLength));
-    i.set(mesh.indices);
-    return { positions: p, indices: i };
+    const C = a.constructor as new (b: SharedArrayBuffer) => T;
+    const out = new C(new SharedArrayBuffer(a.byteLength));
+    out.set(a as never);
+    return out;
   } catch {
-    return mesh;
+    return a;
   }
+}
+
+/** The prepared mesh with every array in shared memory (when available), so workers share one copy. */
+function sharePrepared(m: PreparedMesh): PreparedMesh {
+  const e = m.edges;
+  return {
+    positions: shared(m.positions),
+    indices: shared(m.indices),
+    zq: shared(m.zq),
+    triMode: shared(m.triMode),
+    edges: { triEdge: shared(e.triEdge), edgeA: shared(e.edgeA), edgeB: shared(e.edgeB), edgeCount: e.edgeCount },
+  };
 }
 
 export interface LayerPool {
@@ -68,15 +61,44 @@ export interface LayerPool {
 /** Jobs each worker holds at once, so it never waits for the busy main thread to hand out the next. */
 const IN_FLIGHT = 2;
 
-export async function createPool(size: number, mesh: Mesh, cfg: Config, custom?: CustomInfillSpec): Promise<LayerPool> {
-  const shared = shareMesh(mesh);
+/** Run `fn` soon, after pending messages; not subject to the timer throttling of background tabs. */
+function soon(fn: () => void): void {
+  if (typeof setImmediate === 'function') setImmediate(fn);
+  else if (typeof MessageChannel === 'function') {
+    const ch = new MessageChannel();
+    ch.port1.onmessage = () => {
+      ch.port1.close();
+      fn();
+    };
+    ch.port2.postMessage(null);
+  } else setTimeout(fn, 0);
+}
+
+/**
+ * Start `size` workers, then prepare the mesh (`prepare`, on this thread, while they load) and send it
+ * to them with the settings.
+ */
+export async function createPool(size: number, prepare: () => PreparedMesh, cfg: Config, custom?: CustomInfillSpec, spawn: Spawn = defaultSpawn): Promise<LayerPool> {
   const ports = await Promise.all(Array.from({ length: size }, () => spawn()));
   // The run in progress: one at a time, so the ports' listeners are installed once.
   let current: { onMessage(p: Port, m: FromWorker): void; fail(e: Error): void } | null = null;
+  // A worker that failed between runs fails the next run at once: its jobs would never come back.
+  let broken: Error | null = null;
   for (const p of ports) {
-    p.post({ type: 'init', mesh: shared, cfg, custom });
-    p.onMessage((m) => current?.onMessage(p, m));
-    p.onError((e) => current?.fail(e));
+    p.listen(
+      (m) => current?.onMessage(p, m),
+      (e) => {
+        broken ??= e;
+        current?.fail(e);
+      },
+    );
+  }
+  try {
+    const mesh = sharePrepared(prepare());
+    for (const p of ports) p.post({ type: 'init', mesh, cfg, custom });
+  } catch (e) {
+    await Promise.all(ports.map((p) => p.terminate()));
+    throw e;
   }
   return {
     run(jobs, local, onDone, signal) {
@@ -100,7 +122,11 @@ export async function createPool(size: number, mesh: Mesh, cfg: Config, custom?:
         const feed = (p: Port) => {
           if (finished || next >= jobs.length) return;
           const id = next++;
-          p.post({ type: 'range', id, job: jobs[id] });
+          try {
+            p.post({ type: 'range', id, job: jobs[id] });
+          } catch (e) {
+            finish(e as Error);
+          }
         };
         // the calling thread takes a job whenever it is free, between handling worker messages
         const work = () => {
@@ -111,10 +137,11 @@ export async function createPool(size: number, mesh: Mesh, cfg: Config, custom?:
           } catch (e) {
             return finish(e as Error);
           }
-          setTimeout(work, 0);
+          soon(work);
         };
         if (signal?.aborted) return finish(new StrataError('CANCELLED', 'slicing was cancelled'));
         signal?.addEventListener('abort', () => finish(new StrataError('CANCELLED', 'slicing was cancelled')), { once: true });
+        if (broken) return finish(broken);
         if (jobs.length === 0) return finish(null);
         current = {
           fail: (e) => finish(e),
@@ -128,7 +155,7 @@ export async function createPool(size: number, mesh: Mesh, cfg: Config, custom?:
           },
         };
         for (let k = 0; k < IN_FLIGHT; k++) for (const p of ports) feed(p);
-        setTimeout(work, 0);
+        soon(work);
       });
     },
     async close() {

@@ -1,11 +1,11 @@
 /** Messages between the pipeline and its layer workers: plain data only. */
-import type { Mesh } from '../mesh/types.js';
+import type { PreparedMesh } from '../slice/index.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
 import type { Config } from '../settings/resolve.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 
 export type ToWorker =
-  | { type: 'init'; mesh: Mesh; cfg: Config; custom?: CustomInfillSpec }
+  | { type: 'init'; mesh: PreparedMesh; cfg: Config; custom?: CustomInfillSpec }
   | { type: 'range'; id: number; job: RangeJob };
 
 export type FromWorker =

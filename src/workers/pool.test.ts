@@ -1,0 +1,93 @@
+/**
+ * The pool driven through the browser host (`webWorkerPort`) by a fake Web Worker that runs the real
+ * worker handler in this thread: results match the calling thread's, and a worker that cannot answer
+ * (script not loaded, uncaught error, unreadable message, unclonable job) fails the run instead of
+ * leaving it waiting.
+ */
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { prepareModel } from '../api/slicer.js';
+import { resolveConfig } from '../settings/resolve.js';
+import { planLayers, prepareMesh } from '../slice/index.js';
+import { computeRange, type RangeJob } from '../pipeline/layer-work.js';
+import { makeHandler } from './handler.js';
+import { createPool } from './pool.js';
+import { webWorkerPort, type WebWorkerEvent, type WebWorkerLike } from './ports.js';
+import type { ToWorker } from './protocol.js';
+
+type Mode = 'ok' | 'no-script' | 'throws' | 'messageerror' | 'unclonable';
+
+/** A Web Worker stand-in: messages cross by structured clone, one task later, as in a browser. */
+function fakeWorker(mode: Mode) {
+  return class FakeWorker implements WebWorkerLike {
+    #listeners = new Map<string, Array<(e: WebWorkerEvent) => void>>();
+    #posted = 0;
+    #handle = makeHandler((m) => this.#emit('message', { data: structuredClone(m) }));
+    constructor(readonly url: URL, readonly options: { type: 'module' }) {
+      if (mode === 'no-script') setTimeout(() => this.#emit('error', { preventDefault() {} }), 0);
+    }
+    #emit(type: string, e: WebWorkerEvent) {
+      setTimeout(() => {
+        for (const fn of this.#listeners.get(type) ?? []) fn(e);
+      }, 0);
+    }
+    addEventListener(type: string, fn: (e: WebWorkerEvent) => void) {
+      this.#listeners.set(type, [...(this.#listeners.get(type) ?? []), fn]);
+    }
+    postMessage(m: unknown) {
+      const msg = structuredClone(m) as ToWorker;
+      if (mode === 'no-script') return;
+      if (msg.type === 'range' && ++this.#posted > 1) {
+        if (mode === 'throws') return this.#emit('error', { message: 'Uncaught RangeError: boom', filename: 'layer-worker.js', lineno: 3 });
+        if (mode === 'messageerror') return this.#emit('messageerror', {});
+        if (mode === 'unclonable') throw new DOMException('could not be cloned', 'DataCloneError');
+      }
+      setTimeout(() => this.#handle(msg), 0);
+    }
+    terminate() {}
+  };
+}
+
+const root = fileURLToPath(new URL('../../', import.meta.url));
+const cfg = resolveConfig({});
+const model = prepareModel(readFileSync(root + 'examples/calibration-cube.stl'), cfg);
+const layers = planLayers(20, cfg.firstLayerHeight, cfg.layerHeight);
+const params = { density: 0.2, lineWidth: 400, nozzleDiameter: 400, angle: 45, centering: 'object' as const, origin: { x: 0, y: 0 }, connect: false };
+const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({ layers, from: Math.floor((k * layers.length) / 6), to: Math.floor(((k + 1) * layers.length) / 6), regionsOnly: false, infillParams: params }));
+const prepared = prepareMesh(model.mesh);
+const local = (j: RangeJob) => computeRange(prepared, cfg, j);
+const url = new URL('./layer-worker.js', import.meta.url);
+const pool = (mode: Mode, workers = 1) => createPool(workers, () => prepared, cfg, undefined, () => webWorkerPort(fakeWorker(mode), url));
+const tick = () => new Promise((r) => setTimeout(r, 5));
+
+test('through Web Workers, results come back in job order and equal the calling thread’s', { timeout: 20_000 }, async () => {
+  const p = await pool('ok', 2);
+  let done = 0, locally = 0;
+  const results = await p.run(jobs, (j) => (locally++, local(j)), () => done++);
+  await p.close();
+  assert.equal(done, jobs.length);
+  assert.ok(locally < jobs.length, 'the workers took some jobs');
+  assert.deepEqual(results, jobs.map(local));
+});
+
+test('a worker whose script does not load fails the next run with a clear message, not a stall', { timeout: 20_000 }, async () => {
+  const p = await pool('no-script');
+  await tick(); // the error arrives between runs (as between the two passes of lightning infill)
+  await assert.rejects(p.run(jobs, local), /layer-worker\.js could not be started: the script did not load as a module worker/);
+  await p.close();
+});
+
+test('an uncaught error in a worker, an unreadable message or an unclonable job fails the run', { timeout: 20_000 }, async () => {
+  const cases: Array<[Mode, RegExp]> = [
+    ['throws', /layer worker failed: Uncaught RangeError: boom \(layer-worker\.js:3\)/],
+    ['messageerror', /could not be read/],
+    ['unclonable', /could not be cloned/],
+  ];
+  for (const [mode, message] of cases) {
+    const p = await pool(mode);
+    await assert.rejects(p.run(jobs, local), message, mode);
+    await p.close();
+  }
+});
