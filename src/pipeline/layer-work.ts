@@ -27,8 +27,9 @@ export interface LayerRegions {
 }
 
 export interface RangeResult {
+  /** Empty for a regions-only job. */
   paths: LayerPaths[];
-  /** Only for a regionsOnly job (empty otherwise: the final pass needs none). */
+  /** Only for a regions-only job (nothing else needs them). */
   regions: LayerRegions[];
 }
 
@@ -113,7 +114,7 @@ export function computeRange(mesh: PreparedMesh, cfg: Config, job: RangeJob, cus
       islands.push({ outline: iw.outline, walls: iw.wallLoops, gapFill: iw.gapFill.map((g) => ({ loop: g.loop, width: g.widthUm / UM_PER_MM })), skinWalls, skinLines, skinGaps, infillLines, infillLoops });
     }
     if (job.regionsOnly) regions.push({ index: i, infill: layerInfill.length > 1 ? union(layerInfill) : layerInfill, topSkin: layerTop });
-    if (!job.regionsOnly) {
+    else {
       paths.push({
         index: section.index,
         z: section.z,
