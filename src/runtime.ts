@@ -4,7 +4,7 @@
  */
 export const isNode = typeof process !== 'undefined' && !!process.versions?.node;
 
-export function nodeBuiltin<T>(name: 'os' | 'worker_threads'): Promise<T> {
+export function nodeBuiltin<T>(name: 'fs' | 'os' | 'worker_threads'): Promise<T> {
   const specifier = `node:${name}`;
   return import(/* @vite-ignore */ /* webpackIgnore: true */ specifier) as Promise<T>;
 }

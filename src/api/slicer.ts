@@ -8,7 +8,8 @@ import { mergeObjects, placeOnBed, positionBounds, prepareMesh, toMeshObjects } 
 import type { Mesh, MeshReport } from '../mesh/types.js';
 import { runPipeline, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
-import { customGenerator, type CustomInfillSpec } from '../pipeline/custom-infill.js';
+import { customGenerator, isTransferable, type CustomInfillSpec } from '../pipeline/custom-infill.js';
+import { releaseWorkers, startWorkers } from '../workers/pool.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey, type Settings, type SliceOptions } from '../settings/schema.js';
 import { checkKey, resolveConfig, validateValue, type Config } from '../settings/resolve.js';
 
@@ -72,8 +73,28 @@ async function coreCount(): Promise<number> {
   return nav?.hardwareConcurrency ?? 1;
 }
 
+/**
+ * Automatic thread count: one per core with more than two cores, else one. With a worker, the calling
+ * thread mostly plans while the worker computes, and V8's background compiler already keeps a second
+ * core busy for one thread: on two cores, two threads measured no faster than one, with ~45 MiB more.
+ */
+async function autoThreads(): Promise<number> {
+  const cores = await coreCount();
+  return cores > 2 ? cores : 1;
+}
+
 /** Below this (thousands of triangles + layers / 50) a slice runs on one thread when threads = 0 (auto). */
 const SMALL_JOB = 4;
+
+/** With threads = 0 (auto), workers start before the model is read only for an input this big. */
+const EARLY_START_BYTES = 256 * 1024;
+
+/** Size of a model given as bytes or text (0 for anything else). */
+function inputBytes(input: unknown): number {
+  if (typeof input === 'string') return input.length;
+  if (input instanceof ArrayBuffer || ArrayBuffer.isView(input)) return input.byteLength;
+  return 0;
+}
 
 type Accessors = { [K in SettingKey as `set${Capitalize<K>}`]: (value: Settings[K]) => Slicer } & {
   [K in SettingKey as `get${Capitalize<K>}`]: () => Settings[K];
@@ -173,23 +194,34 @@ export class Slicer {
   ): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
-    const model = prepareModel(input, cfg);
-    const b = positionBounds(model.mesh.positions);
-    // Automatic thread count: workers only pay off with enough work to share, and with more than two
-    // cores (the per-layer work is allocation-heavy: on two cores, two threads measured slower than one).
-    const layersEstimate = b.max[2] / cfg.layerHeight;
-    const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
-    const cores = small ? 1 : await coreCount();
-    const threads = cfg.threads > 0 ? cfg.threads : cores > 2 ? cores : 1;
-    const run = await runPipeline(model.mesh, cfg, {
-      threads,
-      sink,
-      onProgress: opts.onProgress,
-      signal: opts.signal,
-      objectCenter: [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2],
-      height: b.max[2],
-      custom: this.#custom,
-    });
+    // Workers start loading now, while the model is read and placed, if they will be needed (a custom
+    // density given as a JS function cannot travel to a worker).
+    const auto = await autoThreads();
+    const wanted = cfg.threads > 0 ? cfg.threads : inputBytes(input) >= EARLY_START_BYTES ? auto : 1;
+    const started = wanted > 1 && (!this.#custom || isTransferable(this.#custom)) ? startWorkers(wanted - 1) : undefined;
+    let run: Awaited<ReturnType<typeof runPipeline>>;
+    let model: PreparedModel;
+    let threads: number;
+    try {
+      model = prepareModel(input, cfg);
+      const b = positionBounds(model.mesh.positions);
+      const layersEstimate = b.max[2] / cfg.layerHeight;
+      const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
+      threads = cfg.threads > 0 ? cfg.threads : small ? 1 : auto;
+      run = await runPipeline(model.mesh, cfg, {
+        threads,
+        sink,
+        onProgress: opts.onProgress,
+        signal: opts.signal,
+        objectCenter: [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2],
+        height: b.max[2],
+        custom: this.#custom,
+        started,
+      });
+    } catch (e) {
+      if (started) await releaseWorkers(started);
+      throw e;
+    }
     const stats: SliceStats = {
       layers: run.layers,
       printTimeSeconds: run.estimate.printTimeSeconds,

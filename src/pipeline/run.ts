@@ -18,10 +18,10 @@ import { adhesionLoops } from '../regions/adhesion.js';
 import type { Config } from '../settings/resolve.js';
 import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
-import { createPool, type LayerPool } from '../workers/pool.js';
+import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
+import type { Port } from '../workers/ports.js';
 import { computeRange, lineWidthUm, type RangeJob, type RangeResult } from './layer-work.js';
 import { customGenerator, isTransferable, type CustomInfillSpec } from './custom-infill.js';
-import type { CustomInfillGenerator } from '../shader/index.js';
 
 export const VERSION = '0.1.0';
 
@@ -44,6 +44,8 @@ export interface RunOptions {
   height: number;
   /** Custom infill (shader or image) replacing the built-in pattern. */
   custom?: CustomInfillSpec;
+  /** Workers started early (`startWorkers`); used, or ended, here. */
+  started?: Promise<Port[]>;
 }
 
 export interface RunResult {
@@ -72,6 +74,14 @@ function infillParamsFor(cfg: Config, objectCenter: [number, number]): InfillPar
   };
 }
 
+/**
+ * With workers, the calling thread plans the ranges as they arrive, and computes ranges too only when
+ * the work left would keep the workers busy longer than this (ms). Its first range is slow (cold code),
+ * and compiling that code costs about a second of CPU, which competes with the workers when no core is
+ * spare: on two cores, two threads computing a Benchy were slower than one.
+ */
+const HELP_ABOVE_MS = 2000;
+
 /** Split [0, n) into ranges: several per thread for balance, each a few layers at least. */
 function ranges(n: number, threads: number): Array<[number, number]> {
   if (threads <= 1) return [[0, n]];
@@ -84,19 +94,23 @@ function ranges(n: number, threads: number): Array<[number, number]> {
   return out;
 }
 
-async function runJobs(jobs: RangeJob[], prepared: () => PreparedMesh, custom: CustomInfillGenerator | undefined, cfg: Config, pool: LayerPool | null, onDone: (j: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]> {
-  if (!pool) {
-    const out: RangeResult[] = [];
-    for (const j of jobs) {
-      checkAbort(signal);
-      out.push(computeRange(prepared(), cfg, j, custom));
-      onDone(j);
-      // let the event loop breathe (progress, cancellation)
-      await new Promise((r) => setTimeout(r, 0));
-    }
-    return out;
+interface JobRunner {
+  pool: LayerPool | null;
+  /** Computes a job on the calling thread. */
+  local: (job: RangeJob) => RangeResult;
+  signal?: AbortSignal;
+}
+
+/** Run the jobs; `onResult` sees each result as it arrives (in any order with a pool). */
+async function runJobs(jobs: RangeJob[], runner: JobRunner, onResult: (id: number, r: RangeResult) => void): Promise<void> {
+  const { pool, local, signal } = runner;
+  if (pool) return pool.run(jobs, { local, onResult, signal, helpAboveMs: HELP_ABOVE_MS });
+  for (let id = 0; id < jobs.length; id++) {
+    checkAbort(signal);
+    onResult(id, local(jobs[id]));
+    // let the event loop breathe (progress, cancellation)
+    await new Promise((r) => setTimeout(r, 0));
   }
-  return pool.run(jobs, (j) => computeRange(prepared(), cfg, j, custom), onDone, signal);
 }
 
 export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Promise<RunResult> {
@@ -111,12 +125,15 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   // (a custom density given as a JS function cannot travel to a worker)
   const workers = opts.custom && !isTransferable(opts.custom) ? 0 : Math.min(opts.threads, split.length) - 1;
   let sliceable: PreparedMesh | null = null;
-  const local = () => (sliceable ??= prepareForSlicing(mesh));
-  const pool = workers > 0 ? await createPool(workers, local, cfg, opts.custom) : null;
+  // with workers, the calling thread uses the copy it shares with them
+  const local = () => (sliceable ??= workers > 0 ? sharePrepared(prepareForSlicing(mesh)) : prepareForSlicing(mesh));
+  const pool = workers > 0 ? await createPool(workers, local, cfg, opts.custom, opts.started) : null;
+  if (!pool && opts.started) await releaseWorkers(opts.started);
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
     let prepared: unknown[] | undefined;
     const custom = opts.custom ? customGenerator(opts.custom, cfg) : undefined;
+    const runner: JobRunner = { pool, local: (j) => computeRange(local(), cfg, j, custom), signal };
     const passes = pattern.prepare && !custom && cfg.infillDensity > 0 ? 2 : 1;
     let doneLayers = 0;
     const total = layers.length * passes;
@@ -126,7 +143,11 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
     };
     if (passes === 2 && pattern.prepare) {
       const regionJobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: true, infillParams: params }));
-      const regionResults = await runJobs(regionJobs, local, custom, cfg, pool, onDone, signal);
+      const regionResults: RangeResult[] = [];
+      await runJobs(regionJobs, runner, (id, r) => {
+        regionResults[id] = r;
+        onDone(regionJobs[id]);
+      });
       const regions = regionResults.flatMap((r) => r.regions);
       prepared = pattern.prepare(
         {
@@ -137,28 +158,31 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
       );
     }
     const jobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: false, infillParams: params, prepared }));
-    const results = await runJobs(jobs, local, custom, cfg, pool, onDone, signal);
-    const paths: LayerPaths[] = results.flatMap((r) => r.paths);
-    checkAbort(signal);
 
-    // adhesion on the first layer
-    const first = paths[0];
-    first.adhesion = adhesionLoops(
-      first.islands.map((i) => i.outline),
-      cfg,
-      lineWidthUm(cfg, 0),
-    );
-    first.adhesionFeature = cfg.adhesionType === 'brim' ? 'BRIM' : 'SKIRT';
-
-    // travel planning is sequential: each layer starts where the last one ended
-    report('planning', 0.8);
+    // Travel planning is sequential (each layer starts where the last one ended), so ranges are
+    // planned in order as they arrive, while later ones are still being computed.
     const state = { at: { x: 0, y: 0 } as Pt };
     const planned: LayerPlan[] = [];
-    for (const lp of paths) {
-      const layerPlan = planLayer(lp, cfg, state);
-      applyMinLayerTime(layerPlan, cfg.minLayerTime, cfg.minPrintSpeed);
-      planned.push(layerPlan);
-    }
+    const arrived: Array<RangeResult | undefined> = new Array(jobs.length);
+    let nextToPlan = 0;
+    const onResult = (id: number, r: RangeResult) => {
+      onDone(jobs[id]);
+      arrived[id] = r;
+      for (let ready = arrived[nextToPlan]; ready; ready = arrived[nextToPlan]) {
+        arrived[nextToPlan++] = undefined;
+        for (const lp of ready.paths) {
+          if (planned.length === 0) addAdhesion(lp, cfg);
+          const layerPlan = planLayer(lp, cfg, state);
+          applyMinLayerTime(layerPlan, cfg.minLayerTime, cfg.minPrintSpeed);
+          planned.push(layerPlan);
+        }
+      }
+    };
+    await runJobs(jobs, runner, onResult);
+    // the workers' memory goes back before the G-code is written
+    await pool?.close();
+    checkAbort(signal);
+    report('planning', 0.8);
     const plan: PrintPlan = { layers: planned, bounds: planBounds(planned) };
     checkAbort(signal);
     const estimate = estimatePlan(plan, cfg);
@@ -169,6 +193,16 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   } finally {
     await pool?.close();
   }
+}
+
+/** Skirt or brim around the first layer. */
+function addAdhesion(first: LayerPaths, cfg: Config): void {
+  first.adhesion = adhesionLoops(
+    first.islands.map((i) => i.outline),
+    cfg,
+    lineWidthUm(cfg, 0),
+  );
+  first.adhesionFeature = cfg.adhesionType === 'brim' ? 'BRIM' : 'SKIRT';
 }
 
 function planBounds(layers: readonly LayerPlan[]): PrintPlan['bounds'] {

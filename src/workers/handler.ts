@@ -2,28 +2,42 @@
 import { StrataError } from '../errors.js';
 import type { PreparedMesh } from '../slice/index.js';
 import { computeRange } from '../pipeline/layer-work.js';
-import { customGenerator } from '../pipeline/custom-infill.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { Config } from '../settings/resolve.js';
 import type { FromWorker, ToWorker } from './protocol.js';
 
-export function makeHandler(post: (msg: FromWorker) => void): (msg: ToWorker) => void {
-  let mesh: PreparedMesh | null = null;
-  let cfg: Config | null = null;
-  let custom: CustomInfillGenerator | undefined;
+interface State {
+  mesh: PreparedMesh;
+  cfg: Config;
+  custom?: CustomInfillGenerator;
+}
+
+/**
+ * `clock` (ms) times each job for the pool's scheduling: the thread's CPU time where the host can
+ * tell, so that a loaded machine does not look like a big job.
+ */
+export function makeHandler(post: (msg: FromWorker) => void, clock: () => number = () => performance.now()): (msg: ToWorker) => void {
+  let state: Promise<State> = Promise.reject(new Error('worker used before init'));
+  state.catch(() => {});
   return (msg) => {
     if (msg.type === 'init') {
-      mesh = msg.mesh;
-      cfg = msg.cfg;
-      custom = msg.custom ? customGenerator(msg.custom, msg.cfg) : undefined;
+      const { mesh, cfg, custom } = msg;
+      // the shader compiler loads only when a custom infill needs it
+      state = custom
+        ? import('../pipeline/custom-infill.js').then((m) => ({ mesh, cfg, custom: m.customGenerator(custom, cfg) }))
+        : Promise.resolve({ mesh, cfg });
+      state.catch(() => {});
       return;
     }
-    try {
-      if (!mesh || !cfg) throw new Error('worker used before init');
-      post({ type: 'result', id: msg.id, result: computeRange(mesh, cfg, msg.job, custom) });
-    } catch (e) {
-      const code = e instanceof StrataError ? e.code : 'INTERNAL';
-      post({ type: 'error', id: msg.id, code, message: e instanceof Error ? e.message : String(e) });
-    }
+    state
+      .then((s) => {
+        const t0 = clock();
+        const result = computeRange(s.mesh, s.cfg, msg.job, s.custom);
+        post({ type: 'result', id: msg.id, result, ms: clock() - t0 });
+      })
+      .catch((e: unknown) => {
+        const code = e instanceof StrataError ? e.code : 'INTERNAL';
+        post({ type: 'error', id: msg.id, code, message: e instanceof Error ? e.message : String(e) });
+      });
   };
 }

@@ -11,7 +11,7 @@ import { fileURLToPath } from 'node:url';
 import { prepareModel } from '../api/slicer.js';
 import { resolveConfig } from '../settings/resolve.js';
 import { planLayers, prepareMesh } from '../slice/index.js';
-import { computeRange, type RangeJob } from '../pipeline/layer-work.js';
+import { computeRange, type RangeJob, type RangeResult } from '../pipeline/layer-work.js';
 import { makeHandler } from './handler.js';
 import { createPool } from './pool.js';
 import { webWorkerPort, type WebWorkerEvent, type WebWorkerLike } from './ports.js';
@@ -19,12 +19,19 @@ import type { ToWorker } from './protocol.js';
 
 type Mode = 'ok' | 'no-script' | 'throws' | 'messageerror' | 'unclonable';
 
-/** A Web Worker stand-in: messages cross by structured clone, one task later, as in a browser. */
-function fakeWorker(mode: Mode) {
+/**
+ * A Web Worker stand-in: messages cross by structured clone, one task later, as in a browser.
+ * `msPerLayer` replaces the time a job reports (for the calling thread's decision to help).
+ */
+function fakeWorker(mode: Mode, msPerLayer?: number) {
   return class FakeWorker implements WebWorkerLike {
     #listeners = new Map<string, Array<(e: WebWorkerEvent) => void>>();
     #posted = 0;
-    #handle = makeHandler((m) => this.#emit('message', { data: structuredClone(m) }));
+    #layers = new Map<number, number>();
+    #handle = makeHandler((m) => {
+      if (m.type === 'result' && msPerLayer !== undefined) m.ms = msPerLayer * (this.#layers.get(m.id) ?? 0);
+      this.#emit('message', { data: structuredClone(m) });
+    });
     constructor(readonly url: URL, readonly options: { type: 'module' }) {
       if (mode === 'no-script') setTimeout(() => this.#emit('error', { preventDefault() {} }), 0);
     }
@@ -44,6 +51,7 @@ function fakeWorker(mode: Mode) {
         if (mode === 'messageerror') return this.#emit('messageerror', {});
         if (mode === 'unclonable') throw new DOMException('could not be cloned', 'DataCloneError');
       }
+      if (msg.type === 'range') this.#layers.set(msg.id, msg.job.to - msg.job.from);
       setTimeout(() => this.#handle(msg), 0);
     }
     terminate() {}
@@ -59,23 +67,28 @@ const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({ layers, from: Math.flo
 const prepared = prepareMesh(model.mesh);
 const local = (j: RangeJob) => computeRange(prepared, cfg, j);
 const url = new URL('./layer-worker.js', import.meta.url);
-const pool = (mode: Mode, workers = 1) => createPool(workers, () => prepared, cfg, undefined, () => webWorkerPort(fakeWorker(mode), url));
+const pool = (mode: Mode, workers = 1, msPerLayer?: number) =>
+  createPool(workers, () => prepared, cfg, undefined, undefined, () => webWorkerPort(fakeWorker(mode, msPerLayer), url));
 const tick = () => new Promise((r) => setTimeout(r, 5));
 
 test('through Web Workers, results come back in job order and equal the calling thread’s', { timeout: 20_000 }, async () => {
   const p = await pool('ok', 2);
-  let done = 0, locally = 0;
-  const results = await p.run(jobs, (j) => (locally++, local(j)), () => done++);
-  await p.close();
-  assert.equal(done, jobs.length);
+  let locally = 0;
+  const results: RangeResult[] = [];
+  await p.run(jobs, { local: (j) => (locally++, local(j)), onResult: (id, r) => (results[id] = r) });
   assert.ok(locally < jobs.length, 'the workers took some jobs');
   assert.deepEqual(results, jobs.map(local));
+  // and without the calling thread
+  const byWorkers: RangeResult[] = [];
+  await p.run(jobs, { onResult: (id, r) => (byWorkers[id] = r) });
+  await p.close();
+  assert.deepEqual(byWorkers, results);
 });
 
 test('a worker whose script does not load fails the next run with a clear message, not a stall', { timeout: 20_000 }, async () => {
   const p = await pool('no-script');
   await tick(); // the error arrives between runs (as between the two passes of lightning infill)
-  await assert.rejects(p.run(jobs, local), /layer-worker\.js could not be started: the script did not load as a module worker/);
+  await assert.rejects(p.run(jobs, { local }), /layer-worker\.js could not be started: the script did not load as a module worker/);
   await p.close();
 });
 
@@ -87,7 +100,26 @@ test('an uncaught error in a worker, an unreadable message or an unclonable job 
   ];
   for (const [mode, message] of cases) {
     const p = await pool(mode);
-    await assert.rejects(p.run(jobs, local), message, mode);
+    await assert.rejects(p.run(jobs, { local }), message, mode);
     await p.close();
   }
+});
+
+test('the calling thread computes ranges only while the work left would keep the workers busy long enough', { timeout: 20_000 }, async () => {
+  // 6 jobs of ~3-4 layers; the worker holds 2 at once and its first job does not count
+  const run = async (msPerLayer: number, helpAboveMs: number) => {
+    const p = await pool('ok', 1, msPerLayer);
+    const byCaller: number[] = [];
+    const results: RangeResult[] = [];
+    await p.run(jobs, { local: (j) => (byCaller.push(jobs.indexOf(j)), local(j)), onResult: (id, r) => (results[id] = r), helpAboveMs });
+    await p.close();
+    assert.deepEqual(results, jobs.map(local));
+    return byCaller;
+  };
+  assert.deepEqual(await run(1, 1000), [], 'little work left: the workers do it all');
+  assert.deepEqual(await run(1, Infinity), []);
+  const helped = await run(1000, 1000);
+  // after the worker's second result (jobs 0-2 handed out), 3 jobs ≈ 10 layers ≈ 10 s are left
+  assert.ok(helped.length > 0 && Math.min(...helped) >= 3, `the calling thread helped with ${helped}`);
+  assert.ok((await run(0, 0)).length > 0, 'helpAboveMs 0: from the start');
 });

@@ -2,7 +2,7 @@
  * A pool of layer workers (worker_threads in Node, Web Workers in browsers). The mesh is prepared for
  * slicing once, on the calling thread, and handed to every worker in shared memory where there is
  * some; jobs are layer ranges, results come back by range, so the output does not depend on how many
- * workers there are.
+ * workers there are, nor on whether the calling thread computes some ranges itself.
  */
 import { StrataError } from '../errors.js';
 import { isNode } from '../runtime.js';
@@ -38,7 +38,7 @@ function shared<T extends Float32Array | Float64Array | Int32Array | Uint32Array
 }
 
 /** The prepared mesh with every array in shared memory (when available), so workers share one copy. */
-function sharePrepared(m: PreparedMesh): PreparedMesh {
+export function sharePrepared(m: PreparedMesh): PreparedMesh {
   const e = m.edges;
   return {
     positions: shared(m.positions),
@@ -49,12 +49,23 @@ function sharePrepared(m: PreparedMesh): PreparedMesh {
   };
 }
 
-export interface LayerPool {
+export interface RunOptions {
+  /** Computes a job on the calling thread, which then takes jobs whenever it is free (see `helpAboveMs`); without it only the workers do. */
+  local?: (job: RangeJob) => RangeResult;
   /**
-   * Run jobs on the workers and, through `local`, on the calling thread too. Results are returned in
-   * job order, so they do not depend on who computed what.
+   * The calling thread starts taking jobs only once the work not yet handed out would keep the workers
+   * busy longer than this (ms, estimated from their last job, not counting each one's first): its first jobs are slow, and on a machine
+   * without spare cores the compiler's work for them competes with the workers. 0 (default): at once.
    */
-  run(jobs: RangeJob[], local: (job: RangeJob) => RangeResult, onDone?: (job: RangeJob) => void, signal?: AbortSignal): Promise<RangeResult[]>;
+  helpAboveMs?: number;
+  /** Each result as it arrives (in any order); an exception fails the run. */
+  onResult?: (id: number, result: RangeResult) => void;
+  signal?: AbortSignal;
+}
+
+export interface LayerPool {
+  /** Run jobs on the workers (and the calling thread, see `local`); resolves when all are done. */
+  run(jobs: RangeJob[], options?: RunOptions): Promise<void>;
   close(): Promise<void>;
 }
 
@@ -75,11 +86,29 @@ function soon(fn: () => void): void {
 }
 
 /**
- * Start `size` workers, then prepare the mesh (`prepare`, on this thread, while they load) and send it
- * to them with the settings.
+ * Start `size` workers now, so they load while the caller still prepares the model; hand them to
+ * `createPool`, or to `releaseWorkers` if it turns out they are not needed.
  */
-export async function createPool(size: number, prepare: () => PreparedMesh, cfg: Config, custom?: CustomInfillSpec, spawn: Spawn = defaultSpawn): Promise<LayerPool> {
-  const ports = await Promise.all(Array.from({ length: size }, () => spawn()));
+export function startWorkers(size: number, spawn: Spawn = defaultSpawn): Promise<Port[]> {
+  const started = Promise.all(Array.from({ length: size }, () => spawn()));
+  started.catch(() => {}); // failures surface where the ports are awaited
+  return started;
+}
+
+export async function releaseWorkers(started: Promise<Port[]>): Promise<void> {
+  const ports = await started.catch(() => []);
+  await Promise.all(ports.map((p) => p.terminate()));
+}
+
+/**
+ * Start `size` workers (or take them from `started`, ending any extra), then prepare the mesh on this
+ * thread while they load (`prepare`: best in shared memory, see `sharePrepared`) and send it to them
+ * with the settings.
+ */
+export async function createPool(size: number, prepare: () => PreparedMesh, cfg: Config, custom?: CustomInfillSpec, started?: Promise<Port[]>, spawn: Spawn = defaultSpawn): Promise<LayerPool> {
+  const ready = started ? await started : [];
+  await Promise.all(ready.slice(size).map((p) => p.terminate()));
+  const ports = [...ready.slice(0, size), ...(await startWorkers(Math.max(0, size - ready.length), spawn))];
   // The run in progress: one at a time, so the ports' listeners are installed once.
   let current: { onMessage(p: Port, m: FromWorker): void; fail(e: Error): void } | null = null;
   // A worker that failed between runs fails the next run at once: its jobs would never come back.
@@ -94,34 +123,46 @@ export async function createPool(size: number, prepare: () => PreparedMesh, cfg:
     );
   }
   try {
-    const mesh = sharePrepared(prepare());
+    const mesh = prepare();
     for (const p of ports) p.post({ type: 'init', mesh, cfg, custom });
   } catch (e) {
     await Promise.all(ports.map((p) => p.terminate()));
     throw e;
   }
   return {
-    run(jobs, local, onDone, signal) {
-      return new Promise<RangeResult[]>((resolve, reject) => {
-        const results: RangeResult[] = new Array(jobs.length);
+    run(jobs, { local, onResult, signal, helpAboveMs = 0 } = {}) {
+      return new Promise<void>((resolve, reject) => {
         let next = 0;
         let done = 0;
         let finished = false;
+        let helping = !!local && helpAboveMs <= 0;
+        // layers not yet handed out, and the workers' time per layer on their last job
+        let unassigned = jobs.reduce((n, j) => n + j.to - j.from, 0);
+        let msPerLayer = 0;
+        const answered = new Set<Port>();
+        const take = () => {
+          const id = next++;
+          unassigned -= jobs[id].to - jobs[id].from;
+          return id;
+        };
         const finish = (e: Error | null) => {
           if (finished) return;
           finished = true;
           current = null;
           if (e) reject(e);
-          else resolve(results);
+          else resolve();
         };
         const complete = (id: number, r: RangeResult) => {
-          results[id] = r;
-          onDone?.(jobs[id]);
+          try {
+            onResult?.(id, r);
+          } catch (e) {
+            return finish(e as Error);
+          }
           if (++done === jobs.length) finish(null);
         };
         const feed = (p: Port) => {
           if (finished || next >= jobs.length) return;
-          const id = next++;
+          const id = take();
           try {
             p.post({ type: 'range', id, job: jobs[id] });
           } catch (e) {
@@ -130,13 +171,15 @@ export async function createPool(size: number, prepare: () => PreparedMesh, cfg:
         };
         // the calling thread takes a job whenever it is free, between handling worker messages
         const work = () => {
-          if (finished || next >= jobs.length) return;
-          const id = next++;
+          if (!local || finished || next >= jobs.length) return;
+          const id = take();
+          let r: RangeResult;
           try {
-            complete(id, local(jobs[id]));
+            r = local(jobs[id]);
           } catch (e) {
             return finish(e as Error);
           }
+          complete(id, r);
           soon(work);
         };
         if (signal?.aborted) return finish(new StrataError('CANCELLED', 'slicing was cancelled'));
@@ -150,16 +193,24 @@ export async function createPool(size: number, prepare: () => PreparedMesh, cfg:
             if (m.type === 'error') {
               return finish(m.code === 'INTERNAL' ? new Error(m.message) : new StrataError(m.code as never, m.message));
             }
+            // a worker's first job runs cold code: only later ones tell its pace
+            const warm = answered.has(p);
+            answered.add(p);
+            if (warm) msPerLayer = m.ms / Math.max(1, jobs[m.id].to - jobs[m.id].from);
             complete(m.id, m.result);
             feed(p);
+            if (local && !helping && warm && (unassigned * msPerLayer) / ports.length > helpAboveMs) {
+              helping = true;
+              soon(work);
+            }
           },
         };
         for (let k = 0; k < IN_FLIGHT; k++) for (const p of ports) feed(p);
-        soon(work);
+        if (helping) soon(work);
       });
     },
     async close() {
-      await Promise.all(ports.map((p) => p.terminate()));
+      await Promise.all(ports.splice(0).map((p) => p.terminate()));
     },
   };
 }

@@ -9,5 +9,6 @@ export type ToWorker =
   | { type: 'range'; id: number; job: RangeJob };
 
 export type FromWorker =
-  | { type: 'result'; id: number; result: RangeResult }
+  /** `ms`: how long the job took. */
+  | { type: 'result'; id: number; result: RangeResult; ms: number }
   | { type: 'error'; id: number; code: string; message: string };
