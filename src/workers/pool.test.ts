@@ -13,7 +13,7 @@ import { resolveConfig } from '../settings/resolve.js';
 import { planLayers, prepareMesh } from '../slice/index.js';
 import { computeRange, type RangeJob, type RangeResult } from '../pipeline/layer-work.js';
 import { makeHandler } from './handler.js';
-import { createPool } from './pool.js';
+import { createPool, startWorkers } from './pool.js';
 import { webWorkerPort, type WebWorkerEvent, type WebWorkerLike } from './ports.js';
 import type { ToWorker } from './protocol.js';
 
@@ -89,6 +89,14 @@ test('a worker whose script does not load fails the next run with a clear messag
   const p = await pool('no-script');
   await tick(); // the error arrives between runs (as between the two passes of lightning infill)
   await assert.rejects(p.run(jobs, { local }), /layer-worker\.js could not be started: the script did not load as a module worker/);
+  await p.close();
+});
+
+test('a worker started early that fails before the pool listens still fails the run', { timeout: 20_000 }, async () => {
+  const started = startWorkers(1, () => webWorkerPort(fakeWorker('no-script'), url));
+  await tick();
+  const p = await createPool(1, () => prepared, cfg, undefined, started);
+  await assert.rejects(p.run(jobs, { local }), /could not be started/);
   await p.close();
 });
 

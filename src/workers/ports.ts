@@ -9,8 +9,25 @@ import type { FromWorker, ToWorker } from './protocol.js';
 
 export interface Port {
   post(msg: ToWorker): void;
+  /** What happened before this call (a worker started early may already have failed) is delivered now. */
   listen(onMessage: (msg: FromWorker) => void, onFail: (err: Error) => void): void;
   terminate(): Promise<unknown> | void;
+}
+
+/** Holds a worker's messages and failures until someone listens. */
+function relay() {
+  let onMessage: ((msg: FromWorker) => void) | null = null;
+  let onFail: ((err: Error) => void) | null = null;
+  const early: Array<() => void> = [];
+  return {
+    message: (m: FromWorker) => (onMessage ? onMessage(m) : early.push(() => onMessage?.(m))),
+    fail: (e: Error) => (onFail ? onFail(e) : early.push(() => onFail?.(e))),
+    listen(m: (msg: FromWorker) => void, f: (err: Error) => void) {
+      onMessage = m;
+      onFail = f;
+      for (const deliver of early.splice(0)) deliver();
+    },
+  };
 }
 
 /** What the pool uses of a browser `Worker`. */
@@ -45,35 +62,32 @@ export function webWorkerError(e: WebWorkerEvent, url: URL): Error {
 
 export function webWorkerPort(Ctor: WebWorkerCtor, url: URL): Port {
   const w = new Ctor(url, { type: 'module' });
-  return {
-    post: (m) => w.postMessage(m),
-    listen(onMessage, onFail) {
-      w.addEventListener('message', (e) => onMessage(e.data as FromWorker));
-      w.addEventListener('messageerror', () => onFail(new Error('a layer worker message could not be read (messageerror)')));
-      w.addEventListener('error', (e) => {
-        e.preventDefault?.();
-        onFail(webWorkerError(e, url));
-      });
-    },
-    terminate: () => w.terminate(),
-  };
+  const r = relay();
+  w.addEventListener('message', (e) => r.message(e.data as FromWorker));
+  w.addEventListener('messageerror', () => r.fail(new Error('a layer worker message could not be read (messageerror)')));
+  w.addEventListener('error', (e) => {
+    e.preventDefault?.();
+    r.fail(webWorkerError(e, url));
+  });
+  return { post: (m) => w.postMessage(m), listen: r.listen, terminate: () => w.terminate() };
 }
 
 export async function nodeWorkerPort(url: URL): Promise<Port> {
   const { Worker } = await nodeBuiltin<typeof import('node:worker_threads')>('worker_threads');
-  const w = new Worker(url);
+  // workers inherit the process's options; --input-type (for `node -e`) would stop the worker file loading
+  const w = new Worker(url, { execArgv: process.execArgv.filter((a) => !a.startsWith('--input-type')) });
   w.unref();
   let closing = false;
+  const r = relay();
+  w.on('message', r.message);
+  w.on('messageerror', (e: Error) => r.fail(new Error(`a layer worker message could not be read: ${e.message}`)));
+  w.on('error', r.fail);
+  w.on('exit', (code: number) => {
+    if (!closing) r.fail(new Error(`a layer worker exited unexpectedly (code ${code})`));
+  });
   return {
     post: (m) => w.postMessage(m),
-    listen(onMessage, onFail) {
-      w.on('message', onMessage);
-      w.on('messageerror', (e: Error) => onFail(new Error(`a layer worker message could not be read: ${e.message}`)));
-      w.on('error', onFail);
-      w.on('exit', (code: number) => {
-        if (!closing) onFail(new Error(`a layer worker exited unexpectedly (code ${code})`));
-      });
-    },
+    listen: r.listen,
     terminate: () => {
       closing = true;
       return w.terminate();
