@@ -1,17 +1,8 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { area, difference, intersection } from './clip.js';
-import type { ExPolygon } from './types.js';
+import { square } from './test-shapes.js';
 
-const square = (x0: number, y0: number, s: number): ExPolygon => ({
-  outer: [
-    { x: x0, y: y0 },
-    { x: x0 + s, y: y0 },
-    { x: x0 + s, y: y0 + s },
-    { x: x0, y: y0 + s },
-  ],
-  holes: [],
-});
 
 test('difference ignores clip islands far from the subject and still cuts the ones that touch it', () => {
   const a = [square(0, 0, 1000)];

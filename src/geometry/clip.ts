@@ -15,7 +15,7 @@ import {
 import type { PolyPath64 } from 'clipper2-ts';
 import type { Bounds, ExPolygon, Polygon, Polyline, Pt } from './types.js';
 import { rawMiterOffset } from './miter-offset.js';
-import { ringInside } from './contain.js';
+import { ringBounds, ringInside } from './contain.js';
 import { islandsIfSimple } from './simple-rings.js';
 
 export type Join = 'miter' | 'round' | 'square';
@@ -107,13 +107,7 @@ function touching(areas: readonly ExPolygon[], box: Bounds): readonly ExPolygon[
 }
 
 function ringTouches(ring: readonly Pt[], box: Bounds): boolean {
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-  for (const p of ring) {
-    if (p.x < minX) minX = p.x;
-    if (p.x > maxX) maxX = p.x;
-    if (p.y < minY) minY = p.y;
-    if (p.y > maxY) maxY = p.y;
-  }
+  const { minX, minY, maxX, maxY } = ringBounds(ring);
   return minX <= box.maxX && maxX >= box.minX && minY <= box.maxY && maxY >= box.minY;
 }
 

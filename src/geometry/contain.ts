@@ -40,7 +40,8 @@ function checkRing(ring: Polygon, box: Bounds, other: Polygon): boolean {
   return !pointInRing(other[0], ring);
 }
 
-function ringBounds(r: Polygon): Bounds {
+/** Bounding box of a ring. */
+export function ringBounds(r: readonly Pt[]): Bounds {
   let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
   for (const p of r) {
     if (p.x < minX) minX = p.x;
@@ -84,7 +85,7 @@ function segmentsMeet(px: number, py: number, qx: number, qy: number, rx: number
 }
 
 /** Even-odd point-in-ring test (the answer for points on an edge is either: callers rule those out). */
-function pointInRing(p: Pt, ring: Polygon): boolean {
+export function pointInRing(p: Pt, ring: readonly Pt[]): boolean {
   let inside = false;
   for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
     const a = ring[i], b = ring[j];

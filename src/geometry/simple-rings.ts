@@ -5,6 +5,7 @@
  * any other). Then the positive-fill union would return the same rings, so it is skipped.
  */
 import type { ExPolygon, Polygon, Pt } from './types.js';
+import { pointInRing } from './contain.js';
 
 /** Above this many rings the pairwise nesting check is left to the union. */
 const MAX_RINGS = 12;
@@ -92,14 +93,6 @@ function twiceArea(r: Polygon): number {
   return a;
 }
 
-function pointInRing(p: Pt, ring: Polygon): boolean {
-  let inside = false;
-  for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
-    const a = ring[i], b = ring[j];
-    if (a.y > p.y !== b.y > p.y && p.x < a.x + ((p.y - a.y) * (b.x - a.x)) / (b.y - a.y)) inside = !inside;
-  }
-  return inside;
-}
 
 /** Edge sort keys pack the lower y with the edge index: at most this many edges. */
 const KEY_SPAN = 65536;

@@ -3,16 +3,8 @@ import assert from 'node:assert/strict';
 import { computeWalls } from './walls.js';
 import { area, ringArea } from '../geometry/clip.js';
 import type { ExPolygon } from '../geometry/types.js';
+import { square } from '../geometry/test-shapes.js';
 
-const square = (x0: number, y0: number, s: number): ExPolygon => ({
-  outer: [
-    { x: x0, y: y0 },
-    { x: x0 + s, y: y0 },
-    { x: x0 + s, y: y0 + s },
-    { x: x0, y: y0 + s },
-  ],
-  holes: [],
-});
 
 test('a 20 mm square gets two walls at 0.2 and 0.6 mm inside, and an inner area 0.8 mm in', () => {
   const [w] = computeWalls([square(0, 0, 20000)], 2, 400);
