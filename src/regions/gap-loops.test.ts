@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { gapLoops } from './gap-loops.js';
+import { gapLoops, loopBeads } from './gap-loops.js';
 import { area, difference, opening, strokeArea, union } from '../geometry/clip.js';
 import type { ExPolygon } from '../geometry/types.js';
 
@@ -37,4 +37,20 @@ test('a wedge gets more loops towards its wide end', () => {
 test('hairlines and pieces wider than two line widths get nothing', () => {
   assert.deepEqual(gapLoops([rect(0, 0, 10_000, 100)], W), []);
   assert.deepEqual(gapLoops([rect(0, 0, 10_000, 1_000)], W), []);
+});
+
+test('loopBeads covers what strokeArea does along loops (a square, and a C whose bead closes over its mouth)', () => {
+  const square = rect(0, 0, 3000, 2000).outer;
+  // a C: 3 mm square less a 1 mm slot from the right, its mouth 150 µm wide (narrower than the bead)
+  const c = [
+    { x: 10_000, y: 0 }, { x: 13_000, y: 0 }, { x: 13_000, y: 1425 }, { x: 11_000, y: 1425 },
+    { x: 11_000, y: 1575 }, { x: 13_000, y: 1575 }, { x: 13_000, y: 3000 }, { x: 10_000, y: 3000 },
+  ];
+  for (const loops of [[square], [c], [square, c]]) {
+    const beads = loopBeads(loops, 300);
+    const stroke = strokeArea([], loops, 300, 'miter');
+    const a = area(beads), b = area(stroke);
+    assert.ok(Math.abs(a - b) < 1e-3 * b, `areas ${a} vs ${b}`);
+    assert.ok(area(difference(stroke, beads)) < 1e-3 * b && area(difference(beads, stroke)) < 1e-3 * b);
+  }
 });

@@ -43,6 +43,28 @@ function fillGaps(gaps: readonly ExPolygon[], w: number, rounds: number, out: Ga
     const bead = d / 2;
     const loops = offset([g], -bead / 2).filter((p) => Math.abs(ringArea(p.outer)) >= MIN_LOOP_AREA_UM2).map((p) => p.outer);
     for (const loop of loops) out.push({ loop, widthUm: Math.round(bead) });
-    if (loops.length && rounds > 1) fillGaps(difference([g], strokeArea([], loops, bead, 'miter')), w, rounds - 1, out);
+    if (loops.length && rounds > 1) fillGaps(difference([g], loopBeads(loops, bead)), w, rounds - 1, out);
   }
+}
+
+/**
+ * The beads `width` wide along closed loops (counter-clockwise, as offsets' outer rings are): per loop the band
+ * between its mitred offsets out and in by half the width, as strokeArea's mitred loops give it; the mitre
+ * offsets usually need no union. A loop whose offsets do not nest as one band each (never seen) is stroked.
+ */
+export function loopBeads(loops: readonly Polygon[], width: number): ExPolygon[] {
+  const out: ExPolygon[] = [];
+  const odd: Polygon[] = [];
+  for (const loop of loops) {
+    const area = [{ outer: loop, holes: [] }];
+    const grown = offset(area, width / 2);
+    const shrunk = offset(area, -width / 2);
+    if (grown.length !== 1 || shrunk.some((s) => s.holes.length > 0)) {
+      odd.push(loop);
+      continue;
+    }
+    out.push({ outer: grown[0].outer, holes: [...grown[0].holes, ...shrunk.map((s) => s.outer.slice().reverse())] });
+  }
+  if (odd.length) out.push(...strokeArea([], odd, width, 'miter'));
+  return out;
 }
