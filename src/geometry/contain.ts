@@ -74,8 +74,10 @@ function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: 
   return v > 0 ? 1 : v < 0 ? -1 : 0;
 }
 
-/** Closed segments pq and rs share a point (bounding boxes already overlap). */
-function segmentsMeet(px: number, py: number, qx: number, qy: number, rx: number, ry: number, sx: number, sy: number): boolean {
+/** Closed segments pq and rs share a point (crossing, touching or overlapping). */
+export function segmentsMeet(px: number, py: number, qx: number, qy: number, rx: number, ry: number, sx: number, sy: number): boolean {
+  if (Math.max(px, qx) < Math.min(rx, sx) || Math.max(rx, sx) < Math.min(px, qx)) return false;
+  if (Math.max(py, qy) < Math.min(ry, sy) || Math.max(ry, sy) < Math.min(py, qy)) return false;
   const o1 = orient(px, py, qx, qy, rx, ry), o2 = orient(px, py, qx, qy, sx, sy);
   if (o1 !== 0 && o1 === o2) return false;
   const o3 = orient(rx, ry, sx, sy, px, py), o4 = orient(rx, ry, sx, sy, qx, qy);

@@ -5,7 +5,7 @@
  * any other). Then the positive-fill union would return the same rings, so it is skipped.
  */
 import type { ExPolygon, Polygon, Pt } from './types.js';
-import { pointInRing } from './contain.js';
+import { pointInRing, segmentsMeet } from './contain.js';
 
 /** Above this many rings the pairwise nesting check is left to the union. */
 const MAX_RINGS = 12;
@@ -93,7 +93,6 @@ function twiceArea(r: Polygon): number {
   return a;
 }
 
-
 /** Edge sort keys pack the lower y with the edge index: at most this many edges. */
 const KEY_SPAN = 65536;
 
@@ -150,26 +149,10 @@ function edgesSimple(rings: readonly Polygon[]): boolean {
         const d = at[i] > at[j] ? at[i] - at[j] : at[j] - at[i];
         if (d === 1 || d === ringLen[i] - 1) continue; // neighbours: they share one point and are not collinear
       }
-      if (meet(ax[i], ay[i], bx[i], by[i], ax[j], ay[j], bx[j], by[j])) return false;
+      if (segmentsMeet(ax[i], ay[i], bx[i], by[i], ax[j], ay[j], bx[j], by[j])) return false;
     }
     open[w++] = i;
     openCount = w;
   }
-  return true;
-}
-
-function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
-  const v = (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-  return v > 0 ? 1 : v < 0 ? -1 : 0;
-}
-
-/** Closed segments pq and rs share a point. */
-function meet(px: number, py: number, qx: number, qy: number, rx: number, ry: number, sx: number, sy: number): boolean {
-  if (Math.max(px, qx) < Math.min(rx, sx) || Math.max(rx, sx) < Math.min(px, qx)) return false;
-  if (Math.max(py, qy) < Math.min(ry, sy) || Math.max(ry, sy) < Math.min(py, qy)) return false;
-  const o1 = orient(px, py, qx, qy, rx, ry), o2 = orient(px, py, qx, qy, sx, sy);
-  if (o1 !== 0 && o1 === o2) return false;
-  const o3 = orient(rx, ry, sx, sy, px, py), o4 = orient(rx, ry, sx, sy, qx, qy);
-  if (o3 !== 0 && o3 === o4) return false;
   return true;
 }

@@ -3,9 +3,9 @@
  * its edge and half its width wide, so that going round the strip their two passes cover it side by side; where
  * a piece widens (a wedge), further loops fill what the first leaves towards its wide end.
  */
-import { difference, offset, opening, ringArea, strokeArea } from '../geometry/clip.js';
+import { area, difference, offset, opening, ringArea, strokeArea } from '../geometry/clip.js';
 import type { ExPolygon, Polygon } from '../geometry/types.js';
-import { islandArea, stripWidth } from './strip-width.js';
+import { stripWidth } from './strip-width.js';
 
 export interface GapLoop {
   loop: Polygon;
@@ -35,7 +35,7 @@ export function gapLoops(gaps: readonly ExPolygon[], lineWidthUm: number): GapLo
 
 function fillGaps(gaps: readonly ExPolygon[], w: number, rounds: number, out: GapLoop[]): void {
   const minWidth = MIN_GAP_FRACTION * w;
-  const pieces = gaps.filter((g) => islandArea(g) >= minWidth * minWidth);
+  const pieces = gaps.filter((g) => area([g]) >= minWidth * minWidth);
   if (pieces.length === 0) return;
   for (const g of opening(pieces, minWidth / 2)) {
     const d = stripWidth(g);
@@ -56,9 +56,9 @@ export function loopBeads(loops: readonly Polygon[], width: number): ExPolygon[]
   const out: ExPolygon[] = [];
   const odd: Polygon[] = [];
   for (const loop of loops) {
-    const area = [{ outer: loop, holes: [] }];
-    const grown = offset(area, width / 2);
-    const shrunk = offset(area, -width / 2);
+    const island = [{ outer: loop, holes: [] }];
+    const grown = offset(island, width / 2);
+    const shrunk = offset(island, -width / 2);
     if (grown.length !== 1 || shrunk.some((s) => s.holes.length > 0)) {
       odd.push(loop);
       continue;

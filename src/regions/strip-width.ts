@@ -3,7 +3,7 @@
  * width of the rectangle with the same area and perimeter. Exact for a rectangle, where 2·area / perimeter
  * (the mean width) falls short by the ends' share of the perimeter; for a wedge it is about half its widest.
  */
-import { ringArea } from '../geometry/clip.js';
+import { area } from '../geometry/clip.js';
 import type { ExPolygon } from '../geometry/types.js';
 
 /** Perimeter of an island's rings, µm. */
@@ -15,14 +15,9 @@ export function perimeter(a: ExPolygon): number {
   return p;
 }
 
-/** Area of an island (outer ring less holes), µm². */
-export function islandArea(a: ExPolygon): number {
-  return Math.abs(ringArea(a.outer)) - a.holes.reduce((s, h) => s + Math.abs(ringArea(h)), 0);
-}
-
 /** Width W of the W × L rectangle with the island's area and perimeter (L ≥ W), µm. */
 export function stripWidth(a: ExPolygon): number {
-  const A = islandArea(a);
+  const A = area([a]);
   const halfP = perimeter(a) / 2;
   if (!(A > 0) || !(halfP > 0)) return 0;
   // W + L = P/2 and W·L = A; a shape rounder than a square has no such rectangle: take the square's side
