@@ -20,7 +20,10 @@ import type { ToWorker } from './protocol.js';
 type Mode = 'ok' | 'no-script' | 'throws' | 'messageerror' | 'unclonable';
 
 /**
- * A Web Worker stand-in: messages cross by structured clone, one task later, as in a browser.
+ * A Web Worker stand-in: messages cross by structured clone, one task later, as in a browser. Tasks are
+ * immediates, queued in order with the pool's own (`soon`): with timers, a job finishing after a timer's
+ * due time let Node run the timers queued meanwhile in the same pass, so the stand-in could answer every
+ * job before the calling thread's turn came, which no real worker (computing in parallel) does.
  * `msPerLayer` replaces the time a job reports (for the calling thread's decision to help).
  */
 function fakeWorker(mode: Mode, msPerLayer?: number) {
@@ -36,9 +39,9 @@ function fakeWorker(mode: Mode, msPerLayer?: number) {
       if (mode === 'no-script') setTimeout(() => this.#emit('error', { preventDefault() {} }), 0);
     }
     #emit(type: string, e: WebWorkerEvent) {
-      setTimeout(() => {
+      setImmediate(() => {
         for (const fn of this.#listeners.get(type) ?? []) fn(e);
-      }, 0);
+      });
     }
     addEventListener(type: string, fn: (e: WebWorkerEvent) => void) {
       this.#listeners.set(type, [...(this.#listeners.get(type) ?? []), fn]);
@@ -52,7 +55,7 @@ function fakeWorker(mode: Mode, msPerLayer?: number) {
         if (mode === 'unclonable') throw new DOMException('could not be cloned', 'DataCloneError');
       }
       if (msg.type === 'range') this.#layers.set(msg.id, msg.job.to - msg.job.from);
-      setTimeout(() => this.#handle(msg), 0);
+      setImmediate(() => this.#handle(msg));
     }
     terminate() {}
   };
