@@ -14,13 +14,15 @@ import type { FlavorCommands } from './flavor.js';
 import { E_SCALE, POSITION_SCALE, compact, feedrate, mm } from './format.js';
 import type { MoveSink } from '../plan/moves.js';
 
-/** The `;TYPE:` marker of each feature, as Cura names them (Cura writes its brim as SKIRT, its raft as SUPPORT-INTERFACE). */
+/** The `;TYPE:` marker of each feature, as Cura names them (Cura writes its brim as SKIRT, its raft as SUPPORT-INTERFACE); skin over air is BRIDGE, as OrcaSlicer names it. */
 export const TYPE_MARKERS = {
   'WALL-OUTER': 'WALL-OUTER',
   'WALL-INNER': 'WALL-INNER',
   SKIN: 'SKIN',
   FILL: 'FILL',
+  BRIDGE: 'BRIDGE',
   SUPPORT: 'SUPPORT',
+  'SUPPORT-INTERFACE': 'SUPPORT-INTERFACE',
   SKIRT: 'SKIRT',
   BRIM: 'SKIRT',
   RAFT: 'SUPPORT-INTERFACE',
@@ -53,6 +55,8 @@ export class MoveWriter implements MoveSink {
   private nozzle: number;
   private bed: number;
   private fan = NaN;
+  /** The current layer's fan, which a step with its own fan (bridges) returns to. */
+  private layerFan = NaN;
   private elapsed = 0;
 
   constructor(
@@ -107,10 +111,8 @@ export class MoveWriter implements MoveSink {
       this.bed = layer.bedTemperature;
       out.line(o.flavor.setBed(this.bed));
     }
-    if (layer.fan !== this.fan) {
-      this.fan = layer.fan;
-      out.line(o.flavor.fan(this.fan));
-    }
+    this.layerFan = layer.fan;
+    this.setFan(layer.fan);
     if (this.eUnits !== 0 && !o.relativeE) out.line('G92 E0');
     this.eTotal = 0;
     this.eUnits = 0;
@@ -140,7 +142,14 @@ export class MoveWriter implements MoveSink {
     this.out.endLine();
   }
 
+  private setFan(fan: number): void {
+    if (fan === this.fan) return;
+    this.fan = fan;
+    this.out.line(this.o.flavor.fan(fan));
+  }
+
   extrudeStart(step: ExtrudeStep): void {
+    this.setFan(step.fan ?? this.layerFan);
     const marker = TYPE_MARKERS[step.feature];
     if (marker === this.feature) return;
     this.feature = marker;

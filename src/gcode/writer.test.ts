@@ -52,7 +52,7 @@ function smallPlan(): PrintPlan {
     bedTemperature: 60,
     steps: [travel([pt(10, 10)], true), extrude('WALL-OUTER', square(10, 10, 20), true, 0.2, 40), extrude('WALL-OUTER', square(11, 11, 18), true, 0.2, 40)],
   };
-  return { layers: [layer0, layer1], bounds: { minX: 5, minY: 5, minZ: 0, maxX: 60, maxY: 40.4, maxZ: 0.4 } };
+  return { layers: [layer0, layer1], objects: [], bounds: { minX: 5, minY: 5, minZ: 0, maxX: 60, maxY: 40.4, maxZ: 0.4 } };
 }
 
 /** The filament the small plan extrudes, mm, computed by hand (rectangular model, flow 1, flowRate 100). */
@@ -325,7 +325,7 @@ function bigPlan(): PrintPlan {
     }
     layers.push({ index: l, z: 0.2 * (l + 1), height: 0.2, fan: l === 0 ? 0 : 1, steps });
   }
-  return { layers, bounds: { minX: 75, minY: 75, minZ: 0, maxX: 125, maxY: 125, maxZ: 4 } };
+  return { layers, objects: [], bounds: { minX: 75, minY: 75, minZ: 0, maxX: 125, maxY: 125, maxZ: 4 } };
 }
 
 test('deterministic output; chunked streaming equals the string version', () => {
@@ -357,4 +357,16 @@ test('date and comments from meta go in the header; TIME_ELAPSED adds up the lay
   assert.equal(elapsed.length, 2);
   assert.ok(Math.abs(elapsed[1]! - estimate.printTimeSeconds) < 1e-3);
   assert.match(gcode, new RegExp(`;TIME:${Math.round(estimate.printTimeSeconds)}\\n`));
+});
+
+test('a step with its own fan sets it, and the layer fan comes back after', () => {
+  const plan = smallPlan();
+  const l1 = plan.layers[1];
+  const steps = l1.steps.filter((s) => s.kind === 'extrude') as ExtrudeStep[];
+  steps[0].fan = 0.5;
+  const s = defaults();
+  const text = gcodeToString(plan, s, estimatePlan(plan, s), META);
+  const body = text.slice(text.indexOf(';LAYER:1'));
+  const fans = body.split('\n').filter((l) => /^M10[67]\b/.test(l));
+  assert.deepEqual(fans.slice(0, 3), ['M106 S255', 'M106 S128', 'M106 S255']);
 });

@@ -10,9 +10,9 @@ import { PATTERNS } from '../infill/registry.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import type { Mesh } from '../mesh/types.js';
 import type { LayerPaths } from '../paths/types.js';
-import { applyMinLayerTime } from '../plan/cooling.js';
 import { estimatePlan } from '../plan/estimate.js';
 import { planLayer } from '../plan/layer-plan.js';
+import { runPlanPasses } from '../plan/passes.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
 import { adhesionLoops } from '../regions/adhesion.js';
 import type { Config } from '../settings/resolve.js';
@@ -172,9 +172,7 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
         arrived[nextToPlan++] = undefined;
         for (const lp of ready.paths) {
           if (planned.length === 0) addAdhesion(lp, cfg);
-          const layerPlan = planLayer(lp, cfg, state);
-          applyMinLayerTime(layerPlan, cfg.minLayerTime, cfg.minPrintSpeed);
-          planned.push(layerPlan);
+          planned.push(planLayer(lp, cfg, state));
         }
       }
     };
@@ -183,7 +181,8 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
     await pool?.close();
     checkAbort(signal);
     report('planning', 0.8);
-    const plan: PrintPlan = { layers: planned, bounds: planBounds(planned) };
+    const plan: PrintPlan = { layers: planned, objects: [], bounds: planBounds(planned) };
+    runPlanPasses(plan, cfg);
     checkAbort(signal);
     const estimate = estimatePlan(plan, cfg);
     report('writing', 0.9);

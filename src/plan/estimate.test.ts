@@ -33,7 +33,7 @@ const line = (points: Pt[], speed: number, closed = false): ExtrudeStep => ({
 });
 const move = (points: Pt[], retract: boolean, zHop = 0, speed = 150): TravelStep => ({ kind: 'travel', points, retract, zHop, speed });
 const layer = (index: number, steps: PlanStep[], z = 0.2 * (index + 1)): LayerPlan => ({ index, z, height: 0.2, fan: 0, steps });
-const plan = (...layers: LayerPlan[]): PrintPlan => ({ layers, bounds: { minX: 0, minY: 0, minZ: 0, maxX: 100, maxY: 100, maxZ: 1 } });
+const plan = (...layers: LayerPlan[]): PrintPlan => ({ layers, objects: [], bounds: { minX: 0, minY: 0, minZ: 0, maxX: 100, maxY: 100, maxZ: 1 } });
 const close = (actual: number, expected: number, tolerance: number, what: string): void =>
   assert.ok(Math.abs(actual - expected) <= tolerance, `${what}: ${actual} vs ${expected}`);
 

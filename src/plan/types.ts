@@ -11,7 +11,9 @@ export const FEATURE_TYPES = [
   'WALL-INNER',
   'SKIN',
   'FILL',
+  'BRIDGE',
   'SUPPORT',
+  'SUPPORT-INTERFACE',
   'SKIRT',
   'BRIM',
   'RAFT',
@@ -33,6 +35,10 @@ export interface ExtrudeStep {
   speed: number;
   /** Flow multiplier (1 = nominal). */
   flow: number;
+  /** Index into `PrintPlan.objects` of the object this extrusion belongs to (absent: none, e.g. skirt, raft). */
+  object?: number;
+  /** Part-cooling fan for this step, 0..1, when it differs from the layer's (bridges); the layer's fan comes back after. */
+  fan?: number;
 }
 
 /** A travel to `points[points.length-1]` through the given waypoints (combing). */
@@ -64,8 +70,20 @@ export interface LayerPlan {
   steps: PlanStep[];
 }
 
+/** One printed object, for object labels (cancel one object mid-print). Coordinates mm, bed space. */
+export interface PlanObject {
+  /** Unique within the plan, from the file / 3MF object name. */
+  name: string;
+  /** Centre of its footprint. */
+  center: [number, number];
+  /** Its footprint on the bed (convex hull of every layer's outline), counter-clockwise. */
+  polygon: [number, number][];
+}
+
 export interface PrintPlan {
   layers: LayerPlan[];
+  /** The objects the extrusions' `object` indices refer to (may be empty). */
+  objects: PlanObject[];
   /** Bounds of all extrusions, mm. */
   bounds: { minX: number; minY: number; minZ: number; maxX: number; maxY: number; maxZ: number };
 }

@@ -1,0 +1,28 @@
+/**
+ * The passes over a finished print plan, in the order they run. Each pass reads and rewrites the plan
+ * in place (speeds, steps, annotations); the estimate and the G-code writer come after all of them.
+ * Adding a pass (arc fitting, progress, speed limits) is adding it to `PLAN_PASSES`.
+ */
+import type { Config } from '../settings/resolve.js';
+import { applyMinLayerTime } from './cooling.js';
+import type { PrintPlan } from './types.js';
+
+export interface PlanPass {
+  readonly name: string;
+  run(plan: PrintPlan, cfg: Config): void;
+}
+
+/** Minimum layer time: slow short layers down so the plastic below can cool. */
+const cooling: PlanPass = {
+  name: 'cooling',
+  run(plan, cfg) {
+    for (const layer of plan.layers) applyMinLayerTime(layer, cfg.minLayerTime, cfg.minPrintSpeed);
+  },
+};
+
+export const PLAN_PASSES: readonly PlanPass[] = [cooling];
+
+/** Run every pass over the plan, in order. */
+export function runPlanPasses(plan: PrintPlan, cfg: Config): void {
+  for (const pass of PLAN_PASSES) pass.run(plan, cfg);
+}
