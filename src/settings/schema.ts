@@ -212,6 +212,7 @@ export const SCHEMA = {
   supportTreeTipDiameter: num(0.8, 0.2, 10, 'mm', 'support', 'Tree support: diameter of a branch tip under the part.'),
   supportTreeBranchDiameter: num(2.5, 0.5, 50, 'mm', 'support', 'Tree support: diameter a branch grows to (trunks where branches merged grow further, by the diameter angle).'),
   supportTreeDiameterAngle: num(5, 0, 30, '°', 'support', 'Tree support: how fast a merged branch thickens on its way down (angle of its sides from vertical).'),
+  supportTreeTipSpacing: num(3, 0.5, 20, 'mm', 'support', 'Tree support: distance between branch tips under the roof (closer holds the roof better, further apart uses less material).'),
 
   // ── bridges and overhangs ────────────────────────────────────────────────────
   bridgeSpeed: num(25, 1, 1000, 'mm/s', 'skin', 'Speed of skin printed over air (bridges).'),

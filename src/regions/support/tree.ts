@@ -1,8 +1,195 @@
-/** Tree support (placeholder until the tree generator lands): normal columns. */
+/**
+ * Tree support, in the manner of CuraEngine's tree support and PrusaSlicer's organic support:
+ * 1. model volumes (tree-volumes.ts): per layer and radius class, where a branch centre may not be so as to
+ *    keep clear of the part, and where it may not be if it is to reach the bed (avoidance), from the bed up;
+ * 2. tips (tree-tips.ts) under every overhang, below a dense roof of supportInterfaceLayers, `tip spacing`
+ *    apart; then, from the top layer down, every branch steps one layer down (tree-nodes.ts): leaning towards
+ *    its neighbours by at most layerHeight · tan(branch angle), merging with those it meets, thickening from
+ *    the tip diameter to the branch diameter (merged trunks further, by the diameter angle), always outside
+ *    its avoidance, so that it reaches the bed; in 'everywhere' placement a branch that cannot reach the bed
+ *    keeps clear of the part until it stands on it (the bottom Z gap above it, with a floor); in 'buildPlate'
+ *    placement such branches are dropped, with every tip they carried;
+ * 3. from the bed up (tree-draw.ts), each layer's branch cross-sections and roof, the roof only where what is
+ *    below holds it, off the part, split into body, roof and floor.
+ */
+import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
+import { UM_PER_MM, type Bounds, type ExPolygon } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
-import { normalSupport } from './normal.js';
+import { PointGrid } from './point-grid.js';
+import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
+import { descend, type TreeNode, type TreeRules } from './tree-nodes.js';
+import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
+import { radiusClasses, TreeVolumes } from './tree-volumes.js';
 
+/** A tip widens at this angle (of its sides from vertical) until it has the branch diameter: thin tips merge before they grow thick. */
+export const TIP_WIDEN_DEG = 12;
+/** Merged trunks grow to at most this many times the branch radius. */
+export const TRUNK_MAX_BRANCH_RADII = 1.5;
+/** A roof reaches at most this share of the tip spacing beyond the branches under it. */
+export const ROOF_REACH_SHARE = 0.75;
+/** The roof reaches this many support line widths beyond the overhang it holds. */
+export const ROOF_GROW_WIDTHS = 0.5;
+/** A tip may move this share of the tip spacing to find room. */
+export const TIP_SHIFT_SHARE = 0.5;
+/** A branch ends on the part when at least this share of its cross-section has the part under it. */
+export const STAND_SHARE = 0.2;
+
+const rad = (deg: number) => (deg * Math.PI) / 180;
+
+/** The tree support areas of every layer; yields after each layer of each phase. */
 export function* treeSupport(model: ModelLayers): Generator<void, SupportAreas[]> {
-  return yield* normalSupport(model);
+  const cfg = model.cfg;
+  const n = model.count;
+  const out: SupportAreas[] = [];
+  for (let j = 0; j < n; j++) out.push({ body: [], roof: [], floor: [] });
+  const top = cfg.supportTopGapLayers;
+  const roofLayers = cfg.supportInterfaceLayers;
+  const bottom = cfg.supportBottomGapLayers;
+  const everywhere = cfg.supportPlacement === 'everywhere';
+
+  // the overhang each layer must hold, and the layer its tips start on (under the gap and the roof)
+  const overhangs: ExPolygon[][] = [];
+  let highest = -1;
+  for (let m = 0; m < n; m++) {
+    overhangs.push(model.overhang(m));
+    if (overhangs[m].length) highest = m;
+  }
+  if (highest < 0) return out;
+  const tipLayerOf = (m: number) => m - top - roofLayers - 1;
+  const tipTop = tipLayerOf(highest);
+  const roofTop = Math.min(n - 1, highest - 1 - top);
+
+  const rules = treeRules(model);
+  const vol = new TreeVolumes(model, rules.radii, rules.step);
+  yield* vol.build(Math.max(roofTop, tipTop), tipTop);
+
+  // branches, from the top down
+  const spacing = cfg.supportTreeTipSpacing * UM_PER_MM;
+  const nodes: TreeNode[][] = [];
+  for (let j = 0; j < n; j++) nodes.push([]);
+  for (let j = tipTop; j >= 0; j--) {
+    const { lower, stuck } = j < tipTop ? descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
+    for (const i of stuck) kill(nodes, j + 1, i);
+    const m = j + top + roofLayers + 1;
+    if (m < n && overhangs[m].length) addTips(lower, overhangs[m], j, spacing, vol, rules);
+    nodes[j] = lower;
+    vol.release(j);
+    yield;
+  }
+
+  // areas, from the bed up
+  const w = model.widthUm;
+  const boxCache = new Map<number, Bounds[]>();
+  const sectionBoxes = (k: number): Bounds[] => {
+    let b = boxCache.get(k);
+    if (!b) boxCache.set(k, (b = model.section(k).map((p) => boundsOf([p]))));
+    return b;
+  };
+  let below: ExPolygon[] = [];
+  for (let j = 0; j < n; j++) {
+    const discs: Disc[] = [];
+    for (const c of nodes[j]) if (!c.dead) discs.push({ x: c.x, y: c.y, r: c.r, clear: !c.landing && c.r <= rules.radii[c.c] + 0.5 });
+    const roofWanted: ExPolygon[] = [];
+    for (let m = j + 1 + top; m <= j + top + roofLayers && m < n; m++) for (const p of overhangs[m]) roofWanted.push(p);
+    if (discs.length === 0 && roofWanted.length === 0) {
+      below = [];
+      continue;
+    }
+    const collision = vol.collision(j);
+    // grown a little, so that the narrow steps of a sloping overhang make a roof a line can print
+    const roof = roofWanted.length ? cutAway(offset(union(roofWanted), ROOF_GROW_WIDTHS * w), collision) : [];
+    let base: ExPolygon[] | null = null;
+    if (j > 0 && roof.length) {
+      const part = everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [];
+      base = below.length && part.length ? union(below, part) : below.length ? below : part;
+    }
+    const blocked = [collision];
+    if (everywhere && bottom > 0) blocked.push(model.sectionsBetween(j, -bottom, -1));
+    const s = drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, blocked, widthUm: w });
+    below = s;
+    out[j] = splitNear(model, j, s, sectionBoxes);
+    yield;
+  }
+  return out;
+}
+
+/**
+ * model.split, run only on the islands near the part above (roof) or below (floor): the others are body.
+ * The sections' bounds stand in for the areas split works out, so no island split would touch is left out.
+ */
+function splitNear(model: ModelLayers, j: number, s: ExPolygon[], boxes: (k: number) => Bounds[]): SupportAreas {
+  const cfg = model.cfg;
+  const near: ExPolygon[] = [], far: ExPolygon[] = [];
+  const lowest = j - (cfg.supportBottomGapLayers + cfg.supportFloorLayerCount);
+  const highest = j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers;
+  for (const a of s) {
+    const box = boundsOf([a]);
+    let hit = false;
+    for (let k = Math.max(0, lowest); k <= highest && k < model.count && !hit; k++) if (k !== j) hit = meetsAny(box, boxes(k));
+    (hit ? near : far).push(a);
+  }
+  if (near.length === 0) return { body: far, roof: [], floor: [] };
+  const split = model.split(j, near);
+  return { body: [...split.body, ...far], roof: split.roof, floor: split.floor };
+}
+
+/** The tree's sizes and steps from the settings, µm. */
+export function treeRules(model: ModelLayers): TreeRules {
+  const cfg = model.cfg;
+  const tipR = (cfg.supportTreeTipDiameter * UM_PER_MM) / 2;
+  const branchR = Math.max(tipR, (cfg.supportTreeBranchDiameter * UM_PER_MM) / 2);
+  const tanMove = Math.tan(rad(cfg.supportTreeBranchAngle));
+  const tanGrow = Math.tan(rad(cfg.supportTreeDiameterAngle));
+  const height = (j: number) => model.layers[j].height * UM_PER_MM;
+  return {
+    radii: radiusClasses(tipR, branchR),
+    tipR,
+    branchR,
+    maxR: TRUNK_MAX_BRANCH_RADII * branchR,
+    tipGrowth: cfg.layerHeight * UM_PER_MM * Math.tan(rad(TIP_WIDEN_DEG)),
+    trunkGrowth: (j) => height(j) * tanGrow,
+    step: (j) => (j > 0 && j < model.count ? height(j) * tanMove : 0),
+    zUm: (j) => model.layers[j].z * UM_PER_MM,
+    everywhere: cfg.supportPlacement === 'everywhere',
+    standsOn: (j, x, y, r) => {
+      const under = intersection([{ outer: circle(x, y, r), holes: [] }], model.section(j));
+      return area(under) >= STAND_SHARE * Math.PI * r * r;
+    },
+  };
+}
+
+/** Tips under the overhang `over`, on layer j, where no branch already passes. */
+function addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spacing: number, vol: TreeVolumes, rules: TreeRules): void {
+  const existing = new PointGrid(spacing);
+  let widest = 0;
+  for (const k of lower) {
+    existing.add(k.x, k.y);
+    widest = Math.max(widest, k.r);
+  }
+  const gap = TIP_MIN_GAP_SHARE * spacing;
+  const keeps = rules.everywhere ? (['bed', 'model'] as const) : (['bed'] as const);
+  for (const p of tipCandidates(over, spacing, rules.tipR)) {
+    const near = existing.within(p.x, p.y, Math.max(gap, widest));
+    if (near.some((k) => Math.hypot(existing.xs[k] - p.x, existing.ys[k] - p.y) < Math.max(gap, lower[k].r))) continue;
+    for (const keep of keeps) {
+      const q = vol.index(keep, 0, j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * spacing);
+      if (!q) continue;
+      lower.push({ x: q.x, y: q.y, r: rules.tipR, c: 0, keep, merged: false, landing: false, parents: [], dead: false });
+      existing.add(q.x, q.y);
+      break;
+    }
+  }
+}
+
+/** Drop node i of layer j and every node above that leads into it. */
+function kill(nodes: TreeNode[][], j: number, i: number): void {
+  const todo: [number, number][] = [[j, i]];
+  while (todo.length) {
+    const [l, k] = todo.pop()!;
+    const node = nodes[l][k];
+    if (node.dead) continue;
+    node.dead = true;
+    for (const p of node.parents) todo.push([l + 1, p]);
+  }
 }

@@ -1,0 +1,222 @@
+/**
+ * Fast point queries against a fixed set of areas (µm): whether a point lies inside, the nearest point just
+ * outside, and whether a segment crosses a boundary. The areas' edges are bucketed in a uniform grid, so a
+ * query looks at the few edges near the point instead of every edge. Tree support asks these questions for
+ * every branch on every layer.
+ */
+import { segmentsMeet } from '../../geometry/contain.js';
+import type { ExPolygon } from '../../geometry/types.js';
+
+/** How far beyond the boundary a point pushed out of the areas lands, µm. */
+export const OUTSIDE_MARGIN_UM = 5;
+/** Smallest and largest grid cell, µm. */
+const MIN_CELL_UM = 400;
+const MAX_CELL_UM = 5000;
+
+export interface Found {
+  x: number;
+  y: number;
+}
+
+export class AreaIndex {
+  /** Edges as x1, y1, x2, y2 (interior on the left: outer rings counter-clockwise, holes clockwise). */
+  readonly #e: Float64Array;
+  readonly #minX: number;
+  readonly #minY: number;
+  readonly #cell: number;
+  readonly #nx: number;
+  readonly #ny: number;
+  /** Edges of cell c: #items[#start[c] .. #start[c+1]). */
+  readonly #start: Int32Array;
+  readonly #items: Int32Array;
+  readonly empty: boolean;
+
+  constructor(areas: readonly ExPolygon[]) {
+    let n = 0;
+    for (const a of areas) {
+      n += a.outer.length;
+      for (const h of a.holes) n += h.length;
+    }
+    const e = new Float64Array(4 * n);
+    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    let k = 0;
+    for (const a of areas) {
+      for (let r = -1; r < a.holes.length; r++) {
+        const ring = r < 0 ? a.outer : a.holes[r];
+        const len = ring.length;
+        for (let i = 0; i < len; i++) {
+          const p = ring[i], q = ring[i + 1 < len ? i + 1 : 0];
+          e[k++] = p.x;
+          e[k++] = p.y;
+          e[k++] = q.x;
+          e[k++] = q.y;
+          if (p.x < minX) minX = p.x;
+          if (p.x > maxX) maxX = p.x;
+          if (p.y < minY) minY = p.y;
+          if (p.y > maxY) maxY = p.y;
+        }
+      }
+    }
+    this.#e = e;
+    this.empty = n === 0;
+    if (this.empty) {
+      this.#minX = this.#minY = 0;
+      this.#cell = MIN_CELL_UM;
+      this.#nx = this.#ny = 1;
+      this.#start = new Int32Array(2);
+      this.#items = new Int32Array(0);
+      return;
+    }
+    const w = maxX - minX, h = maxY - minY;
+    const cell = Math.min(MAX_CELL_UM, Math.max(MIN_CELL_UM, 2 * Math.sqrt((w * h) / n)));
+    this.#minX = minX;
+    this.#minY = minY;
+    this.#cell = cell;
+    const nx = (this.#nx = Math.floor(w / cell) + 1);
+    this.#ny = Math.floor(h / cell) + 1;
+    // each edge goes into every cell its bounds cover: count per cell, then fill
+    const cells = nx * this.#ny;
+    const ranges = new Int32Array(4 * n);
+    const start = new Int32Array(cells + 1);
+    for (let i = 0; i < n; i++) {
+      const x1 = e[4 * i], y1 = e[4 * i + 1], x2 = e[4 * i + 2], y2 = e[4 * i + 3];
+      const c0 = Math.floor(((x1 < x2 ? x1 : x2) - minX) / cell), c1 = Math.floor(((x1 < x2 ? x2 : x1) - minX) / cell);
+      const r0 = Math.floor(((y1 < y2 ? y1 : y2) - minY) / cell), r1 = Math.floor(((y1 < y2 ? y2 : y1) - minY) / cell);
+      ranges[4 * i] = c0;
+      ranges[4 * i + 1] = c1;
+      ranges[4 * i + 2] = r0;
+      ranges[4 * i + 3] = r1;
+      for (let r = r0; r <= r1; r++) for (let c = c0; c <= c1; c++) start[r * nx + c + 1]++;
+    }
+    for (let c = 0; c < cells; c++) start[c + 1] += start[c];
+    const fill = start.slice(0, cells);
+    const items = new Int32Array(start[cells]);
+    for (let i = 0; i < n; i++) {
+      for (let r = ranges[4 * i + 2]; r <= ranges[4 * i + 3]; r++) {
+        for (let c = ranges[4 * i]; c <= ranges[4 * i + 1]; c++) items[fill[r * nx + c]++] = i;
+      }
+    }
+    this.#start = start;
+    this.#items = items;
+  }
+
+  #col(x: number): number {
+    return Math.min(this.#nx - 1, Math.max(0, Math.floor((x - this.#minX) / this.#cell)));
+  }
+
+  #row(y: number): number {
+    return Math.min(this.#ny - 1, Math.max(0, Math.floor((y - this.#minY) / this.#cell)));
+  }
+
+  /** Whether (x, y) lies inside the areas (even-odd over every ring; a point on an edge may go either way). */
+  contains(x: number, y: number): boolean {
+    if (this.empty) return false;
+    const minX = this.#minX, minY = this.#minY;
+    if (x < minX || y < minY || x > minX + this.#nx * this.#cell || y > minY + this.#ny * this.#cell) return false;
+    // a ray towards +x: each crossing is counted in the one cell that holds the crossing point
+    const row = this.#row(y);
+    const e = this.#e;
+    let inside = false;
+    for (let c = this.#col(x); c < this.#nx; c++) {
+      const cell = row * this.#nx + c;
+      for (let s = this.#start[cell], t = this.#start[cell + 1]; s < t; s++) {
+        const i = this.#items[s];
+        const x1 = e[4 * i], y1 = e[4 * i + 1], x2 = e[4 * i + 2], y2 = e[4 * i + 3];
+        if (y1 > y === y2 > y) continue;
+        let cx = x1 + ((y - y1) * (x2 - x1)) / (y2 - y1);
+        cx = Math.min(Math.max(cx, Math.min(x1, x2)), Math.max(x1, x2));
+        if (cx <= x || this.#col(cx) !== c) continue;
+        inside = !inside;
+      }
+    }
+    return inside;
+  }
+
+  /**
+   * The point nearest to (x, y) that lies just outside the areas (OUTSIDE_MARGIN_UM beyond the boundary),
+   * looking no further than `maxUm`; (x, y) itself when it is outside; null when nothing is found.
+   */
+  nearestOutside(x: number, y: number, maxUm: number): Found | null {
+    if (!this.contains(x, y)) return { x, y };
+    const e = this.#e;
+    const cell = this.#cell;
+    const reach = maxUm + OUTSIDE_MARGIN_UM;
+    const c0 = this.#col(x - reach), c1 = this.#col(x + reach), r0 = this.#row(y - reach), r1 = this.#row(y + reach);
+    let best = Infinity, bx = 0, by = 0, bi = -1;
+    for (let r = r0; r <= r1; r++) {
+      for (let c = c0; c <= c1; c++) {
+        // skip cells wholly further than the best so far
+        const cx0 = this.#minX + c * cell, cy0 = this.#minY + r * cell;
+        const dx = Math.max(cx0 - x, 0, x - cx0 - cell), dy = Math.max(cy0 - y, 0, y - cy0 - cell);
+        if (dx * dx + dy * dy > Math.min(best, reach * reach)) continue;
+        const id = r * this.#nx + c;
+        for (let s = this.#start[id], t = this.#start[id + 1]; s < t; s++) {
+          const i = this.#items[s];
+          const x1 = e[4 * i], y1 = e[4 * i + 1], ex = e[4 * i + 2] - x1, ey = e[4 * i + 3] - y1;
+          const len2 = ex * ex + ey * ey;
+          const u = len2 > 0 ? Math.min(1, Math.max(0, ((x - x1) * ex + (y - y1) * ey) / len2)) : 0;
+          const px = x1 + u * ex, py = y1 + u * ey;
+          const d = (px - x) * (px - x) + (py - y) * (py - y);
+          if (d < best) {
+            best = d;
+            bx = px;
+            by = py;
+            bi = i;
+          }
+        }
+      }
+    }
+    if (bi < 0 || best > reach * reach) return null;
+    // out through the nearest edge: along the way from the point to it, or along the edge's outward normal
+    const d = Math.sqrt(best);
+    const ex = e[4 * bi + 2] - e[4 * bi], ey = e[4 * bi + 3] - e[4 * bi + 1];
+    const el = Math.hypot(ex, ey) || 1;
+    const ways: [number, number][] = [];
+    if (d > 1e-6) ways.push([(bx - x) / d, (by - y) / d]);
+    ways.push([ey / el, -ex / el]);
+    for (const [ux, uy] of ways) {
+      for (const m of [OUTSIDE_MARGIN_UM, 4 * OUTSIDE_MARGIN_UM]) {
+        const qx = bx + ux * m, qy = by + uy * m;
+        if (Math.hypot(qx - x, qy - y) <= reach && !this.contains(qx, qy)) return { x: qx, y: qy };
+      }
+    }
+    return null;
+  }
+
+  /** Whether the segment from (ax, ay) to (bx, by) crosses an edge of the areas. */
+  crosses(ax: number, ay: number, bx: number, by: number): boolean {
+    if (this.empty) return false;
+    const e = this.#e;
+    const cell = this.#cell;
+    // walk the cells the segment passes through (grid traversal), testing their edges
+    let c = this.#col(ax), r = this.#row(ay);
+    const cEnd = this.#col(bx), rEnd = this.#row(by);
+    const dx = bx - ax, dy = by - ay;
+    const stepC = dx > 0 ? 1 : -1, stepR = dy > 0 ? 1 : -1;
+    const nextX = (cc: number) => this.#minX + (cc + (stepC > 0 ? 1 : 0)) * cell;
+    const nextY = (rr: number) => this.#minY + (rr + (stepR > 0 ? 1 : 0)) * cell;
+    let tMaxX = dx !== 0 ? (nextX(c) - ax) / dx : Infinity;
+    let tMaxY = dy !== 0 ? (nextY(r) - ay) / dy : Infinity;
+    const tDX = dx !== 0 ? Math.abs(cell / dx) : Infinity;
+    const tDY = dy !== 0 ? Math.abs(cell / dy) : Infinity;
+    for (let guard = 0; guard < this.#nx + this.#ny + 2; guard++) {
+      const id = r * this.#nx + c;
+      for (let s = this.#start[id], t = this.#start[id + 1]; s < t; s++) {
+        const i = this.#items[s];
+        if (segmentsMeet(ax, ay, bx, by, e[4 * i], e[4 * i + 1], e[4 * i + 2], e[4 * i + 3])) return true;
+      }
+      if (c === cEnd && r === rEnd) break;
+      if (tMaxX < tMaxY) {
+        if (c === cEnd) break;
+        c += stepC;
+        tMaxX += tDX;
+      } else {
+        if (r === rEnd) break;
+        r += stepR;
+        tMaxY += tDY;
+      }
+      if (c < 0 || r < 0 || c >= this.#nx || r >= this.#ny) break;
+    }
+    return false;
+  }
+}

@@ -1,0 +1,129 @@
+/**
+ * Tree support from nodes to areas: each branch's cross-section as a circle, with the roof under the
+ * overhang, kept off the part; the roof only where branches (or, in 'everywhere' placement, the part)
+ * below hold it. Most cross-sections are lone circles known to be clear of the part: those are taken as
+ * they are, and only the rest (overlapping circles, roofs, circles that may touch the part) go through
+ * the clipper.
+ */
+import { boundsOf, difference, intersection, offset, union, unionRings } from '../../geometry/clip.js';
+import type { Bounds, ExPolygon, Polygon } from '../../geometry/types.js';
+import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
+import { PointGrid } from './point-grid.js';
+
+/** Largest gap between a drawn circle's edge and the true circle, µm. */
+export const CIRCLE_TOLERANCE_UM = 25;
+
+/** A circle as a counter-clockwise polygon inside the true circle (chords within CIRCLE_TOLERANCE_UM). */
+export function circle(x: number, y: number, r: number): Polygon {
+  const half = Math.acos(Math.max(-1, 1 - CIRCLE_TOLERANCE_UM / Math.max(r, CIRCLE_TOLERANCE_UM)));
+  const n = Math.max(8, Math.min(64, Math.ceil(Math.PI / half)));
+  const out: Polygon = [];
+  for (let k = 0; k < n; k++) {
+    const a = (2 * Math.PI * k) / n;
+    out.push({ x: Math.round(x + r * Math.cos(a)), y: Math.round(y + r * Math.sin(a)) });
+  }
+  return out;
+}
+
+export interface Disc {
+  x: number;
+  y: number;
+  r: number;
+  /** Known to lie clear of the part (its centre is outside the collision grown by at least r). */
+  clear: boolean;
+}
+
+export interface DrawLayer {
+  /** Branch cross-sections, µm. */
+  discs: readonly Disc[];
+  /** The roof wanted on this layer (already off the part). */
+  roof: readonly ExPolygon[];
+  /** What lies under this layer and may carry a roof: last layer's support (and the part, in 'everywhere'); null on the bed. */
+  base: readonly ExPolygon[] | null;
+  /** How far from what lies under it a roof may reach, µm. */
+  roofReachUm: number;
+  /** Areas support is cut away from (the collision, and in 'everywhere' the part within the bottom gap below). */
+  blocked: readonly (readonly ExPolygon[])[];
+  /** Support line width, µm. */
+  widthUm: number;
+}
+
+const meets = (a: Bounds, b: Bounds) => a.minX <= b.maxX && a.maxX >= b.minX && a.minY <= b.maxY && a.maxY >= b.minY;
+
+/** Whether `box` meets the bounds of any of `boxes`. */
+export function meetsAny(box: Bounds, boxes: readonly Bounds[]): boolean {
+  for (const b of boxes) if (meets(box, b)) return true;
+  return false;
+}
+
+/** `a` less `b`, running the clipper only on the islands of a whose bounds meet an island of b. */
+export function cutAway(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
+  if (a.length === 0 || b.length === 0) return a.slice();
+  const boxes = b.map((x) => boundsOf([x]));
+  const near: ExPolygon[] = [], far: ExPolygon[] = [];
+  for (const x of a) (meetsAny(boundsOf([x]), boxes) ? near : far).push(x);
+  return near.length ? [...difference(near, b), ...far] : far;
+}
+
+/** One layer's support area, printable. */
+export function drawLayer(d: DrawLayer): ExPolygon[] {
+  let roof: ExPolygon[] = d.roof.slice();
+  if (roof.length && d.base) roof = d.base.length ? intersection(roof, offset(d.base, d.roofReachUm)) : [];
+  const roofBoxes = roof.map((x) => boundsOf([x]));
+  const blockedBoxes = d.blocked.flatMap((b) => b.map((x) => boundsOf([x])));
+  const minR = (MIN_SUPPORT_WIDTHS * d.widthUm) / 2;
+  // clusters of overlapping circles: those wholly clear, printable and away from roof and blocked areas
+  // need only their union; the rest are cut to what may and can be printed
+  const free: ExPolygon[] = [];
+  const rest: Polygon[] = [];
+  for (const cluster of clusters(d.discs)) {
+    const rings = cluster.map((c) => circle(c.x, c.y, c.r));
+    let box: Bounds = { minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity };
+    let fine = true;
+    for (const c of cluster) {
+      box = { minX: Math.min(box.minX, c.x - c.r), minY: Math.min(box.minY, c.y - c.r), maxX: Math.max(box.maxX, c.x + c.r), maxY: Math.max(box.maxY, c.y + c.r) };
+      fine &&= c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm;
+    }
+    if (fine && !meetsAny(box, roofBoxes) && !meetsAny(box, blockedBoxes)) {
+      if (rings.length === 1) free.push({ outer: rings[0], holes: [] });
+      else for (const a of unionRings(rings)) free.push(a);
+    } else for (const r of rings) rest.push(r);
+  }
+  if (rest.length === 0 && roof.length === 0) return free;
+  const branches = rest.length ? unionRings(rest) : [];
+  let s = branches.length && roof.length ? union(branches, roof) : branches.length ? branches : roof;
+  for (const b of d.blocked) if (s.length) s = cutAway(s, b);
+  return [...free, ...printable(s, d.widthUm)];
+}
+
+/** The discs in groups that overlap (each group in the discs' order, groups by their first disc). */
+export function clusters(discs: readonly Disc[]): Disc[][] {
+  const widest = discs.reduce((w, c) => Math.max(w, c.r), 0);
+  const grid = new PointGrid(Math.max(1000, 2 * widest));
+  for (const c of discs) grid.add(c.x, c.y);
+  const root = discs.map((_, i) => i);
+  const find = (i: number): number => {
+    while (root[i] !== i) i = root[i] = root[root[i]];
+    return i;
+  };
+  for (let i = 0; i < discs.length; i++) {
+    const c = discs[i];
+    for (const k of grid.within(c.x, c.y, c.r + widest)) {
+      if (k <= i || Math.hypot(discs[k].x - c.x, discs[k].y - c.y) > c.r + discs[k].r) continue;
+      const a = find(i), b = find(k);
+      if (a !== b) root[Math.max(a, b)] = Math.min(a, b);
+    }
+  }
+  const groups = new Map<number, Disc[]>();
+  const out: Disc[][] = [];
+  for (let i = 0; i < discs.length; i++) {
+    const r = find(i);
+    let g = groups.get(r);
+    if (!g) {
+      groups.set(r, (g = []));
+      out.push(g);
+    }
+    g.push(discs[i]);
+  }
+  return out;
+}

@@ -1,0 +1,254 @@
+/**
+ * Tree-support branches as nodes, one per branch and layer, and the step that takes every branch of a layer
+ * one layer down: nearby branches are paired (closest pairs first) and lean towards each other, the rest
+ * towards their nearest neighbour, at most one layer's move; two within two moves of each other merge into one; every
+ * branch stays out of its avoidance (or, once it can no longer reach the bed, out of the part grown by its
+ * radius, and then goes straight down onto the part); radii grow from the tip to the branch radius, and
+ * merged trunks further.
+ */
+import type { AreaIndex, Found } from './area-index.js';
+import { PointGrid } from './point-grid.js';
+import { classOf, type Keep, type TreeVolumes } from './tree-volumes.js';
+
+/** Neighbours further apart than this are not drawn together, µm. */
+export const ATTRACT_MAX_UM = 10000;
+/** Each branch is linked to at most this many nearest neighbours before the spanning tree is taken. */
+const NEAR_COUNT = 6;
+/** Slack on the one-layer move for rounding, µm. */
+export const MOVE_SLACK_UM = 1;
+
+export interface TreeNode {
+  /** Centre, µm. */
+  x: number;
+  y: number;
+  /** Radius, µm. */
+  r: number;
+  /** Radius class the centre is checked against. */
+  c: number;
+  /** What the centre keeps out of ('bed' while the branch can reach the bed). */
+  keep: Keep;
+  /** Whether the branch came from a merge (then it thickens by the diameter angle). */
+  merged: boolean;
+  /** Stuck above the part: goes straight down until it stands on it. */
+  landing: boolean;
+  /** Indices of the nodes on the layer above that continue into this one. */
+  parents: number[];
+  dead: boolean;
+}
+
+export interface TreeRules {
+  radii: readonly number[];
+  tipR: number;
+  branchR: number;
+  maxR: number;
+  /** Radius growth per layer of a tip, µm. */
+  tipGrowth: number;
+  /** Radius growth per layer of a merged trunk on layer j, µm. */
+  trunkGrowth: (j: number) => number;
+  /** Sideways move allowed between layer j and j - 1, µm. */
+  step: (j: number) => number;
+  /** Height of layer j above the bed, µm. */
+  zUm: (j: number) => number;
+  /** Whether branches may end on the part. */
+  everywhere: boolean;
+  /** Whether a branch of radius r centred at (x, y) on layer j has the part under it. */
+  standsOn: (j: number, x: number, y: number, r: number) => boolean;
+}
+
+const dist = (ax: number, ay: number, bx: number, by: number) => Math.hypot(bx - ax, by - ay);
+
+/** The radius a node grows to on its next layer. */
+function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
+  if (n.r < rules.branchR) return Math.min(rules.branchR, n.r + rules.tipGrowth);
+  return n.merged ? Math.min(rules.maxR, n.r + rules.trunkGrowth(j)) : n.r;
+}
+
+/** Pairs of nearby nodes of one group (each node with its nearest few within range) as [a, b, distance], shortest first. */
+export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): [number, number, number][] {
+  if (ids.length < 2 || rangeUm <= 0) return [];
+  const grid = new PointGrid(Math.max(1000, rangeUm / 4));
+  for (const i of ids) grid.add(nodes[i].x, nodes[i].y);
+  const seen = new Set<number>();
+  const out: [number, number, number][] = [];
+  for (let a = 0; a < ids.length; a++) {
+    const x = grid.xs[a], y = grid.ys[a];
+    const near: [number, number][] = [];
+    for (const b of grid.within(x, y, rangeUm)) if (b !== a) near.push([b, Math.hypot(grid.xs[b] - x, grid.ys[b] - y)]);
+    near.sort((p, q) => p[1] - q[1] || p[0] - q[0]);
+    for (let k = 0; k < near.length && k < NEAR_COUNT; k++) {
+      const b = near[k][0];
+      const lo = Math.min(a, b), hi = Math.max(a, b);
+      const key = lo * ids.length + hi;
+      if (seen.has(key)) continue;
+      seen.add(key);
+      out.push([lo, hi, near[k][1]]);
+    }
+  }
+  out.sort((p, q) => p[2] - q[2] || p[0] - q[0] || p[1] - q[1]);
+  for (const e of out) {
+    e[0] = ids[e[0]];
+    e[1] = ids[e[1]];
+  }
+  return out;
+}
+
+/** A free spot for a centre: the target, or the nearest free point to it or to where the node was, within `m` of (px, py). */
+function place(ix: AreaIndex, tx: number, ty: number, px: number, py: number, m: number): Found | null {
+  if (!ix.contains(tx, ty)) return { x: tx, y: ty };
+  const reach = m + MOVE_SLACK_UM;
+  const q = ix.nearestOutside(tx, ty, m);
+  if (q && dist(q.x, q.y, px, py) <= reach) return q;
+  const s = ix.nearestOutside(px, py, m);
+  if (s && dist(s.x, s.y, px, py) <= reach) return s;
+  return null;
+}
+
+export interface DescendResult {
+  /** The nodes of layer j. */
+  lower: TreeNode[];
+  /** Nodes of layer j + 1 that found no way down (their branches must go). */
+  stuck: number[];
+}
+
+/** Take the nodes of layer j + 1 down to layer j. */
+export function descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes, rules: TreeRules): DescendResult {
+  const m = rules.step(j + 1);
+  const lower: TreeNode[] = [];
+  const stuck: number[] = [];
+  const done = new Uint8Array(upper.length);
+  // whom each node leans towards: its partner (pairs matched closest first), else its nearest neighbour
+  const toward = new Int32Array(upper.length).fill(-1);
+  const paired = new Uint8Array(upper.length);
+  const range = Math.min(ATTRACT_MAX_UM, rules.zUm(j));
+  const barrier = vol.index('model', 0, j);
+
+  for (const keep of ['bed', 'model'] as const) {
+    const ids: number[] = [];
+    for (let i = 0; i < upper.length; i++) if (!upper[i].dead && !upper[i].landing && upper[i].keep === keep) ids.push(i);
+    const pairs = nearPairs(upper, ids, range);
+    // merges: the closest pairs first, each node once per layer
+    for (const [a, b, d] of pairs) {
+      if (done[a] || done[b] || !(d <= 2 * m || absorbs(upper[a], upper[b], d, m))) continue;
+      const merged = merge(upper[a], upper[b], a, b, d, m, j, vol, rules);
+      if (!merged) continue;
+      lower.push(merged);
+      done[a] = done[b] = 1;
+    }
+    const clear = (a: number, b: number) => !barrier.crosses(upper[a].x, upper[a].y, upper[b].x, upper[b].y);
+    for (const [a, b] of pairs) {
+      if (done[a] || done[b] || paired[a] || paired[b] || !clear(a, b)) continue;
+      paired[a] = paired[b] = 1;
+      toward[a] = b;
+      toward[b] = a;
+    }
+    for (const [a, b] of pairs) {
+      if (done[a] || done[b]) continue;
+      if (toward[a] < 0 && clear(a, b)) toward[a] = b;
+      if (toward[b] < 0 && clear(a, b)) toward[b] = a;
+    }
+  }
+
+  for (let i = 0; i < upper.length; i++) {
+    const n = upper[i];
+    if (n.dead || done[i]) continue;
+    if (n.landing) {
+      const next = land(n, i, j, vol, rules);
+      if (next === 'dead') stuck.push(i);
+      else if (next) lower.push(next);
+      continue;
+    }
+    // halfway to whom it leans towards, at most a move
+    let vx = 0, vy = 0;
+    const t = toward[i];
+    if (t >= 0) {
+      const dx = upper[t].x - n.x, dy = upper[t].y - n.y;
+      const len = Math.hypot(dx, dy);
+      const go = Math.min(m, len / 2);
+      if (len > 0) {
+        vx = (dx * go) / len;
+        vy = (dy * go) / len;
+      }
+    }
+    let keep = n.keep;
+    let at = place(vol.index(keep, n.c, j), n.x + vx, n.y + vy, n.x, n.y, m);
+    if (!at && keep === 'bed') {
+      keep = 'model';
+      at = place(vol.index(keep, n.c, j), n.x + vx, n.y + vy, n.x, n.y, m);
+    }
+    if (!at) {
+      if (rules.everywhere) {
+        // above the part: straight down onto it
+        const next = land({ ...n, keep: 'model', landing: true }, i, j, vol, rules);
+        if (next === 'dead') stuck.push(i);
+        else if (next) lower.push(next);
+      } else stuck.push(i);
+      continue;
+    }
+    lower.push(grown(n, i, at, keep, m, j, vol, rules));
+  }
+  return { lower, stuck };
+}
+
+/** The node at `at` on layer j, its radius grown as far as its class (or a wider one that fits) allows. */
+function grown(n: TreeNode, i: number, at: Found, keep: Keep, m: number, j: number, vol: TreeVolumes, rules: TreeRules): TreeNode {
+  const want = wantRadius(n, rules, j);
+  let c = n.c;
+  let r = want;
+  const wc = classOf(rules.radii, want);
+  if (wc > c) {
+    const left = m - dist(at.x, at.y, n.x, n.y);
+    const q = left >= 0 ? vol.index(keep, wc, j).nearestOutside(at.x, at.y, left) : null;
+    if (q && dist(q.x, q.y, n.x, n.y) <= m + MOVE_SLACK_UM) {
+      at = q;
+      c = wc;
+    } else r = Math.max(n.r, Math.min(want, rules.radii[c]));
+  }
+  // a branch kept only off the part that finds itself able to reach the bed again goes for the bed
+  if (keep === 'model' && !vol.index('bed', c, j).contains(at.x, at.y)) keep = 'bed';
+  return { x: at.x, y: at.y, r, c, keep, merged: n.merged, landing: false, parents: [i], dead: false };
+}
+
+/** Whether the wider of two nodes d apart holds the other within a move (it can take it in where it is). */
+function absorbs(a: TreeNode, b: TreeNode, d: number, m: number): boolean {
+  return d + Math.min(a.r, b.r) <= Math.max(a.r, b.r) + m;
+}
+
+/**
+ * Two nodes of layer j + 1 into one on layer j, or null when that does not fit: between them and within a
+ * move of each, nearer the wider; or, when the wider holds the other within a move, where the wider is.
+ */
+function merge(a: TreeNode, b: TreeNode, ia: number, ib: number, d: number, m: number, j: number, vol: TreeVolumes, rules: TreeRules): TreeNode | null {
+  const big = a.r >= b.r ? a : b, small = big === a ? b : a;
+  const want = Math.max(wantRadius({ ...big, merged: true }, rules, j), a.r, b.r);
+  let t: number;
+  if (d <= 2 * m) {
+    const wa = a.r * a.r, wb = b.r * b.r;
+    t = wb / (wa + wb);
+    if (d > 0) t = Math.min(Math.min(1, m / d), Math.max(Math.max(0, 1 - m / d), t));
+  } else t = big === a ? 0 : 1;
+  const x = a.x + t * (b.x - a.x), y = a.y + t * (b.y - a.y);
+  const reach = m + MOVE_SLACK_UM;
+  for (const r of [want, Math.max(a.r, b.r)]) {
+    const c = classOf(rules.radii, r);
+    const q = vol.index(a.keep, c, j).nearestOutside(x, y, m);
+    if (!q) continue;
+    const toBig = dist(q.x, q.y, big.x, big.y), toSmall = dist(q.x, q.y, small.x, small.y);
+    if (toBig > reach || (toSmall > reach && toSmall + small.r > r + reach)) continue;
+    return { x: q.x, y: q.y, r, c, keep: a.keep, merged: true, landing: false, parents: [ia, ib], dead: false };
+  }
+  return null;
+}
+
+/**
+ * A branch that cannot keep clear of the part goes straight down onto it: it ends where its cross-section
+ * lies wholly in the part's collision (standing on the part, or dead when there is no part under it), and
+ * turns back into a free branch if it comes clear again.
+ */
+function land(n: TreeNode, i: number, j: number, vol: TreeVolumes, rules: TreeRules): TreeNode | null | 'dead' {
+  const free = vol.index('model', n.c, j);
+  if (!free.contains(n.x, n.y)) return { ...n, landing: false, keep: 'model', parents: [i] };
+  const part = vol.index('part', 0, j);
+  const covered = part.contains(n.x, n.y) && part.nearestOutside(n.x, n.y, n.r) === null;
+  if (!covered) return { ...n, landing: true, keep: 'model', parents: [i] };
+  return rules.everywhere && rules.standsOn(j, n.x, n.y, n.r) ? null : 'dead';
+}
