@@ -37,37 +37,46 @@ export const STAND_SHARE = 0.2;
 
 const rad = (deg: number) => (deg * Math.PI) / 180;
 
+/** The branches of a tree support, layer by layer, and what drawing them needs. */
+export interface TreePlan {
+  /** nodes[j]: the branches' cross-sections on layer j (dead ones carried tips that could not be held). */
+  nodes: TreeNode[][];
+  /** The overhang each layer must hold. */
+  overhangs: ExPolygon[][];
+  vol: TreeVolumes;
+  rules: TreeRules;
+}
+
 /** The tree support areas of every layer; yields after each layer of each phase. */
 export function* treeSupport(model: ModelLayers): Generator<void, SupportAreas[]> {
+  const plan = yield* planTree(model);
+  return yield* drawTree(model, plan);
+}
+
+/** Volumes, tips and branches, from the top down; yields per layer. */
+export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
   const cfg = model.cfg;
   const n = model.count;
-  const out: SupportAreas[] = [];
-  for (let j = 0; j < n; j++) out.push({ body: [], roof: [], floor: [] });
   const top = cfg.supportTopGapLayers;
   const roofLayers = cfg.supportInterfaceLayers;
-  const bottom = cfg.supportBottomGapLayers;
-  const everywhere = cfg.supportPlacement === 'everywhere';
+  const rules = treeRules(model);
+  const vol = new TreeVolumes(model, rules.radii, rules.step);
+  const nodes: TreeNode[][] = [];
+  for (let j = 0; j < n; j++) nodes.push([]);
 
-  // the overhang each layer must hold, and the layer its tips start on (under the gap and the roof)
+  // the overhang each layer must hold; its tips start under the top gap and the roof
   const overhangs: ExPolygon[][] = [];
   let highest = -1;
   for (let m = 0; m < n; m++) {
     overhangs.push(model.overhang(m));
     if (overhangs[m].length) highest = m;
   }
-  if (highest < 0) return out;
-  const tipLayerOf = (m: number) => m - top - roofLayers - 1;
-  const tipTop = tipLayerOf(highest);
+  if (highest < 0) return { nodes, overhangs, vol, rules };
+  const tipTop = highest - top - roofLayers - 1;
   const roofTop = Math.min(n - 1, highest - 1 - top);
-
-  const rules = treeRules(model);
-  const vol = new TreeVolumes(model, rules.radii, rules.step);
   yield* vol.build(Math.max(roofTop, tipTop), tipTop);
 
-  // branches, from the top down
   const spacing = cfg.supportTreeTipSpacing * UM_PER_MM;
-  const nodes: TreeNode[][] = [];
-  for (let j = 0; j < n; j++) nodes.push([]);
   for (let j = tipTop; j >= 0; j--) {
     const { lower, stuck } = j < tipTop ? descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
     for (const i of stuck) kill(nodes, j + 1, i);
@@ -77,7 +86,21 @@ export function* treeSupport(model: ModelLayers): Generator<void, SupportAreas[]
     vol.release(j);
     yield;
   }
+  return { nodes, overhangs, vol, rules };
+}
 
+/** Each layer's support areas from the plan, from the bed up; yields per layer. */
+export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, SupportAreas[]> {
+  const cfg = model.cfg;
+  const n = model.count;
+  const { nodes, overhangs, vol, rules } = plan;
+  const top = cfg.supportTopGapLayers;
+  const roofLayers = cfg.supportInterfaceLayers;
+  const bottom = cfg.supportBottomGapLayers;
+  const everywhere = cfg.supportPlacement === 'everywhere';
+  const spacing = cfg.supportTreeTipSpacing * UM_PER_MM;
+  const out: SupportAreas[] = [];
+  for (let j = 0; j < n; j++) out.push({ body: [], roof: [], floor: [] });
   // areas, from the bed up
   const w = model.widthUm;
   const boxCache = new Map<number, Bounds[]>();
@@ -142,11 +165,15 @@ export function treeRules(model: ModelLayers): TreeRules {
   const tanMove = Math.tan(rad(cfg.supportTreeBranchAngle));
   const tanGrow = Math.tan(rad(cfg.supportTreeDiameterAngle));
   const height = (j: number) => model.layers[j].height * UM_PER_MM;
+  const maxR = TRUNK_MAX_BRANCH_RADII * branchR;
+  // one more class for the widest trunks, so that every branch is checked against a class as wide as it is
+  const radii = radiusClasses(tipR, branchR);
+  if (maxR > branchR + 0.5) radii.push(Math.round(maxR));
   return {
-    radii: radiusClasses(tipR, branchR),
+    radii,
     tipR,
     branchR,
-    maxR: TRUNK_MAX_BRANCH_RADII * branchR,
+    maxR,
     tipGrowth: cfg.layerHeight * UM_PER_MM * Math.tan(rad(TIP_WIDEN_DEG)),
     trunkGrowth: (j) => height(j) * tanGrow,
     step: (j) => (j > 0 && j < model.count ? height(j) * tanMove : 0),

@@ -1,0 +1,165 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { area, difference, intersection, offset, union } from '../../geometry/clip.js';
+import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
+import type { LayerRegions } from '../types.js';
+import { ModelLayers } from './model-layers.js';
+import {
+  BOX_ON_POST, LEDGE_OVER_STEP, LEDGE_OVER_WIDE_STEP, T_SHAPE, boxLayers, heldShare, intoPart, supportArea, supportConfig, supported, type Box,
+} from './test-models.js';
+import { circle } from './tree-draw.js';
+import { planTree } from './tree.js';
+
+const MODELS: [string, Box[]][] = [
+  ['a box on a thin post', BOX_ON_POST],
+  ['a T', T_SHAPE],
+  ['a ledge over a lower step', LEDGE_OVER_STEP],
+];
+
+/** Tolerance for clipping and circle chords, µm. */
+const TOL_UM = 50;
+/** Area below which a difference counts as empty (polygon round-off), µm². */
+const SLIVER_UM2 = 0.01 * 1e6;
+/**
+ * What a layer may hang beyond the one below, µm²: a sliver where a branch ending at the edge of the part
+ * below was cut to what a line can print.
+ */
+const HANG_UM2 = 0.05 * 1e6;
+
+const totalArea = (layers: readonly LayerRegions[]) => layers.reduce((s, l) => s + area(supportArea(l)), 0);
+
+for (const [name, boxes] of MODELS) {
+  test(`tree support holds every overhang point of ${name} right under the top Z gap`, () => {
+    const { layers, cfg } = supported(boxes, { supportType: 'tree' });
+    const model = new ModelLayers(layers, cfg);
+    const w = cfg.supportLineWidthMm * UM_PER_MM;
+    const { held, total, missed } = heldShare(layers, cfg, (j) => model.collision(j), w / 2);
+    assert.ok(total > 100, `only ${total} overhang points`);
+    assert.equal(held, total, `unheld: ${JSON.stringify(missed.slice(0, 5))}`);
+  });
+
+  test(`tree support under ${name} keeps the XY gap from the part on every layer`, () => {
+    const { layers, cfg } = supported(boxes, { supportType: 'tree' });
+    assert.ok(totalArea(layers) > 0);
+    assert.equal(intoPart(layers, cfg, TOL_UM), 0);
+  });
+
+  test(`tree support under ${name} uses less than normal support`, () => {
+    const tree = totalArea(supported(boxes, { supportType: 'tree' }).layers);
+    const normal = totalArea(supported(boxes, { supportType: 'normal' }).layers);
+    assert.ok(tree > 0 && tree < normal, `tree ${(tree / 1e6).toFixed(0)} mm², normal ${(normal / 1e6).toFixed(0)} mm²`);
+  });
+
+  test(`branches under ${name} lean at most one move a layer and stand on what is below them`, () => {
+    const cfg = supportConfig({ supportType: 'tree' });
+    const layers = boxLayers(boxes, cfg);
+    const model = new ModelLayers(layers, cfg);
+    const run = planTree(model);
+    let r = run.next();
+    while (!r.done) r = run.next();
+    const { nodes, rules } = r.value;
+    let links = 0;
+    for (let j = 0; j + 1 < nodes.length; j++) {
+      const m = rules.step(j + 1);
+      const collision = model.collision(j);
+      for (const child of nodes[j]) {
+        if (child.dead) continue;
+        // every cross-section of a free branch is clear of the part grown by the XY gap
+        const into = child.landing ? 0 : area(intersection([{ outer: circle(child.x, child.y, child.r), holes: [] }], collision));
+        assert.equal(into, 0, `layer ${j}: a branch cross-section ${(into / 1e6).toFixed(3)} mm² into the part's XY gap`);
+        for (const p of child.parents.map((i) => nodes[j + 1][i])) {
+          links++;
+          const d = Math.hypot(p.x - child.x, p.y - child.y);
+          assert.ok(!p.dead, `a live branch on layer ${j} continues a dropped one`);
+          // the cross-section above reaches at most a move beyond the one below it: the branch moved at most a
+          // move, or (a thin branch taken into a wide one) lies within a move of the wide one
+          assert.ok(d + p.r <= child.r + m + 2, `layer ${j + 1}: overhangs the branch below by ${(d + p.r - child.r).toFixed(0)} µm`);
+          assert.ok(d <= m + 2 || child.parents.length > 1, `layer ${j}: moved ${d.toFixed(0)} µm, more than ${m.toFixed(0)}`);
+        }
+      }
+    }
+    assert.ok(links > 100);
+  });
+
+  test(`tree support under ${name}: below the tips, each layer lies within the one above grown by a move (and the radius growth)`, () => {
+    const { layers, cfg } = supported(boxes, { supportType: 'tree' });
+    const model = new ModelLayers(layers, cfg);
+    const run = planTree(model);
+    let r = run.next();
+    while (!r.done) r = run.next();
+    const { nodes, rules } = r.value;
+    let lowestTip = Infinity;
+    nodes.forEach((layer, j) => layer.some((n) => n.parents.length === 0) && (lowestTip = Math.min(lowestTip, j)));
+    const grow = Math.max(rules.tipGrowth, rules.trunkGrowth(1));
+    let checked = 0;
+    for (let j = 0; j + 1 < lowestTip; j++) {
+      const here = supportArea(layers[j]), above = supportArea(layers[j + 1]);
+      if (here.length === 0) continue;
+      const m = rules.step(j + 1);
+      const spread = area(difference(here, offset(above, m + grow + TOL_UM)));
+      assert.ok(spread <= SLIVER_UM2, `layer ${j} reaches ${(spread / 1e6).toFixed(3)} mm² beyond layer ${j + 1}`);
+      // and nothing above hangs further than a move beyond it (or beyond the part it stands on)
+      const part: ExPolygon[] = [];
+      for (let k = Math.max(0, j - cfg.supportBottomGapLayers); k <= j; k++) part.push(...model.section(k));
+      const base = part.length ? union(here, part) : here;
+      const hang = area(difference(above, offset(base, m + TOL_UM)));
+      assert.ok(hang <= HANG_UM2, `layer ${j + 1} hangs ${(hang / 1e6).toFixed(3)} mm² over air`);
+      checked++;
+    }
+    assert.ok(checked > 10, `only ${checked} layers checked`);
+  });
+
+  test(`tree support of ${name} is the same on a second run`, () => {
+    const a = supported(boxes, { supportType: 'tree' }).layers.map((l) => l.support);
+    const b = supported(boxes, { supportType: 'tree' }).layers.map((l) => l.support);
+    assert.deepEqual(a, b);
+  });
+}
+
+test('under a ledge over a lower step, tree support stands on the step, the bottom Z gap above it, with a floor', () => {
+  const { layers, cfg } = supported(LEDGE_OVER_STEP, { supportType: 'tree' });
+  assert.equal(cfg.supportPlacement, 'everywhere');
+  const floor = layers.reduce((s, l) => s + (l.support ? area(l.support.floor) : 0), 0);
+  assert.ok(floor > 1e6, `floor ${floor / 1e6} mm²`);
+  for (let j = 1; j < layers.length; j++) {
+    const below = layers[j - 1].islands.map((i) => i.outline);
+    const on = area(intersection(supportArea(layers[j]), below));
+    assert.ok(on <= SLIVER_UM2, `layer ${j}: support right on the part (${on / 1e6} mm²)`);
+  }
+});
+
+for (const [name, boxes] of [['a ledge over a lower step', LEDGE_OVER_STEP], ['a ledge over a wider step', LEDGE_OVER_WIDE_STEP]] as const) {
+  test(`with build-plate placement, nothing of the tree support under ${name} stands on the part`, () => {
+    const options = { supportType: 'tree', supportPlacement: 'buildPlate' } as const;
+    const { layers, cfg } = supported(boxes, options);
+    for (let j = 1; j < layers.length; j++) {
+      assert.equal(layers[j].support?.floor.length ?? 0, 0, `a floor on layer ${j}`);
+      const below = layers[j - 1].islands.map((i) => i.outline);
+      const on = area(intersection(supportArea(layers[j]), below));
+      assert.ok(on <= SLIVER_UM2, `layer ${j}: ${(on / 1e6).toFixed(3)} mm² of support right on the part`);
+    }
+    // every branch goes on down to the bed
+    const run = planTree(new ModelLayers(boxLayers(boxes, cfg), cfg));
+    let r = run.next();
+    while (!r.done) r = run.next();
+    const { nodes } = r.value;
+    for (let j = 1; j < nodes.length; j++) {
+      const continued = new Set(nodes[j - 1].filter((n) => !n.dead).flatMap((n) => n.parents));
+      nodes[j].forEach((n, i) => assert.ok(n.dead || continued.has(i), `a branch ends on layer ${j}`));
+    }
+  });
+}
+
+test('with build-plate placement, the ledge over a lower step is still held where the bed is within reach', () => {
+  const { layers } = supported(LEDGE_OVER_STEP, { supportType: 'tree', supportPlacement: 'buildPlate' });
+  // the ledge reaches 12 mm beyond the step's edge: a branch under it has room to reach the bed
+  const beyond = layers.map((l) => area(intersection(supportArea(l), [{ outer: [{ x: 2000, y: -20000 }, { x: 20000, y: -20000 }, { x: 20000, y: 20000 }, { x: 2000, y: 20000 }], holes: [] }])));
+  assert.ok(beyond[0] > 0, 'no branch reaches the bed beyond the step');
+});
+
+test('a ledge just above a wide step gets no tree support with build-plate placement, and stands on the step with everywhere placement', () => {
+  const plate = supported(LEDGE_OVER_WIDE_STEP, { supportType: 'tree', supportPlacement: 'buildPlate' });
+  assert.equal(totalArea(plate.layers), 0);
+  const everywhere = supported(LEDGE_OVER_WIDE_STEP, { supportType: 'tree' });
+  assert.ok(totalArea(everywhere.layers) > 0);
+});
