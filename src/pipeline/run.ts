@@ -229,7 +229,7 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     const planned: LayerPlan[] = [];
     const plan = (lp: LayerPaths) => planned.push(planLayer(lp, cfg, state, planned.length));
     if (raftLayers.length) {
-      const raftParams = { ...common, adhesion: false };
+      const raftParams = { ...common, zOffset: 0, adhesion: false };
       for (const r of raftLayers) plan(pathsOf(r, cfg, raftParams, custom, []));
     }
     const arrived: Array<RangeResult | undefined> = new Array(jobs.length);
