@@ -5,7 +5,7 @@
  */
 import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
 import { basename, extname } from 'node:path';
-import { Slicer } from '../api/slicer.js';
+import { Slicer } from '../index.js';
 import { StrataError } from '../errors.js';
 import { loadModelBytes, prepareMesh, mergeObjects } from '../mesh/index.js';
 import { VERSION } from '../pipeline/run.js';

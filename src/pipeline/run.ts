@@ -21,7 +21,8 @@ import type { LayerZ } from '../slice/types.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
 import { computeRange, lineWidthUm, type RangeJob, type RangeResult } from './layer-work.js';
-import { customGenerator, isTransferable, type CustomInfillSpec } from './custom-infill.js';
+import type { CustomInfillSpec } from './custom-infill.js';
+import { isTransferable, loadCustomInfill } from './custom-infill-loader.js';
 
 export const VERSION = '0.1.0';
 
@@ -132,7 +133,7 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
     let prepared: unknown[] | undefined;
-    const custom = opts.custom ? customGenerator(opts.custom, cfg) : undefined;
+    const custom = opts.custom ? (await loadCustomInfill()).customGenerator(opts.custom, cfg) : undefined;
     const runner: JobRunner = { pool, local: (j) => computeRange(local(), cfg, j, custom), signal };
     const passes = pattern.prepare && !custom && cfg.infillDensity > 0 ? 2 : 1;
     let doneLayers = 0;

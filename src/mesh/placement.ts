@@ -1,0 +1,75 @@
+/**
+ * Where an object stands on the bed, as an editor (the web page) keeps it: a linear part (rotation
+ * and scale) applied to the model's own coordinates, and the bed point under the centre of the
+ * result's bounding box; its bottom rests on z = 0. Turned into an affine transform from the
+ * model's vertices, so the page draws and slices the same placement.
+ */
+import { transformPoints, type Affine } from './transform.js';
+import type { MeshObject } from './types.js';
+
+export interface Placement {
+  /** Row-major 3×3 matrix: rotation and scale, applied first. */
+  linear: readonly number[];
+  /** Bed XY under the centre of the placed bounding box, mm. */
+  center: readonly [number, number];
+}
+
+export const IDENTITY_LINEAR: readonly number[] = Object.freeze([1, 0, 0, 0, 1, 0, 0, 0, 1]);
+
+export function isIdentityLinear(m: readonly number[]): boolean {
+  return m.every((v, i) => v === IDENTITY_LINEAR[i]);
+}
+
+export interface Box {
+  min: [number, number, number];
+  max: [number, number, number];
+}
+
+/** Bounds of the objects' vertices after the linear part `m` (row-major 3×3). */
+export function linearBounds(objects: readonly MeshObject[], m: readonly number[] = IDENTITY_LINEAR): Box {
+  const min: [number, number, number] = [Infinity, Infinity, Infinity];
+  const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
+  for (const o of objects) {
+    const p = o.mesh.positions;
+    for (let i = 0; i < p.length; i += 3) {
+      const x = p[i], y = p[i + 1], z = p[i + 2];
+      for (let r = 0; r < 3; r++) {
+        const v = m[r * 3] * x + m[r * 3 + 1] * y + m[r * 3 + 2] * z;
+        if (v < min[r]) min[r] = v;
+        if (v > max[r]) max[r] = v;
+      }
+    }
+  }
+  return { min, max };
+}
+
+/** The affine transform (model → bed) of a placement, given the bounds after its linear part. */
+export function placementAffine(p: Placement, box: Box): Affine {
+  const m = p.linear;
+  const tx = p.center[0] - (box.min[0] + box.max[0]) / 2;
+  const ty = p.center[1] - (box.min[1] + box.max[1]) / 2;
+  const tz = -box.min[2];
+  return Float64Array.of(m[0], m[1], m[2], tx, m[3], m[4], m[5], ty, m[6], m[7], m[8], tz);
+}
+
+/** The objects moved to their placement (new arrays; the inputs are not changed). */
+export function placeObjects(objects: readonly MeshObject[], p: Placement): MeshObject[] {
+  const affine = placementAffine(p, linearBounds(objects, p.linear));
+  const mirrored = determinant3(p.linear) < 0;
+  return objects.map((o) => {
+    const n = o.mesh.positions.length / 3;
+    const positions = new Float32Array(n * 3);
+    transformPoints(affine, o.mesh.positions, n, positions, 0);
+    let indices = o.mesh.indices;
+    if (mirrored) {
+      // a mirror turns the triangles inside out: swap two corners to keep them facing outwards
+      indices = indices.slice();
+      for (let t = 0; t < indices.length; t += 3) [indices[t + 1], indices[t + 2]] = [indices[t + 2], indices[t + 1]];
+    }
+    return { name: o.name, mesh: { positions, indices } };
+  });
+}
+
+function determinant3(m: readonly number[]): number {
+  return m[0] * (m[4] * m[8] - m[5] * m[7]) - m[1] * (m[3] * m[8] - m[5] * m[6]) + m[2] * (m[3] * m[7] - m[4] * m[6]);
+}
