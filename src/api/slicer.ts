@@ -36,6 +36,12 @@ export interface SliceResult {
 export interface SliceCallOptions {
   onProgress?: (p: Progress) => void;
   signal?: AbortSignal;
+  /**
+   * On one thread, slice the layers in this many steps (up to one per layer), reporting progress and
+   * honouring `signal` after each: a smoother progress bar for slightly more work (each step slices
+   * its skin neighbours again). The G-code is the same for any value. Default 1.
+   */
+  progressSteps?: number;
 }
 
 export interface PreparedModel {
@@ -217,6 +223,7 @@ export class Slicer {
         threads,
         sink,
         onProgress: opts.onProgress,
+        progressSteps: opts.progressSteps,
         signal: opts.signal,
         objectCenter: [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2],
         height: b.max[2],

@@ -25,19 +25,27 @@ export interface Box {
   max: [number, number, number];
 }
 
-/** Bounds of the objects' vertices after the linear part `m` (row-major 3×3). */
-export function linearBounds(objects: readonly MeshObject[], m: readonly number[] = IDENTITY_LINEAR): Box {
+/**
+ * Bounds after the linear part `m` (row-major 3×3) of the objects' vertices that triangles use
+ * (as placeOnBed counts them), or of every vertex in a flat xyz array.
+ */
+export function linearBounds(objects: readonly MeshObject[] | Float32Array, m: readonly number[] = IDENTITY_LINEAR): Box {
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
-  for (const o of objects) {
-    const p = o.mesh.positions;
-    for (let i = 0; i < p.length; i += 3) {
-      const x = p[i], y = p[i + 1], z = p[i + 2];
-      for (let r = 0; r < 3; r++) {
-        const v = m[r * 3] * x + m[r * 3 + 1] * y + m[r * 3 + 2] * z;
-        if (v < min[r]) min[r] = v;
-        if (v > max[r]) max[r] = v;
-      }
+  const add = (p: ArrayLike<number>, i: number) => {
+    const x = p[i], y = p[i + 1], z = p[i + 2];
+    for (let r = 0; r < 3; r++) {
+      const v = m[r * 3] * x + m[r * 3 + 1] * y + m[r * 3 + 2] * z;
+      if (v < min[r]) min[r] = v;
+      if (v > max[r]) max[r] = v;
+    }
+  };
+  if (objects instanceof Float32Array) {
+    for (let i = 0; i + 2 < objects.length; i += 3) add(objects, i);
+  } else {
+    for (const o of objects) {
+      const { positions, indices } = o.mesh;
+      for (let k = 0; k < indices.length; k++) add(positions, indices[k] * 3);
     }
   }
   return { min, max };

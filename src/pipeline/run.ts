@@ -45,6 +45,11 @@ export interface RunOptions {
   height: number;
   /** Custom infill (shader or image) replacing the built-in pattern. */
   custom?: CustomInfillSpec;
+  /**
+   * On one thread, compute the layers in this many ranges and report progress (and look at the
+   * signal) after each: a smoother progress bar for a little more work. The G-code is the same.
+   */
+  progressSteps?: number;
   /** Workers started early (`startWorkers`); used, or ended, here. */
   started?: Promise<Port[]>;
 }
@@ -83,10 +88,13 @@ function infillParamsFor(cfg: Config, objectCenter: [number, number]): InfillPar
  */
 const HELP_ABOVE_MS = 2000;
 
-/** Split [0, n) into ranges: several per thread for balance, each a few layers at least. */
-function ranges(n: number, threads: number): Array<[number, number]> {
-  if (threads <= 1) return [[0, n]];
-  const pieces = Math.min(n, threads * 4);
+/**
+ * Split [0, n) into ranges: several per thread for balance, each a few layers at least; on one
+ * thread `steps` ranges (1 unless asked for, since each extra range slices its neighbours again).
+ */
+function ranges(n: number, threads: number, steps = 1): Array<[number, number]> {
+  if (threads <= 1 && steps <= 1) return [[0, n]];
+  const pieces = Math.min(n, threads <= 1 ? steps : threads * 4);
   const out: Array<[number, number]> = [];
   for (let k = 0; k < pieces; k++) {
     const a = Math.floor((k * n) / pieces), b = Math.floor(((k + 1) * n) / pieces);
@@ -121,7 +129,7 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
   if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
   const params = infillParamsFor(cfg, opts.objectCenter);
   const pattern = PATTERNS[cfg.infillPattern as PatternId];
-  const split = ranges(layers.length, opts.threads);
+  const split = ranges(layers.length, opts.threads, opts.progressSteps);
   // N threads: the calling thread and N-1 workers
   // (a custom density given as a JS function cannot travel to a worker)
   const workers = opts.custom && !isTransferable(opts.custom) ? 0 : Math.min(opts.threads, split.length) - 1;
