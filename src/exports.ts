@@ -21,3 +21,5 @@ export { loadCustomInfill } from './pipeline/custom-infill-loader.js';
 export type { CustomInfillSpec, CustomDensity } from './pipeline/custom-infill.js';
 export { FEATURE_TYPES } from './plan/types.js';
 export { TYPE_MARKERS } from './gcode/writer.js';
+export { planToArrays, SEGMENT_STRIDE, TRAVEL_STRIDE, RETRACTION_STRIDE } from './preview/plan-arrays.js';
+export type { PreviewArrays } from './preview/plan-arrays.js';

@@ -96,6 +96,18 @@ describe('web page', { skip: missing ?? false }, () => {
     });
   }
 
+  /** A README screenshot: no focus ring, the sidebar at its top. */
+  async function shoot(page: Page, name: string): Promise<void> {
+    if (!shots) return;
+    await page.evaluate(() => {
+      (document.activeElement as HTMLElement | null)?.blur();
+      document.querySelector('.sidebar')?.scrollTo(0, 0);
+      document.querySelectorAll('#messages .msg').forEach((m) => m.remove());
+    });
+    await page.waitForTimeout(400);
+    await page.screenshot({ path: join(shots, name) });
+  }
+
   async function saved(download: Promise<Download>, name: string): Promise<string> {
     const d = await download;
     const path = join(work, name);
@@ -116,7 +128,7 @@ describe('web page', { skip: missing ?? false }, () => {
     await setSetting(page, 'Infill density', '15');
     await setSetting(page, 'Wall count', '3');
     await setSetting(page, 'Layer height', '0.25');
-    if (shots) await page.screenshot({ path: join(shots, 'model.png') });
+    await shoot(page, 'model.png');
     const longTasks = await slice(page);
     assert.deepEqual(
       longTasks.filter(([, d]) => d > LONG_TASK_MS),
@@ -148,14 +160,14 @@ describe('web page', { skip: missing ?? false }, () => {
     for (const t of types) assert.ok(legend.some((l) => l.startsWith(t)), `legend shows ${t}: ${legend.join(' | ')}`);
     await page.getByText('Print time').waitFor();
     if (shots) {
-      await page.getByRole('radio', { name: 'Single layer', exact: true }).check();
-      await page.waitForTimeout(300);
-      await page.screenshot({ path: join(shots, 'preview-layer.png') });
-      await page.getByRole('radio', { name: 'Up to layer', exact: true }).check();
       await slider.fill(String(Math.floor(layers * 0.62)));
+      await shoot(page, 'preview.png');
+      await slider.fill(String(Math.floor(layers * 0.3)));
+      await page.getByRole('radio', { name: 'Single layer', exact: true }).check();
       await page.getByLabel('Travel moves', { exact: true }).check();
-      await page.waitForTimeout(300);
-      await page.screenshot({ path: join(shots, 'preview.png') });
+      await page.mouse.move(460, 430);
+      for (let i = 0; i < 6; i++) await page.mouse.wheel(0, -300);
+      await shoot(page, 'preview-layer.png');
     }
     await page.close();
   });
@@ -223,8 +235,9 @@ describe('web page', { skip: missing ?? false }, () => {
     if (shots) {
       await page.getByRole('slider', { name: 'Layer', exact: true }).fill('60');
       await page.getByRole('radio', { name: 'Single layer', exact: true }).check();
-      await page.waitForTimeout(300);
-      await page.screenshot({ path: join(shots, 'custom-infill.png') });
+      await page.mouse.move(460, 420);
+      for (let i = 0; i < 4; i++) await page.mouse.wheel(0, -300);
+      await shoot(page, 'custom-infill.png');
     }
     await page.close();
   });
@@ -253,8 +266,7 @@ describe('web page', { skip: missing ?? false }, () => {
     if (shots) {
       const narrow = await openPage({ width: 420, height: 900 });
       await openModel(narrow, benchy);
-      await narrow.waitForTimeout(300);
-      await narrow.screenshot({ path: join(shots, 'narrow.png') });
+      await shoot(narrow, 'narrow.png');
       await narrow.close();
     }
   });

@@ -3,7 +3,7 @@
  * preview the toolpaths and download the G-code. The page thread only draws and answers the user;
  * reading, slicing and building the preview data happen in the worker.
  */
-import { Matrix4 } from 'three';
+import { Matrix4, Vector3 } from 'three';
 import { listPresets } from '../../src/settings/presets/index.js';
 import type { Config } from '../../src/settings/resolve.js';
 import { byId, h, saveFile } from './dom.js';
@@ -152,6 +152,19 @@ function viewObjects(): void {
       problem: plate.problems(it).length > 0,
     })),
   );
+}
+
+/** Look at the objects from the front, keeping some of the bed around small ones. */
+function frameObjects(): void {
+  if (!viewer || plate.items.length === 0) return;
+  viewer.home();
+  const min = new Vector3(Infinity, Infinity, 0), max = new Vector3(-Infinity, -Infinity, 0);
+  for (const it of plate.items) {
+    const [sx, sy, sz] = plate.size(it);
+    min.min(new Vector3(it.center[0] - sx / 2, it.center[1] - sy / 2, 0));
+    max.max(new Vector3(it.center[0] + sx / 2, it.center[1] + sy / 2, sz));
+  }
+  viewer.frame(min, max, Math.max(plate.bed.width, plate.bed.depth) * 0.22);
 }
 
 /** Our row-major 3×4 affine as a three.js matrix. */
@@ -303,7 +316,7 @@ async function openFiles(files: readonly File[]): Promise<void> {
       for (const p of plate.problems(it)) message('warning', `${it.name}: ${p}`);
       invalidate();
       refreshObjects();
-      if (first) viewer?.home();
+      if (first) frameObjects();
     } catch (e) {
       message('error', `${file.name}: ${errorText(e)}`);
     }
@@ -372,7 +385,7 @@ store.onChange(() => {
     settingsError = errorText(e);
   }
   plate.setBed(bedShape(cfg));
-  viewer?.setBed(plate.bed);
+  if (viewer?.setBed(plate.bed)) frameObjects();
   invalidate();
   refreshObjects();
 });

@@ -141,7 +141,7 @@ export class ToolpathView {
       uColor: { value: this.colours },
     },
   });
-  readonly travelMaterial = this.#lineMaterial('#3d6fd6', 1);
+  readonly travelMaterial = this.#lineMaterial('#9467bd', 1);
   readonly retractMaterial = this.#lineMaterial('#c2185b', 5);
 
   constructor(private requestRender: () => void) {

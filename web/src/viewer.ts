@@ -131,11 +131,12 @@ export class Viewer {
     this.renderer.domElement.style.cursor = on ? 'crosshair' : '';
   }
 
-  setBed(b: BedShape): void {
+  /** Show this bed; returns whether it changed (the view then looks at the whole bed). */
+  setBed(b: BedShape): boolean {
     const first = this.#bedShape === null;
     const changed = !this.#bedShape || ['width', 'depth', 'height', 'originAtCenter'].some((k) => this.#bedShape![k as keyof BedShape] !== b[k as keyof BedShape]);
     this.#bedShape = b;
-    if (!changed) return;
+    if (!changed) return false;
     for (const c of [...this.#bed.children]) {
       this.#bed.remove(c);
       const m = c as Mesh;
@@ -158,6 +159,7 @@ export class Viewer {
     volume.position.set(x0 + b.width / 2, y0 + b.depth / 2, b.height / 2);
     this.#bed.add(volume);
     if (first || changed) this.home();
+    return true;
   }
 
   /** Look at the bed from the front, a little above. */
@@ -172,10 +174,10 @@ export class Viewer {
     this.render();
   }
 
-  /** Aim at a box (mm) so it fills the view. */
-  frame(min: Vector3, max: Vector3): void {
+  /** Aim at a box (mm) so it fills the view, seen from the current direction; at least `minRadius` mm around. */
+  frame(min: Vector3, max: Vector3, minRadius = 5): void {
     const centre = min.clone().add(max).multiplyScalar(0.5);
-    const r = Math.max(5, min.distanceTo(max) / 2);
+    const r = Math.max(minRadius, min.distanceTo(max) / 2);
     const dir = this.camera.position.clone().sub(this.controls.target).normalize();
     const dist = r / Math.sin((this.camera.fov * Math.PI) / 360) * 1.15;
     this.controls.target.copy(centre);
