@@ -10,9 +10,6 @@ import { planToArrays, transferList } from '../../src/preview/plan-arrays.js';
 import type { MeshObject } from '../../src/mesh/types.js';
 import type { FromWorker, LoadedModel, SliceItem, ToWorker } from './protocol.js';
 
-/** Steps the progress bar moves in on one thread (each costs a little extra slicing; the G-code is the same). */
-const PROGRESS_STEPS = 12;
-
 const scope = globalThis as unknown as {
   postMessage(m: FromWorker, transfer?: Transferable[]): void;
   onmessage: ((e: MessageEvent<ToWorker>) => void) | null;
@@ -107,7 +104,6 @@ async function handle(msg: ToWorker): Promise<void> {
       const chunks: string[] = [];
       const { plan, stats, warnings } = await slicer.slicePlan(input, {
         onProgress: (p) => post({ type: 'progress', id: msg.id, stage: p.stage, fraction: p.fraction }),
-        progressSteps: PROGRESS_STEPS,
       }, (c) => chunks.push(c));
       const gcode = new TextEncoder().encode(chunks.join('')).buffer as ArrayBuffer;
       const preview = planToArrays(plan);
