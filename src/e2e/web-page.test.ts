@@ -271,6 +271,36 @@ describe('web page', { skip: missing ?? false }, () => {
     }
   });
 
+  test('an object dragged on the bed and laid on a face is sliced where and as it stands', SLOW, async () => {
+    const page = await openPage();
+    await openModel(page, join(MODELS_DIR, 'spot.stl'));
+    const canvas = (await page.locator('#viewport canvas').boundingBox())!;
+    const cx = canvas.x + canvas.width / 2, cy = canvas.y + canvas.height / 2;
+    const x0 = Number(await page.getByLabel('X mm', { exact: true }).inputValue());
+    // the view is framed on the model: its centre is under the view's centre
+    await page.mouse.move(cx, cy);
+    await page.mouse.down();
+    for (let k = 1; k <= 5; k++) await page.mouse.move(cx + 30 * k, cy);
+    await page.mouse.up();
+    const x1 = Number(await page.getByLabel('X mm', { exact: true }).inputValue());
+    assert.ok(x1 > x0 + 10, `dragged right: X ${x0} → ${x1}`);
+    const sizeBefore = await page.locator('#obj-size').textContent();
+    await page.getByRole('button', { name: 'Lay on face', exact: true }).click();
+    await page.mouse.click(cx + 150, cy);
+    await page.waitForFunction((before) => document.getElementById('obj-size')!.textContent !== before, sizeBefore);
+    const [sx, sy, sz] = ((await page.locator('#obj-size').textContent()) ?? '').match(/[\d.]+/g)!.slice(0, 3).map(Number);
+    assert.ok(Math.abs(sx * sy * sz - 37.72 * 68.72 * 67.62) > 1000, `laid down on another face: ${sx} × ${sy} × ${sz}`);
+    assert.equal(await page.locator('#object-list .bad').count(), 0);
+    await slice(page);
+    const gcode = readFileSync(await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]).then(([d]) => d), 'spot.gcode'), 'utf8');
+    const bound = (k: string) => Number(new RegExp(`^;${k}:(\\S+)$`, 'm').exec(gcode)![1]);
+    const x = Number(await page.getByLabel('X mm', { exact: true }).inputValue()), y = Number(await page.getByLabel('Y mm', { exact: true }).inputValue());
+    // the print (with its skirt around it) is centred where the object stands, as tall as it stands
+    assert.ok(Math.abs((bound('MINX') + bound('MAXX')) / 2 - x) < 1 && Math.abs((bound('MINY') + bound('MAXY')) / 2 - y) < 1, `print centred at ${x}, ${y}`);
+    assert.ok(Math.abs(bound('MAXZ') - sz) < 0.3, `height ${bound('MAXZ')} vs ${sz}`);
+    await page.close();
+  });
+
   test('no console errors on any page', () => {
     assert.deepEqual(problems, []);
   });

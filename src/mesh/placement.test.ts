@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { IDENTITY_LINEAR, isIdentityLinear, linearBounds, placeObjects } from './placement.js';
+import { IDENTITY_LINEAR, axisRotation, isIdentityLinear, linearBounds, mul3, placeObjects, rotationBetween } from './placement.js';
 import { placeOnBed } from './place.js';
 import { prepareMesh } from './prepare.js';
 import type { MeshObject } from './types.js';
@@ -34,4 +34,32 @@ test('a rotation and scale: bounds centred where asked, bottom on the bed, volum
   // a mirror keeps the triangles facing outwards (positive volume)
   const [mirrored] = placeObjects([o], { linear: [-1, 0, 0, 0, 1, 0, 0, 0, 1], center: [50, 60] });
   assert.ok(prepareMesh(mirrored.mesh).report.volume > 0);
+});
+
+function apply(m: readonly number[], v: readonly number[]): number[] {
+  return [0, 1, 2].map((r) => m[r * 3] * v[0] + m[r * 3 + 1] * v[1] + m[r * 3 + 2] * v[2]);
+}
+
+test('quarter turns are exact; rotationBetween takes a face normal down onto the bed', () => {
+  assert.deepEqual(apply(axisRotation('x', 90), [0, 1, 0]), [0, 0, 1]);
+  assert.deepEqual(apply(axisRotation('y', -90), [0, 0, 1]), [-1, 0, 0]);
+  assert.deepEqual(apply(axisRotation('z', 270), [1, 0, 0]), [0, -1, 0]);
+  assert.deepEqual(mul3(axisRotation('z', 90), axisRotation('z', -90)).map((v) => v + 0), [...IDENTITY_LINEAR]);
+  const down = [0, 0, -1];
+  for (const n of [[1, 0, 0], [0.6, 0, 0.8], [0, 0, -1], [0, 0, 1], [-0.36, 0.48, 0.8]]) {
+    const r = rotationBetween(n, down);
+    const got = apply(r, n);
+    assert.ok(got.every((v, k) => Math.abs(v - down[k]) < 1e-12), `${n} → ${got}`);
+    // a rotation: orthonormal, determinant 1
+    const rt = [r[0], r[3], r[6], r[1], r[4], r[7], r[2], r[5], r[8]];
+    assert.ok(mul3(r, rt).every((v, k) => Math.abs(v - IDENTITY_LINEAR[k]) < 1e-12), `orthonormal for ${n}`);
+  }
+});
+
+test('laying a box on its side face: the placed box is as tall as that side was wide', () => {
+  const o = box();
+  // the +X face (normal (1, 0, 0)) goes down: the 10 mm X extent becomes the height
+  const [placed] = placeObjects([o], { linear: rotationBetween([1, 0, 0], [0, 0, -1]), center: [110, 110] });
+  const b = linearBounds([placed]);
+  assert.ok(Math.abs(b.max[2] - b.min[2] - 10) < 1e-4 && Math.abs(b.min[2]) < 1e-6, `height ${b.max[2] - b.min[2]}`);
 });

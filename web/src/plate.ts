@@ -4,7 +4,7 @@
  * stands where `strata slice` would put it, and is sliced as read, so the G-code is the CLI's.
  */
 import { arrange, findSpot, footprintsOverlap, type Bed, type PlacedFootprint } from '../../src/mesh/arrange.js';
-import { IDENTITY_LINEAR, linearBounds, placementAffine, type Box, type Placement } from '../../src/mesh/placement.js';
+import { IDENTITY_LINEAR, axisRotation, linearBounds, mul3, placementAffine, rotationBetween, type Box, type Placement } from '../../src/mesh/placement.js';
 import type { Config } from '../../src/settings/resolve.js';
 import { mm1 } from './format.js';
 import type { LoadedModel, SliceItem } from './protocol.js';
@@ -48,45 +48,6 @@ export function bedCentre(b: BedShape): [number, number] {
 
 /** Tolerance for "fits the bed", mm (as the slicer's placement allows). */
 const FIT_MM = 1e-3;
-
-function mul3(a: readonly number[], b: readonly number[]): number[] {
-  const r = new Array<number>(9);
-  for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) r[i * 3 + j] = a[i * 3] * b[j] + a[i * 3 + 1] * b[3 + j] + a[i * 3 + 2] * b[6 + j];
-  return r;
-}
-
-/** Rotation by `deg` about a coordinate axis, exact for multiples of 90°. */
-export function axisRotation(axis: 'x' | 'y' | 'z', deg: number): number[] {
-  const quarter = deg / 90;
-  const c = Number.isInteger(quarter) ? [1, 0, -1, 0][((quarter % 4) + 4) % 4] : Math.cos((deg * Math.PI) / 180);
-  const s = Number.isInteger(quarter) ? [0, 1, 0, -1][((quarter % 4) + 4) % 4] : Math.sin((deg * Math.PI) / 180);
-  if (axis === 'x') return [1, 0, 0, 0, c, -s, 0, s, c];
-  if (axis === 'y') return [c, 0, s, 0, 1, 0, -s, 0, c];
-  return [c, -s, 0, s, c, 0, 0, 0, 1];
-}
-
-/** The rotation taking unit vector `from` to unit vector `to` (Rodrigues). */
-export function rotationBetween(from: readonly number[], to: readonly number[]): number[] {
-  const [ax, ay, az] = from, [bx, by, bz] = to;
-  const cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
-  const c = ax * bx + ay * by + az * bz;
-  if (c < -1 + 1e-9) {
-    // opposite: half a turn about any axis perpendicular to `from`
-    const p = Math.abs(ax) < 0.9 ? [1, 0, 0] : [0, 1, 0];
-    let ux = ay * p[2] - az * p[1], uy = az * p[0] - ax * p[2], uz = ax * p[1] - ay * p[0];
-    const l = Math.hypot(ux, uy, uz);
-    ux /= l;
-    uy /= l;
-    uz /= l;
-    return [2 * ux * ux - 1, 2 * ux * uy, 2 * ux * uz, 2 * uy * ux, 2 * uy * uy - 1, 2 * uy * uz, 2 * uz * ux, 2 * uz * uy, 2 * uz * uz - 1];
-  }
-  const k = 1 / (1 + c);
-  return [
-    c + cx * cx * k, cx * cy * k - cz, cx * cz * k + cy,
-    cy * cx * k + cz, c + cy * cy * k, cy * cz * k - cx,
-    cz * cx * k - cy, cz * cy * k + cx, c + cz * cz * k,
-  ];
-}
 
 export class Plate {
   items: PlateItem[] = [];
