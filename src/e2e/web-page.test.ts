@@ -80,6 +80,7 @@ describe('web page', { skip: missing ?? false }, () => {
 
   async function setSetting(page: Page, label: string, value: string): Promise<void> {
     const input = page.getByLabel(label, { exact: true });
+    await input.evaluate((el) => el.closest('details')?.setAttribute('open', ''));
     await input.fill(value);
     await input.press('Tab');
   }
@@ -215,7 +216,7 @@ describe('web page', { skip: missing ?? false }, () => {
     await page.close();
   });
 
-  test('a shipped custom infiller: the shader compiler loads only then, and the G-code is the CLI\'s', SLOW, async () => {
+  test('a shipped custom infiller on two threads: the shader compiler loads only then, and the G-code is the CLI\'s', SLOW, async () => {
     const info = JSON.parse(readFileSync(join(root, 'dist/web/build-info.json'), 'utf8')) as { shaderCompiler: { web: string } };
     const page = await openPage();
     const requested: string[] = [];
@@ -224,13 +225,16 @@ describe('web page', { skip: missing ?? false }, () => {
     await openModel(page, cube);
     await slice(page);
     assert.ok(!requested.includes(info.shaderCompiler.web), 'no shader compiler for a built-in pattern');
+    // two threads: the library's worker pool runs inside the page's worker (and compiles the shader there too)
+    await setSetting(page, 'Threads', '2');
     await page.getByLabel('Custom infill', { exact: true }).selectOption('shipped:hexagon-grid');
     await page.getByText(/Shader hexagon-grid: 3 parameters/).waitFor();
     assert.ok(requested.includes(info.shaderCompiler.web), `the compiler chunk ${info.shaderCompiler.web} loads for custom infill`);
     await slice(page);
     const gcode = await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]).then(([d]) => d), 'hex.gcode');
     const config = await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export', exact: true }).click()]).then(([d]) => d), 'hex.json');
-    assert.deepEqual(JSON.parse(readFileSync(config, 'utf8')), { printer: 'creality-ender-3', filament: 'pla', infillPattern: 'hexagon-grid' });
+    assert.deepEqual(JSON.parse(readFileSync(config, 'utf8')), { printer: 'creality-ender-3', filament: 'pla', threads: 2, infillPattern: 'hexagon-grid' });
+    assert.match((await page.locator('#result-card').textContent()) ?? '', /on 2 threads/);
     assert.ok(readFileSync(gcode).equals(cliSlice(cube, config, join(work, 'hex-cli.gcode'))), 'custom infill G-code is the CLI\'s');
     if (shots) {
       await page.getByRole('slider', { name: 'Layer', exact: true }).fill('60');

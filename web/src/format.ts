@@ -27,6 +27,6 @@ export function mm1(v: number): string {
 
 /** "layerHeight" → "Layer height". */
 export function labelOf(key: string): string {
-  const words = key.replace(/([a-z0-9])([A-Z])/g, '$1 $2').toLowerCase();
+  const words = key.replace(/([a-z0-9])([A-Z])/g, '$1 $2').replace(/([A-Z])([A-Z][a-z])/g, '$1 $2').toLowerCase();
   return words[0].toUpperCase() + words.slice(1);
 }
