@@ -137,7 +137,9 @@ describe('web page', { skip: missing ?? false }, () => {
       `long tasks (start ms, duration ms) on the page thread while slicing`,
     );
 
-    const gcode = await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]).then(([d]) => d), 'page.gcode');
+    const [gcodeDownload] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]);
+    assert.equal(gcodeDownload.suggestedFilename(), '3DBenchy.gcode', 'named after the model, as the CLI names it');
+    const gcode = await saved(Promise.resolve(gcodeDownload), 'page.gcode');
     const [settingsDownload] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export', exact: true }).click()]);
     assert.equal(settingsDownload.suggestedFilename(), 'strata-settings.json');
     const config = await saved(Promise.resolve(settingsDownload), 'settings.json');
@@ -260,12 +262,28 @@ describe('web page', { skip: missing ?? false }, () => {
     assert.equal(await page.locator('#object-list .bad').count(), 0, 'no object overlaps another or leaves the bed');
     const centres = await page.locator('#object-list .name').allTextContents();
     assert.deepEqual(centres, ['cube-a', 'cube-b', 'cube-c']);
+    // the picker takes several files at once, 3MF and OBJ too
+    const obj = ['v 0 0 0', 'v 10 0 0', 'v 10 10 0', 'v 0 10 0', 'v 0 0 10', 'v 10 0 10', 'v 10 10 10', 'v 0 10 10', 'f 1 3 2', 'f 1 4 3', 'f 5 6 7', 'f 5 7 8', 'f 1 2 6', 'f 1 6 5', 'f 2 3 7', 'f 2 7 6', 'f 3 4 8', 'f 3 8 7', 'f 4 1 5', 'f 4 5 8'].join('\n');
+    await page.getByLabel('Open model', { exact: true }).setInputFiles([{ name: '3DBenchy.3mf', mimeType: 'model/3mf', buffer: readFileSync(join(MODELS_DIR, '3DBenchy.3mf')) }, { name: 'box.obj', mimeType: 'text/plain', buffer: Buffer.from(obj + '\n') }]);
+    await page.waitForFunction(() => document.querySelectorAll('#object-list li').length === 5);
+    assert.deepEqual(await page.locator('#object-list .name').allTextContents(), ['cube-a', 'cube-b', 'cube-c', '3DBenchy', 'box']);
+    assert.equal(await page.locator('#object-list .bad').count(), 0, 'five objects, none overlapping');
     await setSetting(page, 'Infill density', '35');
     await page.getByLabel('Filament', { exact: true }).selectOption('petg');
     await page.reload();
     await page.waitForSelector('html[data-ready="true"]');
     assert.equal(await page.getByLabel('Infill density', { exact: true }).inputValue(), '35');
     assert.equal(await page.getByLabel('Filament', { exact: true }).inputValue(), 'petg');
+    // a settings file as strata slice --config reads it; a bad one is refused in words and changes nothing
+    await page.getByLabel('Import settings', { exact: true }).setInputFiles({ name: 'mine.json', mimeType: 'application/json', buffer: Buffer.from('{"printer": "prusa-mk4", "wallCount": 4, "infillPattern": "voronoi-foam"}') });
+    await page.getByText('Settings from mine.json').waitFor();
+    assert.equal(await page.getByLabel('Printer', { exact: true }).inputValue(), 'prusa-mk4');
+    assert.equal(await page.getByLabel('Wall count', { exact: true }).inputValue(), '4');
+    assert.equal(await page.getByLabel('Infill density', { exact: true }).inputValue(), '20', 'what the file does not set goes back to the presets');
+    await page.getByText(/Shader voronoi-foam/).waitFor();
+    await page.getByLabel('Import settings', { exact: true }).setInputFiles({ name: 'bad.json', mimeType: 'application/json', buffer: Buffer.from('{"wallCount": 4, "layerHieght": 0.2}') });
+    await page.getByRole('alert').filter({ hasText: /bad\.json: unknown setting "layerHieght" \(did you mean "layerHeight"\?\)/ }).waitFor();
+    assert.equal(await page.getByLabel('Printer', { exact: true }).inputValue(), 'prusa-mk4');
     await page.close();
     if (shots) {
       const narrow = await openPage({ width: 420, height: 900 });
