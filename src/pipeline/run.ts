@@ -7,11 +7,11 @@
  */
 import { StrataError } from '../errors.js';
 import { UM_PER_MM, type ExPolygon, type Pt } from '../geometry/types.js';
-import { writeGcode } from '../gcode/writer.js';
+import { writeGcodeSteps } from '../gcode/writer.js';
 import { PATTERNS } from '../infill/registry.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import type { LayerPaths } from '../paths/types.js';
-import { estimatePlan } from '../plan/estimate.js';
+import { estimatePlanSteps } from '../plan/estimate.js';
 import { planLayer } from '../plan/layer-plan.js';
 import { runPlanPasses } from '../plan/passes.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
@@ -250,10 +250,11 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     const printPlan: PrintPlan = { layers: planned, objects: planObjects(objects), bounds: planBounds(planned) };
     runPlanPasses(printPlan, cfg);
     pacer.check();
-    const estimate = estimatePlan(printPlan, cfg);
-    report('writing', 0.9);
-    await pacer.pause();
-    writeGcode(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}` });
+    const n = planned.length;
+    let k = 0;
+    const estimate = await pacer.run(estimatePlanSteps(printPlan, cfg), () => report('planning', 0.8 + (0.1 * ++k) / n));
+    k = 0;
+    await pacer.run(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}` }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
     return { plan: printPlan, estimate, layers: planned.length };
   } finally {

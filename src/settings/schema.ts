@@ -200,7 +200,7 @@ export const SCHEMA = {
   supportAngle: num(0, -180, 180, '°', 'support', 'Direction of the support lines (the same on every layer, so they stack).'),
   supportZGap: optNum(0, 5, 'mm', 'support', 'Vertical gap between the top of the support and the part above it, in whole layers. Empty (null) = one layer.'),
   supportBottomZGap: optNum(0, 5, 'mm', 'support', 'Vertical gap between the part and support standing on it. Empty (null) = supportZGap.'),
-  supportXYGap: num(0.6, 0, 10, 'mm', 'support', 'Horizontal gap between support and the part beside it.'),
+  supportXYGap: num(0.4, 0, 10, 'mm', 'support', 'Horizontal gap between support and the part beside it (under an overhanging edge support comes closer, to half a support line width).'),
   supportInterfaceLayers: int(2, 0, 20, 'count', 'support', 'Dense interface layers at the top of the support, under the part (roof).'),
   supportFloorLayers: optNum(0, 20, 'count', 'support', 'Dense interface layers where support stands on the part (floor). Empty (null) = supportInterfaceLayers.', 'integer'),
   supportInterfaceDensity: num(70, 10, 100, '%', 'support', 'Density of the interface (roof and floor) lines.'),

@@ -12,6 +12,8 @@ import { printable, type ModelLayers } from './model-layers.js';
 
 /** Columns closer than this (mm) are merged into one support area. */
 export const SUPPORT_JOIN_MM = 2;
+/** Fresh overhang is widened by this many line widths, so thin slivers of it get a printable column. */
+const EXPAND_WIDTHS = 0.5;
 
 /** Support areas of every layer, top down; yields after each layer. */
 export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas[]> {
@@ -25,7 +27,8 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
   const join = (SUPPORT_JOIN_MM * UM_PER_MM) / 2;
   let carried: ExPolygon[] = [];
   for (let j = n - 1; j >= 0; j--) {
-    const fresh = model.overhang(j + 1 + top);
+    const rawFresh = model.overhang(j + 1 + top);
+    const fresh = rawFresh.length && EXPAND_WIDTHS > 0 ? offset(rawFresh, EXPAND_WIDTHS * w) : rawFresh;
     let s = carried.length && fresh.length ? union(carried, fresh) : carried.length ? carried : fresh;
     if (s.length && fresh.length) s = closing(s, join);
     if (s.length) {
