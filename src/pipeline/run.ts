@@ -25,7 +25,8 @@ import type { LayerZ } from '../slice/types.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
 import { pathsOf, rangeSteps, type PathsParams, type RangeJob, type RangeResult } from './layer-work.js';
-import { customGenerator, isTransferable, type CustomInfillSpec } from './custom-infill.js';
+import type { CustomInfillSpec } from './custom-infill.js';
+import { isTransferable, loadCustomInfill } from './custom-infill-loader.js';
 import { planObjects, type PlacedObject } from './objects.js';
 import { Pacer } from './pacer.js';
 
@@ -154,7 +155,7 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
   if (!pool && opts.started) await releaseWorkers(opts.started);
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
-    const custom = opts.custom ? customGenerator(opts.custom, cfg) : undefined;
+    const custom = opts.custom ? (await loadCustomInfill()).customGenerator(opts.custom, cfg) : undefined;
     const twoPhase = needsRegionsFirst(cfg, opts.custom);
     // progress: the layer work is 80 % of the run (regions and paths halves when there are two phases)
     const total = layers.length * (twoPhase ? 2 : 1);
