@@ -18,6 +18,7 @@ import { adhesionLoops } from '../regions/adhesion.js';
 import type { Config } from '../settings/resolve.js';
 import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
+import { renderThumbnails } from '../thumbnail/index.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
 import { computeRange, lineWidthUm, type RangeJob, type RangeResult } from './layer-work.js';
@@ -186,7 +187,8 @@ export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Pr
     checkAbort(signal);
     const estimate = estimatePlan(plan, cfg);
     report('writing', 0.9);
-    writeGcode(plan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}` });
+    const thumbnails = renderThumbnails(mesh, cfg.thumbnails);
+    writeGcode(plan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails });
     report('writing', 1);
     return { plan, estimate, layers: planned.length };
   } finally {

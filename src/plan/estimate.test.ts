@@ -18,6 +18,18 @@ const S: EstimateSettings = {
   acceleration: 500,
   cornerVelocity: 8,
   filamentDensity: 1.24,
+  firmwareRetraction: false,
+  machineLimits: 'estimate',
+  maxSpeedX: null,
+  maxSpeedY: null,
+  maxSpeedZ: null,
+  maxSpeedE: null,
+  maxAccelerationX: null,
+  maxAccelerationY: null,
+  maxAccelerationZ: null,
+  maxAccelerationE: null,
+  travelAcceleration: null,
+  retractAcceleration: null,
 };
 
 const pt = (xMm: number, yMm: number): Pt => ({ x: Math.round(xMm * 1000), y: Math.round(yMm * 1000) });
