@@ -1,0 +1,61 @@
+/**
+ * End to end: arc fitting on the stanford bunny judged by the independent analyser, and the host
+ * features (thumbnails, progress, firmware features) in real slices.
+ */
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { decode as decodePng } from 'fast-png';
+import { Slicer } from '../api/slicer.js';
+import { decodeQoi } from '../thumbnail/qoi.js';
+import { modelsAvailable, readModel, sliceAndAnalyze } from './models.js';
+
+const skip = !modelsAvailable() && !process.env.CI && 'shared models not found';
+
+test('stanford bunny: arcs cut the G-code lines by ≥ 30 % with the same footprint and filament', { skip, timeout: 600_000 }, async () => {
+  const lines = await sliceAndAnalyze('stanford-bunny.stl');
+  const arcs = await sliceAndAnalyze('stanford-bunny.stl', { arcFitting: true });
+  const count = (g: string) => g.split('\n').length;
+  const reduction = 1 - count(arcs.gcode) / count(lines.gcode);
+  assert.ok(reduction >= 0.3, `lines ${count(lines.gcode)} → ${count(arcs.gcode)}: ${(reduction * 100).toFixed(1)} %`);
+  assert.ok((arcs.gcode.match(/^G[23] /gm) ?? []).length > 10000, 'arcs written');
+  const filament = (g: string) => Number(/;Filament used: ([\d.]+)m/.exec(g)![1]);
+  assert.ok(Math.abs(filament(arcs.gcode) / filament(lines.gcode) - 1) <= 0.001, `filament ${filament(lines.gcode)} → ${filament(arcs.gcode)} m`);
+  const a = lines.report.summary, b = arcs.report.summary;
+  assert.ok(Math.abs(b.e.extruded / a.e.extruded - 1) <= 0.001, `extruded ${a.e.extruded} → ${b.e.extruded}`);
+  assert.ok(Math.abs(b.walls.coverage! - a.walls.coverage!) <= 0.001, `walls ${a.walls.coverage} → ${b.walls.coverage}`);
+  assert.ok(Math.abs(b.skin.top.coverage! - a.skin.top.coverage!) <= 0.002, `top skin ${a.skin.top.coverage} → ${b.skin.top.coverage}`);
+  assert.ok(Math.abs(b.skin.bottom.coverage! - a.skin.bottom.coverage!) <= 0.002, `bottom skin ${a.skin.bottom.coverage} → ${b.skin.bottom.coverage}`);
+  assert.ok(Math.abs(b.infill.density! - a.infill.density!) <= 0.002, `density ${a.infill.density} → ${b.infill.density}`);
+  assert.ok(b.outside.p99Mm <= 0.1 && b.outside.emptySectionLayers.length === 0, 'nothing outside the model');
+  assert.equal(b.e.balance.unbalanced, 0);
+  assert.equal(b.layerCount, a.layerCount);
+});
+
+test('a real slice carries M73 progress, thumbnails that decode, and firmware features', { skip, timeout: 120_000 }, async () => {
+  const slicer = new Slicer({
+    threads: 1,
+    thumbnails: '16x16/QOI,300x300/PNG',
+    firmwareRetraction: true,
+    pressureAdvance: 0.04,
+    gcodeFlavor: 'klipper',
+    arcFitting: true,
+  });
+  const { gcode } = await slicer.slice(readModel('spot.stl'));
+  const blocks = [...gcode.matchAll(/^; (thumbnail(?:_QOI)?) begin (\d+)x(\d+) (\d+)\n((?:; .*\n)+?); \1 end$/gm)];
+  assert.equal(blocks.length, 2);
+  const bytes = (b: RegExpMatchArray) => new Uint8Array(Buffer.from(b[5]!.split('\n').map((l) => l.slice(2)).join(''), 'base64'));
+  const qoi = decodeQoi(bytes(blocks[0]!));
+  assert.deepEqual([qoi.width, qoi.height], [16, 16]);
+  const png = decodePng(bytes(blocks[1]!));
+  assert.deepEqual([png.width, png.height], [300, 300]);
+  let opaque = 0;
+  for (let i = 3; i < png.data.length; i += 4) if (png.data[i] === 255) opaque++;
+  assert.ok(opaque > 300 * 300 * 0.1, `the model fills ${opaque} pixels`);
+  const p = [...gcode.matchAll(/^M73 P(\d+) R(\d+)$/gm)].map((m) => [+m[1]!, +m[2]!]);
+  assert.ok(p.length > 10);
+  for (let i = 1; i < p.length; i++) assert.ok(p[i]![0]! >= p[i - 1]![0]! && p[i]![1]! <= p[i - 1]![1]!);
+  assert.deepEqual(p[p.length - 1], [100, 0]);
+  assert.match(gcode, /^SET_PRESSURE_ADVANCE ADVANCE=0\.04$/m);
+  assert.match(gcode, /^G10$/m);
+  assert.match(gcode, /^G[23] /m);
+});
