@@ -16,7 +16,7 @@ import { ChunkedText } from './chunked-text.js';
 import { FLAVORS } from './flavor.js';
 import { derivedTemplateValues, headerLines, type GcodeMeta } from './header.js';
 import { MoveWriter } from './move-writer.js';
-import { walkPlan } from '../plan/moves.js';
+import { walkPlanSteps } from '../plan/moves.js';
 import { expandTemplate, placeholders, settingValue } from './template.js';
 import { labelMode, objectLabels } from './object-labels.js';
 import { thumbnailBlockLines } from './thumbnail-blocks.js';
@@ -54,6 +54,18 @@ export function writeGcode(
   sink: (chunk: string) => void,
   meta: GcodeMeta,
 ): void {
+  const steps = writeGcodeSteps(plan, settings, estimate, sink, meta);
+  while (!steps.next().done);
+}
+
+/** `writeGcode` as steps: yields after each layer, so a caller can pause (and stop) between layers. */
+export function* writeGcodeSteps(
+  plan: PrintPlan,
+  settings: Settings,
+  estimate: PlanEstimate,
+  sink: (chunk: string) => void,
+  meta: GcodeMeta,
+): Generator<void, void> {
   const flavor = FLAVORS[settings.gcodeFlavor];
   const relative = settings.extruderMode === 'relative';
   const derived = derivedTemplateValues(plan, estimate);
@@ -97,7 +109,7 @@ export function writeGcode(
     firmwareRetraction: settings.firmwareRetraction && settings.retractionEnabled,
     labels,
   });
-  walkPlan(plan, settings, moves);
+  yield* walkPlanSteps(plan, settings, moves);
   moves.finish();
 
   for (const l of end) out.line(l);

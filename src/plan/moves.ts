@@ -140,6 +140,12 @@ function nextObject(steps: LayerPlan['steps'], from: number): number {
 
 /** Walk `plan` in print order, telling `sink` every machine move. */
 export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void {
+  const steps = walkPlanSteps(plan, s, sink);
+  while (!steps.next().done);
+}
+
+/** `walkPlan` as steps: yields after each layer, so a caller can pause between layers. */
+export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink): Generator<void, void> {
   const retractDistance = s.retractionEnabled ? s.retractionDistance : 0;
   const primeDistance = !s.retractionEnabled ? 0 : s.firmwareRetraction ? s.retractionDistance : s.retractionDistance + s.retractionExtraPrime;
   const zSpeed = s.maxSpeedZ !== null && s.maxSpeedZ < Z_SPEED_MM_S ? s.maxSpeedZ : Z_SPEED_MM_S;
@@ -212,5 +218,6 @@ export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void
       open = NO_OBJECT;
     }
     sink.layerEnd(layer, li);
+    yield;
   }
 }

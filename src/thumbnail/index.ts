@@ -18,8 +18,8 @@ const JPEG_BACKGROUND: readonly [number, number, number] = [38, 38, 38];
 /** JPEG quality, 1..100. */
 const JPEG_QUALITY = 90;
 
-/** Render and encode one thumbnail. */
-export function renderThumbnail(mesh: Mesh, spec: ThumbnailSpec): EncodedThumbnail {
+/** Render and encode one thumbnail of the mesh or meshes (placed together on the bed). */
+export function renderThumbnail(mesh: Mesh | readonly Mesh[], spec: ThumbnailSpec): EncodedThumbnail {
   const { width, height, format } = spec;
   if (format === 'JPG') {
     const image = renderMesh(mesh, width, height, { background: JPEG_BACKGROUND });
@@ -31,6 +31,6 @@ export function renderThumbnail(mesh: Mesh, spec: ThumbnailSpec): EncodedThumbna
 }
 
 /** The thumbnails the `thumbnails` setting asks for (none for an empty setting). */
-export function renderThumbnails(mesh: Mesh, setting: string): EncodedThumbnail[] {
+export function renderThumbnails(mesh: Mesh | readonly Mesh[], setting: string): EncodedThumbnail[] {
   return parseThumbnailSpecs(setting).map((spec) => renderThumbnail(mesh, spec));
 }

@@ -50,8 +50,31 @@ export interface RenderOptions {
   background?: readonly [number, number, number];
 }
 
-/** Render `mesh` (mm, Z up) into a width × height RGBA image. An empty mesh gives a transparent image. */
-export function renderMesh(mesh: Mesh, width: number, height: number, opts: RenderOptions = {}): RgbaImage {
+/** One mesh of the meshes given, all of them placed on the bed together. */
+function joined(meshes: Mesh | readonly Mesh[]): Mesh {
+  if (!Array.isArray(meshes)) return meshes as Mesh;
+  const list = meshes as readonly Mesh[];
+  if (list.length === 1) return list[0]!;
+  let nv = 0, ni = 0;
+  for (const m of list) {
+    nv += m.positions.length;
+    ni += m.indices.length;
+  }
+  const positions = new Float32Array(nv);
+  const indices = new Uint32Array(ni);
+  let pv = 0, pi = 0;
+  for (const m of list) {
+    positions.set(m.positions, pv);
+    for (let k = 0; k < m.indices.length; k++) indices[pi + k] = m.indices[k]! + pv / 3;
+    pv += m.positions.length;
+    pi += m.indices.length;
+  }
+  return { positions, indices };
+}
+
+/** Render the mesh or meshes (mm, Z up) into a width × height RGBA image. Nothing to draw gives a transparent image. */
+export function renderMesh(meshes: Mesh | readonly Mesh[], width: number, height: number, opts: RenderOptions = {}): RgbaImage {
+  const mesh = joined(meshes);
   const ss = width * height < 4096 ? 4 : 2;
   const W = width * ss;
   const H = height * ss;
