@@ -59,3 +59,69 @@ test('a real slice carries M73 progress, thumbnails that decode, and firmware fe
   assert.match(gcode, /^G10$/m);
   assert.match(gcode, /^G[23] /m);
 });
+
+/** A closed box from (x0,y0,0) to (x1,y1,h), outward-facing. */
+function box(x0: number, y0: number, x1: number, y1: number, h: number): { positions: Float32Array; indices: Uint32Array } {
+  const v = [[x0, y0, 0], [x1, y0, 0], [x1, y1, 0], [x0, y1, 0], [x0, y0, h], [x1, y0, h], [x1, y1, h], [x0, y1, h]].flat();
+  const f = [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7];
+  return { positions: new Float32Array(v), indices: new Uint32Array(f) };
+}
+
+/** Whether (x, y) lies inside the convex counter-clockwise polygon, within `tol` mm. */
+function insideConvex(x: number, y: number, poly: number[][], tol: number): boolean {
+  for (let i = 0; i < poly.length; i++) {
+    const [ax, ay] = poly[i]!, [bx, by] = poly[(i + 1) % poly.length]!;
+    const len = Math.hypot(bx! - ax!, by! - ay!);
+    if (((bx! - ax!) * (y - ay!) - (by! - ay!) * (x - ax!)) / len < -tol) return false;
+  }
+  return true;
+}
+
+test('two objects on a Klipper printer: defined, labelled per layer, every extrusion inside its own footprint; cancelling one keeps E balanced', { timeout: 120_000 }, async () => {
+  const slicer = new Slicer({ threads: 1, printer: 'voron-2.4-350', arcFitting: true });
+  const { gcode, stats } = await slicer.slice([
+    { name: 'left cube', ...box(0, 0, 15, 15, 6) },
+    { name: 'right cube', ...box(40, 0, 55, 15, 6) },
+  ]);
+  const defs = [...gcode.matchAll(/^EXCLUDE_OBJECT_DEFINE NAME=(\S+) CENTER=(\S+) POLYGON=(\S+)$/gm)];
+  assert.deepEqual(defs.map((d) => d[1]), ['left_cube', 'right_cube']);
+  const polygons = new Map(defs.map((d) => [d[1]!, JSON.parse(d[3]!) as number[][]]));
+  let open: string | null = null;
+  let x = 0, y = 0;
+  let blocks = 0, inside = 0, outside = 0;
+  for (const l of gcode.split('\n')) {
+    const s = /^EXCLUDE_OBJECT_START NAME=(\S+)$/.exec(l);
+    if (s) {
+      assert.equal(open, null);
+      open = s[1]!;
+      blocks++;
+      continue;
+    }
+    const e = /^EXCLUDE_OBJECT_END NAME=(\S+)$/.exec(l);
+    if (e) {
+      assert.equal(e[1], open);
+      open = null;
+      continue;
+    }
+    if (l.startsWith(';LAYER:')) assert.equal(open, null, 'no block across a layer change');
+    if (!/^G[0-3] /.test(l)) continue;
+    const mx = /X(-?[\d.]+)/.exec(l), my = /Y(-?[\d.]+)/.exec(l);
+    if (mx) x = +mx[1]!;
+    if (my) y = +my[1]!;
+    if (!/^G[123] .*E\d/.test(l) || (!mx && !my)) continue;
+    if (open) {
+      assert.ok(insideConvex(x, y, polygons.get(open)!, 0.01), `${open}: (${x}, ${y}) outside its footprint`);
+      inside++;
+    } else outside++;
+  }
+  assert.equal(open, null);
+  assert.equal(blocks, 2 * stats.layers, 'both objects on every layer');
+  assert.ok(inside > 100 && outside > 0, 'objects labelled, the skirt not');
+  // cancel the left cube as Klipper would: its blocks are skipped (relative E on this printer)
+  assert.match(gcode, /^M83\b/m);
+  const cancelled = gcode.replace(/^EXCLUDE_OBJECT_START NAME=left_cube\n[\s\S]*?^EXCLUDE_OBJECT_END NAME=left_cube\n/gm, '');
+  const { parseGcode } = await import('../analysis/gcode-parse.js');
+  const before = parseGcode(gcode), after = parseGcode(cancelled);
+  assert.equal(after.balance.unbalanced, 0, 'every retraction still primed before extruding');
+  assert.ok(after.e.extruded < before.e.extruded * 0.7);
+});
