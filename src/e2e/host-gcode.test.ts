@@ -5,15 +5,29 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { decode as decodePng } from 'fast-png';
-import { Slicer } from '../api/slicer.js';
+import { Slicer, prepareModel } from '../api/slicer.js';
+import { analyzePrint } from '../analysis/checks.js';
+import { gcodeToString } from '../gcode/writer.js';
+import { VERSION } from '../pipeline/run.js';
+import { fitPlanArcs } from '../plan/arc-fit.js';
+import { estimatePlan } from '../plan/estimate.js';
 import { decodeQoi } from '../thumbnail/qoi.js';
-import { modelsAvailable, readModel, sliceAndAnalyze } from './models.js';
+import { analysisProfile, modelsAvailable, readModel } from './models.js';
 
 const skip = !modelsAvailable() && !process.env.CI && 'shared models not found';
 
 test('stanford bunny: arcs cut the G-code lines by ≥ 30 % with the same footprint and filament', { skip, timeout: 600_000 }, async () => {
-  const lines = await sliceAndAnalyze('stanford-bunny.stl');
-  const arcs = await sliceAndAnalyze('stanford-bunny.stl', { arcFitting: true });
+  // one slice; the arc pass (the last pass over the plan, as in the pipeline) then runs on a copy of its plan
+  const bytes = readModel('stanford-bunny.stl');
+  const slicer = new Slicer({ threads: 1 });
+  const chunks: string[] = [];
+  const { plan } = await slicer.slicePlan(bytes, {}, (c) => chunks.push(c));
+  const cfg = slicer.config;
+  const arcPlan = structuredClone(plan);
+  fitPlanArcs(arcPlan, cfg.arcTolerance);
+  const analyse = (gcode: string) => ({ gcode, report: analyzePrint(prepareModel(bytes, cfg).mesh, gcode, analysisProfile(cfg)) });
+  const lines = analyse(chunks.join(''));
+  const arcs = analyse(gcodeToString(arcPlan, { ...cfg, arcFitting: true }, estimatePlan(arcPlan, cfg), { generator: `Strata ${VERSION}` }));
   const count = (g: string) => g.split('\n').length;
   const reduction = 1 - count(arcs.gcode) / count(lines.gcode);
   assert.ok(reduction >= 0.3, `lines ${count(lines.gcode)} → ${count(arcs.gcode)}: ${(reduction * 100).toFixed(1)} %`);
