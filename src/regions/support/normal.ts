@@ -5,7 +5,7 @@
  * placement a column stops on the part, the bottom Z gap above it; in 'buildPlate' placement a column that
  * would meet the part anywhere below is not printed at all.
  */
-import { closing, difference, offset, union } from '../../geometry/clip.js';
+import { closing, difference, offset } from '../../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import { printable, type ModelLayers } from './model-layers.js';
@@ -29,8 +29,8 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
   for (let j = n - 1; j >= 0; j--) {
     const rawFresh = model.overhang(j + 1 + top);
     const fresh = rawFresh.length && EXPAND_WIDTHS > 0 ? offset(rawFresh, EXPAND_WIDTHS * w) : rawFresh;
-    let s = carried.length && fresh.length ? union(carried, fresh) : carried.length ? carried : fresh;
-    if (s.length && fresh.length) s = closing(s, join);
+    // merging columns closer than the join distance also unions the fresh overhang into them
+    let s = fresh.length ? closing(carried.length ? [...carried, ...fresh] : fresh, join) : carried;
     if (s.length) {
       const blocked = model.collision(j);
       if (blocked.length) s = difference(s, blocked);
