@@ -8,7 +8,8 @@ import { mergeObjects, placeOnBed, positionBounds, prepareMesh, toMeshObjects } 
 import type { Mesh, MeshReport } from '../mesh/types.js';
 import { runPipeline, type PlacedObject, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
-import { customGenerator, isTransferable, type CustomInfillSpec } from '../pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import { isTransferable, loadCustomInfill, loadedCustomInfill } from '../pipeline/custom-infill-loader.js';
 import { releaseWorkers, startWorkers } from '../workers/pool.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey, type Settings, type SliceOptions } from '../settings/schema.js';
 import { checkKey, resolveConfig, validateValue, type Config } from '../settings/resolve.js';
@@ -160,11 +161,13 @@ export class Slicer {
 
   /**
    * Use a custom infiller (IceSL format: a GLSL `cellular()` shader or a cells.png image) instead
-   * of the built-in pattern; null goes back to `infillPattern`. Compiled now, so errors show here.
+   * of the built-in pattern; null goes back to `infillPattern`. Compiled now, so errors show here,
+   * when the shader compiler is loaded (always from the Node entry; in the browser build after
+   * `await loadCustomInfill()`); otherwise the slice loads it and reports the error.
    */
   setCustomInfill(spec: CustomInfillSpec | null): this {
     if (spec) {
-      customGenerator(spec, this.#config);
+      loadedCustomInfill()?.customGenerator(spec, this.#config);
       this.#custom = { ...spec, params: spec.params ? { ...spec.params } : undefined };
     } else {
       this.#custom = undefined;
@@ -232,6 +235,8 @@ export class Slicer {
   ): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
+    // the shader compiler loads on first use (the pipeline compiles the infiller and reports its errors)
+    if (this.#custom) await loadCustomInfill();
     // Workers start loading now, while the model is read and placed, if they will be needed (a custom
     // density given as a JS function cannot travel to a worker).
     const auto = await autoThreads();

@@ -5,14 +5,16 @@
  */
 import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
 import { basename, extname } from 'node:path';
-import { Slicer } from '../api/slicer.js';
+import { Slicer } from '../index.js';
 import { StrataError } from '../errors.js';
 import { loadModelBytes, prepareMesh, mergeObjects } from '../mesh/index.js';
 import { VERSION } from '../pipeline/run.js';
 import { listPresets } from '../settings/presets/index.js';
+import { importProfile } from '../settings/import/index.js';
 import { SCHEMA, SETTING_KEYS, type SliceOptions } from '../settings/schema.js';
 import { parseArgs, kebab, type ParsedArgs } from './args.js';
 import { progressBar } from './progress.js';
+import { cmdServe } from './serve.js';
 import { layerToSvg } from '../preview/svg.js';
 import { PATTERN_IDS } from '../infill/types.js';
 import { loadInfiller, parseInfillParams } from '../shader/index.js';
@@ -29,12 +31,14 @@ Usage:
   strata infillers [DIR...]                         list custom infillers (IceSL layout) and their parameters
   strata presets                                   list printer and filament presets
   strata settings                                  list every setting with its flag, unit, default and range
+  strata serve [--port N]                          the web page on http://127.0.0.1:N/ (default 8080)
 
 Slice options:
   -o, --output FILE      where to write G-code (- for stdout; default: MODEL.gcode)
   --printer NAME         printer preset (default creality-ender-3)
   --filament NAME        filament preset (default pla)
-  --config FILE.json     settings from a JSON object (may name printer and filament); repeatable
+  --config FILE          settings from a JSON object (may name printer and filament), or a
+                         PrusaSlicer/SuperSlicer/OrcaSlicer .ini or .json, or Cura .cfg profile; repeatable
   --set key=value        any setting by its key; repeatable
   --no-center            keep the models' own XY coordinates instead of centring them on the bed
   --threads N            worker threads (default: one per core); output is identical for any N
@@ -59,16 +63,11 @@ function readInput(path: string): Uint8Array {
   }
 }
 
-function readConfigFile(path: string): Record<string, unknown> {
-  const text = new TextDecoder().decode(readInput(path));
-  let obj: unknown;
-  try {
-    obj = JSON.parse(text);
-  } catch (e) {
-    throw new StrataError('BAD_FILE', `${path} is not valid JSON: ${(e as Error).message}`);
-  }
-  if (!obj || typeof obj !== 'object' || Array.isArray(obj)) throw new StrataError('BAD_FILE', `${path} must hold a JSON object of settings`);
-  return obj as Record<string, unknown>;
+/** Settings from a Strata JSON file or another slicer's profile (settings/import), warning about what is left out. */
+function readConfigFile(path: string, quiet: boolean): Record<string, unknown> {
+  const profile = importProfile(new TextDecoder().decode(readInput(path)), path);
+  if (!quiet) for (const w of profile.warnings) process.stderr.write(`strata: warning: ${w}\n`);
+  return profile.settings;
 }
 
 function infillerDirs(args: ParsedArgs): string[] {
@@ -119,7 +118,7 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>)
 
 async function optionsFrom(args: ParsedArgs): Promise<SliceOptions & { customInfill?: CustomInfillSpec }> {
   const opts: Record<string, unknown> = {};
-  for (const f of args.configFiles) Object.assign(opts, readConfigFile(f));
+  for (const f of args.configFiles) Object.assign(opts, readConfigFile(f, args.quiet));
   if (args.printer) opts.printer = args.printer;
   if (args.filament) opts.filament = args.filament;
   Object.assign(opts, args.settings);
@@ -258,6 +257,10 @@ function cmdSettings(): void {
 
 export async function main(argv: readonly string[]): Promise<number> {
   try {
+    if (argv[0] === 'serve') {
+      await cmdServe(argv.slice(1));
+      return 0;
+    }
     const args = parseArgs(argv);
     if (args.flags.version) {
       process.stdout.write(`strata ${VERSION}\n`);
@@ -287,7 +290,7 @@ export async function main(argv: readonly string[]): Promise<number> {
         cmdSettings();
         return 0;
       default:
-        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, preview, infillers, presets, settings)`);
+        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, preview, infillers, presets, settings, serve)`);
     }
   } catch (e) {
     if (e instanceof StrataError) {

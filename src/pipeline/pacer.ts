@@ -31,11 +31,12 @@ export class Pacer {
     this.check();
   }
 
-  /** Run a generator of steps to its end, pausing between steps. */
-  async run<T>(steps: Generator<unknown, T>): Promise<T> {
+  /** Run a generator of steps to its end, pausing between steps (`onStep` after each). */
+  async run<T>(steps: Generator<unknown, T>, onStep?: () => void): Promise<T> {
     for (;;) {
       const s = steps.next();
       if (s.done) return s.value;
+      onStep?.();
       await this.pause();
     }
   }

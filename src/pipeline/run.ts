@@ -7,11 +7,11 @@
  */
 import { StrataError } from '../errors.js';
 import { UM_PER_MM, type ExPolygon, type Pt } from '../geometry/types.js';
-import { writeGcode } from '../gcode/writer.js';
+import { writeGcodeSteps } from '../gcode/writer.js';
 import { PATTERNS } from '../infill/registry.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import type { LayerPaths } from '../paths/types.js';
-import { estimatePlan } from '../plan/estimate.js';
+import { estimatePlanSteps } from '../plan/estimate.js';
 import { planLayer } from '../plan/layer-plan.js';
 import { runPlanPasses } from '../plan/passes.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
@@ -22,10 +22,12 @@ import type { LayerRegions } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
+import { renderThumbnails } from '../thumbnail/index.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
 import { pathsOf, rangeSteps, type PathsParams, type RangeJob, type RangeResult } from './layer-work.js';
-import { customGenerator, isTransferable, type CustomInfillSpec } from './custom-infill.js';
+import type { CustomInfillSpec } from './custom-infill.js';
+import { isTransferable, loadCustomInfill } from './custom-infill-loader.js';
 import { planObjects, type PlacedObject } from './objects.js';
 import { Pacer } from './pacer.js';
 
@@ -154,7 +156,7 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
   if (!pool && opts.started) await releaseWorkers(opts.started);
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
-    const custom = opts.custom ? customGenerator(opts.custom, cfg) : undefined;
+    const custom = opts.custom ? (await loadCustomInfill()).customGenerator(opts.custom, cfg) : undefined;
     const twoPhase = needsRegionsFirst(cfg, opts.custom);
     // progress: the layer work is 80 % of the run (regions and paths halves when there are two phases)
     const total = layers.length * (twoPhase ? 2 : 1);
@@ -229,7 +231,7 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     const planned: LayerPlan[] = [];
     const plan = (lp: LayerPaths) => planned.push(planLayer(lp, cfg, state, planned.length));
     if (raftLayers.length) {
-      const raftParams = { ...common, adhesion: false };
+      const raftParams = { ...common, zOffset: 0, adhesion: false };
       for (const r of raftLayers) plan(pathsOf(r, cfg, raftParams, custom, []));
     }
     const arrived: Array<RangeResult | undefined> = new Array(jobs.length);
@@ -249,10 +251,12 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     const printPlan: PrintPlan = { layers: planned, objects: planObjects(objects), bounds: planBounds(planned) };
     runPlanPasses(printPlan, cfg);
     pacer.check();
-    const estimate = estimatePlan(printPlan, cfg);
-    report('writing', 0.9);
-    await pacer.pause();
-    writeGcode(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}` });
+    const n = planned.length;
+    let k = 0;
+    const estimate = await pacer.run(estimatePlanSteps(printPlan, cfg), () => report('planning', 0.8 + (0.1 * ++k) / n));
+    k = 0;
+    const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
+    await pacer.run(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
     return { plan: printPlan, estimate, layers: planned.length };
   } finally {

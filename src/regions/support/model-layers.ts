@@ -88,11 +88,15 @@ export class ModelLayers {
     return this.#shadow[j];
   }
 
-  /** The sections of layers j+a .. j+b (inclusive), merged. */
+  /**
+   * The islands of the sections of layers j+a .. j+b (inclusive), as one list: they may overlap, which the
+   * booleans (non-zero fill) read as their union, so none is computed.
+   */
   sectionsBetween(j: number, a: number, b: number): ExPolygon[] {
+    if (a === b) return this.section(j + a);
     const parts: ExPolygon[] = [];
     for (let k = j + a; k <= j + b; k++) for (const p of this.section(k)) parts.push(p);
-    return parts.length > 1 ? union(parts) : parts;
+    return parts;
   }
 
   /**

@@ -5,13 +5,15 @@
  * placement a column stops on the part, the bottom Z gap above it; in 'buildPlate' placement a column that
  * would meet the part anywhere below is not printed at all.
  */
-import { closing, difference, offset, union } from '../../geometry/clip.js';
+import { closing, difference, offset } from '../../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import { printable, type ModelLayers } from './model-layers.js';
 
 /** Columns closer than this (mm) are merged into one support area. */
 export const SUPPORT_JOIN_MM = 2;
+/** Fresh overhang is widened by this many line widths, so thin slivers of it get a printable column. */
+const EXPAND_WIDTHS = 0.5;
 
 /** Support areas of every layer, top down; yields after each layer. */
 export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas[]> {
@@ -25,9 +27,10 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
   const join = (SUPPORT_JOIN_MM * UM_PER_MM) / 2;
   let carried: ExPolygon[] = [];
   for (let j = n - 1; j >= 0; j--) {
-    const fresh = model.overhang(j + 1 + top);
-    let s = carried.length && fresh.length ? union(carried, fresh) : carried.length ? carried : fresh;
-    if (s.length && fresh.length) s = closing(s, join);
+    const rawFresh = model.overhang(j + 1 + top);
+    const fresh = rawFresh.length && EXPAND_WIDTHS > 0 ? offset(rawFresh, EXPAND_WIDTHS * w) : rawFresh;
+    // merging columns closer than the join distance also unions the fresh overhang into them
+    let s = fresh.length ? closing(carried.length ? [...carried, ...fresh] : fresh, join) : carried;
     if (s.length) {
       const blocked = model.collision(j);
       if (blocked.length) s = difference(s, blocked);
