@@ -12,9 +12,24 @@ import type { Config } from '../settings/resolve.js';
 import type { LayerZ } from '../slice/types.js';
 import type { PathEntry, PathGroup, PathRole } from './types.js';
 
+/**
+ * The islands shrunk by d µm, each on its own (shrinking never joins islands, and the offset's quick path for
+ * a few rings then applies: tree support has dozens of small islands a layer); islands whose bounds are no
+ * wider than 2·d, which shrinking removes, are left out at once.
+ */
+function shrink(areas: readonly ExPolygon[], d: number): ExPolygon[] {
+  const out: ExPolygon[] = [];
+  for (const a of areas) {
+    const b = boundsOf([a]);
+    if (b.maxX - b.minX <= 2 * d || b.maxY - b.minY <= 2 * d) continue;
+    for (const s of offset([a], -d)) out.push(s);
+  }
+  return out;
+}
+
 /** Lines of one family `spacing` apart over `area` (shrunk so the beads stay inside it). */
 function fill(area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean): Polyline[] {
-  const region = offset(area, -insetUm);
+  const region = shrink(area, insetUm);
   return region.length ? solidFill(region, angle, spacingUm, origin, { connect }) : [];
 }
 
@@ -73,9 +88,9 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   // walls round each area; the fill starts inside the innermost
   let inside = all;
   for (let k = 0; k < cfg.supportWalls && inside.length; k++) {
-    const centre = offset(inside, -w / 2);
+    const centre = shrink(inside, w / 2);
     for (const ring of flatten(centre)) add(owner(components, ring[0]), 'support', true, ring);
-    inside = offset(centre, -w / 2);
+    inside = shrink(centre, w / 2);
   }
   const wallInset = cfg.supportWalls * w;
   const inset = w / 2 + wallInset;

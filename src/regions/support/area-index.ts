@@ -4,6 +4,7 @@
  * query looks at the few edges near the point instead of every edge. Tree support asks these questions for
  * every branch on every layer.
  */
+import { pointInArea } from '../../geometry/clip.js';
 import { segmentsMeet } from '../../geometry/contain.js';
 import type { ExPolygon } from '../../geometry/types.js';
 
@@ -29,6 +30,8 @@ export class AreaIndex {
   /** Edges of cell c: #items[#start[c] .. #start[c+1]). */
   readonly #start: Int32Array;
   readonly #items: Int32Array;
+  /** The first vertex of every ring, x, y. */
+  readonly #firsts: number[] = [];
   readonly empty: boolean;
 
   constructor(areas: readonly ExPolygon[]) {
@@ -44,6 +47,7 @@ export class AreaIndex {
       for (let r = -1; r < a.holes.length; r++) {
         const ring = r < 0 ? a.outer : a.holes[r];
         const len = ring.length;
+        if (len) this.#firsts.push(ring[0].x, ring[0].y);
         for (let i = 0; i < len; i++) {
           const p = ring[i], q = ring[i + 1 < len ? i + 1 : 0];
           e[k++] = p.x;
@@ -181,6 +185,46 @@ export class AreaIndex {
       }
     }
     return null;
+  }
+
+  /** Whether some edge of the areas comes within `dist` of (x, y). */
+  edgeWithin(x: number, y: number, dist: number): boolean {
+    if (this.empty) return false;
+    const e = this.#e;
+    const d2 = dist * dist;
+    const c0 = this.#col(x - dist), c1 = this.#col(x + dist), r0 = this.#row(y - dist), r1 = this.#row(y + dist);
+    for (let r = r0; r <= r1; r++) {
+      for (let c = c0; c <= c1; c++) {
+        const id = r * this.#nx + c;
+        for (let s = this.#start[id], t = this.#start[id + 1]; s < t; s++) {
+          const i = this.#items[s];
+          const x1 = e[4 * i], y1 = e[4 * i + 1], ex = e[4 * i + 2] - x1, ey = e[4 * i + 3] - y1;
+          const len2 = ex * ex + ey * ey;
+          const u = len2 > 0 ? Math.min(1, Math.max(0, ((x - x1) * ex + (y - y1) * ey) / len2)) : 0;
+          const px = x1 + u * ex - x, py = y1 + u * ey - y;
+          if (px * px + py * py <= d2) return true;
+        }
+      }
+    }
+    return false;
+  }
+
+  /** Whether the disc of radius r round (x, y) meets the areas. */
+  meetsDisc(x: number, y: number, r: number): boolean {
+    return this.contains(x, y) || this.edgeWithin(x, y, r);
+  }
+
+  /** Whether an area meets the areas: a vertex of either lies inside the other, or their edges cross. */
+  meets(a: ExPolygon): boolean {
+    if (this.empty) return false;
+    for (const ring of [a.outer, ...a.holes]) {
+      for (let i = 0; i < ring.length; i++) {
+        const p = ring[i], q = ring[i + 1 < ring.length ? i + 1 : 0];
+        if (this.contains(p.x, p.y) || this.crosses(p.x, p.y, q.x, q.y)) return true;
+      }
+    }
+    for (let k = 0; k < this.#firsts.length; k += 2) if (pointInArea({ x: this.#firsts[k], y: this.#firsts[k + 1] }, a)) return true;
+    return false;
   }
 
   /** Whether the segment from (ax, ay) to (bx, by) crosses an edge of the areas. */

@@ -7,11 +7,10 @@ import { area, difference, intersection, offset, pointInArea, union } from '../.
 import { UM_PER_MM, type ExPolygon, type Pt } from '../../geometry/types.js';
 import { resolveConfig, type Config } from '../../settings/resolve.js';
 import type { SliceOptions } from '../../settings/schema.js';
-import { planLayers } from '../../slice/index.js';
-import { overhangOf } from '../overhang.js';
-import type { IslandRegions, LayerRegions } from '../types.js';
+import type { LayerRegions } from '../types.js';
 import { supportPass } from './index.js';
 import { OVERHANG_XY_WIDTHS } from './model-layers.js';
+import { drain, layersOf } from './test-layers.js';
 
 /** An axis-aligned box, mm: x, y extents and the z range it fills. */
 export interface Box {
@@ -62,22 +61,11 @@ export function sectionAt(boxes: readonly Box[], z: number): ExPolygon[] {
   return pieces.length ? union(pieces) : [];
 }
 
-function island(outline: ExPolygon): IslandRegions {
-  return { object: 0, outline, walls: [], wallGaps: [], topSkin: [], bottomSkin: [], exposed: [], bridge: [], bridgeAngle: null, sparse: [], unsupported: [] };
-}
-
 /** The regions of every layer of a model made of boxes, as the regions stage leaves them for the support pass. */
 export function boxLayers(boxes: readonly Box[], cfg: Config): LayerRegions[] {
   const height = Math.max(...boxes.map((b) => b.z[1]));
-  const out: LayerRegions[] = [];
-  let below: ExPolygon[] = [];
-  for (const z of planLayers(height, cfg.firstLayerHeight, cfg.layerHeight)) {
-    const section = sectionAt(boxes, z.sliceZ);
-    const overhang = overhangOf(section, below, z.height, cfg, z.index === 0);
-    out.push({ ...z, islands: section.map(island), overhang, support: null });
-    below = section;
-  }
-  return out;
+  const count = Math.round((height - cfg.firstLayerHeight) / cfg.layerHeight) + 1;
+  return layersOf(count, (j) => sectionAt(boxes, j === 0 ? cfg.firstLayerHeight / 2 : cfg.firstLayerHeight + (j - 0.5) * cfg.layerHeight), cfg);
 }
 
 export function supportConfig(options: SliceOptions = {}): Config {
@@ -88,8 +76,7 @@ export function supportConfig(options: SliceOptions = {}): Config {
 export function supported(boxes: readonly Box[], options: SliceOptions = {}): { layers: LayerRegions[]; cfg: Config } {
   const cfg = supportConfig(options);
   const layers = boxLayers(boxes, cfg);
-  const run = supportPass(layers, cfg);
-  while (!run.next().done);
+  drain(supportPass(layers, cfg));
   return { layers, cfg };
 }
 

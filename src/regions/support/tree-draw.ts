@@ -8,10 +8,11 @@
 import { boundsOf, difference, intersection, offset, union, unionRings } from '../../geometry/clip.js';
 import type { Bounds, ExPolygon, Polygon } from '../../geometry/types.js';
 import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
+import { AreaIndex } from './area-index.js';
 import { PointGrid } from './point-grid.js';
 
 /** Largest gap between a drawn circle's edge and the true circle, µm. */
-export const CIRCLE_TOLERANCE_UM = 25;
+export const CIRCLE_TOLERANCE_UM = 50;
 
 /** A circle as a counter-clockwise polygon inside the true circle (chords within CIRCLE_TOLERANCE_UM). */
 export function circle(x: number, y: number, r: number): Polygon {
@@ -29,7 +30,7 @@ export interface Disc {
   x: number;
   y: number;
   r: number;
-  /** Known to lie clear of the part (its centre is outside the collision grown by at least r). */
+  /** Known to lie clear of the collision (its centre is outside the collision grown by at least r). */
   clear: boolean;
 }
 
@@ -42,8 +43,10 @@ export interface DrawLayer {
   base: readonly ExPolygon[] | null;
   /** How far from what lies under it a roof may reach, µm. */
   roofReachUm: number;
-  /** Areas support is cut away from (the collision, and in 'everywhere' the part within the bottom gap below). */
-  blocked: readonly (readonly ExPolygon[])[];
+  /** Where no support may be. */
+  collision: readonly ExPolygon[];
+  /** The part within the bottom gap below ('everywhere' placement): support is cut away from it too. */
+  gapBelow: readonly ExPolygon[];
   /** Support line width, µm. */
   widthUm: number;
 }
@@ -69,22 +72,22 @@ export function cutAway(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPol
 export function drawLayer(d: DrawLayer): ExPolygon[] {
   let roof: ExPolygon[] = d.roof.slice();
   if (roof.length && d.base) roof = d.base.length ? intersection(roof, offset(d.base, d.roofReachUm)) : [];
-  const roofBoxes = roof.map((x) => boundsOf([x]));
-  const blockedBoxes = d.blocked.flatMap((b) => b.map((x) => boundsOf([x])));
+  const roofIndex = roof.length ? new AreaIndex(roof) : null;
+  const gapBoxes = d.gapBelow.map((x) => boundsOf([x]));
+  let gapIndex: AreaIndex | null = null;
+  const onPart = (c: Disc) =>
+    meetsAny({ minX: c.x - c.r, minY: c.y - c.r, maxX: c.x + c.r, maxY: c.y + c.r }, gapBoxes) && (gapIndex ??= new AreaIndex(d.gapBelow)).meetsDisc(c.x, c.y, c.r);
   const minR = (MIN_SUPPORT_WIDTHS * d.widthUm) / 2;
-  // clusters of overlapping circles: those wholly clear, printable and away from roof and blocked areas
-  // need only their union; the rest are cut to what may and can be printed
+  // clusters of overlapping circles clear of the collision, printable, and touching neither the roof nor
+  // the part below need only their union; the rest are cut to what may and can be printed
   const free: ExPolygon[] = [];
   const rest: Polygon[] = [];
   for (const cluster of clusters(d.discs)) {
+    const fine = cluster.every(
+      (c) => c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !roofIndex?.meetsDisc(c.x, c.y, c.r) && !onPart(c),
+    );
     const rings = cluster.map((c) => circle(c.x, c.y, c.r));
-    let box: Bounds = { minX: Infinity, minY: Infinity, maxX: -Infinity, maxY: -Infinity };
-    let fine = true;
-    for (const c of cluster) {
-      box = { minX: Math.min(box.minX, c.x - c.r), minY: Math.min(box.minY, c.y - c.r), maxX: Math.max(box.maxX, c.x + c.r), maxY: Math.max(box.maxY, c.y + c.r) };
-      fine &&= c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm;
-    }
-    if (fine && !meetsAny(box, roofBoxes) && !meetsAny(box, blockedBoxes)) {
+    if (fine) {
       if (rings.length === 1) free.push({ outer: rings[0], holes: [] });
       else for (const a of unionRings(rings)) free.push(a);
     } else for (const r of rings) rest.push(r);
@@ -92,7 +95,7 @@ export function drawLayer(d: DrawLayer): ExPolygon[] {
   if (rest.length === 0 && roof.length === 0) return free;
   const branches = rest.length ? unionRings(rest) : [];
   let s = branches.length && roof.length ? union(branches, roof) : branches.length ? branches : roof;
-  for (const b of d.blocked) if (s.length) s = cutAway(s, b);
+  for (const b of [d.collision, d.gapBelow]) if (s.length && b.length) s = cutAway(s, b);
   return [...free, ...printable(s, d.widthUm)];
 }
 

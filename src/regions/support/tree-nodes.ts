@@ -14,6 +14,8 @@ import { classOf, type Keep, type TreeVolumes } from './tree-volumes.js';
 export const ATTRACT_MAX_UM = 10000;
 /** Each branch is linked to at most this many nearest neighbours before the spanning tree is taken. */
 const NEAR_COUNT = 6;
+/** Neighbours are first looked for this close, µm. */
+const NEAR_FIRST_UM = 4000;
 /** Slack on the one-layer move for rounding, µm. */
 export const MOVE_SLACK_UM = 1;
 
@@ -66,14 +68,17 @@ function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
 /** Pairs of nearby nodes of one group (each node with its nearest few within range) as [a, b, distance], shortest first. */
 export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): [number, number, number][] {
   if (ids.length < 2 || rangeUm <= 0) return [];
-  const grid = new PointGrid(Math.max(1000, rangeUm / 4));
+  const grid = new PointGrid(Math.min(NEAR_FIRST_UM, Math.max(1000, rangeUm / 4)));
   for (const i of ids) grid.add(nodes[i].x, nodes[i].y);
   const seen = new Set<number>();
   const out: [number, number, number][] = [];
   for (let a = 0; a < ids.length; a++) {
     const x = grid.xs[a], y = grid.ys[a];
     const near: [number, number][] = [];
-    for (const b of grid.within(x, y, rangeUm)) if (b !== a) near.push([b, Math.hypot(grid.xs[b] - x, grid.ys[b] - y)]);
+    // the nearest few are usually close: look further only when they are not
+    let found = grid.within(x, y, Math.min(rangeUm, NEAR_FIRST_UM));
+    if (found.length <= NEAR_COUNT && rangeUm > NEAR_FIRST_UM) found = grid.within(x, y, rangeUm);
+    for (const b of found) if (b !== a) near.push([b, Math.hypot(grid.xs[b] - x, grid.ys[b] - y)]);
     near.sort((p, q) => p[1] - q[1] || p[0] - q[0]);
     for (let k = 0; k < near.length && k < NEAR_COUNT; k++) {
       const b = near[k][0];

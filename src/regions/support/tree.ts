@@ -13,10 +13,11 @@
  *    below holds it, off the part, split into body, roof and floor.
  */
 import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
-import { UM_PER_MM, type Bounds, type ExPolygon } from '../../geometry/types.js';
+import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
+import { AreaIndex } from './area-index.js';
 import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
 import { descend, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
@@ -103,12 +104,6 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
   for (let j = 0; j < n; j++) out.push({ body: [], roof: [], floor: [] });
   // areas, from the bed up
   const w = model.widthUm;
-  const boxCache = new Map<number, Bounds[]>();
-  const sectionBoxes = (k: number): Bounds[] => {
-    let b = boxCache.get(k);
-    if (!b) boxCache.set(k, (b = model.section(k).map((p) => boundsOf([p]))));
-    return b;
-  };
   let below: ExPolygon[] = [];
   for (let j = 0; j < n; j++) {
     const discs: Disc[] = [];
@@ -127,29 +122,27 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
       const part = everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [];
       base = below.length && part.length ? union(below, part) : below.length ? below : part;
     }
-    const blocked = [collision];
-    if (everywhere && bottom > 0) blocked.push(model.sectionsBetween(j, -bottom, -1));
-    const s = drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, blocked, widthUm: w });
+    const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
+    const s = drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, widthUm: w });
     below = s;
-    out[j] = splitNear(model, j, s, sectionBoxes);
+    out[j] = splitNear(model, j, s);
     yield;
   }
   return out;
 }
 
-/**
- * model.split, run only on the islands near the part above (roof) or below (floor): the others are body.
- * The sections' bounds stand in for the areas split works out, so no island split would touch is left out.
- */
-function splitNear(model: ModelLayers, j: number, s: ExPolygon[], boxes: (k: number) => Bounds[]): SupportAreas {
+/** model.split, run only on the islands that meet the part within the roof layers above or the floor layers below: the others are body. */
+function splitNear(model: ModelLayers, j: number, s: ExPolygon[]): SupportAreas {
   const cfg = model.cfg;
+  const nearby: ExPolygon[] = [];
+  for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) nearby.push(...model.section(k));
+  for (let k = j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount; k < j - cfg.supportBottomGapLayers; k++) nearby.push(...model.section(k));
+  if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
+  const boxes = nearby.map((p) => boundsOf([p]));
+  let index: AreaIndex | null = null;
   const near: ExPolygon[] = [], far: ExPolygon[] = [];
-  const lowest = j - (cfg.supportBottomGapLayers + cfg.supportFloorLayerCount);
-  const highest = j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers;
   for (const a of s) {
-    const box = boundsOf([a]);
-    let hit = false;
-    for (let k = Math.max(0, lowest); k <= highest && k < model.count && !hit; k++) if (k !== j) hit = meetsAny(box, boxes(k));
+    const hit = meetsAny(boundsOf([a]), boxes) && (index ??= new AreaIndex(nearby)).meets(a);
     (hit ? near : far).push(a);
   }
   if (near.length === 0) return { body: far, roof: [], floor: [] };
