@@ -214,6 +214,59 @@ export class AreaIndex {
     return this.contains(x, y) || this.edgeWithin(x, y, r);
   }
 
+  /**
+   * The point nearest (x, y), within `maxUm` of it, that lies more than `d` outside the areas (by
+   * OUTSIDE_MARGIN_UM); (x, y) itself when it does; null when none is found. Tried in turn: off each edge
+   * near the point by d (along its outward normal, and along the way from the edge to the point), then
+   * points round (x, y) in 16 directions.
+   */
+  nearestClear(x: number, y: number, d: number, maxUm: number): Found | null {
+    if (d <= 0) return this.nearestOutside(x, y, maxUm);
+    if (!this.meetsDisc(x, y, d)) return { x, y };
+    const e = this.#e;
+    const want = d + OUTSIDE_MARGIN_UM;
+    const reach = maxUm + want;
+    const c0 = this.#col(x - reach), c1 = this.#col(x + reach), r0 = this.#row(y - reach), r1 = this.#row(y + reach);
+    let best: Found | null = null, bestD = Infinity;
+    const consider = (qx: number, qy: number) => {
+      const dq = Math.hypot(qx - x, qy - y);
+      if (dq <= maxUm && dq < bestD && !this.meetsDisc(qx, qy, d)) {
+        best = { x: qx, y: qy };
+        bestD = dq;
+      }
+    };
+    const seen = new Set<number>();
+    for (let r = r0; r <= r1; r++) {
+      for (let c = c0; c <= c1; c++) {
+        const id = r * this.#nx + c;
+        for (let s = this.#start[id], t = this.#start[id + 1]; s < t; s++) {
+          const i = this.#items[s];
+          if (seen.has(i)) continue;
+          seen.add(i);
+          const x1 = e[4 * i], y1 = e[4 * i + 1], ex = e[4 * i + 2] - x1, ey = e[4 * i + 3] - y1;
+          const len2 = ex * ex + ey * ey;
+          if (len2 === 0) continue;
+          const u = Math.min(1, Math.max(0, ((x - x1) * ex + (y - y1) * ey) / len2));
+          const bx = x1 + u * ex, by = y1 + u * ey;
+          const db = Math.hypot(x - bx, y - by);
+          if (db > reach) continue;
+          const el = Math.sqrt(len2);
+          consider(bx + (ey / el) * want, by - (ex / el) * want);
+          if (db > 1e-6) consider(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want);
+        }
+      }
+    }
+    if (best) return best;
+    for (let k = 1; k <= 4; k++) {
+      for (let a = 0; a < 16; a++) {
+        const ang = (a * Math.PI) / 8;
+        consider(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang));
+      }
+      if (best) return best;
+    }
+    return null;
+  }
+
   /** Whether an area meets the areas: a vertex of either lies inside the other, or their edges cross. */
   meets(a: ExPolygon): boolean {
     if (this.empty) return false;

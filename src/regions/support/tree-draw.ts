@@ -71,7 +71,13 @@ export function cutAway(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPol
 /** One layer's support area, printable. */
 export function drawLayer(d: DrawLayer): ExPolygon[] {
   let roof: ExPolygon[] = d.roof.slice();
-  if (roof.length && d.base) roof = d.base.length ? intersection(roof, offset(d.base, d.roofReachUm)) : [];
+  if (roof.length && d.base) {
+    // only what lies under the roof (within reach) can carry it
+    const reach = d.roofReachUm;
+    const boxes = roof.map((x) => boundsOf([x])).map((b) => ({ minX: b.minX - reach, minY: b.minY - reach, maxX: b.maxX + reach, maxY: b.maxY + reach }));
+    const under = d.base.filter((x) => meetsAny(boundsOf([x]), boxes));
+    roof = under.length ? intersection(roof, offset(under, reach)) : [];
+  }
   const roofIndex = roof.length ? new AreaIndex(roof) : null;
   const gapBoxes = d.gapBelow.map((x) => boundsOf([x]));
   let gapIndex: AreaIndex | null = null;
@@ -81,6 +87,7 @@ export function drawLayer(d: DrawLayer): ExPolygon[] {
   // clusters of overlapping circles clear of the collision, printable, and touching neither the roof nor
   // the part below need only their union; the rest are cut to what may and can be printed
   const free: ExPolygon[] = [];
+  const freeRings: Polygon[] = [];
   const rest: Polygon[] = [];
   for (const cluster of clusters(d.discs)) {
     const fine = cluster.every(
@@ -89,9 +96,11 @@ export function drawLayer(d: DrawLayer): ExPolygon[] {
     const rings = cluster.map((c) => circle(c.x, c.y, c.r));
     if (fine) {
       if (rings.length === 1) free.push({ outer: rings[0], holes: [] });
-      else for (const a of unionRings(rings)) free.push(a);
+      else for (const r of rings) freeRings.push(r);
     } else for (const r of rings) rest.push(r);
   }
+  // the overlapping free clusters in one union (clusters do not meet, so it merges each on its own)
+  if (freeRings.length) for (const a of unionRings(freeRings)) free.push(a);
   if (rest.length === 0 && roof.length === 0) return free;
   const branches = rest.length ? unionRings(rest) : [];
   let s = branches.length && roof.length ? union(branches, roof) : branches.length ? branches : roof;

@@ -6,9 +6,9 @@
  * radius, and then goes straight down onto the part); radii grow from the tip to the branch radius, and
  * merged trunks further.
  */
-import type { AreaIndex, Found } from './area-index.js';
+import type { Found } from './area-index.js';
 import { PointGrid } from './point-grid.js';
-import { classOf, type Keep, type TreeVolumes } from './tree-volumes.js';
+import { classOf, type Blocked, type Keep, type TreeVolumes } from './tree-volumes.js';
 
 /** Neighbours further apart than this are not drawn together, µm. */
 export const ATTRACT_MAX_UM = 10000;
@@ -98,7 +98,7 @@ export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], ra
 }
 
 /** A free spot for a centre: the target, or the nearest free point to it or to where the node was, within `m` of (px, py). */
-function place(ix: AreaIndex, tx: number, ty: number, px: number, py: number, m: number): Found | null {
+function place(ix: Blocked, tx: number, ty: number, px: number, py: number, m: number): Found | null {
   if (!ix.contains(tx, ty)) return { x: tx, y: ty };
   const reach = m + MOVE_SLACK_UM;
   const q = ix.nearestOutside(tx, ty, m);
@@ -125,7 +125,7 @@ export function descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes,
   const toward = new Int32Array(upper.length).fill(-1);
   const paired = new Uint8Array(upper.length);
   const range = Math.min(ATTRACT_MAX_UM, rules.zUm(j));
-  const barrier = vol.index('model', 0, j);
+  const barrier = vol.partIndex(j);
 
   for (const keep of ['bed', 'model'] as const) {
     const ids: number[] = [];

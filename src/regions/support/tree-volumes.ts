@@ -1,18 +1,21 @@
 /**
  * Where a tree-support branch may be, layer by layer and per radius class (after CuraEngine's model volumes):
- * - collision(j): where no support may be (the part grown by the XY gap, from ModelLayers);
- * - grown(c, j): where the centre of a branch of class c may not be: collision(j) grown by the class radius;
- * - avoidance(c, j): where the centre of a branch of class c may not be if it is to reach the bed: grown(c, j)
- *   and every place from which no point outside avoidance(c, j-1) is within one layer's move. Built from the
- *   bed up: avoidance(c, 0) = grown(c, 0), avoidance(c, j) = grown(c, j) ∪ (avoidance(c, j-1) shrunk by the
- *   move between j and j-1). A centre outside avoidance(c, j) can always step to one outside avoidance(c, j-1),
- *   so a branch that keeps outside its avoidance reaches the bed, never touching the part on the way.
- * Radius classes keep the number of areas small: a branch is checked against the smallest class at least as
- * wide as it is.
+ * - collision(j): where no support may be (the part grown by the XY gap, from ModelLayers); a centre of a
+ *   branch of class c must keep more than the class radius from it;
+ * - avoidance(j): where the centre of a tip-sized branch may not be if it is to reach the bed, built from the
+ *   bed up: avoidance(0) = collision(0) grown by the tip radius, avoidance(j) = collision(j) grown by the tip
+ *   radius ∪ (avoidance(j - 1) shrunk by the move between j and j - 1), so that a centre outside it can
+ *   always step to one outside avoidance(j - 1): a branch that keeps outside its avoidance reaches the bed,
+ *   never touching the part on the way. A wider class keeps the difference in radius away from it. That
+ *   holds the part clear exactly; only at sharp outer corners of the avoidance is it a little less than an
+ *   avoidance built for the wider radius, and a branch that finds no way down there keeps just clear of the
+ *   part like any other.
+ * Both are asked as distances from two point indexes a layer, so no area is made per radius: a branch is
+ * checked against the smallest class at least as wide as it is.
  */
 import { offset, union } from '../../geometry/clip.js';
 import type { ExPolygon } from '../../geometry/types.js';
-import { AreaIndex } from './area-index.js';
+import { AreaIndex, type Found } from './area-index.js';
 import type { ModelLayers } from './model-layers.js';
 
 /** Radius classes are at most this far apart, µm. */
@@ -41,15 +44,37 @@ export function classOf(radii: readonly number[], r: number): number {
  */
 export type Keep = 'bed' | 'model' | 'part';
 
+/** What a centre of some class must stay out of on one layer, asked point by point. */
+export class Blocked {
+  readonly #index: AreaIndex;
+  /** How far outside the index's areas the centre must be, µm. */
+  readonly #clearUm: number;
+
+  constructor(index: AreaIndex, clearUm: number) {
+    this.#index = index;
+    this.#clearUm = clearUm;
+  }
+
+  /** Whether (x, y) is blocked. */
+  contains(x: number, y: number): boolean {
+    return this.#clearUm > 0 ? this.#index.meetsDisc(x, y, this.#clearUm) : this.#index.contains(x, y);
+  }
+
+  /** The nearest unblocked point within `maxUm` of (x, y) ((x, y) itself when it is free), or null. */
+  nearestOutside(x: number, y: number, maxUm: number): Found | null {
+    return this.#index.nearestClear(x, y, this.#clearUm, maxUm);
+  }
+}
+
 export class TreeVolumes {
   readonly radii: readonly number[];
   readonly #model: ModelLayers;
   /** Sideways move allowed between layer j and j-1, µm. */
   readonly #step: (j: number) => number;
   readonly #collision: ExPolygon[][] = [];
-  /** [class][layer] */
-  readonly #grown: ExPolygon[][][];
-  readonly #avoid: ExPolygon[][][];
+  /** The tip class's avoidance per layer. */
+  readonly #avoid: ExPolygon[][] = [];
+  /** Point indexes made on first use, by `${'avoid' | 'part'}:${layer}`. */
   readonly #index = new Map<string, AreaIndex>();
   #built = -1;
   #avoidTop = -1;
@@ -58,24 +83,20 @@ export class TreeVolumes {
     this.#model = model;
     this.radii = radii;
     this.#step = step;
-    this.#grown = radii.map(() => []);
-    this.#avoid = radii.map(() => []);
   }
 
-  /** Compute collision up to layer `top` and avoidance up to `avoidTop`, from the bed up; yields per layer. */
+  /** Compute collision up to layer `top` and the avoidance up to `avoidTop`, from the bed up; yields per layer. */
   *build(top: number, avoidTop: number): Generator<void, void> {
     this.#avoidTop = avoidTop;
+    const r0 = this.radii[0];
     for (let j = 0; j <= top; j++) {
       const col = this.#model.collision(j);
       this.#collision[j] = col;
       if (j <= avoidTop) {
-        for (let c = 0; c < this.radii.length; c++) {
-          const g = col.length ? offset(col, this.radii[c]) : [];
-          this.#grown[c][j] = g;
-          const below = j > 0 ? this.#avoid[c][j - 1] : [];
-          const kept = below.length ? offset(below, -this.#step(j)) : [];
-          this.#avoid[c][j] = kept.length && g.length ? union(g, kept) : kept.length ? kept : g;
-        }
+        const g = col.length ? offset(col, r0) : [];
+        const below = j > 0 ? this.#avoid[j - 1] : [];
+        const kept = below.length ? offset(below, -this.#step(j)) : [];
+        this.#avoid[j] = kept.length && g.length ? union(g, kept) : kept.length ? kept : g;
       }
       this.#built = j;
       yield;
@@ -87,31 +108,35 @@ export class TreeVolumes {
     return j >= 0 && j <= this.#built ? this.#collision[j] : this.#model.collision(j);
   }
 
-  /** The areas a centre of class c must stay out of on layer j: to reach the bed, or only to keep off the part. */
-  blocked(keep: Keep, c: number, j: number): ExPolygon[] {
-    if (keep === 'part') return this.collision(j);
-    if (j < 0 || j > this.#avoidTop) return [];
-    return keep === 'bed' ? this.#avoid[c][j] : this.#grown[c][j];
+  /** The tip class's avoidance on layer j ([] above the highest tip). */
+  avoidance(j: number): ExPolygon[] {
+    return j >= 0 && j <= this.#avoidTop ? this.#avoid[j] : [];
   }
 
-  /** The same, as an index for point queries (built on first use). */
-  index(keep: Keep, c: number, j: number): AreaIndex {
-    const key = `${keep}:${keep === 'part' ? 0 : c}:${j}`;
+  #indexOf(kind: 'avoid' | 'part', j: number): AreaIndex {
+    const key = `${kind}:${j}`;
     let ix = this.#index.get(key);
-    if (!ix) this.#index.set(key, (ix = new AreaIndex(this.blocked(keep, c, j))));
+    if (!ix) this.#index.set(key, (ix = new AreaIndex(kind === 'avoid' ? this.avoidance(j) : this.collision(j))));
     return ix;
   }
 
-  /** Forget the avoidance of layer j + 1 (the branches have gone below it; collision stays for drawing). */
+  /** What a centre of class c keeps out of on layer j: to reach the bed ('bed'), to keep off the part ('model'), or the collision itself ('part'). */
+  index(keep: Keep, c: number, j: number): Blocked {
+    if (keep === 'bed') return new Blocked(this.#indexOf('avoid', j), this.radii[c] - this.radii[0]);
+    return new Blocked(this.#indexOf('part', j), keep === 'model' ? this.radii[c] : 0);
+  }
+
+  /** The collision of layer j as a point index (segment tests between branches). */
+  partIndex(j: number): AreaIndex {
+    return this.#indexOf('part', j);
+  }
+
+  /** Forget what layer j + 1 needed (the branches have gone below it; collision stays for drawing). */
   release(j: number): void {
     const k = j + 1;
     if (k > this.#avoidTop) return;
-    for (let c = 0; c < this.radii.length; c++) {
-      this.#grown[c][k] = [];
-      this.#avoid[c][k] = [];
-      this.#index.delete(`bed:${c}:${k}`);
-      this.#index.delete(`model:${c}:${k}`);
-    }
-    this.#index.delete(`part:0:${k}`);
+    this.#avoid[k] = [];
+    this.#index.delete(`avoid:${k}`);
+    this.#index.delete(`part:${k}`);
   }
 }

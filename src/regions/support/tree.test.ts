@@ -98,10 +98,11 @@ for (const [name, boxes] of MODELS) {
       const m = rules.step(j + 1);
       const spread = area(difference(here, offset(above, m + grow + TOL_UM)));
       assert.ok(spread <= SLIVER_UM2, `layer ${j} reaches ${(spread / 1e6).toFixed(3)} mm² beyond layer ${j + 1}`);
-      // and nothing above hangs further than a move beyond it (or beyond the part it stands on)
+      // and nothing above hangs further than a move beyond it, or beyond the part it stands on (with its XY
+      // gap: a branch ending beside the edge of a step is cut back by the gap on the step's top layer)
       const part: ExPolygon[] = [];
       for (let k = Math.max(0, j - cfg.supportBottomGapLayers); k <= j; k++) part.push(...model.section(k));
-      const base = part.length ? union(here, part) : here;
+      const base = part.length ? union(here, offset(part, cfg.supportXYGap * UM_PER_MM)) : here;
       const hang = area(difference(above, offset(base, m + TOL_UM)));
       assert.ok(hang <= HANG_UM2, `layer ${j + 1} hangs ${(hang / 1e6).toFixed(3)} mm² over air`);
       checked++;

@@ -117,11 +117,8 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     const collision = vol.collision(j);
     // grown a little, so that the narrow steps of a sloping overhang make a roof a line can print
     const roof = roofWanted.length ? cutAway(offset(union(roofWanted), ROOF_GROW_WIDTHS * w), collision) : [];
-    let base: ExPolygon[] | null = null;
-    if (j > 0 && roof.length) {
-      const part = everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [];
-      base = below.length && part.length ? union(below, part) : below.length ? below : part;
-    }
+    // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
+    const base = j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
     const s = drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, widthUm: w });
     below = s;
