@@ -10,6 +10,7 @@ import type { Bounds, ExPolygon, Polygon } from '../../geometry/types.js';
 import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
 import { AreaIndex } from './area-index.js';
 import { PointGrid } from './point-grid.js';
+import { ITEMS_PER_STEP } from './tree-nodes.js';
 
 /** Largest gap between a drawn circle's edge and the true circle, µm. */
 export const CIRCLE_TOLERANCE_UM = 50;
@@ -68,8 +69,8 @@ export function cutAway(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPol
   return near.length ? [...difference(near, b), ...far] : far;
 }
 
-/** One layer's support area, printable. */
-export function drawLayer(d: DrawLayer): ExPolygon[] {
+/** One layer's support area, printable; yields every ITEMS_PER_STEP cross-sections. */
+export function* drawLayer(d: DrawLayer): Generator<void, ExPolygon[]> {
   let roof: ExPolygon[] = d.roof.slice();
   if (roof.length && d.base) {
     // only what lies under the roof (within reach) can carry it
@@ -89,7 +90,14 @@ export function drawLayer(d: DrawLayer): ExPolygon[] {
   const free: ExPolygon[] = [];
   const freeRings: Polygon[] = [];
   const rest: Polygon[] = [];
+  let count = 0;
   for (const cluster of clusters(d.discs)) {
+    if ((count += cluster.length) >= ITEMS_PER_STEP) {
+      // the overlapping free clusters so far in one union (clusters do not meet: each merges on its own)
+      if (freeRings.length) for (const a of unionRings(freeRings.splice(0))) free.push(a);
+      count = 0;
+      yield;
+    }
     const fine = cluster.every(
       (c) => c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !roofIndex?.meetsDisc(c.x, c.y, c.r) && !onPart(c),
     );
@@ -99,7 +107,6 @@ export function drawLayer(d: DrawLayer): ExPolygon[] {
       else for (const r of rings) freeRings.push(r);
     } else for (const r of rings) rest.push(r);
   }
-  // the overlapping free clusters in one union (clusters do not meet, so it merges each on its own)
   if (freeRings.length) for (const a of unionRings(freeRings)) free.push(a);
   if (rest.length === 0 && roof.length === 0) return free;
   const branches = rest.length ? unionRings(rest) : [];

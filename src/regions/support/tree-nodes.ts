@@ -16,6 +16,8 @@ export const ATTRACT_MAX_UM = 10000;
 const NEAR_COUNT = 6;
 /** Neighbours are first looked for this close, µm. */
 const NEAR_FIRST_UM = 4000;
+/** A step of the pass handles at most this many branches (or tips, or cross-sections) before it yields. */
+export const ITEMS_PER_STEP = 200;
 /** Slack on the one-layer move for rounding, µm. */
 export const MOVE_SLACK_UM = 1;
 
@@ -66,13 +68,14 @@ function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
 }
 
 /** Pairs of nearby nodes of one group (each node with its nearest few within range) as [a, b, distance], shortest first. */
-export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): [number, number, number][] {
+export function* nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): Generator<void, [number, number, number][]> {
   if (ids.length < 2 || rangeUm <= 0) return [];
   const grid = new PointGrid(Math.min(NEAR_FIRST_UM, Math.max(1000, rangeUm / 4)));
   for (const i of ids) grid.add(nodes[i].x, nodes[i].y);
   const seen = new Set<number>();
   const out: [number, number, number][] = [];
   for (let a = 0; a < ids.length; a++) {
+    if (a % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
     const x = grid.xs[a], y = grid.ys[a];
     const near: [number, number][] = [];
     // the nearest few are usually close: look further only when they are not
@@ -115,8 +118,8 @@ export interface DescendResult {
   stuck: number[];
 }
 
-/** Take the nodes of layer j + 1 down to layer j. */
-export function descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes, rules: TreeRules): DescendResult {
+/** Take the nodes of layer j + 1 down to layer j; yields every ITEMS_PER_STEP branches. */
+export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes, rules: TreeRules): Generator<void, DescendResult> {
   const m = rules.step(j + 1);
   const lower: TreeNode[] = [];
   const stuck: number[] = [];
@@ -130,10 +133,12 @@ export function descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes,
   for (const keep of ['bed', 'model'] as const) {
     const ids: number[] = [];
     for (let i = 0; i < upper.length; i++) if (!upper[i].dead && !upper[i].landing && upper[i].keep === keep) ids.push(i);
-    const pairs = nearPairs(upper, ids, range);
+    const pairs = yield* nearPairs(upper, ids, range);
     // merges: the closest pairs first, each node once per layer
+    let tried = 0;
     for (const [a, b, d] of pairs) {
       if (done[a] || done[b] || !(d <= 2 * m || absorbs(upper[a], upper[b], d, m))) continue;
+      if (++tried % ITEMS_PER_STEP === 0) yield;
       const merged = merge(upper[a], upper[b], a, b, d, m, j, vol, rules);
       if (!merged) continue;
       lower.push(merged);
@@ -154,6 +159,7 @@ export function descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes,
   }
 
   for (let i = 0; i < upper.length; i++) {
+    if (i % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
     const n = upper[i];
     if (n.dead || done[i]) continue;
     if (n.landing) {

@@ -19,7 +19,7 @@ import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
 import { AreaIndex } from './area-index.js';
 import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
-import { descend, type TreeNode, type TreeRules } from './tree-nodes.js';
+import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
 import { radiusClasses, TreeVolumes } from './tree-volumes.js';
 
@@ -79,10 +79,10 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
 
   const spacing = cfg.supportTreeTipSpacing * UM_PER_MM;
   for (let j = tipTop; j >= 0; j--) {
-    const { lower, stuck } = j < tipTop ? descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
+    const { lower, stuck } = j < tipTop ? yield* descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
     for (const i of stuck) kill(nodes, j + 1, i);
     const m = j + top + roofLayers + 1;
-    if (m < n && overhangs[m].length) addTips(lower, overhangs[m], j, spacing, vol, rules);
+    if (m < n && overhangs[m].length) yield* addTips(lower, overhangs[m], j, spacing, vol, rules);
     nodes[j] = lower;
     vol.release(j);
     yield;
@@ -120,16 +120,16 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
     const base = j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
-    const s = drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, widthUm: w });
+    const s = yield* drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, widthUm: w });
     below = s;
-    out[j] = splitNear(model, j, s);
+    out[j] = yield* splitNear(model, j, s);
     yield;
   }
   return out;
 }
 
 /** model.split, run only on the islands that meet the part within the roof layers above or the floor layers below: the others are body. */
-function splitNear(model: ModelLayers, j: number, s: ExPolygon[]): SupportAreas {
+function* splitNear(model: ModelLayers, j: number, s: ExPolygon[]): Generator<void, SupportAreas> {
   const cfg = model.cfg;
   const nearby: ExPolygon[] = [];
   for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) nearby.push(...model.section(k));
@@ -142,9 +142,16 @@ function splitNear(model: ModelLayers, j: number, s: ExPolygon[]): SupportAreas 
     const hit = meetsAny(boundsOf([a]), boxes) && (index ??= new AreaIndex(nearby)).meets(a);
     (hit ? near : far).push(a);
   }
-  if (near.length === 0) return { body: far, roof: [], floor: [] };
-  const split = model.split(j, near);
-  return { body: [...split.body, ...far], roof: split.roof, floor: split.floor };
+  // islands apart split apart: a few at a time
+  const out: SupportAreas = { body: far, roof: [], floor: [] };
+  for (let k = 0; k < near.length; k += ITEMS_PER_STEP) {
+    if (k > 0) yield;
+    const split = model.split(j, near.slice(k, k + ITEMS_PER_STEP));
+    out.body.push(...split.body);
+    out.roof.push(...split.roof);
+    out.floor.push(...split.floor);
+  }
+  return out;
 }
 
 /** The tree's sizes and steps from the settings, µm. */
@@ -177,7 +184,7 @@ export function treeRules(model: ModelLayers): TreeRules {
 }
 
 /** Tips under the overhang `over`, on layer j, where no branch already passes. */
-function addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spacing: number, vol: TreeVolumes, rules: TreeRules): void {
+function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spacing: number, vol: TreeVolumes, rules: TreeRules): Generator<void, void> {
   const existing = new PointGrid(spacing);
   let widest = 0;
   for (const k of lower) {
@@ -186,7 +193,10 @@ function addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spaci
   }
   const gap = TIP_MIN_GAP_SHARE * spacing;
   const keeps = rules.everywhere ? (['bed', 'model'] as const) : (['bed'] as const);
-  for (const p of tipCandidates(over, spacing, rules.tipR)) {
+  const candidates = tipCandidates(over, spacing, rules.tipR);
+  for (let i = 0; i < candidates.length; i++) {
+    if (i % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
+    const p = candidates[i];
     const near = existing.within(p.x, p.y, Math.max(gap, widest));
     if (near.some((k) => Math.hypot(existing.xs[k] - p.x, existing.ys[k] - p.y) < Math.max(gap, lower[k].r))) continue;
     for (const keep of keeps) {
