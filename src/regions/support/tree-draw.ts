@@ -69,16 +69,38 @@ export function cutAway(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPol
   return near.length ? [...difference(near, b), ...far] : far;
 }
 
+/** A roof island no wider than this many reaches is kept or dropped whole. */
+const WHOLE_ROOF_REACHES = 2;
+
+/**
+ * The part of the roof that what lies under it (within `reach`) can carry: small roof islands (the steps of
+ * a sloping overhang) whole when anything is within reach, larger ones cut to the reach of what is under them.
+ */
+export function carried(roof: readonly ExPolygon[], base: readonly ExPolygon[], reach: number): ExPolygon[] {
+  if (base.length === 0) return [];
+  const baseBoxes = base.map((x) => boundsOf([x]));
+  const index = new AreaIndex(base);
+  const out: ExPolygon[] = [];
+  const large: ExPolygon[] = [];
+  for (const r of roof) {
+    const b = boundsOf([r]);
+    const grown = { minX: b.minX - reach, minY: b.minY - reach, maxX: b.maxX + reach, maxY: b.maxY + reach };
+    if (!meetsAny(grown, baseBoxes)) continue;
+    if (Math.max(b.maxX - b.minX, b.maxY - b.minY) > WHOLE_ROOF_REACHES * reach) large.push(r);
+    else if (index.meets(r) || r.outer.some((p) => index.edgeWithin(p.x, p.y, reach))) out.push(r);
+  }
+  if (large.length) {
+    const boxes = large.map((x) => boundsOf([x])).map((b) => ({ minX: b.minX - reach, minY: b.minY - reach, maxX: b.maxX + reach, maxY: b.maxY + reach }));
+    const under = base.filter((_, i) => meetsAny(baseBoxes[i], boxes));
+    if (under.length) for (const a of intersection(large, offset(under, reach))) out.push(a);
+  }
+  return out;
+}
+
 /** One layer's support area, printable; yields every ITEMS_PER_STEP cross-sections. */
 export function* drawLayer(d: DrawLayer): Generator<void, ExPolygon[]> {
   let roof: ExPolygon[] = d.roof.slice();
-  if (roof.length && d.base) {
-    // only what lies under the roof (within reach) can carry it
-    const reach = d.roofReachUm;
-    const boxes = roof.map((x) => boundsOf([x])).map((b) => ({ minX: b.minX - reach, minY: b.minY - reach, maxX: b.maxX + reach, maxY: b.maxY + reach }));
-    const under = d.base.filter((x) => meetsAny(boundsOf([x]), boxes));
-    roof = under.length ? intersection(roof, offset(under, reach)) : [];
-  }
+  if (roof.length && d.base) roof = carried(roof, d.base, d.roofReachUm);
   const roofIndex = roof.length ? new AreaIndex(roof) : null;
   const gapBoxes = d.gapBelow.map((x) => boundsOf([x]));
   let gapIndex: AreaIndex | null = null;
@@ -101,7 +123,8 @@ export function* drawLayer(d: DrawLayer): Generator<void, ExPolygon[]> {
     const fine = cluster.every(
       (c) => c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !roofIndex?.meetsDisc(c.x, c.y, c.r) && !onPart(c),
     );
-    const rings = cluster.map((c) => circle(c.x, c.y, c.r));
+    // a circle inside another of its cluster adds nothing to their union
+    const rings = (cluster.length > 1 ? cluster.filter((c) => !cluster.some((o) => o !== c && o.r > c.r && Math.hypot(o.x - c.x, o.y - c.y) + c.r <= o.r)) : cluster).map((c) => circle(c.x, c.y, c.r));
     if (fine) {
       if (rings.length === 1) free.push({ outer: rings[0], holes: [] });
       else for (const r of rings) freeRings.push(r);
