@@ -6,13 +6,28 @@
  */
 import { PATTERN_IDS } from '../infill/types.js';
 
-export type Unit = 'mm' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '';
+export type Unit = 'mm' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '×' | 'MiB' | '';
+/** The stage a setting affects. `runtime` settings change how a slice runs, never the G-code it makes. */
 export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' | 'adhesion' | 'travel' | 'cooling' | 'gcode' | 'runtime';
+
+/**
+ * An input a setting needs before it can change the output, beyond other settings (`onlyWith`):
+ * `several-models` (arranging models on the bed), `custom-infill` (an IceSL shader or image infill:
+ * `customInfill`, `--infill-shader`, `--infill-image`), `custom-image-infill` (an image infill).
+ */
+export type SettingNeed = 'several-models' | 'custom-infill' | 'custom-image-infill';
 
 interface Base {
   unit: Unit;
   description: string;
   stage: Stage;
+  /**
+   * The setting matters only while these other settings have these values (e.g. brimWidth only with
+   * `{ adhesionType: 'brim' }`). UIs show it only then; the every-flag CLI test sets them first.
+   */
+  onlyWith?: Readonly<Record<string, string | number | boolean>>;
+  /** The setting matters only with this kind of input (see SettingNeed). */
+  needs?: SettingNeed;
 }
 export interface NumberDef extends Base {
   type: 'number' | 'integer';
@@ -88,6 +103,13 @@ const str = (def: string, stage: Stage, description: string, maxLength = 65536):
   maxLength,
 });
 
+/** A definition that matters only when `onlyWith` holds (and, optionally, with a `needs` input). */
+const when = <D extends SettingDef>(def: D, onlyWith: Readonly<Record<string, string | number | boolean>> | null, needs?: SettingNeed): D => ({
+  ...def,
+  ...(onlyWith ? { onlyWith } : {}),
+  ...(needs ? { needs } : {}),
+});
+
 export const SCHEMA = {
   // ── machine ──────────────────────────────────────────────────────────────────
   buildPlateWidth: num(220, 10, 2000, 'mm', 'machine', 'Build plate size in X.'),
@@ -111,14 +133,26 @@ export const SCHEMA = {
   lineWidth: optNum(0.1, 3, 'mm', 'walls', 'Extrusion line width. Empty (null) = nozzleDiameter.'),
   firstLayerLineWidth: optNum(0.1, 3, 'mm', 'walls', 'Line width on the first layer. Empty (null) = lineWidth.'),
   meshTolerance: num(0.025, 0.0005, 0.5, 'mm', 'slice', 'Outlines are simplified to this deviation before offsetting (CuraEngine uses the same 0.025 mm).'),
-  center: bool(true, 'mesh', 'Place the models (kept together) on the bed centre; false keeps their coordinates.'),
+  center: bool(true, 'mesh', 'Arrange the models on the bed around its centre; false keeps their own XY coordinates (a model that leaves the bed is an error).'),
+
+  // ── model placement and input limits ─────────────────────────────────────────
+  upAxis: enm(['z', 'y'] as const, 'z', 'mesh', 'The axis that points up in the input: z (3D printing, CAD) or y (three.js scenes, many OBJ and glTF exports), turned Z-up before slicing.'),
+  rotateX: num(0, -360, 360, '°', 'mesh', 'Turn each model about the X axis through its centre (right-handed, counter-clockwise looking down the axis), first.'),
+  rotateY: num(0, -360, 360, '°', 'mesh', 'Turn each model about the Y axis, after rotateX.'),
+  rotateZ: num(0, -360, 360, '°', 'mesh', 'Turn each model about the vertical Z axis, after rotateX and rotateY.'),
+  scale: num(1, 0.001, 1000, '×', 'mesh', 'Scale each model by this factor about its centre, after rotating (2 = twice the size).'),
+  scaleX: optNum(0.001, 1000, '×', 'mesh', 'Scale factor along the bed X axis. Empty (null) = scale.'),
+  scaleY: optNum(0.001, 1000, '×', 'mesh', 'Scale factor along the bed Y axis. Empty (null) = scale.'),
+  scaleZ: optNum(0.001, 1000, '×', 'mesh', 'Scale factor along the vertical Z axis. Empty (null) = scale.'),
+  objectSpacing: when(num(6, 0, 100, 'mm', 'mesh', 'Gap between models arranged on the bed (a brim adds its width on each side).'), { center: true }, 'several-models'),
+  inflateBudget: int(512, 1, 65536, 'MiB', 'runtime', 'Most data a 3MF archive (all the model parts it references) or an infill image may unpack to; bigger ones are refused before they are unpacked. Raise it for very large 3MF models.'),
 
   // ── walls ────────────────────────────────────────────────────────────────────
   shellWallThickness: num(0.8, 0, 20, 'mm', 'walls', 'Total wall thickness; the wall count is this over the line width, rounded.'),
   wallCount: optNum(0, 50, 'count', 'walls', 'Number of walls; overrides shellWallThickness when set.', 'integer'),
   wallOrder: enm(['inner-first', 'outer-first'] as const, 'inner-first', 'walls', 'Print inner walls before the outer wall (better surface) or the outer wall first (better dimensions).'),
   seamPosition: enm(['aligned', 'nearest', 'rear', 'random'] as const, 'aligned', 'walls', 'Where each wall loop starts: aligned on a sharp corner, nearest to the nozzle, at the rear, or random (seeded).'),
-  randomSeed: int(1, 0, 2147483647, '', 'walls', 'Seed for random seams: the same seed gives the same G-code.'),
+  randomSeed: when(int(1, 0, 2147483647, '', 'walls', 'Seed for random seams: the same seed gives the same G-code.'), { seamPosition: 'random' }),
 
   // ── skin ─────────────────────────────────────────────────────────────────────
   shellSkinThickness: num(0.8, 0, 20, 'mm', 'skin', 'Thickness of solid top and bottom skin; the layer count is this over the layer height, rounded up.'),
@@ -134,8 +168,8 @@ export const SCHEMA = {
   infillPatternCentering: enm(['object', 'global'] as const, 'object', 'infill', 'Centre the pattern on each object or on the build plate.'),
   infillAngle: num(45, -180, 180, '°', 'infill', 'Base direction of the infill lines.'),
   infillOverlap: num(25, 0, 100, '%', 'infill', 'How far infill reaches into the innermost wall, % of the line width.'),
-  infillImagePixelSize: num(0.1, 0.001, 10, 'mm', 'infill', "Size of one pixel of a custom infill image (cells.png), IceSL's labeling_mm_per_pixel."),
-  infillShaderResolution: optNum(0.005, 2, 'mm', 'infill', 'Grid spacing at which a custom infill shader is sampled before crossings are refined by bisection. Empty (null) = nozzleDiameter / 4 for shaders, one pixel for images.'),
+  infillImagePixelSize: when(num(0.1, 0.001, 10, 'mm', 'infill', "Size of one pixel of a custom infill image (cells.png), IceSL's labeling_mm_per_pixel."), null, 'custom-image-infill'),
+  infillShaderResolution: when(optNum(0.005, 2, 'mm', 'infill', 'Grid spacing at which a custom infill shader is sampled before crossings are refined by bisection. Empty (null) = nozzleDiameter / 4 for shaders, one pixel for images.'), null, 'custom-infill'),
   infillConnect: bool(true, 'infill', 'Join infill line ends along the region boundary where that avoids a travel.'),
 
   // ── speeds ───────────────────────────────────────────────────────────────────
@@ -150,12 +184,12 @@ export const SCHEMA = {
   // ── travel and retraction ────────────────────────────────────────────────────
   combing: bool(true, 'travel', 'Keep travels inside the current island, around holes, where possible.'),
   retractionEnabled: bool(true, 'travel', 'Retract filament before travels that leave the island or are long.'),
-  retractionDistance: num(5, 0, 20, 'mm', 'travel', 'Filament pulled back per retraction.'),
-  retractionSpeed: num(45, 1, 200, 'mm/s', 'travel', 'Retraction and prime speed.'),
-  retractionExtraPrime: num(0, 0, 5, 'mm', 'travel', 'Extra filament pushed after a retraction.'),
-  retractionMinTravel: num(1.5, 0, 100, 'mm', 'travel', 'Travels shorter than this inside one island do not retract.'),
-  retractOnLayerChange: bool(true, 'travel', 'Retract when moving to the next layer.'),
-  zHop: num(0, 0, 10, 'mm', 'travel', 'Lift the nozzle by this much during retracted travels (0 = off).'),
+  retractionDistance: when(num(5, 0, 20, 'mm', 'travel', 'Filament pulled back per retraction.'), { retractionEnabled: true }),
+  retractionSpeed: when(num(45, 1, 200, 'mm/s', 'travel', 'Retraction and prime speed.'), { retractionEnabled: true }),
+  retractionExtraPrime: when(num(0, 0, 5, 'mm', 'travel', 'Extra filament pushed after a retraction.'), { retractionEnabled: true }),
+  retractionMinTravel: when(num(1.5, 0, 100, 'mm', 'travel', 'Travels shorter than this inside one island do not retract.'), { retractionEnabled: true }),
+  retractOnLayerChange: when(bool(true, 'travel', 'Retract when moving to the next layer.'), { retractionEnabled: true }),
+  zHop: when(num(0, 0, 10, 'mm', 'travel', 'Lift the nozzle by this much during retracted travels (0 = off).'), { retractionEnabled: true }),
 
   // ── cooling and temperature ──────────────────────────────────────────────────
   fanSpeed: num(100, 0, 100, '%', 'cooling', 'Part-cooling fan from the second layer on.'),
@@ -173,9 +207,9 @@ export const SCHEMA = {
 
   // ── adhesion ─────────────────────────────────────────────────────────────────
   adhesionType: enm(['skirt', 'brim', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, or none.'),
-  skirtLoops: int(1, 1, 20, 'count', 'adhesion', 'Skirt loops.'),
-  skirtDistance: num(3, 0, 50, 'mm', 'adhesion', 'Gap between the skirt and the print.'),
-  brimWidth: num(8, 0, 50, 'mm', 'adhesion', 'Brim width.'),
+  skirtLoops: when(int(1, 1, 20, 'count', 'adhesion', 'Skirt loops.'), { adhesionType: 'skirt' }),
+  skirtDistance: when(num(3, 0, 50, 'mm', 'adhesion', 'Gap between the skirt and the print.'), { adhesionType: 'skirt' }),
+  brimWidth: when(num(8, 0, 50, 'mm', 'adhesion', 'Brim width.'), { adhesionType: 'brim' }),
 
   // ── runtime ──────────────────────────────────────────────────────────────────
   threads: int(0, 0, 256, 'count', 'runtime', 'Threads for the per-layer stages (0 = automatic: one per core above two cores, else one). The G-code is the same for any count.'),
