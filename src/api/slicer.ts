@@ -2,10 +2,12 @@
  * The library API: `new Slicer(options)`, chainable `setX`/`getX` for every setting, and
  * `await slicer.slice(input)` → `{ gcode, stats, warnings }`, or `sliceToSink` to stream the G-code.
  */
-import { StrataError } from '../errors.js';
 import { isNode, nodeBuiltin } from '../runtime.js';
-import { mergeObjects, placeOnBed, positionBounds, prepareMesh, toMeshObjects } from '../mesh/index.js';
-import type { Mesh, MeshReport } from '../mesh/types.js';
+import { positionBounds } from '../mesh/index.js';
+import { checkTemplatesForFlavor } from '../gcode/flavor-templates.js';
+import { imageDecodeBytes } from '../shader/image.js';
+import { StrataError } from '../errors.js';
+import { MiB, prepareModel, type PreparedModel } from './prepare-model.js';
 import { runPipeline, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
 import { customGenerator, isTransferable, type CustomInfillSpec } from '../pipeline/custom-infill.js';
@@ -32,36 +34,11 @@ export interface SliceResult {
   warnings: string[];
 }
 
+export { prepareModel, type PreparedModel } from './prepare-model.js';
+
 export interface SliceCallOptions {
   onProgress?: (p: Progress) => void;
   signal?: AbortSignal;
-}
-
-export interface PreparedModel {
-  mesh: Mesh;
-  report: MeshReport;
-  /** Translation applied to place the model on the bed, mm. */
-  offset: [number, number, number];
-  warnings: string[];
-}
-
-/** Load, repair-check and place whatever the caller passed (bytes, text, three.js objects, arrays, or a list of them). */
-export function prepareModel(input: unknown, cfg: Config): PreparedModel {
-  const objects = toMeshObjects(input);
-  if (objects.length === 0) throw new StrataError('EMPTY_MODEL', 'the input holds no mesh');
-  const merged = mergeObjects(objects);
-  const { mesh, report } = prepareMesh(merged);
-  if (mesh.indices.length === 0) throw new StrataError('EMPTY_MODEL', 'the model has no printable triangles');
-  const placed = placeOnBed(mesh, {
-    center: cfg.center,
-    bedWidth: cfg.buildPlateWidth,
-    bedLength: cfg.buildPlateLength,
-    bedHeight: cfg.buildVolumeHeight,
-    originAtCenter: cfg.originAtCenter,
-  });
-  const warnings = [...report.warnings];
-  if (objects.length > 1) warnings.unshift(`${objects.length} objects placed together on the plate`);
-  return { mesh: placed.mesh, report, offset: placed.offset, warnings };
 }
 
 async function coreCount(): Promise<number> {
@@ -126,6 +103,7 @@ export class Slicer {
    */
   setCustomInfill(spec: CustomInfillSpec | null): this {
     if (spec) {
+      checkImageBudget(spec, this.#config);
       customGenerator(spec, this.#config);
       this.#custom = { ...spec, params: spec.params ? { ...spec.params } : undefined };
     } else {
@@ -194,6 +172,9 @@ export class Slicer {
   ): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
+    // refuse what would fail only after slicing: templates the flavour cannot run, an image over budget
+    checkTemplatesForFlavor(cfg);
+    if (this.#custom) checkImageBudget(this.#custom, cfg);
     // Workers start loading now, while the model is read and placed, if they will be needed (a custom
     // density given as a JS function cannot travel to a worker).
     const auto = await autoThreads();
@@ -233,6 +214,19 @@ export class Slicer {
       threads,
     };
     return { plan: run.plan, stats, warnings: model.warnings };
+  }
+}
+
+/** An infill image that would take more than inflateBudget to decode is refused before it is decoded. */
+function checkImageBudget(spec: CustomInfillSpec, cfg: Config): void {
+  if (spec.image === undefined || spec.shader !== undefined) return;
+  const name = `${spec.name}/cells.png`;
+  const cost = imageDecodeBytes(spec.image, name);
+  if (cost > cfg.inflateBudget * MiB) {
+    throw new StrataError(
+      'LIMIT_EXCEEDED',
+      `${name}: decoding the image takes ${Math.ceil(cost / MiB)} MiB, more than inflateBudget (${cfg.inflateBudget} MiB); raise inflateBudget or use a smaller image`,
+    );
   }
 }
 
