@@ -226,7 +226,10 @@ function inflateExactly(data: Uint8Array, size: number, label: string): Uint8Arr
   return out;
 }
 
+/** A size for messages: bytes, KiB or MiB. */
 function mib(bytes: number): string {
+  if (bytes < 1024) return `${bytes} bytes`;
+  if (bytes < MiB) return `${Math.round(bytes / 1024)} KiB`;
   const v = bytes / MiB;
   return `${v >= 10 ? Math.round(v) : Math.round(v * 10) / 10} MiB`;
 }

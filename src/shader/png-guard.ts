@@ -21,8 +21,10 @@ const SIGNATURE = [137, 80, 78, 71, 13, 10, 26, 10];
 const DROPPED = new Set(['iCCP', 'zTXt', 'iTXt']);
 /** Samples per pixel by colour type (grey, -, RGB, palette, grey+alpha, -, RGBA). */
 const CHANNELS: Readonly<Record<number, number>> = { 0: 1, 2: 3, 3: 1, 4: 2, 6: 4 };
-/** Packed bytes fed to the inflater at a time (at most ~1032× this comes out before a check). */
-const SLICE_BYTES = 4096;
+/** Packed bytes fed to the inflater at a time: at most ~1032× this comes out before a check, so the
+ * slice follows what the pixels need (a lie is caught within a few times the honest size). */
+const MIN_SLICE_BYTES = 256;
+const MAX_SLICE_BYTES = 64 * 1024;
 
 function bad(fileName: string, message: string): StrataError {
   return new StrataError('BAD_IMAGE', `${fileName}: ${message}`);
@@ -68,6 +70,7 @@ export function guardPng(bytes: Uint8Array, fileName: string, head: PngHeader): 
   if (!Number.isFinite(need)) throw bad(fileName, `unknown PNG colour type ${head.colorType}`);
   const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
   const kept: Uint8Array[] = [bytes.subarray(0, 8)];
+  const slice = Math.min(MAX_SLICE_BYTES, Math.max(MIN_SLICE_BYTES, Math.floor(need / 1024)));
   let got = 0;
   let over = false;
   const inflater = new Unzlib((chunk) => {
@@ -83,7 +86,7 @@ export function guardPng(bytes: Uint8Array, fileName: string, head: PngHeader): 
     if (len > bytes.length || end > bytes.length) throw bad(fileName, `broken PNG (the ${type.replace(/[^\x20-\x7e]/g, '?')} chunk runs past the end of the file)`);
     if (type === 'IDAT') {
       try {
-        for (let at = p + 8; at < p + 8 + len && !over; at += SLICE_BYTES) inflater.push(bytes.subarray(at, Math.min(p + 8 + len, at + SLICE_BYTES)));
+        for (let at = p + 8; at < p + 8 + len && !over; at += slice) inflater.push(bytes.subarray(at, Math.min(p + 8 + len, at + slice)));
       } catch (e) {
         throw bad(fileName, `cannot decode PNG (${String((e as Error)?.message ?? e).slice(0, 120)})`);
       }
