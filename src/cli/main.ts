@@ -11,6 +11,7 @@ import { VERSION } from '../pipeline/run.js';
 import { checkFlagsFor, COMMANDS, parseArgs, type Command } from './args.js';
 import { cmdInfo } from './info.js';
 import { cmdInfillers, cmdPresets, cmdSettings } from './lists.js';
+import { processIo, type Io } from './io.js';
 import { abortPendingOutputs, PipeClosed } from './output.js';
 import { cmdPreview, cmdSlice } from './slice.js';
 
@@ -53,11 +54,9 @@ Slice options (slice and preview):
 /** Exit status after the reader of standard output closed it (as if killed by SIGPIPE). */
 export const EXIT_PIPE_CLOSED = 141;
 
-const stdout = (s: string): void => {
-  process.stdout.write(s);
-};
-
-export async function main(argv: readonly string[]): Promise<number> {
+/** Run the command line `argv`; returns the exit status. */
+export async function main(argv: readonly string[], io: Io = processIo): Promise<number> {
+  const stdout = io.out;
   try {
     const args = parseArgs(argv);
     if (args.flags.version) {
@@ -74,13 +73,13 @@ export async function main(argv: readonly string[]): Promise<number> {
     checkFlagsFor(args);
     switch (args.command as Command) {
       case 'slice':
-        await cmdSlice(args);
+        await cmdSlice(args, io);
         return 0;
       case 'info':
         cmdInfo(args, stdout);
         return 0;
       case 'preview':
-        await cmdPreview(args);
+        await cmdPreview(args, io);
         return 0;
       case 'infillers':
         await cmdInfillers(args, stdout);
@@ -95,11 +94,11 @@ export async function main(argv: readonly string[]): Promise<number> {
   } catch (e) {
     if (e instanceof PipeClosed) return EXIT_PIPE_CLOSED;
     if (e instanceof StrataError) {
-      process.stderr.write(`strata: error: ${e.message}\n`);
+      io.err(`strata: error: ${e.message}\n`);
       return 1;
     }
     if (process.env.STRATA_DEBUG) throw e;
-    process.stderr.write(`strata: internal error: ${e instanceof Error ? e.message : String(e)} (STRATA_DEBUG=1 shows details)\n`);
+    io.err(`strata: internal error: ${e instanceof Error ? e.message : String(e)} (STRATA_DEBUG=1 shows details)\n`);
     return 2;
   }
 }

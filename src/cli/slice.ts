@@ -3,7 +3,9 @@ import { extname } from 'node:path';
 import { Slicer } from '../api/slicer.js';
 import { StrataError } from '../errors.js';
 import { layerToSvg } from '../preview/svg.js';
+import { findFilament, findPrinter } from '../settings/presets/index.js';
 import type { ParsedArgs } from './args.js';
+import type { Io } from './io.js';
 import { InputReader, optionsFrom } from './inputs.js';
 import { openOutput, refuseInputAsOutput, type Output } from './output.js';
 import { progressBar } from './progress.js';
@@ -29,7 +31,7 @@ async function writing<T>(out: Output, body: (o: Output) => Promise<T> | T): Pro
   }
 }
 
-export async function cmdSlice(args: ParsedArgs): Promise<void> {
+export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'slice needs at least one model file (see strata --help)');
   const input = new InputReader();
   const slicer = new Slicer(await optionsFrom(args, input));
@@ -39,15 +41,15 @@ export async function cmdSlice(args: ParsedArgs): Promise<void> {
   const outPath = given ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
   refuseInputAsOutput(outPath, input.read, given === undefined);
   const quiet = args.flags.quiet === true;
-  const bar = !quiet && process.stderr.isTTY && outPath !== '-' ? progressBar(process.stderr) : null;
+  const bar = !quiet && io.errIsTTY && outPath !== '-' ? progressBar(process.stderr) : null;
   try {
     const { stats, warnings } = await writing(openOutput(outPath), (out) =>
       slicer.sliceToSink(models, (chunk) => out.write(chunk), { onProgress: bar ? (p) => bar.update(p.fraction, p.stage) : undefined }),
     );
     bar?.done();
     if (!quiet) {
-      for (const w of warnings) process.stderr.write(`strata: warning: ${w}\n`);
-      process.stderr.write(
+      for (const w of warnings) io.err(`strata: warning: ${w}\n`);
+      io.err(
         `${outPath === '-' ? 'G-code' : outPath}: ${stats.layers} layers, print time ${formatDuration(stats.printTimeSeconds)}, ` +
           `filament ${(stats.filamentMm / 1000).toFixed(2)} m (${stats.filamentGrams.toFixed(1)} g), ` +
           `sliced in ${stats.sliceSeconds.toFixed(2)} s on ${stats.threads} thread${stats.threads === 1 ? '' : 's'}\n`,
@@ -58,7 +60,7 @@ export async function cmdSlice(args: ParsedArgs): Promise<void> {
   }
 }
 
-export async function cmdPreview(args: ParsedArgs): Promise<void> {
+export async function cmdPreview(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'preview needs a model file');
   const input = new InputReader();
   const slicer = new Slicer(await optionsFrom(args, input));
@@ -72,7 +74,9 @@ export async function cmdPreview(args: ParsedArgs): Promise<void> {
   const layerText = typeof args.flags.layer === 'string' ? args.flags.layer : String(Math.floor(n / 2));
   const index = Number(layerText);
   if (!Number.isInteger(index) || index < 0 || index >= n) throw new StrataError('BAD_SETTING', `--layer must be a layer number from 0 to ${n - 1}`);
-  const svg = layerToSvg(plan.layers[index], { travel: args.flags.travel === true, widthPx: width, title: `layer ${index} at Z ${plan.layers[index].z}` });
+  const cfg = slicer.config;
+  const title = `layer ${index} of ${n} at Z ${plan.layers[index].z} mm, ${findPrinter(cfg.printerId)?.name ?? cfg.printerId}, ${findFilament(cfg.filamentId)?.name ?? cfg.filamentId}`;
+  const svg = layerToSvg(plan.layers[index], { travel: args.flags.travel === true, widthPx: width, title });
   await writing(openOutput(outPath), (out) => out.write(svg + '\n'));
-  if (outPath !== '-' && args.flags.quiet !== true) process.stderr.write(`${outPath}: layer ${index} of ${n}\n`);
+  if (outPath !== '-' && args.flags.quiet !== true) io.err(`${outPath}: layer ${index} of ${n}\n`);
 }

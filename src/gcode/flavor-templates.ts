@@ -11,6 +11,8 @@
  *   one (BED_MESH_CALIBRATE); Prusa's checks become comments.
  * - Marlin and RepRapFirmware cannot run Klipper macros (START_PRINT…): a template calling one is an
  *   error naming the line, instead of G-code that would start without heating or homing.
+ *
+ * Without a heated bed (heatedBed false), bed temperature commands (M140, M190) become comments.
  */
 import { StrataError } from '../errors.js';
 import type { GcodeFlavor } from './flavor.js';
@@ -57,6 +59,8 @@ const REWRITES: Readonly<Record<GcodeFlavor, Readonly<Record<string, Rewrite>>>>
   },
 };
 
+const NO_BED: Readonly<Record<string, Rewrite>> = { M140: commentOut('no heated bed'), M190: commentOut('no heated bed') };
+
 const FIRMWARE: Readonly<Record<GcodeFlavor, string>> = { marlin: 'Marlin', klipper: 'Klipper', reprap: 'RepRapFirmware' };
 
 /** A G-code command word: a letter and a number (G1, M104, M862.3, T0). */
@@ -72,8 +76,8 @@ function split(line: string): { words: string[]; comment: string } {
  * The template's lines for `flavor` (see the file comment). Throws StrataError BAD_SETTING for a
  * Klipper macro under another flavour. `name` is the setting, for messages.
  */
-export function templateForFlavor(lines: readonly string[], flavor: GcodeFlavor, name: string): string[] {
-  const rewrites = REWRITES[flavor];
+export function templateForFlavor(lines: readonly string[], flavor: GcodeFlavor, name: string, heatedBed = true): string[] {
+  const rewrites: Readonly<Record<string, Rewrite>> = heatedBed ? REWRITES[flavor] : { ...REWRITES[flavor], ...NO_BED };
   const out: string[] = [];
   lines.forEach((line, i) => {
     const { words, comment } = split(line);

@@ -55,8 +55,8 @@ export function writeGcode(
   const flavor = FLAVORS[settings.gcodeFlavor];
   const relative = settings.extruderMode === 'relative';
   const derived = derivedTemplateValues(plan, estimate);
-  const start = templateForFlavor(templateLines(expandTemplate('startGcode', settings.startGcode, settings, derived)), settings.gcodeFlavor, 'startGcode');
-  const end = templateForFlavor(templateLines(expandTemplate('endGcode', settings.endGcode, settings, derived)), settings.gcodeFlavor, 'endGcode');
+  const start = templateForFlavor(templateLines(expandTemplate('startGcode', settings.startGcode, settings, derived)), settings.gcodeFlavor, 'startGcode', settings.heatedBed);
+  const end = templateForFlavor(templateLines(expandTemplate('endGcode', settings.endGcode, settings, derived)), settings.gcodeFlavor, 'endGcode', settings.heatedBed);
 
   const out = new ChunkedText(sink, CHUNK_BYTES);
   if (!plan.layers.some((l) => l.steps.some((s) => s.kind === 'extrude'))) {

@@ -12,10 +12,12 @@ export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' |
 
 /**
  * An input a setting needs before it can change the output, beyond other settings (`onlyWith`):
- * `several-models` (arranging models on the bed), `custom-infill` (an IceSL shader or image infill:
- * `customInfill`, `--infill-shader`, `--infill-image`), `custom-image-infill` (an image infill).
+ * `several-models` (arranging models on the bed), `off-centre-model` (a model not at the bed centre),
+ * `thin-walls` (a part whose layers are walls only, so one layer ends next to where the next starts),
+ * `custom-infill` (an IceSL shader or image infill: `customInfill`, `--infill-shader`,
+ * `--infill-image`), `custom-image-infill` (an image infill).
  */
-export type SettingNeed = 'several-models' | 'custom-infill' | 'custom-image-infill';
+export type SettingNeed = 'several-models' | 'off-centre-model' | 'thin-walls' | 'custom-infill' | 'custom-image-infill';
 
 interface Base {
   unit: Unit;
@@ -165,7 +167,7 @@ export const SCHEMA = {
   // ── infill ───────────────────────────────────────────────────────────────────
   infillDensity: num(20, 0, 100, '%', 'infill', 'Sparse infill density: extruded area over region area.'),
   infillPattern: enm(PATTERN_IDS, 'grid', 'infill', 'Sparse infill pattern.'),
-  infillPatternCentering: enm(['object', 'global'] as const, 'object', 'infill', 'Centre the pattern on each object or on the build plate.'),
+  infillPatternCentering: when(enm(['object', 'global'] as const, 'object', 'infill', 'Centre the pattern on each object or on the build plate.'), null, 'off-centre-model'),
   infillAngle: num(45, -180, 180, '°', 'infill', 'Base direction of the infill lines.'),
   infillOverlap: num(25, 0, 100, '%', 'infill', 'How far infill reaches into the innermost wall, % of the line width.'),
   infillImagePixelSize: when(num(0.1, 0.001, 10, 'mm', 'infill', "Size of one pixel of a custom infill image (cells.png), IceSL's labeling_mm_per_pixel."), null, 'custom-image-infill'),
@@ -188,7 +190,7 @@ export const SCHEMA = {
   retractionSpeed: when(num(45, 1, 200, 'mm/s', 'travel', 'Retraction and prime speed.'), { retractionEnabled: true }),
   retractionExtraPrime: when(num(0, 0, 5, 'mm', 'travel', 'Extra filament pushed after a retraction.'), { retractionEnabled: true }),
   retractionMinTravel: when(num(1.5, 0, 100, 'mm', 'travel', 'Travels shorter than this inside one island do not retract.'), { retractionEnabled: true }),
-  retractOnLayerChange: when(bool(true, 'travel', 'Retract when moving to the next layer.'), { retractionEnabled: true }),
+  retractOnLayerChange: when(bool(true, 'travel', 'Retract when moving to the next layer, even for a travel too short to retract otherwise.'), { retractionEnabled: true }, 'thin-walls'),
   zHop: when(num(0, 0, 10, 'mm', 'travel', 'Lift the nozzle by this much during retracted travels (0 = off).'), { retractionEnabled: true }),
 
   // ── cooling and temperature ──────────────────────────────────────────────────
