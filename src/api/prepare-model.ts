@@ -56,6 +56,7 @@ export function prepareModel(input: unknown, cfg: Config): PreparedModel {
     bedHeight: cfg.buildVolumeHeight,
     originAtCenter: cfg.originAtCenter,
     spacing: cfg.objectSpacing + 2 * brim,
+    margin: adhesionMargin(cfg),
     transform: {
       upAxis: cfg.upAxis,
       rotate: [cfg.rotateX, cfg.rotateY, cfg.rotateZ],
@@ -125,6 +126,14 @@ function combineReports(reports: readonly MeshReport[]): MeshReport {
     out.max = [0, 0, 0];
   }
   return out;
+}
+
+/** How far the skirt or brim reaches beyond the models, mm. */
+function adhesionMargin(cfg: Config): { mm: number; what: string } {
+  const line = cfg.firstLayerLineWidthMm;
+  if (cfg.adhesionType === 'skirt') return { mm: cfg.skirtDistance + cfg.skirtLoops * line, what: 'skirt' };
+  if (cfg.adhesionType === 'brim') return { mm: cfg.brimWidth + line / 2, what: 'brim' };
+  return { mm: 0, what: '' };
 }
 
 function round(v: number): number {

@@ -189,3 +189,19 @@ function volume(m: Mesh): number {
   }
   return v / 6;
 }
+
+test('the skirt or brim around the models must fit on the bed too', () => {
+  const skirt = { mm: 3.4, what: 'skirt' };
+  assert.doesNotThrow(() => placeModels([model('m', box(0, 0, 0, 213, 20, 5))], { ...BED, margin: skirt }));
+  doesNotFit(() => placeModels([model('m', box(0, 0, 0, 215, 20, 5))], { ...BED, margin: skirt }), /215\.0 mm wide in X \(221\.8 mm with its skirt\), the bed 220 mm/);
+  doesNotFit(
+    () => placeModels([model('m', box(2, 50, 0, 22, 70, 5))], { ...BED, center: false, margin: skirt }),
+    /^m leaves the bed by 1\.4 mm past the left edge \(X 2\.0 to 22\.0 mm with its 3\.4 mm skirt, the bed 0 to 220 mm\)/,
+  );
+  // arranged models keep their skirt on the bed
+  const r = placeModels([model('a', box(0, 0, 0, 100, 100, 5)), model('b', box(0, 0, 0, 100, 100, 5))], { ...BED, spacing: 6, margin: skirt });
+  for (const o of r.objects) {
+    const [lo, hi] = bounds(o.mesh);
+    assert.ok(lo[0] >= 3.4 - 1e-3 && hi[0] <= 220 - 3.4 + 1e-3 && lo[1] >= 3.4 - 1e-3 && hi[1] <= 220 - 3.4 + 1e-3);
+  }
+});

@@ -51,6 +51,8 @@ export interface PlaceOptions {
   originAtCenter: boolean;
   /** Gap between arranged models, mm (default 6). */
   spacing?: number;
+  /** What the first layer adds around the models (a skirt or brim), mm, kept on the bed too. */
+  margin?: { mm: number; what: string };
   /** Turned and scaled before placing (default none). */
   transform?: ModelTransform;
 }
@@ -125,7 +127,10 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
   const { bedWidth: w, bedLength: l } = opts;
   const bedX0 = opts.originAtCenter ? -w / 2 : 0;
   const bedY0 = opts.originAtCenter ? -l / 2 : 0;
-  for (const m of turned) checkSize(m.name, m.box, opts);
+  const margin = opts.margin && opts.margin.mm > 0 ? opts.margin : { mm: 0, what: '' };
+  const around = margin.mm;
+  const withMargin = around > 0 ? ` with its ${mm(around)} mm ${margin.what}` : '';
+  for (const m of turned) checkSize(m.name, m.box, opts, margin);
 
   const offsets: Array<[number, number, number]> = [];
   const warnings: string[] = [];
@@ -139,14 +144,14 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
       const gap = opts.spacing ?? 6;
       const spots = arrangeFootprints(
         turned.map((m) => ({ width: m.box.max[0] - m.box.min[0], length: m.box.max[1] - m.box.min[1] })),
-        w,
-        l,
+        w - 2 * around,
+        l - 2 * around,
         gap,
       );
       if (spots === null) {
         throw new StrataError(
           'DOES_NOT_FIT',
-          `the ${turned.length} models do not fit on the ${fmt(w)} × ${fmt(l)} mm bed together, ${fmt(gap)} mm apart: slice fewer at once, make them smaller or lower objectSpacing`,
+          `the ${turned.length} models do not fit on the ${fmt(w)} × ${fmt(l)} mm bed together, ${fmt(gap)} mm apart${withMargin.replace(' its', ' their')}: slice fewer at once, make them smaller or lower objectSpacing`,
         );
       }
       turned.forEach((m, i) => {
@@ -161,12 +166,12 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
       const { min, max } = m.box;
       const past: string[] = [];
       const side = (by: number, where: string, axis: string, lo: number, hi: number, b0: number, b1: number): void => {
-        if (by > FIT_EPS) past.push(`${mm(by)} mm past the ${where} edge (${axis} ${mm(lo)} to ${mm(hi)} mm, the bed ${fmt(b0)} to ${fmt(b1)} mm)`);
+        if (by > FIT_EPS) past.push(`${mm(by)} mm past the ${where} edge (${axis} ${mm(lo)} to ${mm(hi)} mm${withMargin}, the bed ${fmt(b0)} to ${fmt(b1)} mm)`);
       };
-      side(bedX0 - min[0], 'left', 'X', min[0], max[0], bedX0, bedX0 + w);
-      side(max[0] - (bedX0 + w), 'right', 'X', min[0], max[0], bedX0, bedX0 + w);
-      side(bedY0 - min[1], 'front', 'Y', min[1], max[1], bedY0, bedY0 + l);
-      side(max[1] - (bedY0 + l), 'back', 'Y', min[1], max[1], bedY0, bedY0 + l);
+      side(bedX0 - (min[0] - around), 'left', 'X', min[0], max[0], bedX0, bedX0 + w);
+      side(max[0] + around - (bedX0 + w), 'right', 'X', min[0], max[0], bedX0, bedX0 + w);
+      side(bedY0 - (min[1] - around), 'front', 'Y', min[1], max[1], bedY0, bedY0 + l);
+      side(max[1] + around - (bedY0 + l), 'back', 'Y', min[1], max[1], bedY0, bedY0 + l);
       if (past.length) off.push(`${m.name} leaves the bed by ${past.join(' and ')}`);
     }
     if (off.length) {
@@ -191,12 +196,14 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
 }
 
 /** Refuse a model larger than the build volume (only the size matters here, not the position). */
-function checkSize(name: string, box: Box, opts: PlaceOptions): void {
+function checkSize(name: string, box: Box, opts: PlaceOptions, margin: { mm: number; what: string }): void {
   const { bedWidth: w, bedLength: l, bedHeight: h } = opts;
   const sx = box.max[0] - box.min[0], sy = box.max[1] - box.min[1], sz = box.max[2] - box.min[2];
+  const m = 2 * margin.mm;
+  const plus = (size: number, bed: number) => (m > 0 && size <= bed + FIT_EPS ? ` (${mm(size + m)} mm with its ${margin.what})` : '');
   const problems: string[] = [];
-  if (sx > w + FIT_EPS) problems.push(`${mm(sx)} mm wide in X, the bed ${fmt(w)} mm`);
-  if (sy > l + FIT_EPS) problems.push(`${mm(sy)} mm deep in Y, the bed ${fmt(l)} mm`);
+  if (sx + m > w + FIT_EPS) problems.push(`${mm(sx)} mm wide in X${plus(sx, w)}, the bed ${fmt(w)} mm`);
+  if (sy + m > l + FIT_EPS) problems.push(`${mm(sy)} mm deep in Y${plus(sy, l)}, the bed ${fmt(l)} mm`);
   if (sz > h + FIT_EPS) problems.push(`${mm(sz)} mm tall in Z, the volume ${fmt(h)} mm`);
   if (problems.length > 0) {
     throw new StrataError(
