@@ -162,6 +162,8 @@ function checkGcode(gcode: string, cfg: ReturnType<typeof resolveConfig>, layers
     if (!code) continue;
     const [word, ...params] = code.split(/\s+/);
     assert.match(word, WORD, `${what}: line ${n + 1} "${lines[n]}"`);
+    // M117 shows a message: free text
+    if (word === 'M117') continue;
     for (const p of params) assert.match(p, PARAM, `${what}: line ${n + 1} "${lines[n]}"`);
     if (word === 'G0' || word === 'G1') {
       const inLayers = n > firstLayer && n < lastLayerLine;
@@ -177,7 +179,8 @@ function checkGcode(gcode: string, cfg: ReturnType<typeof resolveConfig>, layers
   assert.ok(gcode.includes(`;LAYER_COUNT:${layers}\n`), `${what}: layer count`);
   const parsed = parseGcode(gcode);
   assert.equal(parsed.layers.filter((l) => l.extrusions.count > 0).length > 0, true, `${what}: something is extruded`);
-  assert.equal(parsed.balance.unbalanced, 0, `${what}: retractions balanced`);
+  // an extra prime after each retraction pushes more than was pulled back, on purpose
+  if (cfg.retractionExtraPrime === 0) assert.equal(parsed.balance.unbalanced, 0, `${what}: retractions balanced`);
 }
 
 let maxRssSeen = 0;
