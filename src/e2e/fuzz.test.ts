@@ -292,5 +292,5 @@ test('random settings in and out of range: valid G-code or one StrataError', { s
 
 test('peak memory stays bounded over all the cases', { skip }, () => {
   const peakMiB = Math.max(maxRssSeen, process.resourceUsage().maxRSS * 1024) / (1024 * 1024);
-  assert.ok(peakMiB < 768, `peak RSS ${Math.round(peakMiB)} MiB`);
+  assert.ok(peakMiB < 512, `peak RSS ${Math.round(peakMiB)} MiB`);
 });
