@@ -133,6 +133,7 @@ function adhesionMargin(cfg: Config): { mm: number; what: string } {
   const line = cfg.firstLayerLineWidthMm;
   if (cfg.adhesionType === 'skirt') return { mm: cfg.skirtDistance + cfg.skirtLoops * line, what: 'skirt' };
   if (cfg.adhesionType === 'brim') return { mm: cfg.brimWidth + line / 2, what: 'brim' };
+  if (cfg.adhesionType === 'raft') return { mm: cfg.raftMargin, what: 'raft' };
   return { mm: 0, what: '' };
 }
 

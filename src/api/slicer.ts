@@ -10,7 +10,8 @@ import { StrataError } from '../errors.js';
 import { MiB, prepareModel, type PreparedModel } from './prepare-model.js';
 import { runPipeline, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
-import { customGenerator, isTransferable, type CustomInfillSpec } from '../pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import { isTransferable, loadCustomInfill, loadedCustomInfill } from '../pipeline/custom-infill-loader.js';
 import { releaseWorkers, startWorkers } from '../workers/pool.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey, type Settings, type SliceOptions } from '../settings/schema.js';
 import { checkKey, resolveConfig, validateValue, type Config } from '../settings/resolve.js';
@@ -99,12 +100,14 @@ export class Slicer {
 
   /**
    * Use a custom infiller (IceSL format: a GLSL `cellular()` shader or a cells.png image) instead
-   * of the built-in pattern; null goes back to `infillPattern`. Compiled now, so errors show here.
+   * of the built-in pattern; null goes back to `infillPattern`. Compiled now, so errors show here,
+   * when the shader compiler is loaded (always from the Node entry; in the browser build after
+   * `await loadCustomInfill()`); otherwise the slice loads it and reports the error.
    */
   setCustomInfill(spec: CustomInfillSpec | null): this {
     if (spec) {
       checkImageBudget(spec, this.#config);
-      customGenerator(spec, this.#config);
+      loadedCustomInfill()?.customGenerator(spec, this.#config);
       this.#custom = { ...spec, params: spec.params ? { ...spec.params } : undefined };
     } else {
       this.#custom = undefined;
@@ -175,6 +178,8 @@ export class Slicer {
     // refuse what would fail only after slicing: templates the flavour cannot run, an image over budget
     checkTemplatesForFlavor(cfg);
     if (this.#custom) checkImageBudget(this.#custom, cfg);
+    // the shader compiler loads on first use (the pipeline compiles the infiller and reports its errors)
+    if (this.#custom) await loadCustomInfill();
     // Workers start loading now, while the model is read and placed, if they will be needed (a custom
     // density given as a JS function cannot travel to a worker).
     const auto = await autoThreads();
@@ -189,13 +194,11 @@ export class Slicer {
       const layersEstimate = b.max[2] / cfg.layerHeight;
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
       threads = cfg.threads > 0 ? cfg.threads : small ? 1 : auto;
-      run = await runPipeline(model.mesh, cfg, {
+      run = await runPipeline(model.objects, cfg, {
         threads,
         sink,
         onProgress: opts.onProgress,
         signal: opts.signal,
-        objectCenter: [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2],
-        height: b.max[2],
         custom: this.#custom,
         started,
       });

@@ -19,7 +19,7 @@ import { resolveConfig } from '../settings/resolve.js';
 import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey, type SettingNeed } from '../settings/schema.js';
 import { COMMANDS, FLAGS, kebab, SLICING, type Command } from './args.js';
 import { main } from './main.js';
-import { blockWithHole } from './test-model.js';
+import { blockWithHole, overhangPart } from './test-model.js';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const DIR = mkdtempSync(join(tmpdir(), 'strata-flags-'));
@@ -32,6 +32,8 @@ const OFF_CENTRE = join(DIR, 'off-centre.stl');
 writeFileSync(OFF_CENTRE, blockWithHole(14, 10.4, 3.5, 64, [40, 30]));
 const TUBE = join(DIR, 'tube.stl');
 writeFileSync(TUBE, blockWithHole(14, 10.4, 6, 8, [0, 0], true));
+const OVERHANGS = join(DIR, 'overhangs.stl');
+writeFileSync(OVERHANGS, overhangPart());
 
 interface Run {
   code: number;
@@ -66,6 +68,7 @@ const NEEDS = {
   'several-models': { args: [], models: [MODEL, MODEL2] },
   'off-centre-model': { args: ['--no-center'], models: [OFF_CENTRE] },
   'thin-walls': { args: [], models: [TUBE] },
+  overhangs: { args: [], models: [OVERHANGS] },
   'custom-infill': { args: ['--infill-pattern', 'checker'], models: [MODEL] },
   'custom-image-infill': { args: ['--infill-pattern', 'example-image'], models: [MODEL] },
 } as const satisfies Record<SettingNeed, { args: readonly string[]; models: readonly string[] }>;
@@ -127,6 +130,13 @@ function outOfRange(def: SettingDef): string[] {
 /** Refusals that come from the setting doing its job (a limit), not from the value being invalid. */
 const LIMIT_REFUSAL = /does not fit|leaves the bed|raise inflateBudget/;
 
+/**
+ * Settings declared before the code that reads them: tree support is a placeholder (normal columns,
+ * src/regions/support/tree.ts), so its shape settings do nothing yet. The test insists they still do
+ * nothing, so the list must shrink the day they start to work.
+ */
+const NOT_YET_EFFECTIVE: ReadonlySet<string> = new Set(['supportTreeBranchAngle', 'supportTreeTipDiameter', 'supportTreeBranchDiameter', 'supportTreeDiameterAngle']);
+
 const baselines = new Map<string, Promise<string>>();
 function baseline(args: readonly string[], models: readonly string[]): Promise<string> {
   const k = JSON.stringify([args, models]);
@@ -170,8 +180,12 @@ test('every setting flag changes the G-code (or is refused by the slice it limit
         if (def.type !== 'enum') break;
       } else same.push(value);
     }
-    if (def.type === 'enum' && same.length) problems.push(`${key}: ${same.map(flagValue).join(', ')} gave the same G-code as ${flagValue(current)}`);
-    if (!changed && !limited) problems.push(`${key}: no value changed the G-code (tried ${candidates(key, def, current).map(flagValue).join(', ')})`);
+    if (NOT_YET_EFFECTIVE.has(key)) {
+      if (changed || limited) problems.push(`${key} now changes the G-code: take it out of NOT_YET_EFFECTIVE`);
+    } else {
+      if (def.type === 'enum' && same.length) problems.push(`${key}: ${same.map(flagValue).join(', ')} gave the same G-code as ${flagValue(current)}`);
+      if (!changed && !limited) problems.push(`${key}: no value changed the G-code (tried ${candidates(key, def, current).map(flagValue).join(', ')})`);
+    }
     for (const bad of outOfRange(def)) {
       const r = await cli('slice', MODEL, '-o', join(DIR, 'never.gcode'), '-q', `--${kebab(key)}`, bad);
       if (r.code !== 1 || !/^strata: error: [^\n]+\n$/.test(r.err)) problems.push(`${key}=${bad.slice(0, 20)} was not refused (${r.code}: ${r.err.slice(0, 80)})`);

@@ -13,6 +13,7 @@ import { cmdInfo } from './info.js';
 import { cmdInfillers, cmdPresets, cmdSettings } from './lists.js';
 import { processIo, type Io } from './io.js';
 import { abortPendingOutputs, PipeClosed } from './output.js';
+import { cmdServe } from './serve.js';
 import { cmdPreview, cmdSlice } from './slice.js';
 
 const HELP = `strata ${VERSION}: a fast FFF slicer
@@ -25,6 +26,7 @@ Usage:
   strata infillers [DIR...]                         list custom infillers (IceSL layout) and their parameters
   strata presets [--json]                          list printer and filament presets
   strata settings [--json]                         list every setting with its flag, unit, default and range
+  strata serve [--port N]                          the web page on http://127.0.0.1:N/ (default 8080)
 
 Slice options (slice and preview):
   -o, --output FILE      where to write (- for stdout; slice's default: MODEL.gcode). The file is
@@ -58,6 +60,11 @@ export const EXIT_PIPE_CLOSED = 141;
 export async function main(argv: readonly string[], io: Io = processIo): Promise<number> {
   const stdout = io.out;
   try {
+    // the web page server parses its own few flags (serve.ts)
+    if (argv[0] === 'serve') {
+      await cmdServe(argv.slice(1));
+      return 0;
+    }
     const args = parseArgs(argv);
     if (args.flags.version) {
       stdout(`strata ${VERSION}\n`);
@@ -68,7 +75,7 @@ export async function main(argv: readonly string[], io: Io = processIo): Promise
       return 0;
     }
     if (!(COMMANDS as readonly string[]).includes(args.command)) {
-      throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: ${COMMANDS.join(', ')})`);
+      throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: ${COMMANDS.join(', ')}, serve)`);
     }
     checkFlagsFor(args);
     switch (args.command as Command) {

@@ -1,6 +1,6 @@
 /** `strata slice` and `strata preview`: models and settings in, G-code or one layer's SVG out. */
 import { extname } from 'node:path';
-import { Slicer } from '../api/slicer.js';
+import { Slicer } from '../index.js';
 import { StrataError } from '../errors.js';
 import { layerToSvg } from '../preview/svg.js';
 import { findFilament, findPrinter } from '../settings/presets/index.js';

@@ -29,10 +29,12 @@ function packedFiles(): string[] {
 
 /** Relative module specifiers a .js or .d.ts file refers to (imports, re-exports, dynamic imports, worker URLs). */
 function references(file: string): string[] {
-  const text = readFileSync(join(ROOT, file), 'utf8');
+  // comments may quote a specifier without using it
+  const text = readFileSync(join(ROOT, file), 'utf8').replace(/\/\*[\s\S]*?\*\//g, '').replace(/^\s*\/\/.*$/gm, '');
   const out: string[] = [];
   const patterns = [
-    /(?:^|[\s;])(?:import|export)\s(?:[^'"`;]*?\sfrom\s*)?['"](\.{1,2}\/[^'"]+)['"]/g,
+    // import/export … from "./x.js", also minified (import{a}from"./x.js"), and side-effect imports
+    /(?:^|[\s;{}])(?:import|export)\b\s*(?:[^'"`;]*?\bfrom\s*)?['"](\.{1,2}\/[^'"]+)['"]/g,
     /\bimport\(\s*['"](\.{1,2}\/[^'"]+)['"]\s*\)/g,
     /\bnew URL\(\s*['"](\.{1,2}\/[^'"]+\.js)['"]\s*,\s*import\.meta\.url\s*\)/g,
   ];
@@ -47,8 +49,9 @@ test('npm pack ships the library, CLI, worker, types, infillers and examples, an
     main: string;
     types: string;
     bin: Record<string, string>;
-    exports: Record<string, { types: string; default: string }>;
+    exports: unknown;
   };
+  const leaves = (v: unknown): string[] => (typeof v === 'string' ? [v] : v && typeof v === 'object' ? Object.values(v).flatMap(leaves) : []);
 
   // nothing a user never calls
   const unwanted = files.filter((f) => /\.test\.|\.map$|(^|\/)(e2e|analysis|bench|tools|fixtures?)\/|\.gcode$|(^|\/)test-|(^|\/)bench\./.test(f));
@@ -56,7 +59,7 @@ test('npm pack ships the library, CLI, worker, types, infillers and examples, an
 
   // what users do use
   const strip = (p: string) => p.replace(/^\.\//, '');
-  const roots = [pkg.main, pkg.types, ...Object.values(pkg.bin), ...Object.values(pkg.exports).flatMap((e) => [e.types, e.default])].map(strip);
+  const roots = [pkg.main, pkg.types, ...Object.values(pkg.bin), ...leaves(pkg.exports)].map(strip);
   for (const f of [...roots, 'package.json', 'README.md', 'dist/workers/layer-worker.js', 'examples/calibration-cube.stl']) {
     assert.ok(shipped.has(f), `${f} is published`);
   }

@@ -16,7 +16,7 @@ import { FLAVORS } from './flavor.js';
 import { templateForFlavor, templateHeatsNozzle } from './flavor-templates.js';
 import { derivedTemplateValues, headerLines, type GcodeMeta } from './header.js';
 import { MoveWriter } from './move-writer.js';
-import { walkPlan } from '../plan/moves.js';
+import { walkPlanSteps } from '../plan/moves.js';
 import { expandTemplate, placeholders, settingValue } from './template.js';
 
 export type { GcodeMeta } from './header.js';
@@ -52,6 +52,18 @@ export function writeGcode(
   sink: (chunk: string) => void,
   meta: GcodeMeta,
 ): void {
+  const steps = writeGcodeSteps(plan, settings, estimate, sink, meta);
+  while (!steps.next().done);
+}
+
+/** `writeGcode` as steps: yields after each layer, so a caller can pause (and stop) between layers. */
+export function* writeGcodeSteps(
+  plan: PrintPlan,
+  settings: Settings,
+  estimate: PlanEstimate,
+  sink: (chunk: string) => void,
+  meta: GcodeMeta,
+): Generator<void, void> {
   const flavor = FLAVORS[settings.gcodeFlavor];
   const relative = settings.extruderMode === 'relative';
   const derived = derivedTemplateValues(plan, estimate);
@@ -89,7 +101,7 @@ export function writeGcode(
     nozzleTemperature: firstNozzle,
     bedTemperature: firstBed,
   });
-  walkPlan(plan, settings, moves);
+  yield* walkPlanSteps(plan, settings, moves);
 
   for (const l of end) out.line(l);
   out.flush();

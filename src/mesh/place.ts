@@ -6,7 +6,7 @@
  * not fit the build volume is refused, naming it, the axis and by how much.
  */
 import { StrataError } from '../errors.js';
-import { arrangeFootprints } from './arrange.js';
+import { arrangeAll } from './arrange.js';
 import { isIdentity, modelMatrix, NO_TRANSFORM, type ModelTransform } from './model-transform.js';
 import { transformPoints } from './transform.js';
 import type { Mesh, MeshObject } from './types.js';
@@ -142,21 +142,29 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
       offsets.push([cx - (min[0] + max[0]) / 2, cy - (min[1] + max[1]) / 2, -min[2]]);
     } else {
       const gap = opts.spacing ?? 6;
-      const spots = arrangeFootprints(
-        turned.map((m) => ({ width: m.box.max[0] - m.box.min[0], length: m.box.max[1] - m.box.min[1] })),
-        w - 2 * around,
-        l - 2 * around,
-        gap,
-      );
-      if (spots === null) {
+      const sizes = turned.map((m) => ({ width: m.box.max[0] - m.box.min[0], depth: m.box.max[1] - m.box.min[1] }));
+      // packed around the centre of a bed twice the size, so the first model in the middle does not
+      // pin the group; then the group has to fit the real bed, and is centred on it
+      const bedW = w - 2 * around;
+      const bedL = l - 2 * around;
+      const spots = arrangeAll(sizes, { center: [0, 0], width: 2 * bedW, depth: 2 * bedL }, gap);
+      let gx0 = Infinity, gy0 = Infinity, gx1 = -Infinity, gy1 = -Infinity;
+      spots?.forEach(([x, y], i) => {
+        gx0 = Math.min(gx0, x - sizes[i].width / 2);
+        gx1 = Math.max(gx1, x + sizes[i].width / 2);
+        gy0 = Math.min(gy0, y - sizes[i].depth / 2);
+        gy1 = Math.max(gy1, y + sizes[i].depth / 2);
+      });
+      if (spots === null || gx1 - gx0 > bedW + FIT_EPS || gy1 - gy0 > bedL + FIT_EPS) {
         throw new StrataError(
           'DOES_NOT_FIT',
           `the ${turned.length} models do not fit on the ${fmt(w)} × ${fmt(l)} mm bed together, ${fmt(gap)} mm apart${withMargin.replace(' its', ' their')}: slice fewer at once, make them smaller or lower objectSpacing`,
         );
       }
+      const sx = cx - (gx0 + gx1) / 2, sy = cy - (gy0 + gy1) / 2;
       turned.forEach((m, i) => {
         const { min, max } = m.box;
-        offsets.push([cx + spots[i][0] - (min[0] + max[0]) / 2, cy + spots[i][1] - (min[1] + max[1]) / 2, -min[2]]);
+        offsets.push([sx + spots[i][0] - (min[0] + max[0]) / 2, sy + spots[i][1] - (min[1] + max[1]) / 2, -min[2]]);
       });
     }
   } else {

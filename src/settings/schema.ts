@@ -6,18 +6,19 @@
  */
 import { PATTERN_IDS } from '../infill/types.js';
 
-export type Unit = 'mm' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '×' | 'MiB' | '';
+export type Unit = 'mm' | 'mm²' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '×' | 'MiB' | '';
 /** The stage a setting affects. `runtime` settings change how a slice runs, never the G-code it makes. */
-export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' | 'adhesion' | 'travel' | 'cooling' | 'gcode' | 'runtime';
+export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' | 'support' | 'adhesion' | 'travel' | 'cooling' | 'gcode' | 'runtime';
 
 /**
  * An input a setting needs before it can change the output, beyond other settings (`onlyWith`):
  * `several-models` (arranging models on the bed), `off-centre-model` (a model not at the bed centre),
  * `thin-walls` (a part whose layers are walls only, so one layer ends next to where the next starts),
+ * `overhangs` (a part with overhangs: a bridge between two pillars, a cantilever over a ledge, a slope),
  * `custom-infill` (an IceSL shader or image infill: `customInfill`, `--infill-shader`,
  * `--infill-image`), `custom-image-infill` (an image infill).
  */
-export type SettingNeed = 'several-models' | 'off-centre-model' | 'thin-walls' | 'custom-infill' | 'custom-image-infill';
+export type SettingNeed = 'several-models' | 'off-centre-model' | 'thin-walls' | 'overhangs' | 'custom-infill' | 'custom-image-infill';
 
 interface Base {
   unit: Unit;
@@ -208,10 +209,52 @@ export const SCHEMA = {
   flowRate: num(100, 10, 300, '%', 'gcode', 'Extrusion multiplier.'),
 
   // ── adhesion ─────────────────────────────────────────────────────────────────
-  adhesionType: enm(['skirt', 'brim', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, or none.'),
+  adhesionType: enm(['skirt', 'brim', 'raft', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, a raft under it, or none.'),
   skirtLoops: when(int(1, 1, 20, 'count', 'adhesion', 'Skirt loops.'), { adhesionType: 'skirt' }),
   skirtDistance: when(num(3, 0, 50, 'mm', 'adhesion', 'Gap between the skirt and the print.'), { adhesionType: 'skirt' }),
   brimWidth: when(num(8, 0, 50, 'mm', 'adhesion', 'Brim width.'), { adhesionType: 'brim' }),
+
+  // ── raft ─────────────────────────────────────────────────────────────────────
+  raftMargin: when(num(3, 0, 50, 'mm', 'adhesion', 'How far the raft reaches beyond the first layer of the print (and its support).'), { adhesionType: 'raft' }),
+  raftBaseThickness: when(num(0.3, 0.05, 1.5, 'mm', 'adhesion', 'Thickness of the raft base layer (thick, wide lines on the bed).'), { adhesionType: 'raft' }),
+  raftBaseLineWidth: when(optNum(0.2, 3, 'mm', 'adhesion', 'Line width of the raft base. Empty (null) = 2 × nozzleDiameter.'), { adhesionType: 'raft' }),
+  raftBaseLineSpacing: when(optNum(0.2, 10, 'mm', 'adhesion', 'Distance between raft base lines. Empty (null) = 2 × the base line width.'), { adhesionType: 'raft' }),
+  raftInterfaceLayers: when(int(1, 0, 10, 'count', 'adhesion', 'Raft layers between the base and the surface, with lines across those below.'), { adhesionType: 'raft' }),
+  raftInterfaceLineSpacing: when(optNum(0.2, 10, 'mm', 'adhesion', 'Distance between raft interface lines. Empty (null) = 2.5 × lineWidth.'), { adhesionType: 'raft' }),
+  raftSurfaceLayers: when(int(2, 0, 10, 'count', 'adhesion', 'Solid raft layers the print stands on.'), { adhesionType: 'raft' }),
+  raftAirGap: when(num(0.2, 0, 1, 'mm', 'adhesion', 'Vertical gap between the raft surface and the first layer of the print, so the raft comes off.'), { adhesionType: 'raft' }),
+  raftSpeed: when(num(20, 1, 1000, 'mm/s', 'adhesion', 'Speed of the raft base and interface layers (the surface uses skinSpeed).'), { adhesionType: 'raft' }),
+
+  // ── support ──────────────────────────────────────────────────────────────────
+  supportEnabled: when(bool(false, 'support', 'Print support under overhangs.'), null, 'overhangs'),
+  supportType: when(enm(['normal', 'tree'] as const, 'normal', 'support', 'Support shape: straight columns under each overhang (normal), or trees whose branches merge on their way down (less material, easier to remove).'), { supportEnabled: true }, 'overhangs'),
+  supportPlacement: when(enm(['everywhere', 'buildPlate'] as const, 'everywhere', 'support', 'Where support may stand: anywhere (also on the part, with a floor), or only on the build plate.'), { supportEnabled: true }, 'overhangs'),
+  supportThreshold: when(num(50, 0, 89, '°', 'support', 'Overhang angle from vertical beyond which a surface gets support.'), { supportEnabled: true }, 'overhangs'),
+  supportMinArea: when(num(0.5, 0, 1000, 'mm²', 'support', 'Overhang areas smaller than this on a layer get no support (specks).'), { supportEnabled: true }, 'overhangs'),
+  supportSkipBridges: when(num(0, 0, 500, 'mm', 'support', 'Overhangs held at both sides by the layer below that span at most this far are bridged, not supported (0 = support every overhang).'), { supportEnabled: true }, 'overhangs'),
+  supportPattern: when(enm(['zigzag', 'lines', 'grid'] as const, 'zigzag', 'support', 'Pattern of the support body: parallel lines joined at their ends (zigzag), separate lines, or a grid.'), { supportEnabled: true }, 'overhangs'),
+  supportDensity: when(num(15, 1, 100, '%', 'support', 'Density of the support body.'), { supportEnabled: true }, 'overhangs'),
+  supportAngle: when(num(0, -180, 180, '°', 'support', 'Direction of the support lines (the same on every layer, so they stack).'), { supportEnabled: true }, 'overhangs'),
+  supportZGap: when(optNum(0, 5, 'mm', 'support', 'Vertical gap between the top of the support and the part above it, in whole layers. Empty (null) = one layer.'), { supportEnabled: true }, 'overhangs'),
+  supportBottomZGap: when(optNum(0, 5, 'mm', 'support', 'Vertical gap between the part and support standing on it. Empty (null) = supportZGap.'), { supportEnabled: true }, 'overhangs'),
+  supportXYGap: when(num(0.4, 0, 10, 'mm', 'support', 'Horizontal gap between support and the part beside it (under an overhanging edge support comes closer, to half a support line width).'), { supportEnabled: true }, 'overhangs'),
+  supportInterfaceLayers: when(int(2, 0, 20, 'count', 'support', 'Dense interface layers at the top of the support, under the part (roof).'), { supportEnabled: true }, 'overhangs'),
+  supportFloorLayers: when(optNum(0, 20, 'count', 'support', 'Dense interface layers where support stands on the part (floor). Empty (null) = supportInterfaceLayers.', 'integer'), { supportEnabled: true }, 'overhangs'),
+  supportInterfaceDensity: when(num(70, 10, 100, '%', 'support', 'Density of the interface (roof and floor) lines.'), { supportEnabled: true }, 'overhangs'),
+  supportWallCount: when(optNum(0, 5, 'count', 'support', 'Walls around support areas. Empty (null) = none for normal support, one for tree support.', 'integer'), { supportEnabled: true }, 'overhangs'),
+  supportLineWidth: when(optNum(0.1, 3, 'mm', 'support', 'Line width of support and its interface. Empty (null) = lineWidth.'), { supportEnabled: true }, 'overhangs'),
+  supportSpeed: when(num(50, 1, 1000, 'mm/s', 'support', 'Speed of the support body.'), { supportEnabled: true }, 'overhangs'),
+  supportInterfaceSpeed: when(num(35, 1, 1000, 'mm/s', 'support', 'Speed of the support interface (roof and floor).'), { supportEnabled: true }, 'overhangs'),
+  supportTreeBranchAngle: when(num(40, 5, 80, '°', 'support', 'Tree support: the steepest angle from vertical at which branches lean towards each other as they go down.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeTipDiameter: when(num(0.8, 0.2, 10, 'mm', 'support', 'Tree support: diameter of a branch tip under the part.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeBranchDiameter: when(num(2.5, 0.5, 50, 'mm', 'support', 'Tree support: diameter a branch grows to (trunks where branches merged grow further, by the diameter angle).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeDiameterAngle: when(num(5, 0, 30, '°', 'support', 'Tree support: how fast a merged branch thickens on its way down (angle of its sides from vertical).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+
+  // ── bridges and overhangs ────────────────────────────────────────────────────
+  bridgeSpeed: when(num(25, 1, 1000, 'mm/s', 'skin', 'Speed of skin printed over air (bridges).'), null, 'overhangs'),
+  bridgeFlow: when(num(100, 10, 200, '%', 'skin', 'Flow of bridge lines, % of normal.'), null, 'overhangs'),
+  bridgeFanSpeed: when(num(100, 0, 100, '%', 'cooling', 'Part-cooling fan while printing bridges.'), null, 'overhangs'),
+  overhangWallSpeed: when(num(15, 1, 1000, 'mm/s', 'walls', 'Speed of walls where they hang over nothing on the layer below.'), null, 'overhangs'),
 
   // ── runtime ──────────────────────────────────────────────────────────────────
   threads: int(0, 0, 256, 'count', 'runtime', 'Threads for the per-layer stages (0 = automatic: one per core above two cores, else one). The G-code is the same for any count.'),
