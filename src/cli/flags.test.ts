@@ -93,7 +93,7 @@ function candidates(key: SettingKey, def: SettingDef, current: unknown): unknown
     case 'enum':
       return def.values.filter((v) => v !== current);
     case 'string':
-      return ['G28 ; home\nG1 Z5 F600'];
+      return [def.example ?? 'G28 ; home\nG1 Z5 F600'];
     case 'number':
     case 'integer': {
       const integer = def.type === 'integer';
@@ -183,6 +183,8 @@ test('every setting flag changes the G-code (or is refused by the slice it limit
     if (NOT_YET_EFFECTIVE.has(key)) {
       if (changed || limited) problems.push(`${key} now changes the G-code: take it out of NOT_YET_EFFECTIVE`);
     } else {
+      // an 'auto' default stands for one of the other values, which may then give the same G-code
+      if (def.type === 'enum' && current === 'auto' && same.length === 1) same.length = 0;
       if (def.type === 'enum' && same.length) problems.push(`${key}: ${same.map(flagValue).join(', ')} gave the same G-code as ${flagValue(current)}`);
       if (!changed && !limited) problems.push(`${key}: no value changed the G-code (tried ${candidates(key, def, current).map(flagValue).join(', ')})`);
     }

@@ -10,6 +10,7 @@ import { loadModelBytes } from '../mesh/index.js';
 import type { ModelInput } from '../mesh/place.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 import type { Config } from '../settings/resolve.js';
+import { importProfile } from '../settings/import/index.js';
 import type { SliceOptions } from '../settings/schema.js';
 import { loadInfiller, parseInfillParams } from '../shader/index.js';
 import { iceslInfillersDirs, readInfillersFolder, shippedInfillersDir } from '../shader/node-folder.js';
@@ -46,16 +47,10 @@ export class InputReader {
     });
   }
 
-  config(path: string): Record<string, unknown> {
-    let obj: unknown;
-    try {
-      obj = JSON.parse(this.text(path, 'config file'));
-    } catch (e) {
-      if (e instanceof StrataError) throw e;
-      throw new StrataError('BAD_FILE', `${path} is not valid JSON: ${(e as Error).message}`);
-    }
-    if (!obj || typeof obj !== 'object' || Array.isArray(obj)) throw new StrataError('BAD_FILE', `${path} must hold a JSON object of settings`);
-    return obj as Record<string, unknown>;
+  /** Settings from a Strata JSON file or another slicer's profile (settings/import); what is left out is in `warnings`. */
+  config(path: string): { settings: Record<string, unknown>; warnings: string[] } {
+    const profile = importProfile(this.text(path, 'config file'), path);
+    return { settings: profile.settings, warnings: profile.warnings };
   }
 }
 
@@ -105,11 +100,18 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
   return spec;
 }
 
-/** The slicer options the command line asks for: configs, presets, settings and a custom infiller. */
-export async function optionsFrom(args: ParsedArgs, input: InputReader): Promise<SliceOptions & { customInfill?: CustomInfillSpec }> {
+/**
+ * The slicer options the command line asks for: configs, presets, settings and a custom infiller.
+ * `warn` hears what an imported profile leaves out.
+ */
+export async function optionsFrom(args: ParsedArgs, input: InputReader, warn: (w: string) => void): Promise<SliceOptions & { customInfill?: CustomInfillSpec }> {
   const opts: Record<string, unknown> = {};
   const configs = typeof args.flags.config === 'string' ? args.flags.config.split('\n') : [];
-  for (const f of configs) Object.assign(opts, input.config(f));
+  for (const f of configs) {
+    const { settings, warnings } = input.config(f);
+    Object.assign(opts, settings);
+    for (const w of warnings) warn(w);
+  }
   if (typeof args.flags.printer === 'string') opts.printer = args.flags.printer;
   if (typeof args.flags.filament === 'string') opts.filament = args.flags.filament;
   Object.assign(opts, args.settings);

@@ -33,7 +33,8 @@ Slice options (slice and preview):
                          replaced only when the slice succeeds; an input is never overwritten
   --printer NAME         printer preset (default creality-ender-3)
   --filament NAME        filament preset (default pla)
-  --config FILE.json     settings from a JSON object (may name printer and filament); repeatable
+  --config FILE          settings from a JSON object (may name printer and filament), or a
+                         PrusaSlicer/SuperSlicer/OrcaSlicer .ini or .json, or Cura .cfg profile; repeatable
   --set key=value        any setting by its key; repeatable
   --no-center            keep the models' own XY coordinates instead of arranging them on the bed
   --object-spacing MM    gap between models arranged on the bed (default 6)

@@ -34,13 +34,13 @@ async function writing<T>(out: Output, body: (o: Output) => Promise<T> | T): Pro
 export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'slice needs at least one model file (see strata --help)');
   const input = new InputReader();
-  const slicer = new Slicer(await optionsFrom(args, input));
+  const quiet = args.flags.quiet === true;
+  const slicer = new Slicer(await optionsFrom(args, input, (w) => quiet || io.err(`strata: warning: ${w}\n`)));
   const models = input.models(args.positional, slicer.config);
   const first = args.positional[0];
   const given = typeof args.flags.output === 'string' ? args.flags.output : undefined;
   const outPath = given ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
   refuseInputAsOutput(outPath, input.read, given === undefined);
-  const quiet = args.flags.quiet === true;
   const bar = !quiet && io.errIsTTY && outPath !== '-' ? progressBar(process.stderr) : null;
   try {
     const { stats, warnings } = await writing(openOutput(outPath), (out) =>
@@ -63,7 +63,7 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
 export async function cmdPreview(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'preview needs a model file');
   const input = new InputReader();
-  const slicer = new Slicer(await optionsFrom(args, input));
+  const slicer = new Slicer(await optionsFrom(args, input, (w) => args.flags.quiet === true || io.err(`strata: warning: ${w}\n`)));
   const models = input.models(args.positional, slicer.config);
   const outPath = typeof args.flags.output === 'string' ? args.flags.output : '-';
   refuseInputAsOutput(outPath, input.read, false);

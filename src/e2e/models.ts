@@ -5,6 +5,7 @@ import { Slicer, prepareModel } from '../api/slicer.js';
 import { analyzePrint } from '../analysis/checks.js';
 import type { PrintReport } from '../analysis/checks.js';
 import type { SliceOptions } from '../settings/schema.js';
+import type { Config } from '../settings/resolve.js';
 
 export { MODELS_DIR, modelsAvailable, skipWithoutModels } from './models-dir.js';
 import { MODELS_DIR } from './models-dir.js';
@@ -41,7 +42,13 @@ export async function sliceAndAnalyze(name: string, options: SliceOptions = {}):
   const { gcode, stats, warnings } = await slicer.slice(bytes);
   const cfg = slicer.config;
   const placed = prepareModel(bytes, cfg).mesh;
-  const report = analyzePrint(placed, gcode, {
+  const report = analyzePrint(placed, gcode, analysisProfile(cfg));
+  return { gcode, report, layers: stats.layers, warnings };
+}
+
+/** What the analyser needs to know of the profile a print was sliced with. */
+export function analysisProfile(cfg: Config) {
+  return {
     layerHeight: cfg.layerHeight,
     firstLayerHeight: cfg.firstLayerHeight,
     lineWidth: cfg.lineWidthMm,
@@ -49,6 +56,5 @@ export async function sliceAndAnalyze(name: string, options: SliceOptions = {}):
     wallThickness: cfg.walls * cfg.lineWidthMm,
     topThickness: cfg.topLayers * cfg.layerHeight,
     bottomThickness: cfg.bottomLayers * cfg.layerHeight,
-  });
-  return { gcode, report, layers: stats.layers, warnings };
+  };
 }

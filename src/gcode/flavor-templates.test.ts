@@ -13,12 +13,12 @@ const CUBE = {
   indices: new Uint32Array([0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5]),
 };
 
-const COMMON = ['G0', 'G1', 'G4', 'G28', 'G90', 'G91', 'G92', 'M82', 'M83', 'M84', 'M106', 'M107', 'M140', 'M190', 'M204'];
+const COMMON = ['G0', 'G1', 'G2', 'G3', 'G4', 'G28', 'G90', 'G91', 'G92', 'M73', 'M82', 'M83', 'M84', 'M106', 'M107', 'M140', 'M190', 'M204'];
 /** The commands each firmware takes (Klipper also runs its macros: upper-case words). */
 const KNOWN: Record<GcodeFlavor, ReadonlySet<string>> = {
-  marlin: new Set([...COMMON, 'M104', 'M109', 'G29', 'M420', 'G80', 'M862.1', 'M862.3']),
-  klipper: new Set([...COMMON, 'M104', 'M109']),
-  reprap: new Set([...COMMON, 'G10', 'T0', 'M116', 'G29']),
+  marlin: new Set([...COMMON, 'M104', 'M109', 'G10', 'G11', 'G29', 'M420', 'G80', 'M862.1', 'M862.3', 'M486', 'M900', 'M201', 'M203', 'M205']),
+  klipper: new Set([...COMMON, 'M104', 'M109', 'G10', 'G11']),
+  reprap: new Set([...COMMON, 'G10', 'G11', 'T0', 'M116', 'G29', 'M486', 'M572', 'M201', 'M203', 'M566']),
 };
 
 function commands(gcode: string): string[] {
@@ -39,6 +39,7 @@ test('every preset in every flavour: only commands its firmware takes, heated be
       const slicer = new Slicer({ printer: id, gcodeFlavor: flavor, threads: 1 });
       const usesMacros = /^\s*[A-Z_]{4,}/m.test(slicer.config.startGcode + '\n' + slicer.config.endGcode);
       if (usesMacros && flavor !== 'klipper') {
+        assert.equal(new Slicer({ printer: id }).config.gcodeFlavor, 'klipper', `${id}: only Klipper printers' templates call macros`);
         await assert.rejects(slicer.slice(CUBE), (e: unknown) => e instanceof StrataError && /is a Klipper macro, which .* firmware does not run/.test(e.message), `${id} ${flavor}`);
         refusedCount++;
         continue;
@@ -58,7 +59,7 @@ test('every preset in every flavour: only commands its firmware takes, heated be
       if (flavor === 'reprap') assert.doesNotMatch(gcode, /^M10[49]\b/m, `${id}: RepRap gets no M104/M109`);
     }
   }
-  assert.ok(refusedCount > 0 && refusedCount <= 2 * 6, `Klipper-macro presets refused under Marlin/RepRap: ${refusedCount}`);
+  assert.ok(refusedCount > 0, 'Klipper-macro presets are refused under Marlin and RepRap');
 });
 
 test('RepRap: nozzle heating becomes tool temperatures; mesh commands and Prusa checks are translated', () => {

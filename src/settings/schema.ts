@@ -54,6 +54,10 @@ export interface StringDef extends Base {
   default: string;
   /** Longest accepted value, characters. */
   maxLength: number;
+  /** When set, a value must match it (the description says the form). */
+  pattern?: RegExp;
+  /** With a pattern: one valid value other than the default, for UIs and the every-flag test. */
+  example?: string;
 }
 export type SettingDef = NumberDef | BooleanDef | EnumDef | StringDef;
 
@@ -97,13 +101,14 @@ const optNum = (min: number, max: number, unit: Unit, stage: Stage, description:
 const bool = (def: boolean, stage: Stage, description: string): BooleanDef => ({ type: 'boolean', default: def, unit: '', stage, description });
 const enm = <V extends readonly string[]>(values: V, def: V[number], stage: Stage, description: string) =>
   ({ type: 'enum', default: def, values, unit: '', stage, description }) as const;
-const str = (def: string, stage: Stage, description: string, maxLength = 65536): StringDef => ({
+const str = (def: string, stage: Stage, description: string, maxLength = 65536, pattern?: RegExp): StringDef => ({
   type: 'string',
   default: def,
   unit: '',
   stage,
   description,
   maxLength,
+  ...(pattern ? { pattern } : {}),
 });
 
 /** A definition that matters only when `onlyWith` holds (and, optionally, with a `needs` input). */
@@ -112,6 +117,9 @@ const when = <D extends SettingDef>(def: D, onlyWith: Readonly<Record<string, st
   ...(onlyWith ? { onlyWith } : {}),
   ...(needs ? { needs } : {}),
 });
+
+/** `WxH` or `WxH/FORMAT` (PNG, QOI, JPG), comma-separated; empty for none. Sizes 1..1024 px are checked later. */
+const THUMBNAIL_LIST = /^\s*(?:\d{1,4}\s*x\s*\d{1,4}(?:\s*\/\s*(?:png|qoi|jpg|jpeg))?\s*(?:,\s*\d{1,4}\s*x\s*\d{1,4}(?:\s*\/\s*(?:png|qoi|jpg|jpeg))?\s*)*)?$/i;
 
 export const SCHEMA = {
   // ── machine ──────────────────────────────────────────────────────────────────
@@ -207,6 +215,32 @@ export const SCHEMA = {
   // ── filament ─────────────────────────────────────────────────────────────────
   filamentDensity: num(1.24, 0.5, 5, 'g/cm³', 'gcode', 'Filament density, for the weight estimate.'),
   flowRate: num(100, 10, 300, '%', 'gcode', 'Extrusion multiplier.'),
+
+  // ── progress, object labels, thumbnails ──────────────────────────────────────
+  progressM73: bool(true, 'gcode', 'Write M73 P<percent> R<minutes left> from the time estimate at every layer start, and M73 P100 R0 after the last layer.'),
+  labelObjects: enm(['auto', 'off', 'comments', 'firmware'] as const, 'auto', 'gcode', "Label each object's moves so a host or the firmware can cancel one mid-print: firmware = Klipper EXCLUDE_OBJECT_DEFINE/START/END, or M486 S/T (Marlin, RepRap) with the comments; comments = only `; printing object NAME` / `; stop printing object NAME` (OctoPrint Cancelobject); auto = firmware for Klipper, comments otherwise."),
+  thumbnails: { ...str('', 'gcode', 'Preview images of the plate written into the G-code, as `WxH` or `WxH/FORMAT` (PNG, QOI or JPG) separated by commas, e.g. `32x32,300x300` or `16x16/QOI,313x173/QOI,380x285/PNG`. Empty = none.', 512, THUMBNAIL_LIST), example: '32x32,300x300' },
+
+  // ── arc fitting ──────────────────────────────────────────────────────────────
+  arcFitting: bool(false, 'gcode', 'Replace runs of short segments along curves by G2/G3 arcs (the firmware must support arcs: Marlin ARC_SUPPORT, Klipper [gcode_arcs], RepRapFirmware, Prusa and Bambu firmware).'),
+  arcTolerance: when(num(0.01, 0.001, 0.2, 'mm', 'gcode', 'Largest distance between an arc and the points of the path it replaces (the middle of each of its segments may be twice as far).'), { arcFitting: true }),
+
+  // ── firmware retraction and pressure advance ─────────────────────────────────
+  firmwareRetraction: bool(false, 'travel', "Retract and prime with G10/G11, using the firmware's own lengths and speeds (Marlin FWRETRACT, Klipper [firmware_retraction], RepRapFirmware M207)."),
+  pressureAdvance: optNum(0, 10, 's', 'gcode', "Pressure / linear advance for this filament: M900 K (Marlin), SET_PRESSURE_ADVANCE ADVANCE= (Klipper), M572 D0 S (RepRap). Empty (null) = keep the firmware's value."),
+
+  // ── machine limits ───────────────────────────────────────────────────────────
+  machineLimits: enm(['estimate', 'write', 'ignore'] as const, 'estimate', 'machine', "How the limits below are used: by the time estimate only, also written at the start (M201/M203/M204/M205; Klipper SET_VELOCITY_LIMIT), or not at all."),
+  maxSpeedX: optNum(1, 2000, 'mm/s', 'machine', 'Firmware feed-rate limit of the X axis (M203 X). Empty (null) = no limit.'),
+  maxSpeedY: optNum(1, 2000, 'mm/s', 'machine', 'Firmware feed-rate limit of the Y axis (M203 Y). Empty (null) = no limit.'),
+  maxSpeedZ: optNum(0.1, 500, 'mm/s', 'machine', 'Firmware feed-rate limit of the Z axis (M203 Z); Z moves are written at 5 mm/s or this, whichever is slower. Empty (null) = no limit.'),
+  maxSpeedE: optNum(0.1, 500, 'mm/s', 'machine', 'Firmware feed-rate limit of the extruder (M203 E), which caps retraction speed in the estimate. Empty (null) = no limit.'),
+  maxAccelerationX: optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the X axis (M201 X). Empty (null) = no limit.'),
+  maxAccelerationY: optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the Y axis (M201 Y). Empty (null) = no limit.'),
+  maxAccelerationZ: optNum(1, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the Z axis (M201 Z). Empty (null) = acceleration.'),
+  maxAccelerationE: when(optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the extruder (M201 E). Empty (null) = no limit.'), { machineLimits: 'write' }),
+  travelAcceleration: optNum(10, 100000, 'mm/s²', 'machine', 'Acceleration of travel moves (M204 T). Empty (null) = acceleration.'),
+  retractAcceleration: optNum(10, 100000, 'mm/s²', 'machine', 'Acceleration of retractions and primes (M204 R). Empty (null) = maxAccelerationE, else acceleration.'),
 
   // ── adhesion ─────────────────────────────────────────────────────────────────
   adhesionType: enm(['skirt', 'brim', 'raft', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, a raft under it, or none.'),
