@@ -162,8 +162,8 @@ function checkGcode(gcode: string, cfg: ReturnType<typeof resolveConfig>, layers
     if (!code) continue;
     const [word, ...params] = code.split(/\s+/);
     assert.match(word, WORD, `${what}: line ${n + 1} "${lines[n]}"`);
-    // M117 shows a message: free text
-    if (word === 'M117') continue;
+    // M117 shows a message (free text); Klipper commands take KEY=VALUE of their own forms
+    if (word === 'M117' || !/^[GMT]\d/.test(word)) continue;
     for (const p of params) assert.match(p, PARAM, `${what}: line ${n + 1} "${lines[n]}"`);
     if (word === 'G0' || word === 'G1') {
       const inLayers = n > firstLayer && n < lastLayerLine;
