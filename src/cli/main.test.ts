@@ -159,7 +159,10 @@ test('a reader that closes the pipe early: the command ends quietly', async () =
     child.stdout.once('data', () => child.stdout.destroy());
     const code = await new Promise<number | null>((resolve) => child.on('close', (c) => resolve(c)));
     assert.equal(stderr, '', args.join(' '));
-    assert.equal(code, 141, args.join(' '));
+    // a short listing may have fitted the pipe's buffer before the reader left (then it simply succeeded);
+    // the G-code never does
+    if (args[0] === 'slice') assert.equal(code, 141, args.join(' '));
+    else assert.ok(code === 141 || code === 0, `${args.join(' ')}: exit ${code}`);
   }
 });
 
