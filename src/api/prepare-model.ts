@@ -29,13 +29,24 @@ export const MiB = 1024 * 1024;
 
 /** Load, repair-check and place whatever the caller passed (bytes, text, three.js objects, arrays, or a list of them). */
 export function prepareModel(input: unknown, cfg: Config): PreparedModel {
+  const steps = prepareModelSteps(input, cfg);
+  for (;;) {
+    const r = steps.next();
+    if (r.done) return r.value;
+  }
+}
+
+/** `prepareModel` as steps: yields after reading and after each object's preparation, so a caller can pause. */
+export function* prepareModelSteps(input: unknown, cfg: Config): Generator<void, PreparedModel> {
   const loaded = toModels(input, { maxInflatedBytes: cfg.inflateBudget * MiB, upAxis: cfg.upAxis });
+  yield;
   const models = loaded.models.filter((m) => m.objects.length > 0);
   if (models.length === 0) throw new StrataError('EMPTY_MODEL', 'the input holds no mesh');
   const totalObjects = models.reduce((n, m) => n + m.objects.length, 0);
   const reports: MeshReport[] = [];
   const warnings: string[] = [];
-  const prepared: ModelInput[] = models.map((m) => {
+  const prepared: ModelInput[] = [];
+  for (const m of models) {
     const objects: MeshObject[] = [];
     for (const o of m.objects) {
       const { mesh, report } = prepareMesh(o.mesh);
@@ -43,11 +54,12 @@ export function prepareModel(input: unknown, cfg: Config): PreparedModel {
       const prefix = totalObjects > 1 ? `${o.name}: ` : '';
       for (const w of report.warnings) warnings.push(prefix + w);
       if (mesh.indices.length > 0) objects.push({ name: o.name, mesh });
+      yield;
     }
     const why = objects.length === 0 ? 'has no printable triangles' : nothingToPrint(mergeObjects(objects), combineReports(reports.slice(-m.objects.length)));
     if (why !== undefined) throw new StrataError('EMPTY_MODEL', `nothing to print: ${m.name} ${why}`);
-    return { name: m.name, objects };
-  });
+    prepared.push({ name: m.name, objects });
+  }
   const brim = cfg.adhesionType === 'brim' ? cfg.brimWidth : 0;
   const placed = placeModels(prepared, {
     center: cfg.center,

@@ -7,7 +7,8 @@ import { positionBounds } from '../mesh/index.js';
 import { checkTemplatesForFlavor } from '../gcode/flavor-templates.js';
 import { imageDecodeBytes } from '../shader/image.js';
 import { StrataError } from '../errors.js';
-import { MiB, prepareModel, type PreparedModel } from './prepare-model.js';
+import { MiB, prepareModelSteps, type PreparedModel } from './prepare-model.js';
+import { Pacer } from '../pipeline/pacer.js';
 import { runPipeline, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
@@ -189,7 +190,8 @@ export class Slicer {
     let model: PreparedModel;
     let threads: number;
     try {
-      model = prepareModel(input, cfg);
+      // paced like the slice itself, so an abort acts while a big model is still being read
+      model = await new Pacer(opts.signal).run(prepareModelSteps(input, cfg));
       const b = positionBounds(model.mesh.positions);
       const layersEstimate = b.max[2] / cfg.layerHeight;
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
