@@ -1,0 +1,117 @@
+/**
+ * Exact disc morphology and connected components on bitmaps (0/1 bytes, row-major, `cols` × `rows`): growing,
+ * shrinking and closing by a Euclidean radius through a distance transform (a row sweep, then the lower envelope
+ * of parabolas down each column), so the cost is linear in the cells whatever the radius.
+ */
+
+/** Squared distance of an empty row or column to anything: larger than any real distance in a window. */
+const FAR = 1e12;
+
+/**
+ * Squared distance, in cells², from each cell's centre to the centre of the nearest cell where `hit(k)` holds
+ * (FAR when none).
+ */
+export function squaredDistance(cols: number, rows: number, hit: (k: number) => boolean): Float64Array {
+  const g = new Float64Array(cols * rows);
+  // Row pass: distance along the row to the nearest hit (two sweeps), squared.
+  for (let j = 0; j < rows; j++) {
+    const base = j * cols;
+    let last = -Infinity;
+    for (let i = 0; i < cols; i++) {
+      if (hit(base + i)) last = i;
+      g[base + i] = i - last;
+    }
+    last = Infinity;
+    for (let i = cols - 1; i >= 0; i--) {
+      if (hit(base + i)) last = i;
+      const d = Math.min(g[base + i]!, last - i);
+      g[base + i] = d === Infinity ? FAR : d * d;
+    }
+  }
+  // Column pass: d(i, j) = min over j' of g(i, j') + (j - j')², by the lower envelope of parabolas.
+  const f = new Float64Array(rows);
+  const v = new Int32Array(rows);
+  const z = new Float64Array(rows + 1);
+  for (let i = 0; i < cols; i++) {
+    for (let j = 0; j < rows; j++) f[j] = g[j * cols + i]!;
+    let k = 0;
+    v[0] = 0;
+    z[0] = -Infinity;
+    z[1] = Infinity;
+    for (let q = 1; q < rows; q++) {
+      let s = (f[q]! + q * q - (f[v[k]!]! + v[k]! * v[k]!)) / (2 * (q - v[k]!));
+      while (s <= z[k]!) {
+        k--;
+        s = (f[q]! + q * q - (f[v[k]!]! + v[k]! * v[k]!)) / (2 * (q - v[k]!));
+      }
+      k++;
+      v[k] = q;
+      z[k] = s;
+      z[k + 1] = Infinity;
+    }
+    k = 0;
+    for (let q = 0; q < rows; q++) {
+      while (z[k + 1]! < q) k++;
+      const dq = q - v[k]!;
+      g[q * cols + i] = Math.min(FAR, dq * dq + f[v[k]!]!);
+    }
+  }
+  return g;
+}
+
+/** Cells within `r` cells (centre to centre) of a set cell. */
+export function dilate(bitmap: Uint8Array, cols: number, rows: number, r: number): Uint8Array {
+  const d = squaredDistance(cols, rows, (k) => bitmap[k] !== 0);
+  const out = new Uint8Array(cols * rows);
+  const r2 = r * r + 1e-9;
+  for (let k = 0; k < out.length; k++) out[k] = d[k]! <= r2 ? 1 : 0;
+  return out;
+}
+
+/** Set cells farther than `r` cells from every unset cell of the window (beyond the window counts as set). */
+export function erode(bitmap: Uint8Array, cols: number, rows: number, r: number): Uint8Array {
+  const d = squaredDistance(cols, rows, (k) => bitmap[k] === 0);
+  const out = new Uint8Array(cols * rows);
+  const r2 = r * r + 1e-9;
+  for (let k = 0; k < out.length; k++) out[k] = bitmap[k] !== 0 && d[k]! > r2 ? 1 : 0;
+  return out;
+}
+
+/** Morphological closing by a disc of `r` cells: fills gaps narrower than about 2r, grows nothing outward. */
+export function close(bitmap: Uint8Array, cols: number, rows: number, r: number): Uint8Array {
+  return erode(dilate(bitmap, cols, rows, r), cols, rows, r);
+}
+
+/** Clears (in place) every 8-connected component of set cells with fewer than `minCells` cells. */
+export function dropSmallComponents(bitmap: Uint8Array, cols: number, rows: number, minCells: number): void {
+  if (minCells <= 1) return;
+  const seen = new Uint8Array(bitmap.length);
+  const stack: number[] = [];
+  const members: number[] = [];
+  for (let start = 0; start < bitmap.length; start++) {
+    if (bitmap[start] === 0 || seen[start] !== 0) continue;
+    members.length = 0;
+    stack.push(start);
+    seen[start] = 1;
+    while (stack.length > 0) {
+      const k = stack.pop()!;
+      members.push(k);
+      const i = k % cols;
+      const j = (k - i) / cols;
+      for (let dj = -1; dj <= 1; dj++) {
+        const jj = j + dj;
+        if (jj < 0 || jj >= rows) continue;
+        for (let di = -1; di <= 1; di++) {
+          const ii = i + di;
+          if (ii < 0 || ii >= cols) continue;
+          const q = jj * cols + ii;
+          if (bitmap[q] !== 0 && seen[q] === 0) {
+            seen[q] = 1;
+            stack.push(q);
+          }
+        }
+      }
+    }
+    if (members.length < minCells) for (const k of members) bitmap[k] = 0;
+  }
+}

@@ -1,0 +1,477 @@
+/**
+ * Support checks of one print against its model, layer by layer, on rasters of every layer's material (see
+ * support-raster.ts):
+ * - overhang: the layer's section minus the section of the model layer below grown by layerHeight·tan(threshold),
+ *   specks dropped; supported where material of the layers just below (within the allowed Z gap), closed over
+ *   gaps up to supportSpanMm and grown by the threshold's allowance, lies under it;
+ * - over nothing: the layer's part extrusion outside that same footprint, and outside the interior of the model
+ *   layer below (sparse infill under skin is the part's own design, judged by the infill check);
+ * - inside: support and interface beads deeper than half a line width inside the model's section at their layer;
+ * - Z gaps: from the top of support to the overhang above it, and from the model to support standing on it;
+ * The first model layer rests on the bed (or on the raft, which then must lie under it).
+ */
+import type { GcodeLayer } from './gcode-types.js';
+import type { Grid } from './grid.js';
+import { gridAround, newBitmap } from './grid.js';
+import type { LayerFrame, ModelZ } from './model-z.js';
+import { close, dilate, dropSmallComponents } from './morphology.js';
+import type { GapStats, LayerSupport, SupportSummary } from './report-types.js';
+import type { SectionCache } from './section-cache.js';
+import { sectionSpans } from './section.js';
+import type { Spans } from './spans.js';
+import {
+  dilateSpans, emptySpans, erodeSpans, isEmptySpans, spansBoolean, spansBounds, spansContain, spansToBitmap,
+} from './spans.js';
+import { WeightedHistogram } from './stats.js';
+import { Cell, LayerRasters, hasSupportMaterial } from './support-raster.js';
+
+/** Support beads deeper than this inside the section count as inside the part (line widths). */
+export const INSIDE_TOLERANCE_LINE_WIDTHS = 0.5;
+/** Z gaps are looked for this many layer heights below the layer (mm of gap beyond are not measured). */
+export const GAP_SCAN_LAYERS = 6;
+/** The low end of a gap distribution: the gap below which this share of the measured area lies. */
+export const GAP_LOW_QUANTILE = 0.02;
+/** Resolution of gap statistics (mm). */
+const GAP_BIN_MM = 0.001;
+/** Support rasters use cells of at least this many line widths (mm per line width). */
+export const SUPPORT_CELL_LINE_WIDTHS = 0.25;
+/** Layers listed as worst. */
+const WORST_LISTED = 5;
+/** Z comparisons between layers allow this much (mm). */
+const Z_SLACK_MM = 1e-4;
+
+export interface SupportOptions {
+  layerHeight: number;
+  firstLayerHeight: number;
+  lineWidth: number;
+  wallThickness: number;
+  overhangAngleDeg: number;
+  supportGapLayers: number;
+  supportSpanMm: number;
+  overhangMinAreaMm2: number;
+  /** Cell of the analyser's rasters (mm); the support rasters use it or a coarser one. */
+  cell: number;
+  filamentArea: number;
+  widthSource: 'flow' | 'nominal';
+  /** Layer heights of a layer's part and support material (mm). */
+  partHeight: (frame: LayerFrame) => number;
+  supportHeight: (frame: LayerFrame) => number;
+}
+
+interface WorstOverhang {
+  layer: number;
+  z: number;
+  areaMm2: number;
+  unsupportedMm2: number;
+}
+interface WorstNothing {
+  layer: number;
+  z: number;
+  areaMm2: number;
+  fraction: number;
+}
+
+export class SupportAnalysis {
+  readonly cell: number;
+  private readonly grid: Grid;
+  private readonly rasters: LayerRasters;
+  /** The threshold angle's allowance: how far a layer may reach past the one below (mm). */
+  private readonly reachMm: number;
+  private readonly spansByZ = new Map<number, Spans>();
+  private overhangArea = 0;
+  private overhangSupported = 0;
+  private partArea = 0;
+  private overNothingArea = 0;
+  private insideArea = 0;
+  private insideWorst: number | null = null;
+  private insideWorstArea = 0;
+  private supportArea = 0;
+  private supportLayers = 0;
+  private readonly worstOverhang: WorstOverhang[] = [];
+  private readonly worstNothing: WorstNothing[] = [];
+  private readonly topGaps: WeightedHistogram;
+  private readonly bottomGaps: WeightedHistogram;
+  private readonly topByLayers: Float64Array;
+  private readonly bottomByLayers: Float64Array;
+
+  constructor(
+    private readonly layers: readonly GcodeLayer[],
+    private readonly z: ModelZ,
+    private readonly sections: SectionCache,
+    bounds: [number, number, number, number],
+    private readonly o: SupportOptions,
+  ) {
+    this.cell = Math.max(o.cell, SUPPORT_CELL_LINE_WIDTHS * o.lineWidth);
+    this.reachMm = o.layerHeight * Math.tan((o.overhangAngleDeg * Math.PI) / 180) + this.cell;
+    const margin = o.supportSpanMm + 2 * o.lineWidth + this.reachMm;
+    this.grid = gridAround(bounds[0], bounds[1], bounds[2], bounds[3], this.cell, margin);
+    this.rasters = new LayerRasters(layers, z.frames, this.grid, {
+      lineWidth: o.lineWidth,
+      filamentArea: o.filamentArea,
+      widthSource: o.widthSource,
+      reachMm: this.reachMm,
+      partHeight: o.partHeight,
+      supportHeight: o.supportHeight,
+    });
+    const maxGap = (GAP_SCAN_LAYERS + 1) * o.layerHeight;
+    this.topGaps = new WeightedHistogram(maxGap, GAP_BIN_MM);
+    this.bottomGaps = new WeightedHistogram(maxGap, GAP_BIN_MM);
+    this.topByLayers = new Float64Array(GAP_SCAN_LAYERS + 2);
+    this.bottomByLayers = new Float64Array(GAP_SCAN_LAYERS + 2);
+  }
+
+  /**
+   * Measures layer l; `sectionZ` is the model height its part material is judged at (see layer-analysis.ts).
+   * Layers are measured bottom to top.
+   */
+  measure(l: number, sectionZ: number): LayerSupport | null {
+    const frame = this.z.frames[l]!;
+    if (frame.raft) return null;
+    const o = this.o;
+    const c2 = this.cell * this.cell;
+    const layer = this.layers[l]!;
+    const here = this.rasters.get(l);
+    const out: LayerSupport = {
+      overhangAreaMm2: 0, overhangSupportedMm2: 0, partAreaMm2: 0, overNothingMm2: 0, supportAreaMm2: 0, insideMm2: 0,
+    };
+
+    if (hasSupportMaterial(layer, frame)) {
+      this.supportLayers++;
+      const zs = frame.hasPart ? sectionZ : round6(frame.modelZ - o.supportHeight(frame) / 2);
+      const inner = erodeSpans(this.spansAt(zs), INSIDE_TOLERANCE_LINE_WIDTHS * o.lineWidth);
+      const mask = Cell.Support | Cell.Interface;
+      out.supportAreaMm2 = countMasked(here, mask) * c2;
+      out.insideMm2 = countMaskedInSpans(inner, this.grid, here, mask) * c2;
+      this.supportArea += out.supportAreaMm2;
+      this.insideArea += out.insideMm2;
+      if (out.insideMm2 > this.insideWorstArea) {
+        this.insideWorstArea = out.insideMm2;
+        this.insideWorst = l;
+      }
+      this.measureBottomGap(l, frame);
+    }
+    if (!frame.hasPart) {
+      this.release(l);
+      return out;
+    }
+
+    const partCells = countMasked(here, Cell.Part);
+    out.partAreaMm2 = partCells * c2;
+    this.partArea += out.partAreaMm2;
+    const first = l === this.z.firstModelLayer;
+    if (first && this.z.raftLayerCount === 0) {
+      this.release(l);
+      return out;
+    }
+
+    const zBottom = layer.z - o.partHeight(frame);
+    const below: number[] = [];
+    for (let k = l - 1; k >= 0 && this.layers[k]!.z >= zBottom - o.supportGapLayers * o.layerHeight - Z_SLACK_MM; k--) {
+      below.push(k);
+    }
+    const section = this.spansAt(sectionZ);
+    const zPrev = round6(sectionZ - o.layerHeight);
+    const previous = zPrev > this.sections.zMin ? this.spansAt(zPrev) : emptySpans(this.cell);
+
+    // The model's overhang on this layer (none on the first model layer: it rests on the bed or the raft).
+    let overhang: { win: Grid; bitmap: Uint8Array } | null = null;
+    if (!first) {
+      const grown = dilateSpans(previous, o.layerHeight * Math.tan((o.overhangAngleDeg * Math.PI) / 180));
+      const region = spansBoolean(section, grown, 'subtract');
+      const b = spansBounds(region);
+      if (b) {
+        const win = this.window(b, this.cell);
+        const bitmap = newBitmap(win);
+        spansToBitmap(region, win, bitmap);
+        dropSmallComponents(bitmap, win.cols, win.rows, Math.ceil(o.overhangMinAreaMm2 / c2));
+        let n = 0;
+        for (let k = 0; k < bitmap.length; k++) n += bitmap[k]!;
+        if (n > 0) {
+          overhang = { win, bitmap };
+          out.overhangAreaMm2 = n * c2;
+        }
+      }
+    }
+
+    // Part cells beyond the reach of all material below and outside the interior of the model layer below.
+    const candidates = this.overNothingCandidates(here, below, previous);
+
+    if (overhang || candidates.length > 0) {
+      const bounds = this.cellBounds(overhang, candidates);
+      const grow = 2 * (o.supportSpanMm / 2) + this.reachMm + 2 * this.cell;
+      const win = this.window(bounds, grow);
+      const footprint = this.footprint(win, below);
+      if (overhang) {
+        let hit = 0;
+        forEachSet(overhang.bitmap, overhang.win, (i, j) => {
+          if (footprint[(j - win.j0) * win.cols + (i - win.i0)] !== 0) hit++;
+        });
+        out.overhangSupportedMm2 = hit * c2;
+        this.measureTopGap(l, zBottom, overhang);
+      }
+      let missing = 0;
+      for (const k of candidates) {
+        const i = (k % this.grid.cols) + this.grid.i0;
+        const j = Math.floor(k / this.grid.cols) + this.grid.j0;
+        if (footprint[(j - win.j0) * win.cols + (i - win.i0)] === 0) missing++;
+      }
+      out.overNothingMm2 = missing * c2;
+    }
+
+    this.overhangArea += out.overhangAreaMm2;
+    this.overhangSupported += out.overhangSupportedMm2;
+    this.overNothingArea += out.overNothingMm2;
+    const unsupported = out.overhangAreaMm2 - out.overhangSupportedMm2;
+    if (unsupported > 0) {
+      pushWorst(this.worstOverhang, { layer: l, z: layer.z, areaMm2: out.overhangAreaMm2, unsupportedMm2: unsupported },
+        (w) => w.unsupportedMm2);
+    }
+    if (out.overNothingMm2 > 0) {
+      pushWorst(this.worstNothing, {
+        layer: l, z: layer.z, areaMm2: out.overNothingMm2, fraction: out.overNothingMm2 / out.partAreaMm2,
+      }, (w) => w.areaMm2);
+    }
+    this.release(l);
+    return out;
+  }
+
+  /** The support part of the report; `volume` comes from supportVolumes. */
+  summary(volume: SupportSummary['volume']): SupportSummary {
+    const o = this.o;
+    return {
+      overhangAngleDeg: o.overhangAngleDeg,
+      overhangAreaMm2: this.overhangArea,
+      overhangSupportedMm2: this.overhangSupported,
+      overhangSupported: this.overhangArea > 0 ? this.overhangSupported / this.overhangArea : null,
+      overhangWorstLayers: this.worstOverhang,
+      partAreaMm2: this.partArea,
+      overNothingMm2: this.overNothingArea,
+      overNothing: this.partArea > 0 ? this.overNothingArea / this.partArea : null,
+      overNothingWorstLayers: this.worstNothing,
+      insideAreaMm2: this.insideArea,
+      insideWorstLayer: this.insideWorst,
+      insideWorstMm2: this.insideWorstArea,
+      supportAreaMm2: this.supportArea,
+      supportLayers: this.supportLayers,
+      topGap: gapStats(this.topGaps, this.topByLayers, o.layerHeight),
+      bottomGap: gapStats(this.bottomGaps, this.bottomByLayers, o.layerHeight),
+      volume,
+    };
+  }
+
+  /** Full-grid indices of part cells of `here` that no material below reaches and that lie outside the interior. */
+  private overNothingCandidates(here: Uint8Array, below: number[], previous: Spans): number[] {
+    const reach = newBitmap(this.grid);
+    for (const k of below) {
+      const r = this.rasters.get(k);
+      for (let q = 0; q < r.length; q++) reach[q] = reach[q]! | r[q]!;
+    }
+    const out: number[] = [];
+    for (let q = 0; q < here.length; q++) {
+      if ((here[q]! & Cell.Part) !== 0 && (reach[q]! & Cell.Reach) === 0) out.push(q);
+    }
+    if (out.length === 0) return out;
+    // Over the interior of the model layer below (its sparse infill) is not over nothing.
+    const interior = erodeSpans(previous, this.o.wallThickness);
+    if (isEmptySpans(interior)) return out;
+    const g = this.grid;
+    return out.filter((q) => {
+      const x = ((q % g.cols) + g.i0 + 0.5) * g.cell;
+      const y = (Math.floor(q / g.cols) + g.j0 + 0.5) * g.cell;
+      return !spansContain(interior, x, y);
+    });
+  }
+
+  /** Material of the layers `below` on window `win`, closed over supportSpanMm and grown by the reach. */
+  private footprint(win: Grid, below: number[]): Uint8Array {
+    const any = newBitmap(win);
+    const g = this.grid;
+    for (const k of below) {
+      const r = this.rasters.get(k);
+      for (let j = 0; j < win.rows; j++) {
+        const src = (j + win.j0 - g.j0) * g.cols + (win.i0 - g.i0);
+        const dst = j * win.cols;
+        for (let i = 0; i < win.cols; i++) if ((r[src + i]! & Cell.Any) !== 0) any[dst + i] = 1;
+      }
+    }
+    const closed = close(any, win.cols, win.rows, this.o.supportSpanMm / 2 / this.cell);
+    return dilate(closed, win.cols, win.rows, this.reachMm / this.cell);
+  }
+
+  /** Per overhang cell: the gap down to the highest support or interface under it. */
+  private measureTopGap(l: number, zBottom: number, overhang: { win: Grid; bitmap: Uint8Array }): void {
+    const o = this.o;
+    const win = overhang.win;
+    const g = this.grid;
+    const open: number[] = [];
+    forEachSet(overhang.bitmap, win, (i, j) => open.push((j - g.j0) * g.cols + (i - g.i0)));
+    const limit = zBottom - GAP_SCAN_LAYERS * o.layerHeight - Z_SLACK_MM;
+    let left = open;
+    for (let k = l - 1; k >= 0 && left.length > 0 && this.layers[k]!.z >= limit; k--) {
+      const r = this.rasters.get(k);
+      const gap = Math.max(0, zBottom - this.layers[k]!.z);
+      const next: number[] = [];
+      let hit = 0;
+      for (const q of left) {
+        if ((r[q]! & (Cell.Support | Cell.Interface)) !== 0) hit++;
+        else next.push(q);
+      }
+      if (hit > 0) this.addGap(this.topGaps, this.topByLayers, gap, hit);
+      left = next;
+    }
+  }
+
+  /** Per cell where support starts: the gap down to the part under it, when part (not support) is the first. */
+  private measureBottomGap(l: number, frame: LayerFrame): void {
+    if (l === 0) return;
+    const o = this.o;
+    const here = this.rasters.get(l);
+    let prev = -1;
+    for (let k = l - 1; k >= 0; k--) {
+      if (this.z.frames[k]!.hasSupport) {
+        prev = k;
+        break;
+      }
+    }
+    const before = prev >= 0 ? this.rasters.get(prev) : null;
+    const holds = Cell.Support | Cell.Interface | Cell.Raft;
+    let open: number[] = [];
+    for (let q = 0; q < here.length; q++) {
+      if ((here[q]! & (Cell.Support | Cell.Interface)) === 0) continue;
+      if (before && (before[q]! & holds) !== 0) continue;
+      open.push(q);
+    }
+    if (open.length === 0) return;
+    const zBottom = this.layers[l]!.z - o.supportHeight(frame);
+    const limit = zBottom - GAP_SCAN_LAYERS * o.layerHeight - Z_SLACK_MM;
+    for (let k = l - 1; k >= 0 && open.length > 0 && this.layers[k]!.z >= limit; k--) {
+      const r = this.rasters.get(k);
+      const gap = Math.max(0, zBottom - this.layers[k]!.z);
+      const next: number[] = [];
+      let onPart = 0;
+      for (const q of open) {
+        const v = r[q]!;
+        if ((v & Cell.Any) === 0) next.push(q);
+        else if ((v & holds) === 0) onPart++;
+      }
+      if (onPart > 0) this.addGap(this.bottomGaps, this.bottomByLayers, gap, onPart);
+      open = next;
+    }
+  }
+
+  private addGap(h: WeightedHistogram, byLayers: Float64Array, gapMm: number, cells: number): void {
+    const area = cells * this.cell * this.cell;
+    h.add(gapMm, area);
+    const n = Math.min(byLayers.length - 1, Math.max(0, Math.round(gapMm / this.o.layerHeight)));
+    byLayers[n] = byLayers[n]! + area;
+  }
+
+  /** Lattice bounds [i0, j0, i1, j1) of the overhang's and the candidates' cells. */
+  private cellBounds(
+    overhang: { win: Grid; bitmap: Uint8Array } | null, candidates: number[],
+  ): [number, number, number, number] {
+    let i0 = Infinity, j0 = Infinity, i1 = -Infinity, j1 = -Infinity;
+    if (overhang) {
+      const w = overhang.win;
+      i0 = w.i0;
+      j0 = w.j0;
+      i1 = w.i0 + w.cols;
+      j1 = w.j0 + w.rows;
+    }
+    const g = this.grid;
+    for (const q of candidates) {
+      const i = (q % g.cols) + g.i0;
+      const j = Math.floor(q / g.cols) + g.j0;
+      if (i < i0) i0 = i;
+      if (i + 1 > i1) i1 = i + 1;
+      if (j < j0) j0 = j;
+      if (j + 1 > j1) j1 = j + 1;
+    }
+    const c = this.cell;
+    return [i0 * c, j0 * c, i1 * c, j1 * c];
+  }
+
+  /** A window of the support grid around [xmin, ymin, xmax, ymax] (mm) grown by `margin`, clamped to the grid. */
+  private window(b: [number, number, number, number], margin: number): Grid {
+    const w = gridAround(b[0], b[1], b[2], b[3], this.cell, margin);
+    const g = this.grid;
+    const i0 = Math.max(g.i0, w.i0);
+    const j0 = Math.max(g.j0, w.j0);
+    const i1 = Math.min(g.i0 + g.cols, w.i0 + w.cols);
+    const j1 = Math.min(g.j0 + g.rows, w.j0 + w.rows);
+    return { cell: this.cell, i0, j0, cols: Math.max(1, i1 - i0), rows: Math.max(1, j1 - j0) };
+  }
+
+  /** The model's section at height z as spans on the support lattice (cached while nearby layers need it). */
+  private spansAt(z: number): Spans {
+    const key = Math.round(z * 1e5);
+    let s = this.spansByZ.get(key);
+    if (!s) {
+      s = sectionSpans(this.sections.get(z).segments, this.cell);
+      this.spansByZ.set(key, s);
+    }
+    return s;
+  }
+
+  /** Forgets rasters and sections that the layers above layer l no longer need. */
+  private release(l: number): void {
+    const o = this.o;
+    const zKeep = this.layers[l]!.z - (GAP_SCAN_LAYERS + o.supportGapLayers + 2) * o.layerHeight;
+    let k = l;
+    while (k > 0 && this.layers[k - 1]!.z >= zKeep) k--;
+    this.rasters.releaseBelow(k);
+    const zModel = this.z.frames[l]!.modelZ - 3 * o.layerHeight;
+    for (const key of this.spansByZ.keys()) if (key / 1e5 < zModel) this.spansByZ.delete(key);
+  }
+}
+
+function round6(z: number): number {
+  return Math.round(z * 1e6) / 1e6;
+}
+
+/** Cells of a full-grid raster with any of `mask`'s bits. */
+function countMasked(bitmap: Uint8Array, mask: number): number {
+  let n = 0;
+  for (let k = 0; k < bitmap.length; k++) if ((bitmap[k]! & mask) !== 0) n++;
+  return n;
+}
+
+/** Cells whose centres lie in the region and that have any of `mask`'s bits. */
+function countMaskedInSpans(s: Spans, grid: Grid, bitmap: Uint8Array, mask: number): number {
+  if (isEmptySpans(s)) return 0;
+  const inside = newBitmap(grid);
+  spansToBitmap(s, grid, inside);
+  let n = 0;
+  for (let k = 0; k < bitmap.length; k++) if (inside[k] !== 0 && (bitmap[k]! & mask) !== 0) n++;
+  return n;
+}
+
+/** Calls visit(i, j) with the lattice indices of every set cell of a window bitmap. */
+function forEachSet(bitmap: Uint8Array, win: Grid, visit: (i: number, j: number) => void): void {
+  for (let j = 0; j < win.rows; j++) {
+    const base = j * win.cols;
+    for (let i = 0; i < win.cols; i++) if (bitmap[base + i] !== 0) visit(i + win.i0, j + win.j0);
+  }
+}
+
+function pushWorst<T>(list: T[], item: T, key: (t: T) => number): void {
+  list.push(item);
+  list.sort((a, b) => key(b) - key(a));
+  if (list.length > WORST_LISTED) list.length = WORST_LISTED;
+}
+
+function gapStats(h: WeightedHistogram, byLayers: Float64Array, layerHeight: number): GapStats {
+  let area = 0;
+  for (const v of byLayers) area += v;
+  const median = h.quantile(0.5);
+  const low = h.quantile(GAP_LOW_QUANTILE);
+  const layers = (mm: number) => (Number.isFinite(mm) ? Math.round(mm / layerHeight) : null);
+  return {
+    areaMm2: area,
+    medianMm: Number.isFinite(median) ? median : null,
+    minMm: Number.isFinite(low) ? low : null,
+    medianLayers: layers(median),
+    minLayers: layers(low),
+    byLayers: Array.from(byLayers, (v) => (area > 0 ? v / area : 0)),
+  };
+}
