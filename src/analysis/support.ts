@@ -12,9 +12,9 @@
  */
 import type { GcodeLayer } from './gcode-types.js';
 import type { Grid } from './grid.js';
-import { gridAround, newBitmap } from './grid.js';
+import { columnsOf, gridAround, newBitmap } from './grid.js';
 import type { LayerFrame, ModelZ } from './model-z.js';
-import { close, dilate, dropSmallComponents } from './morphology.js';
+import { closeGrown, dropSmallComponents } from './morphology.js';
 import type { GapStats, LayerSupport, SupportSummary } from './report-types.js';
 import type { SectionCache } from './section-cache.js';
 import { sectionSpans } from './section.js';
@@ -23,7 +23,8 @@ import {
   dilateSpans, emptySpans, erodeSpans, isEmptySpans, spansBoolean, spansBounds, spansContain, spansToBitmap,
 } from './spans.js';
 import { WeightedHistogram } from './stats.js';
-import { Cell, LayerRasters, hasSupportMaterial } from './support-raster.js';
+import type { LayerRaster } from './support-raster.js';
+import { Cell, LayerRasters } from './support-raster.js';
 
 /** Support beads deeper than this inside the section count as inside the part (line widths). */
 export const INSIDE_TOLERANCE_LINE_WIDTHS = 0.5;
@@ -109,7 +110,6 @@ export class SupportAnalysis {
       lineWidth: o.lineWidth,
       filamentArea: o.filamentArea,
       widthSource: o.widthSource,
-      reachMm: this.reachMm,
       partHeight: o.partHeight,
       supportHeight: o.supportHeight,
     });
@@ -135,13 +135,12 @@ export class SupportAnalysis {
       overhangAreaMm2: 0, overhangSupportedMm2: 0, partAreaMm2: 0, overNothingMm2: 0, supportAreaMm2: 0, insideMm2: 0,
     };
 
-    if (hasSupportMaterial(layer, frame)) {
+    if (here.supportCells > 0) {
       this.supportLayers++;
       const zs = frame.hasPart ? sectionZ : round6(frame.modelZ - o.supportHeight(frame) / 2);
       const inner = erodeSpans(this.spansAt(zs), INSIDE_TOLERANCE_LINE_WIDTHS * o.lineWidth);
-      const mask = Cell.Support | Cell.Interface;
-      out.supportAreaMm2 = countMasked(here, mask) * c2;
-      out.insideMm2 = countMaskedInSpans(inner, this.grid, here, mask) * c2;
+      out.supportAreaMm2 = here.supportCells * c2;
+      out.insideMm2 = countMaskedInSpans(inner, this.grid, here.bits, Cell.Support | Cell.Interface) * c2;
       this.supportArea += out.supportAreaMm2;
       this.insideArea += out.insideMm2;
       if (out.insideMm2 > this.insideWorstArea) {
@@ -155,8 +154,7 @@ export class SupportAnalysis {
       return out;
     }
 
-    const partCells = countMasked(here, Cell.Part);
-    out.partAreaMm2 = partCells * c2;
+    out.partAreaMm2 = here.partCells * c2;
     this.partArea += out.partAreaMm2;
     const first = l === this.z.firstModelLayer;
     if (first && this.z.raftLayerCount === 0) {
@@ -198,7 +196,8 @@ export class SupportAnalysis {
 
     if (overhang || candidates.length > 0) {
       const bounds = this.cellBounds(overhang, candidates);
-      const grow = 2 * (o.supportSpanMm / 2) + this.reachMm + 2 * this.cell;
+      // The footprint at a cell depends on material up to 2·(span/2) - reach away (see closeGrown).
+      const grow = Math.max(o.supportSpanMm, this.reachMm) + 2 * this.cell;
       const win = this.window(bounds, grow);
       const footprint = this.footprint(win, below);
       if (overhang) {
@@ -259,27 +258,63 @@ export class SupportAnalysis {
     };
   }
 
-  /** Full-grid indices of part cells of `here` that no material below reaches and that lie outside the interior. */
-  private overNothingCandidates(here: Uint8Array, below: number[], previous: Spans): number[] {
-    const reach = newBitmap(this.grid);
-    for (const k of below) {
-      const r = this.rasters.get(k);
-      for (let q = 0; q < r.length; q++) reach[q] = reach[q]! | r[q]!;
-    }
+  /**
+   * Full-grid indices of part cells of `here` with no material of the layers `below` within the reach, outside
+   * the interior of the model layer below. Cells right above material are skipped four at a time; the rest look
+   * for material in the disc of the reach around them.
+   */
+  private overNothingCandidates(here: LayerRaster, below: number[], previous: Spans): number[] {
     const out: number[] = [];
-    for (let q = 0; q < here.length; q++) {
-      if ((here[q]! & Cell.Part) !== 0 && (reach[q]! & Cell.Reach) === 0) out.push(q);
+    const b = here.partBounds;
+    if (!b) return out;
+    const g = this.grid;
+    const under = below.map((k) => this.rasters.get(k).bits);
+    const under4 = under.map(words);
+    const bits = words(here.bits);
+    const perRow = g.cols >>> 2;
+    const open: number[] = [];
+    for (let j = b[1]; j < b[3]; j++) {
+      const row = (j - g.j0) * perRow;
+      for (let w = row + ((b[0] - g.i0) >>> 2); w < row + ((b[2] - g.i0 + 3) >>> 2); w++) {
+        let part = (bits[w]! >>> 1) & LOW_BYTES;
+        if (part === 0) continue;
+        for (const r of under4) part &= ~r[w]!;
+        part &= LOW_BYTES;
+        for (let k = 0; part !== 0; k++, part >>>= 8) if ((part & 1) !== 0) open.push(4 * w + k);
+      }
     }
-    if (out.length === 0) return out;
+    if (open.length === 0) return out;
     // Over the interior of the model layer below (its sparse infill) is not over nothing.
     const interior = erodeSpans(previous, this.o.wallThickness);
-    if (isEmptySpans(interior)) return out;
-    const g = this.grid;
-    return out.filter((q) => {
-      const x = ((q % g.cols) + g.i0 + 0.5) * g.cell;
-      const y = (Math.floor(q / g.cols) + g.j0 + 0.5) * g.cell;
-      return !spansContain(interior, x, y);
-    });
+    const rc = this.reachMm / this.cell;
+    const reach = Math.floor(rc);
+    const r2 = rc * rc;
+    for (const q of open) {
+      const ci = q % g.cols;
+      const cj = (q - ci) / g.cols;
+      if (!isEmptySpans(interior) && spansContain(interior, (ci + g.i0 + 0.5) * g.cell, (cj + g.j0 + 0.5) * g.cell)) {
+        continue;
+      }
+      let held = false;
+      for (let dj = -reach; dj <= reach && !held; dj++) {
+        const jj = cj + dj;
+        if (jj < 0 || jj >= g.rows) continue;
+        const span = Math.floor(Math.sqrt(Math.max(0, r2 - dj * dj)));
+        const from = jj * g.cols + Math.max(0, ci - span);
+        const to = jj * g.cols + Math.min(g.cols - 1, ci + span);
+        for (const r of under) {
+          for (let k = from; k <= to; k++) {
+            if (r[k] !== 0) {
+              held = true;
+              break;
+            }
+          }
+          if (held) break;
+        }
+      }
+      if (!held) out.push(q);
+    }
+    return out;
   }
 
   /** Material of the layers `below` on window `win`, closed over supportSpanMm and grown by the reach. */
@@ -287,15 +322,14 @@ export class SupportAnalysis {
     const any = newBitmap(win);
     const g = this.grid;
     for (const k of below) {
-      const r = this.rasters.get(k);
+      const r = this.rasters.get(k).bits;
       for (let j = 0; j < win.rows; j++) {
         const src = (j + win.j0 - g.j0) * g.cols + (win.i0 - g.i0);
         const dst = j * win.cols;
         for (let i = 0; i < win.cols; i++) if ((r[src + i]! & Cell.Any) !== 0) any[dst + i] = 1;
       }
     }
-    const closed = close(any, win.cols, win.rows, this.o.supportSpanMm / 2 / this.cell);
-    return dilate(closed, win.cols, win.rows, this.reachMm / this.cell);
+    return closeGrown(any, win.cols, win.rows, this.o.supportSpanMm / 2 / this.cell, this.reachMm / this.cell);
   }
 
   /** Per overhang cell: the gap down to the highest support or interface under it. */
@@ -308,7 +342,7 @@ export class SupportAnalysis {
     const limit = zBottom - GAP_SCAN_LAYERS * o.layerHeight - Z_SLACK_MM;
     let left = open;
     for (let k = l - 1; k >= 0 && left.length > 0 && this.layers[k]!.z >= limit; k--) {
-      const r = this.rasters.get(k);
+      const r = this.rasters.get(k).bits;
       const gap = Math.max(0, zBottom - this.layers[k]!.z);
       const next: number[] = [];
       let hit = 0;
@@ -323,9 +357,11 @@ export class SupportAnalysis {
 
   /** Per cell where support starts: the gap down to the part under it, when part (not support) is the first. */
   private measureBottomGap(l: number, frame: LayerFrame): void {
-    if (l === 0) return;
+    const b = this.rasters.get(l).supportBounds;
+    if (l === 0 || !b) return;
     const o = this.o;
-    const here = this.rasters.get(l);
+    const g = this.grid;
+    const here = this.rasters.get(l).bits;
     let prev = -1;
     for (let k = l - 1; k >= 0; k--) {
       if (this.z.frames[k]!.hasSupport) {
@@ -333,19 +369,28 @@ export class SupportAnalysis {
         break;
       }
     }
-    const before = prev >= 0 ? this.rasters.get(prev) : null;
+    const before = prev >= 0 ? this.rasters.get(prev).bits : null;
     const holds = Cell.Support | Cell.Interface | Cell.Raft;
     let open: number[] = [];
-    for (let q = 0; q < here.length; q++) {
-      if ((here[q]! & (Cell.Support | Cell.Interface)) === 0) continue;
-      if (before && (before[q]! & holds) !== 0) continue;
-      open.push(q);
+    const hw = words(here);
+    const bw = before ? words(before) : null;
+    const perRow = g.cols >>> 2;
+    for (let j = b[1]; j < b[3]; j++) {
+      const row = (j - g.j0) * perRow;
+      for (let w = row + ((b[0] - g.i0) >>> 2); w < row + ((b[2] - g.i0 + 3) >>> 2); w++) {
+        // Support or interface here, and no support, interface or raft in the layer of support below.
+        let start = ((hw[w]! >>> 2) | (hw[w]! >>> 3)) & LOW_BYTES;
+        if (start === 0) continue;
+        if (bw) start &= ~((bw[w]! >>> 2) | (bw[w]! >>> 3) | (bw[w]! >>> 4));
+        start &= LOW_BYTES;
+        for (let k = 0; start !== 0; k++, start >>>= 8) if ((start & 1) !== 0) open.push(4 * w + k);
+      }
     }
     if (open.length === 0) return;
     const zBottom = this.layers[l]!.z - o.supportHeight(frame);
     const limit = zBottom - GAP_SCAN_LAYERS * o.layerHeight - Z_SLACK_MM;
     for (let k = l - 1; k >= 0 && open.length > 0 && this.layers[k]!.z >= limit; k--) {
-      const r = this.rasters.get(k);
+      const r = this.rasters.get(k).bits;
       const gap = Math.max(0, zBottom - this.layers[k]!.z);
       const next: number[] = [];
       let onPart = 0;
@@ -425,24 +470,30 @@ export class SupportAnalysis {
   }
 }
 
+/** 1 in every byte of a word: masks four cells' flags at once (Cell bits: Any 0, Part 1, Support 2, Interface 3, Raft 4). */
+const LOW_BYTES = 0x01010101;
+
+/** A raster's cells four to a word (grid columns are a multiple of 4). */
+function words(bits: Uint8Array): Uint32Array {
+  return new Uint32Array(bits.buffer, bits.byteOffset, bits.length >>> 2);
+}
+
 function round6(z: number): number {
   return Math.round(z * 1e6) / 1e6;
 }
 
-/** Cells of a full-grid raster with any of `mask`'s bits. */
-function countMasked(bitmap: Uint8Array, mask: number): number {
-  let n = 0;
-  for (let k = 0; k < bitmap.length; k++) if ((bitmap[k]! & mask) !== 0) n++;
-  return n;
-}
-
-/** Cells whose centres lie in the region and that have any of `mask`'s bits. */
+/** Cells of the grid whose centres lie in the region and that have any of `mask`'s bits. */
 function countMaskedInSpans(s: Spans, grid: Grid, bitmap: Uint8Array, mask: number): number {
-  if (isEmptySpans(s)) return 0;
-  const inside = newBitmap(grid);
-  spansToBitmap(s, grid, inside);
   let n = 0;
-  for (let k = 0; k < bitmap.length; k++) if (inside[k] !== 0 && (bitmap[k]! & mask) !== 0) n++;
+  for (let r = 0; r < grid.rows; r++) {
+    const rs = grid.j0 + r - s.j0;
+    if (rs < 0 || rs >= s.rows) continue;
+    const base = r * grid.cols;
+    for (let q = s.start[rs]!; q < s.start[rs + 1]!; q++) {
+      const [first, last] = columnsOf(grid, s.xs[2 * q]!, s.xs[2 * q + 1]!);
+      for (let k = base + first; k <= base + last; k++) if ((bitmap[k]! & mask) !== 0) n++;
+    }
+  }
   return n;
 }
 
