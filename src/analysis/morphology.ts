@@ -80,12 +80,24 @@ export function dilate(bitmap: Uint8Array, cols: number, rows: number, r: number
   return out;
 }
 
-/** Set cells farther than `r` cells from every unset cell of the window (beyond the window counts as set). */
-export function erode(bitmap: Uint8Array, cols: number, rows: number, r: number): Uint8Array {
+/**
+ * Set cells farther than `r` cells from every unset cell of the window; beyond the window counts as set, or with
+ * `outsideSet` false as unset.
+ */
+export function erode(bitmap: Uint8Array, cols: number, rows: number, r: number, outsideSet = true): Uint8Array {
   const d = squaredDistance(bitmap, cols, rows, 0);
   const out = new Uint8Array(cols * rows);
   const r2 = r * r + 1e-9;
-  for (let k = 0; k < out.length; k++) out[k] = bitmap[k] !== 0 && d[k]! > r2 ? 1 : 0;
+  for (let k = 0; k < out.length; k++) {
+    if (bitmap[k] === 0 || d[k]! <= r2) continue;
+    if (!outsideSet) {
+      const i = k % cols;
+      const j = (k - i) / cols;
+      const edge = Math.min(i + 1, j + 1, cols - i, rows - j);
+      if (edge * edge <= r2) continue;
+    }
+    out[k] = 1;
+  }
   return out;
 }
 
@@ -95,13 +107,19 @@ export function close(bitmap: Uint8Array, cols: number, rows: number, r: number)
 }
 
 /**
- * The closing by `r` cells grown by `grow` cells, taken as growing by r and shrinking by r - grow: the
- * same wherever the closed region is locally convex, slightly larger in its concave corners, and one distance
- * transform cheaper.
+ * Closings by `r` cells grown by any amount up to r, taken as growing by r and shrinking by r - grow (the same
+ * wherever the closed region is locally convex, slightly larger in its concave corners): `within(k, grow)` says
+ * whether cell k is in the one grown by `grow` cells. Two distance transforms serve every amount.
  */
-export function closeGrown(bitmap: Uint8Array, cols: number, rows: number, r: number, grow: number): Uint8Array {
-  const outer = Math.max(r, grow);
-  return erode(dilate(bitmap, cols, rows, outer), cols, rows, outer - grow);
+export function grownClosings(
+  bitmap: Uint8Array, cols: number, rows: number, r: number,
+): (k: number, grow: number) => boolean {
+  const grown = dilate(bitmap, cols, rows, r);
+  const d = squaredDistance(grown, cols, rows, 0);
+  return (k, grow) => {
+    const keep = Math.max(0, r - grow);
+    return grown[k] !== 0 && d[k]! > keep * keep + 1e-9;
+  };
 }
 
 /** Clears (in place) every 8-connected component of set cells with fewer than `minCells` cells. */

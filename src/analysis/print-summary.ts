@@ -50,6 +50,8 @@ export function summarize(
   const onGrid = new Set<number>();
   for (const l of parsed.layers) {
     const frame = frames[l.index]!;
+    // The first layer over a raft stands for the grid's first layer wherever the air gap puts it.
+    if (frame.firstOverRaft) onGrid.add(0);
     if (!onZGrid(frame)) continue;
     const [z, k] = gridZ(frame.modelZ, o);
     if (Math.abs(frame.modelZ - z) > o.zTolerance) {

@@ -14,7 +14,7 @@ import type { GcodeLayer } from './gcode-types.js';
 import type { Grid } from './grid.js';
 import { columnsOf, gridAround, newBitmap } from './grid.js';
 import type { LayerFrame, ModelZ } from './model-z.js';
-import { closeGrown, dropSmallComponents } from './morphology.js';
+import { dilate, dropSmallComponents, erode, grownClosings } from './morphology.js';
 import type { GapStats, LayerSupport, SupportSummary } from './report-types.js';
 import type { SectionCache } from './section-cache.js';
 import { sectionSpans } from './section.js';
@@ -26,6 +26,11 @@ import { WeightedHistogram } from './stats.js';
 import type { LayerRaster } from './support-raster.js';
 import { Cell, LayerRasters } from './support-raster.js';
 
+/**
+ * Overhang strips narrower than this (line widths) are left out: along a wall a little steeper than the threshold
+ * the overhang is a strip of a raster cell or two whose measure is raster noise.
+ */
+export const OVERHANG_MIN_WIDTH_LINE_WIDTHS = 0.5;
 /** Support beads deeper than this inside the section count as inside the part (line widths). */
 export const INSIDE_TOLERANCE_LINE_WIDTHS = 0.5;
 /** Z gaps are looked for this many layer heights below the layer (mm of gap beyond are not measured). */
@@ -38,6 +43,8 @@ const GAP_BIN_MM = 0.001;
 export const SUPPORT_CELL_LINE_WIDTHS = 0.25;
 /** Layers listed as worst. */
 const WORST_LISTED = 5;
+/** Distances between cell centres compared with the threshold's allowance carry this slack (mm). */
+const REACH_SLACK_MM = 1e-3;
 /** Z comparisons between layers allow this much (mm). */
 const Z_SLACK_MM = 1e-4;
 
@@ -103,7 +110,8 @@ export class SupportAnalysis {
     private readonly o: SupportOptions,
   ) {
     this.cell = Math.max(o.cell, SUPPORT_CELL_LINE_WIDTHS * o.lineWidth);
-    this.reachMm = o.layerHeight * Math.tan((o.overhangAngleDeg * Math.PI) / 180) + this.cell;
+    // Raster edges sit within half a cell of the true edges: the allowance is measured between cell centres.
+    this.reachMm = o.layerHeight * Math.tan((o.overhangAngleDeg * Math.PI) / 180) + this.cell / 2 + REACH_SLACK_MM;
     const margin = o.supportSpanMm + 2 * o.lineWidth + this.reachMm;
     this.grid = gridAround(bounds[0], bounds[1], bounds[2], bounds[3], this.cell, margin);
     this.rasters = new LayerRasters(layers, z.frames, this.grid, {
@@ -178,9 +186,13 @@ export class SupportAnalysis {
       const region = spansBoolean(section, grown, 'subtract');
       const b = spansBounds(region);
       if (b) {
-        const win = this.window(b, this.cell);
-        const bitmap = newBitmap(win);
-        spansToBitmap(region, win, bitmap);
+        const win = this.window(b, 2 * this.cell);
+        const raw = newBitmap(win);
+        spansToBitmap(region, win, raw);
+        // Strips narrower than OVERHANG_MIN_WIDTH (an opening) and specks are not overhangs.
+        const r = (OVERHANG_MIN_WIDTH_LINE_WIDTHS * o.lineWidth) / 2 / this.cell;
+        const bitmap = dilate(erode(raw, win.cols, win.rows, r, false), win.cols, win.rows, r);
+        for (let k = 0; k < bitmap.length; k++) bitmap[k] = bitmap[k]! & raw[k]!;
         dropSmallComponents(bitmap, win.cols, win.rows, Math.ceil(o.overhangMinAreaMm2 / c2));
         let n = 0;
         for (let k = 0; k < bitmap.length; k++) n += bitmap[k]!;
@@ -199,11 +211,15 @@ export class SupportAnalysis {
       // The footprint at a cell depends on material up to 2·(span/2) - reach away (see closeGrown).
       const grow = Math.max(o.supportSpanMm, this.reachMm) + 2 * this.cell;
       const win = this.window(bounds, grow);
-      const footprint = this.footprint(win, below);
+      const within = this.footprint(win, below);
+      // An overhang cell has material under it when it lies in that closed material grown by half a cell of raster
+      // slack, not by the threshold's allowance, which the overhang region has already left out.
+      const cellGrow = 0.5 + REACH_SLACK_MM / this.cell;
+      const reachGrow = this.reachMm / this.cell;
       if (overhang) {
         let hit = 0;
         forEachSet(overhang.bitmap, overhang.win, (i, j) => {
-          if (footprint[(j - win.j0) * win.cols + (i - win.i0)] !== 0) hit++;
+          if (within((j - win.j0) * win.cols + (i - win.i0), cellGrow)) hit++;
         });
         out.overhangSupportedMm2 = hit * c2;
         this.measureTopGap(l, zBottom, overhang);
@@ -212,7 +228,7 @@ export class SupportAnalysis {
       for (const k of candidates) {
         const i = (k % this.grid.cols) + this.grid.i0;
         const j = Math.floor(k / this.grid.cols) + this.grid.j0;
-        if (footprint[(j - win.j0) * win.cols + (i - win.i0)] === 0) missing++;
+        if (!within((j - win.j0) * win.cols + (i - win.i0), reachGrow)) missing++;
       }
       out.overNothingMm2 = missing * c2;
     }
@@ -317,8 +333,8 @@ export class SupportAnalysis {
     return out;
   }
 
-  /** Material of the layers `below` on window `win`, closed over supportSpanMm and grown by the reach. */
-  private footprint(win: Grid, below: number[]): Uint8Array {
+  /** Material of the layers `below` on window `win`, closed over supportSpanMm, to be grown by up to the reach. */
+  private footprint(win: Grid, below: number[]): (k: number, growCells: number) => boolean {
     const any = newBitmap(win);
     const g = this.grid;
     for (const k of below) {
@@ -329,7 +345,8 @@ export class SupportAnalysis {
         for (let i = 0; i < win.cols; i++) if ((r[src + i]! & Cell.Any) !== 0) any[dst + i] = 1;
       }
     }
-    return closeGrown(any, win.cols, win.rows, this.o.supportSpanMm / 2 / this.cell, this.reachMm / this.cell);
+    const r = Math.max(this.o.supportSpanMm / 2, this.reachMm) / this.cell;
+    return grownClosings(any, win.cols, win.rows, r);
   }
 
   /** Per overhang cell: the gap down to the highest support or interface under it. */
