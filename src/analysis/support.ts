@@ -14,7 +14,7 @@ import type { GcodeLayer } from './gcode-types.js';
 import type { Grid } from './grid.js';
 import { columnsOf, gridAround, newBitmap } from './grid.js';
 import type { LayerFrame, ModelZ } from './model-z.js';
-import { dilate, dropSmallComponents, erode, grownClosings } from './morphology.js';
+import { dilate, dropSmallComponents, erode, grownClosings, squaredDistance } from './morphology.js';
 import type { GapStats, LayerSupport, SupportSummary } from './report-types.js';
 import type { SectionCache } from './section-cache.js';
 import { sectionSpans } from './section.js';
@@ -41,6 +41,8 @@ export const GAP_LOW_QUANTILE = 0.02;
 const GAP_BIN_MM = 0.001;
 /** Support rasters use cells of at least this many line widths (mm per line width). */
 export const SUPPORT_CELL_LINE_WIDTHS = 0.25;
+/** Over-nothing candidates search discs around each cell while that reads fewer cells than this many windows. */
+const DISC_SEARCH_LIMIT = 4;
 /** Layers listed as worst. */
 const WORST_LISTED = 5;
 /** Distances between cell centres compared with the threshold's allowance carry this slack (mm). */
@@ -302,15 +304,32 @@ export class SupportAnalysis {
     if (open.length === 0) return out;
     // Over the interior of the model layer below (its sparse infill) is not over nothing.
     const interior = erodeSpans(previous, this.o.wallThickness);
-    const rc = this.reachMm / this.cell;
-    const reach = Math.floor(rc);
-    const r2 = rc * rc;
-    for (const q of open) {
+    const outside = isEmptySpans(interior) ? open : open.filter((q) => {
       const ci = q % g.cols;
       const cj = (q - ci) / g.cols;
-      if (!isEmptySpans(interior) && spansContain(interior, (ci + g.i0 + 0.5) * g.cell, (cj + g.j0 + 0.5) * g.cell)) {
-        continue;
+      return !spansContain(interior, (ci + g.i0 + 0.5) * g.cell, (cj + g.j0 + 0.5) * g.cell);
+    });
+    if (outside.length === 0) return out;
+    const rc = this.reachMm / this.cell;
+    // A disc search per cell, or one distance transform over the cells' window when that is cheaper.
+    const bounds = this.cellBounds(null, outside);
+    const win = this.window(bounds, this.reachMm + 2 * this.cell);
+    if (outside.length * Math.PI * rc * rc > DISC_SEARCH_LIMIT * win.cols * win.rows) {
+      const any = this.windowOf(win, below, Cell.Any);
+      const d = squaredDistance(any, win.cols, win.rows, 1);
+      const r2 = rc * rc + 1e-9;
+      for (const q of outside) {
+        const i = (q % g.cols) + g.i0;
+        const j = Math.floor(q / g.cols) + g.j0;
+        if (d[(j - win.j0) * win.cols + (i - win.i0)]! > r2) out.push(q);
       }
+      return out;
+    }
+    const reach = Math.floor(rc);
+    const r2 = rc * rc;
+    for (const q of outside) {
+      const ci = q % g.cols;
+      const cj = (q - ci) / g.cols;
       let held = false;
       for (let dj = -reach; dj <= reach && !held; dj++) {
         const jj = cj + dj;
@@ -333,8 +352,8 @@ export class SupportAnalysis {
     return out;
   }
 
-  /** Material of the layers `below` on window `win`, closed over supportSpanMm, to be grown by up to the reach. */
-  private footprint(win: Grid, below: number[]): (k: number, growCells: number) => boolean {
+  /** The cells of window `win` where any of the layers `below` has one of `mask`'s bits. */
+  private windowOf(win: Grid, below: number[], mask: number): Uint8Array {
     const any = newBitmap(win);
     const g = this.grid;
     for (const k of below) {
@@ -342,9 +361,15 @@ export class SupportAnalysis {
       for (let j = 0; j < win.rows; j++) {
         const src = (j + win.j0 - g.j0) * g.cols + (win.i0 - g.i0);
         const dst = j * win.cols;
-        for (let i = 0; i < win.cols; i++) if ((r[src + i]! & Cell.Any) !== 0) any[dst + i] = 1;
+        for (let i = 0; i < win.cols; i++) if ((r[src + i]! & mask) !== 0) any[dst + i] = 1;
       }
     }
+    return any;
+  }
+
+  /** Material of the layers `below` on window `win`, closed over supportSpanMm, to be grown by up to the reach. */
+  private footprint(win: Grid, below: number[]): (k: number, growCells: number) => boolean {
+    const any = this.windowOf(win, below, Cell.Any);
     const r = Math.max(this.o.supportSpanMm / 2, this.reachMm) / this.cell;
     return grownClosings(any, win.cols, win.rows, r);
   }
