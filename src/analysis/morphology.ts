@@ -9,35 +9,38 @@ const FAR = 2 ** 40;
 
 /**
  * Squared distance, in cells², from each cell's centre to the centre of the nearest cell whose value is nonzero
- * (`of` = 1) or zero (`of` = 0); FAR when there is none.
+ * (`of` = 1) or zero (`of` = 0); FAR when there is none. A sweep down and up the columns (row by row, so memory is
+ * read in order) gives each cell's distance along its column; the lower envelope of parabolas along each row then
+ * gives the 2D distance.
  */
 export function squaredDistance(bitmap: Uint8Array, cols: number, rows: number, of: 0 | 1): Float32Array {
   const g = new Float32Array(cols * rows);
-  // Row pass: distance along the row to the nearest hit (two sweeps), squared.
-  for (let j = 0; j < rows; j++) {
-    const base = j * cols;
-    let last = -FAR;
-    for (let i = 0; i < cols; i++) {
-      if ((bitmap[base + i]! !== 0 ? 1 : 0) === of) last = i;
-      g[base + i] = i - last;
-    }
-    last = 2 * FAR;
-    for (let i = cols - 1; i >= 0; i--) {
-      if ((bitmap[base + i]! !== 0 ? 1 : 0) === of) last = i;
-      const d = Math.min(g[base + i]!, last - i);
-      g[base + i] = d >= FAR ? FAR : d * d;
+  const last = new Float64Array(cols).fill(-FAR);
+  for (let j = 0, k = 0; j < rows; j++) {
+    for (let i = 0; i < cols; i++, k++) {
+      if ((bitmap[k]! !== 0 ? 1 : 0) === of) last[i] = j;
+      g[k] = j - last[i]!;
     }
   }
-  // Column pass: d(i, j) = min over j' of g(i, j') + (j - j')², by the lower envelope of parabolas.
-  const f = new Float64Array(rows);
-  const v = new Int32Array(rows);
-  const z = new Float64Array(rows + 1);
-  for (let i = 0; i < cols; i++) {
+  last.fill(2 * FAR);
+  for (let j = rows - 1; j >= 0; j--) {
+    for (let i = 0, k = j * cols; i < cols; i++, k++) {
+      if ((bitmap[k]! !== 0 ? 1 : 0) === of) last[i] = j;
+      const d = Math.min(g[k]!, last[i]! - j);
+      g[k] = d >= FAR ? FAR : d * d;
+    }
+  }
+  // Along each row: d(i) = min over i' of g(i') + (i - i')², by the lower envelope of parabolas.
+  const f = new Float64Array(cols);
+  const v = new Int32Array(cols);
+  const z = new Float64Array(cols + 1);
+  for (let j = 0; j < rows; j++) {
+    const base = j * cols;
     let any = false;
     let all = true;
-    for (let j = 0, k = i; j < rows; j++, k += cols) {
-      const x = g[k]!;
-      f[j] = x;
+    for (let i = 0; i < cols; i++) {
+      const x = g[base + i]!;
+      f[i] = x;
       if (x < FAR) any = true;
       if (x !== 0) all = false;
     }
@@ -46,7 +49,7 @@ export function squaredDistance(bitmap: Uint8Array, cols: number, rows: number, 
     v[0] = 0;
     z[0] = -Infinity;
     z[1] = Infinity;
-    for (let q = 1; q < rows; q++) {
+    for (let q = 1; q < cols; q++) {
       const fq = f[q]! + q * q;
       let vk = v[k]!;
       let s = (fq - (f[vk]! + vk * vk)) / (2 * (q - vk));
@@ -61,18 +64,59 @@ export function squaredDistance(bitmap: Uint8Array, cols: number, rows: number, 
       z[k + 1] = Infinity;
     }
     k = 0;
-    for (let q = 0, at = i; q < rows; q++, at += cols) {
+    for (let q = 0; q < cols; q++) {
       while (z[k + 1]! < q) k++;
       const dq = q - v[k]!;
       const d = dq * dq + f[v[k]!]!;
-      g[at] = d < FAR ? d : FAR;
+      g[base + q] = d < FAR ? d : FAR;
     }
   }
   return g;
 }
 
+/** Radii (cells) up to this are grown and shrunk by visiting the disc's offsets; larger ones by distance transform. */
+const SMALL_RADIUS_CELLS = 2;
+
+/** Offsets [di, dj] of the lattice points within r of the origin. */
+function discOffsets(r: number): [number, number][] {
+  const out: [number, number][] = [];
+  const n = Math.floor(r);
+  for (let dj = -n; dj <= n; dj++) for (let di = -n; di <= n; di++) if (di * di + dj * dj <= r * r + 1e-9) out.push([di, dj]);
+  return out;
+}
+
+/**
+ * Small radii: a cell of the result is set when any (`all` false: dilation) or every (`all` true: erosion) cell
+ * of the disc around it is set; beyond the window cells count as `outside`.
+ */
+function byOffsets(bitmap: Uint8Array, cols: number, rows: number, r: number, all: boolean, outside: 0 | 1): Uint8Array {
+  const offsets = discOffsets(r);
+  const n = Math.floor(r);
+  const out = new Uint8Array(cols * rows);
+  for (let j = 0; j < rows; j++) {
+    for (let i = 0; i < cols; i++) {
+      const k = j * cols + i;
+      if (all && bitmap[k] === 0) continue;
+      const inner = i >= n && j >= n && i < cols - n && j < rows - n;
+      let hit = all;
+      for (const [di, dj] of offsets) {
+        const v = inner || (i + di >= 0 && j + dj >= 0 && i + di < cols && j + dj < rows)
+          ? (bitmap[k + dj * cols + di] !== 0 ? 1 : 0)
+          : outside;
+        if (all ? v === 0 : v === 1) {
+          hit = !all;
+          break;
+        }
+      }
+      out[k] = hit ? 1 : 0;
+    }
+  }
+  return out;
+}
+
 /** Cells within `r` cells (centre to centre) of a set cell. */
 export function dilate(bitmap: Uint8Array, cols: number, rows: number, r: number): Uint8Array {
+  if (r <= SMALL_RADIUS_CELLS) return byOffsets(bitmap, cols, rows, r, false, 0);
   const d = squaredDistance(bitmap, cols, rows, 1);
   const out = new Uint8Array(cols * rows);
   const r2 = r * r + 1e-9;
@@ -85,6 +129,7 @@ export function dilate(bitmap: Uint8Array, cols: number, rows: number, r: number
  * `outsideSet` false as unset.
  */
 export function erode(bitmap: Uint8Array, cols: number, rows: number, r: number, outsideSet = true): Uint8Array {
+  if (r <= SMALL_RADIUS_CELLS) return byOffsets(bitmap, cols, rows, r, true, outsideSet ? 1 : 0);
   const d = squaredDistance(bitmap, cols, rows, 0);
   const out = new Uint8Array(cols * rows);
   const r2 = r * r + 1e-9;

@@ -20,7 +20,7 @@ import type { SectionCache } from './section-cache.js';
 import { sectionSpans } from './section.js';
 import type { Spans } from './spans.js';
 import {
-  dilateSpans, emptySpans, erodeSpans, isEmptySpans, spansBoolean, spansBounds, spansContain, spansToBitmap,
+  dilateSpans, emptySpans, erodeSpans, isEmptySpans, spansBoolean, spansBounds, spansToBitmap,
 } from './spans.js';
 import { WeightedHistogram } from './stats.js';
 import type { LayerRaster } from './support-raster.js';
@@ -304,11 +304,7 @@ export class SupportAnalysis {
     if (open.length === 0) return out;
     // Over the interior of the model layer below (its sparse infill) is not over nothing.
     const interior = erodeSpans(previous, this.o.wallThickness);
-    const outside = isEmptySpans(interior) ? open : open.filter((q) => {
-      const ci = q % g.cols;
-      const cj = (q - ci) / g.cols;
-      return !spansContain(interior, (ci + g.i0 + 0.5) * g.cell, (cj + g.j0 + 0.5) * g.cell);
-    });
+    const outside = isEmptySpans(interior) ? open : outsideSpans(open, g, interior);
     if (outside.length === 0) return out;
     const rc = this.reachMm / this.cell;
     // A disc search per cell, or one distance transform over the cells' window when that is cheaper.
@@ -537,6 +533,32 @@ function countMaskedInSpans(s: Spans, grid: Grid, bitmap: Uint8Array, mask: numb
     }
   }
   return n;
+}
+
+/**
+ * The cells of `cells` (full-grid indices in increasing order) whose centres lie outside the region, walking each
+ * row's intervals along with the cells.
+ */
+function outsideSpans(cells: number[], g: Grid, s: Spans): number[] {
+  const out: number[] = [];
+  let row = -1;
+  let q = 0;
+  let end = 0;
+  for (const k of cells) {
+    const i = k % g.cols;
+    const j = (k - i) / g.cols;
+    if (j !== row) {
+      row = j;
+      const r = j + g.j0 - s.j0;
+      q = r >= 0 && r < s.rows ? s.start[r]! : 0;
+      end = r >= 0 && r < s.rows ? s.start[r + 1]! : 0;
+    }
+    const x = (i + g.i0 + 0.5) * g.cell;
+    while (q < end && s.xs[2 * q + 1]! < x) q++;
+    if (q < end && s.xs[2 * q]! <= x) continue;
+    out.push(k);
+  }
+  return out;
 }
 
 /** Calls visit(i, j) with the lattice indices of every set cell of a window bitmap. */
