@@ -4,7 +4,7 @@ import { gunzipSync } from 'node:zlib';
 import { fileURLToPath } from 'node:url';
 import { Slicer, prepareModel } from '../api/slicer.js';
 import { analyzePrint } from '../analysis/checks.js';
-import type { PrintReport } from '../analysis/checks.js';
+import type { AnalyzeOptions, PrintReport } from '../analysis/checks.js';
 import type { SliceOptions } from '../settings/schema.js';
 
 /** ../shared/models beside the repository (dist/e2e → repo → ..). */
@@ -39,8 +39,13 @@ export interface SlicedModel {
   warnings: string[];
 }
 
-/** Slice a model with options and analyse the G-code against the placed mesh. */
-export async function sliceAndAnalyze(name: string, options: SliceOptions = {}): Promise<SlicedModel> {
+/**
+ * Slice a model with options and analyse the G-code against the placed mesh; `analyze` adds or overrides analyser
+ * options (for example the support checks' overhangAngleDeg or supportGapLayers, or a modelZOffset).
+ */
+export async function sliceAndAnalyze(
+  name: string, options: SliceOptions = {}, analyze: Partial<AnalyzeOptions> = {},
+): Promise<SlicedModel> {
   const bytes = readModel(name);
   const slicer = new Slicer({ threads: 1, ...options });
   const { gcode, stats, warnings } = await slicer.slice(bytes);
@@ -54,6 +59,7 @@ export async function sliceAndAnalyze(name: string, options: SliceOptions = {}):
     wallThickness: cfg.walls * cfg.lineWidthMm,
     topThickness: cfg.topLayers * cfg.layerHeight,
     bottomThickness: cfg.bottomLayers * cfg.layerHeight,
+    ...analyze,
   });
   return { gcode, report, layers: stats.layers, warnings };
 }
