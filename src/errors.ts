@@ -18,9 +18,14 @@ export type ErrorCode =
 
 export class StrataError extends Error {
   readonly code: ErrorCode;
-  constructor(code: ErrorCode, message: string) {
-    super(message);
+  constructor(code: ErrorCode, message: string, options?: { cause?: unknown }) {
+    super(message, options);
     this.name = 'StrataError';
     this.code = code;
   }
+}
+
+/** The error of a slice stopped by its AbortSignal; `cause` is the signal's reason. */
+export function cancelled(signal?: AbortSignal): StrataError {
+  return new StrataError('CANCELLED', 'slicing was cancelled', signal ? { cause: signal.reason } : undefined);
 }

@@ -66,6 +66,33 @@ test('an aborted signal cancels with a StrataError', async () => {
   await assert.rejects(new Slicer({ threads: 1 }).slice(box(0, 0, 0, 10, 10, 4), { signal: ac.signal }), (e: unknown) => e instanceof StrataError && e.code === 'CANCELLED');
 });
 
+test('progress comes per layer on one thread, never goes back, and ends at 1', async () => {
+  const seen: number[] = [];
+  let slicing = 0;
+  await new Slicer({ threads: 1 }).slice(box(0, 0, 0, 20, 20, 10), { onProgress: (p) => (seen.push(p.fraction), (slicing += p.stage === 'slicing' ? 1 : 0)) });
+  assert.ok(slicing >= 50, `${slicing} progress steps while slicing 50 layers`);
+  for (let i = 1; i < seen.length; i++) assert.ok(seen[i] >= seen[i - 1], `progress went back at step ${i}`);
+  assert.equal(seen[seen.length - 1], 1);
+});
+
+for (const threads of [1, 2]) {
+  test(`an abort mid-slice (${threads} thread${threads > 1 ? 's' : ''}) stops at once, rejecting with CANCELLED whose cause is the signal's reason`, async () => {
+    const ac = new AbortController();
+    const reason = new Error('user pressed Cancel');
+    let after = 0;
+    const slicing = new Slicer({ threads, supportEnabled: true }).slice(box(0, 0, 0, 30, 30, 12), {
+      signal: ac.signal,
+      onProgress: (p) => {
+        if (ac.signal.aborted) after++;
+        else if (p.fraction > 0.1) ac.abort(reason);
+      },
+    });
+    await assert.rejects(slicing, (e: unknown) => e instanceof StrataError && e.code === 'CANCELLED' && e.cause === reason);
+    // the layer being computed when the abort came may still report; nothing after it
+    assert.ok(after <= threads, `${after} progress reports after the abort`);
+  });
+}
+
 test('a model larger than the bed, an empty input and garbage bytes are clear errors', async () => {
   await assert.rejects(new Slicer({ threads: 1 }).slice(box(0, 0, 0, 300, 10, 4)), (e: unknown) => e instanceof StrataError && e.code === 'DOES_NOT_FIT');
   await assert.rejects(new Slicer({ threads: 1 }).slice({ positions: new Float32Array(0) }), StrataError);

@@ -6,9 +6,10 @@ import { StrataError } from '../errors.js';
 import { isNode, nodeBuiltin } from '../runtime.js';
 import { mergeObjects, placeOnBed, positionBounds, prepareMesh, toMeshObjects } from '../mesh/index.js';
 import type { Mesh, MeshReport } from '../mesh/types.js';
-import { runPipeline, type Progress } from '../pipeline/run.js';
+import { runPipeline, type PlacedObject, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
-import { customGenerator, isTransferable, type CustomInfillSpec } from '../pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import { isTransferable, loadCustomInfill, loadedCustomInfill } from '../pipeline/custom-infill-loader.js';
 import { releaseWorkers, startWorkers } from '../workers/pool.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey, type Settings, type SliceOptions } from '../settings/schema.js';
 import { checkKey, resolveConfig, validateValue, type Config } from '../settings/resolve.js';
@@ -38,7 +39,10 @@ export interface SliceCallOptions {
 }
 
 export interface PreparedModel {
+  /** Every object merged, placed on the bed. */
   mesh: Mesh;
+  /** Each object on its own, placed on the bed (sliced separately: object labels, per-object infill origin). */
+  objects: PlacedObject[];
   report: MeshReport;
   /** Translation applied to place the model on the bed, mm. */
   offset: [number, number, number];
@@ -49,8 +53,9 @@ export interface PreparedModel {
 export function prepareModel(input: unknown, cfg: Config): PreparedModel {
   const objects = toMeshObjects(input);
   if (objects.length === 0) throw new StrataError('EMPTY_MODEL', 'the input holds no mesh');
-  const merged = mergeObjects(objects);
-  const { mesh, report } = prepareMesh(merged);
+  const prepared = objects.map((o) => ({ name: o.name, ...prepareMesh(o.mesh) }));
+  const mesh = prepared.length === 1 ? prepared[0].mesh : mergeObjects(prepared);
+  const report = prepared.length === 1 ? prepared[0].report : combineReports(prepared.map((p) => p.report));
   if (mesh.indices.length === 0) throw new StrataError('EMPTY_MODEL', 'the model has no printable triangles');
   const placed = placeOnBed(mesh, {
     center: cfg.center,
@@ -61,7 +66,41 @@ export function prepareModel(input: unknown, cfg: Config): PreparedModel {
   });
   const warnings = [...report.warnings];
   if (objects.length > 1) warnings.unshift(`${objects.length} objects placed together on the plate`);
-  return { mesh: placed.mesh, report, offset: placed.offset, warnings };
+  const placedObjects =
+    prepared.length === 1
+      ? [{ name: prepared[0].name, mesh: placed.mesh }]
+      : prepared.filter((p) => p.mesh.indices.length > 0).map((p) => ({ name: p.name, mesh: translated(p.mesh, placed.offset) }));
+  return { mesh: placed.mesh, objects: placedObjects, report, offset: placed.offset, warnings };
+}
+
+function translated(mesh: Mesh, [dx, dy, dz]: [number, number, number]): Mesh {
+  const p = mesh.positions;
+  const out = new Float32Array(p.length);
+  for (let i = 0; i < p.length; i += 3) {
+    out[i] = p[i] + dx;
+    out[i + 1] = p[i + 1] + dy;
+    out[i + 2] = p[i + 2] + dz;
+  }
+  return { positions: out, indices: mesh.indices };
+}
+
+/** One report for several objects: counts added, bounds joined, warnings kept. */
+function combineReports(reports: readonly MeshReport[]): MeshReport {
+  const out: MeshReport = { triangles: 0, vertices: 0, degenerateRemoved: 0, openEdges: 0, nonManifoldEdges: 0, volume: 0, min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity], warnings: [] };
+  for (const r of reports) {
+    out.triangles += r.triangles;
+    out.vertices += r.vertices;
+    out.degenerateRemoved += r.degenerateRemoved;
+    out.openEdges += r.openEdges;
+    out.nonManifoldEdges += r.nonManifoldEdges;
+    out.volume += r.volume;
+    for (let k = 0; k < 3; k++) {
+      out.min[k] = Math.min(out.min[k], r.min[k]);
+      out.max[k] = Math.max(out.max[k], r.max[k]);
+    }
+    out.warnings.push(...r.warnings);
+  }
+  return out;
 }
 
 async function coreCount(): Promise<number> {
@@ -122,11 +161,13 @@ export class Slicer {
 
   /**
    * Use a custom infiller (IceSL format: a GLSL `cellular()` shader or a cells.png image) instead
-   * of the built-in pattern; null goes back to `infillPattern`. Compiled now, so errors show here.
+   * of the built-in pattern; null goes back to `infillPattern`. Compiled now, so errors show here,
+   * when the shader compiler is loaded (always from the Node entry; in the browser build after
+   * `await loadCustomInfill()`); otherwise the slice loads it and reports the error.
    */
   setCustomInfill(spec: CustomInfillSpec | null): this {
     if (spec) {
-      customGenerator(spec, this.#config);
+      loadedCustomInfill()?.customGenerator(spec, this.#config);
       this.#custom = { ...spec, params: spec.params ? { ...spec.params } : undefined };
     } else {
       this.#custom = undefined;
@@ -194,6 +235,8 @@ export class Slicer {
   ): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
+    // the shader compiler loads on first use (the pipeline compiles the infiller and reports its errors)
+    if (this.#custom) await loadCustomInfill();
     // Workers start loading now, while the model is read and placed, if they will be needed (a custom
     // density given as a JS function cannot travel to a worker).
     const auto = await autoThreads();
@@ -208,13 +251,11 @@ export class Slicer {
       const layersEstimate = b.max[2] / cfg.layerHeight;
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
       threads = cfg.threads > 0 ? cfg.threads : small ? 1 : auto;
-      run = await runPipeline(model.mesh, cfg, {
+      run = await runPipeline(model.objects, cfg, {
         threads,
         sink,
         onProgress: opts.onProgress,
         signal: opts.signal,
-        objectCenter: [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2],
-        height: b.max[2],
         custom: this.#custom,
         started,
       });

@@ -5,7 +5,7 @@
  */
 import { closeSync, openSync, readFileSync, writeSync } from 'node:fs';
 import { basename, extname } from 'node:path';
-import { Slicer } from '../api/slicer.js';
+import { Slicer } from '../index.js';
 import { StrataError } from '../errors.js';
 import { loadModelBytes, prepareMesh, mergeObjects } from '../mesh/index.js';
 import { VERSION } from '../pipeline/run.js';
@@ -13,6 +13,7 @@ import { listPresets } from '../settings/presets/index.js';
 import { SCHEMA, SETTING_KEYS, type SliceOptions } from '../settings/schema.js';
 import { parseArgs, kebab, type ParsedArgs } from './args.js';
 import { progressBar } from './progress.js';
+import { cmdServe } from './serve.js';
 import { layerToSvg } from '../preview/svg.js';
 import { PATTERN_IDS } from '../infill/types.js';
 import { loadInfiller, parseInfillParams } from '../shader/index.js';
@@ -29,6 +30,7 @@ Usage:
   strata infillers [DIR...]                         list custom infillers (IceSL layout) and their parameters
   strata presets                                   list printer and filament presets
   strata settings                                  list every setting with its flag, unit, default and range
+  strata serve [--port N]                          the web page on http://127.0.0.1:N/ (default 8080)
 
 Slice options:
   -o, --output FILE      where to write G-code (- for stdout; default: MODEL.gcode)
@@ -258,6 +260,10 @@ function cmdSettings(): void {
 
 export async function main(argv: readonly string[]): Promise<number> {
   try {
+    if (argv[0] === 'serve') {
+      await cmdServe(argv.slice(1));
+      return 0;
+    }
     const args = parseArgs(argv);
     if (args.flags.version) {
       process.stdout.write(`strata ${VERSION}\n`);
@@ -287,7 +293,7 @@ export async function main(argv: readonly string[]): Promise<number> {
         cmdSettings();
         return 0;
       default:
-        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, preview, infillers, presets, settings)`);
+        throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: slice, info, preview, infillers, presets, settings, serve)`);
     }
   } catch (e) {
     if (e instanceof StrataError) {

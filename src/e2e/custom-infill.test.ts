@@ -4,7 +4,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
-import { Slicer } from '../api/slicer.js';
+import { Slicer } from '../index.js';
 import { StrataError } from '../errors.js';
 import { parseGcode } from '../analysis/gcode-parse.js';
 import { featureLengths } from '../analysis/layer-report.js';

@@ -20,6 +20,22 @@ for (const name of ['CalibrationCube.stl', 'HoleTest.stl']) {
   });
 }
 
+for (const [name, options] of [
+  ['SupportTest.stl', { supportEnabled: true }],
+  ['SupportTest.stl', { supportEnabled: true, supportType: 'tree', adhesionType: 'raft' }],
+  ['spot.stl', { supportEnabled: true, supportPlacement: 'buildPlate', infillPattern: 'lightning' }],
+] as const) {
+  test(`${name} ${JSON.stringify(options)}: identical G-code on 1, 2 and 3 threads`, { skip, timeout: 300_000 }, async () => {
+    const bytes = readModel(name);
+    const one = await new Slicer({ threads: 1, ...options }).slice(bytes);
+    const two = await new Slicer({ threads: 2, ...options }).slice(bytes);
+    const three = await new Slicer({ threads: 3, ...options }).slice(bytes);
+    assert.match(one.gcode, /;TYPE:SUPPORT/);
+    assert.ok(one.gcode === two.gcode, 'threads 1 vs 2');
+    assert.ok(one.gcode === three.gcode, 'threads 1 vs 3');
+  });
+}
+
 test('absolute and relative E give the same filament total', { skip, timeout: 120_000 }, async () => {
   const bytes = readModel('CalibrationCube.stl');
   // start and end G-code without extrusion, so the file's E is exactly the print's

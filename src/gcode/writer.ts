@@ -14,7 +14,7 @@ import { ChunkedText } from './chunked-text.js';
 import { FLAVORS } from './flavor.js';
 import { derivedTemplateValues, headerLines, type GcodeMeta } from './header.js';
 import { MoveWriter } from './move-writer.js';
-import { walkPlan } from '../plan/moves.js';
+import { walkPlanSteps } from '../plan/moves.js';
 import { expandTemplate, placeholders, settingValue } from './template.js';
 
 export type { GcodeMeta } from './header.js';
@@ -50,6 +50,18 @@ export function writeGcode(
   sink: (chunk: string) => void,
   meta: GcodeMeta,
 ): void {
+  const steps = writeGcodeSteps(plan, settings, estimate, sink, meta);
+  while (!steps.next().done);
+}
+
+/** `writeGcode` as steps: yields after each layer, so a caller can pause (and stop) between layers. */
+export function* writeGcodeSteps(
+  plan: PrintPlan,
+  settings: Settings,
+  estimate: PlanEstimate,
+  sink: (chunk: string) => void,
+  meta: GcodeMeta,
+): Generator<void, void> {
   const flavor = FLAVORS[settings.gcodeFlavor];
   const relative = settings.extruderMode === 'relative';
   const derived = derivedTemplateValues(plan, estimate);
@@ -84,7 +96,7 @@ export function writeGcode(
     nozzleTemperature: firstNozzle,
     bedTemperature: firstBed,
   });
-  walkPlan(plan, settings, moves);
+  yield* walkPlanSteps(plan, settings, moves);
 
   for (const l of end) out.line(l);
   out.flush();

@@ -162,6 +162,11 @@ export function opening(areas: readonly ExPolygon[], radiusUm: number): ExPolygo
   return offset(offset(areas, -radiusUm), radiusUm);
 }
 
+/** Close-then-open (grow then shrink): fills gaps and notches narrower than 2·radius µm, joining nearby areas. */
+export function closing(areas: readonly ExPolygon[], radiusUm: number): ExPolygon[] {
+  return offset(offset(areas, radiusUm), -radiusUm);
+}
+
 /** Clip open polylines to areas: the parts inside. */
 export function clipLines(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
   if (lines.length === 0 || areas.length === 0) return [];

@@ -18,10 +18,7 @@ export interface CustomInfillSpec extends InfillerFiles {
   density?: CustomDensity;
 }
 
-/** Whether the spec can be sent to workers (plain data only). */
-export function isTransferable(spec: CustomInfillSpec): boolean {
-  return typeof spec.density !== 'function';
-}
+export { isTransferable } from './custom-infill-loader.js';
 
 function densityInput(d: CustomDensity | undefined): DensityInput | undefined {
   if (d === undefined || typeof d === 'number' || typeof d === 'function' || Array.isArray(d)) return d as DensityInput | undefined;

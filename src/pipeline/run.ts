@@ -1,47 +1,52 @@
 /**
- * The whole pipeline for a placed mesh: layer plan, per-layer work (inline or on a worker pool),
- * the whole-model infill pass where a pattern needs one, adhesion, travel planning, cooling,
- * estimates and G-code written to a sink.
+ * The whole pipeline for placed objects:
+ *   per-layer regions (worker pool) → whole-model passes (support, lightning, raft) → per-layer paths (pool)
+ *   → plan (in layer order, as ranges arrive) → passes over the plan → estimate → G-code to a sink.
+ * When no whole-model pass needs every layer's regions first, each range computes its regions and paths in
+ * one go. The calling thread paces its own work (progress per layer, an abort acts within a time slice).
  */
 import { StrataError } from '../errors.js';
-import { UM_PER_MM, type Pt } from '../geometry/types.js';
-import { writeGcode } from '../gcode/writer.js';
+import { UM_PER_MM, type ExPolygon, type Pt } from '../geometry/types.js';
+import { writeGcodeSteps } from '../gcode/writer.js';
 import { PATTERNS } from '../infill/registry.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
-import type { Mesh } from '../mesh/types.js';
 import type { LayerPaths } from '../paths/types.js';
-import { estimatePlan } from '../plan/estimate.js';
+import { estimatePlanSteps } from '../plan/estimate.js';
 import { planLayer } from '../plan/layer-plan.js';
 import { runPlanPasses } from '../plan/passes.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
-import { adhesionLoops } from '../regions/adhesion.js';
+import { layerSparse, layerTopSkin } from '../regions/layer-regions.js';
+import { raftUnder } from '../regions/raft.js';
+import { supportPass } from '../regions/support/index.js';
+import type { LayerRegions } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
-import { computeRange, lineWidthUm, type RangeJob, type RangeResult } from './layer-work.js';
-import { customGenerator, isTransferable, type CustomInfillSpec } from './custom-infill.js';
+import { pathsOf, rangeSteps, type PathsParams, type RangeJob, type RangeResult } from './layer-work.js';
+import type { CustomInfillSpec } from './custom-infill.js';
+import { isTransferable, loadCustomInfill } from './custom-infill-loader.js';
+import { planObjects, type PlacedObject } from './objects.js';
+import { Pacer } from './pacer.js';
+
+export type { PlacedObject } from './objects.js';
 
 export const VERSION = '0.1.0';
 
 export interface Progress {
-  stage: 'slicing' | 'planning' | 'writing';
+  stage: 'slicing' | 'support' | 'planning' | 'writing';
   /** 0..1 over the whole run. */
   fraction: number;
 }
 
 export interface RunOptions {
-  /** Worker threads; 1 runs inline. */
+  /** Threads: the calling thread plus threads − 1 workers; 1 runs inline. */
   threads: number;
   onProgress?: (p: Progress) => void;
   signal?: AbortSignal;
   /** Receives the G-code in chunks. */
   sink: (chunk: string) => void;
-  /** Centre of the model's bounding box on the bed, mm (object centering origin). */
-  objectCenter: [number, number];
-  /** Model height, mm. */
-  height: number;
   /** Custom infill (shader or image) replacing the built-in pattern. */
   custom?: CustomInfillSpec;
   /** Workers started early (`startWorkers`); used, or ended, here. */
@@ -54,22 +59,33 @@ export interface RunResult {
   layers: number;
 }
 
-function checkAbort(signal?: AbortSignal): void {
-  if (signal?.aborted) throw new StrataError('CANCELLED', 'slicing was cancelled');
-}
-
-function infillParamsFor(cfg: Config, objectCenter: [number, number]): InfillParams {
-  const bedCentre: Pt = cfg.originAtCenter
+function bedCentre(cfg: Config): Pt {
+  return cfg.originAtCenter
     ? { x: 0, y: 0 }
     : { x: Math.round((cfg.buildPlateWidth / 2) * UM_PER_MM), y: Math.round((cfg.buildPlateLength / 2) * UM_PER_MM) };
-  const objCentre: Pt = { x: Math.round(objectCenter[0] * UM_PER_MM), y: Math.round(objectCenter[1] * UM_PER_MM) };
+}
+
+/** Infill parameters of one object: its bounding-box centre is the pattern origin with object centering. */
+function infillParamsFor(cfg: Config, object: PlacedObject): InfillParams {
+  const p = object.mesh.positions;
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  const idx = object.mesh.indices;
+  for (let i = 0; i < idx.length; i++) {
+    const v = idx[i];
+    const x = p[3 * v], y = p[3 * v + 1];
+    if (x < x0) x0 = x;
+    if (x > x1) x1 = x;
+    if (y < y0) y0 = y;
+    if (y > y1) y1 = y;
+  }
+  const objCentre: Pt = { x: Math.round(((x0 + x1) / 2) * UM_PER_MM), y: Math.round(((y0 + y1) / 2) * UM_PER_MM) };
   return {
     density: cfg.infillDensity / 100,
     lineWidth: Math.round(cfg.lineWidthMm * UM_PER_MM),
     nozzleDiameter: Math.round(cfg.nozzleDiameter * UM_PER_MM),
     angle: cfg.infillAngle,
     centering: cfg.infillPatternCentering,
-    origin: cfg.infillPatternCentering === 'global' ? bedCentre : objCentre,
+    origin: cfg.infillPatternCentering === 'global' ? bedCentre(cfg) : objCentre,
     connect: cfg.infillConnect,
   };
 }
@@ -94,114 +110,156 @@ function ranges(n: number, threads: number): Array<[number, number]> {
   return out;
 }
 
-interface JobRunner {
+interface Runner {
   pool: LayerPool | null;
-  /** Computes a job on the calling thread. */
-  local: (job: RangeJob) => RangeResult;
+  /** Computes a job on the calling thread, step by step; `onLayer` after each layer. */
+  local: (job: RangeJob) => Promise<RangeResult>;
+  pacer: Pacer;
   signal?: AbortSignal;
 }
 
 /** Run the jobs; `onResult` sees each result as it arrives (in any order with a pool). */
-async function runJobs(jobs: RangeJob[], runner: JobRunner, onResult: (id: number, r: RangeResult) => void): Promise<void> {
-  const { pool, local, signal } = runner;
-  if (pool) return pool.run(jobs, { local, onResult, signal, helpAboveMs: HELP_ABOVE_MS });
-  for (let id = 0; id < jobs.length; id++) {
-    checkAbort(signal);
-    onResult(id, local(jobs[id]));
-    // let the event loop breathe (progress, cancellation)
-    await new Promise((r) => setTimeout(r, 0));
-  }
+async function runJobs(jobs: RangeJob[], runner: Runner, onResult: (id: number, r: RangeResult) => void): Promise<void> {
+  const { pool, local, pacer } = runner;
+  pacer.check();
+  if (pool) return pool.run(jobs, { local, onResult, signal: runner.signal, helpAboveMs: HELP_ABOVE_MS });
+  for (let id = 0; id < jobs.length; id++) onResult(id, await local(jobs[id]));
 }
 
-export async function runPipeline(mesh: Mesh, cfg: Config, opts: RunOptions): Promise<RunResult> {
-  const { signal } = opts;
-  checkAbort(signal);
-  const layers: LayerZ[] = planLayers(opts.height, cfg.firstLayerHeight, cfg.layerHeight);
-  if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
-  const params = infillParamsFor(cfg, opts.objectCenter);
+/** Whether some whole-model pass needs the regions of every layer before any paths are made. */
+function needsRegionsFirst(cfg: Config, custom: CustomInfillSpec | undefined): boolean {
   const pattern = PATTERNS[cfg.infillPattern as PatternId];
+  return cfg.supportEnabled || cfg.adhesionType === 'raft' || (!!pattern.prepare && !custom && cfg.infillDensity > 0);
+}
+
+export async function runPipeline(objects: readonly PlacedObject[], cfg: Config, opts: RunOptions): Promise<RunResult> {
+  const { signal } = opts;
+  const pacer = new Pacer(signal);
+  pacer.check();
+  let height = 0;
+  for (const o of objects) {
+    const p = o.mesh.positions;
+    for (let i = 2; i < p.length; i += 3) if (p[i] > height) height = p[i];
+  }
+  const layers: LayerZ[] = planLayers(height, cfg.firstLayerHeight, cfg.layerHeight);
+  if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
+  const infillParams = objects.map((o) => infillParamsFor(cfg, o));
   const split = ranges(layers.length, opts.threads);
   // N threads: the calling thread and N-1 workers
   // (a custom density given as a JS function cannot travel to a worker)
   const workers = opts.custom && !isTransferable(opts.custom) ? 0 : Math.min(opts.threads, split.length) - 1;
-  let sliceable: PreparedMesh | null = null;
+  let meshes: PreparedMesh[] | null = null;
   // with workers, the calling thread uses the copy it shares with them
-  const local = () => (sliceable ??= workers > 0 ? sharePrepared(prepareForSlicing(mesh)) : prepareForSlicing(mesh));
-  const pool = workers > 0 ? await createPool(workers, local, cfg, opts.custom, opts.started) : null;
+  const prepared = () => (meshes ??= objects.map((o) => (workers > 0 ? sharePrepared(prepareForSlicing(o.mesh)) : prepareForSlicing(o.mesh))));
+  const pool = workers > 0 ? await createPool(workers, prepared, cfg, opts.custom, opts.started) : null;
   if (!pool && opts.started) await releaseWorkers(opts.started);
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
-    let prepared: unknown[] | undefined;
-    const custom = opts.custom ? customGenerator(opts.custom, cfg) : undefined;
-    const runner: JobRunner = { pool, local: (j) => computeRange(local(), cfg, j, custom), signal };
-    const passes = pattern.prepare && !custom && cfg.infillDensity > 0 ? 2 : 1;
+    const custom = opts.custom ? (await loadCustomInfill()).customGenerator(opts.custom, cfg) : undefined;
+    const twoPhase = needsRegionsFirst(cfg, opts.custom);
+    // progress: the layer work is 80 % of the run (regions and paths halves when there are two phases)
+    const total = layers.length * (twoPhase ? 2 : 1);
     let doneLayers = 0;
-    const total = layers.length * passes;
-    const onDone = (j: RangeJob) => {
-      doneLayers += j.to - j.from;
+    const layerDone = (count: number) => {
+      doneLayers += count;
       report('slicing', (0.8 * doneLayers) / total);
     };
-    if (passes === 2 && pattern.prepare) {
-      const regionJobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: true, infillParams: params }));
+    const runner: Runner = {
+      pool,
+      pacer,
+      signal,
+      local: async (job) => {
+        const steps = rangeSteps(prepared(), cfg, job, custom);
+        for (;;) {
+          const s = steps.next();
+          if (s.done) return s.value;
+          if (!pool) layerDone(1);
+          await pacer.pause();
+        }
+      },
+    };
+    const jobDone = (job: RangeJob) => {
+      if (pool) layerDone(job.to - job.from);
+    };
+    const common: PathsParams = { infillParams, zOffset: 0, adhesion: cfg.adhesionType === 'skirt' || cfg.adhesionType === 'brim' };
+
+    let jobs: RangeJob[];
+    let raftLayers: LayerRegions[] = [];
+    if (twoPhase) {
+      const regionJobs: RangeJob[] = split.map(([from, to]) => ({ kind: 'regions', layers, from, to }));
       const regionResults: RangeResult[] = [];
       await runJobs(regionJobs, runner, (id, r) => {
         regionResults[id] = r;
-        onDone(regionJobs[id]);
+        jobDone(regionJobs[id]);
       });
       const regions = regionResults.flatMap((r) => r.regions);
-      prepared = pattern.prepare(
-        {
-          layers: regions.map((r) => ({ layerIndex: r.index, z: layers[r.index].z, layerHeight: layers[r.index].height, region: r.infill })),
-          supportNeeded: regions.map((_, i) => (i + 1 < regions.length ? regions[i + 1].topSkin : [])),
-        },
-        params,
-      );
+      report('support', 0.4);
+      await pacer.run(supportPass(regions, cfg));
+      const pattern = PATTERNS[cfg.infillPattern as PatternId];
+      let preparedInfill: unknown[] | undefined;
+      if (pattern.prepare && !custom && cfg.infillDensity > 0) {
+        preparedInfill = pattern.prepare(
+          {
+            layers: regions.map((r) => ({ layerIndex: r.index, z: r.z, layerHeight: r.height, region: layerSparse(r) })),
+            supportNeeded: regions.map((_, i) => (i + 1 < regions.length ? layerTopSkin(regions[i + 1]) : [])),
+          },
+          infillParams[0],
+        );
+      }
+      const raft = raftUnder(regions[0], cfg);
+      raftLayers = raft.layers;
+      common.zOffset = raft.zOffset;
+      const supportOf = (r: LayerRegions | undefined): ExPolygon[] => (r?.support && cfg.supportTopGapLayers === 0 ? [...r.support.body, ...r.support.roof] : []);
+      jobs = split.map(([from, to]) => ({
+        kind: 'paths',
+        layers,
+        from,
+        to,
+        ...common,
+        regions: regions.slice(from, to),
+        supportBelow: regions.slice(from, to).map((_, k) => supportOf(regions[from + k - 1])),
+        prepared: preparedInfill?.slice(from, to),
+      }));
+    } else {
+      jobs = split.map(([from, to]) => ({ kind: 'layers', layers, from, to, ...common }));
     }
-    const jobs = split.map(([from, to]) => ({ layers, from, to, regionsOnly: false, infillParams: params, prepared }));
 
     // Travel planning is sequential (each layer starts where the last one ended), so ranges are
     // planned in order as they arrive, while later ones are still being computed.
     const state = { at: { x: 0, y: 0 } as Pt };
     const planned: LayerPlan[] = [];
+    const plan = (lp: LayerPaths) => planned.push(planLayer(lp, cfg, state, planned.length));
+    if (raftLayers.length) {
+      const raftParams = { ...common, zOffset: 0, adhesion: false };
+      for (const r of raftLayers) plan(pathsOf(r, cfg, raftParams, custom, []));
+    }
     const arrived: Array<RangeResult | undefined> = new Array(jobs.length);
     let nextToPlan = 0;
-    const onResult = (id: number, r: RangeResult) => {
-      onDone(jobs[id]);
+    await runJobs(jobs, runner, (id, r) => {
+      jobDone(jobs[id]);
       arrived[id] = r;
       for (let ready = arrived[nextToPlan]; ready; ready = arrived[nextToPlan]) {
         arrived[nextToPlan++] = undefined;
-        for (const lp of ready.paths) {
-          if (planned.length === 0) addAdhesion(lp, cfg);
-          planned.push(planLayer(lp, cfg, state));
-        }
+        for (const lp of ready.paths) plan(lp);
       }
-    };
-    await runJobs(jobs, runner, onResult);
+    });
     // the workers' memory goes back before the G-code is written
     await pool?.close();
-    checkAbort(signal);
+    pacer.check();
     report('planning', 0.8);
-    const plan: PrintPlan = { layers: planned, objects: [], bounds: planBounds(planned) };
-    runPlanPasses(plan, cfg);
-    checkAbort(signal);
-    const estimate = estimatePlan(plan, cfg);
-    report('writing', 0.9);
-    writeGcode(plan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}` });
+    const printPlan: PrintPlan = { layers: planned, objects: planObjects(objects), bounds: planBounds(planned) };
+    runPlanPasses(printPlan, cfg);
+    pacer.check();
+    const n = planned.length;
+    let k = 0;
+    const estimate = await pacer.run(estimatePlanSteps(printPlan, cfg), () => report('planning', 0.8 + (0.1 * ++k) / n));
+    k = 0;
+    await pacer.run(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}` }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
-    return { plan, estimate, layers: planned.length };
+    return { plan: printPlan, estimate, layers: planned.length };
   } finally {
     await pool?.close();
   }
-}
-
-/** Skirt or brim around the first layer. */
-function addAdhesion(first: LayerPaths, cfg: Config): void {
-  first.adhesion = adhesionLoops(
-    first.islands.map((i) => i.outline),
-    cfg,
-    lineWidthUm(cfg, 0),
-  );
-  first.adhesionFeature = cfg.adhesionType === 'brim' ? 'BRIM' : 'SKIRT';
 }
 
 function planBounds(layers: readonly LayerPlan[]): PrintPlan['bounds'] {

@@ -19,7 +19,7 @@
  * Filament: Σ E of the extrusions (width × height × length over the filament cross-section × flow ×
  * flowRate) plus the extra prime after each retraction; weight from `filamentDensity` (g/cm³).
  */
-import { filamentArea, walkPlan, type MoveSettings, type MoveSink } from './moves.js';
+import { filamentArea, walkPlanSteps, type MoveSettings, type MoveSink } from './moves.js';
 import type { Settings } from '../settings/schema.js';
 import type { PlanEstimate, PrintPlan } from './types.js';
 
@@ -209,8 +209,17 @@ class MotionTimer implements MoveSink {
 
 /** Estimate print time (per layer and total) and filament use of a plan. */
 export function estimatePlan(plan: PrintPlan, s: EstimateSettings): PlanEstimate {
+  const steps = estimatePlanSteps(plan, s);
+  for (;;) {
+    const r = steps.next();
+    if (r.done) return r.value;
+  }
+}
+
+/** `estimatePlan` as steps: yields after each layer. */
+export function* estimatePlanSteps(plan: PrintPlan, s: EstimateSettings): Generator<void, PlanEstimate> {
   const timer = new MotionTimer(s.acceleration, s.cornerVelocity);
-  walkPlan(plan, s, timer);
+  yield* walkPlanSteps(plan, s, timer);
   let printTimeSeconds = 0;
   for (const t of timer.layerSeconds) printTimeSeconds += t;
   const volumeCm3 = (timer.filament * filamentArea(s.filamentDiameter)) / 1000;

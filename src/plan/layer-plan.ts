@@ -1,13 +1,15 @@
 /**
- * Turns one layer's paths into ordered plan steps: islands nearest-first; in each island the walls
- * (inner-first or outer-first, seams placed), then sparse infill, then skin; travels combed inside
- * the island, retracted when they leave it or are long.
+ * Turns one layer's path groups into ordered plan steps: groups by kind (adhesion, support, islands; see
+ * print-order.ts), nearest-first within a kind; in each group its entries in print order (walls by the wall
+ * order setting, seams placed; lines nearest-first); runs over air printed their own way (bridges, slowed
+ * overhang walls). Travels are combed inside the group, retracted when they leave it or are long.
  */
-import { UM_PER_MM, type Polygon, type Polyline, type Pt } from '../geometry/types.js';
-import type { IslandPaths, LayerPaths } from '../paths/types.js';
+import { UM_PER_MM, type Polygon, type Pt } from '../geometry/types.js';
+import { orderNearest } from '../geometry/nearest-order.js';
+import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
 import { combRoute, makeCombArea, pathLength, type CombArea } from './comb.js';
-import { orderNearest, orderPolylines } from '../geometry/nearest-order.js';
+import { GROUP_ORDER, OVER_AIR_STYLE, roleFeature, roleSpeed, sortEntries } from './print-order.js';
 import { chooseSeam, rotateLoop } from './seam.js';
 import type { ExtrudeStep, FeatureType, LayerPlan, PlanStep } from './types.js';
 
@@ -21,29 +23,22 @@ interface Ctx {
   layer: LayerPaths;
   steps: PlanStep[];
   at: Pt;
+  /** The plan's first layer (first-layer speeds). */
   first: boolean;
   /** The next travel is the first of the layer (retract on layer change). */
   layerStart: boolean;
-  width: number;
   loopNo: number;
-  /** Comb area of the island being printed, or null between islands. */
+  /** Comb area of the group being printed, or null between groups. */
   comb: CombArea | null;
+  object?: number;
 }
 
-function speedFor(cfg: Config, feature: FeatureType, first: boolean): number {
-  if (first) return cfg.firstLayerSpeed;
-  switch (feature) {
-    case 'WALL-OUTER':
-      return cfg.perimeterSpeed;
-    case 'WALL-INNER':
-      return cfg.innerWallSpeed;
-    case 'SKIN':
-      return cfg.skinSpeed;
-    case 'FILL':
-      return cfg.infillSpeed;
-    default:
-      return cfg.firstLayerSpeed;
-  }
+/** How one entry's extrusions print. */
+interface Style {
+  feature: FeatureType;
+  speed: number;
+  flow: number;
+  fan?: number;
 }
 
 function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
@@ -65,7 +60,7 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
       leaves = false;
     }
   } else if (ctx.comb && !cfg.combing && !forceRetract) {
-    // Without combing a travel stays inside the island only when the straight line does.
+    // Without combing a travel stays inside the group only when the straight line does.
     const route = combRoute(from, to, ctx.comb);
     leaves = !(route && route.length === 1);
   }
@@ -75,26 +70,78 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   ctx.at = to;
 }
 
-function extrude(ctx: Ctx, feature: FeatureType, points: Pt[], closed: boolean, width = ctx.width): void {
+function extrude(ctx: Ctx, style: Style, points: Pt[], closed: boolean, width: number): void {
   if (points.length < 2) return;
   travelTo(ctx, points[0]);
   const step: ExtrudeStep = {
     kind: 'extrude',
-    feature,
+    feature: style.feature,
     points,
     closed,
     width,
     height: ctx.layer.height,
-    speed: speedFor(ctx.cfg, feature, ctx.first),
-    flow: 1,
+    speed: style.speed,
+    flow: style.flow,
   };
+  if (ctx.object !== undefined) step.object = ctx.object;
+  if (style.fan !== undefined) step.fan = style.fan;
   ctx.steps.push(step);
   ctx.at = closed ? points[0] : points[points.length - 1];
 }
 
-/** Print a set of closed loops nearest-first, each starting at its seam. */
-function printLoops(ctx: Ctx, feature: FeatureType, loops: readonly Polygon[]): void {
+function styleOf(ctx: Ctx, entry: PathEntry): { normal: Style; overAir: Style } {
+  const { cfg } = ctx;
+  const feature = roleFeature(entry);
+  const speed = ctx.first ? cfg.firstLayerSpeed : entry.speed ?? roleSpeed(entry, cfg);
+  const normal: Style = { feature, speed, flow: entry.flow ?? 1 };
+  const air = OVER_AIR_STYLE[entry.role];
+  if (!air || ctx.first) return { normal, overAir: normal };
+  const airSpeed = air.speed(cfg);
+  const overAir: Style = {
+    feature: air.feature ?? feature,
+    // a run that keeps its feature is only ever slowed down
+    speed: air.feature ? airSpeed : Math.min(speed, airSpeed),
+    flow: air.flow ? air.flow(cfg) : normal.flow,
+  };
+  if (air.fan) overAir.fan = air.fan(cfg);
+  const same = overAir.feature === normal.feature && overAir.speed === normal.speed && overAir.flow === normal.flow && overAir.fan === undefined;
+  return { normal, overAir: same ? normal : overAir };
+}
+
+/**
+ * Extrude a path whose edges may be flagged as over air: runs of equal flags become steps of their own
+ * (contiguous, so no travel between them).
+ */
+function extrudeFlagged(ctx: Ctx, styles: { normal: Style; overAir: Style }, points: Pt[], closed: boolean, width: number, flags: Uint8Array | null): void {
+  if (!flags || (styles.overAir === styles.normal)) return extrude(ctx, styles.normal, points, closed, width);
+  const n = points.length;
+  const edges = closed ? n : n - 1;
+  let runStart = 0;
+  for (let e = 1; e <= edges; e++) {
+    if (e < edges && flags[e] === flags[runStart]) continue;
+    const run: Pt[] = [];
+    for (let k = runStart; k <= e; k++) run.push(points[k % n]);
+    extrude(ctx, flags[runStart] ? styles.overAir : styles.normal, run, false, width);
+    runStart = e;
+  }
+}
+
+function widthOf(entry: PathEntry, k: number): number {
+  return typeof entry.width === 'number' ? entry.width : entry.width[k];
+}
+
+/** Closed loops nearest-first, each starting at its seam (walls and most loops) or wherever is nearest (gap loops). */
+function printLoops(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir: Style }): void {
+  const loops = entry.paths;
   if (loops.length === 0) return;
+  if (typeof entry.width !== 'number') {
+    // gap loops with their own widths: nearest first, entered at their nearest point
+    for (const [i] of orderNearest(loops.length, (i) => [loops[i][0]], (i) => loops[i][0], ctx.at)) {
+      const s = chooseSeam(loops[i], 'nearest', ctx.at, 0, 0, 0);
+      extrudeFlagged(ctx, styles, rotateLoop(loops[i], s), true, widthOf(entry, i), rotateFlags(entry.overAir?.[i] ?? null, s));
+    }
+    return;
+  }
   const mode = ctx.cfg.seamPosition;
   // For ordering purposes a loop is entered at its seam (or, for 'nearest', at any vertex: use the first).
   const seams = loops.map((l, i) => (mode === 'nearest' ? -1 : chooseSeam(l, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo + i)));
@@ -107,74 +154,99 @@ function printLoops(ctx: Ctx, feature: FeatureType, loops: readonly Polygon[]): 
   for (const [i] of order) {
     const loop = loops[i];
     const s = seams[i] >= 0 ? seams[i] : chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0);
-    extrude(ctx, feature, rotateLoop(loop, s), true);
+    extrudeFlagged(ctx, styles, rotateLoop(loop, s), true, entry.width, rotateFlags(entry.overAir?.[i] ?? null, s));
   }
   ctx.loopNo += loops.length;
 }
 
-function printLines(ctx: Ctx, feature: FeatureType, lines: readonly Polyline[]): void {
-  for (const line of orderPolylines(lines, ctx.at)) extrude(ctx, feature, line, false);
+function rotateFlags(flags: Uint8Array | null, start: number): Uint8Array | null {
+  if (!flags || start === 0) return flags;
+  const out = new Uint8Array(flags.length);
+  out.set(flags.subarray(start), 0);
+  out.set(flags.subarray(0, start), flags.length - start);
+  return out;
 }
 
-function islandEntry(island: IslandPaths): Pt {
-  const outer = island.walls[0]?.[0] ?? island.outline.outer;
-  return outer[0];
-}
-
-function printIsland(ctx: Ctx, island: IslandPaths): void {
-  const boundary = island.walls[0] && island.walls[0].length ? island.walls[0] : [island.outline.outer, ...island.outline.holes];
-  ctx.comb = null; // arriving from elsewhere: the first travel leaves the previous island
-  const walls = island.walls;
-  const orderIdx = walls.map((_, k) => k);
-  if (ctx.cfg.wallOrder === 'inner-first') orderIdx.reverse();
-  for (const k of orderIdx) {
-    printLoops(ctx, k === 0 ? 'WALL-OUTER' : 'WALL-INNER', walls[k]);
-    // once the first loop is printed the nozzle is inside the island: later travels comb
-    if (!ctx.comb && walls[k].length) ctx.comb = makeCombArea(island.outline, boundary);
-  }
-  if (!ctx.comb) ctx.comb = makeCombArea(island.outline, boundary);
-  printGapLoops(ctx, 'WALL-INNER', island.gapFill);
-  printLoops(ctx, 'FILL', island.infillLoops);
-  printLines(ctx, 'FILL', island.infillLines);
-  printLoops(ctx, 'SKIN', island.skinWalls);
-  printLines(ctx, 'SKIN', island.skinLines);
-  printGapLoops(ctx, 'SKIN', island.skinGaps);
-}
-
-/** Thin loops with their own bead width, nearest first. */
-function printGapLoops(ctx: Ctx, feature: FeatureType, gaps: IslandPaths['gapFill']): void {
-  for (const [i] of orderNearest(gaps.length, (i) => [gaps[i].loop[0]], (i) => gaps[i].loop[0], ctx.at)) {
-    const g = gaps[i];
-    extrude(ctx, feature, rotateLoop(g.loop, chooseSeam(g.loop, 'nearest', ctx.at, 0, 0, 0)), true, g.width);
-  }
-}
-
-/** Build the plan of one layer, starting from where the nozzle is. */
-export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState): LayerPlan {
-  const first = layer.index === 0;
-  const ctx: Ctx = { cfg, layer, steps: [], at: state.at, first, layerStart: layer.index > 0, width: layer.lineWidth, loopNo: 0, comb: null };
-  if (layer.adhesion.length) {
-    const feature: FeatureType = layer.adhesionFeature;
-    printLoops(ctx, feature, layer.adhesion);
-  }
-  const islands = layer.islands.filter((i) => i.walls.some((w) => w.length) || i.gapFill.length || i.infillLines.length || i.skinLines.length || i.infillLoops.length || i.skinWalls.length || i.skinGaps.length);
+/** Open lines nearest-first, each from whichever end is nearer. */
+function printLines(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir: Style }): void {
+  const lines = entry.paths;
   const order = orderNearest(
-    islands.length,
-    (i) => [islandEntry(islands[i])],
-    (i) => islandEntry(islands[i]),
+    lines.length,
+    (i) => [lines[i][0], lines[i][lines[i].length - 1]],
+    (i, s) => (s === 0 ? lines[i][lines[i].length - 1] : lines[i][0]),
     ctx.at,
   );
-  // travels into another island are not combed (printIsland starts each island without a comb area)
-  for (const [i] of order) printIsland(ctx, islands[i]);
+  for (const [i, s] of order) {
+    const flags = entry.overAir?.[i] ?? null;
+    const pts = s === 0 ? lines[i] : lines[i].slice().reverse();
+    extrudeFlagged(ctx, styles, pts, false, widthOf(entry, i), flags && s !== 0 ? flags.slice().reverse() : flags);
+  }
+}
+
+function comb(group: PathGroup): CombArea | null {
+  if (!group.area) return null;
+  const boundary: Polygon[] = group.boundary ?? [group.area.outer, ...group.area.holes];
+  return makeCombArea(group.area, boundary);
+}
+
+function printGroup(ctx: Ctx, group: PathGroup): void {
+  ctx.comb = null; // arriving from elsewhere: the first travel leaves the previous group
+  ctx.object = group.object;
+  const entries = sortEntries(group.entries, ctx.cfg.wallOrder);
+  let combed = false;
+  for (const entry of entries) {
+    // walls: once the first wall is printed the nozzle is inside the island, and later travels comb;
+    // any other entry starts combed
+    if (!combed && entry.role !== 'wall') {
+      ctx.comb = comb(group);
+      combed = true;
+    }
+    const styles = styleOf(ctx, entry);
+    if (entry.closed) printLoops(ctx, entry, styles);
+    else printLines(ctx, entry, styles);
+    if (!combed && entry.paths.length) {
+      ctx.comb = comb(group);
+      combed = true;
+    }
+  }
+  ctx.object = undefined;
+}
+
+/** Where a group is entered, for ordering groups nearest-first. */
+function groupEntry(group: PathGroup): Pt {
+  const outer = group.boundary?.[0];
+  if (outer && outer.length) return outer[0];
+  if (group.area) return group.area.outer[0];
+  for (const e of group.entries) if (e.paths.length && e.paths[0].length) return e.paths[0][0];
+  return { x: 0, y: 0 };
+}
+
+function hasPaths(group: PathGroup): boolean {
+  return group.entries.some((e) => e.paths.length > 0);
+}
+
+/**
+ * Build the plan of one layer, starting from where the nozzle is.
+ * @param position the layer's place in the print (0: the first layer, with first-layer speeds, fan and
+ *   temperatures; the second sets the normal temperatures)
+ */
+export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, position = layer.index): LayerPlan {
+  const first = position === 0;
+  const ctx: Ctx = { cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null };
+  for (const kind of GROUP_ORDER) {
+    const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
+    // travels into another group are not combed (printGroup starts each group without a comb area)
+    for (const [i] of orderNearest(groups.length, (i) => [groupEntry(groups[i])], (i) => groupEntry(groups[i]), ctx.at)) printGroup(ctx, groups[i]);
+  }
   state.at = ctx.at;
   const plan: LayerPlan = {
-    index: layer.index,
+    index: position,
     z: layer.z,
     height: layer.height,
     fan: (first ? cfg.firstLayerFanSpeed : cfg.fanSpeed) / 100,
     steps: ctx.steps,
   };
-  if (layer.index === 1) {
+  if (position === 1) {
     if (cfg.nozzleTemperature !== cfg.firstLayerNozzleTemp) plan.nozzleTemperature = cfg.nozzleTemperature;
     if (cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemp) plan.bedTemperature = cfg.bedTemperature;
   }

@@ -99,6 +99,12 @@ function travelTo(pos: Position, x: number, y: number, speed: number, sink: Move
 
 /** Walk `plan` in print order, telling `sink` every machine move. */
 export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void {
+  const steps = walkPlanSteps(plan, s, sink);
+  while (!steps.next().done);
+}
+
+/** `walkPlan` as steps: yields after each layer, so a caller can pause between layers. */
+export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink): Generator<void, void> {
   const retractDistance = s.retractionEnabled ? s.retractionDistance : 0;
   const primeDistance = s.retractionEnabled ? s.retractionDistance + s.retractionExtraPrime : 0;
   const pos: Position = { x: 0, y: 0, z: NaN, known: false };
@@ -144,5 +150,6 @@ export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void
       pos.y = y;
     }
     sink.layerEnd(layer, li);
+    yield;
   }
 }

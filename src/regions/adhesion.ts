@@ -6,7 +6,7 @@ import { offset, union } from '../geometry/clip.js';
 import type { ExPolygon, Polygon } from '../geometry/types.js';
 
 export interface AdhesionSettings {
-  adhesionType: 'skirt' | 'brim' | 'none';
+  adhesionType: 'skirt' | 'brim' | 'raft' | 'none';
   skirtLoops: number;
   /** mm */
   skirtDistance: number;
@@ -24,7 +24,7 @@ function outerRings(areas: readonly ExPolygon[]): Polygon[] {
  * @param lineWidthUm first-layer line width, µm
  */
 export function adhesionLoops(islands: readonly ExPolygon[], s: AdhesionSettings, lineWidthUm: number): Polygon[] {
-  if (s.adhesionType === 'none' || islands.length === 0) return [];
+  if (s.adhesionType === 'none' || s.adhesionType === 'raft' || islands.length === 0) return [];
   const w = lineWidthUm;
   // fill the holes: only the outside matters
   const solid = union(islands.map((a) => ({ outer: a.outer, holes: [] })));

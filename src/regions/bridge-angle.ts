@@ -1,14 +1,15 @@
 /**
- * Bridge direction: skin printed over air should run from support to support, so that each line is held at
- * both ends, rather than along the gap. When most of an island's bottom skin rests on nothing, the direction is
- * taken between the two largest places where the skin's surroundings rest on the layer below (the anchors),
- * as other slicers do for bridges.
+ * Bridges: bottom skin over nothing on the layer below. Its lines should run from support to support, so that
+ * each line is held at both ends, rather than along the gap: the direction is taken between the two largest
+ * places where the bridge's surroundings rest on the layer below (the anchors), as other slicers do.
  */
-import { area, difference, intersection, offset } from '../geometry/clip.js';
+import { area, difference, intersection, offset, opening } from '../geometry/clip.js';
 import type { ExPolygon } from '../geometry/types.js';
 
-/** The skin counts as a bridge when at least this share of it lies over nothing. */
+/** An island's skin takes the bridge direction as a whole when at least this share of it lies over nothing. */
 const BRIDGE_SHARE = 0.5;
+/** Parts of the skin over nothing narrower than this share of a line width are not bridges (they rest on the walls). */
+const MIN_BRIDGE_WIDTHS = 0.5;
 /** Anchors are sought this many line widths around the unsupported skin (walls and skin wall lie between). */
 const ANCHOR_REACH_WIDTHS = 3;
 
@@ -26,6 +27,37 @@ function centroid(a: ExPolygon): { x: number; y: number; area: number } {
   return A !== 0 ? { x: cx / A, y: cy / A, area: Math.abs(A) } : { x: a.outer[0].x, y: a.outer[0].y, area: 0 };
 }
 
+export interface Bridge {
+  /** The bottom skin over nothing (slivers dropped), µm. */
+  area: ExPolygon[];
+  /** Direction of the lines across it, degrees, or null without two anchors (a cantilever). */
+  angle: number | null;
+  /** Whether most of the skin is bridge (then all of the island's skin may take the bridge direction). */
+  mostly: boolean;
+}
+
+/**
+ * The bridge of an island's bottom skin over the layer below.
+ * @param bottom the island's bottom skin, µm
+ * @param below the section of the layer below, µm
+ */
+export function bridgeOf(bottom: readonly ExPolygon[], below: readonly ExPolygon[], lineWidthUm: number): Bridge {
+  if (bottom.length === 0) return { area: [], angle: null, mostly: false };
+  const raw = difference(bottom, below);
+  if (raw.length === 0) return { area: [], angle: null, mostly: false };
+  const over = opening(raw, (MIN_BRIDGE_WIDTHS * lineWidthUm) / 2);
+  const mostly = area(raw) >= BRIDGE_SHARE * area(bottom);
+  return { area: over, angle: mostly ? anchorAngle(raw, below, lineWidthUm) : null, mostly };
+}
+
+function anchorAngle(unsupported: readonly ExPolygon[], below: readonly ExPolygon[], lineWidthUm: number): number | null {
+  const anchors = intersection(offset(unsupported, ANCHOR_REACH_WIDTHS * lineWidthUm), below).map(centroid);
+  if (anchors.length < 2) return null;
+  anchors.sort((p, q) => q.area - p.area);
+  const [a, b] = anchors;
+  return (Math.atan2(b.y - a.y, b.x - a.x) * 180) / Math.PI;
+}
+
 /**
  * The direction (degrees) skin lines should take when the bottom skin bridges, or null when it does not (or
  * has fewer than two anchors, as over a cantilever).
@@ -36,9 +68,5 @@ export function bridgeAngle(bottom: readonly ExPolygon[], below: readonly ExPoly
   if (bottom.length === 0) return null;
   const unsupported = difference(bottom, below);
   if (unsupported.length === 0 || area(unsupported) < BRIDGE_SHARE * area(bottom)) return null;
-  const anchors = intersection(offset(unsupported, ANCHOR_REACH_WIDTHS * lineWidthUm), below).map(centroid);
-  if (anchors.length < 2) return null;
-  anchors.sort((p, q) => q.area - p.area);
-  const [a, b] = anchors;
-  return (Math.atan2(b.y - a.y, b.x - a.x) * 180) / Math.PI;
+  return anchorAngle(unsupported, below, lineWidthUm);
 }

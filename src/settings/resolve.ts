@@ -18,6 +18,17 @@ export interface Derived {
   firstLayerBedTemp: number;
   printerId: string;
   filamentId: string;
+  /** Support line width, mm. */
+  supportLineWidthMm: number;
+  /** Layers left empty between the support's top and the part above / between the part and support on it. */
+  supportTopGapLayers: number;
+  supportBottomGapLayers: number;
+  supportFloorLayerCount: number;
+  supportWalls: number;
+  /** Raft base line width and spacing, interface line spacing, mm. */
+  raftBaseLineWidthMm: number;
+  raftBaseLineSpacingMm: number;
+  raftInterfaceLineSpacingMm: number;
 }
 
 export type Config = Readonly<Settings & Derived>;
@@ -195,8 +206,21 @@ export function resolveConfig(options: SliceOptions = {}): Config {
     firstLayerBedTemp: s.firstLayerBedTemperature ?? s.bedTemperature,
     printerId: printer.id,
     filamentId: filament.id,
+    supportLineWidthMm: s.supportLineWidth ?? lineWidthMm,
+    supportTopGapLayers: gapLayers(s.supportZGap ?? s.layerHeight, s.layerHeight),
+    supportBottomGapLayers: gapLayers(s.supportBottomZGap ?? s.supportZGap ?? s.layerHeight, s.layerHeight),
+    supportFloorLayerCount: s.supportFloorLayers ?? s.supportInterfaceLayers,
+    supportWalls: s.supportWallCount ?? (s.supportType === 'tree' ? 1 : 0),
+    raftBaseLineWidthMm: s.raftBaseLineWidth ?? 2 * s.nozzleDiameter,
+    raftBaseLineSpacingMm: s.raftBaseLineSpacing ?? 2 * (s.raftBaseLineWidth ?? 2 * s.nozzleDiameter),
+    raftInterfaceLineSpacingMm: s.raftInterfaceLineSpacing ?? 2.5 * lineWidthMm,
   };
   return Object.freeze({ ...s, ...derived });
+}
+
+/** A gap in mm as whole layers (rounded to the nearest). */
+function gapLayers(gapMm: number, layerHeight: number): number {
+  return Math.max(0, Math.round(gapMm / layerHeight + 1e-9));
 }
 
 function round3(x: number): number {

@@ -6,8 +6,8 @@
  */
 import { PATTERN_IDS } from '../infill/types.js';
 
-export type Unit = 'mm' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '';
-export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' | 'adhesion' | 'travel' | 'cooling' | 'gcode' | 'runtime';
+export type Unit = 'mm' | 'mm²' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '';
+export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' | 'support' | 'adhesion' | 'travel' | 'cooling' | 'gcode' | 'runtime';
 
 interface Base {
   unit: Unit;
@@ -172,10 +172,52 @@ export const SCHEMA = {
   flowRate: num(100, 10, 300, '%', 'gcode', 'Extrusion multiplier.'),
 
   // ── adhesion ─────────────────────────────────────────────────────────────────
-  adhesionType: enm(['skirt', 'brim', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, or none.'),
+  adhesionType: enm(['skirt', 'brim', 'raft', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, a raft under it, or none.'),
   skirtLoops: int(1, 1, 20, 'count', 'adhesion', 'Skirt loops.'),
   skirtDistance: num(3, 0, 50, 'mm', 'adhesion', 'Gap between the skirt and the print.'),
   brimWidth: num(8, 0, 50, 'mm', 'adhesion', 'Brim width.'),
+
+  // ── raft ─────────────────────────────────────────────────────────────────────
+  raftMargin: num(3, 0, 50, 'mm', 'adhesion', 'How far the raft reaches beyond the first layer of the print (and its support).'),
+  raftBaseThickness: num(0.3, 0.05, 1.5, 'mm', 'adhesion', 'Thickness of the raft base layer (thick, wide lines on the bed).'),
+  raftBaseLineWidth: optNum(0.2, 3, 'mm', 'adhesion', 'Line width of the raft base. Empty (null) = 2 × nozzleDiameter.'),
+  raftBaseLineSpacing: optNum(0.2, 10, 'mm', 'adhesion', 'Distance between raft base lines. Empty (null) = 2 × the base line width.'),
+  raftInterfaceLayers: int(1, 0, 10, 'count', 'adhesion', 'Raft layers between the base and the surface, with lines across those below.'),
+  raftInterfaceLineSpacing: optNum(0.2, 10, 'mm', 'adhesion', 'Distance between raft interface lines. Empty (null) = 2.5 × lineWidth.'),
+  raftSurfaceLayers: int(2, 0, 10, 'count', 'adhesion', 'Solid raft layers the print stands on.'),
+  raftAirGap: num(0.2, 0, 1, 'mm', 'adhesion', 'Vertical gap between the raft surface and the first layer of the print, so the raft comes off.'),
+  raftSpeed: num(20, 1, 1000, 'mm/s', 'adhesion', 'Speed of the raft base and interface layers (the surface uses skinSpeed).'),
+
+  // ── support ──────────────────────────────────────────────────────────────────
+  supportEnabled: bool(false, 'support', 'Print support under overhangs.'),
+  supportType: enm(['normal', 'tree'] as const, 'normal', 'support', 'Support shape: straight columns under each overhang (normal), or trees whose branches merge on their way down (less material, easier to remove).'),
+  supportPlacement: enm(['everywhere', 'buildPlate'] as const, 'everywhere', 'support', 'Where support may stand: anywhere (also on the part, with a floor), or only on the build plate.'),
+  supportThreshold: num(50, 0, 89, '°', 'support', 'Overhang angle from vertical beyond which a surface gets support.'),
+  supportMinArea: num(0.5, 0, 1000, 'mm²', 'support', 'Overhang areas smaller than this on a layer get no support (specks).'),
+  supportSkipBridges: num(0, 0, 500, 'mm', 'support', 'Overhangs held at both sides by the layer below that span at most this far are bridged, not supported (0 = support every overhang).'),
+  supportPattern: enm(['zigzag', 'lines', 'grid'] as const, 'zigzag', 'support', 'Pattern of the support body: parallel lines joined at their ends (zigzag), separate lines, or a grid.'),
+  supportDensity: num(15, 1, 100, '%', 'support', 'Density of the support body.'),
+  supportAngle: num(0, -180, 180, '°', 'support', 'Direction of the support lines (the same on every layer, so they stack).'),
+  supportZGap: optNum(0, 5, 'mm', 'support', 'Vertical gap between the top of the support and the part above it, in whole layers. Empty (null) = one layer.'),
+  supportBottomZGap: optNum(0, 5, 'mm', 'support', 'Vertical gap between the part and support standing on it. Empty (null) = supportZGap.'),
+  supportXYGap: num(0.4, 0, 10, 'mm', 'support', 'Horizontal gap between support and the part beside it (under an overhanging edge support comes closer, to half a support line width).'),
+  supportInterfaceLayers: int(2, 0, 20, 'count', 'support', 'Dense interface layers at the top of the support, under the part (roof).'),
+  supportFloorLayers: optNum(0, 20, 'count', 'support', 'Dense interface layers where support stands on the part (floor). Empty (null) = supportInterfaceLayers.', 'integer'),
+  supportInterfaceDensity: num(70, 10, 100, '%', 'support', 'Density of the interface (roof and floor) lines.'),
+  supportWallCount: optNum(0, 5, 'count', 'support', 'Walls around support areas. Empty (null) = none for normal support, one for tree support.', 'integer'),
+  supportLineWidth: optNum(0.1, 3, 'mm', 'support', 'Line width of support and its interface. Empty (null) = lineWidth.'),
+  supportSpeed: num(50, 1, 1000, 'mm/s', 'support', 'Speed of the support body.'),
+  supportInterfaceSpeed: num(35, 1, 1000, 'mm/s', 'support', 'Speed of the support interface (roof and floor).'),
+  supportTreeBranchAngle: num(40, 5, 80, '°', 'support', 'Tree support: the steepest angle from vertical at which branches lean towards each other as they go down.'),
+  supportTreeTipDiameter: num(0.8, 0.2, 10, 'mm', 'support', 'Tree support: diameter of a branch tip under the part.'),
+  supportTreeBranchDiameter: num(2.5, 0.5, 50, 'mm', 'support', 'Tree support: diameter a branch grows to (trunks where branches merged grow further, by the diameter angle).'),
+  supportTreeDiameterAngle: num(5, 0, 30, '°', 'support', 'Tree support: how fast a merged branch thickens on its way down (angle of its sides from vertical).'),
+
+  // ── bridges and overhangs ────────────────────────────────────────────────────
+  bridgeSpeed: num(25, 1, 1000, 'mm/s', 'skin', 'Speed of skin printed over air (bridges).'),
+  bridgeFlow: num(100, 10, 200, '%', 'skin', 'Flow of bridge lines, % of normal.'),
+  bridgeFanSpeed: num(100, 0, 100, '%', 'cooling', 'Part-cooling fan while printing bridges.'),
+  overhangWallSpeed: num(15, 1, 1000, 'mm/s', 'walls', 'Speed of walls where they hang over nothing on the layer below.'),
 
   // ── runtime ──────────────────────────────────────────────────────────────────
   threads: int(0, 0, 256, 'count', 'runtime', 'Threads for the per-layer stages (0 = automatic: one per core above two cores, else one). The G-code is the same for any count.'),

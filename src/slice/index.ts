@@ -1,9 +1,9 @@
 /** Slicing: the layer plan and mesh cross-sections. */
 export type { LayerSection, LayerZ } from './types.js';
 export { planLayers, toHalfUm, HALF_UM_PER_MM, MAX_LAYERS } from './layers.js';
-export { sliceMesh, slicePrepared, DEFAULT_MAX_GAP_MM, DEFAULT_MIN_AREA_UM2 } from './slice-mesh.js';
+export { sliceMesh, slicePrepared, SectionStream, DEFAULT_MAX_GAP_MM, DEFAULT_MIN_AREA_UM2 } from './slice-mesh.js';
 export type { SliceOptions } from './slice-mesh.js';
-export { prepareMesh, sweepLayers } from './intersect.js';
+export { prepareMesh, sweepLayers, PlaneSweep } from './intersect.js';
 export type { PreparedMesh, LayerSegments } from './intersect.js';
 export { chainSegments } from './chain.js';
 export type { Chains } from './chain.js';

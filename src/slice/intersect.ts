@@ -79,68 +79,96 @@ function countAtOrBelow(planes: Float64Array, x: number): number {
 }
 
 /**
- * Sweep ascending planes (half-µm grid) bottom to top; call `onLayer(k, segments)` for each plane k.
- * The segments object and its arrays are reused between calls: consume them before returning.
+ * Sweep ascending planes (half-µm grid) bottom to top, one plane per `next()` call, so a caller can slice
+ * layers as it needs them (and pause between them). The segments object and its arrays are reused between
+ * calls: consume them before the next.
  */
-export function sweepLayers(
-  prep: PreparedMesh,
-  planes: Float64Array,
-  onLayer: (k: number, segments: LayerSegments) => void,
-): void {
-  const { positions, indices, zq, triMode } = prep;
-  const { triEdge, edgeA, edgeB, edgeCount } = prep.edges;
-  const triCount = triMode.length;
-  const L = planes.length;
-  if (L === 0) return;
+export class PlaneSweep {
+  readonly #prep: PreparedMesh;
+  readonly #planes: Float64Array;
+  readonly #lastOf: Int32Array;
+  readonly #bucketStart: Int32Array;
+  readonly #order: Int32Array;
+  readonly #active: Int32Array;
+  #activeCount = 0;
+  readonly #edgeStamp: Int32Array;
+  readonly #edgeSlot: Int32Array;
+  readonly #seg: LayerSegments;
+  #k = 0;
 
-  // Bucket triangles by the first plane they cross (counting sort); remember the last one.
-  const firstOf = new Int32Array(triCount).fill(-1);
-  const lastOf = new Int32Array(triCount);
-  const bucketStart = new Int32Array(L + 1);
-  for (let t = 0; t < triCount; t++) {
-    if (!triMode[t]) continue;
-    const z0 = zq[indices[3 * t]], z1 = zq[indices[3 * t + 1]], z2 = zq[indices[3 * t + 2]];
-    const lo = z0 < z1 ? (z0 < z2 ? z0 : z2) : z1 < z2 ? z1 : z2;
-    const hi = z0 > z1 ? (z0 > z2 ? z0 : z2) : z1 > z2 ? z1 : z2;
-    // Crosses plane p iff lo < p ≤ hi.
-    const first = countAtOrBelow(planes, lo);
-    // Most triangles span few planes: walk up rather than search again.
-    let last = first - 1;
-    while (last + 1 < L && planes[last + 1] <= hi) last++;
-    if (first > last) continue;
-    firstOf[t] = first;
-    lastOf[t] = last;
-    bucketStart[first + 1]++;
+  constructor(prep: PreparedMesh, planes: Float64Array) {
+    this.#prep = prep;
+    this.#planes = planes;
+    const { indices, zq, triMode } = prep;
+    const triCount = triMode.length;
+    const L = planes.length;
+    // Bucket triangles by the first plane they cross (counting sort); remember the last one.
+    const firstOf = new Int32Array(triCount).fill(-1);
+    const lastOf = new Int32Array(triCount);
+    const bucketStart = new Int32Array(L + 1);
+    if (L > 0) {
+      for (let t = 0; t < triCount; t++) {
+        if (!triMode[t]) continue;
+        const z0 = zq[indices[3 * t]], z1 = zq[indices[3 * t + 1]], z2 = zq[indices[3 * t + 2]];
+        const lo = z0 < z1 ? (z0 < z2 ? z0 : z2) : z1 < z2 ? z1 : z2;
+        const hi = z0 > z1 ? (z0 > z2 ? z0 : z2) : z1 > z2 ? z1 : z2;
+        // Crosses plane p iff lo < p ≤ hi.
+        const first = countAtOrBelow(planes, lo);
+        // Most triangles span few planes: walk up rather than search again.
+        let last = first - 1;
+        while (last + 1 < L && planes[last + 1] <= hi) last++;
+        if (first > last) continue;
+        firstOf[t] = first;
+        lastOf[t] = last;
+        bucketStart[first + 1]++;
+      }
+    }
+    for (let k = 0; k < L; k++) bucketStart[k + 1] += bucketStart[k];
+    const order = new Int32Array(bucketStart[L]);
+    {
+      const fill = bucketStart.slice(0, L);
+      for (let t = 0; t < triCount; t++) if (firstOf[t] >= 0) order[fill[firstOf[t]]++] = t;
+    }
+    this.#lastOf = lastOf;
+    this.#bucketStart = bucketStart;
+    this.#order = order;
+    this.#active = new Int32Array(order.length);
+    this.#edgeStamp = new Int32Array(prep.edges.edgeCount);
+    this.#edgeSlot = new Int32Array(prep.edges.edgeCount);
+    this.#seg = {
+      segCount: 0,
+      segStart: new Int32Array(64),
+      segEnd: new Int32Array(64),
+      slotCount: 0,
+      slotX: new Float64Array(128),
+      slotY: new Float64Array(128),
+    };
   }
-  for (let k = 0; k < L; k++) bucketStart[k + 1] += bucketStart[k];
-  const order = new Int32Array(bucketStart[L]);
-  {
-    const fill = bucketStart.slice(0, L);
-    for (let t = 0; t < triCount; t++) if (firstOf[t] >= 0) order[fill[firstOf[t]]++] = t;
+
+  /** Planes not yet swept. */
+  get remaining(): number {
+    return this.#planes.length - this.#k;
   }
 
-  const active = new Int32Array(order.length);
-  let activeCount = 0;
-  const edgeStamp = new Int32Array(edgeCount);
-  const edgeSlot = new Int32Array(edgeCount);
-  const seg: LayerSegments = {
-    segCount: 0,
-    segStart: new Int32Array(64),
-    segEnd: new Int32Array(64),
-    slotCount: 0,
-    slotX: new Float64Array(128),
-    slotY: new Float64Array(128),
-  };
+  /** The segments of the next plane, or null when every plane has been swept. */
+  next(): LayerSegments | null {
+    const k = this.#k;
+    const planes = this.#planes;
+    if (k >= planes.length) return null;
+    this.#k = k + 1;
+    const { positions, indices, zq, triMode } = this.#prep;
+    const { triEdge, edgeA, edgeB } = this.#prep.edges;
+    const lastOf = this.#lastOf, bucketStart = this.#bucketStart, order = this.#order, active = this.#active;
+    const edgeStamp = this.#edgeStamp, edgeSlot = this.#edgeSlot, seg = this.#seg;
 
-  for (let k = 0; k < L; k++) {
     // Drop triangles that ended below this plane, add those starting here.
     let n = 0;
-    for (let i = 0; i < activeCount; i++) {
+    for (let i = 0; i < this.#activeCount; i++) {
       const t = active[i];
       if (lastOf[t] >= k) active[n++] = t;
     }
     for (let i = bucketStart[k]; i < bucketStart[k + 1]; i++) active[n++] = order[i];
-    activeCount = n;
+    this.#activeCount = n;
 
     if (seg.segStart.length < n) {
       const cap = Math.max(n, seg.segStart.length * 2);
@@ -201,6 +229,23 @@ export function sweepLayers(
     }
     seg.segCount = n;
     seg.slotCount = slots;
+    return seg;
+  }
+}
+
+/**
+ * Sweep ascending planes (half-µm grid) bottom to top; call `onLayer(k, segments)` for each plane k.
+ * The segments object and its arrays are reused between calls: consume them before returning.
+ */
+export function sweepLayers(
+  prep: PreparedMesh,
+  planes: Float64Array,
+  onLayer: (k: number, segments: LayerSegments) => void,
+): void {
+  const sweep = new PlaneSweep(prep, planes);
+  for (let k = 0; ; k++) {
+    const seg = sweep.next();
+    if (!seg) return;
     onLayer(k, seg);
   }
 }

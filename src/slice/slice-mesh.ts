@@ -17,7 +17,8 @@
 import type { Mesh } from '../mesh/types.js';
 import { chainSegments } from './chain.js';
 import { closeOpenChains } from './gaps.js';
-import { prepareMesh, sweepLayers } from './intersect.js';
+import { PlaneSweep, prepareMesh, sweepLayers } from './intersect.js';
+import type { LayerSegments } from './intersect.js';
 import type { PreparedMesh } from './intersect.js';
 import { ringsToIslands } from './islands.js';
 import { toHalfUm } from './layers.js';
@@ -51,14 +52,61 @@ export function slicePrepared(
   const planes = Float64Array.from(order, (i) => planeOf[i]);
   const out: LayerSection[] = layers.map((l) => ({ index: l.index, z: l.z, height: l.height, sliceZ: l.sliceZ, islands: [] }));
   sweepLayers(prep, planes, (k, seg) => {
-    const chains = chainSegments(seg);
-    const loops = chains.open.length
-      ? chains.closed.concat(closeOpenChains(chains.open, seg.slotX, seg.slotY, maxGapUm))
-      : chains.closed;
-    const rings = simplifySlotRings(loops, seg.slotX, seg.slotY, tolerance);
-    out[order[k]].islands = ringsToIslands(rings, minArea);
+    out[order[k]].islands = segmentsToIslands(seg, maxGapUm, tolerance, minArea);
   });
   return out;
+}
+
+function segmentsToIslands(seg: LayerSegments, maxGapUm: number, toleranceUm: number, minAreaUm2: number) {
+  const chains = chainSegments(seg);
+  const loops = chains.open.length ? chains.closed.concat(closeOpenChains(chains.open, seg.slotX, seg.slotY, maxGapUm)) : chains.closed;
+  const rings = simplifySlotRings(loops, seg.slotX, seg.slotY, toleranceUm);
+  return ringsToIslands(rings, minAreaUm2);
+}
+
+/**
+ * Sections of a run of consecutive layers (ascending), sliced on demand: `at(k)` slices forward as far as
+ * layer `first + k`, so a caller can work layer by layer (and pause) and only what it reaches is cut.
+ * Layers further back than `keep` behind the furthest one asked for are dropped.
+ */
+export class SectionStream {
+  readonly #sweep: PlaneSweep;
+  readonly #layers: readonly LayerZ[];
+  readonly #maxGapUm: number;
+  readonly #toleranceUm: number;
+  readonly #minArea: number;
+  readonly #sections = new Map<number, LayerSection>();
+  #sliced = 0;
+
+  /**
+   * @param layers consecutive layers, ascending (a range of the layer plan)
+   */
+  constructor(prep: PreparedMesh, layers: readonly LayerZ[], toleranceUm: number, options: SliceOptions = {}) {
+    this.#layers = layers;
+    this.#maxGapUm = (options.maxGapMm ?? DEFAULT_MAX_GAP_MM) * 1000;
+    this.#minArea = options.minAreaUm2 ?? DEFAULT_MIN_AREA_UM2;
+    this.#toleranceUm = Number.isFinite(toleranceUm) && toleranceUm > 0 ? toleranceUm : 0;
+    this.#sweep = new PlaneSweep(prep, Float64Array.from(layers, (l) => (Number.isFinite(l.sliceZ) ? toHalfUm(l.sliceZ) : Infinity)));
+  }
+
+  /** The section of the k-th layer of the run. */
+  at(k: number): LayerSection {
+    while (this.#sliced <= k) {
+      const seg = this.#sweep.next();
+      const l = this.#layers[this.#sliced];
+      const islands = seg ? segmentsToIslands(seg, this.#maxGapUm, this.#toleranceUm, this.#minArea) : [];
+      this.#sections.set(this.#sliced, { index: l.index, z: l.z, height: l.height, sliceZ: l.sliceZ, islands });
+      this.#sliced++;
+    }
+    const s = this.#sections.get(k);
+    if (!s) throw new Error(`section ${k} was already released`);
+    return s;
+  }
+
+  /** Forget the sections before the k-th layer of the run. */
+  release(k: number): void {
+    for (const key of this.#sections.keys()) if (key < k) this.#sections.delete(key);
+  }
 }
 
 /**

@@ -7,7 +7,7 @@ import type { Config } from '../settings/resolve.js';
 import type { FromWorker, ToWorker } from './protocol.js';
 
 interface State {
-  mesh: PreparedMesh;
+  meshes: PreparedMesh[];
   cfg: Config;
   custom?: CustomInfillGenerator;
 }
@@ -21,18 +21,18 @@ export function makeHandler(post: (msg: FromWorker) => void, clock: () => number
   state.catch(() => {});
   return (msg) => {
     if (msg.type === 'init') {
-      const { mesh, cfg, custom } = msg;
+      const { meshes, cfg, custom } = msg;
       // the shader compiler loads only when a custom infill needs it
       state = custom
-        ? import('../pipeline/custom-infill.js').then((m) => ({ mesh, cfg, custom: m.customGenerator(custom, cfg) }))
-        : Promise.resolve({ mesh, cfg });
+        ? import('../pipeline/custom-infill.js').then((m) => ({ meshes, cfg, custom: m.customGenerator(custom, cfg) }))
+        : Promise.resolve({ meshes, cfg });
       state.catch(() => {});
       return;
     }
     state
       .then((s) => {
         const t0 = clock();
-        const result = computeRange(s.mesh, s.cfg, msg.job, s.custom);
+        const result = computeRange(s.meshes, s.cfg, msg.job, s.custom);
         post({ type: 'result', id: msg.id, result, ms: clock() - t0 });
       })
       .catch((e: unknown) => {

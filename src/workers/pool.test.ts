@@ -66,8 +66,8 @@ const cfg = resolveConfig({});
 const model = prepareModel(readFileSync(root + 'examples/calibration-cube.stl'), cfg);
 const layers = planLayers(20, cfg.firstLayerHeight, cfg.layerHeight);
 const params = { density: 0.2, lineWidth: 400, nozzleDiameter: 400, angle: 45, centering: 'object' as const, origin: { x: 0, y: 0 }, connect: false };
-const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({ layers, from: Math.floor((k * layers.length) / 6), to: Math.floor(((k + 1) * layers.length) / 6), regionsOnly: false, infillParams: params }));
-const prepared = prepareMesh(model.mesh);
+const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({ kind: 'layers', layers, from: Math.floor((k * layers.length) / 6), to: Math.floor(((k + 1) * layers.length) / 6), infillParams: [params], zOffset: 0, adhesion: true }));
+const prepared = [prepareMesh(model.mesh)];
 const local = (j: RangeJob) => computeRange(prepared, cfg, j);
 const url = new URL('./layer-worker.js', import.meta.url);
 const pool = (mode: Mode, workers = 1, msPerLayer?: number) =>

@@ -4,8 +4,8 @@
  * some; jobs are layer ranges, results come back by range, so the output does not depend on how many
  * workers there are, nor on whether the calling thread computes some ranges itself.
  */
-import { StrataError } from '../errors.js';
-import { isNode } from '../runtime.js';
+import { cancelled, StrataError } from '../errors.js';
+import { isNode, soon } from '../runtime.js';
 import type { PreparedMesh } from '../slice/index.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
 import type { Config } from '../settings/resolve.js';
@@ -50,8 +50,11 @@ export function sharePrepared(m: PreparedMesh): PreparedMesh {
 }
 
 export interface RunOptions {
-  /** Computes a job on the calling thread, which then takes jobs whenever it is free (see `helpAboveMs`); without it only the workers do. */
-  local?: (job: RangeJob) => RangeResult;
+  /**
+   * Computes a job on the calling thread (at once, or stepping with pauses), which then takes jobs whenever it
+   * is free (see `helpAboveMs`); without it only the workers do.
+   */
+  local?: (job: RangeJob) => RangeResult | Promise<RangeResult>;
   /**
    * The calling thread starts taking jobs only once the work not yet handed out would keep the workers
    * busy longer than this (ms, estimated from their last job, not counting each one's first): its first jobs are slow, and on a machine
@@ -72,18 +75,6 @@ export interface LayerPool {
 /** Jobs each worker holds at once, so it never waits for the busy main thread to hand out the next. */
 const IN_FLIGHT = 2;
 
-/** Run `fn` soon, after pending messages; not subject to the timer throttling of background tabs. */
-function soon(fn: () => void): void {
-  if (typeof setImmediate === 'function') setImmediate(fn);
-  else if (typeof MessageChannel === 'function') {
-    const ch = new MessageChannel();
-    ch.port1.onmessage = () => {
-      ch.port1.close();
-      fn();
-    };
-    ch.port2.postMessage(null);
-  } else setTimeout(fn, 0);
-}
 
 /**
  * Start `size` workers now, so they load while the caller still prepares the model; hand them to
@@ -101,11 +92,11 @@ export async function releaseWorkers(started: Promise<Port[]>): Promise<void> {
 }
 
 /**
- * Start `size` workers (or take them from `started`, ending any extra), then prepare the mesh on this
- * thread while they load (`prepare`: best in shared memory, see `sharePrepared`) and send it to them
- * with the settings.
+ * Start `size` workers (or take them from `started`, ending any extra), then prepare the meshes (one per
+ * object) on this thread while they load (`prepare`: best in shared memory, see `sharePrepared`) and send
+ * them to the workers with the settings.
  */
-export async function createPool(size: number, prepare: () => PreparedMesh, cfg: Config, custom?: CustomInfillSpec, started?: Promise<Port[]>, spawn: Spawn = defaultSpawn): Promise<LayerPool> {
+export async function createPool(size: number, prepare: () => PreparedMesh[], cfg: Config, custom?: CustomInfillSpec, started?: Promise<Port[]>, spawn: Spawn = defaultSpawn): Promise<LayerPool> {
   const ready = started ? await started : [];
   await Promise.all(ready.slice(size).map((p) => p.terminate()));
   const ports = [...ready.slice(0, size), ...(await startWorkers(Math.max(0, size - ready.length), spawn))];
@@ -123,8 +114,8 @@ export async function createPool(size: number, prepare: () => PreparedMesh, cfg:
     );
   }
   try {
-    const mesh = prepare();
-    for (const p of ports) p.post({ type: 'init', mesh, cfg, custom });
+    const meshes = prepare();
+    for (const p of ports) p.post({ type: 'init', meshes, cfg, custom });
   } catch (e) {
     await Promise.all(ports.map((p) => p.terminate()));
     throw e;
@@ -173,17 +164,28 @@ export async function createPool(size: number, prepare: () => PreparedMesh, cfg:
         const work = () => {
           if (!local || finished || next >= jobs.length) return;
           const id = take();
-          let r: RangeResult;
+          let r: RangeResult | Promise<RangeResult>;
           try {
             r = local(jobs[id]);
           } catch (e) {
             return finish(e as Error);
           }
+          if (r instanceof Promise) {
+            r.then(
+              (v) => {
+                if (finished) return;
+                complete(id, v);
+                soon(work);
+              },
+              (e: unknown) => finish(e as Error),
+            );
+            return;
+          }
           complete(id, r);
           soon(work);
         };
-        if (signal?.aborted) return finish(new StrataError('CANCELLED', 'slicing was cancelled'));
-        signal?.addEventListener('abort', () => finish(new StrataError('CANCELLED', 'slicing was cancelled')), { once: true });
+        if (signal?.aborted) return finish(cancelled(signal));
+        signal?.addEventListener('abort', () => finish(cancelled(signal)), { once: true });
         if (broken) return finish(broken);
         if (jobs.length === 0) return finish(null);
         current = {

@@ -5,7 +5,7 @@ import type { Config } from '../settings/resolve.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 
 export type ToWorker =
-  | { type: 'init'; mesh: PreparedMesh; cfg: Config; custom?: CustomInfillSpec }
+  | { type: 'init'; meshes: PreparedMesh[]; cfg: Config; custom?: CustomInfillSpec }
   | { type: 'range'; id: number; job: RangeJob };
 
 export type FromWorker =

@@ -1,0 +1,329 @@
+/**
+ * The web page in real Chromium (playwright-core and the system's chromium): open shared models by
+ * the file input and by drag and drop, slice with given settings, download the G-code and compare it
+ * byte for byte with `strata slice` on the same file and the page's exported settings; the preview's
+ * layer count; Cancel; errors in words; settings kept across a reload; the shader compiler loaded only
+ * for custom infill; no console errors; no long task over 100 ms on the page thread while a 3DBenchy
+ * slices. With STRATA_SCREENSHOTS=1 (npm run screenshots) it also writes README's screenshots.
+ */
+import { after, before, describe, test } from 'node:test';
+import assert from 'node:assert/strict';
+import { spawnSync } from 'node:child_process';
+import { mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import type { Server } from 'node:http';
+import type { Download, Page } from 'playwright-core';
+import { startServer } from '../cli/serve.js';
+import { browserMissing, launchChromium, type Browser } from './browser.js';
+import { MODELS_DIR, modelsAvailable, readModel } from './models.js';
+
+const root = fileURLToPath(new URL('../../', import.meta.url));
+const cli = join(root, 'dist/cli/main.js');
+const shots = process.env.STRATA_SCREENSHOTS ? join(root, 'docs/screenshots') : null;
+/** Longest task allowed on the page thread while slicing, ms. */
+const LONG_TASK_MS = 100;
+/** Per test: a 3DBenchy slice in the page takes several seconds on two cores, more under load. */
+const SLOW = { timeout: 240_000 };
+
+const missing = browserMissing() ?? (modelsAvailable() ? null : 'the shared models are not there');
+if (missing && process.env.CI === 'true') throw new Error(`web page tests must run under CI=true: ${missing}`);
+
+describe('web page', { skip: missing ?? false }, () => {
+  let server: Server;
+  let url: string;
+  let browser: Browser;
+  let work: string;
+  let benchy: string;
+  const problems: string[] = [];
+
+  before(async () => {
+    ({ server, url } = await startServer({ port: 0 }));
+    browser = await launchChromium();
+    work = mkdtempSync(join(tmpdir(), 'strata-web-'));
+    benchy = join(work, '3DBenchy.stl');
+    writeFileSync(benchy, readModel('3DBenchy.stl.gz'));
+    if (shots) mkdirSync(shots, { recursive: true });
+  });
+
+  after(async () => {
+    await browser?.close();
+    server?.close();
+    if (work) rmSync(work, { recursive: true, force: true });
+  });
+
+  /** A fresh page (its own storage), with console errors and long tasks recorded. */
+  async function openPage(viewport?: { width: number; height: number }): Promise<Page> {
+    const page = await browser.context.newPage();
+    if (viewport) await page.setViewportSize(viewport);
+    page.on('console', (m) => m.type() === 'error' && problems.push(`console: ${m.text()}`));
+    page.on('pageerror', (e) => problems.push(`page error: ${e.message}`));
+    await page.addInitScript(() => {
+      const w = window as unknown as { __longTasks: Array<[number, number]> };
+      w.__longTasks = [];
+      new PerformanceObserver((list) => {
+        for (const e of list.getEntries()) w.__longTasks.push([e.startTime, e.duration]);
+      }).observe({ type: 'longtask', buffered: true });
+    });
+    await page.goto(url);
+    await page.evaluate(() => localStorage.clear());
+    await page.reload();
+    await page.waitForSelector('html[data-ready="true"]');
+    return page;
+  }
+
+  async function openModel(page: Page, file: string, count = 1): Promise<void> {
+    await page.getByLabel('Open model', { exact: true }).setInputFiles(file);
+    await page.waitForFunction((n) => document.querySelectorAll('#object-list li').length === n, count);
+  }
+
+  async function setSetting(page: Page, label: string, value: string): Promise<void> {
+    const input = page.getByLabel(label, { exact: true });
+    await input.evaluate((el) => el.closest('details')?.setAttribute('open', ''));
+    await input.fill(value);
+    await input.press('Tab');
+  }
+
+  /** Click Slice and wait for the result; returns the long tasks seen while slicing. */
+  async function slice(page: Page): Promise<Array<[number, number]>> {
+    await page.getByRole('button', { name: 'Slice', exact: true }).click();
+    await page.waitForSelector('#stat-layers', { timeout: SLOW.timeout });
+    return page.evaluate(() => {
+      const start = performance.getEntriesByName('strata:slice-start').at(-1)!.startTime;
+      const done = performance.getEntriesByName('strata:slice-done').at(-1)!.startTime;
+      const tasks = (window as unknown as { __longTasks: Array<[number, number]> }).__longTasks;
+      return tasks.filter(([t, d]) => t + d > start && t < done);
+    });
+  }
+
+  /** A README screenshot: no focus ring, the sidebar at its top. */
+  async function shoot(page: Page, name: string): Promise<void> {
+    if (!shots) return;
+    await page.evaluate(() => {
+      (document.activeElement as HTMLElement | null)?.blur();
+      document.querySelector('.sidebar')?.scrollTo(0, 0);
+      document.querySelectorAll('#messages .msg').forEach((m) => m.remove());
+    });
+    await page.waitForTimeout(400);
+    await page.screenshot({ path: join(shots, name) });
+  }
+
+  async function saved(download: Promise<Download>, name: string): Promise<string> {
+    const d = await download;
+    const path = join(work, name);
+    await d.saveAs(path);
+    return path;
+  }
+
+  function cliSlice(model: string, config: string, out: string): Buffer {
+    const r = spawnSync(process.execPath, [cli, 'slice', model, '--config', config, '-o', out, '-q'], { encoding: 'utf8' });
+    assert.equal(r.status, 0, r.stderr);
+    return readFileSync(out);
+  }
+
+  test('3DBenchy: opened, sliced with changed settings, downloaded byte-identical to the CLI; layer count; no long task while slicing', SLOW, async () => {
+    const page = await openPage();
+    await openModel(page, benchy);
+    await page.getByLabel('Printer', { exact: true }).selectOption('prusa-i3-mk3s');
+    await setSetting(page, 'Infill density', '15');
+    await setSetting(page, 'Wall count', '3');
+    await setSetting(page, 'Layer height', '0.25');
+    await shoot(page, 'model.png');
+    const longTasks = await slice(page);
+    assert.deepEqual(
+      longTasks.filter(([, d]) => d > LONG_TASK_MS),
+      [],
+      `long tasks (start ms, duration ms) on the page thread while slicing`,
+    );
+
+    const [gcodeDownload] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]);
+    assert.equal(gcodeDownload.suggestedFilename(), '3DBenchy.gcode', 'named after the model, as the CLI names it');
+    const gcode = await saved(Promise.resolve(gcodeDownload), 'page.gcode');
+    const [settingsDownload] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export', exact: true }).click()]);
+    assert.equal(settingsDownload.suggestedFilename(), 'strata-settings.json');
+    const config = await saved(Promise.resolve(settingsDownload), 'settings.json');
+    assert.deepEqual(JSON.parse(readFileSync(config, 'utf8')), { printer: 'prusa-i3-mk3s', filament: 'pla', infillDensity: 15, wallCount: 3, layerHeight: 0.25 });
+    const expected = cliSlice(benchy, config, join(work, 'cli.gcode'));
+    const got = readFileSync(gcode);
+    assert.ok(got.equals(expected), `the page's G-code (${got.length} bytes) is the CLI's (${expected.length} bytes)`);
+
+    // the preview has the G-code's layers
+    const layers = (expected.toString('utf8').match(/^;LAYER:\d+$/gm) ?? []).length;
+    assert.ok(layers > 150, `${layers} layers`);
+    const slider = page.getByRole('slider', { name: 'Layer', exact: true });
+    await page.waitForFunction(() => !(document.getElementById('preview-panel') as HTMLElement).hidden);
+    assert.equal(Number(await slider.getAttribute('max')) + 1, layers);
+    assert.equal(await page.locator('#stat-layers').textContent(), String(layers));
+    await slider.fill(String(Math.floor(layers / 2)));
+    assert.match((await page.locator('#layer-label').textContent()) ?? '', new RegExp(`^Layer ${Math.floor(layers / 2) + 1} of ${layers} `));
+    // the legend names the G-code's ;TYPE: markers
+    const types = new Set(expected.toString('utf8').match(/^;TYPE:(\S+)$/gm)!.map((l) => l.slice(6)));
+    const legend = await page.locator('#legend li').allTextContents();
+    for (const t of types) assert.ok(legend.some((l) => l.startsWith(t)), `legend shows ${t}: ${legend.join(' | ')}`);
+    await page.getByText('Print time').waitFor();
+    if (shots) {
+      await slider.fill(String(Math.floor(layers * 0.62)));
+      await shoot(page, 'preview.png');
+      await slider.fill(String(Math.floor(layers * 0.3)));
+      await page.getByRole('radio', { name: 'Single layer', exact: true }).check();
+      await page.getByLabel('Travel moves', { exact: true }).check();
+      await page.mouse.move(460, 430);
+      for (let i = 0; i < 6; i++) await page.mouse.wheel(0, -300);
+      await shoot(page, 'preview-layer.png');
+    }
+    await page.close();
+  });
+
+  test('Cancel stops a slice and the page stays usable', SLOW, async () => {
+    const page = await openPage();
+    await openModel(page, benchy);
+    await page.getByRole('button', { name: 'Slice', exact: true }).click();
+    const progress = page.getByRole('progressbar');
+    await progress.waitFor({ state: 'visible' });
+    await page.getByRole('button', { name: 'Cancel', exact: true }).click();
+    await page.getByText('Slicing cancelled.').waitFor();
+    assert.equal(await page.getByRole('button', { name: 'Download G-code', exact: true }).isDisabled(), true);
+    assert.equal(await page.getByRole('button', { name: 'Slice', exact: true }).isEnabled(), true);
+    assert.equal(await page.locator('#result-card').isHidden(), true);
+    // a slice after the cancel works (a small model, to stay quick)
+    await page.getByRole('button', { name: 'Remove', exact: true }).click();
+    await openModel(page, join(MODELS_DIR, 'CalibrationCube.stl'));
+    await slice(page);
+    assert.equal(await page.locator('#stat-layers').textContent(), '100');
+    await page.close();
+  });
+
+  test('errors in words: a broken file, a model too big for the bed, a shader that does not compile', SLOW, async () => {
+    const page = await openPage();
+    await page.getByLabel('Open model', { exact: true }).setInputFiles({ name: 'broken.stl', mimeType: 'model/stl', buffer: Buffer.from('solid broken\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 x\n') });
+    const alert = page.getByRole('alert').filter({ hasText: 'broken.stl' });
+    await alert.waitFor();
+    assert.match((await alert.textContent()) ?? '', /broken\.stl: .{10,}/);
+    // the page stays usable: a good model opens and slices
+    await openModel(page, join(MODELS_DIR, 'CalibrationCube.stl'));
+    await page.getByLabel('Scale %', { exact: true }).fill('2000');
+    await page.getByLabel('Scale %', { exact: true }).press('Tab');
+    await page.locator('#object-list .bad').filter({ hasText: 'larger than the' }).waitFor();
+    await page.getByRole('button', { name: 'Slice', exact: true }).click();
+    await page.getByRole('alert').filter({ hasText: /does not fit/ }).waitFor();
+    await page.locator('#reset-obj').click();
+    // a custom shader that does not compile
+    await page.getByLabel('Load infill shader or image', { exact: true }).setInputFiles({ name: 'bad.glsl', mimeType: 'text/plain', buffer: Buffer.from('vec4 cellular(vec3 w) { return vec4(undefinedThing); }\n') });
+    const shaderError = page.getByRole('alert').filter({ hasText: 'bad.glsl' });
+    await shaderError.waitFor();
+    assert.match((await shaderError.textContent()) ?? '', /undefinedThing/);
+    await slice(page);
+    assert.equal(await page.locator('#stat-layers').textContent(), '100');
+    await page.close();
+  });
+
+  test('a shipped custom infiller on two threads: the shader compiler loads only then, and the G-code is the CLI\'s', SLOW, async () => {
+    const info = JSON.parse(readFileSync(join(root, 'dist/web/build-info.json'), 'utf8')) as { shaderCompiler: { web: string } };
+    const page = await openPage();
+    const requested: string[] = [];
+    page.on('request', (r) => requested.push(new URL(r.url()).pathname.slice(1)));
+    const cube = join(MODELS_DIR, 'CalibrationCube.stl');
+    await openModel(page, cube);
+    await slice(page);
+    assert.ok(!requested.includes(info.shaderCompiler.web), 'no shader compiler for a built-in pattern');
+    // two threads: the library's worker pool runs inside the page's worker (and compiles the shader there too)
+    await setSetting(page, 'Threads', '2');
+    await page.getByLabel('Custom infill', { exact: true }).selectOption('shipped:hexagon-grid');
+    await page.getByText(/Shader hexagon-grid: 3 parameters/).waitFor();
+    assert.ok(requested.includes(info.shaderCompiler.web), `the compiler chunk ${info.shaderCompiler.web} loads for custom infill`);
+    await slice(page);
+    const gcode = await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]).then(([d]) => d), 'hex.gcode');
+    const config = await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export', exact: true }).click()]).then(([d]) => d), 'hex.json');
+    assert.deepEqual(JSON.parse(readFileSync(config, 'utf8')), { printer: 'creality-ender-3', filament: 'pla', threads: 2, infillPattern: 'hexagon-grid' });
+    assert.match((await page.locator('#result-card').textContent()) ?? '', /on 2 threads/);
+    assert.ok(readFileSync(gcode).equals(cliSlice(cube, config, join(work, 'hex-cli.gcode'))), 'custom infill G-code is the CLI\'s');
+    if (shots) {
+      await page.getByRole('slider', { name: 'Layer', exact: true }).fill('60');
+      await page.getByRole('radio', { name: 'Single layer', exact: true }).check();
+      await page.mouse.move(460, 420);
+      for (let i = 0; i < 4; i++) await page.mouse.wheel(0, -300);
+      await shoot(page, 'custom-infill.png');
+    }
+    await page.close();
+  });
+
+  test('drag and drop opens several models, arranged without overlap; settings and choices survive a reload', SLOW, async () => {
+    const page = await openPage();
+    const bytes = readFileSync(join(MODELS_DIR, 'CalibrationCube.stl')).toString('base64');
+    const drop = await page.evaluateHandle((b64) => {
+      const data = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+      const dt = new DataTransfer();
+      for (const name of ['cube-a.stl', 'cube-b.stl', 'cube-c.stl']) dt.items.add(new File([data], name));
+      return dt;
+    }, bytes);
+    await page.dispatchEvent('body', 'drop', { dataTransfer: drop });
+    await page.waitForFunction(() => document.querySelectorAll('#object-list li').length === 3);
+    assert.equal(await page.locator('#object-list .bad').count(), 0, 'no object overlaps another or leaves the bed');
+    const centres = await page.locator('#object-list .name').allTextContents();
+    assert.deepEqual(centres, ['cube-a', 'cube-b', 'cube-c']);
+    // the picker takes several files at once, 3MF and OBJ too
+    const obj = ['v 0 0 0', 'v 10 0 0', 'v 10 10 0', 'v 0 10 0', 'v 0 0 10', 'v 10 0 10', 'v 10 10 10', 'v 0 10 10', 'f 1 3 2', 'f 1 4 3', 'f 5 6 7', 'f 5 7 8', 'f 1 2 6', 'f 1 6 5', 'f 2 3 7', 'f 2 7 6', 'f 3 4 8', 'f 3 8 7', 'f 4 1 5', 'f 4 5 8'].join('\n');
+    await page.getByLabel('Open model', { exact: true }).setInputFiles([{ name: '3DBenchy.3mf', mimeType: 'model/3mf', buffer: readFileSync(join(MODELS_DIR, '3DBenchy.3mf')) }, { name: 'box.obj', mimeType: 'text/plain', buffer: Buffer.from(obj + '\n') }]);
+    await page.waitForFunction(() => document.querySelectorAll('#object-list li').length === 5);
+    assert.deepEqual(await page.locator('#object-list .name').allTextContents(), ['cube-a', 'cube-b', 'cube-c', '3DBenchy', 'box']);
+    assert.equal(await page.locator('#object-list .bad').count(), 0, 'five objects, none overlapping');
+    await setSetting(page, 'Infill density', '35');
+    await page.getByLabel('Filament', { exact: true }).selectOption('petg');
+    await page.reload();
+    await page.waitForSelector('html[data-ready="true"]');
+    assert.equal(await page.getByLabel('Infill density', { exact: true }).inputValue(), '35');
+    assert.equal(await page.getByLabel('Filament', { exact: true }).inputValue(), 'petg');
+    // a settings file as strata slice --config reads it; a bad one is refused in words and changes nothing
+    await page.getByLabel('Import settings', { exact: true }).setInputFiles({ name: 'mine.json', mimeType: 'application/json', buffer: Buffer.from('{"printer": "prusa-mk4", "wallCount": 4, "infillPattern": "voronoi-foam"}') });
+    await page.getByText('Settings from mine.json').waitFor();
+    assert.equal(await page.getByLabel('Printer', { exact: true }).inputValue(), 'prusa-mk4');
+    assert.equal(await page.getByLabel('Wall count', { exact: true }).inputValue(), '4');
+    assert.equal(await page.getByLabel('Infill density', { exact: true }).inputValue(), '20', 'what the file does not set goes back to the presets');
+    await page.getByText(/Shader voronoi-foam/).waitFor();
+    await page.getByLabel('Import settings', { exact: true }).setInputFiles({ name: 'bad.json', mimeType: 'application/json', buffer: Buffer.from('{"wallCount": 4, "layerHieght": 0.2}') });
+    await page.getByRole('alert').filter({ hasText: /bad\.json: unknown setting "layerHieght" \(did you mean "layerHeight"\?\)/ }).waitFor();
+    assert.equal(await page.getByLabel('Printer', { exact: true }).inputValue(), 'prusa-mk4');
+    await page.close();
+    if (shots) {
+      const narrow = await openPage({ width: 420, height: 900 });
+      await openModel(narrow, benchy);
+      await shoot(narrow, 'narrow.png');
+      await narrow.close();
+    }
+  });
+
+  test('an object dragged on the bed and laid on a face is sliced where and as it stands', SLOW, async () => {
+    const page = await openPage();
+    await openModel(page, join(MODELS_DIR, 'spot.stl'));
+    const canvas = (await page.locator('#viewport canvas').boundingBox())!;
+    const cx = canvas.x + canvas.width / 2, cy = canvas.y + canvas.height / 2;
+    const x0 = Number(await page.getByLabel('X mm', { exact: true }).inputValue());
+    // the view is framed on the model: its centre is under the view's centre
+    await page.mouse.move(cx, cy);
+    await page.mouse.down();
+    for (let k = 1; k <= 5; k++) await page.mouse.move(cx + 30 * k, cy);
+    await page.mouse.up();
+    const x1 = Number(await page.getByLabel('X mm', { exact: true }).inputValue());
+    assert.ok(x1 > x0 + 10, `dragged right: X ${x0} → ${x1}`);
+    const sizeBefore = await page.locator('#obj-size').textContent();
+    await page.getByRole('button', { name: 'Lay on face', exact: true }).click();
+    await page.mouse.click(cx + 150, cy);
+    await page.waitForFunction((before) => document.getElementById('obj-size')!.textContent !== before, sizeBefore);
+    const [sx, sy, sz] = ((await page.locator('#obj-size').textContent()) ?? '').match(/[\d.]+/g)!.slice(0, 3).map(Number);
+    assert.ok(Math.abs(sx * sy * sz - 37.72 * 68.72 * 67.62) > 1000, `laid down on another face: ${sx} × ${sy} × ${sz}`);
+    assert.equal(await page.locator('#object-list .bad').count(), 0);
+    await slice(page);
+    const gcode = readFileSync(await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]).then(([d]) => d), 'spot.gcode'), 'utf8');
+    const bound = (k: string) => Number(new RegExp(`^;${k}:(\\S+)$`, 'm').exec(gcode)![1]);
+    const x = Number(await page.getByLabel('X mm', { exact: true }).inputValue()), y = Number(await page.getByLabel('Y mm', { exact: true }).inputValue());
+    // the print (with its skirt around it) is centred where the object stands, as tall as it stands
+    assert.ok(Math.abs((bound('MINX') + bound('MAXX')) / 2 - x) < 1 && Math.abs((bound('MINY') + bound('MAXY')) / 2 - y) < 1, `print centred at ${x}, ${y}`);
+    assert.ok(Math.abs(bound('MAXZ') - sz) < 0.3, `height ${bound('MAXZ')} vs ${sz}`);
+    await page.close();
+  });
+
+  test('no console errors on any page', () => {
+    assert.deepEqual(problems, []);
+  });
+});

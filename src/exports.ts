@@ -1,0 +1,25 @@
+/**
+ * The library's public API, shared by the Node entry (index.ts) and the browser entry (browser.ts).
+ */
+export { Slicer, prepareModel, settingsSchema } from './api/slicer.js';
+export type { SliceResult, SliceStats, SliceCallOptions, PreparedModel } from './api/slicer.js';
+export { StrataError } from './errors.js';
+export type { ErrorCode } from './errors.js';
+export { SCHEMA, SETTING_KEYS } from './settings/schema.js';
+export type { Settings, SliceOptions, SettingKey, SettingDef } from './settings/schema.js';
+export { resolveConfig } from './settings/resolve.js';
+export type { Config } from './settings/resolve.js';
+export { listPresets, findPrinter, findFilament, PRINTER_PRESETS, FILAMENT_PRESETS } from './settings/presets/index.js';
+export { parseStl, parseObj, parse3mf, fromThree, fromArrays, toMeshObjects, loadModelBytes, prepareMesh } from './mesh/index.js';
+export type { Mesh, MeshObject, MeshReport, RawMeshArrays } from './mesh/types.js';
+export { PATTERN_IDS } from './infill/types.js';
+export type { PatternId, InfillPattern } from './infill/types.js';
+export type { PrintPlan, LayerPlan, PlanStep, FeatureType } from './plan/types.js';
+export type { Progress } from './pipeline/run.js';
+export { VERSION } from './pipeline/run.js';
+export { loadCustomInfill } from './pipeline/custom-infill-loader.js';
+export type { CustomInfillSpec, CustomDensity } from './pipeline/custom-infill.js';
+export { FEATURE_TYPES } from './plan/types.js';
+export { TYPE_MARKERS } from './gcode/writer.js';
+export { planToArrays, SEGMENT_STRIDE, TRAVEL_STRIDE, RETRACTION_STRIDE } from './preview/plan-arrays.js';
+export type { PreviewArrays } from './preview/plan-arrays.js';

@@ -1,0 +1,96 @@
+/**
+ * The paths of a layer's support: the body filled with straight lines (zigzag, lines or grid) in one direction
+ * on every layer so they stack into thin walls, the roof and floor with dense lines that turn every layer, and
+ * optional walls round each support area. One group per connected support area, so travel within it combs
+ * and travel between areas retracts, as between islands.
+ */
+import { boundsOf, flatten, offset, pointInArea, union } from '../geometry/clip.js';
+import { UM_PER_MM, type Bounds, type ExPolygon, type Polyline, type Pt } from '../geometry/types.js';
+import { solidFill } from '../infill/index.js';
+import type { SupportAreas } from '../regions/types.js';
+import type { Config } from '../settings/resolve.js';
+import type { LayerZ } from '../slice/types.js';
+import type { PathEntry, PathGroup, PathRole } from './types.js';
+
+/** Lines of one family `spacing` apart over `area` (shrunk so the beads stay inside it). */
+function fill(area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean): Polyline[] {
+  const region = offset(area, -insetUm);
+  return region.length ? solidFill(region, angle, spacingUm, origin, { connect }) : [];
+}
+
+function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: number, origin: Pt): Polyline[] {
+  const d = cfg.supportDensity / 100;
+  switch (cfg.supportPattern) {
+    case 'grid': {
+      const s = (2 * w) / d;
+      return [...fill(body, insetUm, cfg.supportAngle, s, origin, true), ...fill(body, insetUm, cfg.supportAngle + 90, s, origin, true)];
+    }
+    case 'lines':
+      return fill(body, insetUm, cfg.supportAngle, w / d, origin, false);
+    case 'zigzag':
+      return fill(body, insetUm, cfg.supportAngle, w / d, origin, true);
+  }
+}
+
+interface Component {
+  area: ExPolygon;
+  box: Bounds;
+  /** Entries by role and closedness, in the order first met. */
+  entries: Map<string, { role: PathRole; closed: boolean; paths: Pt[][] }>;
+}
+
+function add(c: Component, role: PathRole, closed: boolean, path: Pt[]): void {
+  const key = role + (closed ? ':loops' : ':lines');
+  let e = c.entries.get(key);
+  if (!e) c.entries.set(key, (e = { role, closed, paths: [] }));
+  e.paths.push(path);
+}
+
+/** The component holding `p` (the nearest by bounds when none holds it exactly: a point on an edge). */
+function owner(components: readonly Component[], p: Pt): Component {
+  if (components.length === 1) return components[0];
+  let best = components[0];
+  let bestD = Infinity;
+  for (const c of components) {
+    const b = c.box;
+    const dx = Math.max(b.minX - p.x, 0, p.x - b.maxX), dy = Math.max(b.minY - p.y, 0, p.y - b.maxY);
+    const d = dx * dx + dy * dy;
+    if (d === 0 && pointInArea(p, c.area)) return c;
+    if (d < bestD) {
+      bestD = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+/** The support groups of one layer (none when the layer has no support). */
+export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ, origin: Pt): PathGroup[] {
+  if (!s || (s.body.length === 0 && s.roof.length === 0 && s.floor.length === 0)) return [];
+  const w = Math.round(cfg.supportLineWidthMm * UM_PER_MM);
+  const all = union([...s.body, ...s.roof, ...s.floor]);
+  const components: Component[] = all.map((area) => ({ area, box: boundsOf([area]), entries: new Map() }));
+  // walls round each area; the fill starts inside the innermost
+  let inside = all;
+  for (let k = 0; k < cfg.supportWalls && inside.length; k++) {
+    const centre = offset(inside, -w / 2);
+    for (const ring of flatten(centre)) add(owner(components, ring[0]), 'support', true, ring);
+    inside = offset(centre, -w / 2);
+  }
+  const wallInset = cfg.supportWalls * w;
+  const inset = w / 2 + wallInset;
+  for (const line of bodyLines(s.body, cfg, inset, w, origin)) add(owner(components, line[0]), 'support', false, line);
+  const iface = w / (cfg.supportInterfaceDensity / 100);
+  const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
+  for (const line of fill(s.roof, inset, ifaceAngle, iface, origin, true)) add(owner(components, line[0]), 'support-roof', false, line);
+  for (const line of fill(s.floor, inset, ifaceAngle, iface, origin, true)) add(owner(components, line[0]), 'support-floor', false, line);
+  const width = w / UM_PER_MM;
+  const groups: PathGroup[] = [];
+  for (const c of components) {
+    if (c.entries.size === 0) continue;
+    const entries: PathEntry[] = [];
+    for (const e of c.entries.values()) entries.push({ role: e.role, closed: e.closed, paths: e.paths, width });
+    groups.push({ kind: 'support', area: c.area, entries });
+  }
+  return groups;
+}

@@ -1,0 +1,63 @@
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { rect } from '../geometry/test-shapes.js';
+import type { LayerPaths, PathGroup } from '../paths/types.js';
+import { resolveConfig } from '../settings/resolve.js';
+import { planLayer } from './layer-plan.js';
+import type { ExtrudeStep } from './types.js';
+
+const cfg = resolveConfig({ wallOrder: 'inner-first', perimeterSpeed: 30, innerWallSpeed: 50, overhangWallSpeed: 12, bridgeSpeed: 20, bridgeFlow: 90, bridgeFanSpeed: 100, fanSpeed: 40, supportSpeed: 45 });
+const sq = (x: number, y: number, s: number) => rect(x, y, x + s, y + s).outer;
+
+function layer(groups: PathGroup[]): LayerPaths {
+  return { index: 5, z: 1.2, height: 0.2, sliceZ: 1.1, lineWidth: 0.4, groups };
+}
+
+const island: PathGroup = {
+  kind: 'island',
+  object: 0,
+  area: rect(0, 0, 20_000, 20_000),
+  boundary: [sq(200, 200, 19_600)],
+  entries: [
+    { role: 'skin', closed: false, paths: [[{ x: 1_000, y: 5_000 }, { x: 10_000, y: 5_000 }, { x: 19_000, y: 5_000 }]], width: 0.4, overAir: [Uint8Array.from([0, 1])] },
+    { role: 'wall', wall: 0, closed: true, paths: [sq(200, 200, 19_600)], width: 0.4, overAir: [Uint8Array.from([0, 1, 0, 0])] },
+    { role: 'wall', wall: 1, closed: true, paths: [sq(600, 600, 18_800)], width: 0.4 },
+    { role: 'infill', closed: false, paths: [[{ x: 2_000, y: 2_000 }, { x: 18_000, y: 18_000 }]], width: 0.4 },
+  ],
+};
+const support: PathGroup = { kind: 'support', area: rect(30_000, 0, 40_000, 10_000), entries: [{ role: 'support', closed: false, paths: [[{ x: 31_000, y: 1_000 }, { x: 39_000, y: 1_000 }]], width: 0.4 }] };
+
+test('groups print support first, entries in print order (inner wall, outer wall, infill, skin), each extrusion tagged with its object', () => {
+  const plan = planLayer(layer([island, support]), cfg, { at: { x: 0, y: 0 } });
+  const ex = plan.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude');
+  const order = ex.map((s) => s.feature).filter((f, i, a) => i === 0 || a[i - 1] !== f);
+  assert.deepEqual(order, ['SUPPORT', 'WALL-INNER', 'WALL-OUTER', 'FILL', 'SKIN', 'BRIDGE']);
+  assert.equal(ex[0].speed, 45);
+  assert.ok(ex.filter((s) => s.feature !== 'SUPPORT').every((s) => s.object === 0));
+  assert.equal(ex[0].object, undefined);
+});
+
+test('runs over air: the overhanging wall edge slowed, bridge skin with its own speed, flow and fan', () => {
+  const plan = planLayer(layer([island]), cfg, { at: { x: 0, y: 0 } });
+  const ex = plan.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude');
+  const outer = ex.filter((s) => s.feature === 'WALL-OUTER');
+  // the seam decides where the loop starts: two or three runs, the flagged edge (19.6 mm) at overhangWallSpeed
+  assert.ok(outer.length >= 2 && outer.every((s) => s.speed === 12 || s.speed === 30), `speeds ${outer.map((s) => s.speed)}`);
+  const len = (s: ExtrudeStep) => s.points.slice(1).reduce((l, p, i) => l + Math.hypot(p.x - s.points[i].x, p.y - s.points[i].y), 0);
+  assert.deepEqual(outer.filter((s) => s.speed === 12).map(len), [19_600]);
+  assert.equal(outer.filter((s) => s.speed === 30).reduce((l, s) => l + len(s), 0), 3 * 19_600);
+  // the three runs join up: each starts where the previous ended
+  for (let k = 1; k < outer.length; k++) assert.deepEqual(outer[k].points[0], outer[k - 1].points[outer[k - 1].points.length - 1]);
+  const bridge = ex.filter((s) => s.feature === 'BRIDGE');
+  assert.equal(bridge.length, 1);
+  assert.deepEqual([bridge[0].speed, bridge[0].flow, bridge[0].fan], [20, 0.9, 1]);
+  const skin = ex.find((s) => s.feature === 'SKIN')!;
+  assert.equal(skin.fan, undefined, 'skin on solid ground keeps the layer fan');
+  assert.equal(plan.fan, 0.4);
+});
+
+test('the first layer prints everything at first-layer speed and sets no over-air style', () => {
+  const plan = planLayer(layer([island]), cfg, { at: { x: 0, y: 0 } }, 0);
+  const ex = plan.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude');
+  assert.ok(ex.every((s) => s.speed === cfg.firstLayerSpeed && s.feature !== 'BRIDGE'));
+});

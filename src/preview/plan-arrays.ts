@@ -1,0 +1,134 @@
+/**
+ * The toolpath plan as a few flat typed arrays for a 3D preview (the web page draws them with
+ * instancing): extrusion segments, travels and retraction points, each sorted by layer with
+ * per-layer offsets, so a viewer shows "layers a to b" as an index range and never re-parses G-code.
+ * Built where the plan is (a worker), the arrays transfer to the page without copying.
+ */
+import { UM_PER_MM, type Pt } from '../geometry/types.js';
+import { FEATURE_TYPES, type FeatureType, type PrintPlan } from '../plan/types.js';
+
+/** Numbers per extrusion segment: x0 y0 x1 y1 (mm), z (top of the bead), width, height (mm), feature index, layer. */
+export const SEGMENT_STRIDE = 9;
+/** Numbers per travel segment: x0 y0 z0 x1 y1 z1 (mm), layer. */
+export const TRAVEL_STRIDE = 7;
+/** Numbers per retraction point: x y z (mm), layer. */
+export const RETRACTION_STRIDE = 4;
+
+export interface PreviewArrays {
+  /** Each layer's nozzle Z, mm. */
+  layerZ: Float32Array;
+  /** Extrusion segments, SEGMENT_STRIDE numbers each; the feature is an index into FEATURE_TYPES. */
+  segments: Float32Array;
+  /** Layer i's segments are [layerSegments[i], layerSegments[i + 1]) (counted in segments). */
+  layerSegments: Uint32Array;
+  travels: Float32Array;
+  layerTravels: Uint32Array;
+  retractions: Float32Array;
+  layerRetractions: Uint32Array;
+  /** Extruded length per feature (FEATURE_TYPES order), mm. */
+  featureLengthMm: Float64Array;
+}
+
+const FEATURE_INDEX: ReadonlyMap<FeatureType, number> = new Map(FEATURE_TYPES.map((f, i) => [f, i]));
+
+/** A growable Float32Array, filled a record at a time. */
+class Floats {
+  data = new Float32Array(4096);
+  length = 0;
+  /** Make room for `k` more numbers and return where they go. */
+  add(k: number): number {
+    if (this.length + k > this.data.length) {
+      const next = new Float32Array(Math.max(this.data.length * 2, this.length + k));
+      next.set(this.data.subarray(0, this.length));
+      this.data = next;
+    }
+    const at = this.length;
+    this.length += k;
+    return at;
+  }
+  /** A right-sized copy (its own buffer, so it can be transferred). */
+  done(): Float32Array {
+    return this.data.slice(0, this.length);
+  }
+}
+
+function put(f: Floats, ...values: number[]): void {
+  const at = f.add(values.length);
+  f.data.set(values, at);
+}
+
+export function planToArrays(plan: PrintPlan): PreviewArrays {
+  const n = plan.layers.length;
+  const segs = new Floats();
+  const travels = new Floats();
+  const retracts = new Floats();
+  const layerSegments = new Uint32Array(n + 1);
+  const layerTravels = new Uint32Array(n + 1);
+  const layerRetractions = new Uint32Array(n + 1);
+  const layerZ = new Float32Array(n);
+  const featureLengthMm = new Float64Array(FEATURE_TYPES.length);
+  /** Nozzle position, mm; unknown before the first move (the start G-code leaves it anywhere). */
+  let at: { x: number; y: number; z: number } | null = null;
+  for (let li = 0; li < n; li++) {
+    const layer = plan.layers[li];
+    layerZ[li] = layer.z;
+    layerSegments[li] = segs.length / SEGMENT_STRIDE;
+    layerTravels[li] = travels.length / TRAVEL_STRIDE;
+    layerRetractions[li] = retracts.length / RETRACTION_STRIDE;
+    for (const step of layer.steps) {
+      if (step.kind === 'travel') {
+        const z = layer.z + (step.retract ? step.zHop : 0);
+        if (step.retract && at) put(retracts, at.x, at.y, at.z, li);
+        for (const p of step.points) {
+          const x = p.x / UM_PER_MM, y = p.y / UM_PER_MM;
+          if (at) put(travels, at.x, at.y, at.z, x, y, z, li);
+          at = { x, y, z };
+        }
+        continue;
+      }
+      const f = FEATURE_INDEX.get(step.feature) ?? 0;
+      const pts: readonly Pt[] = step.points;
+      const count = step.closed ? pts.length : pts.length - 1;
+      let length = 0;
+      for (let k = 0; k < count; k++) {
+        const a = pts[k], b = pts[(k + 1) % pts.length];
+        if (a.x === b.x && a.y === b.y) continue;
+        const x0 = a.x / UM_PER_MM, y0 = a.y / UM_PER_MM, x1 = b.x / UM_PER_MM, y1 = b.y / UM_PER_MM;
+        length += Math.hypot(x1 - x0, y1 - y0);
+        const o = segs.add(SEGMENT_STRIDE), d = segs.data;
+        d[o] = x0;
+        d[o + 1] = y0;
+        d[o + 2] = x1;
+        d[o + 3] = y1;
+        d[o + 4] = layer.z;
+        d[o + 5] = step.width;
+        d[o + 6] = step.height;
+        d[o + 7] = f;
+        d[o + 8] = li;
+      }
+      featureLengthMm[f] += length;
+      const last = step.closed ? pts[0] : pts[pts.length - 1];
+      if (last) at = { x: last.x / UM_PER_MM, y: last.y / UM_PER_MM, z: layer.z };
+    }
+  }
+  layerSegments[n] = segs.length / SEGMENT_STRIDE;
+  layerTravels[n] = travels.length / TRAVEL_STRIDE;
+  layerRetractions[n] = retracts.length / RETRACTION_STRIDE;
+  return {
+    layerZ,
+    segments: segs.done(),
+    layerSegments,
+    travels: travels.done(),
+    layerTravels,
+    retractions: retracts.done(),
+    layerRetractions,
+    featureLengthMm,
+  };
+}
+
+/** The arrays' buffers, for `postMessage(arrays, transferList(arrays))`. */
+export function transferList(a: PreviewArrays): ArrayBuffer[] {
+  return [a.layerZ, a.segments, a.layerSegments, a.travels, a.layerTravels, a.retractions, a.layerRetractions, a.featureLengthMm].map(
+    (t) => t.buffer as ArrayBuffer,
+  );
+}

@@ -1,0 +1,139 @@
+/**
+ * What every support generator needs to know about the model, layer by layer, read from the regions: the
+ * section, the overhang to hold up (minus short bridges when those are left to bridge), where support may
+ * not go (the part grown by the XY gap, less under overhangs), the shadow of the part for build-plate-only
+ * support, and the split of a support area into roof, body and floor.
+ */
+import { area, difference, intersection, offset, union } from '../../geometry/clip.js';
+import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
+import type { Config } from '../../settings/resolve.js';
+import type { LayerRegions, SupportAreas } from '../types.js';
+import { sectionOf } from '../types.js';
+
+/** Under an overhang, support may come this close to the part, in support line widths ("Z overrides XY"). */
+export const OVERHANG_XY_WIDTHS = 0.5;
+/** Parts of a support area narrower than this many line widths cannot be printed and are dropped. */
+export const MIN_SUPPORT_WIDTHS = 1;
+
+export class ModelLayers {
+  readonly layers: readonly LayerRegions[];
+  readonly cfg: Config;
+  readonly #sections = new Map<number, ExPolygon[]>();
+  /** Union of the sections of layers 0..j (build-plate placement), filled on demand bottom-up. */
+  readonly #shadow: ExPolygon[][] = [];
+
+  constructor(layers: readonly LayerRegions[], cfg: Config) {
+    this.layers = layers;
+    this.cfg = cfg;
+  }
+
+  get count(): number {
+    return this.layers.length;
+  }
+
+  /** The model's section of layer j ([] outside the model). */
+  section(j: number): ExPolygon[] {
+    if (j < 0 || j >= this.layers.length) return [];
+    let s = this.#sections.get(j);
+    if (!s) this.#sections.set(j, (s = sectionOf(this.layers[j])));
+    return s;
+  }
+
+  /** Forget sections above layer j (support is computed top-down). */
+  release(j: number): void {
+    for (const k of this.#sections.keys()) if (k > j) this.#sections.delete(k);
+  }
+
+  /** Support line width, µm. */
+  get widthUm(): number {
+    return Math.round(this.cfg.supportLineWidthMm * UM_PER_MM);
+  }
+
+  /** The overhang of layer m that support must hold (short bridges left out when the setting asks). */
+  overhang(m: number): ExPolygon[] {
+    if (m <= 0 || m >= this.layers.length) return [];
+    const o = this.layers[m].overhang;
+    const span = this.cfg.supportSkipBridges * UM_PER_MM;
+    if (o.length === 0 || span <= 0) return o;
+    const below = this.section(m - 1);
+    // the overhang starts this far out from the layer below: anchors are sought a line width beyond that
+    const reach = this.layers[m].height * UM_PER_MM * Math.tan((this.cfg.supportThreshold * Math.PI) / 180) + this.widthUm;
+    return o.filter((piece) => !isShortBridge(piece, below, span, reach));
+  }
+
+  /**
+   * Where support may not be on layer j: the part grown by the XY gap, except that under the part's own
+   * overhanging edge (the part of the section the layer below does not hold) support may come as close as
+   * OVERHANG_XY_WIDTHS, so that it reaches right under sloping surfaces.
+   */
+  collision(j: number): ExPolygon[] {
+    const model = this.section(j);
+    if (model.length === 0) return [];
+    const xy = this.cfg.supportXYGap * UM_PER_MM;
+    const near = OVERHANG_XY_WIDTHS * this.widthUm;
+    const over = this.layers[j].overhang;
+    if (over.length === 0 || xy <= near) return offset(model, Math.max(xy, near));
+    const held = difference(model, over);
+    return union(offset(held, xy), offset(model, near));
+  }
+
+  /** The part's shadow: every section from layer 0 to j, merged. */
+  shadow(j: number): ExPolygon[] {
+    if (j < 0) return [];
+    for (let k = this.#shadow.length; k <= j; k++) {
+      const prev = k > 0 ? this.#shadow[k - 1] : [];
+      const s = this.section(k);
+      this.#shadow.push(s.length === 0 ? prev : prev.length === 0 ? union(s) : union(prev, s));
+    }
+    return this.#shadow[j];
+  }
+
+  /**
+   * The islands of the sections of layers j+a .. j+b (inclusive), as one list: they may overlap, which the
+   * booleans (non-zero fill) read as their union, so none is computed.
+   */
+  sectionsBetween(j: number, a: number, b: number): ExPolygon[] {
+    if (a === b) return this.section(j + a);
+    const parts: ExPolygon[] = [];
+    for (let k = j + a; k <= j + b; k++) for (const p of this.section(k)) parts.push(p);
+    return parts;
+  }
+
+  /**
+   * Split the support area of layer j into roof (under the part, within the interface layers above the top
+   * Z gap), floor (on the part, within the floor layers above the bottom Z gap) and body.
+   */
+  split(j: number, s: readonly ExPolygon[]): SupportAreas {
+    const cfg = this.cfg;
+    if (s.length === 0) return { body: [], roof: [], floor: [] };
+    const top = cfg.supportTopGapLayers;
+    const roofAbove = cfg.supportInterfaceLayers > 0 ? this.sectionsBetween(j, 1, top + cfg.supportInterfaceLayers) : [];
+    const roof = roofAbove.length ? intersection(s, roofAbove) : [];
+    const bottom = cfg.supportBottomGapLayers;
+    const floorBelow = cfg.supportFloorLayerCount > 0 && cfg.supportPlacement === 'everywhere' ? this.sectionsBetween(j, -(bottom + cfg.supportFloorLayerCount), -(bottom + 1)) : [];
+    let floor = floorBelow.length ? intersection(s, floorBelow) : [];
+    if (roof.length && floor.length) floor = difference(floor, roof);
+    const dense = roof.length && floor.length ? union(roof, floor) : roof.length ? roof : floor;
+    const body = dense.length ? difference(s, dense) : s.slice();
+    return { body, roof, floor };
+  }
+}
+
+/**
+ * Whether an overhang piece is a short bridge: held by the layer below on at least two sides, and no point of
+ * it further than half the span from what holds it.
+ */
+export function isShortBridge(piece: ExPolygon, below: readonly ExPolygon[], spanUm: number, reachUm: number): boolean {
+  if (below.length === 0) return false;
+  const anchors = intersection(offset([piece], reachUm), below);
+  if (anchors.length < 2) return false;
+  return difference([piece], offset(anchors, spanUm / 2)).length === 0;
+}
+
+/** Drop what a support line cannot print: pieces narrower than a line, and specks. */
+export function printable(s: readonly ExPolygon[], widthUm: number): ExPolygon[] {
+  if (s.length === 0) return [];
+  const r = (MIN_SUPPORT_WIDTHS * widthUm) / 2;
+  const opened = offset(offset(s, -r), r);
+  return opened.filter((a) => area([a]) >= widthUm * widthUm);
+}

@@ -1,0 +1,26 @@
+/** Test helper: layer regions from hand-made sections (outline and overhang only, which support reads). */
+import type { ExPolygon } from '../../geometry/types.js';
+import type { Config } from '../../settings/resolve.js';
+import { overhangOf } from '../overhang.js';
+import type { IslandRegions, LayerRegions } from '../types.js';
+
+const island = (outline: ExPolygon): IslandRegions => ({
+  object: 0, outline, walls: [], wallGaps: [], topSkin: [], bottomSkin: [], exposed: [], bridge: [], bridgeAngle: null, sparse: [], unsupported: [],
+});
+
+/** `sectionAt(j)` for layers 0..count-1, heights from the config, overhangs found as the regions stage does. */
+export function layersOf(count: number, sectionAt: (j: number) => ExPolygon[], cfg: Config): LayerRegions[] {
+  const out: LayerRegions[] = [];
+  for (let j = 0; j < count; j++) {
+    const h = j === 0 ? cfg.firstLayerHeight : cfg.layerHeight;
+    const z = cfg.firstLayerHeight + j * cfg.layerHeight;
+    const s = sectionAt(j);
+    out.push({ index: j, z, height: h, sliceZ: z - h / 2, islands: s.map(island), overhang: overhangOf(s, j > 0 ? sectionAt(j - 1) : [], h, cfg, j === 0), support: null });
+  }
+  return out;
+}
+
+/** Run the support pass to its end. */
+export function drain(steps: Generator<unknown, unknown>): void {
+  while (!steps.next().done);
+}

@@ -1,0 +1,68 @@
+/**
+ * What the regions stage computes for every layer, once: each island's outline, walls, skin, bridge and
+ * sparse areas, and the layer's overhang, support and adhesion areas. Plain data (integer µm), so a layer's
+ * regions cross a worker boundary as they are; every later pass (lightning, support, raft, the paths of the
+ * layer) reads them instead of slicing again.
+ */
+import type { ExPolygon, Polygon } from '../geometry/types.js';
+import type { LayerZ } from '../slice/types.js';
+import type { GapLoop } from './gap-loops.js';
+
+/** One island of one layer. */
+export interface IslandRegions {
+  /** The object the island belongs to (index into the pipeline's object list). */
+  object: number;
+  /** The island's section outline. */
+  outline: ExPolygon;
+  /** walls[k] = closed centrelines of wall k (0 = outer wall), each ring as printed. */
+  walls: Polygon[][];
+  /** Thin loops (with their bead width) in strips between walls too narrow for another wall. */
+  wallGaps: GapLoop[];
+  /** Top skin inside the walls: exposed within the top skin thickness above. */
+  topSkin: ExPolygon[];
+  /** Bottom skin inside the walls: exposed within the bottom skin thickness below. */
+  bottomSkin: ExPolygon[];
+  /** Every exposed area inside the walls, slivers included: what skin gap fill must still reach. */
+  exposed: ExPolygon[];
+  /** The part of the bottom skin over nothing on the layer below (before support is known). */
+  bridge: ExPolygon[];
+  /** Direction of lines over `bridge`, degrees (support to support), or null when there are no two anchors. */
+  bridgeAngle: number | null;
+  /** Centreline area of the sparse infill. */
+  sparse: ExPolygon[];
+  /** The part of the outline over nothing on the layer below: walls there are overhangs. */
+  unsupported: ExPolygon[];
+}
+
+/** Support areas of one layer (filled by the support pass), µm. */
+export interface SupportAreas {
+  /** Support body (sparse columns or tree branches). */
+  body: ExPolygon[];
+  /** Dense interface under the part (roof). */
+  roof: ExPolygon[];
+  /** Dense interface where support stands on the part (floor). */
+  floor: ExPolygon[];
+}
+
+/** Raft layer areas (filled by the raft pass). */
+export interface RaftArea {
+  kind: 'base' | 'interface' | 'surface';
+  area: ExPolygon[];
+}
+
+export interface LayerRegions extends LayerZ {
+  islands: IslandRegions[];
+  /**
+   * The model's area on this layer that needs support: not within the overhang angle's reach of the layer
+   * below (specks dropped). Computed only when support is on.
+   */
+  overhang: ExPolygon[];
+  support: SupportAreas | null;
+  /** Set on raft layers (below the model's first layer), which have no islands. */
+  raft?: RaftArea;
+}
+
+/** The layer's whole section (every island's outline). */
+export function sectionOf(layer: LayerRegions): ExPolygon[] {
+  return layer.islands.map((i) => i.outline);
+}

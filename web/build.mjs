@@ -1,0 +1,108 @@
+// Builds the web page (dist/web/) and the library's own browser build (dist/browser/) with esbuild.
+// Run by `npm run build` and `npm ci` (prepare), after tsc. Plain static files: any host can serve them.
+import { build } from 'esbuild';
+import { cpSync, existsSync, mkdirSync, readdirSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
+import { dirname, join, relative } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const root = join(dirname(fileURLToPath(import.meta.url)), '..');
+const at = (...p) => join(root, ...p);
+const quiet = process.argv.includes('--quiet');
+
+const common = {
+  bundle: true,
+  format: 'esm',
+  platform: 'browser',
+  target: ['es2022'],
+  splitting: true,
+  minify: true,
+  sourcemap: false,
+  legalComments: 'eof',
+  logLevel: 'warning',
+  // the library loads its layer worker as new URL('./layer-worker.js', import.meta.url): keep that name
+  entryNames: '[name]',
+  chunkNames: '[name]-[hash]',
+  metafile: true,
+  absWorkingDir: root,
+};
+
+/** The library for browsers: strata.js, layer-worker.js beside it, the shader compiler in a chunk. */
+async function libraryBuild() {
+  const out = at('dist/browser');
+  rmSync(out, { recursive: true, force: true });
+  return build({
+    ...common,
+    entryPoints: { strata: at('src/browser.ts'), 'layer-worker': at('src/workers/layer-worker.ts') },
+    outdir: out,
+  });
+}
+
+/** The page: app.js (page thread), slice-worker.js (module worker), layer-worker.js (the pool's). */
+async function pageBuild() {
+  const out = at('dist/web');
+  rmSync(out, { recursive: true, force: true });
+  const result = await build({
+    ...common,
+    entryPoints: {
+      app: at('web/src/main.ts'),
+      'slice-worker': at('web/src/worker.ts'),
+      'layer-worker': at('src/workers/layer-worker.ts'),
+    },
+    outdir: out,
+  });
+  cpSync(at('web/index.html'), join(out, 'index.html'));
+  cpSync(at('web/style.css'), join(out, 'style.css'));
+  cpSync(at('web/favicon.svg'), join(out, 'favicon.svg'));
+  // the shipped custom infillers, fetched by the page when chosen
+  const list = [];
+  for (const name of readdirSync(at('infillers')).sort()) {
+    const dir = at('infillers', name);
+    if (!statSync(dir).isDirectory()) continue;
+    const file = ['shader.glsl', 'cells.png'].find((f) => existsSync(join(dir, f)));
+    if (!file) continue;
+    mkdirSync(join(out, 'infillers', name), { recursive: true });
+    cpSync(join(dir, file), join(out, 'infillers', name, file));
+    const preview = existsSync(join(dir, 'preview.png'));
+    if (preview) cpSync(join(dir, 'preview.png'), join(out, 'infillers', name, 'preview.png'));
+    list.push({ name, file, preview });
+  }
+  writeFileSync(join(out, 'infillers', 'index.json'), JSON.stringify(list, null, 1) + '\n');
+  return result;
+}
+
+/** Gzipped size of an output file and the chunks it imports statically (what loads before it runs). */
+function loadSize(meta, file, seen = new Set()) {
+  if (seen.has(file)) return 0;
+  seen.add(file);
+  let total = gzipSync(readFileSync(at(file))).length;
+  for (const imp of meta.outputs[file]?.imports ?? []) if (imp.kind === 'import-statement') total += loadSize(meta, imp.path, seen);
+  return total;
+}
+
+const kb = (n) => `${(n / 1024).toFixed(1)} KB`;
+
+/** The output file holding the shader compiler (loaded only for custom infill). */
+function compilerChunk(meta) {
+  return Object.entries(meta.outputs).find(([f, o]) => f.endsWith('.js') && Object.keys(o.inputs).some((i) => i.includes('src/shader/compile-program')))?.[0];
+}
+
+const lib = await libraryBuild();
+const page = await pageBuild();
+// sizes (gzipped, each entry with the chunks it imports at once), and which chunk is the compiler
+const info = { gzippedBytes: {}, shaderCompiler: {} };
+for (const [name, meta, dir, entries] of [
+  ['browser', lib.metafile, 'dist/browser', ['strata.js', 'layer-worker.js']],
+  ['web', page.metafile, 'dist/web', ['app.js', 'slice-worker.js', 'layer-worker.js']],
+]) {
+  for (const e of entries) info.gzippedBytes[`${dir}/${e}`] = loadSize(meta, `${dir}/${e}`);
+  const chunk = compilerChunk(meta);
+  if (!chunk) throw new Error(`${dir}: no chunk holds the shader compiler: is it imported statically?`);
+  info.shaderCompiler[name] = relative(at(dir), at(chunk));
+  info.gzippedBytes[chunk] = gzipSync(readFileSync(at(chunk))).length;
+}
+writeFileSync(at('dist/web/build-info.json'), JSON.stringify(info, null, 1) + '\n');
+if (!quiet) {
+  const sizes = Object.entries(info.gzippedBytes).map(([f, n]) => `${f} ${kb(n)}`);
+  process.stdout.write(`web build, gzipped (entries with the chunks they load at once): ${sizes.join('; ')}; shader compiler chunks load on demand\n`);
+}

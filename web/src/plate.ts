@@ -1,0 +1,204 @@
+/**
+ * The objects on the build plate: each one's file, turn, scale and place; arranging them without
+ * overlap, and what is wrong with where they stand. An object alone that the user has not moved
+ * stands where `strata slice` would put it, and is sliced as read, so the G-code is the CLI's.
+ */
+import { arrange, findSpot, footprintsOverlap, type Bed, type PlacedFootprint } from '../../src/mesh/arrange.js';
+import { IDENTITY_LINEAR, axisRotation, linearBounds, mul3, placementAffine, rotationBetween, type Box, type Placement } from '../../src/mesh/placement.js';
+import type { Config } from '../../src/settings/resolve.js';
+import { mm1 } from './format.js';
+import type { LoadedModel, SliceItem } from './protocol.js';
+
+export interface PlateItem {
+  id: number;
+  fileName: string;
+  /** The file name without its extension (as the CLI names the G-code). */
+  name: string;
+  bytes: ArrayBuffer;
+  model: LoadedModel;
+  /** Turns from "rotate 90°" and "lay on face", row-major 3×3. */
+  rotation: number[];
+  /** Turn about Z, degrees, applied after `rotation`. */
+  turnZ: number;
+  /** Uniform scale factor. */
+  scale: number;
+  /** Bed XY under the centre of the placed bounding box, mm. */
+  center: [number, number];
+  /** Bounds after rotation and scale (cached; follows `linear`). */
+  box: Box;
+}
+
+/** The bed as the settings describe it. */
+export interface BedShape {
+  width: number;
+  depth: number;
+  height: number;
+  originAtCenter: boolean;
+  /** Whether a lone model is centred (the `center` setting). */
+  centre: boolean;
+}
+
+export function bedShape(cfg: Config): BedShape {
+  return { width: cfg.buildPlateWidth, depth: cfg.buildPlateLength, height: cfg.buildVolumeHeight, originAtCenter: cfg.originAtCenter, centre: cfg.center };
+}
+
+export function bedCentre(b: BedShape): [number, number] {
+  return b.originAtCenter ? [0, 0] : [b.width / 2, b.depth / 2];
+}
+
+/** Tolerance for "fits the bed", mm (as the slicer's placement allows). */
+const FIT_MM = 1e-3;
+
+export class Plate {
+  items: PlateItem[] = [];
+  selected: PlateItem | null = null;
+  #nextId = 1;
+  constructor(public bed: BedShape) {}
+
+  linear(it: PlateItem): number[] {
+    const m = it.turnZ === 0 ? it.rotation : mul3(axisRotation('z', it.turnZ), it.rotation);
+    return it.scale === 1 ? [...m] : m.map((v) => v * it.scale);
+  }
+
+  /** Bed XY where `strata slice` puts this model: the bed centre, or its own XY without centring. */
+  defaultCentre(it: PlateItem): [number, number] {
+    if (this.bed.centre) return bedCentre(this.bed);
+    const b = linearBounds(it.model.vertices);
+    return [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2];
+  }
+
+  #footprint(it: PlateItem): PlacedFootprint {
+    return { width: it.box.max[0] - it.box.min[0], depth: it.box.max[1] - it.box.min[1], center: it.center };
+  }
+
+  #bedRect(): Bed {
+    return { center: bedCentre(this.bed), width: this.bed.width, depth: this.bed.depth };
+  }
+
+  add(fileName: string, bytes: ArrayBuffer, model: LoadedModel): PlateItem {
+    const base = fileName.split(/[\\/]/).pop() ?? fileName;
+    const dot = base.lastIndexOf('.');
+    const it: PlateItem = {
+      id: this.#nextId++,
+      fileName,
+      name: dot > 0 ? base.slice(0, dot) : base,
+      bytes,
+      model,
+      rotation: [...IDENTITY_LINEAR],
+      turnZ: 0,
+      scale: 1,
+      center: [0, 0],
+      box: linearBounds(model.vertices),
+    };
+    if (this.items.length === 0) it.center = this.defaultCentre(it);
+    else {
+      const size = this.#footprint(it);
+      it.center = findSpot(size, this.items.map((o) => this.#footprint(o)), this.#bedRect()) ?? bedCentre(this.bed);
+    }
+    this.items.push(it);
+    this.selected = it;
+    return it;
+  }
+
+  remove(it: PlateItem): void {
+    this.items = this.items.filter((o) => o !== it);
+    if (this.selected === it) this.selected = this.items[this.items.length - 1] ?? null;
+    if (this.items.length === 1) this.#toDefaultIfUntouched(this.items[0]);
+  }
+
+  /** A lone, unturned, unscaled object goes back to where the CLI would put it. */
+  #toDefaultIfUntouched(it: PlateItem): void {
+    if (it.scale === 1 && it.turnZ === 0 && it.rotation.every((v, i) => v === IDENTITY_LINEAR[i])) it.center = this.defaultCentre(it);
+  }
+
+  /** Every object re-placed without overlap (one alone goes where the CLI puts it). */
+  arrange(): void {
+    if (this.items.length === 1) {
+      const it = this.items[0];
+      it.center = this.isUntransformed(it) ? this.defaultCentre(it) : bedCentre(this.bed);
+      return;
+    }
+    const centres = arrange(this.items.map((it) => this.#footprint(it)), this.#bedRect());
+    this.items.forEach((it, i) => (it.center = centres[i]));
+  }
+
+  isUntransformed(it: PlateItem): boolean {
+    return it.scale === 1 && it.turnZ === 0 && it.rotation.every((v, i) => v === IDENTITY_LINEAR[i]);
+  }
+
+  /** The bed changed (printer or settings): keep a lone untouched object where the CLI would put it. */
+  setBed(bed: BedShape): void {
+    const wasDefault = this.items.length === 1 && this.isDefault(this.items[0]);
+    this.bed = bed;
+    if (wasDefault) this.items[0].center = this.defaultCentre(this.items[0]);
+  }
+
+  /** Stands exactly where and as `strata slice` would put it: sliced from the file as read. */
+  isDefault(it: PlateItem): boolean {
+    const d = this.defaultCentre(it);
+    return this.items.length === 1 && this.isUntransformed(it) && it.center[0] === d[0] && it.center[1] === d[1];
+  }
+
+  /** Rotation, scale or "lay on face" changed: bounds follow, the footprint centre stays. */
+  relinear(it: PlateItem): void {
+    it.box = linearBounds(it.model.vertices, this.linear(it));
+  }
+
+  rotate(it: PlateItem, axis: 'x' | 'y', deg: number): void {
+    it.rotation = mul3(axisRotation(axis, deg), it.rotation);
+    this.relinear(it);
+  }
+
+  /** Turn the object so the face with this normal (model coordinates) lies on the bed. */
+  layOnFace(it: PlateItem, normal: readonly number[]): void {
+    const r = it.rotation;
+    const n = [0, 1, 2].map((i) => r[i * 3] * normal[0] + r[i * 3 + 1] * normal[1] + r[i * 3 + 2] * normal[2]);
+    const len = Math.hypot(n[0], n[1], n[2]) || 1;
+    it.rotation = mul3(rotationBetween(n.map((v) => v / len), [0, 0, -1]), it.rotation);
+    this.relinear(it);
+  }
+
+  reset(it: PlateItem): void {
+    it.rotation = [...IDENTITY_LINEAR];
+    it.turnZ = 0;
+    it.scale = 1;
+    this.relinear(it);
+    if (this.items.length === 1) it.center = this.defaultCentre(it);
+  }
+
+  placement(it: PlateItem): Placement {
+    return { linear: this.linear(it), center: [it.center[0], it.center[1]] };
+  }
+
+  /** The model → bed transform the page draws with (and the worker slices with). */
+  affine(it: PlateItem): Float64Array {
+    return placementAffine(this.placement(it), it.box);
+  }
+
+  size(it: PlateItem): [number, number, number] {
+    return [0, 1, 2].map((k) => it.box.max[k] - it.box.min[k]) as [number, number, number];
+  }
+
+  /** What is wrong with where the object stands, in words (empty: nothing). */
+  problems(it: PlateItem): string[] {
+    const out: string[] = [];
+    const [sx, sy, sz] = this.size(it);
+    const [x0, y0] = this.bed.originAtCenter ? [-this.bed.width / 2, -this.bed.depth / 2] : [0, 0];
+    const minX = it.center[0] - sx / 2, maxX = it.center[0] + sx / 2, minY = it.center[1] - sy / 2, maxY = it.center[1] + sy / 2;
+    if (sx > this.bed.width + FIT_MM || sy > this.bed.depth + FIT_MM) out.push(`${mm1(sx)} × ${mm1(sy)} mm is larger than the ${this.bed.width} × ${this.bed.depth} mm bed`);
+    else if (minX < x0 - FIT_MM || maxX > x0 + this.bed.width + FIT_MM || minY < y0 - FIT_MM || maxY > y0 + this.bed.depth + FIT_MM) out.push('reaches off the bed');
+    if (sz > this.bed.height + FIT_MM) out.push(`${mm1(sz)} mm tall, the printer reaches ${this.bed.height} mm`);
+    for (const o of this.items) if (o !== it && footprintsOverlap(this.#footprint(it), this.#footprint(o))) out.push(`overlaps ${o.name}`);
+    return out;
+  }
+
+  /** What the worker slices: an object in its CLI place goes as read, any other with its placement. */
+  sliceItems(): SliceItem[] {
+    return this.items.map((it) => ({ fileName: it.fileName, bytes: it.bytes, placement: this.isDefault(it) ? null : this.placement(it) }));
+  }
+
+  /** The G-code's file name: the first model's, as `strata slice` names it. */
+  gcodeName(): string {
+    return `${this.items[0]?.name ?? 'model'}.gcode`;
+  }
+}
