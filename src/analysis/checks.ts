@@ -65,7 +65,6 @@ export function analyzeParsed(mesh: Mesh, parsed: ParsedGcode, options: AnalyzeO
   const support = opts.supportChecks && bounds
     ? new SupportAnalysis(parsed.layers, modelZ, sections, bounds, {
       layerHeight: opts.layerHeight,
-      firstLayerHeight: opts.firstLayerHeight,
       lineWidth: opts.lineWidth,
       wallThickness: opts.wallThickness,
       overhangAngleDeg: opts.overhangAngleDeg,

@@ -1,13 +1,16 @@
 /**
  * Support checks of one print against its model, layer by layer, on rasters of every layer's material (see
- * support-raster.ts):
+ * support-raster.ts). The material of the layers just below a layer (down to the allowed Z gap), closed over gaps
+ * up to supportSpanMm (sparse support lines and tree tips hold the area between them; a wall grows nothing
+ * outward), is what holds the layer:
  * - overhang: the layer's section minus the section of the model layer below grown by layerHeight·tan(threshold),
- *   specks dropped; supported where material of the layers just below (within the allowed Z gap), closed over
- *   gaps up to supportSpanMm and grown by the threshold's allowance, lies under it;
- * - over nothing: the layer's part extrusion outside that same footprint, and outside the interior of the model
- *   layer below (sparse infill under skin is the part's own design, judged by the infill check);
+ *   strips narrower than half a line width and specks left out; supported where that closed material lies under
+ *   it (half a raster cell of slack);
+ * - over nothing: the layer's part extrusion farther than layerHeight·tan(threshold) from the closed material,
+ *   and outside the interior of the model layer below (sparse infill under skin is the part's own design, judged
+ *   by the infill check);
  * - inside: support and interface beads deeper than half a line width inside the model's section at their layer;
- * - Z gaps: from the top of support to the overhang above it, and from the model to support standing on it;
+ * - Z gaps: from the top of support to the overhang above it, and from the model to support standing on it.
  * The first model layer rests on the bed (or on the raft, which then must lie under it).
  */
 import type { GcodeLayer } from './gcode-types.js';
@@ -52,7 +55,6 @@ const Z_SLACK_MM = 1e-4;
 
 export interface SupportOptions {
   layerHeight: number;
-  firstLayerHeight: number;
   lineWidth: number;
   wallThickness: number;
   overhangAngleDeg: number;
@@ -210,8 +212,8 @@ export class SupportAnalysis {
 
     if (overhang || candidates.length > 0) {
       const bounds = this.cellBounds(overhang, candidates);
-      // The footprint at a cell depends on material up to 2·(span/2) - reach away (see closeGrown).
-      const grow = Math.max(o.supportSpanMm, this.reachMm) + 2 * this.cell;
+      // The footprint at a cell depends on material up to twice the closing radius away (see grownClosings).
+      const grow = 2 * Math.max(o.supportSpanMm / 2, this.reachMm) + 2 * this.cell;
       const win = this.window(bounds, grow);
       const within = this.footprint(win, below);
       // An overhang cell has material under it when it lies in that closed material grown by half a cell of raster
