@@ -76,7 +76,8 @@ function gap(g: GapStats): string {
     .map((v, k) => (v >= 0.005 ? `${k === g.byLayers.length - 1 ? `${k}+` : k}: ${(v * 100).toFixed(0)} %` : ''))
     .filter((x) => x !== '')
     .join(', ');
-  return `median ${mm(g.medianMm, 2)} (${g.medianLayers} layers), low ${mm(g.minMm, 2)} (${g.minLayers} layers) ` +
+  const layers = (n: number | null) => `${n} layer${n === 1 ? '' : 's'}`;
+  return `median ${mm(g.medianMm, 2)} (${layers(g.medianLayers)}), low ${mm(g.minMm, 2)} (${layers(g.minLayers)}) ` +
     `over ${mm2(g.areaMm2)}; by layers ${shares}`;
 }
 

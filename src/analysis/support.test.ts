@@ -84,7 +84,7 @@ test('a T with support under its arms: overhang supported, nothing over nothing,
   // The part checks ignore support: nothing outside, walls everywhere.
   assert.equal(s.outside.maxMm, 0);
   within(s.walls.coverage, 0.99, 1, 'walls');
-  assert.ok(formatReport(r).includes('top Z gap: median 0.20 mm (1 layers)'), formatReport(r));
+  assert.ok(formatReport(r).includes('top Z gap: median 0.20 mm (1 layer)'), formatReport(r));
 });
 
 test('the top Z gap is measured in layers, and support farther down than supportGapLayers does not hold', () => {
