@@ -114,7 +114,8 @@ export function formatLayerSupport(report: PrintReport): string {
     if (!u) continue;
     if (u.overhangAreaMm2 === 0 && u.overNothingMm2 === 0 && u.supportAreaMm2 === 0) continue;
     lines.push(
-      `${l.index} ${l.z.toFixed(3)} ${l.role}: ${u.overhangAreaMm2.toFixed(2)} ${u.overhangSupportedMm2.toFixed(2)} | ` +
+      `${l.index} ${l.z.toFixed(3)} ${l.role}: ` +
+        `${u.overhangAreaMm2.toFixed(2)} ${u.overhangSupportedMm2.toFixed(2)} | ` +
         `${u.partAreaMm2.toFixed(1)} ${u.overNothingMm2.toFixed(2)} | ${u.supportAreaMm2.toFixed(1)} ` +
         `${u.insideMm2.toFixed(2)}`,
     );

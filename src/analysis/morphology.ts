@@ -81,7 +81,9 @@ const SMALL_RADIUS_CELLS = 2;
 function discOffsets(r: number): [number, number][] {
   const out: [number, number][] = [];
   const n = Math.floor(r);
-  for (let dj = -n; dj <= n; dj++) for (let di = -n; di <= n; di++) if (di * di + dj * dj <= r * r + 1e-9) out.push([di, dj]);
+  for (let dj = -n; dj <= n; dj++) {
+    for (let di = -n; di <= n; di++) if (di * di + dj * dj <= r * r + 1e-9) out.push([di, dj]);
+  }
   return out;
 }
 
@@ -89,7 +91,9 @@ function discOffsets(r: number): [number, number][] {
  * Small radii: a cell of the result is set when any (`all` false: dilation) or every (`all` true: erosion) cell
  * of the disc around it is set; beyond the window cells count as `outside`.
  */
-function byOffsets(bitmap: Uint8Array, cols: number, rows: number, r: number, all: boolean, outside: 0 | 1): Uint8Array {
+function byOffsets(
+  bitmap: Uint8Array, cols: number, rows: number, r: number, all: boolean, outside: 0 | 1,
+): Uint8Array {
   const offsets = discOffsets(r);
   const n = Math.floor(r);
   const out = new Uint8Array(cols * rows);

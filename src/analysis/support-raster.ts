@@ -110,7 +110,8 @@ export class LayerRasters {
         const h = kind === Material.Part ? hPart : hSupport;
         const raw = o.widthSource === 'nominal' ? o.lineWidth : beadWidth(t.e[i]!, len, h, o.filamentArea);
         const w = Math.min(MAX_BEAD_LINE_WIDTHS * o.lineWidth, Math.max(MIN_BEAD_MM, raw));
-        stampCapsule(bitmap, this.grid, t.x0[i]!, t.y0[i]!, t.x1[i]!, t.y1[i]!, w / 2, Cell.Any | BITS[kind]!, pass === 1);
+        const bits = Cell.Any | BITS[kind]!;
+        stampCapsule(bitmap, this.grid, t.x0[i]!, t.y0[i]!, t.x1[i]!, t.y1[i]!, w / 2, bits, pass === 1);
       }
     }
     return this.withCounts(bitmap);

@@ -33,7 +33,8 @@ function supportUnderArms(gap: number, rects = SUPPORT_RECTS) {
   return (i: number, _z: number, h: number): string[] => {
     if (i > top) return [];
     const dense = i >= top - 1;
-    return rects.flatMap((r) => rectLines(r, dense ? LW : 2, h, LW, FIL, dense ? 'SUPPORT-INTERFACE' : 'SUPPORT', !dense));
+    const type = dense ? 'SUPPORT-INTERFACE' : 'SUPPORT';
+    return rects.flatMap((r) => rectLines(r, dense ? LW : 2, h, LW, FIL, type, !dense));
   };
 }
 
