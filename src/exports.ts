@@ -8,6 +8,8 @@ export type { ErrorCode } from './errors.js';
 export { SCHEMA, SETTING_KEYS } from './settings/schema.js';
 export type { Settings, SliceOptions, SettingKey, SettingDef } from './settings/schema.js';
 export { resolveConfig } from './settings/resolve.js';
+export { importProfile } from './settings/import/index.js';
+export type { ImportedProfile, ProfileFormat } from './settings/import/index.js';
 export type { Config } from './settings/resolve.js';
 export { listPresets, findPrinter, findFilament, PRINTER_PRESETS, FILAMENT_PRESETS } from './settings/presets/index.js';
 export { parseStl, parseObj, parse3mf, fromThree, fromArrays, toMeshObjects, loadModelBytes, prepareMesh } from './mesh/index.js';

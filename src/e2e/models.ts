@@ -1,14 +1,14 @@
 /** Test helpers: the shared models and slicing one with the analyser's report. */
-import { existsSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import { gunzipSync } from 'node:zlib';
-import { fileURLToPath } from 'node:url';
 import { Slicer, prepareModel } from '../api/slicer.js';
 import { analyzePrint } from '../analysis/checks.js';
 import type { AnalyzeOptions, PrintReport } from '../analysis/checks.js';
 import type { SliceOptions } from '../settings/schema.js';
+import type { Config } from '../settings/resolve.js';
 
-/** ../shared/models beside the repository (dist/e2e → repo → ..). */
-export const MODELS_DIR = fileURLToPath(new URL('../../../shared/models/', import.meta.url));
+export { MODELS_DIR, modelsAvailable, skipWithoutModels } from './models-dir.js';
+import { MODELS_DIR } from './models-dir.js';
 
 export const MODEL_FILES = [
   'CalibrationCube.stl',
@@ -22,10 +22,6 @@ export const MODEL_FILES = [
   '3DBenchy.stl.gz',
   '3DBenchy.3mf',
 ] as const;
-
-export function modelsAvailable(): boolean {
-  return existsSync(MODELS_DIR + 'CalibrationCube.stl');
-}
 
 export function readModel(name: string): Uint8Array {
   const bytes = readFileSync(MODELS_DIR + name);
@@ -51,7 +47,13 @@ export async function sliceAndAnalyze(
   const { gcode, stats, warnings } = await slicer.slice(bytes);
   const cfg = slicer.config;
   const placed = prepareModel(bytes, cfg).mesh;
-  const report = analyzePrint(placed, gcode, {
+  const report = analyzePrint(placed, gcode, { ...analysisProfile(cfg), ...analyze });
+  return { gcode, report, layers: stats.layers, warnings };
+}
+
+/** What the analyser needs to know of the profile a print was sliced with. */
+export function analysisProfile(cfg: Config) {
+  return {
     layerHeight: cfg.layerHeight,
     firstLayerHeight: cfg.firstLayerHeight,
     lineWidth: cfg.lineWidthMm,
@@ -59,7 +61,5 @@ export async function sliceAndAnalyze(
     wallThickness: cfg.walls * cfg.lineWidthMm,
     topThickness: cfg.topLayers * cfg.layerHeight,
     bottomThickness: cfg.bottomLayers * cfg.layerHeight,
-    ...analyze,
-  });
-  return { gcode, report, layers: stats.layers, warnings };
+  };
 }

@@ -9,6 +9,13 @@
  *   native way is tool temperatures `G10 P0 S<active> R<standby>`, selecting tool 0 (`T0`) and `M116 P0`
  *   to wait. Bed: M140/M190 are native. M106 S is read as a fraction when ≤ 1 (S1 is full speed, not
  *   1/255), so the fan is written as a 0–1 fraction; M204 P/T as in Marlin.
+ *
+ * Pressure advance: Marlin's linear advance `M900 K`, Klipper's `SET_PRESSURE_ADVANCE ADVANCE=`,
+ * RepRapFirmware's `M572 D0 S` (all in seconds of pressure per mm/s of flow).
+ * Machine limits: Marlin `M201` (max acceleration per axis, mm/s²), `M203` (max feed rate, mm/s),
+ * `M204 P R T` (print, retract, travel acceleration), `M205 X Y` (jerk); RepRapFirmware the same
+ * M-codes but `M203` in mm/min, and jerk as `M566` in mm/min; Klipper has one velocity and acceleration
+ * limit and a square-corner velocity: `SET_VELOCITY_LIMIT VELOCITY= ACCEL= SQUARE_CORNER_VELOCITY=`.
  */
 import type { Settings } from '../settings/schema.js';
 import { compact } from './format.js';
@@ -28,6 +35,47 @@ export interface FlavorCommands {
   fan(fraction: number): string;
   /** Print and travel acceleration, mm/s². */
   acceleration(mmPerS2: number): string;
+  /** Pressure (linear) advance, s. */
+  pressureAdvance(seconds: number): string;
+  /** The machine limits of the settings as start-of-print commands. */
+  machineLimits(s: LimitSettings): string[];
+}
+
+/** The settings the machine-limit commands are written from. */
+export type LimitSettings = Pick<
+  Settings,
+  | 'acceleration'
+  | 'cornerVelocity'
+  | 'maxSpeed'
+  | 'maxSpeedX'
+  | 'maxSpeedY'
+  | 'maxSpeedZ'
+  | 'maxSpeedE'
+  | 'maxAccelerationX'
+  | 'maxAccelerationY'
+  | 'maxAccelerationZ'
+  | 'maxAccelerationE'
+  | 'travelAcceleration'
+  | 'retractAcceleration'
+>;
+
+/** `M<code> X… Y… Z… E…` with the axes that have a value (scaled), or nothing when none has. */
+function axisLimits(code: string, values: Record<'X' | 'Y' | 'Z' | 'E', number | null>, scale = 1): string[] {
+  const words = (Object.keys(values) as Array<keyof typeof values>)
+    .filter((axis) => values[axis] !== null)
+    .map((axis) => `${axis}${compact(values[axis]! * scale, 2)}`);
+  return words.length ? [`${code} ${words.join(' ')}`] : [];
+}
+
+function m20xLimits(s: LimitSettings, feedScale: number, jerk: (v: number) => string, retractWord: boolean): string[] {
+  const travel = s.travelAcceleration ?? s.acceleration;
+  const retract = s.retractAcceleration ?? s.maxAccelerationE ?? s.acceleration;
+  return [
+    ...axisLimits('M201', { X: s.maxAccelerationX, Y: s.maxAccelerationY, Z: s.maxAccelerationZ, E: s.maxAccelerationE }),
+    ...axisLimits('M203', { X: s.maxSpeedX, Y: s.maxSpeedY, Z: s.maxSpeedZ, E: s.maxSpeedE }, feedScale),
+    `M204 P${accel(s.acceleration)}${retractWord ? ` R${accel(retract)}` : ''} T${accel(travel)}`,
+    jerk(s.cornerVelocity),
+  ];
 }
 
 const temp = (celsius: number): string => compact(celsius, 1);
@@ -45,12 +93,20 @@ const MARLIN: FlavorCommands = {
   waitBed: (c) => `M190 S${temp(c)}`,
   fan: fan255,
   acceleration: (a) => `M204 P${accel(a)} T${accel(a)}`,
+  pressureAdvance: (k) => `M900 K${compact(k, 4)}`,
+  machineLimits: (s) => m20xLimits(s, 1, (j) => `M205 X${compact(j, 2)} Y${compact(j, 2)}`, true),
 };
 
 const KLIPPER: FlavorCommands = {
   ...MARLIN,
   name: 'Klipper',
   acceleration: (a) => `M204 S${accel(a)}`,
+  pressureAdvance: (k) => `SET_PRESSURE_ADVANCE ADVANCE=${compact(k, 4)}`,
+  machineLimits: (s) => {
+    const axes = [s.maxSpeedX, s.maxSpeedY].filter((v): v is number => v !== null);
+    const velocity = axes.length ? Math.min(...axes) : s.maxSpeed;
+    return [`SET_VELOCITY_LIMIT VELOCITY=${compact(velocity, 2)} ACCEL=${accel(s.acceleration)} SQUARE_CORNER_VELOCITY=${compact(s.cornerVelocity, 2)}`];
+  },
 };
 
 const REPRAP: FlavorCommands = {
@@ -61,6 +117,8 @@ const REPRAP: FlavorCommands = {
   waitBed: (c) => `M190 S${temp(c)}`,
   fan: (fraction) => `M106 S${compact(Math.min(1, Math.max(0, fraction)), 3)}`,
   acceleration: (a) => `M204 P${accel(a)} T${accel(a)}`,
+  pressureAdvance: (k) => `M572 D0 S${compact(k, 4)}`,
+  machineLimits: (s) => m20xLimits(s, 60, (j) => `M566 X${compact(j * 60, 0)} Y${compact(j * 60, 0)}`, false),
 };
 
 export const FLAVORS = { marlin: MARLIN, klipper: KLIPPER, reprap: REPRAP } as const satisfies Record<GcodeFlavor, FlavorCommands>;

@@ -6,6 +6,7 @@ import type { PlanEstimate, PrintPlan } from '../plan/types.js';
 import type { Settings } from '../settings/schema.js';
 import { compact, humanDuration, mm } from './format.js';
 import type { TemplateValues } from './template.js';
+import type { EncodedThumbnail } from '../thumbnail/types.js';
 
 /** What the caller tells the writer about this file beyond plan and settings. */
 export interface GcodeMeta {
@@ -15,6 +16,8 @@ export interface GcodeMeta {
   date?: string;
   /** Further header comment lines (written after `;`, one per entry; newlines are flattened). */
   comments?: readonly string[];
+  /** Encoded preview images to embed (see thumbnail/), in the order given. */
+  thumbnails?: readonly EncodedThumbnail[];
 }
 
 const oneLine = (text: string): string => text.replace(/[\r\n]+/g, ' ');

@@ -3,7 +3,12 @@
  * and fan changes, `G92 E0` (absolute E, when E is not already 0), the moves with `;TYPE:` markers when
  * the feature changes, `;TIME_ELAPSED:` at the layer end.
  *
- * Travels are G0, the rest G1; axes and F are modal (written only when they change); X/Y/Z to the µm,
+ * With `progressM73`, each layer starts with `M73 P<percent> R<minutes left>` from the estimate (written
+ * when either changes; P rounded down, R up, so both move one way only). Object labels come from
+ * object-labels.ts. Firmware retraction writes G10/G11 instead of E moves.
+ *
+ * Travels are G0, the rest G1 (arcs G2 clockwise / G3 counter-clockwise, with I J from the start point as
+ * written to the centre); axes and F are modal (written only when they change); X/Y/Z to the µm,
  * E to 1e-5 mm, F whole mm/min. E is accumulated unrounded and each written value is rounded from the
  * running total, so relative E words add up to exactly the absolute values and rounding never drifts.
  * A class with fields rather than closures, so the per-segment doubles are updated in place.
@@ -13,6 +18,7 @@ import type { ChunkedText } from './chunked-text.js';
 import type { FlavorCommands } from './flavor.js';
 import { E_SCALE, POSITION_SCALE, compact, feedrate, mm } from './format.js';
 import type { MoveSink } from '../plan/moves.js';
+import type { ObjectLabels } from './object-labels.js';
 
 /** The `;TYPE:` marker of each feature, as Cura names them (Cura writes its brim as SKIRT, its raft as SUPPORT-INTERFACE); skin over air is BRIDGE, as OrcaSlicer names it. */
 export const TYPE_MARKERS = {
@@ -40,6 +46,12 @@ export interface MoveWriterOptions {
   /** Temperatures the start G-code leaves the heaters at (NaN = unknown). */
   nozzleTemperature: number;
   bedTemperature: number;
+  /** Write M73 progress at each layer start. */
+  progress: boolean;
+  /** Retract with G10/G11. */
+  firmwareRetraction: boolean;
+  /** Object label lines, or null for none. */
+  labels: ObjectLabels | null;
 }
 
 export class MoveWriter implements MoveSink {
@@ -58,6 +70,10 @@ export class MoveWriter implements MoveSink {
   /** The current layer's fan, which a step with its own fan (bridges) returns to. */
   private layerFan = NaN;
   private elapsed = 0;
+  private readonly totalSeconds: number;
+  /** Last M73 values written (-1 = none yet). */
+  private percent = -1;
+  private minutesLeft = -1;
 
   constructor(
     private readonly out: ChunkedText,
@@ -65,6 +81,30 @@ export class MoveWriter implements MoveSink {
   ) {
     this.nozzle = o.nozzleTemperature;
     this.bed = o.bedTemperature;
+    let total = 0;
+    for (const t of o.layerSeconds) total += t;
+    this.totalSeconds = total;
+  }
+
+  /** `M73 P R` for `elapsed` seconds into the print, when a value changed. */
+  private progress(elapsed: number): void {
+    const total = this.totalSeconds;
+    const percent = total > 0 ? Math.min(100, Math.floor((100 * elapsed) / total)) : 0;
+    const left = Math.max(0, Math.ceil((total - elapsed) / 60 - 1e-9));
+    const p = Math.max(percent, this.percent);
+    const r = this.minutesLeft < 0 ? left : Math.min(left, this.minutesLeft);
+    if (p === this.percent && r === this.minutesLeft) return;
+    this.percent = p;
+    this.minutesLeft = r;
+    this.out.line(`M73 P${p} R${r}`);
+  }
+
+  /** The final `M73 P100 R0`, after the last layer (when progress is on). */
+  finish(): void {
+    if (!this.o.progress) return;
+    this.percent = 100;
+    this.minutesLeft = 0;
+    this.out.line('M73 P100 R0');
   }
 
   private feed(speed: number): void {
@@ -103,6 +143,7 @@ export class MoveWriter implements MoveSink {
     out.line(`;LAYER:${position}`);
     out.line(`;Z:${mm(layer.z)}`);
     out.line(`;HEIGHT:${mm(layer.height)}`);
+    if (o.progress) this.progress(this.elapsed);
     if (layer.nozzleTemperature !== undefined && layer.nozzleTemperature !== this.nozzle) {
       this.nozzle = layer.nozzleTemperature;
       for (const l of o.flavor.setNozzle(this.nozzle)) out.line(l);
@@ -170,7 +211,36 @@ export class MoveWriter implements MoveSink {
     this.out.endLine();
   }
 
+  arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, _length: number, filament: number, speed: number): void {
+    const ux = Math.round(x);
+    const uy = Math.round(y);
+    if (ux === this.x && uy === this.y) {
+      this.eTotal += filament; // an arc that ends where it starts would be a full circle: carried instead
+      return;
+    }
+    const i = Math.round(cx) - this.x;
+    const j = Math.round(cy) - this.y;
+    this.out.text(clockwise ? 'G2' : 'G3');
+    this.feed(speed);
+    this.out.text(' X');
+    this.out.fixed(ux, POSITION_SCALE, POSITION_DECIMALS);
+    this.out.text(' Y');
+    this.out.fixed(uy, POSITION_SCALE, POSITION_DECIMALS);
+    this.x = ux;
+    this.y = uy;
+    this.out.text(' I');
+    this.out.fixed(i, POSITION_SCALE, POSITION_DECIMALS);
+    this.out.text(' J');
+    this.out.fixed(j, POSITION_SCALE, POSITION_DECIMALS);
+    this.e(filament);
+    this.out.endLine();
+  }
+
   retract(filament: number, speed: number): void {
+    if (this.o.firmwareRetraction) {
+      this.out.line('G10');
+      return;
+    }
     this.out.text('G1');
     this.feed(speed);
     this.e(-filament);
@@ -178,9 +248,21 @@ export class MoveWriter implements MoveSink {
   }
 
   prime(filament: number, speed: number): void {
+    if (this.o.firmwareRetraction) {
+      this.out.line('G11');
+      return;
+    }
     this.out.text('G1');
     this.feed(speed);
     this.e(filament);
     this.out.endLine();
+  }
+
+  objectStart(index: number): void {
+    for (const l of this.o.labels?.start(index) ?? []) this.out.line(l);
+  }
+
+  objectEnd(index: number): void {
+    for (const l of this.o.labels?.end(index) ?? []) this.out.line(l);
   }
 }

@@ -1,21 +1,27 @@
 /**
  * The G-code writer: prints a plan as text to a sink, in chunks of about CHUNK_BYTES.
  *
- * File layout: header comments (header.ts); heat-up, only when the start template neither uses a
+ * File layout: header comments (header.ts); thumbnails (thumbnail-blocks.ts); object definitions
+ * (Klipper EXCLUDE_OBJECT_DEFINE, M486 T); heat-up, only when the start template neither uses a
  * temperature placeholder nor sets that temperature itself (M104/M109, M140/M190); the start template;
- * the extrusion mode (M82/M83, forced whatever the template did) and `G92 E0`; M204 when `acceleration`
- * is not the schema default (firmware keeps its own unless a preset or the user chose one);
- * `;LAYER_COUNT:`; the layers (move-writer.ts, walking the plan through moves.ts exactly as the estimate
- * does); the end template.
+ * the extrusion mode (M82/M83, forced whatever the template did) and `G92 E0`; the machine limits when
+ * `machineLimits` is `write`, else M204 when `acceleration` is not the schema default (firmware keeps
+ * its own unless a preset or the user chose one); pressure advance when set; `;LAYER_COUNT:`; the layers
+ * (move-writer.ts, walking the plan through moves.ts exactly as the estimate does); `M73 P100 R0`; the
+ * end template.
  */
+import { StrataError } from '../errors.js';
 import type { PlanEstimate, PrintPlan } from '../plan/types.js';
 import { SCHEMA, type Settings } from '../settings/schema.js';
 import { ChunkedText } from './chunked-text.js';
 import { FLAVORS } from './flavor.js';
+import { templateForFlavor, templateHeatsNozzle } from './flavor-templates.js';
 import { derivedTemplateValues, headerLines, type GcodeMeta } from './header.js';
 import { MoveWriter } from './move-writer.js';
 import { walkPlanSteps } from '../plan/moves.js';
 import { expandTemplate, placeholders, settingValue } from './template.js';
+import { labelMode, objectLabels } from './object-labels.js';
+import { thumbnailBlockLines } from './thumbnail-blocks.js';
 
 export type { GcodeMeta } from './header.js';
 export { TYPE_MARKERS } from './move-writer.js';
@@ -25,7 +31,6 @@ export const CHUNK_BYTES = 65536;
 
 const NOZZLE_KEYS = ['firstLayerNozzleTemperature', 'nozzleTemperature'];
 const BED_KEYS = ['firstLayerBedTemperature', 'bedTemperature'];
-const SETS_NOZZLE = /^\s*M10[49]\b/im;
 const SETS_BED = /^\s*M1[49]0\b/im;
 
 function templateLines(text: string): string[] {
@@ -41,7 +46,8 @@ function temperature(settings: Settings, key: string): number {
 
 /**
  * Write `plan` as G-code to `sink`. Templates are checked before anything is written, so a bad
- * placeholder throws StrataError BAD_SETTING without partial output.
+ * placeholder throws StrataError BAD_SETTING without partial output, and a plan with nothing to
+ * extrude throws EMPTY_MODEL (G-code that heats, homes and prints nothing would mislead).
  */
 export function writeGcode(
   plan: PrintPlan,
@@ -65,17 +71,24 @@ export function* writeGcodeSteps(
   const flavor = FLAVORS[settings.gcodeFlavor];
   const relative = settings.extruderMode === 'relative';
   const derived = derivedTemplateValues(plan, estimate);
-  const start = templateLines(expandTemplate('startGcode', settings.startGcode, settings, derived));
-  const end = templateLines(expandTemplate('endGcode', settings.endGcode, settings, derived));
+  const start = templateForFlavor(templateLines(expandTemplate('startGcode', settings.startGcode, settings, derived)), settings.gcodeFlavor, 'startGcode', settings.heatedBed);
+  const end = templateForFlavor(templateLines(expandTemplate('endGcode', settings.endGcode, settings, derived)), settings.gcodeFlavor, 'endGcode', settings.heatedBed);
+
+  const labels = objectLabels(plan.objects, labelMode(settings), settings.gcodeFlavor);
 
   const out = new ChunkedText(sink, CHUNK_BYTES);
+  if (!plan.layers.some((l) => l.steps.some((s) => s.kind === 'extrude'))) {
+    throw new StrataError('EMPTY_MODEL', 'nothing to print: no layer of the model is wide enough for a line (it is thinner than the line width everywhere)');
+  }
   for (const l of headerLines(plan, settings, estimate, meta, flavor.name)) out.line(l);
+  for (const image of meta.thumbnails ?? []) for (const l of thumbnailBlockLines(image)) out.line(l);
+  for (const l of labels?.preamble ?? []) out.line(l);
 
   // Heat-up, unless the start template takes care of it.
   const used = placeholders(settings.startGcode);
   const firstNozzle = temperature(settings, 'firstLayerNozzleTemperature');
   const firstBed = temperature(settings, 'firstLayerBedTemperature');
-  const heatNozzle = !NOZZLE_KEYS.some((k) => used.includes(k)) && !SETS_NOZZLE.test(settings.startGcode);
+  const heatNozzle = !NOZZLE_KEYS.some((k) => used.includes(k)) && !templateHeatsNozzle(settings.startGcode, settings.gcodeFlavor);
   const heatBed = settings.heatedBed && !BED_KEYS.some((k) => used.includes(k)) && !SETS_BED.test(settings.startGcode);
   if (heatBed) out.line(flavor.setBed(firstBed));
   if (heatNozzle) for (const l of flavor.setNozzle(firstNozzle)) out.line(l);
@@ -85,7 +98,9 @@ export function* writeGcodeSteps(
   for (const l of start) out.line(l);
   out.line(relative ? 'M83 ; relative extrusion' : 'M82 ; absolute extrusion');
   out.line('G92 E0');
-  if (settings.acceleration !== SCHEMA.acceleration.default) out.line(flavor.acceleration(settings.acceleration));
+  if (settings.machineLimits === 'write') for (const l of flavor.machineLimits(settings)) out.line(l);
+  else if (settings.acceleration !== SCHEMA.acceleration.default) out.line(flavor.acceleration(settings.acceleration));
+  if (settings.pressureAdvance !== null) out.line(flavor.pressureAdvance(settings.pressureAdvance));
   out.line(`;LAYER_COUNT:${plan.layers.length}`);
 
   const moves = new MoveWriter(out, {
@@ -95,8 +110,12 @@ export function* writeGcodeSteps(
     layerSeconds: estimate.layerSeconds,
     nozzleTemperature: firstNozzle,
     bedTemperature: firstBed,
+    progress: settings.progressM73,
+    firmwareRetraction: settings.firmwareRetraction && settings.retractionEnabled,
+    labels,
   });
   yield* walkPlanSteps(plan, settings, moves);
+  moves.finish();
 
   for (const l of end) out.line(l);
   out.flush();

@@ -22,6 +22,7 @@ import type { LayerRegions } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
+import { renderThumbnails } from '../thumbnail/index.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
 import { pathsOf, rangeSteps, type PathsParams, type RangeJob, type RangeResult } from './layer-work.js';
@@ -254,7 +255,8 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     let k = 0;
     const estimate = await pacer.run(estimatePlanSteps(printPlan, cfg), () => report('planning', 0.8 + (0.1 * ++k) / n));
     k = 0;
-    await pacer.run(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}` }), () => report('writing', 0.9 + (0.1 * ++k) / n));
+    const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
+    await pacer.run(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
     return { plan: printPlan, estimate, layers: planned.length };
   } finally {

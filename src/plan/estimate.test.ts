@@ -18,6 +18,18 @@ const S: EstimateSettings = {
   acceleration: 500,
   cornerVelocity: 8,
   filamentDensity: 1.24,
+  firmwareRetraction: false,
+  machineLimits: 'estimate',
+  maxSpeedX: null,
+  maxSpeedY: null,
+  maxSpeedZ: null,
+  maxSpeedE: null,
+  maxAccelerationX: null,
+  maxAccelerationY: null,
+  maxAccelerationZ: null,
+  maxAccelerationE: null,
+  travelAcceleration: null,
+  retractAcceleration: null,
 };
 
 const pt = (xMm: number, yMm: number): Pt => ({ x: Math.round(xMm * 1000), y: Math.round(yMm * 1000) });
@@ -130,4 +142,41 @@ test('segmentSeconds handles triangles between unequal entry and exit speeds', (
   // Enter at 10, leave at 20 over 1 mm with a = 500: peak² = aL + (100 + 400)/2 = 750.
   const peak = Math.sqrt(750);
   close(segmentSeconds(1, 10, 100, 20, 500), (peak - 10) / 500 + (peak - 20) / 500, 1e-12, 'triangle');
+});
+
+test('machine limits: per-axis speed and acceleration caps, travel and retract acceleration, and "ignore"', () => {
+  const long = plan(layer(0, [line([pt(0, 0), pt(100, 0)], 100)]));
+  const capped = estimatePlan(long, { ...S, maxSpeedX: 50 });
+  close(capped.printTimeSeconds, 100 / 50 + 50 / 500, 1e-9, 'X capped at 50 mm/s');
+  close(estimatePlan(long, { ...S, maxSpeedX: 50, machineLimits: 'ignore' }).printTimeSeconds, 100 / 100 + 100 / 500, 1e-9, 'ignored');
+  close(estimatePlan(long, { ...S, maxSpeedY: 50 }).printTimeSeconds, 100 / 100 + 100 / 500, 1e-9, 'a Y limit does not slow an X move');
+  // a 45° move may go 50/cos 45° when each axis is limited to 50
+  const diagonal = plan(layer(0, [line([pt(0, 0), pt(100, 100)], 200)]));
+  const v = 50 / Math.SQRT1_2;
+  close(estimatePlan(diagonal, { ...S, maxSpeedX: 50, maxSpeedY: 50 }).printTimeSeconds, (100 * Math.SQRT2) / v + v / 500, 1e-9, 'diagonal');
+  // per-axis acceleration: X at 250 mm/s² halves the acceleration of an X move
+  close(estimatePlan(long, { ...S, maxAccelerationX: 250 }).printTimeSeconds, 100 / 100 + 100 / 250, 1e-9, 'X acceleration');
+  // travels accelerate at travelAcceleration
+  const hop = plan(layer(0, [move([pt(0, 0)], false), move([pt(100, 0)], false, 0, 100)]));
+  const base = estimatePlan(hop, S).printTimeSeconds;
+  const fast = estimatePlan(hop, { ...S, travelAcceleration: 5000 }).printTimeSeconds;
+  close(base - fast, 100 / 500 - 100 / 5000, 1e-9, 'travel acceleration');
+  // retractions are capped at maxSpeedE and use retractAcceleration
+  const retract = plan(layer(0, [move([pt(0, 0)], false), move([pt(10, 0)], true)]));
+  const r0 = estimatePlan(retract, S).printTimeSeconds;
+  const r1 = estimatePlan(retract, { ...S, maxSpeedE: 20, retractAcceleration: 1000 }).printTimeSeconds;
+  close(r1 - r0, 2 * (pointToPointSeconds(5, 20, 1000) - pointToPointSeconds(5, 45, 500)), 1e-9, 'retract and prime');
+});
+
+test('an arc is timed like the firmware runs it: 1 mm chords, taken at the circle\'s own speed', () => {
+  const r = 20;
+  const quarter: ExtrudeStep = {
+    ...line([pt(r, 0), pt(0, r)], 50),
+    arcs: [undefined, { cx: 0, cy: 0, clockwise: false }],
+  };
+  const e = estimatePlan(plan(layer(0, [quarter])), S);
+  const length = (Math.PI * r) / 2;
+  // a gentle curve: nearly L/v plus the start and stop
+  close(e.printTimeSeconds, length / 50 + 50 / 500, 0.02, 'quarter circle');
+  close(e.filamentMm, length * ((0.4 * 0.2) / (Math.PI * 0.875 ** 2)), 1e-9, 'filament along the arc');
 });

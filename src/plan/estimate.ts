@@ -14,6 +14,12 @@
  * - A backward pass limits every junction so the head can still brake to the next one; a forward pass
  *   limits it to what the head can reach from the previous one. Then each segment's time is summed.
  * - Retractions, primes and Z moves: point-to-point trapezoids from rest at their own speeds.
+ * - Arcs are timed as the firmware runs them: chords of ARC_SEGMENT_MM (Marlin's MM_PER_ARC_SEGMENT and
+ *   Klipper's arc resolution both default to 1 mm).
+ * - Machine limits (unless `machineLimits` is `ignore`): travels accelerate at `travelAcceleration`;
+ *   a move's speed and acceleration are cut so that neither axis exceeds its own limit (`maxSpeedX/Y`,
+ *   `maxAccelerationX/Y`), as Marlin's planner does; Z moves use `maxAccelerationZ`; retractions and
+ *   primes are capped at `maxSpeedE` and accelerate at `retractAcceleration` (else `maxAccelerationE`).
  * Heating, homing and the start/end G-code are not estimated.
  *
  * Filament: Σ E of the extrusions (width × height × length over the filament cross-section × flow ×
@@ -24,7 +30,59 @@ import type { Settings } from '../settings/schema.js';
 import type { PlanEstimate, PrintPlan } from './types.js';
 
 /** The settings the estimate reads. */
-export type EstimateSettings = MoveSettings & Pick<Settings, 'acceleration' | 'cornerVelocity' | 'filamentDensity'>;
+export type EstimateSettings = MoveSettings &
+  Pick<
+    Settings,
+    | 'acceleration'
+    | 'cornerVelocity'
+    | 'filamentDensity'
+    | 'machineLimits'
+    | 'maxSpeedX'
+    | 'maxSpeedY'
+    | 'maxSpeedE'
+    | 'maxAccelerationX'
+    | 'maxAccelerationY'
+    | 'maxAccelerationZ'
+    | 'maxAccelerationE'
+    | 'travelAcceleration'
+    | 'retractAcceleration'
+  >;
+
+/** Chord length firmware splits arcs into, mm (Marlin MM_PER_ARC_SEGMENT, Klipper gcode_arcs resolution). */
+export const ARC_SEGMENT_MM = 1;
+
+/** The limits the motion timer applies, resolved once from the settings (Infinity = none). */
+export interface MotionLimits {
+  printAccel: number;
+  travelAccel: number;
+  zAccel: number;
+  retractAccel: number;
+  maxSpeedX: number;
+  maxSpeedY: number;
+  maxSpeedE: number;
+  maxAccelX: number;
+  maxAccelY: number;
+  cornerVelocity: number;
+}
+
+/** The limits the estimate uses for these settings. */
+export function motionLimits(s: EstimateSettings): MotionLimits {
+  const a = s.acceleration;
+  const use = s.machineLimits !== 'ignore';
+  const or = (v: number | null, fallback: number) => (use && v !== null ? v : fallback);
+  return {
+    printAccel: a,
+    travelAccel: or(s.travelAcceleration, a),
+    zAccel: or(s.maxAccelerationZ, a),
+    retractAccel: or(s.retractAcceleration, or(s.maxAccelerationE, a)),
+    maxSpeedX: or(s.maxSpeedX, Infinity),
+    maxSpeedY: or(s.maxSpeedY, Infinity),
+    maxSpeedE: or(s.maxSpeedE, Infinity),
+    maxAccelX: or(s.maxAccelerationX, Infinity),
+    maxAccelY: or(s.maxAccelerationY, Infinity),
+    cornerVelocity: s.cornerVelocity,
+  };
+}
 
 /** √2 − 1: the junction-deviation factor that makes a 90° corner's speed equal the corner velocity. */
 const JUNCTION_FACTOR = Math.SQRT2 - 1;
@@ -85,6 +143,7 @@ export function junctionSpeed2(
 class MotionTimer implements MoveSink {
   private length = new Float64Array(1024);
   private cruise = new Float64Array(1024);
+  private accel = new Float64Array(1024);
   private entryMax2 = new Float64Array(1024);
   private count = 0;
   /** Last XY position (µm) and unit direction of the last chained segment. */
@@ -96,21 +155,17 @@ class MotionTimer implements MoveSink {
   readonly layerSeconds: number[] = [];
   filament = 0;
 
-  constructor(
-    private readonly accel: number,
-    private readonly cornerVelocity: number,
-  ) {}
+  constructor(private readonly limits: MotionLimits) {}
 
   /** Run the backward and forward passes over the chain (which starts and ends at rest), add its time, empty it. */
   private stop(): void {
     const n = this.count;
     if (n === 0) return;
     const { length, cruise, entryMax2, accel } = this;
-    const twoA = 2 * accel;
     // Backward: every entry must allow braking to the next one.
     let next2 = 0;
     for (let i = n - 1; i >= 0; i--) {
-      const reachable = next2 + twoA * length[i]!;
+      const reachable = next2 + 2 * accel[i]! * length[i]!;
       const e = entryMax2[i]! < reachable ? entryMax2[i]! : reachable;
       entryMax2[i] = e;
       next2 = e;
@@ -121,11 +176,12 @@ class MotionTimer implements MoveSink {
     let v0 = 0;
     for (let i = 0; i < n; i++) {
       const len = length[i]!;
+      const a = accel[i]!;
       const nextMax2 = i + 1 < n ? entryMax2[i + 1]! : 0;
-      const reachable = entry2 + twoA * len;
+      const reachable = entry2 + 2 * a * len;
       const exit2 = nextMax2 < reachable ? nextMax2 : reachable;
       const v1 = Math.sqrt(exit2);
-      seconds += segmentSeconds(len, v0, cruise[i]!, v1, accel);
+      seconds += segmentSeconds(len, v0, cruise[i]!, v1, a);
       entry2 = exit2;
       v0 = v1;
     }
@@ -135,18 +191,18 @@ class MotionTimer implements MoveSink {
 
   private grow(): void {
     const size = this.length.length * 2;
-    const length = new Float64Array(size);
-    const cruise = new Float64Array(size);
-    const entryMax2 = new Float64Array(size);
-    length.set(this.length);
-    cruise.set(this.cruise);
-    entryMax2.set(this.entryMax2);
-    this.length = length;
-    this.cruise = cruise;
-    this.entryMax2 = entryMax2;
+    const grown = (old: Float64Array) => {
+      const a = new Float64Array(size);
+      a.set(old);
+      return a;
+    };
+    this.length = grown(this.length);
+    this.cruise = grown(this.cruise);
+    this.accel = grown(this.accel);
+    this.entryMax2 = grown(this.entryMax2);
   }
 
-  private push(x: number, y: number, length: number, speed: number): void {
+  private push(x: number, y: number, length: number, speed: number, baseAccel: number): void {
     if (!(length > 0)) {
       // From an unknown position: no time can be given; the chain restarts here.
       this.stop();
@@ -156,16 +212,32 @@ class MotionTimer implements MoveSink {
     }
     const nx = (x - this.px) / (1000 * length);
     const ny = (y - this.py) / (1000 * length);
+    // Per-axis limits: neither axis may exceed its own speed or acceleration.
+    const L = this.limits;
+    const ax = nx < 0 ? -nx : nx;
+    const ay = ny < 0 ? -ny : ny;
+    let v = speed;
+    let a = baseAccel;
+    if (ax > 1e-9) {
+      if (L.maxSpeedX / ax < v) v = L.maxSpeedX / ax;
+      if (L.maxAccelX / ax < a) a = L.maxAccelX / ax;
+    }
+    if (ay > 1e-9) {
+      if (L.maxSpeedY / ay < v) v = L.maxSpeedY / ay;
+      if (L.maxAccelY / ay < a) a = L.maxAccelY / ay;
+    }
     const i = this.count;
     let entry2 = 0;
     if (i > 0) {
-      entry2 = junctionSpeed2(this.ux, this.uy, this.length[i - 1]!, nx, ny, length, this.accel, this.cornerVelocity);
-      const slower = speed < this.cruise[i - 1]! ? speed : this.cruise[i - 1]!;
+      const junctionAccel = a < this.accel[i - 1]! ? a : this.accel[i - 1]!;
+      entry2 = junctionSpeed2(this.ux, this.uy, this.length[i - 1]!, nx, ny, length, junctionAccel, L.cornerVelocity);
+      const slower = v < this.cruise[i - 1]! ? v : this.cruise[i - 1]!;
       if (slower * slower < entry2) entry2 = slower * slower;
     }
     if (i === this.length.length) this.grow();
     this.length[i] = length;
-    this.cruise[i] = speed;
+    this.cruise[i] = v;
+    this.accel[i] = a;
     this.entryMax2[i] = entry2;
     this.count = i + 1;
     this.px = x;
@@ -174,9 +246,9 @@ class MotionTimer implements MoveSink {
     this.uy = ny;
   }
 
-  private pointToPoint(distance: number, speed: number): void {
+  private pointToPoint(distance: number, speed: number, accel: number): void {
     this.stop();
-    this.layerTime += pointToPointSeconds(distance, speed, this.accel);
+    this.layerTime += pointToPointSeconds(distance, speed, accel);
   }
 
   layerStart(): void {
@@ -187,24 +259,43 @@ class MotionTimer implements MoveSink {
     this.layerSeconds.push(this.layerTime);
   }
   zMove(_z: number, distance: number, speed: number): void {
-    this.pointToPoint(distance, speed);
+    this.pointToPoint(distance, speed, this.limits.zAccel);
   }
   travel(x: number, y: number, length: number, speed: number): void {
-    this.push(x, y, length, speed);
+    this.push(x, y, length, speed, this.limits.travelAccel);
   }
   extrudeStart(): void {}
   extrude(x: number, y: number, length: number, filament: number, speed: number): void {
     this.filament += filament;
-    this.push(x, y, length, speed);
+    this.push(x, y, length, speed, this.limits.printAccel);
+  }
+  arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void {
+    this.filament += filament;
+    const r = Math.hypot(this.px - cx, this.py - cy);
+    const pieces = Math.max(1, Math.ceil(length / ARC_SEGMENT_MM));
+    if (!(r > 0) || pieces === 1) {
+      this.push(x, y, length, speed, this.limits.printAccel);
+      return;
+    }
+    const a0 = Math.atan2(this.py - cy, this.px - cx);
+    const step = ((clockwise ? -1 : 1) * (length * 1000)) / r / pieces;
+    const chord = (2 * r * Math.sin(Math.abs(step) / 2)) / 1000;
+    for (let k = 1; k < pieces; k++) {
+      const a = a0 + step * k;
+      this.push(cx + r * Math.cos(a), cy + r * Math.sin(a), chord, speed, this.limits.printAccel);
+    }
+    this.push(x, y, Math.hypot(x - this.px, y - this.py) / 1000, speed, this.limits.printAccel);
   }
   retract(filament: number, speed: number): void {
     this.filament -= filament;
-    this.pointToPoint(filament, speed);
+    this.pointToPoint(filament, Math.min(speed, this.limits.maxSpeedE), this.limits.retractAccel);
   }
   prime(filament: number, speed: number): void {
     this.filament += filament;
-    this.pointToPoint(filament, speed);
+    this.pointToPoint(filament, Math.min(speed, this.limits.maxSpeedE), this.limits.retractAccel);
   }
+  objectStart(): void {}
+  objectEnd(): void {}
 }
 
 /** Estimate print time (per layer and total) and filament use of a plan. */
@@ -218,7 +309,7 @@ export function estimatePlan(plan: PrintPlan, s: EstimateSettings): PlanEstimate
 
 /** `estimatePlan` as steps: yields after each layer. */
 export function* estimatePlanSteps(plan: PrintPlan, s: EstimateSettings): Generator<void, PlanEstimate> {
-  const timer = new MotionTimer(s.acceleration, s.cornerVelocity);
+  const timer = new MotionTimer(motionLimits(s));
   yield* walkPlanSteps(plan, s, timer);
   let printTimeSeconds = 0;
   for (const t of timer.layerSeconds) printTimeSeconds += t;

@@ -15,6 +15,15 @@
  *   rectangular cross-section model (the same one the planner's widths are computed for).
  * - XY speeds are capped at `maxSpeed` (and floored at MIN_SPEED_MM_S so a feed rate is never 0).
  * - Zero-length segments are dropped.
+ * - A segment with an arc (`step.arcs[i]`) goes around its centre in its direction; its length, and so
+ *   its filament, is the arc's (radius from the start point × swept angle).
+ * - Object labels: the moves of an extrusion with an `object`, and the travels between two extrusions of
+ *   that object, lie between `objectStart` and `objectEnd`; travels from one object to another, layer
+ *   changes and Z moves to the layer stay outside, so skipping an object's moves skips whole
+ *   retract/prime pairs and never a layer change. Every object is ended before its layer ends.
+ * - Firmware retraction: the prime is the same length as the retraction (the firmware's own lengths are
+ *   used; no extra prime can be asked for).
+ * - Standalone Z moves go at Z_SPEED_MM_S, or `maxSpeedZ` when that is slower.
  */
 import type { ExtrudeStep, LayerPlan, PrintPlan } from './types.js';
 import type { Settings } from '../settings/schema.js';
@@ -36,6 +45,8 @@ export type MoveSettings = Pick<
   | 'retractionExtraPrime'
   | 'travelSpeed'
   | 'firstLayerTravelSpeed'
+  | 'firmwareRetraction'
+  | 'maxSpeedZ'
 >;
 
 /**
@@ -51,8 +62,26 @@ export interface MoveSink {
   /** Called before the segments of each extrude step (after any implicit travel to its start). */
   extrudeStart(step: ExtrudeStep): void;
   extrude(x: number, y: number, length: number, filament: number, speed: number): void;
+  /** An extrusion along a circular arc around (cx, cy) µm to (x, y); `length` is the arc's, mm. */
+  arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void;
   retract(filament: number, speed: number): void;
   prime(filament: number, speed: number): void;
+  /** The moves of object `index` (into `PrintPlan.objects`) begin. */
+  objectStart(index: number): void;
+  /** The moves of object `index` end. */
+  objectEnd(index: number): void;
+}
+
+/**
+ * Length (mm) of the arc from (x0, y0) to (x1, y1) around (cx, cy), all µm, turning `clockwise` or not:
+ * the start radius times the swept angle, which lies in (0, 2π).
+ */
+export function arcLengthMm(x0: number, y0: number, x1: number, y1: number, cx: number, cy: number, clockwise: boolean): number {
+  const a0 = Math.atan2(y0 - cy, x0 - cx);
+  const a1 = Math.atan2(y1 - cy, x1 - cx);
+  let sweep = clockwise ? a0 - a1 : a1 - a0;
+  if (sweep <= 0) sweep += 2 * Math.PI;
+  return (Math.hypot(x0 - cx, y0 - cy) * sweep) / 1000;
 }
 
 /** Filament cross-section area, mm². */
@@ -80,9 +109,9 @@ interface Position {
   known: boolean;
 }
 
-function moveZ(pos: Position, target: number, sink: MoveSink): void {
+function moveZ(pos: Position, target: number, speed: number, sink: MoveSink): void {
   if (target === pos.z) return;
-  sink.zMove(target, Number.isNaN(pos.z) ? NaN : Math.abs(target - pos.z), Z_SPEED_MM_S);
+  sink.zMove(target, Number.isNaN(pos.z) ? NaN : Math.abs(target - pos.z), speed);
   pos.z = target;
 }
 
@@ -97,6 +126,18 @@ function travelTo(pos: Position, x: number, y: number, speed: number, sink: Move
   sink.travel(x, y, length, speed);
 }
 
+/** No object: skirt, brim, raft, or nothing open. */
+const NO_OBJECT = -1;
+
+/** The object of the next extrusion after step `from` in `steps` (NO_OBJECT when it has none or there is none). */
+function nextObject(steps: LayerPlan['steps'], from: number): number {
+  for (let i = from + 1; i < steps.length; i++) {
+    const step = steps[i]!;
+    if (step.kind === 'extrude' && step.points.length > 0) return step.object ?? NO_OBJECT;
+  }
+  return NO_OBJECT;
+}
+
 /** Walk `plan` in print order, telling `sink` every machine move. */
 export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void {
   const steps = walkPlanSteps(plan, s, sink);
@@ -106,33 +147,48 @@ export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void
 /** `walkPlan` as steps: yields after each layer, so a caller can pause between layers. */
 export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink): Generator<void, void> {
   const retractDistance = s.retractionEnabled ? s.retractionDistance : 0;
-  const primeDistance = s.retractionEnabled ? s.retractionDistance + s.retractionExtraPrime : 0;
+  const primeDistance = !s.retractionEnabled ? 0 : s.firmwareRetraction ? s.retractionDistance : s.retractionDistance + s.retractionExtraPrime;
+  const zSpeed = s.maxSpeedZ !== null && s.maxSpeedZ < Z_SPEED_MM_S ? s.maxSpeedZ : Z_SPEED_MM_S;
   const pos: Position = { x: 0, y: 0, z: NaN, known: false };
+  let open = NO_OBJECT;
 
   for (let li = 0; li < plan.layers.length; li++) {
     const layer = plan.layers[li]!;
     const layerZ = layer.z;
     const travelSpeed = capSpeed(li === 0 ? s.firstLayerTravelSpeed : s.travelSpeed, s.maxSpeed);
     sink.layerStart(layer, li);
-    for (const step of layer.steps) {
+    const steps = layer.steps;
+    for (let si = 0; si < steps.length; si++) {
+      const step = steps[si]!;
       if (step.kind === 'travel') {
+        if (open !== NO_OBJECT && nextObject(steps, si) !== open) {
+          sink.objectEnd(open);
+          open = NO_OBJECT;
+        }
         const speed = capSpeed(step.speed, s.maxSpeed);
         const retracting = step.retract && s.retractionEnabled;
         if (retracting && retractDistance > 0) sink.retract(retractDistance, s.retractionSpeed);
-        moveZ(pos, retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, sink);
+        moveZ(pos, retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, zSpeed, sink);
         for (const p of step.points) travelTo(pos, p.x, p.y, speed, sink);
-        moveZ(pos, layerZ, sink);
+        moveZ(pos, layerZ, zSpeed, sink);
         if (retracting && primeDistance > 0) sink.prime(primeDistance, s.retractionSpeed);
         continue;
       }
       const points = step.points;
       const n = points.length;
       if (n === 0) continue;
-      moveZ(pos, layerZ, sink);
+      moveZ(pos, layerZ, zSpeed, sink);
+      const object = step.object ?? NO_OBJECT;
+      if (object !== open) {
+        if (open !== NO_OBJECT) sink.objectEnd(open);
+        if (object !== NO_OBJECT) sink.objectStart(object);
+        open = object;
+      }
       travelTo(pos, points[0]!.x, points[0]!.y, travelSpeed, sink);
       sink.extrudeStart(step);
       const speed = capSpeed(step.speed, s.maxSpeed);
       const perMm = filamentPerMm(step, s);
+      const arcs = step.arcs;
       const last = step.closed ? n : n - 1;
       let x = pos.x;
       let y = pos.y;
@@ -141,6 +197,14 @@ export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink)
         const dx = p.x - x;
         const dy = p.y - y;
         if (dx === 0 && dy === 0) continue;
+        const arc = arcs?.[i];
+        if (arc) {
+          const length = arcLengthMm(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise);
+          x = p.x;
+          y = p.y;
+          sink.arc(x, y, arc.cx, arc.cy, arc.clockwise, length, length * perMm, speed);
+          continue;
+        }
         const length = Math.sqrt(dx * dx + dy * dy) / 1000;
         x = p.x;
         y = p.y;
@@ -148,6 +212,10 @@ export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink)
       }
       pos.x = x;
       pos.y = y;
+    }
+    if (open !== NO_OBJECT) {
+      sink.objectEnd(open);
+      open = NO_OBJECT;
     }
     sink.layerEnd(layer, li);
     yield;

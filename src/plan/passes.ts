@@ -4,6 +4,7 @@
  * Adding a pass (arc fitting, progress, speed limits) is adding it to `PLAN_PASSES`.
  */
 import type { Config } from '../settings/resolve.js';
+import { fitPlanArcs } from './arc-fit.js';
 import { applyMinLayerTime } from './cooling.js';
 import type { PrintPlan } from './types.js';
 
@@ -20,7 +21,18 @@ const cooling: PlanPass = {
   },
 };
 
-export const PLAN_PASSES: readonly PlanPass[] = [cooling];
+/**
+ * Arc fitting (when `arcFitting` is on): runs of short segments on curves become arc segments. It runs
+ * after every pass that reads or moves points, since the points it keeps are arc end points.
+ */
+const arcFitting: PlanPass = {
+  name: 'arc fitting',
+  run(plan, cfg) {
+    if (cfg.arcFitting) fitPlanArcs(plan, cfg.arcTolerance);
+  },
+};
+
+export const PLAN_PASSES: readonly PlanPass[] = [cooling, arcFitting];
 
 /** Run every pass over the plan, in order. */
 export function runPlanPasses(plan: PrintPlan, cfg: Config): void {

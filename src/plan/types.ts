@@ -39,6 +39,20 @@ export interface ExtrudeStep {
   object?: number;
   /** Part-cooling fan for this step, 0..1, when it differs from the layer's (bridges); the layer's fan comes back after. */
   fan?: number;
+  /**
+   * Segment kinds (arc fitting): `arcs[i]` set means the segment that ends at `points[i]` is a circular
+   * arc rather than a straight line; for a closed step `arcs[points.length]` is the closing segment back
+   * to `points[0]`. Absent or unset entries are lines.
+   */
+  arcs?: Array<PlanArc | undefined>;
+}
+
+/** A circular arc segment: its centre (µm, bed space, not rounded) and its direction of turn. */
+export interface PlanArc {
+  cx: number;
+  cy: number;
+  /** True for clockwise (G2), false for counter-clockwise (G3), seen from above. */
+  clockwise: boolean;
 }
 
 /** A travel to `points[points.length-1]` through the given waypoints (combing). */

@@ -65,7 +65,18 @@ export function layerToSvg(layer: LayerPlan, opts: SvgOptions = {}): string {
       at = s.points[s.points.length - 1];
       continue;
     }
-    const d = s.points.map((p, i) => `${i ? 'L' : 'M'}${X(p)} ${Y(p)}`).join('') + (s.closed ? 'Z' : '');
+    // arc segments (arc fitting) as SVG arcs: the screen's Y is flipped, so counter-clockwise on the bed is
+    // the SVG's positive sweep; arcs turn at most half a turn, so never the large arc
+    const segment = (p: Pt, i: number, from: Pt): string => {
+      const arc = s.arcs?.[i];
+      if (!arc) return `L${X(p)} ${Y(p)}`;
+      const r = fmt(Math.hypot(from.x - arc.cx, from.y - arc.cy) / 1000);
+      return `A${r} ${r} 0 0 ${arc.clockwise ? 0 : 1} ${X(p)} ${Y(p)}`;
+    };
+    const n = s.points.length;
+    let d = n ? `M${X(s.points[0]!)} ${Y(s.points[0]!)}` : '';
+    for (let i = 1; i < n; i++) d += segment(s.points[i]!, i, s.points[i - 1]!);
+    if (s.closed && n > 0) d += s.arcs?.[n] ? segment(s.points[0]!, n, s.points[n - 1]!) : 'Z';
     out.push(`<path d="${d}" fill="none" stroke="${FEATURE_COLOURS[s.feature]}" stroke-width="${fmt(s.width)}" stroke-linejoin="round" stroke-linecap="round" stroke-opacity="0.85"/>`);
     at = s.closed ? s.points[0] : s.points[s.points.length - 1];
   }

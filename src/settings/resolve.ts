@@ -76,7 +76,7 @@ function describeRange(def: SettingDef): string {
     case 'enum':
       return `one of ${def.values.join(', ')}`;
     case 'string':
-      return `text of at most ${def.maxLength} characters`;
+      return def.pattern ? `text of at most ${def.maxLength} characters in the form the setting describes (${def.description})` : `text of at most ${def.maxLength} characters`;
   }
 }
 
@@ -100,7 +100,7 @@ export function validateValue(key: SettingKey, value: unknown, source = 'option'
     case 'enum':
       return typeof value === 'string' && def.values.includes(value) ? value : bad();
     case 'string':
-      return typeof value === 'string' && value.length <= def.maxLength ? value : bad();
+      return typeof value === 'string' && value.length <= def.maxLength && (!def.pattern || def.pattern.test(value)) ? value : bad();
   }
 }
 

@@ -222,5 +222,162 @@ export const FILAMENTS: readonly FilamentPreset[] = Object.freeze(
         fanSpeed: 30, firstLayerFanSpeed: 0, minLayerTime: 15, filamentDensity: 0.9,
       },
     },
+    // ── more materials (mid-range values of the makers' data sheets) ──
+    {
+      id: 'pla-matte',
+      name: 'Matte PLA',
+      aliases: ['matte', 'pla matte', 'matte pla'],
+      material: 'PLA',
+      settings: {
+        nozzleTemperature: 210, firstLayerNozzleTemperature: 215, bedTemperature: 60, firstLayerBedTemperature: 60,
+        fanSpeed: 100, firstLayerFanSpeed: 0, minLayerTime: 10, filamentDensity: 1.32,
+      },
+    },
+    {
+      id: 'pla-glow',
+      name: 'Glow-in-the-dark PLA',
+      aliases: ['glow', 'pla glow', 'glow pla'],
+      material: 'PLA',
+      // the phosphorescent pigment wears brass nozzles
+      abrasive: true,
+      settings: {
+        nozzleTemperature: 215, firstLayerNozzleTemperature: 220, bedTemperature: 60, firstLayerBedTemperature: 60,
+        fanSpeed: 100, firstLayerFanSpeed: 0, minLayerTime: 10, filamentDensity: 1.3,
+      },
+    },
+    {
+      id: 'pctg',
+      name: 'PCTG',
+      aliases: ['generic-pctg'],
+      material: 'PETG',
+      settings: {
+        nozzleTemperature: 250, firstLayerNozzleTemperature: 255, bedTemperature: 80, firstLayerBedTemperature: 80,
+        fanSpeed: 30, firstLayerFanSpeed: 0, minLayerTime: 15, filamentDensity: 1.23,
+        retractionSpeed: 35,
+      },
+    },
+    {
+      id: 'petg-hf',
+      name: 'High-Flow PETG',
+      aliases: ['petg hf', 'hf-petg', 'high flow petg'],
+      material: 'PETG',
+      settings: {
+        nozzleTemperature: 245, firstLayerNozzleTemperature: 250, bedTemperature: 75, firstLayerBedTemperature: 75,
+        fanSpeed: 60, firstLayerFanSpeed: 0, minLayerTime: 12, filamentDensity: 1.27,
+        retractionSpeed: 35,
+      },
+    },
+    {
+      id: 'cpe',
+      name: 'CPE (co-polyester)',
+      aliases: ['generic-cpe', 'co-polyester'],
+      material: 'PETG',
+      settings: {
+        nozzleTemperature: 250, firstLayerNozzleTemperature: 250, bedTemperature: 75, firstLayerBedTemperature: 75,
+        fanSpeed: 50, firstLayerFanSpeed: 0, minLayerTime: 15, filamentDensity: 1.27,
+        retractionSpeed: 35,
+      },
+    },
+    {
+      id: 'pet-cf',
+      name: 'PET-CF',
+      aliases: ['pet cf', 'carbon-fiber-pet'],
+      material: 'PET',
+      abrasive: true,
+      settings: {
+        nozzleTemperature: 270, firstLayerNozzleTemperature: 275, bedTemperature: 80, firstLayerBedTemperature: 80,
+        fanSpeed: 20, firstLayerFanSpeed: 0, minLayerTime: 15, filamentDensity: 1.29,
+      },
+    },
+    {
+      id: 'asa-cf',
+      name: 'ASA-CF',
+      aliases: ['asa cf', 'carbon-fiber-asa'],
+      material: 'ASA',
+      abrasive: true,
+      settings: {
+        nozzleTemperature: 260, firstLayerNozzleTemperature: 265, bedTemperature: 100, firstLayerBedTemperature: 100,
+        fanSpeed: 15, firstLayerFanSpeed: 0, minLayerTime: 20, filamentDensity: 1.12,
+      },
+    },
+    {
+      id: 'pc-abs',
+      name: 'PC-ABS',
+      aliases: ['pc abs', 'pc/abs'],
+      material: 'PC',
+      settings: {
+        nozzleTemperature: 260, firstLayerNozzleTemperature: 265, bedTemperature: 100, firstLayerBedTemperature: 100,
+        fanSpeed: 10, firstLayerFanSpeed: 0, minLayerTime: 20, filamentDensity: 1.15,
+      },
+    },
+    {
+      id: 'pc-cf',
+      name: 'PC-CF',
+      aliases: ['pc cf', 'carbon-fiber-pc'],
+      material: 'PC',
+      abrasive: true,
+      settings: {
+        nozzleTemperature: 275, firstLayerNozzleTemperature: 280, bedTemperature: 110, firstLayerBedTemperature: 110,
+        fanSpeed: 10, firstLayerFanSpeed: 0, minLayerTime: 20, filamentDensity: 1.25,
+      },
+    },
+    {
+      id: 'pa-gf',
+      name: 'PA-GF (glass fibre nylon)',
+      aliases: ['pa gf', 'nylon-gf', 'pa6-gf', 'pa12-gf'],
+      material: 'PA',
+      abrasive: true,
+      settings: {
+        nozzleTemperature: 275, firstLayerNozzleTemperature: 280, bedTemperature: 90, firstLayerBedTemperature: 90,
+        fanSpeed: 0, firstLayerFanSpeed: 0, minLayerTime: 15, filamentDensity: 1.34,
+      },
+    },
+    {
+      id: 'tpu-85a',
+      name: 'TPU 85A',
+      aliases: ['tpu85a', 'soft tpu'],
+      material: 'TPU',
+      settings: {
+        nozzleTemperature: 225, firstLayerNozzleTemperature: 230, bedTemperature: 45, firstLayerBedTemperature: 45,
+        fanSpeed: 60, firstLayerFanSpeed: 0, minLayerTime: 10, filamentDensity: 1.19,
+        // softer still than 95A: very short, slow retraction and slow printing
+        retractionDistance: 0.5, retractionSpeed: 15,
+        perimeterSpeed: 15, innerWallSpeed: 20, skinSpeed: 20, infillSpeed: 20, firstLayerSpeed: 12,
+        minPrintSpeed: 5,
+      },
+    },
+    {
+      id: 'bvoh',
+      name: 'BVOH',
+      aliases: ['butenediol vinyl alcohol'],
+      material: 'BVOH',
+      settings: {
+        // water-soluble support, dissolves faster than PVA; keep dry
+        nozzleTemperature: 210, firstLayerNozzleTemperature: 215, bedTemperature: 60, firstLayerBedTemperature: 60,
+        fanSpeed: 100, firstLayerFanSpeed: 0, minLayerTime: 10, filamentDensity: 1.14,
+      },
+    },
+    {
+      id: 'pvb',
+      name: 'PVB',
+      aliases: ['polyvinyl butyral', 'polysmooth'],
+      material: 'PVB',
+      settings: {
+        // smoothable with isopropyl alcohol
+        nozzleTemperature: 210, firstLayerNozzleTemperature: 215, bedTemperature: 70, firstLayerBedTemperature: 70,
+        fanSpeed: 100, firstLayerFanSpeed: 0, minLayerTime: 10, filamentDensity: 1.1,
+      },
+    },
+    {
+      id: 'peek',
+      name: 'PEEK',
+      aliases: ['polyether ether ketone'],
+      material: 'PEEK',
+      settings: {
+        // needs an all-metal hot end above 400 °C, a 120 °C+ bed and a heated chamber
+        nozzleTemperature: 400, firstLayerNozzleTemperature: 400, bedTemperature: 130, firstLayerBedTemperature: 130,
+        fanSpeed: 0, firstLayerFanSpeed: 0, minLayerTime: 20, filamentDensity: 1.3,
+      },
+    },
   ] satisfies Draft[]).map(freezePreset),
 );

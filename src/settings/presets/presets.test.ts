@@ -145,12 +145,12 @@ test('filaments carry temperatures, cooling and density; only flexible ones set 
   assert.ok(tpu.settings.retractionDistance! <= 2 && tpu.settings.retractionSpeed! <= 30, 'TPU retracts short and slow');
   assert.ok(findFilament('petg')!.settings.retractionSpeed! < (SCHEMA.retractionSpeed.default as number), 'PETG retracts slower');
   assert.ok(findFilament('abs')!.settings.bedTemperature! >= 90);
-  for (const id of ['pla-cf', 'petg-cf', 'pa-cf']) assert.equal(FILAMENT_PRESETS[id]?.abrasive, true, id);
+  for (const id of ['pla-cf', 'petg-cf', 'pa-cf', 'pet-cf', 'asa-cf', 'pc-cf', 'pa-gf', 'pla-glow']) assert.equal(FILAMENT_PRESETS[id]?.abrasive, true, id);
 });
 
 test('ids are unique, presets are frozen, and there are enough of them', () => {
-  assert.ok(PRINTERS.length >= 20, `${PRINTERS.length} printers`);
-  assert.ok(FILAMENTS.length >= 15, `${FILAMENTS.length} filaments`);
+  assert.ok(PRINTERS.length >= 40, `${PRINTERS.length} printers`);
+  assert.ok(FILAMENTS.length >= 30, `${FILAMENTS.length} filaments`);
   assert.equal(new Set(PRINTERS.map((p) => p.id)).size, PRINTERS.length);
   assert.equal(new Set(FILAMENTS.map((p) => p.id)).size, FILAMENTS.length);
   for (const p of ALL) {
@@ -208,4 +208,26 @@ test('defaults and listPresets', () => {
   // A fresh copy each call: callers may not change the tables through it.
   list.printers[0]!.aliases.push('x');
   assert.ok(!listPresets().printers[0]!.aliases.includes('x'));
+});
+
+test('host features: thumbnails the printers show, arcs where the firmware runs them, every table entry a printer', async () => {
+  const { PRINTER_HOST_FEATURES } = await import('./printer-host-features.js');
+  const { parseThumbnailSpecs } = await import('../../thumbnail/spec.js');
+  for (const id of Object.keys(PRINTER_HOST_FEATURES)) assert.ok(PRINTER_PRESETS[id], `${id} is a printer`);
+  for (const p of PRINTERS) if (p.settings.thumbnails) assert.ok(parseThumbnailSpecs(p.settings.thumbnails).length > 0, p.id);
+  assert.match(PRINTER_PRESETS['prusa-mk4']!.settings.thumbnails!, /16x16\/QOI/);
+  assert.equal(PRINTER_PRESETS['prusa-mk4']!.settings.arcFitting, true);
+  assert.equal(PRINTER_PRESETS['creality-k1']!.settings.thumbnails, '96x96/PNG,300x300/PNG');
+  assert.equal(PRINTER_PRESETS['bambu-lab-x1c']!.settings.arcFitting, true);
+  assert.notEqual(PRINTER_PRESETS['creality-ender-3']!.settings.arcFitting, true, 'stock Ender-3 Marlin has no ARC_SUPPORT');
+  assert.equal(PRINTER_PRESETS['prusa-i3-mk3s']!.settings.machineLimits, 'write');
+  assert.equal(PRINTER_PRESETS['creality-ender-3']!.settings.maxAccelerationX, 500);
+  // the preset's own settings win over the table's
+  assert.equal(PRINTER_PRESETS['prusa-mini']!.settings.retractionDistance, 3.2);
+});
+
+test('a slice with every printer preset resolves (limits, thumbnails and templates fit together)', async () => {
+  const { resolveConfig } = await import('../resolve.js');
+  for (const p of PRINTERS) for (const f of ['pla', 'petg']) assert.doesNotThrow(() => resolveConfig({ printer: p.id, filament: f }), `${p.id} + ${f}`);
+  for (const f of FILAMENTS) assert.doesNotThrow(() => resolveConfig({ filament: f.id }), f.id);
 });

@@ -1,0 +1,267 @@
+/**
+ * Cura profile values (`[values]` of `.cfg` / `.inst.cfg`) mapped onto Strata settings.
+ *
+ * A Cura value may be a formula (`=speed_print / 2`). Arithmetic over numbers and other keys is
+ * evaluated (+ − × ÷, parentheses, min/max/round, math.ceil/floor); anything else (conditions, extruder
+ * lookups) is not, and the key is reported. A key the profile does not set falls back as Cura's own
+ * definitions do when its source is in the profile: wall speeds from `speed_wall`, which comes from
+ * `speed_print`; widths from `line_width`; top and bottom thickness from `top_bottom_thickness`; the
+ * first-layer temperatures from the others.
+ *
+ * Units: Cura's extra prime after a retraction is a volume (mm³), turned into filament length.
+ */
+import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
+import type { Settings } from '../schema.js';
+import { SCHEMA } from '../schema.js';
+import type { ImportContext } from './context.js';
+import { translateTemplate } from './templates.js';
+import { bool, text } from './values.js';
+
+const INFILL: Readonly<Record<string, PatternId>> = {
+  grid: 'grid', lines: 'lines', zigzag: 'lines', triangles: 'triangles', trihexagon: 'triangles', cubic: 'cubic', cubicsubdiv: 'cubic',
+  tetrahedral: 'cubic', quarter_cubic: 'cubic', concentric: 'concentric', gyroid: 'gyroid', lightning: 'lightning', cross: 'grid', cross_3d: 'grid',
+};
+const SEAM: Readonly<Record<string, Settings['seamPosition']>> = { back: 'rear', shortest: 'nearest', random: 'random', sharpest_corner: 'aligned' };
+const FLAVOR: Readonly<Record<string, Settings['gcodeFlavor']>> = {
+  'RepRap (Marlin/Sprinter)': 'marlin', 'RepRap (Volumetric)': 'marlin', 'RepRap (RepRap)': 'reprap', Repetier: 'marlin',
+};
+
+/** Keys a Cura key falls back to (Cura's `value` formulas that are plain copies or scalings). */
+const FALLBACK: Readonly<Record<string, { from: string; scale?: number }>> = {
+  speed_infill: { from: 'speed_print' },
+  speed_wall: { from: 'speed_print', scale: 0.5 },
+  speed_wall_0: { from: 'speed_wall' },
+  speed_wall_x: { from: 'speed_wall', scale: 2 },
+  speed_topbottom: { from: 'speed_print', scale: 0.5 },
+  speed_layer_0: { from: 'speed_print', scale: 0.5 },
+  speed_print_layer_0: { from: 'speed_layer_0' },
+  wall_line_width: { from: 'line_width' },
+  wall_line_width_0: { from: 'wall_line_width' },
+  top_thickness: { from: 'top_bottom_thickness' },
+  bottom_thickness: { from: 'top_bottom_thickness' },
+  material_print_temperature: { from: 'default_material_print_temperature' },
+  material_print_temperature_layer_0: { from: 'material_print_temperature' },
+  material_bed_temperature: { from: 'default_material_bed_temperature' },
+  material_bed_temperature_layer_0: { from: 'material_bed_temperature' },
+  retraction_retract_speed: { from: 'retraction_speed' },
+  cool_fan_speed_min: { from: 'cool_fan_speed' },
+};
+
+/** A tiny evaluator for Cura's arithmetic formulas; identifiers resolve through `lookup`. */
+function evaluate(expr: string, lookup: (name: string) => number | undefined): number | undefined {
+  const tokens = expr.match(/\d+\.?\d*(?:e[+-]?\d+)?|\.\d+|[A-Za-z_][A-Za-z0-9_.]*|\*\*|[-+*/(),]/g);
+  if (!tokens || tokens.join('') !== expr.replace(/\s+/g, '')) return undefined;
+  let i = 0;
+  const peek = () => tokens[i];
+  const expression = (): number | undefined => {
+    let v = term();
+    while (v !== undefined && (peek() === '+' || peek() === '-')) {
+      const op = tokens[i++];
+      const r = term();
+      v = r === undefined ? undefined : op === '+' ? v + r : v - r;
+    }
+    return v;
+  };
+  const term = (): number | undefined => {
+    let v = factor();
+    while (v !== undefined && (peek() === '*' || peek() === '/')) {
+      const op = tokens[i++];
+      const r = factor();
+      v = r === undefined ? undefined : op === '*' ? v * r : r === 0 ? undefined : v / r;
+    }
+    return v;
+  };
+  const FUNCTIONS: Record<string, (...a: number[]) => number> = {
+    min: Math.min, max: Math.max, round: (x, d = 0) => Math.round(x * 10 ** d) / 10 ** d, 'math.ceil': Math.ceil, 'math.floor': Math.floor, abs: Math.abs,
+  };
+  const factor = (): number | undefined => {
+    const t = tokens[i++];
+    if (t === undefined) return undefined;
+    if (t === '-') {
+      const v = factor();
+      return v === undefined ? undefined : -v;
+    }
+    if (t === '(') {
+      const v = expression();
+      return tokens[i++] === ')' ? v : undefined;
+    }
+    if (/^[\d.]/.test(t)) return Number(t);
+    if (FUNCTIONS[t] && peek() === '(') {
+      i++;
+      const args: number[] = [];
+      for (;;) {
+        const a = expression();
+        if (a === undefined) return undefined;
+        args.push(a);
+        const sep = tokens[i++];
+        if (sep === ')') break;
+        if (sep !== ',') return undefined;
+      }
+      return FUNCTIONS[t]!(...args);
+    }
+    if (/^[A-Za-z_]/.test(t)) return lookup(t);
+    return undefined;
+  };
+  const v = expression();
+  return i === tokens.length && v !== undefined && Number.isFinite(v) ? v : undefined;
+}
+
+/** Map the Cura keys of `c` onto Strata settings. */
+export function mapCuraKeys(c: ImportContext): void {
+  const resolving = new Set<string>();
+  /** The number a Cura key stands for: its value, its formula, or its fallback. */
+  const value = (key: string): number | undefined => {
+    if (resolving.has(key)) return undefined;
+    resolving.add(key);
+    try {
+      const raw = c.get(key);
+      if (raw !== undefined) {
+        const v = raw.trim();
+        if (v.startsWith('=')) return evaluate(v.slice(1).trim(), value);
+        if (/^(true|false)$/i.test(v)) return v.toLowerCase() === 'true' ? 1 : 0;
+        const n = Number(v.replace(/%$/, ''));
+        if (Number.isFinite(n) && v !== '') return n;
+        const list = /^\[\s*(-?[\d.]+)/.exec(v); // e.g. infill_angles = [45, 135]
+        return list ? Number(list[1]) : undefined;
+      }
+      const fb = FALLBACK[key];
+      if (fb) {
+        const v = value(fb.from);
+        return v === undefined ? undefined : v * (fb.scale ?? 1);
+      }
+      return undefined;
+    } finally {
+      resolving.delete(key);
+    }
+  };
+  const str = (key: string) => {
+    const raw = c.get(key)?.trim();
+    return raw === undefined || raw.startsWith('=') ? undefined : raw;
+  };
+  /** Set `setting` from the first of `keys` that has a value (given or by fallback). */
+  const take = <K extends keyof Settings>(setting: K, keys: string[], convert: (v: number) => Settings[K] = (v) => v as Settings[K]) => {
+    for (const key of keys) {
+      const present = c.has(key);
+      const v = value(key);
+      if (v !== undefined) return c.set(setting, convert(v), key);
+      if (present) return c.reject(key, 'a formula Strata cannot evaluate');
+    }
+  };
+  const round = (v: number, d = 4) => Math.round(v * 10 ** d) / 10 ** d;
+
+  // machine
+  take('buildPlateWidth', ['machine_width']);
+  take('buildPlateLength', ['machine_depth']);
+  take('buildVolumeHeight', ['machine_height']);
+  take('nozzleDiameter', ['machine_nozzle_size']);
+  take('filamentDiameter', ['material_diameter']);
+  for (const [key, setting] of [['machine_center_is_zero', 'originAtCenter'], ['machine_heated_bed', 'heatedBed'], ['machine_firmware_retract', 'firmwareRetraction']] as const) {
+    const v = str(key);
+    if (v !== undefined) c.set(setting, bool(v), key, 'not True or False');
+  }
+  const rel = str('relative_extrusion');
+  if (rel !== undefined) c.set('extruderMode', bool(rel) ? 'relative' : 'absolute', 'relative_extrusion');
+  const flavor = str('machine_gcode_flavor');
+  if (flavor !== undefined) c.set('gcodeFlavor', FLAVOR[flavor], 'machine_gcode_flavor', `G-code flavour "${flavor}" has no Strata equivalent`);
+  for (const [key, setting] of [['machine_start_gcode', 'startGcode'], ['machine_end_gcode', 'endGcode']] as const) {
+    const raw = c.get(key);
+    if (raw === undefined) continue;
+    const t = translateTemplate(text(raw.replace(/^"""|"""$/g, '')) ?? '');
+    if ('text' in t) c.set(setting, t.text, key);
+    else c.reject(key, `uses placeholders Strata cannot fill (${t.unknown.slice(0, 6).join(', ')}); the preset's is kept`);
+  }
+  take('maxSpeedX', ['machine_max_feedrate_x']);
+  take('maxSpeedY', ['machine_max_feedrate_y']);
+  take('maxSpeedZ', ['machine_max_feedrate_z']);
+  take('maxSpeedE', ['machine_max_feedrate_e']);
+  take('maxAccelerationX', ['machine_max_acceleration_x']);
+  take('maxAccelerationY', ['machine_max_acceleration_y']);
+  take('maxAccelerationZ', ['machine_max_acceleration_z']);
+  take('maxAccelerationE', ['machine_max_acceleration_e']);
+  take('cornerVelocity', ['machine_max_jerk_xy']);
+  const accelOn = str('acceleration_enabled');
+  if (accelOn !== undefined ? bool(accelOn) : c.has('acceleration_print')) take('acceleration', ['acceleration_print']);
+  else take('acceleration', ['machine_acceleration']);
+
+  // layers, lines, walls, skin
+  take('layerHeight', ['layer_height']);
+  take('firstLayerHeight', ['layer_height_0']);
+  const layerHeight = c.settings.layerHeight ?? (SCHEMA.layerHeight.default as number);
+  take('lineWidth', ['line_width', 'wall_line_width', 'wall_line_width_0']);
+  const factor = value('initial_layer_line_width_factor');
+  if (factor !== undefined) {
+    const w = c.settings.lineWidth ?? c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number);
+    c.set('firstLayerLineWidth', round((w * factor) / 100), 'initial_layer_line_width_factor');
+  }
+  if (c.has('wall_line_count')) take('wallCount', ['wall_line_count'], (v) => Math.round(v));
+  else take('shellWallThickness', ['wall_thickness']);
+  for (const [side, setting] of [['top', 'topSkinThickness'], ['bottom', 'bottomSkinThickness']] as const) {
+    if (c.has(`${side}_layers`)) take(setting, [`${side}_layers`], (n) => round(n * layerHeight));
+    else take(setting, [`${side}_thickness`]);
+  }
+  const outerFirst = str('outer_inset_first');
+  if (outerFirst !== undefined) c.set('wallOrder', bool(outerFirst) ? 'outer-first' : 'inner-first', 'outer_inset_first');
+  const seam = str('z_seam_type');
+  if (seam !== undefined) c.set('seamPosition', SEAM[seam], 'z_seam_type', `seam "${seam}" has no Strata equivalent`);
+  take('skinOverlap', ['skin_overlap']);
+
+  // infill
+  take('infillDensity', ['infill_sparse_density']);
+  const pattern = str('infill_pattern');
+  if (pattern !== undefined) {
+    const id = INFILL[pattern] ?? ((PATTERN_IDS as readonly string[]).includes(pattern) ? (pattern as PatternId) : undefined);
+    c.set('infillPattern', id, 'infill_pattern', `pattern "${pattern}" has no Strata equivalent`);
+  }
+  take('infillAngle', ['infill_angles']);
+  take('infillOverlap', ['infill_overlap']);
+
+  // speeds
+  take('perimeterSpeed', ['speed_wall_0']);
+  take('innerWallSpeed', ['speed_wall_x']);
+  take('skinSpeed', ['speed_topbottom']);
+  take('infillSpeed', ['speed_infill']);
+  take('firstLayerSpeed', ['speed_print_layer_0', 'speed_layer_0']);
+  take('travelSpeed', ['speed_travel']);
+  take('firstLayerTravelSpeed', ['speed_travel_layer_0']);
+
+  // temperatures and cooling
+  take('nozzleTemperature', ['material_print_temperature']);
+  if (c.has('material_print_temperature_layer_0')) take('firstLayerNozzleTemperature', ['material_print_temperature_layer_0']);
+  else if (c.has('material_initial_print_temperature')) take('firstLayerNozzleTemperature', ['material_initial_print_temperature']);
+  take('bedTemperature', ['material_bed_temperature']);
+  if (c.has('material_bed_temperature_layer_0')) take('firstLayerBedTemperature', ['material_bed_temperature_layer_0']);
+  const fanOn = str('cool_fan_enabled');
+  if (fanOn !== undefined && bool(fanOn) === false) c.set('fanSpeed', 0, 'cool_fan_enabled');
+  else take('fanSpeed', ['cool_fan_speed_min', 'cool_fan_speed']);
+  take('firstLayerFanSpeed', ['cool_fan_speed_0']);
+  take('minLayerTime', ['cool_min_layer_time']);
+  take('minPrintSpeed', ['cool_min_speed']);
+  take('flowRate', ['material_flow']);
+
+  // retraction
+  const retract = str('retraction_enable');
+  if (retract !== undefined) c.set('retractionEnabled', bool(retract), 'retraction_enable', 'not True or False');
+  take('retractionDistance', ['retraction_amount']);
+  take('retractionSpeed', ['retraction_retract_speed', 'retraction_speed']);
+  const primeVolume = value('retraction_extra_prime_amount');
+  if (primeVolume !== undefined) {
+    const d = c.settings.filamentDiameter ?? (SCHEMA.filamentDiameter.default as number);
+    c.set('retractionExtraPrime', round(primeVolume / (Math.PI * (d / 2) ** 2)), 'retraction_extra_prime_amount');
+  }
+  take('retractionMinTravel', ['retraction_min_travel']);
+  const layerChange = str('retract_at_layer_change');
+  if (layerChange !== undefined) c.set('retractOnLayerChange', bool(layerChange), 'retract_at_layer_change', 'not True or False');
+  const hop = str('retraction_hop_enabled');
+  if (hop !== undefined && bool(hop) === false) c.set('zHop', 0, 'retraction_hop_enabled');
+  else if (hop !== undefined || c.has('retraction_hop')) take('zHop', ['retraction_hop']);
+
+  // adhesion
+  const adhesion = str('adhesion_type');
+  if (adhesion !== undefined) {
+    const map: Record<string, Settings['adhesionType']> = { skirt: 'skirt', brim: 'brim', none: 'none' };
+    c.set('adhesionType', map[adhesion], 'adhesion_type', `adhesion "${adhesion}" has no Strata equivalent (skirt, brim, none)`);
+  }
+  take('skirtLoops', ['skirt_line_count'], (v) => Math.round(v));
+  take('skirtDistance', ['skirt_gap']);
+  take('brimWidth', ['brim_width']);
+}

@@ -1,0 +1,419 @@
+/**
+ * PrusaSlicer, SuperSlicer and OrcaSlicer settings (the Slic3r family) mapped onto Strata's. The three
+ * share most keys; OrcaSlicer (from Bambu Studio) renamed many, and both names are read.
+ *
+ * Conversions, as those slicers define their values:
+ * - Extrusion widths may be percentages: PrusaSlicer computes them over the layer height (the first
+ *   layer's over the first layer height), SuperSlicer and OrcaSlicer over the nozzle diameter. A
+ *   PrusaSlicer percentage that gives no usable width over the layer height (under 60 % of the nozzle)
+ *   is read over the nozzle, as the files of its SuperSlicer-derived forks mean it. 0 means automatic.
+ * - PrusaSlicer speeds may be percentages: the external perimeter of the perimeter speed, solid infill
+ *   of the infill speed, top solid infill of the solid infill speed, the first layer of the perimeter
+ *   speed; OrcaSlicer's first-layer travel of the travel speed.
+ * - Top and bottom skin: a layer count and a minimum thickness; Strata takes the thicker of the two.
+ * - Bed: the outline's extent; an outline centred on the origin is a centre-origin (delta) bed.
+ * - Temperatures, fan and retraction lists hold one value per extruder: the first is taken. OrcaSlicer's
+ *   bed temperature depends on the plate type (`curr_bed_type`); without one the textured PEI plate's.
+ * - Fan: PrusaSlicer runs the fan at `min_fan_speed` on every layer when `fan_always_on`, otherwise only
+ *   for short layers (Strata: 0); OrcaSlicer at `fan_min_speed` when it keeps the fan on
+ *   (`reduce_fan_stop_start_freq`), else at `fan_max_speed` for the layers it cools.
+ * - Pressure advance: OrcaSlicer's `pressure_advance` when enabled; PrusaSlicer's filament start G-code
+ *   `M900 K…` or `SET_PRESSURE_ADVANCE ADVANCE=…`.
+ */
+import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
+import type { Settings } from '../schema.js';
+import { SCHEMA } from '../schema.js';
+import type { ImportContext } from './context.js';
+import { translateTemplate } from './templates.js';
+import { bool, first, num, numOrPercent, percent, points, text } from './values.js';
+
+export type Slic3rFlavor = 'prusaslicer' | 'superslicer' | 'orcaslicer';
+
+/** Keys that describe the profile rather than set anything (never reported as unused). */
+export const SLIC3R_METADATA = new Set([
+  'inherits', 'compatible_printers', 'compatible_printers_condition', 'compatible_prints', 'compatible_prints_condition',
+  'print_settings_id', 'filament_settings_id', 'printer_settings_id', 'printer_model', 'printer_variant', 'printer_vendor',
+  'printer_technology', 'name', 'from', 'type', 'setting_id', 'instantiation', 'version', 'is_custom_defined', 'renamed_from',
+  'alias', 'notes', 'printer_notes', 'filament_notes', 'default_print_profile', 'default_filament_profile', 'filament_vendor',
+  'filament_type', 'filament_colour', 'extruder_colour', 'filament_settings_id', 'print_host', 'printhost_apikey', 'printhost_cafile',
+  'host_type', 'preset_name', 'preset_names', 'upward_compatible_machine', 'printer_structure', 'bed_custom_texture', 'bed_custom_model',
+  'thumbnails_with_bed', 'thumbnails_color', 'thumbnails_custom_color', 'wipe_tower_x', 'wipe_tower_y', 'post_process', 'threads',
+]);
+
+const INFILL: Readonly<Record<string, PatternId>> = {
+  rectilinear: 'lines', alignedrectilinear: 'lines', 'zig-zag': 'lines', line: 'lines', monotonic: 'lines', monotonicline: 'lines',
+  grid: 'grid', triangles: 'triangles', stars: 'triangles', 'tri-hexagon': 'triangles', cubic: 'cubic', adaptivecubic: 'cubic',
+  supportcubic: 'cubic', honeycomb: 'hexagons', '3dhoneycomb': 'hexagons', gyroid: 'gyroid', concentric: 'concentric',
+  archimedeanchords: 'spiral', octagramspiral: 'spiral', lightning: 'lightning',
+};
+const SEAM: Readonly<Record<string, Settings['seamPosition']>> = { aligned: 'aligned', nearest: 'nearest', rear: 'rear', back: 'rear', random: 'random' };
+const FLAVOR: Readonly<Record<string, Settings['gcodeFlavor']>> = {
+  marlin: 'marlin', marlin2: 'marlin', marlinlegacy: 'marlin', marlinfirmware: 'marlin', reprap: 'marlin', sprinter: 'marlin', smoothie: 'marlin',
+  repetier: 'marlin', klipper: 'klipper', reprapfirmware: 'reprap',
+};
+/** OrcaSlicer plate type → its bed temperature keys. */
+const PLATES: Readonly<Record<string, string>> = {
+  'Cool Plate': 'cool_plate_temp', 'Engineering Plate': 'eng_plate_temp', 'High Temp Plate': 'hot_plate_temp',
+  'Textured PEI Plate': 'textured_plate_temp', 'Textured Cool Plate': 'textured_cool_plate_temp', 'SuperTack Plate': 'supertack_plate_temp',
+};
+
+const round = (v: number, digits = 4) => Math.round(v * 10 ** digits) / 10 ** digits;
+
+/** Map the Slic3r-family keys of `c` onto Strata settings. */
+export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
+  const nozzle = num(c.get('nozzle_diameter')) ?? (SCHEMA.nozzleDiameter.default as number);
+  const layer = num(c.get('layer_height'));
+  const layerHeight = layer ?? (SCHEMA.layerHeight.default as number);
+  machine(c, nozzle);
+  if (layer !== undefined) c.set('layerHeight', layer, 'layer_height');
+  const fl = c.getAny('first_layer_height', 'initial_layer_print_height');
+  if (fl) {
+    const v = numOrPercent(fl.value);
+    c.set('firstLayerHeight', v && round(v.percent ? (layerHeight * v.value) / 100 : v.value), fl.key, 'not a height');
+  }
+  const firstLayerHeight = c.settings.firstLayerHeight ?? layerHeight;
+  widths(c, flavor, nozzle, layerHeight, firstLayerHeight);
+  walls(c, layerHeight);
+  infill(c);
+  speeds(c);
+  temperatures(c);
+  cooling(c);
+  retraction(c);
+  adhesion(c);
+  output(c);
+}
+
+function machine(c: ImportContext, nozzle: number): void {
+  if (c.get('nozzle_diameter') !== undefined) c.set('nozzleDiameter', nozzle, 'nozzle_diameter');
+  const fd = c.getAny('filament_diameter');
+  if (fd) c.set('filamentDiameter', num(fd.value), fd.key, 'not a diameter');
+  const bed = c.getAny('bed_shape', 'printable_area');
+  if (bed) {
+    const pts = points(bed.value);
+    if (!pts) c.reject(bed.key, 'not a bed outline (XxY points)');
+    else {
+      const xs = pts.map((p) => p[0]), ys = pts.map((p) => p[1]);
+      const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
+      c.set('buildPlateWidth', round(x1 - x0, 3), bed.key);
+      c.set('buildPlateLength', round(y1 - y0, 3), bed.key);
+      c.set('originAtCenter', Math.abs(x0 + x1) < 1 && Math.abs(y0 + y1) < 1 && x0 < 0, bed.key);
+    }
+  }
+  const h = c.getAny('max_print_height', 'printable_height');
+  if (h) c.set('buildVolumeHeight', num(h.value), h.key, 'not a height');
+  const fl = c.getAny('gcode_flavor');
+  if (fl) {
+    const v = first(fl.value)?.toLowerCase() ?? '';
+    c.set('gcodeFlavor', FLAVOR[v], fl.key, `G-code flavour "${v}" has no Strata equivalent (marlin, klipper, reprap)`);
+  }
+  const rel = c.getAny('use_relative_e_distances');
+  if (rel) c.set('extruderMode', bool(rel.value) === undefined ? undefined : bool(rel.value) ? 'relative' : 'absolute', rel.key, 'not 0 or 1');
+  const fw = c.getAny('use_firmware_retraction');
+  if (fw) c.set('firmwareRetraction', bool(fw.value), fw.key, 'not 0 or 1');
+  for (const [keys, setting] of [
+    [['start_gcode', 'machine_start_gcode'], 'startGcode'],
+    [['end_gcode', 'machine_end_gcode'], 'endGcode'],
+  ] as const) {
+    const t = c.getAny(...keys);
+    if (!t) continue;
+    const translated = translateTemplate(text(t.value) ?? '');
+    if ('text' in translated) c.set(setting, translated.text, t.key);
+    else c.reject(t.key, `uses placeholders Strata cannot fill (${translated.unknown.slice(0, 6).join(', ')}); the preset's is kept`);
+  }
+  limits(c);
+}
+
+function limits(c: ImportContext): void {
+  const axes = [
+    ['machine_max_feedrate_x', 'machine_max_speed_x', 'maxSpeedX'],
+    ['machine_max_feedrate_y', 'machine_max_speed_y', 'maxSpeedY'],
+    ['machine_max_feedrate_z', 'machine_max_speed_z', 'maxSpeedZ'],
+    ['machine_max_feedrate_e', 'machine_max_speed_e', 'maxSpeedE'],
+    ['machine_max_acceleration_x', '', 'maxAccelerationX'],
+    ['machine_max_acceleration_y', '', 'maxAccelerationY'],
+    ['machine_max_acceleration_z', '', 'maxAccelerationZ'],
+    ['machine_max_acceleration_e', '', 'maxAccelerationE'],
+    ['machine_max_acceleration_travel', '', 'travelAcceleration'],
+    ['machine_max_acceleration_retracting', '', 'retractAcceleration'],
+  ] as const;
+  for (const [prusa, orca, setting] of axes) {
+    const v = c.getAny(prusa, ...(orca ? [orca] : []));
+    if (v) c.set(setting, num(v.value), v.key, 'not a number');
+  }
+  const sx = c.settings.maxSpeedX, sy = c.settings.maxSpeedY;
+  if (sx !== undefined && sx !== null && sy !== undefined && sy !== null) c.set('maxSpeed', Math.min(sx, sy), 'machine_max_feedrate_x');
+  const jerk = c.getAny('machine_max_jerk_x');
+  if (jerk) c.set('cornerVelocity', num(jerk.value), jerk.key, 'not a number');
+  c.get('machine_max_jerk_y');
+  const usage = c.getAny('machine_limits_usage');
+  if (usage) {
+    const v = first(usage.value);
+    const map: Record<string, Settings['machineLimits']> = { emit_to_gcode: 'write', time_estimate_only: 'estimate', ignore: 'ignore' };
+    c.set('machineLimits', v === undefined ? undefined : map[v], usage.key, 'not emit_to_gcode, time_estimate_only or ignore');
+  }
+  const emit = c.getAny('emit_machine_limits_to_gcode');
+  if (emit) c.set('machineLimits', bool(emit.value) ? 'write' : 'estimate', emit.key);
+  // print acceleration: the profile's default, else the firmware's extruding limit
+  const def = c.getAny('default_acceleration');
+  const defValue = def ? num(def.value) : undefined;
+  if (def && defValue !== undefined && defValue > 0) c.set('acceleration', defValue, def.key);
+  else {
+    const ext = c.getAny('machine_max_acceleration_extruding');
+    if (ext) c.set('acceleration', num(ext.value), ext.key, 'not a number');
+  }
+}
+
+/** An extrusion width in mm from a Slic3r-family value (0 or a missing key: automatic, undefined). */
+function width(raw: string | undefined, flavor: Slic3rFlavor, nozzle: number, height: number): number | undefined {
+  const v = numOrPercent(raw);
+  if (!v || v.value <= 0) return undefined;
+  if (!v.percent) return v.value;
+  if (flavor === 'prusaslicer') {
+    const overHeight = (height * v.value) / 100;
+    if (overHeight >= 0.6 * nozzle) return round(overHeight);
+  }
+  return round((nozzle * v.value) / 100);
+}
+
+function widths(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHeight: number, firstLayerHeight: number): void {
+  const main = c.getAny('extrusion_width', 'line_width');
+  let w = main ? width(main.value, flavor, nozzle, layerHeight) : undefined;
+  let from = main?.key;
+  if (w === undefined) {
+    const other = c.getAny('perimeter_extrusion_width', 'inner_wall_line_width', 'external_perimeter_extrusion_width', 'outer_wall_line_width');
+    if (other) {
+      w = width(other.value, flavor, nozzle, layerHeight);
+      from = other.key;
+    }
+  }
+  if (w !== undefined) c.set('lineWidth', w, from!);
+  const fl = c.getAny('first_layer_extrusion_width', 'initial_layer_line_width');
+  if (fl) {
+    const v = width(fl.value, flavor, nozzle, firstLayerHeight);
+    if (v !== undefined) c.set('firstLayerLineWidth', v, fl.key);
+  }
+}
+
+function walls(c: ImportContext, layerHeight: number): void {
+  const p = c.getAny('perimeters', 'wall_loops');
+  if (p) c.set('wallCount', num(p.value), p.key, 'not a count');
+  for (const [side, countKeys, thickKeys, setting] of [
+    ['top', ['top_solid_layers', 'top_shell_layers'], ['top_solid_min_thickness', 'top_shell_thickness'], 'topSkinThickness'],
+    ['bottom', ['bottom_solid_layers', 'bottom_shell_layers'], ['bottom_solid_min_thickness', 'bottom_shell_thickness'], 'bottomSkinThickness'],
+  ] as const) {
+    const n = c.getAny(...countKeys);
+    const t = c.getAny(...thickKeys);
+    const layers = n ? num(n.value) : undefined;
+    const minimum = t ? num(t.value) ?? 0 : 0;
+    if (layers === undefined && !t) continue;
+    c.set(setting, round(Math.max((layers ?? 0) * layerHeight, minimum), 4), `${n?.key ?? t!.key}${n && t ? ' + ' + t.key : ''}`, `no ${side} layer count`);
+  }
+  const order = c.getAny('external_perimeters_first');
+  if (order) c.set('wallOrder', bool(order.value) ? 'outer-first' : 'inner-first', order.key);
+  const seq = c.getAny('wall_sequence', 'wall_infill_order');
+  if (seq) {
+    const v = first(seq.value) ?? '';
+    c.set('wallOrder', v.startsWith('outer') ? 'outer-first' : v.startsWith('inner') ? 'inner-first' : undefined, seq.key, `"${v}" has no Strata equivalent`);
+  }
+  const seam = c.getAny('seam_position');
+  if (seam) {
+    const v = first(seam.value)?.toLowerCase() ?? '';
+    c.set('seamPosition', SEAM[v], seam.key, `seam "${v}" has no Strata equivalent`);
+  }
+}
+
+function infill(c: ImportContext): void {
+  const d = c.getAny('fill_density', 'sparse_infill_density');
+  if (d) c.set('infillDensity', percent(d.value, true), d.key, 'not a percentage');
+  const p = c.getAny('fill_pattern', 'sparse_infill_pattern');
+  if (p) {
+    const v = first(p.value)?.toLowerCase() ?? '';
+    const id = INFILL[v] ?? ((PATTERN_IDS as readonly string[]).includes(v) ? (v as PatternId) : undefined);
+    c.set('infillPattern', id, p.key, `pattern "${v}" has no Strata equivalent (${PATTERN_IDS.join(', ')})`);
+  }
+  const a = c.getAny('fill_angle', 'infill_direction');
+  if (a) c.set('infillAngle', num(a.value), a.key, 'not an angle');
+  const o = c.getAny('infill_overlap', 'infill_wall_overlap');
+  if (o) {
+    const v = numOrPercent(o.value);
+    const w = c.settings.lineWidth ?? null;
+    // a length in mm is turned into % of the line width
+    const pct = v === undefined ? undefined : v.percent ? v.value : round((100 * v.value) / (w ?? (c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number))), 2);
+    c.set('infillOverlap', pct, o.key, 'not a length or percentage');
+  }
+}
+
+/** A speed in mm/s from a value that may be a percentage of `base`. */
+function speed(raw: string | undefined, base: number | undefined): number | undefined {
+  const v = numOrPercent(raw);
+  if (!v || v.value <= 0) return undefined;
+  if (!v.percent) return v.value;
+  return base === undefined ? undefined : round((base * v.value) / 100, 2);
+}
+
+function speeds(c: ImportContext): void {
+  const perimeter = c.getAny('perimeter_speed', 'inner_wall_speed');
+  const perimeterSpeed = perimeter ? speed(perimeter.value, undefined) : undefined;
+  if (perimeter) c.set('innerWallSpeed', perimeterSpeed, perimeter.key, 'not a speed');
+  const external = c.getAny('external_perimeter_speed', 'outer_wall_speed');
+  if (external) c.set('perimeterSpeed', speed(external.value, perimeterSpeed), external.key, 'not a speed (or a % without the perimeter speed)');
+  const inf = c.getAny('infill_speed', 'sparse_infill_speed');
+  const infillSpeed = inf ? speed(inf.value, undefined) : undefined;
+  if (inf) c.set('infillSpeed', infillSpeed, inf.key, 'not a speed');
+  // skin is every top and bottom solid layer: solid infill speed, else the top surface one
+  const solid = c.getAny('solid_infill_speed', 'internal_solid_infill_speed');
+  const solidSpeed = solid ? speed(solid.value, infillSpeed) : undefined;
+  const top = c.getAny('top_solid_infill_speed', 'top_surface_speed');
+  const topSpeed = top ? speed(top.value, solidSpeed) : undefined;
+  if (solidSpeed !== undefined) c.set('skinSpeed', solidSpeed, solid!.key);
+  else if (topSpeed !== undefined) c.set('skinSpeed', topSpeed, top!.key);
+  else if (solid) c.reject(solid.key, 'not a speed');
+  const fl = c.getAny('first_layer_speed', 'initial_layer_speed');
+  if (fl) c.set('firstLayerSpeed', speed(fl.value, perimeterSpeed), fl.key, 'not a speed');
+  const travel = c.getAny('travel_speed');
+  const travelSpeed = travel ? speed(travel.value, undefined) : undefined;
+  if (travel) c.set('travelSpeed', travelSpeed, travel.key, 'not a speed');
+  const flt = c.getAny('first_layer_travel_speed', 'initial_layer_travel_speed');
+  if (flt) c.set('firstLayerTravelSpeed', speed(flt.value, travelSpeed), flt.key, 'not a speed');
+  const max = c.getAny('max_print_speed');
+  if (max && c.settings.maxSpeed === undefined) {
+    const v = num(max.value);
+    if (v !== undefined && v > 0) c.set('maxSpeed', v, max.key);
+  }
+}
+
+function temperatures(c: ImportContext): void {
+  const t = c.getAny('temperature', 'nozzle_temperature');
+  if (t) c.set('nozzleTemperature', num(t.value), t.key, 'not a temperature');
+  const ft = c.getAny('first_layer_temperature', 'nozzle_temperature_initial_layer');
+  if (ft) c.set('firstLayerNozzleTemperature', num(ft.value), ft.key, 'not a temperature');
+  const b = c.getAny('bed_temperature');
+  if (b) c.set('bedTemperature', num(b.value), b.key, 'not a temperature');
+  const fb = c.getAny('first_layer_bed_temperature');
+  if (fb) c.set('firstLayerBedTemperature', num(fb.value), fb.key, 'not a temperature');
+  // OrcaSlicer: per plate type
+  const plate = first(c.get('curr_bed_type'));
+  const plateKey = (plate && PLATES[plate]) ?? ['textured_plate_temp', 'hot_plate_temp', 'eng_plate_temp', 'cool_plate_temp'].find((k) => c.has(k));
+  if (plateKey && c.has(plateKey) && !b) {
+    c.set('bedTemperature', num(c.get(plateKey)), plateKey, 'not a temperature');
+    const initial = c.get(`${plateKey}_initial_layer`);
+    if (initial !== undefined) c.set('firstLayerBedTemperature', num(initial), `${plateKey}_initial_layer`, 'not a temperature');
+  }
+}
+
+function cooling(c: ImportContext): void {
+  const always = c.get('fan_always_on');
+  const minFan = c.getAny('min_fan_speed');
+  if (always !== undefined || minFan) {
+    const on = bool(always) ?? true;
+    c.set('fanSpeed', on ? num(minFan?.value) : 0, 'fan_always_on + min_fan_speed', 'no fan speed');
+  }
+  const orcaMin = c.getAny('fan_min_speed');
+  const orcaMax = c.getAny('fan_max_speed');
+  if (orcaMin || orcaMax) {
+    const keepOn = bool(c.get('reduce_fan_stop_start_freq')) ?? true;
+    const v = keepOn ? num(orcaMin?.value) ?? num(orcaMax?.value) : num(orcaMax?.value);
+    c.set('fanSpeed', v, orcaMin?.key ?? orcaMax!.key, 'no fan speed');
+  }
+  const off = c.getAny('disable_fan_first_layers', 'close_fan_the_first_x_layers');
+  if (off) {
+    const n = num(off.value);
+    const fan = c.settings.fanSpeed;
+    c.set('firstLayerFanSpeed', n === undefined ? undefined : n >= 1 ? 0 : fan ?? undefined, off.key, 'not a count');
+  }
+  const slow = c.getAny('slowdown_below_layer_time', 'slow_down_layer_time');
+  if (slow) c.set('minLayerTime', num(slow.value), slow.key, 'not a time');
+  const minSpeed = c.getAny('min_print_speed', 'slow_down_min_speed');
+  if (minSpeed) c.set('minPrintSpeed', num(minSpeed.value), minSpeed.key, 'not a speed');
+  const density = c.getAny('filament_density');
+  if (density) c.set('filamentDensity', num(density.value), density.key, 'not a density');
+  const flow = c.getAny('extrusion_multiplier', 'filament_flow_ratio');
+  if (flow) {
+    const v = num(flow.value);
+    c.set('flowRate', v === undefined ? undefined : round(v * 100, 3), flow.key, 'not a ratio');
+  }
+  // pressure advance
+  const enabled = c.get('enable_pressure_advance');
+  const pa = c.getAny('pressure_advance');
+  if (pa && bool(enabled) !== false) c.set('pressureAdvance', num(pa.value), pa.key, 'not a number');
+  const startFilament = c.getAny('start_filament_gcode', 'filament_start_gcode');
+  if (startFilament) {
+    const m = /(?:^|\n)\s*(?:M900\s+K|M572\s+(?:D\d+\s+)?S|SET_PRESSURE_ADVANCE\s+(?:EXTRUDER=\S+\s+)?ADVANCE=)([\d.]+)/i.exec(text(startFilament.value) ?? '');
+    if (m) c.set('pressureAdvance', Number(m[1]), startFilament.key);
+    else c.used.delete(startFilament.key);
+  }
+}
+
+function retraction(c: ImportContext): void {
+  // OrcaSlicer's filament overrides win over the printer's values
+  const pick = (filament: string, ...printer: string[]) => {
+    const f = c.get(filament);
+    if (f !== undefined && first(f) !== undefined) return { key: filament, value: f };
+    return c.getAny(...printer);
+  };
+  const len = pick('filament_retraction_length', 'retract_length', 'retraction_length');
+  if (len) {
+    const v = num(len.value);
+    if (v === 0) c.set('retractionEnabled', false, len.key);
+    else {
+      c.set('retractionDistance', v, len.key, 'not a length');
+      if (v !== undefined) c.set('retractionEnabled', true, len.key);
+    }
+  }
+  const sp = pick('filament_retraction_speed', 'retract_speed', 'retraction_speed');
+  if (sp) c.set('retractionSpeed', num(sp.value), sp.key, 'not a speed');
+  const extra = pick('filament_retract_restart_extra', 'retract_restart_extra');
+  if (extra) c.set('retractionExtraPrime', num(extra.value), extra.key, 'not a length');
+  const minTravel = pick('filament_retraction_minimum_travel', 'retract_before_travel', 'retraction_minimum_travel');
+  if (minTravel) c.set('retractionMinTravel', num(minTravel.value), minTravel.key, 'not a length');
+  const layerChange = pick('filament_retract_when_changing_layer', 'retract_layer_change', 'retract_when_changing_layer');
+  if (layerChange) c.set('retractOnLayerChange', bool(layerChange.value), layerChange.key, 'not 0 or 1');
+  const lift = pick('filament_z_hop', 'retract_lift', 'z_hop');
+  if (lift) c.set('zHop', num(lift.value), lift.key, 'not a length');
+}
+
+function adhesion(c: ImportContext): void {
+  const brimWidth = c.getAny('brim_width');
+  const brim = brimWidth ? num(brimWidth.value) : undefined;
+  const type = first(c.get('brim_type'));
+  const skirts = c.getAny('skirts', 'skirt_loops');
+  const skirtCount = skirts ? num(skirts.value) : undefined;
+  if (brim !== undefined && brim > 0 && type !== 'no_brim') {
+    c.set('adhesionType', 'brim', brimWidth!.key);
+    c.set('brimWidth', brim, brimWidth!.key);
+  } else if (skirtCount !== undefined) {
+    c.set('adhesionType', skirtCount > 0 ? 'skirt' : 'none', skirts!.key);
+    if (skirtCount > 0) c.set('skirtLoops', skirtCount, skirts!.key);
+  } else if (brimWidth) c.set('brimWidth', brim, brimWidth.key, 'not a width');
+  const dist = c.getAny('skirt_distance');
+  if (dist) c.set('skirtDistance', num(dist.value), dist.key, 'not a distance');
+}
+
+function output(c: ImportContext): void {
+  const thumbs = c.getAny('thumbnails');
+  if (thumbs) {
+    const format = first(c.get('thumbnails_format'))?.toUpperCase();
+    const items = thumbs.value
+      .replace(/[[\]"]/g, '')
+      .split(',')
+      .map((s) => s.trim())
+      .filter(Boolean)
+      .map((s) => (s.includes('/') || !format ? s : `${s}/${format === 'JPEG' ? 'JPG' : format}`));
+    c.set('thumbnails', items.join(','), thumbs.key, 'not a list of sizes');
+  }
+  const arc = c.getAny('arc_fitting', 'enable_arc_fitting');
+  if (arc) {
+    const v = first(arc.value) ?? '';
+    c.set('arcFitting', v === 'emit_center' || v === 'emit_radius' || bool(v) === true, arc.key);
+  }
+  const labels = c.getAny('gcode_label_objects');
+  const exclude = bool(c.get('exclude_object'));
+  if (labels) {
+    const v = first(labels.value) ?? '';
+    const mode: Settings['labelObjects'] | undefined =
+      v === 'firmware' || exclude ? 'firmware' : v === 'octoprint' || bool(v) === true ? 'comments' : v === 'disabled' || bool(v) === false ? 'off' : undefined;
+    c.set('labelObjects', mode, labels.key, 'not disabled, octoprint or firmware');
+  } else if (exclude !== undefined) c.set('labelObjects', exclude ? 'firmware' : 'off', 'exclude_object');
+  const m73 = c.getAny('remaining_times');
+  if (m73) c.set('progressM73', bool(m73.value), m73.key, 'not 0 or 1');
+}
