@@ -14,6 +14,7 @@ export type ErrorCode =
   | 'BAD_SHADER'
   | 'BAD_IMAGE'
   | 'LIMIT_EXCEEDED'
+  | 'WRITE_FAILED'
   | 'CANCELLED';
 
 export class StrataError extends Error {

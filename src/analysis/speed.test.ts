@@ -1,10 +1,11 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { existsSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import { analyzePrint } from './checks.js';
 import { parseGcode } from './gcode-parse.js';
 import { GcodeWriter, writeBoxPrint } from './synthetic-print.js';
 import { placeOnBed, readStl, toyGcode } from './toy-slicer.js';
+import { skipWithoutModels } from '../e2e/models-dir.js';
 
 const OPTS = { layerHeight: 0.2, firstLayerHeight: 0.2, lineWidth: 0.4, filamentDiameter: 1.75 };
 
@@ -27,7 +28,7 @@ test('30 MB of G-code parses in about a second', () => {
 
 const CUBE = new URL('../../../shared/models/CalibrationCube.stl', import.meta.url);
 
-test('a real model against toy G-code from its own sections', { skip: !existsSync(CUBE) }, () => {
+test('a real model against toy G-code from its own sections', { skip: skipWithoutModels() }, () => {
   const mesh = placeOnBed(readStl(readFileSync(CUBE)), 110, 110);
   const gcode = toyGcode(mesh, { ...OPTS, infillSpacing: 4, skinLayers: 4 });
   const report = analyzePrint(mesh, gcode, OPTS);

@@ -2,11 +2,14 @@
  * The library API: `new Slicer(options)`, chainable `setX`/`getX` for every setting, and
  * `await slicer.slice(input)` → `{ gcode, stats, warnings }`, or `sliceToSink` to stream the G-code.
  */
-import { StrataError } from '../errors.js';
 import { isNode, nodeBuiltin } from '../runtime.js';
-import { mergeObjects, placeOnBed, positionBounds, prepareMesh, toMeshObjects } from '../mesh/index.js';
-import type { Mesh, MeshReport } from '../mesh/types.js';
-import { runPipeline, type PlacedObject, type Progress } from '../pipeline/run.js';
+import { positionBounds } from '../mesh/index.js';
+import { checkTemplatesForFlavor } from '../gcode/flavor-templates.js';
+import { imageDecodeBytes } from '../shader/image.js';
+import { StrataError } from '../errors.js';
+import { MiB, prepareModelSteps, type PreparedModel } from './prepare-model.js';
+import { Pacer } from '../pipeline/pacer.js';
+import { runPipeline, type Progress } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 import { isTransferable, loadCustomInfill, loadedCustomInfill } from '../pipeline/custom-infill-loader.js';
@@ -33,74 +36,11 @@ export interface SliceResult {
   warnings: string[];
 }
 
+export { prepareModel, type PreparedModel } from './prepare-model.js';
+
 export interface SliceCallOptions {
   onProgress?: (p: Progress) => void;
   signal?: AbortSignal;
-}
-
-export interface PreparedModel {
-  /** Every object merged, placed on the bed. */
-  mesh: Mesh;
-  /** Each object on its own, placed on the bed (sliced separately: object labels, per-object infill origin). */
-  objects: PlacedObject[];
-  report: MeshReport;
-  /** Translation applied to place the model on the bed, mm. */
-  offset: [number, number, number];
-  warnings: string[];
-}
-
-/** Load, repair-check and place whatever the caller passed (bytes, text, three.js objects, arrays, or a list of them). */
-export function prepareModel(input: unknown, cfg: Config): PreparedModel {
-  const objects = toMeshObjects(input);
-  if (objects.length === 0) throw new StrataError('EMPTY_MODEL', 'the input holds no mesh');
-  const prepared = objects.map((o) => ({ name: o.name, ...prepareMesh(o.mesh) }));
-  const mesh = prepared.length === 1 ? prepared[0].mesh : mergeObjects(prepared);
-  const report = prepared.length === 1 ? prepared[0].report : combineReports(prepared.map((p) => p.report));
-  if (mesh.indices.length === 0) throw new StrataError('EMPTY_MODEL', 'the model has no printable triangles');
-  const placed = placeOnBed(mesh, {
-    center: cfg.center,
-    bedWidth: cfg.buildPlateWidth,
-    bedLength: cfg.buildPlateLength,
-    bedHeight: cfg.buildVolumeHeight,
-    originAtCenter: cfg.originAtCenter,
-  });
-  const warnings = [...report.warnings];
-  if (objects.length > 1) warnings.unshift(`${objects.length} objects placed together on the plate`);
-  const placedObjects =
-    prepared.length === 1
-      ? [{ name: prepared[0].name, mesh: placed.mesh }]
-      : prepared.filter((p) => p.mesh.indices.length > 0).map((p) => ({ name: p.name, mesh: translated(p.mesh, placed.offset) }));
-  return { mesh: placed.mesh, objects: placedObjects, report, offset: placed.offset, warnings };
-}
-
-function translated(mesh: Mesh, [dx, dy, dz]: [number, number, number]): Mesh {
-  const p = mesh.positions;
-  const out = new Float32Array(p.length);
-  for (let i = 0; i < p.length; i += 3) {
-    out[i] = p[i] + dx;
-    out[i + 1] = p[i + 1] + dy;
-    out[i + 2] = p[i + 2] + dz;
-  }
-  return { positions: out, indices: mesh.indices };
-}
-
-/** One report for several objects: counts added, bounds joined, warnings kept. */
-function combineReports(reports: readonly MeshReport[]): MeshReport {
-  const out: MeshReport = { triangles: 0, vertices: 0, degenerateRemoved: 0, openEdges: 0, nonManifoldEdges: 0, volume: 0, min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity], warnings: [] };
-  for (const r of reports) {
-    out.triangles += r.triangles;
-    out.vertices += r.vertices;
-    out.degenerateRemoved += r.degenerateRemoved;
-    out.openEdges += r.openEdges;
-    out.nonManifoldEdges += r.nonManifoldEdges;
-    out.volume += r.volume;
-    for (let k = 0; k < 3; k++) {
-      out.min[k] = Math.min(out.min[k], r.min[k]);
-      out.max[k] = Math.max(out.max[k], r.max[k]);
-    }
-    out.warnings.push(...r.warnings);
-  }
-  return out;
 }
 
 async function coreCount(): Promise<number> {
@@ -167,6 +107,7 @@ export class Slicer {
    */
   setCustomInfill(spec: CustomInfillSpec | null): this {
     if (spec) {
+      checkImageBudget(spec, this.#config);
       loadedCustomInfill()?.customGenerator(spec, this.#config);
       this.#custom = { ...spec, params: spec.params ? { ...spec.params } : undefined };
     } else {
@@ -235,6 +176,9 @@ export class Slicer {
   ): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
+    // refuse what would fail only after slicing: templates the flavour cannot run, an image over budget
+    checkTemplatesForFlavor(cfg);
+    if (this.#custom) checkImageBudget(this.#custom, cfg);
     // the shader compiler loads on first use (the pipeline compiles the infiller and reports its errors)
     if (this.#custom) await loadCustomInfill();
     // Workers start loading now, while the model is read and placed, if they will be needed (a custom
@@ -246,7 +190,8 @@ export class Slicer {
     let model: PreparedModel;
     let threads: number;
     try {
-      model = prepareModel(input, cfg);
+      // paced like the slice itself, so an abort acts while a big model is still being read
+      model = await new Pacer(opts.signal).run(prepareModelSteps(input, cfg));
       const b = positionBounds(model.mesh.positions);
       const layersEstimate = b.max[2] / cfg.layerHeight;
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
@@ -274,6 +219,19 @@ export class Slicer {
       threads,
     };
     return { plan: run.plan, stats, warnings: model.warnings };
+  }
+}
+
+/** An infill image that would take more than inflateBudget to decode is refused before it is decoded. */
+function checkImageBudget(spec: CustomInfillSpec, cfg: Config): void {
+  if (spec.image === undefined || spec.shader !== undefined) return;
+  const name = `${spec.name}/cells.png`;
+  const cost = imageDecodeBytes(spec.image, name);
+  if (cost > cfg.inflateBudget * MiB) {
+    throw new StrataError(
+      'LIMIT_EXCEEDED',
+      `${name}: decoding the image takes ${Math.ceil(cost / MiB)} MiB, more than inflateBudget (${cfg.inflateBudget} MiB); raise inflateBudget or use a smaller image`,
+    );
   }
 }
 

@@ -1,6 +1,8 @@
 /**
  * Command-line argument parsing. Every setting gets a flag generated from the schema:
- * `layerHeight` → `--layer-height 0.2`; booleans also take `--no-…`.
+ * `layerHeight` → `--layer-height 0.2`; booleans also take `--no-…`. The other flags are listed in
+ * FLAGS with the commands they apply to; a flag given to a command it does not apply to is an error,
+ * so no flag is ever accepted and ignored.
  */
 import { StrataError } from '../errors.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey } from '../settings/schema.js';
@@ -10,29 +12,83 @@ export function kebab(key: string): string {
   return key.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase());
 }
 
+export const COMMANDS = ['slice', 'info', 'preview', 'infillers', 'presets', 'settings'] as const;
+export type Command = (typeof COMMANDS)[number];
+
+/** Commands that slice, and so take every setting's flag. */
+export const SLICING: readonly Command[] = ['slice', 'preview'];
+
+export interface FlagDef {
+  /** Long name without dashes. */
+  name: string;
+  short?: string;
+  /** What the value is called in help ('' for on/off flags). */
+  value: string;
+  /** Given several times, the values accumulate (newline-separated). */
+  repeat?: boolean;
+  /** Commands the flag applies to (empty: any command, and none). */
+  commands: readonly Command[];
+  help: string;
+}
+
+/** Every flag that is not a setting. */
+export const FLAGS: readonly FlagDef[] = [
+  { name: 'help', short: 'h', value: '', commands: [], help: 'show this help' },
+  { name: 'version', short: 'v', value: '', commands: [], help: 'show the version' },
+  { name: 'output', short: 'o', value: 'FILE', commands: SLICING, help: 'where to write (- for standard output)' },
+  { name: 'quiet', short: 'q', value: '', commands: SLICING, help: 'no progress bar, summary or warnings' },
+  { name: 'printer', value: 'NAME', commands: SLICING, help: 'printer preset' },
+  { name: 'filament', value: 'NAME', commands: SLICING, help: 'filament preset' },
+  { name: 'config', value: 'FILE.json', repeat: true, commands: SLICING, help: 'settings from a JSON object' },
+  { name: 'set', value: 'KEY=VALUE', repeat: true, commands: SLICING, help: 'any setting by its key' },
+  { name: 'rotate', value: 'Z|X,Y,Z', commands: SLICING, help: 'turn each model (degrees): about Z, or about X, Y and Z' },
+  { name: 'infill-shader', value: 'FILE', commands: SLICING, help: 'custom infill from a GLSL cellular() shader' },
+  { name: 'infill-image', value: 'FILE', commands: SLICING, help: 'custom infill from a cells.png image' },
+  { name: 'infill-param', value: 'NAME=VALUE', repeat: true, commands: SLICING, help: "a shader's ui_ parameter" },
+  { name: 'infill-density-shader', value: 'FILE', commands: SLICING, help: 'density() from a shader' },
+  { name: 'infill-density-layers', value: 'A,B,…', commands: SLICING, help: 'density() per layer' },
+  { name: 'infillers', value: 'DIR', repeat: true, commands: [...SLICING, 'infillers'], help: 'another infiller folder' },
+  { name: 'layer', value: 'N', commands: ['preview'], help: 'the layer to draw' },
+  { name: 'width', value: 'PX', commands: ['preview'], help: 'picture width' },
+  { name: 'travel', value: '', commands: ['preview'], help: 'draw travels too' },
+  { name: 'json', value: '', commands: ['info', 'presets', 'settings'], help: 'print JSON' },
+];
+
+const BY_NAME: ReadonlyMap<string, FlagDef> = new Map(FLAGS.flatMap((f) => [[f.name, f] as const, ...(f.short ? [[f.short, f] as const] : [])]));
 const FLAG_TO_KEY: ReadonlyMap<string, SettingKey> = new Map(SETTING_KEYS.map((k) => [kebab(k), k]));
+
+/** Every flag the CLI accepts, with dashes: the FLAGS table and every setting's (with --no- for on/off ones). */
+export function allFlags(): string[] {
+  const out = FLAGS.map((f) => `--${f.name}`);
+  for (const k of SETTING_KEYS) {
+    out.push(`--${kebab(k)}`);
+    if (SCHEMA[k].type === 'boolean') out.push(`--no-${kebab(k)}`);
+  }
+  return out;
+}
 
 export interface ParsedArgs {
   command: string;
   positional: string[];
-  output?: string;
-  printer?: string;
-  filament?: string;
-  configFiles: string[];
   /** Settings given on the command line, parsed by type (not yet validated). */
   settings: Record<string, unknown>;
-  /** Other flags (command-specific), by name without dashes. */
-  flags: Record<string, string | boolean>;
-  help: boolean;
-  quiet: boolean;
+  /** FLAGS given, by long name: true for on/off flags, the value (repeats joined by newlines) otherwise. */
+  flags: Record<string, string | true>;
+  /** Setting flags as given (for messages about the command). */
+  settingFlags: string[];
 }
 
-/** Command-specific flags that take a value. */
-const VALUE_FLAGS = new Set(['layer', 'width', 'infill-param', 'infill-shader', 'infill-image', 'infill-density-shader', 'infill-density-layers', 'infill-image-pixel-size', 'infillers', 'scale']);
-const BOOL_FLAGS = new Set(['json', 'travel']);
+/** A list of numbers "a,b,c" (exactly `n` of them when n > 1), or one number. */
+function numbers(flag: string, text: string, n: number): number[] {
+  const parts = text.split(',').map((t) => Number(t.trim()));
+  if ((parts.length !== 1 && parts.length !== n) || parts.some((v) => !Number.isFinite(v)) || text.trim() === '') {
+    throw new StrataError('BAD_SETTING', `${flag} expects a number or ${n} numbers separated by commas, got "${text}"`);
+  }
+  return parts;
+}
 
 export function parseArgs(argv: readonly string[]): ParsedArgs {
-  const out: ParsedArgs = { command: '', positional: [], configFiles: [], settings: {}, flags: {}, help: false, quiet: false };
+  const out: ParsedArgs = { command: '', positional: [], settings: {}, flags: {}, settingFlags: [] };
   let i = 0;
   const need = (flag: string): string => {
     const v = argv[++i];
@@ -58,67 +114,64 @@ export function parseArgs(argv: readonly string[]): ParsedArgs {
       name = name.slice(0, eq);
     }
     const value = (flag: string) => (inline !== undefined ? inline : need(flag));
-    switch (name) {
-      case 'h':
-      case 'help':
-        out.help = true;
-        continue;
-      case 'q':
-      case 'quiet':
-        out.quiet = true;
-        continue;
-      case 'o':
-      case 'output':
-        out.output = value(a);
-        continue;
-      case 'printer':
-        out.printer = value(a);
-        continue;
-      case 'filament':
-        out.filament = value(a);
-        continue;
-      case 'config':
-        out.configFiles.push(value(a));
-        continue;
-      case 'set': {
-        const kv = value(a);
-        const k = kv.indexOf('=');
-        if (k <= 0) throw new StrataError('BAD_SETTING', `--set expects key=value, got "${kv}"`);
-        const key = checkKey(kv.slice(0, k), 'setting');
-        out.settings[key] = parseSettingText(key, kv.slice(k + 1));
+    const def = BY_NAME.get(name);
+    if (def && (def.short !== name || !a.startsWith('--'))) {
+      if (def.value === '') {
+        if (inline !== undefined) throw new StrataError('BAD_SETTING', `--${def.name} takes no value`);
+        out.flags[def.name] = true;
         continue;
       }
-      case 'version':
-      case 'v':
-        out.flags.version = true;
-        continue;
-    }
-    if (VALUE_FLAGS.has(name)) {
       const v = value(a);
-      // repeated flags (--infill-param a=1 --infill-param b=2) accumulate, newline-separated
-      const prev = out.flags[name];
-      out.flags[name] = typeof prev === 'string' ? prev + '\n' + v : v;
-      continue;
-    }
-    if (BOOL_FLAGS.has(name)) {
-      out.flags[name] = true;
+      if (def.name === 'set') {
+        const k = v.indexOf('=');
+        if (k <= 0) throw new StrataError('BAD_SETTING', `--set expects key=value, got "${v}"`);
+        const key = checkKey(v.slice(0, k), 'setting');
+        out.settings[key] = parseSettingText(key, v.slice(k + 1));
+        out.settingFlags.push(a);
+      } else if (def.name === 'rotate') {
+        const r = numbers(a, v, 3);
+        const [x, y, z] = r.length === 1 ? [0, 0, r[0]] : r;
+        Object.assign(out.settings, { rotateX: x, rotateY: y, rotateZ: z });
+        out.settingFlags.push(a);
+      }
+      const prev = out.flags[def.name];
+      out.flags[def.name] = def.repeat && typeof prev === 'string' ? prev + '\n' + v : v;
       continue;
     }
     const negated = name.startsWith('no-') ? name.slice(3) : null;
     const key = FLAG_TO_KEY.get(negated ?? name);
     if (key) {
-      const def = SCHEMA[key];
-      if (def.type === 'boolean') {
+      const d = SCHEMA[key];
+      out.settingFlags.push(a);
+      if (d.type === 'boolean') {
         out.settings[key] = negated ? false : inline !== undefined ? parseSettingText(key, inline) : true;
+      } else if (negated) {
+        throw new StrataError('BAD_SETTING', `--${name}: --no- applies only to on/off settings`);
+      } else if (key === 'scale' && (inline ?? argv[i + 1] ?? '').includes(',')) {
+        // --scale X,Y,Z scales each axis
+        const [x, y, z] = numbers(a, value(a), 3);
+        Object.assign(out.settings, { scaleX: x, scaleY: y, scaleZ: z });
       } else {
-        if (negated) throw new StrataError('BAD_SETTING', `--${name}: --no- applies only to on/off settings`);
         out.settings[key] = parseSettingText(key, value(a));
       }
       continue;
     }
-    const known = [...FLAG_TO_KEY.keys(), 'output', 'printer', 'filament', 'config', 'set', 'help', 'quiet', ...VALUE_FLAGS, ...BOOL_FLAGS];
+    const known = [...FLAG_TO_KEY.keys(), ...FLAGS.map((f) => f.name)];
     const s = suggest(negated ?? name, known);
     throw new StrataError('UNKNOWN_SETTING', `unknown option ${a}${s ? ` (did you mean --${s}?)` : ''}; see strata --help`);
   }
   return out;
+}
+
+/** Refuse flags that do not apply to the command (they would be silently ignored otherwise). */
+export function checkFlagsFor(args: ParsedArgs): void {
+  const command = args.command as Command;
+  for (const name of Object.keys(args.flags)) {
+    const def = BY_NAME.get(name)!;
+    if (def.commands.length === 0 || def.commands.includes(command)) continue;
+    throw new StrataError('BAD_SETTING', `--${name} does not apply to strata ${args.command} (it is for strata ${def.commands.join(', ')})`);
+  }
+  if (args.settingFlags.length > 0 && !SLICING.includes(command)) {
+    throw new StrataError('BAD_SETTING', `${args.settingFlags[0]} is a slicing setting; strata ${args.command} does not take settings (strata slice and preview do)`);
+  }
 }

@@ -4,9 +4,9 @@ import assert from 'node:assert/strict';
 import { Slicer } from '../api/slicer.js';
 import { analyzePrint } from '../analysis/checks.js';
 import { prepareModel } from '../api/slicer.js';
-import { modelsAvailable, readModel } from './models.js';
+import { skipWithoutModels, readModel } from './models.js';
 
-const skip = !modelsAvailable() && 'shared models not found';
+const skip = skipWithoutModels();
 
 for (const name of ['CalibrationCube.stl', 'HoleTest.stl']) {
   test(`${name}: identical G-code on 1 and 2 threads, and on a second run`, { skip, timeout: 300_000 }, async () => {

@@ -1,15 +1,14 @@
 /** Test helpers: the shared models and slicing one with the analyser's report. */
-import { existsSync, readFileSync } from 'node:fs';
+import { readFileSync } from 'node:fs';
 import { gunzipSync } from 'node:zlib';
-import { fileURLToPath } from 'node:url';
 import { Slicer, prepareModel } from '../api/slicer.js';
 import { analyzePrint } from '../analysis/checks.js';
-import type { PrintReport } from '../analysis/checks.js';
+import type { AnalyzeOptions, PrintReport } from '../analysis/checks.js';
 import type { SliceOptions } from '../settings/schema.js';
 import type { Config } from '../settings/resolve.js';
 
-/** ../shared/models beside the repository (dist/e2e → repo → ..). */
-export const MODELS_DIR = fileURLToPath(new URL('../../../shared/models/', import.meta.url));
+export { MODELS_DIR, modelsAvailable, skipWithoutModels } from './models-dir.js';
+import { MODELS_DIR } from './models-dir.js';
 
 export const MODEL_FILES = [
   'CalibrationCube.stl',
@@ -24,10 +23,6 @@ export const MODEL_FILES = [
   '3DBenchy.3mf',
 ] as const;
 
-export function modelsAvailable(): boolean {
-  return existsSync(MODELS_DIR + 'CalibrationCube.stl');
-}
-
 export function readModel(name: string): Uint8Array {
   const bytes = readFileSync(MODELS_DIR + name);
   return name.endsWith('.gz') ? gunzipSync(bytes) : bytes;
@@ -40,14 +35,19 @@ export interface SlicedModel {
   warnings: string[];
 }
 
-/** Slice a model with options and analyse the G-code against the placed mesh. */
-export async function sliceAndAnalyze(name: string, options: SliceOptions = {}): Promise<SlicedModel> {
+/**
+ * Slice a model with options and analyse the G-code against the placed mesh; `analyze` adds or overrides analyser
+ * options (for example the support checks' overhangAngleDeg or supportGapLayers, or a modelZOffset).
+ */
+export async function sliceAndAnalyze(
+  name: string, options: SliceOptions = {}, analyze: Partial<AnalyzeOptions> = {},
+): Promise<SlicedModel> {
   const bytes = readModel(name);
   const slicer = new Slicer({ threads: 1, ...options });
   const { gcode, stats, warnings } = await slicer.slice(bytes);
   const cfg = slicer.config;
   const placed = prepareModel(bytes, cfg).mesh;
-  const report = analyzePrint(placed, gcode, analysisProfile(cfg));
+  const report = analyzePrint(placed, gcode, { ...analysisProfile(cfg), ...analyze });
   return { gcode, report, layers: stats.layers, warnings };
 }
 

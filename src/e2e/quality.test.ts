@@ -4,9 +4,9 @@
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { MODEL_FILES, modelsAvailable, sliceAndAnalyze } from './models.js';
+import { MODEL_FILES, skipWithoutModels, sliceAndAnalyze } from './models.js';
 
-const skip = !modelsAvailable() && 'shared models not found';
+const skip = skipWithoutModels();
 
 for (const name of MODEL_FILES) {
   test(`${name}: layers, walls, nothing outside, E balanced`, { skip, timeout: 300_000 }, async () => {

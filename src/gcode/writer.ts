@@ -10,10 +10,12 @@
  * (move-writer.ts, walking the plan through moves.ts exactly as the estimate does); `M73 P100 R0`; the
  * end template.
  */
+import { StrataError } from '../errors.js';
 import type { PlanEstimate, PrintPlan } from '../plan/types.js';
 import { SCHEMA, type Settings } from '../settings/schema.js';
 import { ChunkedText } from './chunked-text.js';
 import { FLAVORS } from './flavor.js';
+import { templateForFlavor, templateHeatsNozzle } from './flavor-templates.js';
 import { derivedTemplateValues, headerLines, type GcodeMeta } from './header.js';
 import { MoveWriter } from './move-writer.js';
 import { walkPlanSteps } from '../plan/moves.js';
@@ -29,7 +31,6 @@ export const CHUNK_BYTES = 65536;
 
 const NOZZLE_KEYS = ['firstLayerNozzleTemperature', 'nozzleTemperature'];
 const BED_KEYS = ['firstLayerBedTemperature', 'bedTemperature'];
-const SETS_NOZZLE = /^\s*M10[49]\b/im;
 const SETS_BED = /^\s*M1[49]0\b/im;
 
 function templateLines(text: string): string[] {
@@ -45,7 +46,8 @@ function temperature(settings: Settings, key: string): number {
 
 /**
  * Write `plan` as G-code to `sink`. Templates are checked before anything is written, so a bad
- * placeholder throws StrataError BAD_SETTING without partial output.
+ * placeholder throws StrataError BAD_SETTING without partial output, and a plan with nothing to
+ * extrude throws EMPTY_MODEL (G-code that heats, homes and prints nothing would mislead).
  */
 export function writeGcode(
   plan: PrintPlan,
@@ -69,12 +71,15 @@ export function* writeGcodeSteps(
   const flavor = FLAVORS[settings.gcodeFlavor];
   const relative = settings.extruderMode === 'relative';
   const derived = derivedTemplateValues(plan, estimate);
-  const start = templateLines(expandTemplate('startGcode', settings.startGcode, settings, derived));
-  const end = templateLines(expandTemplate('endGcode', settings.endGcode, settings, derived));
+  const start = templateForFlavor(templateLines(expandTemplate('startGcode', settings.startGcode, settings, derived)), settings.gcodeFlavor, 'startGcode', settings.heatedBed);
+  const end = templateForFlavor(templateLines(expandTemplate('endGcode', settings.endGcode, settings, derived)), settings.gcodeFlavor, 'endGcode', settings.heatedBed);
 
   const labels = objectLabels(plan.objects, labelMode(settings), settings.gcodeFlavor);
 
   const out = new ChunkedText(sink, CHUNK_BYTES);
+  if (!plan.layers.some((l) => l.steps.some((s) => s.kind === 'extrude'))) {
+    throw new StrataError('EMPTY_MODEL', 'nothing to print: no layer of the model is wide enough for a line (it is thinner than the line width everywhere)');
+  }
   for (const l of headerLines(plan, settings, estimate, meta, flavor.name)) out.line(l);
   for (const image of meta.thumbnails ?? []) for (const l of thumbnailBlockLines(image)) out.line(l);
   for (const l of labels?.preamble ?? []) out.line(l);
@@ -83,7 +88,7 @@ export function* writeGcodeSteps(
   const used = placeholders(settings.startGcode);
   const firstNozzle = temperature(settings, 'firstLayerNozzleTemperature');
   const firstBed = temperature(settings, 'firstLayerBedTemperature');
-  const heatNozzle = !NOZZLE_KEYS.some((k) => used.includes(k)) && !SETS_NOZZLE.test(settings.startGcode);
+  const heatNozzle = !NOZZLE_KEYS.some((k) => used.includes(k)) && !templateHeatsNozzle(settings.startGcode, settings.gcodeFlavor);
   const heatBed = settings.heatedBed && !BED_KEYS.some((k) => used.includes(k)) && !SETS_BED.test(settings.startGcode);
   if (heatBed) out.line(flavor.setBed(firstBed));
   if (heatNozzle) for (const l of flavor.setNozzle(firstNozzle)) out.line(l);

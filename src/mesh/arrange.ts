@@ -73,11 +73,21 @@ export function findSpot(f: Footprint, placed: readonly PlacedFootprint[], bed: 
  * bed centre. A footprint with no free spot goes to the bed centre (and so overlaps: the caller warns).
  */
 export function arrange(items: readonly Footprint[], bed: Bed, gap = ARRANGE_GAP_MM): Array<[number, number]> {
+  return arrangeWith(items, bed, gap, true)!;
+}
+
+/** As `arrange`, but null when a footprint finds no free spot (the models do not fit together). */
+export function arrangeAll(items: readonly Footprint[], bed: Bed, gap = ARRANGE_GAP_MM): Array<[number, number]> | null {
+  return arrangeWith(items, bed, gap, false);
+}
+
+function arrangeWith(items: readonly Footprint[], bed: Bed, gap: number, fallBack: boolean): Array<[number, number]> | null {
   const order = items.map((_, i) => i).sort((a, b) => items[b].width * items[b].depth - items[a].width * items[a].depth || a - b);
   const placed: PlacedFootprint[] = [];
   const out: Array<[number, number]> = new Array(items.length);
   for (const i of order) {
-    const spot = findSpot(items[i], placed, bed, gap) ?? bed.center;
+    const spot = findSpot(items[i], placed, bed, gap) ?? (fallBack ? bed.center : null);
+    if (spot === null) return null;
     out[i] = spot;
     placed.push({ ...items[i], center: spot });
   }

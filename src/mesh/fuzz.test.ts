@@ -10,8 +10,9 @@ import { strToU8, zipSync } from 'fflate';
 import { StrataError } from '../errors.js';
 import { loadModelBytes } from './load.js';
 import { prepareMesh } from './prepare.js';
+import { MODELS_DIR } from '../e2e/models-dir.js';
 
-const MODELS = process.env.STRATA_MODELS ?? '/work/shared/models';
+const MODELS = MODELS_DIR;
 
 function survives(bytes: Uint8Array, name: string): void {
   try {

@@ -7,5 +7,6 @@ export { fromThree } from './three.js';
 export { fromArrays } from './arrays.js';
 export { prepareMesh, positionBounds, type PreparedMesh } from './prepare.js';
 export { weld } from './weld.js';
-export { mergeObjects, placeOnBed, type PlaceOptions } from './place.js';
-export { detectFormat, loadModelBytes, toMeshObjects, type ModelFormat } from './load.js';
+export { mergeObjects, placeModels, type ModelInput, type PlaceOptions, type PlacedModels } from './place.js';
+export { arrange, arrangeAll, findSpot, type Bed, type Footprint } from './arrange.js';
+export { detectFormat, loadModelBytes, toMeshObjects, toModels, type LoadOptions, type LoadedModels, type ModelFormat } from './load.js';

@@ -5,8 +5,9 @@ import { join } from 'node:path';
 import { strToU8, zipSync } from 'fflate';
 import { StrataError } from '../errors.js';
 import { detectFormat, loadModelBytes, toMeshObjects } from './load.js';
+import { MODELS_DIR } from '../e2e/models-dir.js';
 
-const MODELS = process.env.STRATA_MODELS ?? '/work/shared/models';
+const MODELS = MODELS_DIR;
 const read = (f: string): Uint8Array => new Uint8Array(readFileSync(join(MODELS, f)));
 
 const OBJ = 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n';

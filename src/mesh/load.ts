@@ -6,9 +6,23 @@ import { StrataError } from '../errors.js';
 import { fromArrays } from './arrays.js';
 import { parseObj } from './obj.js';
 import { parseStl } from './stl.js';
-import { isThreeLike, fromThree } from './three.js';
+import type { ModelInput } from './place.js';
+import { isThreeLike, fromThree, threeLooksYUp } from './three.js';
 import { parse3mf } from './threemf.js';
 import type { MeshObject, RawMeshArrays } from './types.js';
+
+export interface LoadOptions {
+  /** Most bytes a 3MF's referenced parts may unpack to together (default 512 MiB). */
+  maxInflatedBytes?: number;
+  /** The input's up axis; with 'z' (default) a three.js scene that is Y-up gets a warning. */
+  upAxis?: 'y' | 'z';
+}
+
+/** Models and the notes made while reading them. */
+export interface LoadedModels {
+  models: ModelInput[];
+  warnings: string[];
+}
 
 export type ModelFormat = 'stl' | 'obj' | '3mf';
 
@@ -37,11 +51,11 @@ export function detectFormat(bytes: Uint8Array, fileName?: string): ModelFormat 
 }
 
 /** Parse model file bytes; `fileName` helps detection and names the objects. */
-export function loadModelBytes(bytes: Uint8Array, fileName?: string): MeshObject[] {
+export function loadModelBytes(bytes: Uint8Array, fileName?: string, opts: LoadOptions = {}): MeshObject[] {
   const name = fileName ? baseName(fileName) : 'model';
   switch (detectFormat(bytes, fileName)) {
     case '3mf':
-      return parse3mf(bytes, name);
+      return parse3mf(bytes, name, { maxInflatedBytes: opts.maxInflatedBytes });
     case 'obj':
       return parseObj(bytes, name);
     case 'stl':
@@ -54,15 +68,37 @@ export function loadModelBytes(bytes: Uint8Array, fileName?: string): MeshObject
  * OBJ text), a three.js Object3D or BufferGeometry, `{ positions, indices? }`, a Mesh, a MeshObject,
  * or an array of these.
  */
-export function toMeshObjects(input: unknown): MeshObject[] {
-  return convert(input, 0);
+export function toMeshObjects(input: unknown, opts: LoadOptions = {}): MeshObject[] {
+  return convert(input, 0, opts, []);
 }
 
-function convert(input: unknown, depth: number): MeshObject[] {
+/**
+ * Whatever a library caller passes, as models to place on the bed: a list gives one model per
+ * element (a file's bytes, a three.js scene, a mesh, a nested list of objects kept together, or a
+ * named model `{ name, objects }`); anything else is one model. A model's objects keep their places
+ * relative to each other; models are arranged on the bed.
+ */
+export function toModels(input: unknown, opts: LoadOptions = {}): LoadedModels {
+  const warnings: string[] = [];
+  const list = Array.isArray(input) && !input.every((v) => typeof v === 'number') ? input : [input];
+  const models = list.map((item, i): ModelInput => {
+    if (isNamedModel(item)) return { name: item.name, objects: convert(item.objects, 1, opts, warnings) };
+    const objects = convert(item, 1, opts, warnings);
+    const name = list.length === 1 ? 'the model' : objects.length === 1 ? objects[0].name : `model ${i + 1}`;
+    return { name, objects };
+  });
+  return { models, warnings };
+}
+
+function isNamedModel(v: unknown): v is { name: string; objects: unknown[] } {
+  return typeof v === 'object' && v !== null && typeof (v as { name?: unknown }).name === 'string' && Array.isArray((v as { objects?: unknown }).objects);
+}
+
+function convert(input: unknown, depth: number, opts: LoadOptions, warnings: string[]): MeshObject[] {
   if (depth > MAX_INPUT_DEPTH) throw new StrataError('UNSUPPORTED_FORMAT', 'the input is nested too deeply');
-  if (input instanceof Uint8Array) return loadModelBytes(input);
-  if (input instanceof ArrayBuffer) return loadModelBytes(new Uint8Array(input));
-  if (input instanceof DataView) return loadModelBytes(new Uint8Array(input.buffer, input.byteOffset, input.byteLength));
+  if (input instanceof Uint8Array) return loadModelBytes(input, undefined, opts);
+  if (input instanceof ArrayBuffer) return loadModelBytes(new Uint8Array(input), undefined, opts);
+  if (input instanceof DataView) return loadModelBytes(new Uint8Array(input.buffer, input.byteOffset, input.byteLength), undefined, opts);
   if (typeof input === 'string') {
     if (/^\s*solid(\s|$)/i.test(input.slice(0, 256))) return parseStl(new TextEncoder().encode(input));
     if (/^\s*(v|vn|vt|f|o|g|mtllib|usemtl|#)/m.test(input.slice(0, 4096))) return parseObj(input);
@@ -72,11 +108,20 @@ function convert(input: unknown, depth: number): MeshObject[] {
     if (input.length > 0 && input.every((v) => typeof v === 'number')) {
       throw new StrataError('UNSUPPORTED_FORMAT', 'got an array of numbers: pass { positions, indices } for raw arrays');
     }
-    return input.flatMap((item) => convert(item, depth + 1));
+    return input.flatMap((item) => convert(item, depth + 1, opts, warnings));
   }
   if (typeof input === 'object' && input !== null) {
     const o = input as Record<string, unknown>;
-    if (isThreeLike(o)) return fromThree(o);
+    if (isThreeLike(o)) {
+      const objects = fromThree(o);
+      if (opts.upAxis !== 'y' && threeLooksYUp(o)) {
+        warnings.push(
+          "the three.js scene's up axis is +Y (three.js's default), but it is sliced with Z up, so a Y-up scene lies on its side: " +
+            "pass upAxis: 'y' to stand it up, or set the scene's up to (0, 0, 1) if it is modelled Z-up",
+        );
+      }
+      return objects;
+    }
     if ('positions' in o) return [fromArrays(o as unknown as RawMeshArrays, typeof o.name === 'string' ? o.name : 'mesh')];
     if (typeof o.mesh === 'object' && o.mesh !== null && 'positions' in o.mesh) {
       const name = typeof o.name === 'string' && o.name !== '' ? o.name : 'mesh';

@@ -5,6 +5,7 @@
 import { StrataError } from '../errors.js';
 import { printable } from './printable.js';
 import { GrowableF64, GrowableU32 } from './growable.js';
+import { MAX_MODEL_TRIANGLES, MAX_MODEL_VERTICES, tooManyTriangles, tooManyVertices } from './limits.js';
 import type { MeshObject } from './types.js';
 import { weld } from './weld.js';
 
@@ -27,6 +28,7 @@ export function parseObj(input: string | Uint8Array, name = 'model'): MeshObject
   /** Largest positive index seen (1-based), checked against the vertex count at the end. */
   let maxIndex = 0;
   let maxIndexLine = 0;
+  let triangles = 0;
 
   let lineNo = 0;
   let pos = 0;
@@ -54,6 +56,7 @@ export function parseObj(input: string | Uint8Array, name = 'model'): MeshObject
         fail(lineNo, `vertex "${clip(line.trim())}" has a coordinate that is not a number`);
       }
       verts.push3(x, y, z);
+      if (verts.length > 3 * MAX_MODEL_VERTICES) tooManyVertices('OBJ');
     } else if (c0 === 102 /* f */) {
       const t = tokens(line);
       if (t.length < 3) fail(lineNo, `a face needs at least 3 vertices, found ${t.length}`);
@@ -78,6 +81,8 @@ export function parseObj(input: string | Uint8Array, name = 'model'): MeshObject
         poly.push(v);
       }
       const g = current.corners;
+      triangles += poly.length - 2;
+      if (triangles > MAX_MODEL_TRIANGLES) tooManyTriangles('OBJ');
       for (let k = 1; k + 1 < poly.length; k++) g.push3(poly[0], poly[k], poly[k + 1]);
     } else if (c0 === 111 /* o */ || c0 === 103 /* g */) {
       const groupName = printable(line.trim(), 200);

@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { IDENTITY_LINEAR, axisRotation, isIdentityLinear, linearBounds, mul3, placeObjects, rotationBetween } from './placement.js';
-import { placeOnBed } from './place.js';
+import { placeModels } from './place.js';
 import { prepareMesh } from './prepare.js';
 import type { MeshObject } from './types.js';
 
@@ -13,10 +13,10 @@ function box(): MeshObject {
   return { name: 'box', mesh: { positions, indices } };
 }
 
-test('identity placement at the bed centre gives the same vertices as placeOnBed centring', () => {
+test('identity placement at the bed centre gives the same vertices as placeModels centring', () => {
   const o = box();
   const [placed] = placeObjects([o], { linear: IDENTITY_LINEAR, center: [110, 110] });
-  const ref = placeOnBed(o.mesh, { center: true, bedWidth: 220, bedLength: 220, bedHeight: 250, originAtCenter: false }).mesh;
+  const ref = placeModels([{ name: 'box', objects: [o] }], { center: true, bedWidth: 220, bedLength: 220, bedHeight: 250, originAtCenter: false }).objects[0].mesh;
   assert.deepEqual(Array.from(placed.mesh.positions), Array.from(ref.positions));
   assert.ok(isIdentityLinear(IDENTITY_LINEAR) && !isIdentityLinear([0, -1, 0, 1, 0, 0, 0, 0, 1]));
 });

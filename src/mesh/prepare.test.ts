@@ -8,8 +8,9 @@ import { prepareMesh } from './prepare.js';
 import { parseStl } from './stl.js';
 import type { Mesh } from './types.js';
 import { weld } from './weld.js';
+import { MODELS_DIR } from '../e2e/models-dir.js';
 
-const MODELS = process.env.STRATA_MODELS ?? '/work/shared/models';
+const MODELS = MODELS_DIR;
 const load = (f: string): Mesh => parseStl(new Uint8Array(readFileSync(join(MODELS, f))), f)[0].mesh;
 
 test('stanford-bunny.stl: 223 open edges, warned about', () => {

@@ -6,8 +6,9 @@ import { gunzipSync } from 'node:zlib';
 import { StrataError } from '../errors.js';
 import { parseStl } from './stl.js';
 import type { Mesh } from './types.js';
+import { MODELS_DIR } from '../e2e/models-dir.js';
 
-const MODELS = process.env.STRATA_MODELS ?? '/work/shared/models';
+const MODELS = MODELS_DIR;
 const read = (f: string): Uint8Array => new Uint8Array(readFileSync(join(MODELS, f)));
 
 function size(mesh: Mesh): number[] {
@@ -36,7 +37,7 @@ function throwsStrata(fn: () => unknown, code?: string, re?: RegExp): void {
   });
 }
 
-// Triangle counts and bounding-box sizes from /work/shared/models/SOURCES.md.
+// Triangle counts and bounding-box sizes from the shared models' SOURCES.md.
 const SHARED: [string, number, number[]][] = [
   ['CalibrationCube.stl', 136, [20, 20, 20]],
   ['HollowCalibrationCube.stl', 160, [20, 20, 20]],

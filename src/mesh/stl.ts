@@ -5,6 +5,7 @@
 import { StrataError } from '../errors.js';
 import { printable } from './printable.js';
 import { GrowableF32 } from './growable.js';
+import { MAX_MODEL_TRIANGLES, tooManyTriangles } from './limits.js';
 import type { MeshObject } from './types.js';
 import { weld } from './weld.js';
 
@@ -52,6 +53,7 @@ function looksAscii(b: Uint8Array): boolean {
 
 function readBinary(bytes: Uint8Array, count: number, name: string): MeshObject {
   if (count === 0) throw new StrataError('EMPTY_MODEL', 'the STL file holds no triangles');
+  if (count > MAX_MODEL_TRIANGLES) tooManyTriangles('binary STL', count);
   const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
   const positions = new Float32Array(count * 9);
   for (let t = 0, o = 96, p = 0; t < count; t++, o += 50, p += 9) {
@@ -116,6 +118,7 @@ export function parseAsciiStl(text: string, name = 'model'): MeshObject[] {
   let facetStart = 0;
   const facet: number[] = [];
   let solids = 0;
+  let triangles = 0;
 
   const finishSolid = (): void => {
     if (tris !== null && tris.length > 0) {
@@ -154,6 +157,8 @@ export function parseAsciiStl(text: string, name = 'model'): MeshObject[] {
       if (nv < 3) fail(`a facet has ${nv} vertices; a triangle needs 3`, facetStart);
       const t = tris;
       if (t === null) return fail('"endfacet" outside a solid');
+      triangles += nv - 2;
+      if (triangles > MAX_MODEL_TRIANGLES) tooManyTriangles('ASCII STL');
       for (let k = 1; k + 1 < nv; k++) {
         t.push3(facet[0], facet[1], facet[2]);
         t.push3(facet[k * 3], facet[k * 3 + 1], facet[k * 3 + 2]);

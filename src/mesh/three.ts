@@ -1,9 +1,12 @@
 /**
  * three.js input without depending on three.js: duck-typed BufferGeometry, Mesh, Group, Scene.
- * Every mesh in the tree becomes one MeshObject (instanced meshes: one per instance), with its
- * world transform applied. Lines, points and other non-mesh objects are skipped.
+ * Every visible mesh in the tree becomes one MeshObject (instanced meshes: one per instance), with
+ * its world transform applied. Lines, points and other non-mesh objects are skipped, and so are
+ * objects with `visible === false` and everything under them (as three.js does not draw them).
+ * Coordinates are taken as they are (Z up); `upAxis: 'y'` turns a Y-up scene when it is placed.
  */
 import { StrataError } from '../errors.js';
+import { MAX_MODEL_TRIANGLES } from './limits.js';
 import { printable } from './printable.js';
 import { compose, determinant, fromColumnMajor4x4, identity, transformPoints, type Affine } from './transform.js';
 import type { MeshObject } from './types.js';
@@ -12,7 +15,7 @@ import { weld } from './weld.js';
 type Dict = Record<string, unknown>;
 
 /** Most triangles accepted from one scene. */
-export const MAX_THREE_TRIANGLES = 20_000_000;
+export const MAX_THREE_TRIANGLES = MAX_MODEL_TRIANGLES;
 const MAX_TREE_DEPTH = 256;
 
 function isDict(v: unknown): v is Dict {
@@ -38,6 +41,16 @@ export function isThreeLike(v: unknown): boolean {
   );
 }
 
+/**
+ * Whether the object says it is Y-up: its `up` vector is +Y, three.js's default (`Object3D.DEFAULT_UP`),
+ * which a Z-up application changes to (0, 0, 1).
+ */
+export function threeLooksYUp(object: unknown): boolean {
+  if (!isDict(object) || !isDict(object.up)) return false;
+  const { x, y, z } = object.up;
+  return x === 0 && y === 1 && z === 0;
+}
+
 export function fromThree(object: unknown): MeshObject[] {
   if (!isDict(object)) throw new StrataError('UNSUPPORTED_FORMAT', 'fromThree expects a three.js Object3D or BufferGeometry');
   if (isThreeGeometry(object)) {
@@ -53,6 +66,7 @@ export function fromThree(object: unknown): MeshObject[] {
   const out: MeshObject[] = [];
   const seen = new Set<unknown>();
   let triangles = 0;
+  let hidden = 0;
   const add = (name: string, geometry: Dict, m: Affine): void => {
     const mesh = geometryToMesh(geometry, m, name);
     triangles += mesh.indices.length / 3;
@@ -66,6 +80,10 @@ export function fromThree(object: unknown): MeshObject[] {
     if (seen.has(node)) return;
     if (depth > MAX_TREE_DEPTH) throw new StrataError('LIMIT_EXCEEDED', `the scene is nested deeper than ${MAX_TREE_DEPTH} levels`);
     seen.add(node);
+    if (node.visible === false) {
+      hidden++;
+      return;
+    }
     const composed = compose(localMatrix(node), parentWorld);
     const world = useWorld ? (matrixOf(node.matrixWorld) ?? composed) : composed;
     if (node.isMesh && isDict(node.geometry)) {
@@ -87,7 +105,9 @@ export function fromThree(object: unknown): MeshObject[] {
     }
   };
   visit(object, identity(), 0);
-  if (out.length === 0) throw new StrataError('EMPTY_MODEL', 'the three.js object holds no meshes with triangles');
+  if (out.length === 0) {
+    throw new StrataError('EMPTY_MODEL', `the three.js object holds no ${hidden ? 'visible ' : ''}meshes with triangles${hidden ? ` (${hidden} hidden object${hidden === 1 ? ' is' : 's are'} skipped)` : ''}`);
+  }
   return out;
 }
 

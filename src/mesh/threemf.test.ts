@@ -9,8 +9,9 @@ import { prepareMesh } from './prepare.js';
 import { parseStl } from './stl.js';
 import { parse3mf } from './threemf.js';
 import type { Mesh } from './types.js';
+import { MODELS_DIR } from '../e2e/models-dir.js';
 
-const MODELS = process.env.STRATA_MODELS ?? '/work/shared/models';
+const MODELS = MODELS_DIR;
 
 function throwsStrata(fn: () => unknown, code: string, re?: RegExp): void {
   assert.throws(fn, (e: unknown) => {

@@ -1,18 +1,20 @@
 /**
  * 3MF reader: every <build><item> becomes one MeshObject in millimetres, with the item transform
  * and any (nested) component transforms applied. Objects in other model parts (production
- * extension p:path) are followed. Colours, materials and other extensions are ignored.
+ * extension p:path) are followed; only the parts the build reaches are unpacked, within
+ * `maxInflatedBytes` (threemf-package.ts, zip.ts). Colours, materials and other extensions are ignored.
  */
 import { StrataError } from '../errors.js';
 import { compose, determinant, identity, transformPoints, type Affine } from './transform.js';
 import { parseModelPart, type ModelObject, type ModelPart, type ObjectRef } from './threemf-model.js';
+import { MAX_MODEL_TRIANGLES } from './limits.js';
 import { printable } from './printable.js';
-import { openPackage } from './threemf-package.js';
+import { DEFAULT_INFLATE_BYTES, openPackage } from './threemf-package.js';
 import type { MeshObject } from './types.js';
 import { weld } from './weld.js';
 
 /** Most triangles a 3MF may expand to (components can instance an object many times). */
-export const MAX_3MF_TRIANGLES = 20_000_000;
+export const MAX_3MF_TRIANGLES = MAX_MODEL_TRIANGLES;
 /** Deepest component nesting followed. */
 const MAX_COMPONENT_DEPTH = 32;
 
@@ -21,13 +23,18 @@ interface Size {
   triangles: number;
 }
 
-export function parse3mf(bytes: Uint8Array, name = 'model'): MeshObject[] {
-  const pkg = openPackage(bytes);
+export interface ThreeMfOptions {
+  /** Most bytes the referenced parts may unpack to together (default 512 MiB). */
+  maxInflatedBytes?: number;
+}
+
+export function parse3mf(bytes: Uint8Array, name = 'model', opts: ThreeMfOptions = {}): MeshObject[] {
+  const pkg = openPackage(bytes, { maxBytes: opts.maxInflatedBytes ?? DEFAULT_INFLATE_BYTES, setting: 'inflateBudget' });
   const parsed = new Map<string, ModelPart>();
   const part = (key: string): ModelPart => {
     let p = parsed.get(key);
     if (p === undefined) {
-      const data = pkg.parts.get(key);
+      const data = pkg.read(key);
       if (data === undefined) throw new StrataError('BAD_FILE', `3MF: a component refers to part /${printable(key)}, which is not in the archive`);
       p = parseModelPart(data, key);
       parsed.set(key, p);

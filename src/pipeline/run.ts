@@ -152,6 +152,12 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
   let meshes: PreparedMesh[] | null = null;
   // with workers, the calling thread uses the copy it shares with them
   const prepared = () => (meshes ??= objects.map((o) => (workers > 0 ? sharePrepared(prepareForSlicing(o.mesh)) : prepareForSlicing(o.mesh))));
+  // each object's mesh made ready for slicing, pausing between objects
+  for (let k = 0; k < objects.length && workers === 0; k++) {
+    meshes ??= [];
+    meshes.push(prepareForSlicing(objects[k].mesh));
+    await pacer.pause();
+  }
   const pool = workers > 0 ? await createPool(workers, prepared, cfg, opts.custom, opts.started) : null;
   if (!pool && opts.started) await releaseWorkers(opts.started);
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });

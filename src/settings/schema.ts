@@ -6,13 +6,31 @@
  */
 import { PATTERN_IDS } from '../infill/types.js';
 
-export type Unit = 'mm' | 'mm²' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '';
+export type Unit = 'mm' | 'mm²' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '×' | 'MiB' | '';
+/** The stage a setting affects. `runtime` settings change how a slice runs, never the G-code it makes. */
 export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' | 'support' | 'adhesion' | 'travel' | 'cooling' | 'gcode' | 'runtime';
+
+/**
+ * An input a setting needs before it can change the output, beyond other settings (`onlyWith`):
+ * `several-models` (arranging models on the bed), `off-centre-model` (a model not at the bed centre),
+ * `thin-walls` (a part whose layers are walls only, so one layer ends next to where the next starts),
+ * `overhangs` (a part with overhangs: a bridge between two pillars, a cantilever over a ledge, a slope),
+ * `custom-infill` (an IceSL shader or image infill: `customInfill`, `--infill-shader`,
+ * `--infill-image`), `custom-image-infill` (an image infill).
+ */
+export type SettingNeed = 'several-models' | 'off-centre-model' | 'thin-walls' | 'overhangs' | 'custom-infill' | 'custom-image-infill';
 
 interface Base {
   unit: Unit;
   description: string;
   stage: Stage;
+  /**
+   * The setting matters only while these other settings have these values (e.g. brimWidth only with
+   * `{ adhesionType: 'brim' }`). UIs show it only then; the every-flag CLI test sets them first.
+   */
+  onlyWith?: Readonly<Record<string, string | number | boolean>>;
+  /** The setting matters only with this kind of input (see SettingNeed). */
+  needs?: SettingNeed;
 }
 export interface NumberDef extends Base {
   type: 'number' | 'integer';
@@ -38,6 +56,8 @@ export interface StringDef extends Base {
   maxLength: number;
   /** When set, a value must match it (the description says the form). */
   pattern?: RegExp;
+  /** With a pattern: one valid value other than the default, for UIs and the every-flag test. */
+  example?: string;
 }
 export type SettingDef = NumberDef | BooleanDef | EnumDef | StringDef;
 
@@ -91,6 +111,13 @@ const str = (def: string, stage: Stage, description: string, maxLength = 65536, 
   ...(pattern ? { pattern } : {}),
 });
 
+/** A definition that matters only when `onlyWith` holds (and, optionally, with a `needs` input). */
+const when = <D extends SettingDef>(def: D, onlyWith: Readonly<Record<string, string | number | boolean>> | null, needs?: SettingNeed): D => ({
+  ...def,
+  ...(onlyWith ? { onlyWith } : {}),
+  ...(needs ? { needs } : {}),
+});
+
 /** `WxH` or `WxH/FORMAT` (PNG, QOI, JPG), comma-separated; empty for none. Sizes 1..1024 px are checked later. */
 const THUMBNAIL_LIST = /^\s*(?:\d{1,4}\s*x\s*\d{1,4}(?:\s*\/\s*(?:png|qoi|jpg|jpeg))?\s*(?:,\s*\d{1,4}\s*x\s*\d{1,4}(?:\s*\/\s*(?:png|qoi|jpg|jpeg))?\s*)*)?$/i;
 
@@ -117,14 +144,26 @@ export const SCHEMA = {
   lineWidth: optNum(0.1, 3, 'mm', 'walls', 'Extrusion line width. Empty (null) = nozzleDiameter.'),
   firstLayerLineWidth: optNum(0.1, 3, 'mm', 'walls', 'Line width on the first layer. Empty (null) = lineWidth.'),
   meshTolerance: num(0.025, 0.0005, 0.5, 'mm', 'slice', 'Outlines are simplified to this deviation before offsetting (CuraEngine uses the same 0.025 mm).'),
-  center: bool(true, 'mesh', 'Place the models (kept together) on the bed centre; false keeps their coordinates.'),
+  center: bool(true, 'mesh', 'Arrange the models on the bed around its centre; false keeps their own XY coordinates (a model that leaves the bed is an error).'),
+
+  // ── model placement and input limits ─────────────────────────────────────────
+  upAxis: enm(['z', 'y'] as const, 'z', 'mesh', 'The axis that points up in the input: z (3D printing, CAD) or y (three.js scenes, many OBJ and glTF exports), turned Z-up before slicing.'),
+  rotateX: num(0, -360, 360, '°', 'mesh', 'Turn each model about the X axis through its centre (right-handed, counter-clockwise looking down the axis), first.'),
+  rotateY: num(0, -360, 360, '°', 'mesh', 'Turn each model about the Y axis, after rotateX.'),
+  rotateZ: num(0, -360, 360, '°', 'mesh', 'Turn each model about the vertical Z axis, after rotateX and rotateY.'),
+  scale: num(1, 0.001, 1000, '×', 'mesh', 'Scale each model by this factor about its centre, after rotating (2 = twice the size).'),
+  scaleX: optNum(0.001, 1000, '×', 'mesh', 'Scale factor along the bed X axis. Empty (null) = scale.'),
+  scaleY: optNum(0.001, 1000, '×', 'mesh', 'Scale factor along the bed Y axis. Empty (null) = scale.'),
+  scaleZ: optNum(0.001, 1000, '×', 'mesh', 'Scale factor along the vertical Z axis. Empty (null) = scale.'),
+  objectSpacing: when(num(6, 0, 100, 'mm', 'mesh', 'Gap between models arranged on the bed (a brim adds its width on each side).'), { center: true }, 'several-models'),
+  inflateBudget: int(512, 1, 65536, 'MiB', 'runtime', 'Most data a 3MF archive (all the model parts it references) or an infill image may unpack to; bigger ones are refused before they are unpacked. Raise it for very large 3MF models.'),
 
   // ── walls ────────────────────────────────────────────────────────────────────
   shellWallThickness: num(0.8, 0, 20, 'mm', 'walls', 'Total wall thickness; the wall count is this over the line width, rounded.'),
   wallCount: optNum(0, 50, 'count', 'walls', 'Number of walls; overrides shellWallThickness when set.', 'integer'),
   wallOrder: enm(['inner-first', 'outer-first'] as const, 'inner-first', 'walls', 'Print inner walls before the outer wall (better surface) or the outer wall first (better dimensions).'),
   seamPosition: enm(['aligned', 'nearest', 'rear', 'random'] as const, 'aligned', 'walls', 'Where each wall loop starts: aligned on a sharp corner, nearest to the nozzle, at the rear, or random (seeded).'),
-  randomSeed: int(1, 0, 2147483647, '', 'walls', 'Seed for random seams: the same seed gives the same G-code.'),
+  randomSeed: when(int(1, 0, 2147483647, '', 'walls', 'Seed for random seams: the same seed gives the same G-code.'), { seamPosition: 'random' }),
 
   // ── skin ─────────────────────────────────────────────────────────────────────
   shellSkinThickness: num(0.8, 0, 20, 'mm', 'skin', 'Thickness of solid top and bottom skin; the layer count is this over the layer height, rounded up.'),
@@ -137,11 +176,11 @@ export const SCHEMA = {
   // ── infill ───────────────────────────────────────────────────────────────────
   infillDensity: num(20, 0, 100, '%', 'infill', 'Sparse infill density: extruded area over region area.'),
   infillPattern: enm(PATTERN_IDS, 'grid', 'infill', 'Sparse infill pattern.'),
-  infillPatternCentering: enm(['object', 'global'] as const, 'object', 'infill', 'Centre the pattern on each object or on the build plate.'),
+  infillPatternCentering: when(enm(['object', 'global'] as const, 'object', 'infill', 'Centre the pattern on each object or on the build plate.'), null, 'off-centre-model'),
   infillAngle: num(45, -180, 180, '°', 'infill', 'Base direction of the infill lines.'),
   infillOverlap: num(25, 0, 100, '%', 'infill', 'How far infill reaches into the innermost wall, % of the line width.'),
-  infillImagePixelSize: num(0.1, 0.001, 10, 'mm', 'infill', "Size of one pixel of a custom infill image (cells.png), IceSL's labeling_mm_per_pixel."),
-  infillShaderResolution: optNum(0.005, 2, 'mm', 'infill', 'Grid spacing at which a custom infill shader is sampled before crossings are refined by bisection. Empty (null) = nozzleDiameter / 4 for shaders, one pixel for images.'),
+  infillImagePixelSize: when(num(0.1, 0.001, 10, 'mm', 'infill', "Size of one pixel of a custom infill image (cells.png), IceSL's labeling_mm_per_pixel."), null, 'custom-image-infill'),
+  infillShaderResolution: when(optNum(0.005, 2, 'mm', 'infill', 'Grid spacing at which a custom infill shader is sampled before crossings are refined by bisection. Empty (null) = nozzleDiameter / 4 for shaders, one pixel for images.'), null, 'custom-infill'),
   infillConnect: bool(true, 'infill', 'Join infill line ends along the region boundary where that avoids a travel.'),
 
   // ── speeds ───────────────────────────────────────────────────────────────────
@@ -156,12 +195,12 @@ export const SCHEMA = {
   // ── travel and retraction ────────────────────────────────────────────────────
   combing: bool(true, 'travel', 'Keep travels inside the current island, around holes, where possible.'),
   retractionEnabled: bool(true, 'travel', 'Retract filament before travels that leave the island or are long.'),
-  retractionDistance: num(5, 0, 20, 'mm', 'travel', 'Filament pulled back per retraction.'),
-  retractionSpeed: num(45, 1, 200, 'mm/s', 'travel', 'Retraction and prime speed.'),
-  retractionExtraPrime: num(0, 0, 5, 'mm', 'travel', 'Extra filament pushed after a retraction.'),
-  retractionMinTravel: num(1.5, 0, 100, 'mm', 'travel', 'Travels shorter than this inside one island do not retract.'),
-  retractOnLayerChange: bool(true, 'travel', 'Retract when moving to the next layer.'),
-  zHop: num(0, 0, 10, 'mm', 'travel', 'Lift the nozzle by this much during retracted travels (0 = off).'),
+  retractionDistance: when(num(5, 0, 20, 'mm', 'travel', 'Filament pulled back per retraction.'), { retractionEnabled: true }),
+  retractionSpeed: when(num(45, 1, 200, 'mm/s', 'travel', 'Retraction and prime speed.'), { retractionEnabled: true }),
+  retractionExtraPrime: when(num(0, 0, 5, 'mm', 'travel', 'Extra filament pushed after a retraction.'), { retractionEnabled: true }),
+  retractionMinTravel: when(num(1.5, 0, 100, 'mm', 'travel', 'Travels shorter than this inside one island do not retract.'), { retractionEnabled: true }),
+  retractOnLayerChange: when(bool(true, 'travel', 'Retract when moving to the next layer, even for a travel too short to retract otherwise.'), { retractionEnabled: true }, 'thin-walls'),
+  zHop: when(num(0, 0, 10, 'mm', 'travel', 'Lift the nozzle by this much during retracted travels (0 = off).'), { retractionEnabled: true }),
 
   // ── cooling and temperature ──────────────────────────────────────────────────
   fanSpeed: num(100, 0, 100, '%', 'cooling', 'Part-cooling fan from the second layer on.'),
@@ -180,11 +219,11 @@ export const SCHEMA = {
   // ── progress, object labels, thumbnails ──────────────────────────────────────
   progressM73: bool(true, 'gcode', 'Write M73 P<percent> R<minutes left> from the time estimate at every layer start, and M73 P100 R0 after the last layer.'),
   labelObjects: enm(['auto', 'off', 'comments', 'firmware'] as const, 'auto', 'gcode', "Label each object's moves so a host or the firmware can cancel one mid-print: firmware = Klipper EXCLUDE_OBJECT_DEFINE/START/END, or M486 S/T (Marlin, RepRap) with the comments; comments = only `; printing object NAME` / `; stop printing object NAME` (OctoPrint Cancelobject); auto = firmware for Klipper, comments otherwise."),
-  thumbnails: str('', 'gcode', 'Preview images of the plate written into the G-code, as `WxH` or `WxH/FORMAT` (PNG, QOI or JPG) separated by commas, e.g. `32x32,300x300` or `16x16/QOI,313x173/QOI,380x285/PNG`. Empty = none.', 512, THUMBNAIL_LIST),
+  thumbnails: { ...str('', 'gcode', 'Preview images of the plate written into the G-code, as `WxH` or `WxH/FORMAT` (PNG, QOI or JPG) separated by commas, e.g. `32x32,300x300` or `16x16/QOI,313x173/QOI,380x285/PNG`. Empty = none.', 512, THUMBNAIL_LIST), example: '32x32,300x300' },
 
   // ── arc fitting ──────────────────────────────────────────────────────────────
   arcFitting: bool(false, 'gcode', 'Replace runs of short segments along curves by G2/G3 arcs (the firmware must support arcs: Marlin ARC_SUPPORT, Klipper [gcode_arcs], RepRapFirmware, Prusa and Bambu firmware).'),
-  arcTolerance: num(0.01, 0.001, 0.2, 'mm', 'gcode', 'Largest distance between an arc and the points of the path it replaces (the middle of each of its segments may be twice as far).'),
+  arcTolerance: when(num(0.01, 0.001, 0.2, 'mm', 'gcode', 'Largest distance between an arc and the points of the path it replaces (the middle of each of its segments may be twice as far).'), { arcFitting: true }),
 
   // ── firmware retraction and pressure advance ─────────────────────────────────
   firmwareRetraction: bool(false, 'travel', "Retract and prime with G10/G11, using the firmware's own lengths and speeds (Marlin FWRETRACT, Klipper [firmware_retraction], RepRapFirmware M207)."),
@@ -199,58 +238,58 @@ export const SCHEMA = {
   maxAccelerationX: optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the X axis (M201 X). Empty (null) = no limit.'),
   maxAccelerationY: optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the Y axis (M201 Y). Empty (null) = no limit.'),
   maxAccelerationZ: optNum(1, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the Z axis (M201 Z). Empty (null) = acceleration.'),
-  maxAccelerationE: optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the extruder (M201 E). Empty (null) = no limit.'),
+  maxAccelerationE: when(optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the extruder (M201 E). Empty (null) = no limit.'), { machineLimits: 'write' }),
   travelAcceleration: optNum(10, 100000, 'mm/s²', 'machine', 'Acceleration of travel moves (M204 T). Empty (null) = acceleration.'),
   retractAcceleration: optNum(10, 100000, 'mm/s²', 'machine', 'Acceleration of retractions and primes (M204 R). Empty (null) = maxAccelerationE, else acceleration.'),
 
   // ── adhesion ─────────────────────────────────────────────────────────────────
   adhesionType: enm(['skirt', 'brim', 'raft', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, a raft under it, or none.'),
-  skirtLoops: int(1, 1, 20, 'count', 'adhesion', 'Skirt loops.'),
-  skirtDistance: num(3, 0, 50, 'mm', 'adhesion', 'Gap between the skirt and the print.'),
-  brimWidth: num(8, 0, 50, 'mm', 'adhesion', 'Brim width.'),
+  skirtLoops: when(int(1, 1, 20, 'count', 'adhesion', 'Skirt loops.'), { adhesionType: 'skirt' }),
+  skirtDistance: when(num(3, 0, 50, 'mm', 'adhesion', 'Gap between the skirt and the print.'), { adhesionType: 'skirt' }),
+  brimWidth: when(num(8, 0, 50, 'mm', 'adhesion', 'Brim width.'), { adhesionType: 'brim' }),
 
   // ── raft ─────────────────────────────────────────────────────────────────────
-  raftMargin: num(3, 0, 50, 'mm', 'adhesion', 'How far the raft reaches beyond the first layer of the print (and its support).'),
-  raftBaseThickness: num(0.3, 0.05, 1.5, 'mm', 'adhesion', 'Thickness of the raft base layer (thick, wide lines on the bed).'),
-  raftBaseLineWidth: optNum(0.2, 3, 'mm', 'adhesion', 'Line width of the raft base. Empty (null) = 2 × nozzleDiameter.'),
-  raftBaseLineSpacing: optNum(0.2, 10, 'mm', 'adhesion', 'Distance between raft base lines. Empty (null) = 2 × the base line width.'),
-  raftInterfaceLayers: int(1, 0, 10, 'count', 'adhesion', 'Raft layers between the base and the surface, with lines across those below.'),
-  raftInterfaceLineSpacing: optNum(0.2, 10, 'mm', 'adhesion', 'Distance between raft interface lines. Empty (null) = 2.5 × lineWidth.'),
-  raftSurfaceLayers: int(2, 0, 10, 'count', 'adhesion', 'Solid raft layers the print stands on.'),
-  raftAirGap: num(0.2, 0, 1, 'mm', 'adhesion', 'Vertical gap between the raft surface and the first layer of the print, so the raft comes off.'),
-  raftSpeed: num(20, 1, 1000, 'mm/s', 'adhesion', 'Speed of the raft base and interface layers (the surface uses skinSpeed).'),
+  raftMargin: when(num(3, 0, 50, 'mm', 'adhesion', 'How far the raft reaches beyond the first layer of the print (and its support).'), { adhesionType: 'raft' }),
+  raftBaseThickness: when(num(0.3, 0.05, 1.5, 'mm', 'adhesion', 'Thickness of the raft base layer (thick, wide lines on the bed).'), { adhesionType: 'raft' }),
+  raftBaseLineWidth: when(optNum(0.2, 3, 'mm', 'adhesion', 'Line width of the raft base. Empty (null) = 2 × nozzleDiameter.'), { adhesionType: 'raft' }),
+  raftBaseLineSpacing: when(optNum(0.2, 10, 'mm', 'adhesion', 'Distance between raft base lines. Empty (null) = 2 × the base line width.'), { adhesionType: 'raft' }),
+  raftInterfaceLayers: when(int(1, 0, 10, 'count', 'adhesion', 'Raft layers between the base and the surface, with lines across those below.'), { adhesionType: 'raft' }),
+  raftInterfaceLineSpacing: when(optNum(0.2, 10, 'mm', 'adhesion', 'Distance between raft interface lines. Empty (null) = 2.5 × lineWidth.'), { adhesionType: 'raft' }),
+  raftSurfaceLayers: when(int(2, 0, 10, 'count', 'adhesion', 'Solid raft layers the print stands on.'), { adhesionType: 'raft' }),
+  raftAirGap: when(num(0.2, 0, 1, 'mm', 'adhesion', 'Vertical gap between the raft surface and the first layer of the print, so the raft comes off.'), { adhesionType: 'raft' }),
+  raftSpeed: when(num(20, 1, 1000, 'mm/s', 'adhesion', 'Speed of the raft base and interface layers (the surface uses skinSpeed).'), { adhesionType: 'raft' }),
 
   // ── support ──────────────────────────────────────────────────────────────────
-  supportEnabled: bool(false, 'support', 'Print support under overhangs.'),
-  supportType: enm(['normal', 'tree'] as const, 'normal', 'support', 'Support shape: straight columns under each overhang (normal), or trees whose branches merge on their way down (less material, easier to remove).'),
-  supportPlacement: enm(['everywhere', 'buildPlate'] as const, 'everywhere', 'support', 'Where support may stand: anywhere (also on the part, with a floor), or only on the build plate.'),
-  supportThreshold: num(50, 0, 89, '°', 'support', 'Overhang angle from vertical beyond which a surface gets support.'),
-  supportMinArea: num(0.5, 0, 1000, 'mm²', 'support', 'Overhang areas smaller than this on a layer get no support (specks).'),
-  supportSkipBridges: num(0, 0, 500, 'mm', 'support', 'Overhangs held at both sides by the layer below that span at most this far are bridged, not supported (0 = support every overhang).'),
-  supportPattern: enm(['zigzag', 'lines', 'grid'] as const, 'zigzag', 'support', 'Pattern of the support body: parallel lines joined at their ends (zigzag), separate lines, or a grid.'),
-  supportDensity: num(15, 1, 100, '%', 'support', 'Density of the support body.'),
-  supportAngle: num(0, -180, 180, '°', 'support', 'Direction of the support lines (the same on every layer, so they stack).'),
-  supportZGap: optNum(0, 5, 'mm', 'support', 'Vertical gap between the top of the support and the part above it, in whole layers. Empty (null) = one layer.'),
-  supportBottomZGap: optNum(0, 5, 'mm', 'support', 'Vertical gap between the part and support standing on it. Empty (null) = supportZGap.'),
-  supportXYGap: num(0.4, 0, 10, 'mm', 'support', 'Horizontal gap between support and the part beside it (under an overhanging edge support comes closer, to half a support line width).'),
-  supportInterfaceLayers: int(2, 0, 20, 'count', 'support', 'Dense interface layers at the top of the support, under the part (roof).'),
-  supportFloorLayers: optNum(0, 20, 'count', 'support', 'Dense interface layers where support stands on the part (floor). Empty (null) = supportInterfaceLayers.', 'integer'),
-  supportInterfaceDensity: num(70, 10, 100, '%', 'support', 'Density of the interface (roof and floor) lines.'),
-  supportWallCount: optNum(0, 5, 'count', 'support', 'Walls around support areas. Empty (null) = none for normal support, one for tree support.', 'integer'),
-  supportLineWidth: optNum(0.1, 3, 'mm', 'support', 'Line width of support and its interface. Empty (null) = lineWidth.'),
-  supportSpeed: num(50, 1, 1000, 'mm/s', 'support', 'Speed of the support body.'),
-  supportInterfaceSpeed: num(35, 1, 1000, 'mm/s', 'support', 'Speed of the support interface (roof and floor).'),
-  supportTreeBranchAngle: num(40, 5, 80, '°', 'support', 'Tree support: the steepest angle from vertical at which branches lean towards each other as they go down.'),
-  supportTreeTipDiameter: num(0.8, 0.2, 10, 'mm', 'support', 'Tree support: diameter of a branch tip under the part.'),
-  supportTreeBranchDiameter: num(2.5, 0.5, 50, 'mm', 'support', 'Tree support: diameter a branch grows to (trunks where branches merged grow further, by the diameter angle).'),
-  supportTreeDiameterAngle: num(5, 0, 30, '°', 'support', 'Tree support: how fast a merged branch thickens on its way down (angle of its sides from vertical).'),
-  supportTreeTipSpacing: num(3, 0.5, 20, 'mm', 'support', 'Tree support: distance between branch tips under the roof (closer holds the roof better, further apart uses less material).'),
+  supportEnabled: when(bool(false, 'support', 'Print support under overhangs.'), null, 'overhangs'),
+  supportType: when(enm(['normal', 'tree'] as const, 'normal', 'support', 'Support shape: straight columns under each overhang (normal), or trees whose branches merge on their way down (less material, easier to remove).'), { supportEnabled: true }, 'overhangs'),
+  supportPlacement: when(enm(['everywhere', 'buildPlate'] as const, 'everywhere', 'support', 'Where support may stand: anywhere (also on the part, with a floor), or only on the build plate.'), { supportEnabled: true }, 'overhangs'),
+  supportThreshold: when(num(50, 0, 89, '°', 'support', 'Overhang angle from vertical beyond which a surface gets support.'), { supportEnabled: true }, 'overhangs'),
+  supportMinArea: when(num(0.5, 0, 1000, 'mm²', 'support', 'Overhang areas smaller than this on a layer get no support (specks).'), { supportEnabled: true }, 'overhangs'),
+  supportSkipBridges: when(num(0, 0, 500, 'mm', 'support', 'Overhangs held at both sides by the layer below that span at most this far are bridged, not supported (0 = support every overhang).'), { supportEnabled: true }, 'overhangs'),
+  supportPattern: when(enm(['zigzag', 'lines', 'grid'] as const, 'zigzag', 'support', 'Pattern of the support body: parallel lines joined at their ends (zigzag), separate lines, or a grid.'), { supportEnabled: true }, 'overhangs'),
+  supportDensity: when(num(15, 1, 100, '%', 'support', 'Density of the support body.'), { supportEnabled: true }, 'overhangs'),
+  supportAngle: when(num(0, -180, 180, '°', 'support', 'Direction of the support lines (the same on every layer, so they stack).'), { supportEnabled: true }, 'overhangs'),
+  supportZGap: when(optNum(0, 5, 'mm', 'support', 'Vertical gap between the top of the support and the part above it, in whole layers. Empty (null) = one layer.'), { supportEnabled: true }, 'overhangs'),
+  supportBottomZGap: when(optNum(0, 5, 'mm', 'support', 'Vertical gap between the part and support standing on it. Empty (null) = supportZGap.'), { supportEnabled: true }, 'overhangs'),
+  supportXYGap: when(num(0.4, 0, 10, 'mm', 'support', 'Horizontal gap between support and the part beside it (under an overhanging edge support comes closer, to half a support line width).'), { supportEnabled: true }, 'overhangs'),
+  supportInterfaceLayers: when(int(2, 0, 20, 'count', 'support', 'Dense interface layers at the top of the support, under the part (roof).'), { supportEnabled: true }, 'overhangs'),
+  supportFloorLayers: when(optNum(0, 20, 'count', 'support', 'Dense interface layers where support stands on the part (floor). Empty (null) = supportInterfaceLayers.', 'integer'), { supportEnabled: true }, 'overhangs'),
+  supportInterfaceDensity: when(num(70, 10, 100, '%', 'support', 'Density of the interface (roof and floor) lines.'), { supportEnabled: true }, 'overhangs'),
+  supportWallCount: when(optNum(0, 5, 'count', 'support', 'Walls around support areas. Empty (null) = none for normal support, one for tree support.', 'integer'), { supportEnabled: true }, 'overhangs'),
+  supportLineWidth: when(optNum(0.1, 3, 'mm', 'support', 'Line width of support and its interface. Empty (null) = lineWidth.'), { supportEnabled: true }, 'overhangs'),
+  supportSpeed: when(num(50, 1, 1000, 'mm/s', 'support', 'Speed of the support body.'), { supportEnabled: true }, 'overhangs'),
+  supportInterfaceSpeed: when(num(35, 1, 1000, 'mm/s', 'support', 'Speed of the support interface (roof and floor).'), { supportEnabled: true }, 'overhangs'),
+  supportTreeBranchAngle: when(num(40, 5, 80, '°', 'support', 'Tree support: the steepest angle from vertical at which branches lean towards each other as they go down.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeTipDiameter: when(num(0.8, 0.2, 10, 'mm', 'support', 'Tree support: diameter of a branch tip under the part.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeBranchDiameter: when(num(2.5, 0.5, 50, 'mm', 'support', 'Tree support: diameter a branch grows to (trunks where branches merged grow further, by the diameter angle).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeDiameterAngle: when(num(5, 0, 30, '°', 'support', 'Tree support: how fast a merged branch thickens on its way down (angle of its sides from vertical).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeTipSpacing: when(num(3, 0.5, 20, 'mm', 'support', 'Tree support: distance between branch tips under the roof (closer holds the roof better, further apart uses less material).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
 
   // ── bridges and overhangs ────────────────────────────────────────────────────
-  bridgeSpeed: num(25, 1, 1000, 'mm/s', 'skin', 'Speed of skin printed over air (bridges).'),
-  bridgeFlow: num(100, 10, 200, '%', 'skin', 'Flow of bridge lines, % of normal.'),
-  bridgeFanSpeed: num(100, 0, 100, '%', 'cooling', 'Part-cooling fan while printing bridges.'),
-  overhangWallSpeed: num(15, 1, 1000, 'mm/s', 'walls', 'Speed of walls where they hang over nothing on the layer below.'),
+  bridgeSpeed: when(num(25, 1, 1000, 'mm/s', 'skin', 'Speed of skin printed over air (bridges).'), null, 'overhangs'),
+  bridgeFlow: when(num(100, 10, 200, '%', 'skin', 'Flow of bridge lines, % of normal.'), null, 'overhangs'),
+  bridgeFanSpeed: when(num(100, 0, 100, '%', 'cooling', 'Part-cooling fan while printing bridges.'), null, 'overhangs'),
+  overhangWallSpeed: when(num(15, 1, 1000, 'mm/s', 'walls', 'Speed of walls where they hang over nothing on the layer below.'), null, 'overhangs'),
 
   // ── runtime ──────────────────────────────────────────────────────────────────
   threads: int(0, 0, 256, 'count', 'runtime', 'Threads for the per-layer stages (0 = automatic: one per core above two cores, else one). The G-code is the same for any count.'),

@@ -7,9 +7,12 @@
 import { decode } from 'fast-png';
 import { StrataError } from '../errors.js';
 import type { LabelFn } from './label-grid.js';
+import { guardPng, pngDataBytes, readPngHeader } from './png-guard.js';
 
 /** Largest image accepted, pixels. */
 export const MAX_IMAGE_PIXELS = 16_777_216;
+/** Default bound on the memory decoding an image takes (the inflateBudget setting's default), bytes. */
+export const DEFAULT_IMAGE_BYTES = 512 * 1024 * 1024;
 
 export interface CellImage {
   readonly fileName: string;
@@ -24,6 +27,8 @@ export interface CellImage {
 
 export interface ImageLoadOptions {
   fileName?: string;
+  /** Most bytes decoding may take (the unpacked data and the pixels); default 512 MiB. */
+  maxInflatedBytes?: number;
   /** Merge anti-aliased in-between colours (default true). */
   mergeAntialiasing?: boolean;
   /** Blend clusters up to this many pixels are merged (default 16); thin clusters of any size are. */
@@ -34,27 +39,34 @@ function badImage(fileName: string, message: string): StrataError {
   return new StrataError('BAD_IMAGE', `${fileName}: ${message}`);
 }
 
-const SIGNATURE = [137, 80, 78, 71, 13, 10, 26, 10];
-
-/** Read width, height, bit depth and colour type from the IHDR chunk without decoding. */
-function readHeader(bytes: Uint8Array, fileName: string): { width: number; height: number; depth: number; colorType: number } {
-  if (bytes.length < 33 || SIGNATURE.some((b, i) => bytes[i] !== b)) throw badImage(fileName, 'not a PNG file');
-  const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
-  const type = String.fromCharCode(bytes[12], bytes[13], bytes[14], bytes[15]);
-  if (type !== 'IHDR') throw badImage(fileName, 'broken PNG (no IHDR chunk)');
-  return { width: dv.getUint32(16), height: dv.getUint32(20), depth: bytes[24], colorType: bytes[25] };
+/** Bytes decoding the image takes: its unpacked data, the decoded samples and the packed pixels. */
+export function imageDecodeBytes(bytes: Uint8Array, fileName = 'cells.png'): number {
+  const head = readPngHeader(bytes, fileName);
+  return 2 * pngDataBytes(head) + 4 * head.width * head.height;
 }
 
 /** Decode a PNG into packed 0xRRGGBB pixels; converts grey/palette/16-bit, refuses transparency. */
-export function decodeCellsPng(bytes: Uint8Array, fileName = 'cells.png'): { width: number; height: number; pixels: Int32Array; warnings: string[] } {
-  const head = readHeader(bytes, fileName);
+export function decodeCellsPng(
+  bytes: Uint8Array,
+  fileName = 'cells.png',
+  maxInflatedBytes = DEFAULT_IMAGE_BYTES,
+): { width: number; height: number; pixels: Int32Array; warnings: string[] } {
+  const head = readPngHeader(bytes, fileName);
   if (head.width === 0 || head.height === 0) throw badImage(fileName, 'the image is empty');
   if (head.width * head.height > MAX_IMAGE_PIXELS) {
     throw new StrataError('LIMIT_EXCEEDED', `${fileName}: ${head.width} × ${head.height} pixels is more than the ${MAX_IMAGE_PIXELS} allowed`);
   }
+  const cost = imageDecodeBytes(bytes, fileName);
+  if (cost > maxInflatedBytes) {
+    throw new StrataError(
+      'LIMIT_EXCEEDED',
+      `${fileName}: decoding ${head.width} × ${head.height} pixels takes ${Math.ceil(cost / 1048576)} MiB, more than the ${Math.floor(maxInflatedBytes / 1048576)} MiB budget; raise inflateBudget or use a smaller image`,
+    );
+  }
+  const clean = guardPng(bytes, fileName, head);
   let png;
   try {
-    png = decode(bytes);
+    png = decode(clean);
   } catch (e) {
     throw badImage(fileName, `cannot decode PNG (${String((e as Error)?.message ?? e).slice(0, 120)})`);
   }
@@ -272,7 +284,7 @@ export function mergeAntialiased(width: number, height: number, src: Int32Array,
 /** Decode and clean up an infill image. */
 export function loadCellImage(bytes: Uint8Array, opts: ImageLoadOptions = {}): CellImage {
   const fileName = opts.fileName ?? 'cells.png';
-  const dec = decodeCellsPng(bytes, fileName);
+  const dec = decodeCellsPng(bytes, fileName, opts.maxInflatedBytes);
   const warnings = dec.warnings.slice();
   let pixels = dec.pixels;
   let mergedPixels = 0;

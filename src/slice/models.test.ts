@@ -1,4 +1,4 @@
-/** Slicing the shared real models (skipped when /work/shared/models is not there). */
+/** Slicing the shared real models (skipped when ../shared/models is not there, failing under CI). */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { area } from '../geometry/clip.js';

@@ -5,8 +5,9 @@
 import { existsSync, readFileSync } from 'node:fs';
 import { gunzipSync } from 'node:zlib';
 import type { Mesh } from '../mesh/types.js';
+import { inCi, modelPath } from '../e2e/models-dir.js';
 
-export const MODELS_DIR = '/work/shared/models';
+export { MODELS_DIR } from '../e2e/models-dir.js';
 
 /** Weld a triangle soup (9 floats per triangle) by exact float32 bit patterns. */
 export function weldSoup(soup: Float32Array): Mesh {
@@ -63,10 +64,13 @@ export function parseStl(data: Uint8Array): Mesh {
   return weldSoup(Float32Array.from(values.slice(0, values.length - (values.length % 9))));
 }
 
-/** Load a model from the shared models folder (`.gz` is unpacked); null when it is not there. */
+/** Load a model from the shared models folder (`.gz` is unpacked); null when it is not there (an error under CI). */
 export function loadModel(name: string): Mesh | null {
-  const path = `${MODELS_DIR}/${name}`;
-  if (!existsSync(path)) return null;
+  const path = modelPath(name);
+  if (!existsSync(path)) {
+    if (inCi()) throw new Error(`shared model ${path} is missing: under CI the tests fail rather than skip`);
+    return null;
+  }
   let data: Uint8Array = readFileSync(path);
   if (name.endsWith('.gz')) data = gunzipSync(data);
   return parseStl(data);

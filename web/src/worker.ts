@@ -4,10 +4,9 @@
  * The page cancels a slice by ending this worker.
  */
 import { Slicer, StrataError, loadCustomInfill, loadModelBytes, prepareMesh } from '../../src/browser.js';
-import { mergeObjects } from '../../src/mesh/place.js';
+import { mergeObjects, type ModelInput } from '../../src/mesh/place.js';
 import { placeObjects } from '../../src/mesh/placement.js';
 import { planToArrays, transferList } from '../../src/preview/plan-arrays.js';
-import type { MeshObject } from '../../src/mesh/types.js';
 import type { FromWorker, LoadedModel, SliceItem, ToWorker } from './protocol.js';
 
 const scope = globalThis as unknown as {
@@ -66,16 +65,17 @@ function load(fileName: string, bytes: ArrayBuffer): LoadedModel {
 }
 
 /**
- * The slicer's input: an object at the place `strata slice` would put it goes in as read (so the
- * G-code is the CLI's, byte for byte); a placed one is moved to its placement first.
+ * The slicer's input, one model per file (its objects kept together): a file at the place
+ * `strata slice` would put it goes in as read (so the G-code is the CLI's, byte for byte); a placed
+ * one is moved to its placement first.
  */
-function sliceInput(items: readonly SliceItem[]): { input: MeshObject[]; placed: boolean } {
+function sliceInput(items: readonly SliceItem[]): { input: ModelInput[]; placed: boolean } {
   let placed = false;
-  const input = items.flatMap((it) => {
+  const input = items.map((it) => {
     const objects = loadModelBytes(new Uint8Array(it.bytes), it.fileName);
-    if (!it.placement) return objects;
+    if (!it.placement) return { name: it.fileName, objects };
     placed = true;
-    return placeObjects(objects, it.placement);
+    return { name: it.fileName, objects: placeObjects(objects, it.placement) };
   });
   return { input, placed };
 }

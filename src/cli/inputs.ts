@@ -1,0 +1,120 @@
+/**
+ * What the slicing commands read: model files, JSON configs, custom infillers, each recorded so the
+ * output can be checked against them (an output that is one of the inputs is refused).
+ */
+import { readFileSync } from 'node:fs';
+import { basename } from 'node:path';
+import { StrataError } from '../errors.js';
+import { PATTERN_IDS } from '../infill/types.js';
+import { loadModelBytes } from '../mesh/index.js';
+import type { ModelInput } from '../mesh/place.js';
+import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import type { Config } from '../settings/resolve.js';
+import { importProfile } from '../settings/import/index.js';
+import type { SliceOptions } from '../settings/schema.js';
+import { loadInfiller, parseInfillParams } from '../shader/index.js';
+import { iceslInfillersDirs, readInfillersFolder, shippedInfillersDir } from '../shader/node-folder.js';
+import type { ParsedArgs } from './args.js';
+import type { NamedInput } from './output.js';
+
+const MiB = 1024 * 1024;
+
+/** Reads files and remembers which it read. */
+export class InputReader {
+  readonly read: NamedInput[] = [];
+
+  bytes(path: string, what: string): Uint8Array {
+    this.read.push({ path, what });
+    try {
+      return path === '-' ? readFileSync(0) : readFileSync(path);
+    } catch (e) {
+      const code = (e as NodeJS.ErrnoException).code;
+      const why = code === 'ENOENT' ? 'no such file' : code === 'EISDIR' ? 'it is a folder' : code === 'EACCES' ? 'permission denied' : (e as Error).message;
+      throw new StrataError('BAD_FILE', `cannot read ${path}: ${why}`);
+    }
+  }
+
+  text(path: string, what: string): string {
+    return new TextDecoder().decode(this.bytes(path, what));
+  }
+
+  /** One model per file, named after it, within the config's unpack budget. */
+  models(paths: readonly string[], cfg: Config): ModelInput[] {
+    return paths.map((p) => {
+      const name = p === '-' ? 'standard input' : basename(p);
+      const objects = loadModelBytes(this.bytes(p, 'model'), p === '-' ? undefined : basename(p), { maxInflatedBytes: cfg.inflateBudget * MiB });
+      return { name, objects };
+    });
+  }
+
+  /** Settings from a Strata JSON file or another slicer's profile (settings/import); what is left out is in `warnings`. */
+  config(path: string): { settings: Record<string, unknown>; warnings: string[] } {
+    const profile = importProfile(this.text(path, 'config file'), path);
+    return { settings: profile.settings, warnings: profile.warnings };
+  }
+}
+
+export function infillerDirs(args: ParsedArgs): string[] {
+  const extra = typeof args.flags.infillers === 'string' ? args.flags.infillers.split('\n') : [];
+  return [...extra, shippedInfillersDir(), ...iceslInfillersDirs()];
+}
+
+/** A custom infiller named by --infill-shader, --infill-image, or an --infill-pattern that is not built in. */
+async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>, input: InputReader): Promise<CustomInfillSpec | undefined> {
+  let spec: CustomInfillSpec | undefined;
+  const shader = args.flags['infill-shader'];
+  const image = args.flags['infill-image'];
+  if (typeof shader === 'string' && typeof image === 'string') throw new StrataError('BAD_SETTING', '--infill-shader and --infill-image exclude each other');
+  if (typeof shader === 'string') spec = { name: basename(shader), shader: input.text(shader, 'infill shader') };
+  else if (typeof image === 'string') spec = { name: basename(image), image: input.bytes(image, 'infill image') };
+  else if (typeof opts.infillPattern === 'string' && !(PATTERN_IDS as readonly string[]).includes(opts.infillPattern)) {
+    const name = opts.infillPattern;
+    for (const dir of infillerDirs(args)) {
+      const found = (await readInfillersFolder(dir)).find((f) => f.name === name);
+      if (found) {
+        spec = found;
+        break;
+      }
+    }
+    if (!spec) {
+      throw new StrataError('BAD_SETTING', `infillPattern "${name}" is neither a built-in pattern (${PATTERN_IDS.join(', ')}) nor an infiller folder (see strata infillers)`);
+    }
+    delete opts.infillPattern;
+  }
+  const assignments = typeof args.flags['infill-param'] === 'string' ? args.flags['infill-param'].split('\n') : [];
+  const densityShader = args.flags['infill-density-shader'];
+  const densityLayers = args.flags['infill-density-layers'];
+  if (!spec) {
+    if (assignments.length || densityShader || densityLayers) {
+      throw new StrataError('BAD_SETTING', '--infill-param and --infill-density-shader/-layers need a custom infiller (--infill-shader, --infill-image or an infiller --infill-pattern)');
+    }
+    return undefined;
+  }
+  if (assignments.length) spec.params = parseInfillParams(loadInfiller(spec).params, assignments);
+  if (typeof densityShader === 'string') spec.density = { shader: input.text(densityShader, 'density shader'), fileName: basename(densityShader) };
+  else if (typeof densityLayers === 'string') {
+    const list = densityLayers.split(',').map((v) => Number(v.trim()));
+    if (!list.length || list.some((v) => !Number.isFinite(v) || v < 0 || v > 100)) throw new StrataError('BAD_SETTING', '--infill-density-layers expects comma-separated percentages 0-100, one per layer');
+    spec.density = list;
+  }
+  return spec;
+}
+
+/**
+ * The slicer options the command line asks for: configs, presets, settings and a custom infiller.
+ * `warn` hears what an imported profile leaves out.
+ */
+export async function optionsFrom(args: ParsedArgs, input: InputReader, warn: (w: string) => void): Promise<SliceOptions & { customInfill?: CustomInfillSpec }> {
+  const opts: Record<string, unknown> = {};
+  const configs = typeof args.flags.config === 'string' ? args.flags.config.split('\n') : [];
+  for (const f of configs) {
+    const { settings, warnings } = input.config(f);
+    Object.assign(opts, settings);
+    for (const w of warnings) warn(w);
+  }
+  if (typeof args.flags.printer === 'string') opts.printer = args.flags.printer;
+  if (typeof args.flags.filament === 'string') opts.filament = args.flags.filament;
+  Object.assign(opts, args.settings);
+  const customInfill = await customInfillFrom(args, opts, input);
+  return { ...(opts as SliceOptions), ...(customInfill ? { customInfill } : {}) };
+}
