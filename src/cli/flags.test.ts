@@ -130,13 +130,6 @@ function outOfRange(def: SettingDef): string[] {
 /** Refusals that come from the setting doing its job (a limit), not from the value being invalid. */
 const LIMIT_REFUSAL = /does not fit|leaves the bed|raise inflateBudget/;
 
-/**
- * Settings declared before the code that reads them: tree support is a placeholder (normal columns,
- * src/regions/support/tree.ts), so its shape settings do nothing yet. The test insists they still do
- * nothing, so the list must shrink the day they start to work.
- */
-const NOT_YET_EFFECTIVE: ReadonlySet<string> = new Set(['supportTreeBranchAngle', 'supportTreeTipDiameter', 'supportTreeBranchDiameter', 'supportTreeDiameterAngle']);
-
 const baselines = new Map<string, Promise<string>>();
 function baseline(args: readonly string[], models: readonly string[]): Promise<string> {
   const k = JSON.stringify([args, models]);
@@ -180,14 +173,10 @@ test('every setting flag changes the G-code (or is refused by the slice it limit
         if (def.type !== 'enum') break;
       } else same.push(value);
     }
-    if (NOT_YET_EFFECTIVE.has(key)) {
-      if (changed || limited) problems.push(`${key} now changes the G-code: take it out of NOT_YET_EFFECTIVE`);
-    } else {
-      // an 'auto' default stands for one of the other values, which may then give the same G-code
-      if (def.type === 'enum' && current === 'auto' && same.length === 1) same.length = 0;
-      if (def.type === 'enum' && same.length) problems.push(`${key}: ${same.map(flagValue).join(', ')} gave the same G-code as ${flagValue(current)}`);
-      if (!changed && !limited) problems.push(`${key}: no value changed the G-code (tried ${candidates(key, def, current).map(flagValue).join(', ')})`);
-    }
+    // an 'auto' default stands for one of the other values, which may then give the same G-code
+    if (def.type === 'enum' && current === 'auto' && same.length === 1) same.length = 0;
+    if (def.type === 'enum' && same.length) problems.push(`${key}: ${same.map(flagValue).join(', ')} gave the same G-code as ${flagValue(current)}`);
+    if (!changed && !limited) problems.push(`${key}: no value changed the G-code (tried ${candidates(key, def, current).map(flagValue).join(', ')})`);
     for (const bad of outOfRange(def)) {
       const r = await cli('slice', MODEL, '-o', join(DIR, 'never.gcode'), '-q', `--${kebab(key)}`, bad);
       if (r.code !== 1 || !/^strata: error: [^\n]+\n$/.test(r.err)) problems.push(`${key}=${bad.slice(0, 20)} was not refused (${r.code}: ${r.err.slice(0, 80)})`);

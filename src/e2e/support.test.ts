@@ -34,6 +34,16 @@ for (const name of MODELS) {
   }
 }
 
+// Tests in a file run one after another: the six above have filled `volumes`.
+test('tree support uses clearly less material than normal support for the same overhangs (≤ 0.75 ×)', { skip }, () => {
+  for (const name of MODELS) {
+    const tree = volumes.get(`${name} tree`);
+    const normal = volumes.get(`${name} normal`);
+    assert.ok(tree !== undefined && normal !== undefined, `${name}: both support runs passed`);
+    assert.ok(tree > 0.1 * normal && tree <= 0.75 * normal, `${name}: tree ${tree.toFixed(0)} mm³, normal ${normal.toFixed(0)} mm³`);
+  }
+});
+
 test('without support the overhangs of SupportTest are not held (the measure discriminates)', { skip, timeout: 300_000 }, async () => {
   const { report } = await sliceAndAnalyze('SupportTest.stl', { supportEnabled: false });
   const sup = report.summary.support!;
