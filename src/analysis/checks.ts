@@ -8,12 +8,17 @@ import { StrataError } from '../errors.js';
 import { parseGcode } from './gcode-parse.js';
 import type { ParsedGcode } from './gcode-types.js';
 import type { LayerContext, ResolvedOptions } from './layer-analysis.js';
-import { measureLayer, skinMarginLayers, widthHistogram } from './layer-analysis.js';
+import {
+  effectiveThickness, measureLayer, partThickness, skinMarginLayers, widthHistogram,
+} from './layer-analysis.js';
+import { modelZFrames } from './model-z.js';
 import { layerReport } from './layer-report.js';
 import { collectWarnings, summarize } from './print-summary.js';
 import { filamentArea } from './raster.js';
 import type { AnalyzeOptions, LayerReport, PrintReport } from './report-types.js';
 import { SectionCache } from './section-cache.js';
+import { SupportAnalysis } from './support.js';
+import { meshVolume, supportVolumes } from './support-volume.js';
 
 export type { AnalyzeOptions, LayerReport, PrintReport, PrintSummary } from './report-types.js';
 
@@ -22,13 +27,18 @@ const DEFAULT_CELL_MM = 0.05;
 const MAX_LAYER_CELLS = 16e6;
 /** Margin around the model assumed when sizing rasters (mm). */
 const RASTER_MARGIN_MM = 10;
+/** Defaults of the support checks' options (see AnalyzeOptions). */
+const DEFAULT_OVERHANG_ANGLE_DEG = 50;
+const DEFAULT_SUPPORT_GAP_LAYERS = 2;
+const DEFAULT_SUPPORT_SPAN_MM = 3;
+const DEFAULT_OVERHANG_MIN_AREA_MM2 = 1;
 
 export function analyzePrint(mesh: Mesh, gcodeText: string, options: AnalyzeOptions): PrintReport {
-  const opts = resolveOptions(options);
+  resolveOptions(options); // bad options fail before the parse
   const t0 = performance.now();
   const parsed = parseGcode(gcodeText);
   const parseMs = performance.now() - t0;
-  return analyzeParsed(mesh, parsed, opts, parseMs);
+  return analyzeParsed(mesh, parsed, options, parseMs);
 }
 
 /** The same analysis for G-code already parsed (for example with the streaming parser). */
@@ -36,10 +46,13 @@ export function analyzeParsed(mesh: Mesh, parsed: ParsedGcode, options: AnalyzeO
   const opts = resolveOptions(options);
   const t0 = performance.now();
   const warnings: string[] = [];
-  const cell = cellSizeFor(mesh, opts.cellSize);
+  const bounds = meshBoundsXY(mesh);
+  const cell = cellSizeFor(bounds, opts.cellSize);
   if (cell > opts.cellSize) warnings.push(`raster cell grown to ${cell.toFixed(3)} mm to bound memory`);
   const sections = new SectionCache(mesh, cell);
   const widths = widthHistogram(opts);
+  const modelZ = modelZFrames(parsed.layers, opts);
+  const frames = modelZ.frames;
   const ctx: LayerContext = {
     opts,
     cell,
@@ -47,7 +60,24 @@ export function analyzeParsed(mesh: Mesh, parsed: ParsedGcode, options: AnalyzeO
     hasTypes: parsed.hasTypeMarkers,
     filamentArea: filamentArea(opts.filamentDiameter),
     widths,
+    frames,
   };
+  const support = opts.supportChecks && bounds
+    ? new SupportAnalysis(parsed.layers, modelZ, sections, bounds, {
+      layerHeight: opts.layerHeight,
+      lineWidth: opts.lineWidth,
+      wallThickness: opts.wallThickness,
+      overhangAngleDeg: opts.overhangAngleDeg,
+      supportGapLayers: opts.supportGapLayers,
+      supportSpanMm: opts.supportSpanMm,
+      overhangMinAreaMm2: opts.overhangMinAreaMm2,
+      cell,
+      filamentArea: ctx.filamentArea,
+      widthSource: opts.widthSource,
+      partHeight: (f) => partThickness(f, opts),
+      supportHeight: (f) => effectiveThickness(f.supportThickness, f.raft && f.modelZ <= 0, opts),
+    })
+    : null;
 
   const retractionsByLayer = new Uint32Array(parsed.layers.length);
   for (let k = 0; k < parsed.retractions.count; k++) {
@@ -66,13 +96,25 @@ export function analyzeParsed(mesh: Mesh, parsed: ParsedGcode, options: AnalyzeO
     const m = measureLayer(layer, ctx);
     positives.push(m.outsidePositives);
     samples += m.outsideSamples;
-    layers.push(layerReport(layer, m, opts, retractionsByLayer[i]!));
+    const report = layerReport(layer, m, opts, retractionsByLayer[i]!, frames[i]!);
+    report.support = support ? support.measure(i, m.sectionZ) : null;
+    layers.push(report);
     const keep = Math.round(opts.bottomThickness / opts.layerHeight) + skinMarginLayers(opts) + 2;
     sections.dropBelow(m.sectionZ - keep * opts.layerHeight);
   }
 
-  const summary = summarize(parsed, layers, opts, sections, widths, positives, samples);
+  const summary = summarize(parsed, layers, opts, sections, widths, positives, samples, frames);
   summary.cellSizeMm = cell;
+  summary.modelZ = {
+    offsetMm: modelZ.offsetMm,
+    source: modelZ.source,
+    firstModelLayer: modelZ.firstModelLayer,
+    raftLayerCount: modelZ.raftLayerCount,
+    raftGapMm: modelZ.raftGapMm,
+  };
+  summary.support = support
+    ? support.summary(supportVolumes(parsed.layers, frames, ctx.filamentArea, meshVolume(mesh)))
+    : null;
   summary.timingMs = { parse: parseMs, analyse: performance.now() - t0 };
   warnings.push(...collectWarnings(parsed, summary, sections, opts));
   return { summary, layers, layerZ: parsed.layers.map((l) => l.z), warnings };
@@ -105,10 +147,31 @@ function resolveOptions(o: AnalyzeOptions): ResolvedOptions {
     skinMargin: positive('skinMargin', o.skinMargin ?? 1),
     wallCoverageThreshold: positive('wallCoverageThreshold', o.wallCoverageThreshold ?? 0.95),
     shiftTolerance: positive('shiftTolerance', o.shiftTolerance ?? 0.1),
+    modelZOffset: o.modelZOffset === undefined ? null : nonNegative('modelZOffset', o.modelZOffset),
+    supportChecks: o.supportChecks ?? true,
+    overhangAngleDeg: angle(o.overhangAngleDeg ?? DEFAULT_OVERHANG_ANGLE_DEG),
+    supportGapLayers: nonNegative('supportGapLayers', o.supportGapLayers ?? DEFAULT_SUPPORT_GAP_LAYERS),
+    supportSpanMm: positive('supportSpanMm', o.supportSpanMm ?? DEFAULT_SUPPORT_SPAN_MM),
+    overhangMinAreaMm2: nonNegative('overhangMinAreaMm2', o.overhangMinAreaMm2 ?? DEFAULT_OVERHANG_MIN_AREA_MM2),
   };
 }
 
-function cellSizeFor(mesh: Mesh, requested: number): number {
+function nonNegative(name: string, v: number | undefined): number {
+  if (typeof v !== 'number' || !(v >= 0) || !Number.isFinite(v)) {
+    throw new StrataError('BAD_SETTING', `analyzePrint: ${name} must be a number >= 0 (got ${String(v)})`);
+  }
+  return v;
+}
+
+function angle(v: number): number {
+  if (typeof v !== 'number' || !(v > 0 && v < 90)) {
+    throw new StrataError('BAD_SETTING', `analyzePrint: overhangAngleDeg must be between 0 and 90 (got ${String(v)})`);
+  }
+  return v;
+}
+
+/** [xmin, ymin, xmax, ymax] of the mesh's vertices, null without vertices. */
+function meshBoundsXY(mesh: Mesh): [number, number, number, number] | null {
   const p = mesh.positions;
   let xmin = Infinity, xmax = -Infinity, ymin = Infinity, ymax = -Infinity;
   for (let k = 0; k < p.length; k += 3) {
@@ -117,7 +180,12 @@ function cellSizeFor(mesh: Mesh, requested: number): number {
     ymin = Math.min(ymin, p[k + 1]!);
     ymax = Math.max(ymax, p[k + 1]!);
   }
-  if (!(xmax >= xmin)) return requested;
+  return xmax >= xmin ? [xmin, ymin, xmax, ymax] : null;
+}
+
+function cellSizeFor(bounds: [number, number, number, number] | null, requested: number): number {
+  if (!bounds) return requested;
+  const [xmin, ymin, xmax, ymax] = bounds;
   const area = (xmax - xmin + 2 * RASTER_MARGIN_MM) * (ymax - ymin + 2 * RASTER_MARGIN_MM);
   return Math.max(requested, Math.sqrt(area / MAX_LAYER_CELLS));
 }

@@ -15,6 +15,8 @@ export const FEATURE_NAMES = [
   'PRIME-TOWER',
   'IRONING',
   'CUSTOM',
+  'SUPPORT-INTERFACE',
+  'RAFT',
 ] as const;
 
 export type FeatureName = (typeof FEATURE_NAMES)[number];
@@ -31,16 +33,26 @@ export const Feature = {
   PrimeTower: 7,
   Ironing: 8,
   Custom: 9,
+  /** Dense support lines under the part (roof) or on it (floor). */
+  SupportInterface: 10,
+  /** Raft layers under the part (a raft written with support names is recognised by position, see model-z.ts). */
+  Raft: 11,
 } as const satisfies Record<string, number>;
 
 export const FEATURE_COUNT = FEATURE_NAMES.length;
 
 /**
- * Whether a feature is material of the part itself (judged against the model's sections). Support, skirt/brim,
- * prime towers, ironing passes and custom (start/end) G-code are not. Untyped moves count as part material.
+ * Whether a feature is material of the part itself (judged against the model's sections). Support, support
+ * interface, raft, skirt/brim, prime towers, ironing passes and custom (start/end) G-code are not. Untyped moves
+ * count as part material. Bridges are part skin.
  */
 export function isPartFeature(code: number): boolean {
   return code <= Feature.Fill;
+}
+
+/** Support body or support interface (roof / floor); raft is not support. */
+export function isSupportFeature(code: number): boolean {
+  return code === Feature.Support || code === Feature.SupportInterface;
 }
 
 /** Type names, lower-cased with everything but letters and digits removed, to canonical codes. */
@@ -51,10 +63,15 @@ const TYPE_ALIASES: ReadonlyMap<string, number> = new Map<string, number>([
   ['skin', Feature.Skin],
   ['fill', Feature.Fill],
   ['support', Feature.Support],
-  ['supportinterface', Feature.Support],
+  ['supportinterface', Feature.SupportInterface],
   ['supportinfill', Feature.Support],
-  ['supportroof', Feature.Support],
-  ['supportbottom', Feature.Support],
+  ['supportroof', Feature.SupportInterface],
+  ['supportbottom', Feature.SupportInterface],
+  ['supportfloor', Feature.SupportInterface],
+  ['raft', Feature.Raft],
+  ['raftbase', Feature.Raft],
+  ['raftinterface', Feature.Raft],
+  ['raftsurface', Feature.Raft],
   ['skirt', Feature.Skirt],
   ['primetower', Feature.PrimeTower],
   // PrusaSlicer / SuperSlicer
@@ -71,7 +88,7 @@ const TYPE_ALIASES: ReadonlyMap<string, number> = new Map<string, number>([
   ['skirtbrim', Feature.Skirt],
   ['brim', Feature.Skirt],
   ['supportmaterial', Feature.Support],
-  ['supportmaterialinterface', Feature.Support],
+  ['supportmaterialinterface', Feature.SupportInterface],
   ['wipetower', Feature.PrimeTower],
   ['ironing', Feature.Ironing],
   ['custom', Feature.Custom],
@@ -87,6 +104,7 @@ const TYPE_ALIASES: ReadonlyMap<string, number> = new Map<string, number>([
   ['bridge', Feature.Skin],
   ['internalbridge', Feature.Skin],
   ['supporttransition', Feature.Support],
+  ['treesupport', Feature.Support],
 ]);
 
 /** Canonical code of a `;TYPE:` name, or -1 when the name is not known (the caller treats it as UNKNOWN). */

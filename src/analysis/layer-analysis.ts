@@ -11,6 +11,7 @@ import { outlineMetrics } from './outline.js';
 import { measureOutside } from './outside.js';
 import { beadWidth, rasterizeExtrusions, segmentLength } from './raster.js';
 import type { AnalyzeOptions } from './report-types.js';
+import type { LayerFrame } from './model-z.js';
 import type { CachedSection, SectionCache } from './section-cache.js';
 import { SegmentIndex, WindingIndex } from './segment-index.js';
 import { skinRegions } from './skin.js';
@@ -18,7 +19,7 @@ import type { Spans } from './spans.js';
 import { countInSpans, erodeSpans, isEmptySpans, spansArea, spansBoolean, spansBounds } from './spans.js';
 import { WeightedHistogram } from './stats.js';
 
-export type ResolvedOptions = Required<AnalyzeOptions>;
+export type ResolvedOptions = Required<Omit<AnalyzeOptions, 'modelZOffset'>> & { modelZOffset: number | null };
 
 /** Material farther than this outside the section is not rasterised (its distance is still measured), mm. */
 const RASTER_CLIP_MARGIN_MM = 5;
@@ -38,6 +39,8 @@ export interface LayerContext {
   filamentArea: number;
   /** Bead-width histogram of the whole print, fed by each layer. */
   widths: WeightedHistogram;
+  /** Each printed layer's place in the model's Z. */
+  frames: readonly LayerFrame[];
 }
 
 export interface LayerMeasure {
@@ -65,6 +68,12 @@ export interface LayerMeasure {
   partLengthMm: number;
 }
 
+/** The model's section height for a layer whose top is at model Z `modelZ`, `h` thick: its mid-height. */
+export function modelSectionZ(modelZ: number, h: number): number {
+  // Rounded to a nanometre so that float noise does not decide on which side of a mesh vertex the plane falls.
+  return Math.round((modelZ - h / 2) * 1e6) / 1e6;
+}
+
 /** An empty length-weighted histogram of bead widths. */
 export function widthHistogram(o: ResolvedOptions): WeightedHistogram {
   return new WeightedHistogram(MAX_BEAD_LINE_WIDTHS * o.lineWidth, WIDTH_BIN_MM);
@@ -75,23 +84,33 @@ export function skinMarginLayers(o: ResolvedOptions): number {
   return Math.ceil(o.skinMargin / o.layerHeight - 1e-9);
 }
 
-/** Layer height used to turn E into width: the measured thickness when plausible, else the nominal one. */
-export function effectiveThickness(layer: GcodeLayer, o: ResolvedOptions): number {
-  const nominal = layer.index === 0 ? o.firstLayerHeight : o.layerHeight;
-  const t = layer.thickness;
-  return t > 0.25 * nominal && t < 4 * nominal ? t : nominal;
+/**
+ * Layer height used to turn E into width: the measured thickness (of the part's material, or of the support's)
+ * when plausible, else the nominal one.
+ */
+export function effectiveThickness(measured: number, firstModelLayer: boolean, o: ResolvedOptions): number {
+  const nominal = firstModelLayer ? o.firstLayerHeight : o.layerHeight;
+  return measured > 0.25 * nominal && measured < 4 * nominal ? measured : nominal;
+}
+
+/** The part material's layer height on a printed layer (see model-z.ts). */
+export function partThickness(frame: LayerFrame, o: ResolvedOptions): number {
+  const first = frame.firstOverRaft || Math.abs(frame.modelZ - o.firstLayerHeight) <= o.zTolerance;
+  return effectiveThickness(frame.partThickness, first, o);
 }
 
 export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure {
   const o = ctx.opts;
-  const h = effectiveThickness(layer, o);
-  // Rounded to a nanometre so that float noise does not decide on which side of a mesh vertex the plane falls.
-  const sectionZ = Math.round((layer.z - h / 2) * 1e6) / 1e6;
+  const frame = ctx.frames[layer.index]!;
+  const h = partThickness(frame, o);
+  const sectionZ = modelSectionZ(frame.modelZ, h);
   const section = ctx.sections.get(sectionZ);
   const t = layer.extrusions;
 
+  // Raft layers and layers of support alone (PrusaSlicer prints support on a grid of its own) are not part layers.
+  const judged = frame.hasPart;
   const part: number[] = [];
-  for (let i = 0; i < t.count; i++) if (isPartFeature(t.feature[i]!)) part.push(i);
+  if (judged) for (let i = 0; i < t.count; i++) if (isPartFeature(t.feature[i]!)) part.push(i);
   const partIds = Uint32Array.from(part);
   const widths = new Float32Array(t.count);
   const layerWidths = widthHistogram(o);
@@ -129,7 +148,7 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
     partLengthMm: partLength,
   };
   const bounds = spansBounds(section.spans);
-  if (!bounds || section.segments.count === 0) return result;
+  if (!judged || !bounds || section.segments.count === 0) return result;
 
   const grid = layerGrid(bounds, t, partIds, ctx.cell, o.lineWidth);
   const material = rasterizeExtrusions(t, grid, widths, (i) => isPartFeature(t.feature[i]!));

@@ -3,6 +3,7 @@ import type { FeatureName } from './feature-names.js';
 import { FEATURE_NAMES } from './feature-names.js';
 import type { GcodeLayer } from './gcode-types.js';
 import type { LayerMeasure, ResolvedOptions } from './layer-analysis.js';
+import type { LayerFrame } from './model-z.js';
 import { segmentLength } from './raster.js';
 import type { LayerReport } from './report-types.js';
 
@@ -41,15 +42,29 @@ export function travelLength(layer: GcodeLayer): number {
 
 export const orNull = (v: number) => (Number.isFinite(v) ? v : null);
 
-export function layerReport(layer: GcodeLayer, m: LayerMeasure, o: ResolvedOptions, retractions: number): LayerReport {
-  const [ez] = gridZ(layer.z, o);
+/** Whether a layer's Z is judged against the layer grid: layers with part material, but not the first over a raft. */
+export function onZGrid(frame: LayerFrame): boolean {
+  return frame.hasPart && !frame.firstOverRaft;
+}
+
+/** What a printed layer holds: part material (perhaps with support), support alone, or raft. */
+export function layerRole(frame: LayerFrame): LayerReport['role'] {
+  return frame.hasPart ? 'part' : frame.raft ? 'raft' : 'support';
+}
+
+export function layerReport(
+  layer: GcodeLayer, m: LayerMeasure, o: ResolvedOptions, retractions: number, frame: LayerFrame,
+): LayerReport {
+  const [ez] = gridZ(frame.modelZ, o);
   const shiftMm = m.shift ? Math.hypot(m.shift.dx, m.shift.dy) : null;
   return {
     index: layer.index,
     z: layer.z,
+    modelZ: frame.modelZ,
+    role: layerRole(frame),
     thickness: layer.thickness,
     expectedZ: ez,
-    zOk: Math.abs(layer.z - ez) <= o.zTolerance,
+    zOk: !onZGrid(frame) || Math.abs(frame.modelZ - ez) <= o.zTolerance,
     marker: layer.marker,
     sectionZ: m.sectionZ,
     sectionAreaMm2: m.sectionAreaMm2,
@@ -71,5 +86,6 @@ export function layerReport(layer: GcodeLayer, m: LayerMeasure, o: ResolvedOptio
     featureLengthMm: featureLengths(layer),
     travelLengthMm: travelLength(layer),
     retractions,
+    support: null,
   };
 }

@@ -17,6 +17,8 @@ const FEATURE_COLOURS: Record<(typeof FEATURE_NAMES)[number], string> = {
   'PRIME-TOWER': '#e377c2',
   IRONING: '#bcbd22',
   CUSTOM: '#17becf',
+  'SUPPORT-INTERFACE': '#5b3a8c',
+  RAFT: '#7f7f7f',
 };
 
 export interface LayerSvgOptions {

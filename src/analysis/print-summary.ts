@@ -3,7 +3,8 @@ import type { FeatureName } from './feature-names.js';
 import { FEATURE_NAMES } from './feature-names.js';
 import type { ParsedGcode } from './gcode-types.js';
 import type { ResolvedOptions } from './layer-analysis.js';
-import { expectedLayerCount, gridZ, orNull, travelLength } from './layer-report.js';
+import { expectedLayerCount, gridZ, onZGrid, orNull, travelLength } from './layer-report.js';
+import type { LayerFrame } from './model-z.js';
 import { segmentLength } from './raster.js';
 import type { LayerReport, PrintSummary } from './report-types.js';
 import type { SectionCache } from './section-cache.js';
@@ -42,14 +43,18 @@ function skinSummary(layers: LayerReport[], pick: (l: LayerReport) => { areaMm2:
 
 export function summarize(
   parsed: ParsedGcode, layers: LayerReport[], o: ResolvedOptions, sections: SectionCache,
-  widths: WeightedHistogram, positives: Float64Array[], samples: number,
+  widths: WeightedHistogram, positives: Float64Array[], samples: number, frames: readonly LayerFrame[],
 ): PrintSummary {
   const zMismatch: number[] = [];
   let zMismatchCount = 0;
   const onGrid = new Set<number>();
   for (const l of parsed.layers) {
-    const [z, k] = gridZ(l.z, o);
-    if (Math.abs(l.z - z) > o.zTolerance) {
+    const frame = frames[l.index]!;
+    // The first layer over a raft stands for the grid's first layer wherever the air gap puts it.
+    if (frame.firstOverRaft) onGrid.add(0);
+    if (!onZGrid(frame)) continue;
+    const [z, k] = gridZ(frame.modelZ, o);
+    if (Math.abs(frame.modelZ - z) > o.zTolerance) {
       zMismatchCount++;
       if (zMismatch.length < MAX_LISTED) zMismatch.push(l.index);
     } else {
@@ -191,6 +196,8 @@ export function summarize(
     hasTypeMarkers: parsed.hasTypeMarkers,
     cellSizeMm: 0,
     timingMs: { parse: 0, analyse: 0 },
+    modelZ: { offsetMm: 0, source: 'none', firstModelLayer: null, raftLayerCount: 0, raftGapMm: null },
+    support: null,
   };
 }
 

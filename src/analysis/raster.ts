@@ -36,9 +36,12 @@ export function segmentLength(t: ExtrusionTable, i: number): number {
   return Math.hypot(t.x1[i]! - t.x0[i]!, t.y1[i]! - t.y0[i]!);
 }
 
-/** Sets (to `value`) every cell whose centre lies within r of segment (ax, ay)-(bx, by). */
+/**
+ * Sets (to `value`) every cell whose centre lies within r of segment (ax, ay)-(bx, by); with `or`, ORs `value`
+ * into those cells instead (bitmaps of flag bits).
+ */
 export function stampCapsule(
-  bitmap: Uint8Array, grid: Grid, ax: number, ay: number, bx: number, by: number, r: number, value = 1,
+  bitmap: Uint8Array, grid: Grid, ax: number, ay: number, bx: number, by: number, r: number, value = 1, or = false,
 ): void {
   const c = grid.cell;
   const dx = bx - ax;
@@ -97,7 +100,8 @@ export function stampCapsule(
     const [first, last] = columnsOf(grid, lo, hi);
     if (last >= first) {
       const base = (j - grid.j0) * grid.cols;
-      bitmap.fill(value, base + first, base + last + 1);
+      if (!or) bitmap.fill(value, base + first, base + last + 1);
+      else for (let k = base + first; k <= base + last; k++) bitmap[k] = bitmap[k]! | value;
     }
   }
 }

@@ -33,6 +33,98 @@ export interface AnalyzeOptions {
   wallCoverageThreshold?: number;
   /** A layer shifted by more than this is listed (mm); default 0.1. */
   shiftTolerance?: number;
+  /**
+   * Print Z minus model Z (mm): how far a raft raises the part. Default: detected from the G-code (see
+   * model-z.ts); 0 when no layer with support or raft material comes before the part's first layer.
+   */
+  modelZOffset?: number;
+  /** Run the support checks (overhangs, material over nothing, support in the part, Z gaps); default true. */
+  supportChecks?: boolean;
+  /** Overhang angle from vertical beyond which the model needs material under it (degrees), default 50. */
+  overhangAngleDeg?: number;
+  /** Material up to this many layers below still holds what is above (the support's top Z gap), default 2. */
+  supportGapLayers?: number;
+  /**
+   * Lines, branches or walls below that are at most this far apart (mm) hold the area between them, default 3:
+   * sparse support and tree tips cover their whole area, a wall does not grow outward.
+   */
+  supportSpanMm?: number;
+  /** Overhang specks smaller than this are ignored (mm²), default 1. */
+  overhangMinAreaMm2?: number;
+}
+
+/** Support measures of one layer (areas in mm² on the support raster). */
+export interface LayerSupport {
+  /** The model's overhang on this layer, and the part of it with material under it. */
+  overhangAreaMm2: number;
+  overhangSupportedMm2: number;
+  /** The layer's part extrusion, and the part of it over nothing. */
+  partAreaMm2: number;
+  overNothingMm2: number;
+  /** Support and interface beads on this layer, and the part of them inside the model's section. */
+  supportAreaMm2: number;
+  insideMm2: number;
+}
+
+export interface GapStats {
+  /** Area over which the gap was measured (mm²). */
+  areaMm2: number;
+  /** Area-weighted median and low end (2nd percentile) of the gap (mm), null when not measured. */
+  medianMm: number | null;
+  minMm: number | null;
+  /** The same in whole layers (gap / layerHeight, rounded). */
+  medianLayers: number | null;
+  minLayers: number | null;
+  /** Share of the measured area by gap in whole layers: index 0 = no gap, 1 = one layer, … */
+  byLayers: number[];
+}
+
+export interface SupportSummary {
+  overhangAngleDeg: number;
+  /** The model's overhang area summed over analysed layers, the part with material under it, and the share. */
+  overhangAreaMm2: number;
+  overhangSupportedMm2: number;
+  overhangSupported: number | null;
+  /** Layers with the most unsupported overhang (up to 5). */
+  overhangWorstLayers: { layer: number; z: number; areaMm2: number; unsupportedMm2: number }[];
+  /** Part extrusion area summed over analysed layers, the part of it over nothing, and the share. */
+  partAreaMm2: number;
+  overNothingMm2: number;
+  overNothing: number | null;
+  /** Layers with the most part extrusion over nothing (up to 5). */
+  overNothingWorstLayers: { layer: number; z: number; areaMm2: number; fraction: number }[];
+  /** Support and interface bead area inside the model's section, summed over analysed layers (mm²). */
+  insideAreaMm2: number;
+  insideWorstLayer: number | null;
+  insideWorstMm2: number;
+  /** Support and interface bead area summed over analysed layers (mm²). */
+  supportAreaMm2: number;
+  /** Analysed layers with support or interface material. */
+  supportLayers: number;
+  /** From the top of support to the model above it, and from the model to support standing on it. */
+  topGap: GapStats;
+  bottomGap: GapStats;
+  /** Extruded volumes from E (mm³), over every layer, and support (body + interface) and raft over the model's. */
+  volume: {
+    supportMm3: number;
+    interfaceMm3: number;
+    raftMm3: number;
+    partMm3: number;
+    /** The mesh's volume. */
+    modelMm3: number;
+    supportShare: number | null;
+    raftShare: number | null;
+  };
+}
+
+export interface ModelZSummary {
+  /** Print Z minus model Z (mm), and whether it was given, detected (a raft) or is 0. */
+  offsetMm: number;
+  source: 'option' | 'detected' | 'none';
+  firstModelLayer: number | null;
+  raftLayerCount: number;
+  /** Air gap from the raft's top to the bottom of the first model layer (mm). */
+  raftGapMm: number | null;
 }
 
 export interface SkinMetrics {
@@ -45,8 +137,15 @@ export interface SkinMetrics {
 export interface LayerReport {
   index: number;
   z: number;
+  /** Top of the layer in the model's Z (print Z minus the model's Z offset). */
+  modelZ: number;
+  /** What the layer prints: part material (perhaps with support), support alone, or raft. */
+  role: 'part' | 'support' | 'raft';
   thickness: number;
-  /** The nearest Z of the layer grid (firstLayerHeight, then every layerHeight), and whether Z is on it. */
+  /**
+   * The nearest Z of the layer grid (firstLayerHeight, then every layerHeight) to modelZ, and whether modelZ is on
+   * it (always true for layers not judged on the grid: raft, support alone, the first layer over a raft).
+   */
   expectedZ: number;
   zOk: boolean;
   /** The `;LAYER:` marker merged into this layer, if any. */
@@ -81,6 +180,8 @@ export interface LayerReport {
   featureLengthMm: Partial<Record<FeatureName, number>>;
   travelLengthMm: number;
   retractions: number;
+  /** Support measures, null for raft layers or without support checks. */
+  support: LayerSupport | null;
 }
 
 export interface PrintSummary {
@@ -142,6 +243,10 @@ export interface PrintSummary {
   hasTypeMarkers: boolean;
   cellSizeMm: number;
   timingMs: { parse: number; analyse: number };
+  /** Where the model sits in the print's Z (a raft raises it). */
+  modelZ: ModelZSummary;
+  /** Support checks, null when turned off. */
+  support: SupportSummary | null;
 }
 
 export interface PrintReport {

@@ -5,6 +5,40 @@
 import type { Mesh } from '../mesh/types.js';
 import { filamentArea } from './raster.js';
 
+/** Several closed meshes as one (their shells side by side; sections union them). */
+export function mergeMeshes(...meshes: Mesh[]): Mesh {
+  const positions: number[] = [];
+  const indices: number[] = [];
+  for (const m of meshes) {
+    const base = positions.length / 3;
+    positions.push(...m.positions);
+    for (const i of m.indices) indices.push(base + i);
+  }
+  return { positions: Float32Array.from(positions), indices: Uint32Array.from(indices) };
+}
+
+/**
+ * G-code lines (relative E, Cura's volume rule w·h per mm) that fill the rectangle [x0, x1] × [y0, y1] with
+ * parallel lines `spacing` apart along x (or along y with `alongY`), under `;TYPE:type`. Line centres keep half a
+ * line width inside the rectangle.
+ */
+export function rectLines(
+  rect: [number, number, number, number], spacing: number, h: number, lineWidth: number, filamentDiameter: number,
+  type: string, alongY = false,
+): string[] {
+  const [x0, y0, x1, y1] = rect;
+  const area = filamentArea(filamentDiameter);
+  const out = [`;TYPE:${type}`];
+  const half = lineWidth / 2;
+  const [a0, a1, b0, b1] = alongY ? [y0, y1, x0, x1] : [x0, x1, y0, y1];
+  for (let b = b0 + half; b <= b1 - half + 1e-9; b += spacing) {
+    const e = ((lineWidth * h * (a1 - a0 - 2 * half)) / area).toFixed(5);
+    const [sx, sy, ex, ey] = alongY ? [b, a0 + half, b, a1 - half] : [a0 + half, b, a1 - half, b];
+    out.push(`G0 X${fmt(sx)} Y${fmt(sy)} F6000`, `G1 X${fmt(ex)} Y${fmt(ey)} E${e} F1800`);
+  }
+  return out;
+}
+
 /** A closed box with outward-facing triangles. */
 export function boxMesh(x0: number, y0: number, z0: number, x1: number, y1: number, z1: number): Mesh {
   const positions = new Float32Array([

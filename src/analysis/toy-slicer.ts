@@ -18,6 +18,12 @@ export interface ToyOptions {
   /** Distance between sparse lines (one direction), mm. */
   infillSpacing: number;
   skinLayers: number;
+  /** The part printed this much higher (mm), as over a raft. */
+  zOffset?: number;
+  /** Layers printed before the part's first, as a raft: print Z, height and G-code lines (relative E). */
+  prelude?: { z: number; h: number; lines: string[] }[];
+  /** More G-code for part layer i (relative E), such as support, written after the layer's Z move. */
+  extra?: (i: number, z: number, h: number) => string[];
 }
 
 export function toyGcode(mesh: Mesh, o: ToyOptions): string {
@@ -26,12 +32,17 @@ export function toyGcode(mesh: Mesh, o: ToyOptions): string {
   const out: string[] = ['G21', 'G90', 'M83'];
   const spansAt = (z: number): Spans => sectionSpans(sectioner.section(z), o.lineWidth);
   const fmt = (v: number) => (Math.round(v * 1000) / 1000).toString();
+  const prelude = o.prelude ?? [];
+  prelude.forEach((l, k) => out.push(`;LAYER:${k - prelude.length}`, `G0 Z${fmt(l.z)} F600`, ...l.lines));
+  const offset = o.zOffset ?? 0;
   for (let i = 0; ; i++) {
     const z = o.firstLayerHeight + i * o.layerHeight;
     const h = i === 0 ? o.firstLayerHeight : o.layerHeight;
     const mid = z - h / 2;
     if (mid >= sectioner.zMax) break;
-    out.push(`;LAYER:${i}`, `G0 Z${fmt(z)} F600`, ';TYPE:WALL-OUTER');
+    out.push(`;LAYER:${i}`, `G0 Z${fmt(z + offset)} F600`);
+    if (o.extra) out.push(...o.extra(i, z + offset, h));
+    out.push(';TYPE:WALL-OUTER');
     const seg = sectioner.section(mid);
     let x = NaN;
     let y = NaN;

@@ -3,7 +3,7 @@ import { readFileSync } from 'node:fs';
 import { gunzipSync } from 'node:zlib';
 import { Slicer, prepareModel } from '../api/slicer.js';
 import { analyzePrint } from '../analysis/checks.js';
-import type { PrintReport } from '../analysis/checks.js';
+import type { AnalyzeOptions, PrintReport } from '../analysis/checks.js';
 import type { SliceOptions } from '../settings/schema.js';
 import type { Config } from '../settings/resolve.js';
 
@@ -35,14 +35,19 @@ export interface SlicedModel {
   warnings: string[];
 }
 
-/** Slice a model with options and analyse the G-code against the placed mesh. */
-export async function sliceAndAnalyze(name: string, options: SliceOptions = {}): Promise<SlicedModel> {
+/**
+ * Slice a model with options and analyse the G-code against the placed mesh; `analyze` adds or overrides analyser
+ * options (for example the support checks' overhangAngleDeg or supportGapLayers, or a modelZOffset).
+ */
+export async function sliceAndAnalyze(
+  name: string, options: SliceOptions = {}, analyze: Partial<AnalyzeOptions> = {},
+): Promise<SlicedModel> {
   const bytes = readModel(name);
   const slicer = new Slicer({ threads: 1, ...options });
   const { gcode, stats, warnings } = await slicer.slice(bytes);
   const cfg = slicer.config;
   const placed = prepareModel(bytes, cfg).mesh;
-  const report = analyzePrint(placed, gcode, analysisProfile(cfg));
+  const report = analyzePrint(placed, gcode, { ...analysisProfile(cfg), ...analyze });
   return { gcode, report, layers: stats.layers, warnings };
 }
 

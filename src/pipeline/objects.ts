@@ -18,13 +18,46 @@ function cross(o: [number, number], a: [number, number], b: [number, number]): n
 /** Convex hull of the mesh's used vertices in XY (counter-clockwise, monotone chain), mm rounded to µm. */
 export function footprintHull(mesh: Mesh): [number, number][] {
   const { positions, indices } = mesh;
-  const seen = new Set<number>();
+  const n = positions.length / 3;
+  const used = new Uint8Array(n);
+  for (let i = 0; i < indices.length; i++) used[indices[i]] = 1;
+  // Akl–Toussaint: the extreme points in eight directions span an octagon whose strict inside holds no hull
+  // vertex; only the points outside it are sorted.
+  // directions: +x, +x+y, +y, −x+y, −x, −x−y, −y, +x−y
+  const ext = new Int32Array(8).fill(-1);
+  const best = new Float64Array(8).fill(-Infinity);
+  for (let v = 0; v < n; v++) {
+    if (!used[v]) continue;
+    const x = positions[3 * v], y = positions[3 * v + 1];
+    const sc0 = x, sc1 = x + y, sc2 = y, sc3 = y - x;
+    if (sc0 > best[0]) (best[0] = sc0), (ext[0] = v);
+    if (sc1 > best[1]) (best[1] = sc1), (ext[1] = v);
+    if (sc2 > best[2]) (best[2] = sc2), (ext[2] = v);
+    if (sc3 > best[3]) (best[3] = sc3), (ext[3] = v);
+    if (-sc0 > best[4]) (best[4] = -sc0), (ext[4] = v);
+    if (-sc1 > best[5]) (best[5] = -sc1), (ext[5] = v);
+    if (-sc2 > best[6]) (best[6] = -sc2), (ext[6] = v);
+    if (-sc3 > best[7]) (best[7] = -sc3), (ext[7] = v);
+  }
+  if (ext[0] < 0) return [];
+  const oct: [number, number][] = [];
+  for (let d = 0; d < 8; d++) {
+    const p: [number, number] = [positions[3 * ext[d]], positions[3 * ext[d] + 1]];
+    if (!oct.length || oct[oct.length - 1][0] !== p[0] || oct[oct.length - 1][1] !== p[1]) oct.push(p);
+  }
+  const insideOctagon = (x: number, y: number): boolean => {
+    if (oct.length < 3) return false;
+    for (let k = 0; k < oct.length; k++) {
+      const a = oct[k], b = oct[(k + 1) % oct.length];
+      if ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]) <= 0) return false;
+    }
+    return true;
+  };
   const pts: [number, number][] = [];
-  for (let i = 0; i < indices.length; i++) {
-    const v = indices[i];
-    if (seen.has(v)) continue;
-    seen.add(v);
-    pts.push([Math.round(positions[3 * v] * 1000) / 1000, Math.round(positions[3 * v + 1] * 1000) / 1000]);
+  for (let v = 0; v < n; v++) {
+    if (!used[v]) continue;
+    const x = positions[3 * v], y = positions[3 * v + 1];
+    if (!insideOctagon(x, y)) pts.push([Math.round(x * 1000) / 1000, Math.round(y * 1000) / 1000]);
   }
   pts.sort((a, b) => a[0] - b[0] || a[1] - b[1]);
   if (pts.length < 3) return pts;

@@ -72,6 +72,9 @@ export class RegionsRun {
     const z = this.#layers[i];
     const w = lineWidthUm(cfg, i);
     const below = i > 0 ? this.#layerSection(i - 1) : [];
+    // a wall is over air where its centreline is more than half a line width out from the layer below
+    // (as PrusaSlicer marks overhang perimeters): the parts of the outline beyond that grown section
+    const belowGrown = below.length ? offset(below, w / 2) : below;
     const islands: IslandRegions[] = [];
     const infillOn = cfg.infillDensity > 0;
     const overlapInfill = (cfg.infillOverlap / 100) * w;
@@ -96,7 +99,7 @@ export class RegionsRun {
           bridge: bridge?.area ?? [],
           bridgeAngle: bridge && bridge.mostly ? bridge.angle : null,
           sparse,
-          unsupported: i > 0 ? difference([iw.outline], below) : [],
+          unsupported: i > 0 ? difference([iw.outline], belowGrown) : [],
         });
       }
     }

@@ -30,7 +30,7 @@ export interface IslandRegions {
   bridgeAngle: number | null;
   /** Centreline area of the sparse infill. */
   sparse: ExPolygon[];
-  /** The part of the outline over nothing on the layer below: walls there are overhangs. */
+  /** The part of the outline more than half a line width out from the layer below: walls there are overhangs. */
   unsupported: ExPolygon[];
 }
 

@@ -1,0 +1,64 @@
+/**
+ * Support, raft and bridges end to end, judged by the independent analyser: every overhang held, nothing of
+ * the part printed over air, no support inside the part, the top Z gap as set; the quality bars of the part
+ * itself hold with support on.
+ */
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { skipWithoutModels, sliceAndAnalyze } from './models.js';
+
+const skip = skipWithoutModels();
+const MODELS = ['SupportTest.stl', 'Overhang.stl', 'spot.stl'] as const;
+
+const volumes = new Map<string, number>();
+
+for (const name of MODELS) {
+  for (const supportType of ['normal', 'tree'] as const) {
+    test(`${name}, ${supportType} support: overhangs held, nothing over air, none inside the part, one-layer Z gap`, { skip, timeout: 600_000 }, async () => {
+      const { report, gcode } = await sliceAndAnalyze(name, { supportEnabled: true, supportType });
+      const s = report.summary;
+      const sup = s.support!;
+      assert.ok(sup, 'support checks ran');
+      assert.match(gcode, /;TYPE:SUPPORT\n/);
+      assert.match(gcode, /;TYPE:SUPPORT-INTERFACE\n/);
+      assert.ok(sup.overhangSupported !== null && sup.overhangSupported >= 0.95, `overhang supported ${sup.overhangSupported}`);
+      assert.ok(sup.overNothing !== null && sup.overNothing <= 0.003, `model over nothing ${sup.overNothing}`);
+      assert.ok(sup.insideAreaMm2 <= 1, `support inside the part ${sup.insideAreaMm2} mm² (worst layer ${sup.insideWorstLayer})`);
+      assert.ok(sup.topGap.medianLayers === 1 || sup.topGap.medianLayers === 2, `top gap ${sup.topGap.medianLayers} layers`);
+      // the part itself: walls, nothing outside, E balanced
+      assert.ok(s.walls.coverage !== null && s.walls.coverage >= 0.97, `outline coverage ${s.walls.coverage}`);
+      assert.ok(s.outside.p99Mm <= 0.1, `material outside the model: p99 ${s.outside.p99Mm} mm`);
+      assert.equal(s.e.balance.unbalanced, 0);
+      volumes.set(`${name} ${supportType}`, sup.volume.supportMm3 + sup.volume.interfaceMm3);
+    });
+  }
+}
+
+test('without support the overhangs of SupportTest are not held (the measure discriminates)', { skip, timeout: 300_000 }, async () => {
+  const { report } = await sliceAndAnalyze('SupportTest.stl', { supportEnabled: false });
+  const sup = report.summary.support!;
+  assert.ok(sup.overhangSupported !== null && sup.overhangSupported < 0.2, `overhang supported ${sup.overhangSupported}`);
+  assert.ok(sup.overNothing !== null && sup.overNothing > 0.01, `model over nothing ${sup.overNothing}`);
+});
+
+test('buildPlate placement: nothing stands on the part of SupportTest', { skip, timeout: 300_000 }, async () => {
+  const { report } = await sliceAndAnalyze('SupportTest.stl', { supportEnabled: true, supportPlacement: 'buildPlate' });
+  const sup = report.summary.support!;
+  // about half of SupportTest's overhang lies over its own lower part: only the rest can reach the bed
+  assert.ok(sup.overhangSupported !== null && sup.overhangSupported > 0.3 && sup.overhangSupported < 0.9, `overhang supported ${sup.overhangSupported}`);
+  assert.equal(sup.bottomGap.areaMm2, 0, 'no support starts on the part');
+  assert.ok(sup.insideAreaMm2 <= 1);
+});
+
+test('a raft under the calibration cube: the model raised by the raft and its gap, its walls and skin as without', { skip, timeout: 300_000 }, async () => {
+  const { report, layers } = await sliceAndAnalyze('CalibrationCube.stl', { adhesionType: 'raft' });
+  const s = report.summary;
+  assert.equal(layers, 104, 'four raft layers under the 100 of the cube');
+  assert.equal(s.modelZ.source, 'detected');
+  assert.ok(Math.abs(s.modelZ.offsetMm - 1.1) < 0.01, `model raised by ${s.modelZ.offsetMm} mm`);
+  assert.equal(s.modelZ.raftLayerCount, 4);
+  assert.ok(s.support!.volume.raftMm3 > 100, `raft volume ${s.support!.volume.raftMm3} mm³`);
+  assert.ok(s.walls.coverage !== null && s.walls.coverage >= 0.97, `walls ${s.walls.coverage}`);
+  assert.ok(s.skin.bottom.coverage !== null && s.skin.bottom.coverage >= 0.99, `bottom skin ${s.skin.bottom.coverage}`);
+  assert.equal(s.outside.emptySectionLayers.length, 0);
+});
