@@ -1,38 +1,52 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { BenchArgsError, parseBenchArgs, selectModels } from './args.js';
+import { BenchArgsError, defaultBenchOptions, parseBenchArgs, selectModels } from './args.js';
 
-test('defaults', () => {
+test('defaults: one plain run gives the issue table (5 counted runs after a warm-up, every section)', () => {
   const o = parseBenchArgs([]);
+  assert.deepEqual(o, defaultBenchOptions());
   assert.deepEqual(o, {
-    only: [], threads: null, repeat: 1, json: false, timeoutSeconds: 600, modelsDir: null, strataCli: null,
-    peers: true, patterns: true, keep: false, help: false,
+    models: [], threads: null, repeat: 5, warmup: 1, json: false, timeoutSeconds: 600, modelsDir: null, strataCli: null,
+    peers: true, prusa: true, patterns: true, support: true, threadScaling: true, big: true, keep: false, help: false,
   });
 });
 
 test('every flag, in both --flag value and --flag=value forms', () => {
-  const o = parseBenchArgs(['--only', 'benchy,cube', '--only=spot', '--threads', '2', '--repeat=5', '--json', '--timeout', '30.5', '--models', '/m', '--strata-cli=/s.js', '--no-peers', '--no-patterns', '--keep']);
-  assert.deepEqual(o.only, ['benchy', 'cube', 'spot']);
+  const o = parseBenchArgs([
+    '--models', 'benchy,cube', '--only=spot', '--models', ' bunny , ', '--threads', '2', '--repeat=7', '--warmup', '0', '--json',
+    '--timeout', '30.5', '--models-dir', '/m', '--strata-cli=/s.js', '--no-peers', '--no-prusa', '--no-patterns', '--no-support',
+    '--no-thread-scaling', '--no-big', '--keep',
+  ]);
+  assert.deepEqual(o.models, ['benchy', 'cube', 'spot', 'bunny']);
   assert.equal(o.threads, 2);
-  assert.equal(o.repeat, 5);
+  assert.equal(o.repeat, 7);
+  assert.equal(o.warmup, 0);
   assert.equal(o.json, true);
   assert.equal(o.timeoutSeconds, 30.5);
   assert.equal(o.modelsDir, '/m');
   assert.equal(o.strataCli, '/s.js');
   assert.equal(o.peers, false);
+  assert.equal(o.prusa, false);
   assert.equal(o.patterns, false);
+  assert.equal(o.support, false);
+  assert.equal(o.threadScaling, false);
+  assert.equal(o.big, false);
   assert.equal(o.keep, true);
   assert.equal(parseBenchArgs(['-h']).help, true);
+  assert.equal(parseBenchArgs(['--help']).help, true);
 });
 
 test('bad arguments name the flag', () => {
   for (const [argv, re] of [
-    [['--threads', '0'], /--threads/],
+    [['--threads', '0'], /--threads needs a whole number from 1/],
     [['--threads', '1.5'], /--threads/],
+    [['--repeat', '0'], /--repeat needs a whole number from 1/],
     [['--repeat', 'x'], /--repeat/],
+    [['--warmup', '-1'], /--warmup needs a whole number from 0/],
     [['--timeout', '-1'], /--timeout/],
-    [['--only'], /--only needs a value/],
-    [['--frobnicate'], /unknown argument "--frobnicate"/],
+    [['--models'], /--models needs a value/],
+    [['--models', ' , '], /--models needs at least one model name/],
+    [['--frobnicate'], /unknown argument "--frobnicate"; allowed: .*--no-big/],
     [['--json=yes'], /--json takes no value/],
   ] as const) {
     assert.throws(() => parseBenchArgs(argv), (e: unknown) => e instanceof BenchArgsError && re.test(e.message), argv.join(' '));
@@ -40,9 +54,11 @@ test('bad arguments name the flag', () => {
 });
 
 test('selectModels: exact name or stem first, then substring', () => {
-  const names = ['3DBenchy.3mf', '3DBenchy.stl.gz', 'CalibrationCube.stl', 'HollowCalibrationCube.stl', 'spot.stl'];
+  const names = ['3DBenchy.3mf', '3DBenchy.stl.gz', 'CalibrationCube.stl', 'HollowCalibrationCube.stl', 'spot.stl', '3DBenchy-x4.stl'];
   assert.deepEqual(selectModels(names, []), names);
   assert.deepEqual(selectModels(names, ['3dbenchy']), ['3DBenchy.3mf', '3DBenchy.stl.gz']);
+  assert.deepEqual(selectModels(names, ['3DBenchy-x4']), ['3DBenchy-x4.stl']);
+  assert.deepEqual(selectModels(names, ['benchy']), ['3DBenchy.3mf', '3DBenchy.stl.gz', '3DBenchy-x4.stl']);
   assert.deepEqual(selectModels(names, ['CalibrationCube']), ['CalibrationCube.stl']);
   assert.deepEqual(selectModels(names, ['calib']), ['CalibrationCube.stl', 'HollowCalibrationCube.stl']);
   assert.deepEqual(selectModels(names, ['3DBenchy.3mf', 'spot']), ['3DBenchy.3mf', 'spot.stl']);

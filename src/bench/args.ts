@@ -4,12 +4,14 @@
 
 export interface BenchOptions {
   /** Model filters (case-insensitive); empty = every model. See `selectModels`. */
-  only: string[];
-  /** Threads passed to Strata (--threads) and CuraEngine (-m); null = one per core. */
+  models: string[];
+  /** Threads passed to Strata (--threads) and CuraEngine (-m); null = Strata's default, CuraEngine one per core. */
   threads: number | null;
-  /** Runs per slicer and model; the median is reported. */
+  /** Counted runs per slicer and model (interleaved rounds); medians are reported. */
   repeat: number;
-  /** Print the results as JSON on stdout instead of tables. */
+  /** Rounds run first and not counted (file cache, CPU clocks, lazily loaded libraries). */
+  warmup: number;
+  /** Print the results as JSON on stdout instead of Markdown. */
   json: boolean;
   /** Seconds before one slicer run is killed and reported as a timeout. */
   timeoutSeconds: number;
@@ -19,8 +21,16 @@ export interface BenchOptions {
   strataCli: string | null;
   /** Run CuraEngine / PrusaSlicer when they are on PATH. */
   peers: boolean;
-  /** Run the per-infill-pattern section on 3DBenchy. */
+  /** Run PrusaSlicer (with peers); it is the slowest of the three. */
+  prusa: boolean;
+  /** The per-infill-pattern section on 3DBenchy. */
   patterns: boolean;
+  /** The support section (normal and tree against none). */
+  support: boolean;
+  /** The 1-thread against 2-thread section on 3DBenchy. */
+  threadScaling: boolean;
+  /** The ~1 M-triangle mesh made by subdividing 3DBenchy. */
+  big: boolean;
   /** Keep the temporary folder with the G-code written. */
   keep: boolean;
   help: boolean;
@@ -29,35 +39,50 @@ export interface BenchOptions {
 export const BENCH_USAGE = `Usage: npm run bench -- [options]
   (or: node dist/bench/run.js [options])
 
-Slices every model in ../shared/models with Strata (node dist/cli/main.js slice) and, where they are on
-PATH, CuraEngine and PrusaSlicer with a comparable profile; prints wall time and peak memory per model,
-then Strata's time per infill pattern on 3DBenchy relative to grid.
+Slices every model in ../shared/models, and a ~1 M-triangle mesh made by subdividing 3DBenchy once, with Strata
+(node dist/cli/main.js slice, its default settings) and, where they are on PATH, CuraEngine and PrusaSlicer with
+the common profile (0.2 mm layers, 2 walls, 0.8 mm top/bottom, 20 % grid). Runs are interleaved (A B C A B C …):
+a warm-up round, then --repeat counted rounds; it prints the medians of wall time, CPU time and peak memory,
+Strata/CuraEngine ratios (median of the per-round ratios), then on 3DBenchy Strata with 1 and 2 threads and
+every infill pattern against grid, support (normal, tree) against none on SupportTest, Overhang, spot and
+3DBenchy, and the targets of the speed issue with a verdict each. Warns when the machine is busy.
 
 Options:
-  --only NAME        only models whose file name or stem matches NAME (repeatable, or comma-separated)
-  --threads N        threads for Strata (--threads N) and CuraEngine (-mN); default: one per core
-  --repeat K         run each slicer K times per model and report the median (default 1)
-  --json             print the results as JSON instead of tables
+  --models NAMES     only these models: a file name or stem (3DBenchy, 3DBenchy-x4, spot …), else every model
+                     whose name contains it; comma-separated or repeated (--only is the same)
+  --repeat N         counted runs per slicer (default 5)
+  --warmup N         uncounted rounds before them (default 1; 0 = none)
+  --threads N        threads for Strata (--threads N) and CuraEngine (-mN); default: Strata's own default,
+                     CuraEngine one per core
+  --json             print the results as JSON instead of Markdown
   --timeout SEC      kill a slicer run after SEC seconds (default 600)
-  --models DIR       folder of models (default ../shared/models beside the repository)
+  --models-dir DIR   folder of models (default ../shared/models beside the repository)
   --strata-cli FILE  Strata CLI script to run with node (default dist/cli/main.js)
   --no-peers         do not run CuraEngine or PrusaSlicer
-  --no-patterns      skip the per-infill-pattern section
+  --no-prusa         do not run PrusaSlicer
+  --no-patterns      skip the infill-pattern section
+  --no-support       skip the support section
+  --no-thread-scaling  skip the 1-against-2-threads section
+  --no-big           skip the subdivided ~1 M-triangle mesh
   --keep             keep the temporary folder with the G-code written
-  -h, --help         show this help`;
+  -h, --help         show this help
+
+A quick check: npm run bench -- --models CalibrationCube --repeat 1 --warmup 0 --no-big`;
 
 export class BenchArgsError extends Error {
   override name = 'BenchArgsError';
 }
 
-const VALUE_FLAGS = ['--only', '--threads', '--repeat', '--timeout', '--models', '--strata-cli'] as const;
+const VALUE_FLAGS = ['--models', '--only', '--threads', '--repeat', '--warmup', '--timeout', '--models-dir', '--strata-cli'] as const;
 type ValueFlag = (typeof VALUE_FLAGS)[number];
 const isValueFlag = (s: string): s is ValueFlag => (VALUE_FLAGS as readonly string[]).includes(s);
 
-function positiveInt(flag: string, raw: string, max: number): number {
+const SWITCHES = ['--json', '--no-peers', '--no-prusa', '--no-patterns', '--no-support', '--no-thread-scaling', '--no-big', '--keep', '--help'] as const;
+
+function wholeNumber(flag: string, raw: string, min: number, max: number): number {
   const n = Number(raw);
-  if (!/^\d+$/.test(raw) || !Number.isInteger(n) || n < 1 || n > max) {
-    throw new BenchArgsError(`${flag} needs a whole number from 1 to ${max}, got "${raw}"`);
+  if (!/^\d+$/.test(raw) || !Number.isInteger(n) || n < min || n > max) {
+    throw new BenchArgsError(`${flag} needs a whole number from ${min} to ${max}, got "${raw}"`);
   }
   return n;
 }
@@ -68,21 +93,30 @@ function positiveNumber(flag: string, raw: string): number {
   return n;
 }
 
-/** Parses the arguments after the script name. Throws BenchArgsError naming the bad flag. */
-export function parseBenchArgs(argv: readonly string[]): BenchOptions {
-  const options: BenchOptions = {
-    only: [],
+export function defaultBenchOptions(): BenchOptions {
+  return {
+    models: [],
     threads: null,
-    repeat: 1,
+    repeat: 5,
+    warmup: 1,
     json: false,
     timeoutSeconds: 600,
     modelsDir: null,
     strataCli: null,
     peers: true,
+    prusa: true,
     patterns: true,
+    support: true,
+    threadScaling: true,
+    big: true,
     keep: false,
     help: false,
   };
+}
+
+/** Parses the arguments after the script name. Throws BenchArgsError naming the bad flag. */
+export function parseBenchArgs(argv: readonly string[]): BenchOptions {
+  const options = defaultBenchOptions();
   for (let i = 0; i < argv.length; i++) {
     let arg = argv[i]!;
     let value: string | undefined;
@@ -97,19 +131,26 @@ export function parseBenchArgs(argv: readonly string[]): BenchOptions {
         if (value === undefined) throw new BenchArgsError(`${arg} needs a value`);
       }
       switch (arg) {
-        case '--only':
-          options.only.push(...value.split(',').map((s) => s.trim()).filter((s) => s !== ''));
+        case '--models':
+        case '--only': {
+          const names = value.split(',').map((s) => s.trim()).filter((s) => s !== '');
+          if (names.length === 0) throw new BenchArgsError(`${arg} needs at least one model name`);
+          options.models.push(...names);
           break;
+        }
         case '--threads':
-          options.threads = positiveInt(arg, value, 256);
+          options.threads = wholeNumber(arg, value, 1, 256);
           break;
         case '--repeat':
-          options.repeat = positiveInt(arg, value, 1000);
+          options.repeat = wholeNumber(arg, value, 1, 1000);
+          break;
+        case '--warmup':
+          options.warmup = wholeNumber(arg, value, 0, 100);
           break;
         case '--timeout':
           options.timeoutSeconds = positiveNumber(arg, value);
           break;
-        case '--models':
+        case '--models-dir':
           options.modelsDir = value;
           break;
         case '--strata-cli':
@@ -126,8 +167,20 @@ export function parseBenchArgs(argv: readonly string[]): BenchOptions {
       case '--no-peers':
         options.peers = false;
         break;
+      case '--no-prusa':
+        options.prusa = false;
+        break;
       case '--no-patterns':
         options.patterns = false;
+        break;
+      case '--no-support':
+        options.support = false;
+        break;
+      case '--no-thread-scaling':
+        options.threadScaling = false;
+        break;
+      case '--no-big':
+        options.big = false;
         break;
       case '--keep':
         options.keep = true;
@@ -137,9 +190,7 @@ export function parseBenchArgs(argv: readonly string[]): BenchOptions {
         options.help = true;
         break;
       default:
-        throw new BenchArgsError(
-          `unknown argument "${arg}"; allowed: ${[...VALUE_FLAGS, '--json', '--no-peers', '--no-patterns', '--keep', '--help'].join(', ')}`,
-        );
+        throw new BenchArgsError(`unknown argument "${arg}"; allowed: ${[...VALUE_FLAGS, ...SWITCHES, '-h'].join(', ')}`);
     }
   }
   return options;

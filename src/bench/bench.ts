@@ -1,19 +1,28 @@
 /**
- * The benchmark itself: slices each model with Strata's CLI (a child process) and with the peer slicers found
- * on PATH, then Strata once per infill pattern on 3DBenchy. Returns the results as data (see report.ts).
+ * The benchmark itself. Each section is one or more interleaved blocks (interleave.ts):
+ *  1. every model: Strata with its default settings, CuraEngine and PrusaSlicer (where installed);
+ *  2. 3DBenchy with --threads 1 and --threads 2 (and whether their G-code equals the default's);
+ *  3. 3DBenchy with every infill pattern, against grid;
+ *  4. support (normal, tree) against none on SupportTest, Overhang, spot and 3DBenchy.
+ * Every block records how much other processes ran meanwhile (load.ts). Returns the results as data (report.ts).
  */
-import { existsSync, mkdirSync } from 'node:fs';
+import { createHash } from 'node:crypto';
+import { existsSync, mkdirSync, readFileSync } from 'node:fs';
 import { availableParallelism, cpus, loadavg, platform } from 'node:os';
 import { join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { PATTERN_IDS } from '../infill/types.js';
 import type { BenchOptions } from './args.js';
 import { selectModels } from './args.js';
-import { detectMemoryMethod, measureCommand, type Measurement, type MemoryMethod } from './measure.js';
-import { defaultModelsDir, listModelFiles, prepareModels, type BenchModel } from './models.js';
+import { runInterleaved, type Job } from './interleave.js';
+import { blockLoad, busyThreshold, loadMark, loadWarnings, startLoadWarning, type BlockLoad } from './load.js';
+import { detectMemoryMethod, measureCommand, type MemoryMethod } from './measure.js';
+import { BIG_MODEL, bigModelSource, defaultModelsDir, listModelFiles, prepareModels, type BenchModel } from './models.js';
 import { curaCommand, findCuraDefinitions, findOnPath, PEER_EXECUTABLES, peerReads, peerVersion, prusaCommand } from './peers.js';
-import type { BenchReport, ModelRow, PatternRow, SlicerStats } from './report.js';
-import { notRun, relativeToGrid, summarize } from './report.js';
+import { readSelfTimes } from './proc.js';
+import type { BenchReport, ModelRow, PatternRow, SlicerStats, SupportRow, ThreadScaling } from './report.js';
+import { notRun, pairedRatio, relativeToGrid, supportRow, triangleScaling } from './report.js';
+import { checkTargets, TARGET_MODELS } from './targets.js';
 
 export interface BenchContext {
   /** A folder for unpacked models and G-code output; the caller removes it. */
@@ -28,146 +37,209 @@ export interface BenchContext {
   memoryMethod?: MemoryMethod;
 }
 
+/** Models the support section runs on, when selected. */
+export const SUPPORT_MODELS = Object.freeze(['SupportTest.stl', 'Overhang.stl', 'spot.stl', '3DBenchy.stl']);
+
 /** dist/cli/main.js of this build (from dist/bench/). */
 export function defaultStrataCli(): string {
   return fileURLToPath(new URL('../cli/main.js', import.meta.url));
 }
 
-/** One slicer invocation to measure. */
-interface Job {
-  label: string;
-  command: string;
-  args: string[];
-}
-
-const isJob = (x: Job | SlicerStats): x is Job => 'command' in x;
-
 const safeName = (s: string) => s.replace(/[^A-Za-z0-9._-]+/g, '_');
 
-/** The model the infill-pattern section uses: 3DBenchy as STL if selected, else its 3MF, else none. */
+/** The model the 3DBenchy sections use: 3DBenchy as STL if selected, else its 3MF, else none. */
 export function patternModel(models: readonly BenchModel[]): BenchModel | null {
   const benchies = models.filter((m) => m.name.toLowerCase().startsWith('3dbenchy.'));
   return benchies.find((m) => m.name.toLowerCase().endsWith('.stl')) ?? benchies[0] ?? null;
 }
 
+/** The model files on offer: the folder's, plus the big mesh when it can be made (and is wanted). */
+export function availableModels(files: readonly string[], big: boolean): string[] {
+  const withoutBig = files.filter((f) => f !== BIG_MODEL);
+  if (!big) return withoutBig;
+  return files.includes(BIG_MODEL) || bigModelSource(files) ? [...withoutBig, BIG_MODEL] : withoutBig;
+}
+
+function fileHash(path: string): string | null {
+  try {
+    return createHash('sha256').update(readFileSync(path)).digest('hex');
+  } catch {
+    return null;
+  }
+}
+
 export async function runBench(options: BenchOptions, ctx: BenchContext): Promise<BenchReport> {
+  const startedAt = new Date().toISOString();
   const env = ctx.env ?? process.env;
   const modelsDir = resolve(options.modelsDir ?? defaultModelsDir());
   if (!existsSync(modelsDir)) throw new Error(`models folder not found: ${modelsDir}`);
-  const available = listModelFiles(modelsDir);
-  const names = selectModels(available, options.only);
+  const available = availableModels(listModelFiles(modelsDir), options.big);
+  const names = selectModels(available, options.models);
   if (names.length === 0) {
-    throw new Error(`no model matches --only ${options.only.join(',')}; models in ${modelsDir}: ${available.join(', ') || 'none'}`);
+    throw new Error(`no model matches --models ${options.models.join(',')}; models in ${modelsDir}: ${available.join(', ') || 'none'}`);
   }
+  if (names.includes(BIG_MODEL)) ctx.log(`making ${BIG_MODEL} (3DBenchy, subdivided once) …`);
   const models = prepareModels(modelsDir, names, ctx.workDir);
   const outDir = join(ctx.workDir, 'out');
   mkdirSync(outDir, { recursive: true });
   const prusaData = join(ctx.workDir, 'prusa-datadir');
   mkdirSync(prusaData, { recursive: true });
 
-  const loadAtStart = loadavg()[0]!;
+  const cpuCount = availableParallelism();
   const memoryMethod = ctx.memoryMethod ?? detectMemoryMethod();
-  const threads = options.threads ?? availableParallelism();
+  const curaThreads = options.threads ?? cpuCount;
   const timeoutMs = options.timeoutSeconds * 1000;
   const strataPath = resolve(options.strataCli ?? defaultStrataCli());
   const strataBuilt = existsSync(strataPath);
 
   const curaExe = options.peers ? findOnPath(PEER_EXECUTABLES.cura, env) : null;
   const curaDefs = curaExe ? findCuraDefinitions(env) : null;
-  const prusaExe = options.peers ? findOnPath(PEER_EXECUTABLES.prusa, env) : null;
+  const prusaExe = options.peers && options.prusa ? findOnPath(PEER_EXECUTABLES.prusa, env) : null;
   const notes: string[] = [];
   if (curaExe && !curaDefs) notes.push(`CuraEngine found at ${curaExe} but no fdmprinter.def.json (install Debian's \`cura\` package or set CURA_FDMPRINTER)`);
-
-  const measure = (command: string, args: readonly string[]) => measureCommand(command, args, { method: memoryMethod, timeoutMs, env, ...(ctx.signal ? { signal: ctx.signal } : {}) });
-
-  /**
-   * Runs each job `repeat` times, round-robin (one run of every job per round, so a change in machine load
-   * during the run hits every slicer alike), dropping a job after its first failure; folds each job's runs.
-   * An entry that is already a SlicerStats (missing, unsupported) is passed through.
-   */
-  const runRounds = async <K extends string>(jobs: Record<K, Job | SlicerStats>): Promise<Record<K, SlicerStats>> => {
-    const keys = Object.keys(jobs) as K[];
-    const runs = new Map<K, Measurement[]>();
-    const active = new Set(keys.filter((k) => isJob(jobs[k])));
-    for (const k of active) runs.set(k, []);
-    for (let round = 1; round <= options.repeat && active.size > 0; round++) {
-      for (const k of [...active]) {
-        if (ctx.signal?.aborted) break;
-        const job = jobs[k] as Job;
-        const m = await measure(job.command, job.args);
-        runs.get(k)!.push(m);
-        ctx.log(`  ${job.label} run ${round}/${options.repeat}: ${m.wallSeconds.toFixed(2)} s${m.exitCode === 0 && !m.timedOut ? '' : ' (failed)'}`);
-        if (m.exitCode !== 0 || m.timedOut) active.delete(k);
-      }
-    }
-    const out = {} as Record<K, SlicerStats>;
-    for (const k of keys) {
-      const job: Job | SlicerStats = jobs[k];
-      if (!isJob(job)) out[k] = job;
-      else out[k] = runs.get(k)!.length > 0 ? summarize(runs.get(k)!) : notRun('skipped', 'interrupted');
-    }
-    return out;
+  const peers: BenchReport['peers'] = {
+    cura: curaExe && curaDefs ? { path: curaExe, version: peerVersion('cura', curaExe), definitions: curaDefs } : null,
+    prusa: prusaExe ? { path: prusaExe, version: peerVersion('prusa', prusaExe) } : null,
   };
 
+  // Read last, just before the first run (after unpacking, subdividing and asking the peers their versions).
+  const loadBefore = loadavg()[0]!;
+  const startWarning = startLoadWarning(loadBefore, cpuCount);
+  if (startWarning) ctx.log(`WARNING: ${startWarning}`);
+
+  const blocks: BlockLoad[] = [];
+  const block = async <K extends string>(label: string, jobs: Record<K, Job | SlicerStats>): Promise<Record<K, SlicerStats>> => {
+    const mark = loadMark();
+    const result = await runInterleaved(jobs, {
+      repeat: options.repeat,
+      warmup: options.warmup,
+      measure: (job) => measureCommand(job.command, job.args, { method: memoryMethod, timeoutMs, env, ...(ctx.signal ? { signal: ctx.signal } : {}) }),
+      log: ctx.log,
+      ...(ctx.signal ? { signal: ctx.signal } : {}),
+    });
+    blocks.push(blockLoad(label, mark, cpuCount));
+    return result;
+  };
+  const aborted = () => ctx.signal?.aborted === true;
+
+  const gcodePath = (model: BenchModel, tag: string) => join(outDir, `${safeName(model.name)}.${tag}.gcode`);
   const strataJob = (model: BenchModel, tag: string, extra: readonly string[]): Job | SlicerStats => {
     if (!strataBuilt) return notRun('missing', 'strata CLI not built');
-    const out = join(outDir, `${safeName(model.name)}.${tag}.gcode`);
-    // without --threads, Strata picks its own default (what a user gets); CuraEngine gets one per core
-    const args = [strataPath, 'slice', model.path, '-o', out, ...(options.threads !== null ? ['--threads', String(options.threads)] : []), ...extra];
+    // without --threads, Strata picks its own default (what a user gets)
+    const threads = options.threads !== null && !extra.includes('--threads') ? ['--threads', String(options.threads)] : [];
+    const args = [strataPath, 'slice', model.path, '-o', gcodePath(model, tag), ...threads, ...extra];
     return { label: ['Strata', ...extra].join(' '), command: process.execPath, args };
   };
   const curaJob = (model: BenchModel): Job | SlicerStats => {
     if (!curaExe || !curaDefs) return notRun('missing');
     if (!peerReads('cura', model.path)) return notRun('unsupported', 'CuraEngine reads STL only');
-    return { label: 'CuraEngine', ...curaCommand(curaExe, curaDefs, model.path, join(outDir, `${safeName(model.name)}.cura.gcode`), threads) };
+    return { label: 'CuraEngine', ...curaCommand(curaExe, curaDefs, model.path, gcodePath(model, 'cura'), curaThreads) };
   };
   const prusaJob = (model: BenchModel): Job | SlicerStats => {
     if (!prusaExe) return notRun('missing');
     if (!peerReads('prusa', model.path)) return notRun('unsupported');
-    return { label: 'PrusaSlicer', ...prusaCommand(prusaExe, prusaData, model.path, join(outDir, `${safeName(model.name)}.prusa.gcode`)) };
+    return { label: 'PrusaSlicer', ...prusaCommand(prusaExe, prusaData, model.path, gcodePath(model, 'prusa')) };
   };
 
+  // 1. every model against the peers
   const rows: ModelRow[] = [];
   for (const [index, model] of models.entries()) {
+    if (aborted()) break;
     ctx.log(`[${index + 1}/${models.length}] ${model.name}`);
-    const r = await runRounds({ strata: strataJob(model, 'strata', []), cura: curaJob(model), prusa: prusaJob(model) });
-    rows.push({ model: model.name, triangles: model.triangles, ...r });
+    const r = await block(model.name, { strata: strataJob(model, 'strata', []), cura: curaJob(model), prusa: prusaJob(model) });
+    rows.push({
+      model: model.name,
+      triangles: model.triangles,
+      ...(model.madeFrom ? { madeFrom: model.madeFrom } : {}),
+      ...r,
+      wallRatio: pairedRatio(r.strata, r.cura, 'wallSeconds'),
+      cpuRatio: pairedRatio(r.strata, r.cura, 'cpuSeconds'),
+    });
   }
 
-  const benchy = options.patterns && strataBuilt ? patternModel(models) : null;
+  const benchy = strataBuilt ? patternModel(models) : null;
+  const needsBenchy = (section: string) => {
+    if (strataBuilt && !benchy) notes.push(`${section} skipped: 3DBenchy is not among the selected models`);
+  };
+
+  // 2. one thread against two
+  let threadScaling: ThreadScaling | null = null;
+  if (options.threadScaling && !aborted()) {
+    if (benchy) {
+      ctx.log(`threads on ${benchy.name}`);
+      const r = await block(`${benchy.name} threads`, { one: strataJob(benchy, 'threads-1', ['--threads', '1']), two: strataJob(benchy, 'threads-2', ['--threads', '2']) });
+      const defaultRow = rows.find((row) => row.model === benchy.name);
+      const allOk = r.one.status === 'ok' && r.two.status === 'ok' && defaultRow?.strata.status === 'ok';
+      const hashes = allOk ? ['threads-1', 'threads-2', 'strata'].map((tag) => fileHash(gcodePath(benchy, tag))) : [];
+      threadScaling = {
+        model: benchy.name,
+        one: r.one,
+        two: r.two,
+        speedup: pairedRatio(r.one, r.two, 'wallSeconds'),
+        cpuRatio: pairedRatio(r.two, r.one, 'cpuSeconds'),
+        gcodeIdentical: allOk && hashes.every((h) => h !== null) ? hashes.every((h) => h === hashes[0]) : null,
+      };
+    } else needsBenchy('thread section');
+  }
+
+  // 3. infill patterns against grid
   let patterns: PatternRow[] = [];
-  if (benchy) {
-    ctx.log(`infill patterns on ${benchy.name}`);
-    const jobs = Object.fromEntries(PATTERN_IDS.map((p) => [p, strataJob(benchy, `infill-${p}`, ['--infill-pattern', p])])) as Record<string, Job | SlicerStats>;
-    const results = await runRounds(jobs);
-    const raw = PATTERN_IDS.map((pattern) => ({ pattern, strata: results[pattern]! }));
-    patterns = relativeToGrid(raw);
-  } else if (options.patterns && strataBuilt) {
-    notes.push('infill-pattern section skipped: 3DBenchy is not among the selected models');
+  if (options.patterns && !aborted()) {
+    if (benchy) {
+      ctx.log(`infill patterns on ${benchy.name}`);
+      const jobs = Object.fromEntries(PATTERN_IDS.map((p) => [p, strataJob(benchy, `infill-${p}`, ['--infill-pattern', p])])) as Record<string, Job | SlicerStats>;
+      const results = await block(`${benchy.name} patterns`, jobs);
+      patterns = relativeToGrid(PATTERN_IDS.map((pattern) => ({ pattern, strata: results[pattern]! })));
+    } else needsBenchy('infill-pattern section');
   }
 
+  // 4. support against none
+  const support: SupportRow[] = [];
+  if (options.support && strataBuilt) {
+    const supportModels = models.filter((m) => SUPPORT_MODELS.includes(m.name));
+    if (supportModels.length === 0) notes.push(`support section skipped: none of ${SUPPORT_MODELS.join(', ')} is among the selected models`);
+    for (const model of supportModels) {
+      if (aborted()) break;
+      ctx.log(`support on ${model.name}`);
+      const r = await block(`${model.name} support`, {
+        none: strataJob(model, 'support-none', []),
+        normal: strataJob(model, 'support-normal', ['--support-enabled', '--support-type', 'normal']),
+        tree: strataJob(model, 'support-tree', ['--support-enabled', '--support-type', 'tree']),
+      });
+      support.push(supportRow(model.name, r.none, r.normal, r.tree));
+    }
+  }
+
+  if (aborted()) notes.push('interrupted: the sections after the interruption did not run');
   const cpuList = cpus();
-  return {
-    startedAt: new Date().toISOString(),
+  const load = { cpus: cpuCount, busyAbove: busyThreshold(cpuCount), before: loadBefore, blocks };
+  const report: BenchReport = {
+    startedAt,
     machine: {
-      cpus: availableParallelism(),
+      cpus: cpuCount,
       cpuModel: cpuList[0]?.model.trim() ?? 'unknown',
       node: process.version,
       platform: `${platform()} ${process.arch}`,
-      loadAverage: { start: loadAtStart, end: loadavg()[0]! },
     },
-    threads,
-    threadsGiven: options.threads !== null,
+    load,
+    warnings: loadWarnings(load),
     repeat: options.repeat,
+    warmup: options.warmup,
+    threads: options.threads,
+    curaThreads,
     memoryMethod,
+    cpuMeasured: readSelfTimes() !== null,
     strataCli: { path: strataPath, built: strataBuilt },
-    peers: {
-      cura: curaExe && curaDefs ? { path: curaExe, version: peerVersion('cura', curaExe), definitions: curaDefs } : null,
-      prusa: prusaExe ? { path: prusaExe, version: peerVersion('prusa', prusaExe) } : null,
-    },
+    peers,
     models: rows,
-    patternModel: benchy?.name ?? null,
+    threadScaling,
+    patternModel: patterns.length > 0 ? benchy!.name : null,
     patterns,
+    support,
+    triangleScaling: triangleScaling(rows, TARGET_MODELS.benchy, BIG_MODEL),
+    targets: [],
     notes,
   };
+  report.targets = checkTargets(report);
+  return report;
 }

@@ -27,6 +27,28 @@ for (const method of methods) {
   });
 }
 
+/** A node script that spends `ms` of its own CPU time (by its own clock, so the machine's load does not matter). */
+const burn = (ms: number) => `const t0 = process.cpuUsage(); for (;;) { const u = process.cpuUsage(t0); if (u.user + u.system >= ${ms * 1000}) break; }`;
+
+test('measureCommand: CPU time from the kernel covers the process, its threads and its waited-for children', { skip: process.platform !== 'linux' && 'CPU accounting reads /proc' }, async () => {
+  // main thread 200 ms, two worker threads 200 ms each, a child process 200 ms: at least 0.8 s in all
+  const script = `
+    const { Worker } = require('node:worker_threads');
+    const { spawnSync } = require('node:child_process');
+    const burn = ${JSON.stringify(burn(200))};
+    const workers = [0, 1].map(() => new Worker(burn, { eval: true }));
+    spawnSync(process.execPath, ['-e', burn], { stdio: 'inherit' });
+    eval(burn);
+    Promise.all(workers.map((w) => new Promise((r) => w.on('exit', r)))).then(() => process.exit(0));
+  `;
+  const m = await measureCommand(process.execPath, ['-e', script], { method: 'none', timeoutMs: 60_000 });
+  assert.equal(failureReason(m), '');
+  assert.ok(m.cpuSeconds !== null && m.cpuSeconds >= 0.78, `cpu ${m.cpuSeconds}`);
+  // and a child that sleeps uses next to none
+  const idle = await measureCommand(process.execPath, ['-e', 'setTimeout(() => {}, 300)'], { method: 'none', timeoutMs: 60_000 });
+  assert.ok(idle.cpuSeconds !== null && idle.cpuSeconds < 0.25 && idle.cpuSeconds < m.cpuSeconds / 3, `idle cpu ${idle.cpuSeconds}`);
+});
+
 test('measureCommand reports a failing command with its last stderr line', async () => {
   const m = await measureCommand(process.execPath, ['-e', 'console.error("bad model"); process.exit(3)'], { method: detectMemoryMethod(), timeoutMs: 20_000 });
   assert.equal(m.exitCode, 3);

@@ -1,5 +1,14 @@
 /**
- * Runs one command as a child process and measures its wall time and peak resident memory.
+ * Runs one command as a child process and measures its wall time, CPU time and peak resident memory.
+ *
+ * Wall time: performance.now() from just before spawn to the child's exit (so for Strata it includes node's
+ * start-up and module loading, as a user sees it).
+ *
+ * CPU time (user + system): the kernel's own accounting of the child after it was reaped, read as the change
+ * of this process's cutime + cstime in /proc/self/stat (see proc.ts). It covers every thread of the child and
+ * every descendant it waited for, to one clock tick. Node's process.resourceUsage() cannot do this (it reports
+ * RUSAGE_SELF only), and /proc/<pid>/stat of the child cannot be read once it has been reaped. Only one
+ * command may be measured at a time in this process (the harness runs them one after another).
  *
  * Peak memory, in order of preference:
  *  - `gnu-time`: the command runs under `/usr/bin/time -f %M -o FILE`, which reports the child's maximum
@@ -8,7 +17,8 @@
  *  - `proc-poll`: `/proc/<pid>/status` is read every 10 ms and the largest VmHWM (the kernel's own high-water mark)
  *    seen is kept. VmHWM is monotonic, so only growth in the last ~10 ms before exit can be missed.
  *  - `none`: no way to measure (not Linux); peakMiB is null.
- * Wall time is measured here (performance.now around spawn → close) for every method.
+ * Node itself cannot give a child's ru_maxrss (neither spawn nor process.resourceUsage() exposes wait4's
+ * rusage), hence GNU time where it is installed; CI images without it fall back to polling.
  */
 import { spawn, spawnSync } from 'node:child_process';
 import { randomUUID } from 'node:crypto';
@@ -16,6 +26,7 @@ import { existsSync, readFileSync, rmSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { performance } from 'node:perf_hooks';
+import { clockTicksPerSecond, readSelfTimes } from './proc.js';
 
 export type MemoryMethod = 'gnu-time' | 'proc-poll' | 'none';
 
@@ -29,6 +40,8 @@ export interface Measurement {
   /** Set when the command could not be started (e.g. not found). */
   spawnError: string | null;
   wallSeconds: number;
+  /** User + system CPU seconds of the child's whole process tree; null where /proc is missing. */
+  cpuSeconds: number | null;
   peakMiB: number | null;
   /** The last few KiB of standard error, for failure messages. */
   stderrTail: string;
@@ -97,6 +110,8 @@ export function measureCommand(command: string, args: readonly string[], options
     let timedOut = false;
     let spawnError: string | null = null;
     let polledPeak: number | null = null;
+    const hz = clockTicksPerSecond(); // (spawns getconf once: before the reading below, never inside a run)
+    const before = readSelfTimes();
     const start = performance.now();
     const child = spawn(file, argv, {
       cwd: options.cwd,
@@ -137,6 +152,9 @@ export function measureCommand(command: string, args: readonly string[], options
     });
     child.on('close', (code, signal) => {
       const wallSeconds = (performance.now() - start) / 1000;
+      // the child has been reaped by now ('close' comes after 'exit'), so its times are in our cutime/cstime
+      const after = readSelfTimes();
+      const cpuSeconds = before && after && child.pid !== undefined ? (after.cutime + after.cstime - before.cutime - before.cstime) / hz : null;
       clearTimeout(timer);
       if (poller) clearInterval(poller);
       options.signal?.removeEventListener('abort', onAbort);
@@ -150,7 +168,7 @@ export function measureCommand(command: string, args: readonly string[], options
         rmSync(timeFile, { force: true });
       }
       const tail = stderr.subarray(Math.max(0, stderr.length - STDERR_TAIL_BYTES)).toString('utf8');
-      resolve({ exitCode: code, signal, timedOut, spawnError, wallSeconds, peakMiB, stderrTail: tail });
+      resolve({ exitCode: code, signal, timedOut, spawnError, wallSeconds, cpuSeconds, peakMiB, stderrTail: tail });
     });
   });
 }

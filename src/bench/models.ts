@@ -1,12 +1,14 @@
 /**
- * The benchmark's models: listing the shared folder, unpacking gzipped STL once into a work folder, and
- * counting triangles (for the table only; the slicers parse the files themselves).
+ * The benchmark's models: listing the shared folder, unpacking gzipped STL once into a work folder, making the
+ * big mesh (3DBenchy subdivided once, about 1 M triangles), and counting triangles (for the tables only; the
+ * slicers parse the files themselves).
  */
-import { readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { existsSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gunzipSync } from 'node:zlib';
 import { strFromU8, unzipSync } from 'fflate';
+import { subdivideBinaryStl } from './subdivide.js';
 
 export interface BenchModel {
   /** Display name: the file name, without .gz for unpacked files. */
@@ -14,6 +16,18 @@ export interface BenchModel {
   /** Path the slicers read (inside the work folder for unpacked files). */
   path: string;
   triangles: number | null;
+  /** How the bench made it, for models that are not files in the folder (the big mesh); else absent. */
+  madeFrom?: string;
+}
+
+/** The big mesh: 3DBenchy after one round of midpoint subdivision (4 × 225,154 = 900,616 triangles). */
+export const BIG_MODEL = '3DBenchy-x4.stl';
+/** Files the big mesh can be made from, in order of preference. */
+export const BIG_MODEL_SOURCES = Object.freeze(['3DBenchy.stl', '3DBenchy.stl.gz']);
+
+/** The file in `names` the big mesh is made from, or null when the folder has none. */
+export function bigModelSource(names: readonly string[]): string | null {
+  return BIG_MODEL_SOURCES.find((s) => names.includes(s)) ?? null;
 }
 
 const MODEL_EXTENSIONS = Object.freeze(['.stl', '.stl.gz', '.3mf', '.obj']);
@@ -66,9 +80,26 @@ export function countTriangles(name: string, bytes: Uint8Array): number | null {
   return null;
 }
 
-/** Reads the chosen files; gzipped ones are unpacked once into workDir. */
+/** The bytes of a model file, gunzipped when its name ends in .gz. */
+function readModel(dir: string, file: string): Uint8Array {
+  const bytes: Uint8Array = readFileSync(join(dir, file));
+  return file.toLowerCase().endsWith('.gz') ? gunzipSync(bytes) : bytes;
+}
+
+/**
+ * Reads the chosen files; gzipped ones are unpacked once into workDir, and BIG_MODEL, unless the folder has
+ * that file, is made there from the folder's 3DBenchy STL.
+ */
 export function prepareModels(dir: string, names: readonly string[], workDir: string): BenchModel[] {
   return names.map((file) => {
+    if (file === BIG_MODEL && !existsSync(join(dir, file))) {
+      const source = bigModelSource(listModelFiles(dir));
+      if (!source) throw new Error(`${BIG_MODEL} is made from ${BIG_MODEL_SOURCES.join(' or ')}, and ${dir} has neither`);
+      const big = subdivideBinaryStl(readModel(dir, source), `${source.replace(/\.gz$/i, '')} after one round of midpoint subdivision`);
+      const path = join(workDir, BIG_MODEL);
+      writeFileSync(path, big);
+      return { name: BIG_MODEL, path, triangles: countTriangles(BIG_MODEL, big), madeFrom: `${source.replace(/\.gz$/i, '')}, each triangle split into 4 at its edge midpoints` };
+    }
     const bytes: Uint8Array = readFileSync(join(dir, file));
     if (file.toLowerCase().endsWith('.gz')) {
       const name = file.slice(0, -3);

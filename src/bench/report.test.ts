@@ -1,88 +1,150 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import type { Measurement } from './measure.js';
-import { notRun, relativeToGrid, renderReport, summarize, type BenchReport, type SlicerStats } from './report.js';
+import { figuresCell, notRun, pairedRatio, relativeToGrid, renderReport, summarize, supportRow, triangleScaling, type BenchReport, type ModelRow, type SlicerStats } from './report.js';
+import { checkTargets } from './targets.js';
 
-const run = (wallSeconds: number, peakMiB: number | null, exitCode = 0): Measurement => ({
-  exitCode, signal: null, timedOut: false, spawnError: null, wallSeconds, peakMiB, stderrTail: exitCode === 0 ? '' : 'error: broken mesh\n',
+const run = (wallSeconds: number, cpuSeconds: number | null, peakMiB: number | null, exitCode = 0): Measurement => ({
+  exitCode, signal: null, timedOut: false, spawnError: null, wallSeconds, cpuSeconds, peakMiB, stderrTail: exitCode === 0 ? '' : 'error: broken mesh\n',
 });
-const ok = (wallSeconds: number, peakMiB: number): SlicerStats => ({ status: 'ok', wallSeconds, peakMiB, samples: [wallSeconds] });
+/** ok stats from per-round walls (CPU = 1.5 × wall, peak fixed). */
+const ok = (walls: number[], peakMiB = 100, cpuFactor = 1.5): SlicerStats => summarize(walls.map((w) => run(w, w * cpuFactor, peakMiB)));
 
-test('summarize takes medians; a failure wins', () => {
-  const s = summarize([run(3, 100), run(1, 90), run(2, 120)]);
+test('summarize takes medians of wall, CPU and peak; a failure wins', () => {
+  const s = summarize([run(3, 5, 100), run(1, 2, 90), run(2, 4, 120)]);
   assert.equal(s.status, 'ok');
   assert.equal(s.wallSeconds, 2);
+  assert.equal(s.cpuSeconds, 4);
   assert.equal(s.peakMiB, 100);
-  assert.deepEqual(s.samples, [3, 1, 2]);
-  const f = summarize([run(1, 10), run(1, 10, 2)]);
+  assert.deepEqual(s.runs.map((r) => r.wallSeconds), [3, 1, 2]);
+  const f = summarize([run(1, 1, 10), run(1, 1, 10, 2)]);
   assert.equal(f.status, 'failed');
   assert.equal(f.wallSeconds, null);
   assert.match(f.message!, /exit code 2: error: broken mesh/);
-  assert.equal(summarize([{ ...run(600, null), exitCode: null, signal: 'SIGKILL', timedOut: true }]).status, 'timeout');
-  assert.equal(summarize([run(1, null)]).peakMiB, null);
+  assert.equal(summarize([{ ...run(600, null, null), exitCode: null, signal: 'SIGKILL', timedOut: true }]).status, 'timeout');
+  assert.equal(summarize([run(1, null, null)]).peakMiB, null);
+  assert.equal(summarize([run(1, 1, 5), run(1, null, 5)]).cpuSeconds, null, 'a figure some run lacks is no median');
 });
 
-test('relativeToGrid divides by the grid row', () => {
+test('pairedRatio: median of per-round ratios, null unless both ran', () => {
+  const strata = ok([1.0, 2.0, 2.2, 1.1, 1.05]);
+  const cura = ok([2.0, 3.0, 3.3, 2.0, 2.1], 60, 1.8);
+  assert.equal(pairedRatio(strata, cura, 'wallSeconds'), 0.55);
+  assert.ok(Math.abs(pairedRatio(strata, cura, 'cpuSeconds')! - (0.55 * 1.5) / 1.8) < 1e-12);
+  assert.equal(pairedRatio(strata, notRun('missing'), 'wallSeconds'), null);
+  assert.equal(pairedRatio(summarize([run(1, 1, 1, 1)]), cura, 'wallSeconds'), null);
+});
+
+test('relativeToGrid and supportRow divide round by round', () => {
   const rows = relativeToGrid([
-    { pattern: 'grid', strata: ok(2, 50) },
-    { pattern: 'gyroid', strata: ok(3, 60) },
+    { pattern: 'grid', strata: ok([2, 4]) },
+    { pattern: 'gyroid', strata: ok([3, 6]) },
     { pattern: 'lightning', strata: notRun('skipped') },
   ]);
   assert.deepEqual(rows.map((r) => r.relativeToGrid), [1, 1.5, null]);
+  assert.deepEqual(rows.map((r) => r.cpuRelativeToGrid), [1, 1.5, null]);
+  const s = supportRow('spot.stl', ok([1, 1]), ok([1.2, 1.4]), ok([2, 2]));
+  assert.ok(Math.abs(s.wallRatio.normal! - 1.3) < 1e-12);
+  assert.equal(s.wallRatio.tree, 2);
 });
 
-function report(over: Partial<BenchReport>): BenchReport {
-  return {
-    startedAt: '2026-01-01T00:00:00Z',
-    machine: { cpus: 2, cpuModel: 'Test CPU', node: 'v20', platform: 'linux x64', loadAverage: { start: 0.1, end: 0.2 } },
-    threads: 2,
+test('triangleScaling: time per triangle of a model and of its subdivided copy', () => {
+  const row = (model: string, triangles: number, wall: number): ModelRow => ({ model, triangles, strata: ok([wall]), cura: notRun('missing'), prusa: notRun('missing'), wallRatio: null, cpuRatio: null });
+  const ts = triangleScaling([row('3DBenchy.stl', 200_000, 2), row('3DBenchy-x4.stl', 800_000, 3)], '3DBenchy.stl', '3DBenchy-x4.stl')!;
+  assert.equal(ts.small.microsPerTriangle, 10);
+  assert.equal(ts.big.microsPerTriangle, 3.75);
+  assert.equal(ts.wallRatio, 1.5);
+  assert.equal(ts.triangleRatio, 4);
+  assert.equal(triangleScaling([row('3DBenchy.stl', 200_000, 2)], '3DBenchy.stl', '3DBenchy-x4.stl'), null);
+});
+
+function sampleReport(over: Partial<BenchReport> = {}): BenchReport {
+  const benchyStrata = ok([1.6, 1.7, 1.67], 159);
+  const benchyCura = ok([1.3, 1.31, 1.35], 59);
+  const report: BenchReport = {
+    startedAt: '2026-01-01T00:00:00.000Z',
+    machine: { cpus: 2, cpuModel: 'Test CPU', node: 'v20', platform: 'linux x64' },
+    load: { cpus: 2, busyAbove: 0.7, before: 0.1, blocks: [{ label: '3DBenchy.stl', seconds: 30, loadAverage: 1.8, foreignShare: 0.01 }] },
+    warnings: [],
     repeat: 3,
+    warmup: 1,
+    threads: null,
+    curaThreads: 2,
     memoryMethod: 'gnu-time',
+    cpuMeasured: true,
     strataCli: { path: '/repo/dist/cli/main.js', built: true },
     peers: { cura: { path: '/usr/bin/CuraEngine', version: 'Cura_SteamEngine version 4.13.0', definitions: '/defs/fdmprinter.def.json' }, prusa: null },
     models: [
-      { model: '3DBenchy.stl', triangles: 225154, strata: ok(1.5, 150), cura: ok(3, 60), prusa: notRun('missing') },
-      { model: '3DBenchy.3mf', triangles: 225154, strata: { ...notRun('skipped'), status: 'failed', message: 'exit code 1: no 3MF' }, cura: notRun('unsupported'), prusa: notRun('missing') },
+      { model: '3DBenchy.stl', triangles: 225154, strata: benchyStrata, cura: benchyCura, prusa: notRun('missing'), wallRatio: pairedRatio(benchyStrata, benchyCura, 'wallSeconds'), cpuRatio: pairedRatio(benchyStrata, benchyCura, 'cpuSeconds') },
+      { model: '3DBenchy.3mf', triangles: 225154, strata: { ...notRun('skipped'), status: 'failed', message: 'exit code 1: no 3MF' }, cura: notRun('unsupported'), prusa: notRun('missing'), wallRatio: null, cpuRatio: null },
     ],
+    threadScaling: { model: '3DBenchy.stl', one: ok([2, 2]), two: ok([1.5, 1.6]), speedup: 1.29, cpuRatio: 1.1, gcodeIdentical: true },
     patternModel: '3DBenchy.stl',
-    patterns: relativeToGrid([{ pattern: 'grid', strata: ok(1.5, 150) }, { pattern: 'gyroid', strata: ok(3, 160) }]),
+    patterns: relativeToGrid([{ pattern: 'grid', strata: ok([1.5]) }, { pattern: 'gyroid', strata: ok([3]) }]),
+    support: [supportRow('spot.stl', ok([1]), ok([1.2]), ok([1.4]))],
+    triangleScaling: null,
+    targets: [],
     notes: [],
     ...over,
   };
+  report.targets = checkTargets(report);
+  return report;
 }
 
-test('renderReport: table, ratio, statuses, pattern section, failure notes', () => {
-  const text = renderReport(report({}));
-  assert.match(text, /median of 3 runs/);
-  assert.match(text, /\/usr\/bin\/time -f %M/);
-  const benchy = text.split('\n').find((l) => l.startsWith('3DBenchy.stl'))!;
-  assert.deepEqual(benchy.split(/\s{2,}/), ['3DBenchy.stl', '225,154', '1.50', '150', '3.00', '60', '0.50x', '-', '-']);
-  const threeMf = text.split('\n').find((l) => l.startsWith('3DBenchy.3mf'))!;
+test('renderReport: the README table (wall / CPU / peak, ratios), statuses, sections, targets, failure notes', () => {
+  const text = renderReport(sampleReport());
+  const lines = text.split('\n');
+  assert.match(text, /3 counted runs per slicer after 1 warm-up round, interleaved/);
+  const cells = (line: string) => line.split('|').map((c) => c.trim()).filter((c) => c !== '');
+  assert.deepEqual(cells(lines.find((l) => l.startsWith('| model'))!), ['model', 'Strata wall / CPU / peak', 'CuraEngine wall / CPU / peak', 'wall ratio', 'CPU ratio', 'PrusaSlicer wall']);
+  assert.match(lines[lines.findIndex((l) => l.startsWith('| model')) + 1]!, /^\|:-+\|(-+:\|){5}$/);
+  const benchy = lines.find((l) => l.startsWith('| 3DBenchy.stl'))!;
+  assert.deepEqual(cells(benchy), ['3DBenchy.stl (225 k)', '1.67 s / 2.50 s / 159 MiB', '1.31 s / 1.97 s / 59 MiB', '1.24×', '1.24×', '–']);
+  const threeMf = lines.find((l) => l.startsWith('| 3DBenchy.3mf'))!;
   assert.match(threeMf, /failed/);
   assert.match(threeMf, /n\/a/);
-  assert.match(text, /Infill patterns on 3DBenchy\.stl/);
-  assert.match(text, /gyroid\s+3\.00\s+2\.00x\s+160/);
+  assert.match(text, /### Threads on 3DBenchy\.stl/);
+  assert.match(text, /\| 2 +\| 1\.55 s \/ 2\.33 s \/ 100 MiB \| +1\.29× \| 1\.10× \|/);
+  assert.match(text, /byte-identical/);
+  assert.match(text, /### Infill patterns on 3DBenchy\.stl/);
+  assert.match(text, /\| gyroid +\| 3\.00 s \/ 4\.50 s \/ 100 MiB \| +2\.00× \| +2\.00× \|/);
+  assert.match(text, /\| spot\.stl \| 1\.00 s \/ 1\.50 s \| 1\.20 s \/ 1\.80 s \| +1\.20× \/ 1\.20× \| 1\.40 s \/ 2\.10 s \| +1\.40× \/ 1\.40× \|/);
+  assert.match(text, /### Targets/);
+  assert.match(text, /\| wall, Strata \/ CuraEngine, 3DBenchy\.stl +\| ≤ 0\.75× +\| 1\.24× +\| ✗ +\|/);
+  assert.match(text, /\| peak memory, Strata, 3DBenchy\.stl +\| ≤ 120 MiB +\| 159 MiB +\| ✗ +\|/);
+  assert.match(text, /\| every infill pattern \/ grid, 3DBenchy\.stl +\| ≤ 1\.50× +\| worst 2\.00× \(gyroid\) +\| ✗ +\|/);
+  assert.match(text, /\| support \(normal, tree\) \/ none, spot\.stl +\| ≤ 1\.50× +\| worst 1\.40× \(tree, spot\.stl\) +\| ✓ +\|/);
+  assert.match(text, /targets met/);
   assert.match(text, /Strata on 3DBenchy\.3mf: exit code 1: no 3MF/);
   assert.match(text, /PrusaSlicer: not run/);
-  assert.doesNotMatch(text, /machine was busy/);
+  assert.match(text, /1-minute load average 0\.10 before the start \(idle/);
+  assert.doesNotMatch(text, /Warning/);
 });
 
-test('renderReport warns when the machine was busy', () => {
-  const base = report({});
-  const text = renderReport({ ...base, machine: { ...base.machine, loadAverage: { start: 0.2, end: 3.5 } } });
-  assert.match(text, /machine was busy \(load average up to 3\.50 on 2 cores\)/);
+test('renderReport puts load warnings at the top', () => {
+  const text = renderReport(sampleReport({ warnings: ['the machine is busy: 1-minute load average 2.50 before the start'] }));
+  assert.match(text.split('\n')[0]!, /^> \*\*Warning:\*\* the machine is busy: 1-minute load average 2\.50/);
+  assert.match(text, /on a busy machine: see the warning above/);
 });
 
 test('renderReport says clearly when the Strata CLI is not built', () => {
   const text = renderReport(
-    report({
+    sampleReport({
       strataCli: { path: '/repo/dist/cli/main.js', built: false },
-      models: [{ model: 'cube.stl', triangles: 12, strata: notRun('missing', 'strata CLI not built'), cura: ok(0.1, 10), prusa: notRun('missing') }],
+      models: [{ model: 'cube.stl', triangles: 12, strata: notRun('missing', 'strata CLI not built'), cura: ok([0.1]), prusa: notRun('missing'), wallRatio: null, cpuRatio: null }],
+      threadScaling: null,
       patternModel: null,
       patterns: [],
+      support: [],
     }),
   );
-  assert.match(text, /strata CLI not built: \/repo\/dist\/cli\/main\.js is missing/);
-  assert.match(text.split('\n').find((l) => l.startsWith('cube.stl'))!, /not built/);
-  assert.doesNotMatch(text, /Infill patterns/);
+  assert.match(text, /Strata: not built: \/repo\/dist\/cli\/main\.js is missing/);
+  assert.match(text.split('\n').find((l) => l.startsWith('| cube.stl'))!, /not built/);
+  assert.doesNotMatch(text, /Infill patterns|### Threads|### Support/);
+});
+
+test('figuresCell: wall / CPU / peak, with placeholders for what was not measurable', () => {
+  assert.equal(figuresCell(ok([1.666], 159.4)), '1.67 s / 2.50 s / 159 MiB');
+  assert.equal(figuresCell(summarize([run(0.5, null, null)])), '0.50 s / – / –');
+  assert.equal(figuresCell(notRun('unsupported')), 'n/a');
 });
