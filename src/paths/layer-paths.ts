@@ -29,18 +29,20 @@ export interface LayerPathsContext {
 }
 
 export function layerPaths(regions: LayerRegions, ctx: LayerPathsContext): LayerPaths {
+  return withSharedGroups(modelPaths(regions, ctx), regions, ctx);
+}
+
+/**
+ * The layer's own part: raft lines on raft layers, else every island's walls, skin and infill. None of it
+ * depends on the support pass (unless skin rests on support, `supportBelow`), so it may be made before it.
+ */
+export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): LayerPaths {
   const { cfg } = ctx;
-  const w = regions.raft ? Math.round(cfg.lineWidthMm * 1000) : lineWidthUm(cfg, regions.index);
-  const origin = ctx.params[0].origin;
+  const w = widthOf(regions, cfg);
   const groups: PathGroup[] = [];
   if (regions.raft) {
-    groups.push(...raftGroups(regions.raft, cfg, regions, origin));
+    groups.push(...raftGroups(regions.raft, cfg, regions, ctx.params[0].origin));
   } else {
-    if (ctx.adhesion) {
-      const support = regions.support ? [...regions.support.body, ...regions.support.roof, ...regions.support.floor] : [];
-      groups.push(...skirtOrBrim(regions.islands.map((i) => i.outline), support, cfg, w));
-    }
-    groups.push(...supportGroups(regions.support, cfg, regions, origin));
     for (const island of regions.islands) {
       groups.push(
         islandGroup(island, {
@@ -63,4 +65,26 @@ export function layerPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
     lineWidth: w / 1000,
     groups,
   };
+}
+
+/**
+ * The model paths of a layer with what is shared by the layer's objects put first: the skirt or brim (on
+ * the print's first layer, round the support too) and the support. `paths` is changed and returned.
+ */
+export function withSharedGroups(paths: LayerPaths, regions: LayerRegions, ctx: LayerPathsContext): LayerPaths {
+  if (regions.raft) return paths;
+  const { cfg } = ctx;
+  const shared: PathGroup[] = [];
+  if (ctx.adhesion) {
+    const support = regions.support ? [...regions.support.body, ...regions.support.roof, ...regions.support.floor] : [];
+    shared.push(...skirtOrBrim(regions.islands.map((i) => i.outline), support, cfg, widthOf(regions, cfg)));
+  }
+  shared.push(...supportGroups(regions.support, cfg, regions, ctx.params[0].origin));
+  if (shared.length) paths.groups = [...shared, ...paths.groups];
+  paths.z = regions.z + ctx.zOffset;
+  return paths;
+}
+
+function widthOf(regions: LayerRegions, cfg: Config): number {
+  return regions.raft ? Math.round(cfg.lineWidthMm * 1000) : lineWidthUm(cfg, regions.index);
 }

@@ -83,14 +83,17 @@ function owner(components: readonly Component[], p: Pt): Component {
 export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ, origin: Pt): PathGroup[] {
   if (!s || (s.body.length === 0 && s.roof.length === 0 && s.floor.length === 0)) return [];
   const w = Math.round(cfg.supportLineWidthMm * UM_PER_MM);
-  const all = union([...s.body, ...s.roof, ...s.floor]);
+  // each kind is already a union of disjoint islands: only kinds side by side need joining into components
+  const kinds = [s.body, s.roof, s.floor].filter((k) => k.length > 0);
+  const all = kinds.length === 1 ? kinds[0] : union(kinds.flat());
   const components: Component[] = all.map((area) => ({ area, box: boundsOf([area]), entries: new Map() }));
   // walls round each area; the fill starts inside the innermost
   let inside = all;
   for (let k = 0; k < cfg.supportWalls && inside.length; k++) {
     const centre = shrink(inside, w / 2);
     for (const ring of flatten(centre)) add(owner(components, ring[0]), 'support', true, ring);
-    inside = shrink(centre, w / 2);
+    // the next wall's outline (the fill is inset from the kinds themselves, below)
+    if (k + 1 < cfg.supportWalls) inside = shrink(centre, w / 2);
   }
   const wallInset = cfg.supportWalls * w;
   const inset = w / 2 + wallInset;

@@ -1,6 +1,7 @@
 /**
  * The per-layer work of the pipeline, as jobs over ranges of layers that run the same inline or in a worker:
- * - 'regions': slice the objects and compute every layer's regions (for the whole-model passes);
+ * - 'regions': slice the objects and compute every layer's regions (for the whole-model passes), and with
+ *   `modelPaths` each layer's model paths too, when they do not wait for those passes (support alone);
  * - 'paths': turn regions (after support, lightning and raft passes) into path groups;
  * - 'layers': both at once, when no whole-model pass needs the regions of every layer first.
  * This file only orchestrates: the regions stage is in regions/, the paths stage in paths/. Each job is a
@@ -8,7 +9,7 @@
  */
 import type { ExPolygon } from '../geometry/types.js';
 import type { InfillParams } from '../infill/types.js';
-import { layerPaths } from '../paths/layer-paths.js';
+import { layerPaths, modelPaths, type LayerPathsContext } from '../paths/layer-paths.js';
 import type { LayerPaths } from '../paths/types.js';
 import { RegionsRun } from '../regions/layer-regions.js';
 import type { LayerRegions } from '../regions/types.js';
@@ -25,6 +26,8 @@ interface JobBase {
 
 export interface RegionsJob extends JobBase {
   kind: 'regions';
+  /** Also make each layer's model paths (without support and skirt, which follow the support pass). */
+  modelPaths?: PathsParams;
 }
 
 /** What the paths stage needs besides the regions. */
@@ -56,21 +59,18 @@ export type RangeJob = RegionsJob | PathsJob | LayersJob;
 export interface RangeResult {
   /** For 'regions' jobs. */
   regions: LayerRegions[];
-  /** For 'paths' and 'layers' jobs. */
+  /** For 'paths' and 'layers' jobs, and 'regions' jobs with `modelPaths`. */
   paths: LayerPaths[];
+}
+
+/** What the paths stage of one layer is given. */
+export function pathsContext(regions: LayerRegions, cfg: Config, job: PathsParams, custom: CustomInfillGenerator | undefined, supportBelow: ExPolygon[], prepared?: unknown): LayerPathsContext {
+  return { cfg, params: job.infillParams, prepared, custom, supportBelow, zOffset: job.zOffset, adhesion: job.adhesion && regions.index === 0 };
 }
 
 /** The paths of one layer from its regions. */
 export function pathsOf(regions: LayerRegions, cfg: Config, job: PathsParams, custom: CustomInfillGenerator | undefined, supportBelow: ExPolygon[], prepared?: unknown): LayerPaths {
-  return layerPaths(regions, {
-    cfg,
-    params: job.infillParams,
-    prepared,
-    custom,
-    supportBelow,
-    zOffset: job.zOffset,
-    adhesion: job.adhesion && regions.index === 0,
-  });
+  return layerPaths(regions, pathsContext(regions, cfg, job, custom, supportBelow, prepared));
 }
 
 /** Run a job, yielding after each layer; returns its result. */
@@ -87,8 +87,11 @@ export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: R
   const run = new RegionsRun(meshes, cfg, job.layers, job.from, job.to);
   for (let i = job.from; i < job.to; i++) {
     const r = run.layer(i);
-    if (job.kind === 'regions') regions.push(r);
-    else paths.push(pathsOf(r, cfg, job, custom, []));
+    if (job.kind === 'regions') {
+      regions.push(r);
+      // while the layer's sections and regions are at hand (far cheaper than coming back to them)
+      if (job.modelPaths) paths.push(modelPaths(r, pathsContext(r, cfg, job.modelPaths, custom, [])));
+    } else paths.push(pathsOf(r, cfg, job, custom, []));
     run.release(i);
     yield;
   }

@@ -10,6 +10,7 @@ import { UM_PER_MM, type ExPolygon, type Pt } from '../geometry/types.js';
 import { writeGcodeSteps } from '../gcode/writer.js';
 import { PATTERNS } from '../infill/registry.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
+import { withSharedGroups } from '../paths/layer-paths.js';
 import type { LayerPaths } from '../paths/types.js';
 import { estimatePlanSteps } from '../plan/estimate.js';
 import { planLayer } from '../plan/layer-plan.js';
@@ -25,7 +26,7 @@ import type { LayerZ } from '../slice/types.js';
 import { renderThumbnails } from '../thumbnail/index.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
-import { pathsOf, rangeSteps, type PathsParams, type RangeJob, type RangeResult } from './layer-work.js';
+import { pathsContext, pathsOf, rangeSteps, type PathsParams, type RangeJob, type RangeResult } from './layer-work.js';
 import type { CustomInfillSpec } from './custom-infill.js';
 import { isTransferable, loadCustomInfill } from './custom-infill-loader.js';
 import { planObjects, type PlacedObject } from './objects.js';
@@ -190,10 +191,22 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     };
     const common: PathsParams = { infillParams, zOffset: 0, adhesion: cfg.adhesionType === 'skirt' || cfg.adhesionType === 'brim' };
 
-    let jobs: RangeJob[];
-    let raftLayers: LayerRegions[] = [];
+    // Travel planning is sequential (each layer starts where the last one ended), so ranges are
+    // planned in order as they arrive, while later ones are still being computed.
+    const state = { at: { x: 0, y: 0 } as Pt };
+    const planned: LayerPlan[] = [];
+    const plan = (lp: LayerPaths) => planned.push(planLayer(lp, cfg, state, planned.length));
+    let jobs: RangeJob[] = [];
     if (twoPhase) {
-      const regionJobs: RangeJob[] = split.map(([from, to]) => ({ kind: 'regions', layers, from, to }));
+      const pattern = PATTERNS[cfg.infillPattern as PatternId];
+      const lightning = !!pattern.prepare && !custom && cfg.infillDensity > 0;
+      // The model's own paths wait for no whole-model pass unless lightning infill or skin resting on
+      // support (no top Z gap) reads them: then each range makes them with its regions, while both are at
+      // hand (coming back to every layer's regions later costs ~10 % more), and only the skirt and
+      // support join them after the support pass.
+      const early = !lightning && !(cfg.supportEnabled && cfg.supportTopGapLayers === 0);
+      const modelPaths: PathsParams | undefined = early ? { ...common, zOffset: 0, adhesion: false } : undefined;
+      const regionJobs: RangeJob[] = split.map(([from, to]) => ({ kind: 'regions', layers, from, to, modelPaths }));
       const regionResults: RangeResult[] = [];
       await runJobs(regionJobs, runner, (id, r) => {
         regionResults[id] = r;
@@ -202,10 +215,9 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
       const regions = regionResults.flatMap((r) => r.regions);
       report('support', 0.4);
       await pacer.run(supportPass(regions, cfg));
-      const pattern = PATTERNS[cfg.infillPattern as PatternId];
       let preparedInfill: unknown[] | undefined;
-      if (pattern.prepare && !custom && cfg.infillDensity > 0) {
-        preparedInfill = pattern.prepare(
+      if (lightning) {
+        preparedInfill = pattern.prepare!(
           {
             layers: regions.map((r) => ({ layerIndex: r.index, z: r.z, layerHeight: r.height, region: layerSparse(r) })),
             supportNeeded: regions.map((_, i) => (i + 1 < regions.length ? layerTopSkin(regions[i + 1]) : [])),
@@ -214,42 +226,47 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
         );
       }
       const raft = raftUnder(regions[0], cfg);
-      raftLayers = raft.layers;
       common.zOffset = raft.zOffset;
-      const supportOf = (r: LayerRegions | undefined): ExPolygon[] => (r?.support && cfg.supportTopGapLayers === 0 ? [...r.support.body, ...r.support.roof] : []);
-      jobs = split.map(([from, to]) => ({
-        kind: 'paths',
-        layers,
-        from,
-        to,
-        ...common,
-        regions: regions.slice(from, to),
-        supportBelow: regions.slice(from, to).map((_, k) => supportOf(regions[from + k - 1])),
-        prepared: preparedInfill?.slice(from, to),
-      }));
+      if (raft.layers.length) {
+        const raftParams = { ...common, zOffset: 0, adhesion: false };
+        for (const r of raft.layers) plan(pathsOf(r, cfg, raftParams, custom, []));
+      }
+      if (early) {
+        const model = regionResults.flatMap((r) => r.paths);
+        for (let i = 0; i < regions.length; i++) {
+          plan(withSharedGroups(model[i], regions[i], pathsContext(regions[i], cfg, common, custom, [])));
+          layerDone(1);
+          await pacer.pause();
+        }
+      } else {
+        const supportOf = (r: LayerRegions | undefined): ExPolygon[] => (r?.support && cfg.supportTopGapLayers === 0 ? [...r.support.body, ...r.support.roof] : []);
+        jobs = split.map(([from, to]) => ({
+          kind: 'paths',
+          layers,
+          from,
+          to,
+          ...common,
+          regions: regions.slice(from, to),
+          supportBelow: regions.slice(from, to).map((_, k) => supportOf(regions[from + k - 1])),
+          prepared: preparedInfill?.slice(from, to),
+        }));
+      }
     } else {
       jobs = split.map(([from, to]) => ({ kind: 'layers', layers, from, to, ...common }));
     }
 
-    // Travel planning is sequential (each layer starts where the last one ended), so ranges are
-    // planned in order as they arrive, while later ones are still being computed.
-    const state = { at: { x: 0, y: 0 } as Pt };
-    const planned: LayerPlan[] = [];
-    const plan = (lp: LayerPaths) => planned.push(planLayer(lp, cfg, state, planned.length));
-    if (raftLayers.length) {
-      const raftParams = { ...common, zOffset: 0, adhesion: false };
-      for (const r of raftLayers) plan(pathsOf(r, cfg, raftParams, custom, []));
-    }
     const arrived: Array<RangeResult | undefined> = new Array(jobs.length);
     let nextToPlan = 0;
-    await runJobs(jobs, runner, (id, r) => {
-      jobDone(jobs[id]);
-      arrived[id] = r;
-      for (let ready = arrived[nextToPlan]; ready; ready = arrived[nextToPlan]) {
-        arrived[nextToPlan++] = undefined;
-        for (const lp of ready.paths) plan(lp);
-      }
-    });
+    if (jobs.length) {
+      await runJobs(jobs, runner, (id, r) => {
+        jobDone(jobs[id]);
+        arrived[id] = r;
+        for (let ready = arrived[nextToPlan]; ready; ready = arrived[nextToPlan]) {
+          arrived[nextToPlan++] = undefined;
+          for (const lp of ready.paths) plan(lp);
+        }
+      });
+    }
     // the workers' memory goes back before the G-code is written
     await pool?.close();
     pacer.check();
