@@ -27,9 +27,32 @@ function shrink(areas: readonly ExPolygon[], d: number): ExPolygon[] {
   return out;
 }
 
+/**
+ * Whether any line of the family (at `angle`, `spacing` apart, phase at `origin`) can cross the island
+ * shrunk by d: the shrunk island lies within its extent across the lines less d on each side. Sparse
+ * support lines miss most thin tree branches: those need no shrink and no fill at all.
+ */
+function mayHoldLines(a: ExPolygon, d: number, angle: number, spacingUm: number, origin: Pt): boolean {
+  const t = (angle * Math.PI) / 180;
+  const c = Math.cos(t), s = Math.sin(t);
+  let lo = Infinity, hi = -Infinity;
+  for (const p of a.outer) {
+    const v = -p.x * s + p.y * c;
+    if (v < lo) lo = v;
+    if (v > hi) hi = v;
+  }
+  // a micrometre of slack for rounding: the test only ever keeps too much
+  lo += d - 1;
+  hi -= d - 1;
+  if (lo > hi) return false;
+  const v0 = -origin.x * s + origin.y * c;
+  return Math.floor((hi - v0) / spacingUm) >= Math.ceil((lo - v0) / spacingUm);
+}
+
 /** Lines of one family `spacing` apart over `area` (shrunk so the beads stay inside it). */
 function fill(area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean): Polyline[] {
-  const region = shrink(area, insetUm);
+  const crossed = area.filter((a) => mayHoldLines(a, insetUm, angle, spacingUm, origin));
+  const region = crossed.length ? shrink(crossed, insetUm) : [];
   return region.length ? solidFill(region, angle, spacingUm, origin, { connect }) : [];
 }
 
@@ -85,7 +108,7 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   const w = Math.round(cfg.supportLineWidthMm * UM_PER_MM);
   // each kind is already a union of disjoint islands: only kinds side by side need joining into components
   const kinds = [s.body, s.roof, s.floor].filter((k) => k.length > 0);
-  const all = kinds.length === 1 ? kinds[0] : union(kinds.flat());
+  const all = s.whole ?? (kinds.length === 1 ? kinds[0] : union(kinds.flat()));
   const components: Component[] = all.map((area) => ({ area, box: boundsOf([area]), entries: new Map() }));
   // walls round each area; the fill starts inside the innermost
   let inside = all;

@@ -12,7 +12,7 @@ import type { InfillParams } from '../infill/types.js';
 import { layerPaths, modelPaths, type LayerPathsContext } from '../paths/layer-paths.js';
 import type { LayerPaths } from '../paths/types.js';
 import { RegionsRun } from '../regions/layer-regions.js';
-import type { LayerRegions } from '../regions/types.js';
+import { outlinesOnly, type LayerRegions } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { PreparedMesh } from '../slice/index.js';
@@ -88,9 +88,11 @@ export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: R
   for (let i = job.from; i < job.to; i++) {
     const r = run.layer(i);
     if (job.kind === 'regions') {
-      regions.push(r);
-      // while the layer's sections and regions are at hand (far cheaper than coming back to them)
-      if (job.modelPaths) paths.push(modelPaths(r, pathsContext(r, cfg, job.modelPaths, custom, [])));
+      if (job.modelPaths) {
+        // made while the layer's regions are at hand, after which only the outlines are kept
+        paths.push(modelPaths(r, pathsContext(r, cfg, job.modelPaths, custom, [])));
+        regions.push(outlinesOnly(r));
+      } else regions.push(r);
     } else paths.push(pathsOf(r, cfg, job, custom, []));
     run.release(i);
     yield;

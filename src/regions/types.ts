@@ -42,6 +42,8 @@ export interface SupportAreas {
   roof: ExPolygon[];
   /** Dense interface where support stands on the part (floor). */
   floor: ExPolygon[];
+  /** Body, roof and floor as the one area they were split from, when the pass has it (saves a union). */
+  whole?: ExPolygon[];
 }
 
 /** Raft layer areas (filled by the raft pass). */
@@ -63,6 +65,28 @@ export interface LayerRegions extends LayerZ {
 }
 
 /** The layer's whole section (every island's outline). */
+/**
+ * The layer with its islands cut down to their outlines (walls, skin and infill areas left empty): what the
+ * support and raft passes and the skirt read, once the layer's own paths are made. Keeping every layer's
+ * full regions alive until the end cost ~9 % of the run in garbage collection.
+ */
+export function outlinesOnly(layer: LayerRegions): LayerRegions {
+  const islands = layer.islands.map((i): IslandRegions => ({
+    object: i.object,
+    outline: i.outline,
+    walls: [],
+    wallGaps: [],
+    topSkin: [],
+    bottomSkin: [],
+    exposed: [],
+    bridge: [],
+    bridgeAngle: null,
+    sparse: [],
+    unsupported: [],
+  }));
+  return { ...layer, islands };
+}
+
 export function sectionOf(layer: LayerRegions): ExPolygon[] {
   return layer.islands.map((i) => i.outline);
 }

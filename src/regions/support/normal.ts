@@ -50,7 +50,7 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
     // what lies below the last layer's support needs nothing more: only what is printed carries on
     carried = printed;
     printed = printable(printed, w);
-    out[j] = model.split(j, printed);
+    out[j] = { ...model.split(j, printed), whole: printed };
     model.release(j + top + Math.max(cfg.supportInterfaceLayers, 1) + 1);
     yield;
   }

@@ -122,7 +122,7 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
     const s = yield* drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, widthUm: w });
     below = s;
-    out[j] = yield* splitNear(model, j, s);
+    out[j] = { ...(yield* splitNear(model, j, s)), whole: s };
     yield;
   }
   return out;
