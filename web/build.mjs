@@ -20,6 +20,8 @@ const common = {
   sourcemap: false,
   legalComments: 'eof',
   logLevel: 'warning',
+  // the clipping engine's loader imports node's 'module' only when it runs in node
+  external: ['module'],
   // the library loads its layer worker as new URL('./layer-worker.js', import.meta.url): keep that name
   entryNames: '[name]',
   chunkNames: '[name]-[hash]',
@@ -35,7 +37,12 @@ async function libraryBuild() {
     ...common,
     entryPoints: { strata: at('src/browser.ts'), 'layer-worker': at('src/workers/layer-worker.ts') },
     outdir: out,
-  });
+  }).then((r) => (copyClipperWasm(out), r));
+}
+
+/** The clipping engine's WebAssembly, which its loader fetches from beside the script that loads it. */
+function copyClipperWasm(out) {
+  cpSync(at('node_modules/clipper2-wasm/dist/es/clipper2z.wasm'), join(out, 'clipper2z.wasm'));
 }
 
 /** The page: app.js (page thread), slice-worker.js (module worker), layer-worker.js (the pool's). */
@@ -51,6 +58,7 @@ async function pageBuild() {
     },
     outdir: out,
   });
+  copyClipperWasm(out);
   cpSync(at('web/index.html'), join(out, 'index.html'));
   cpSync(at('web/style.css'), join(out, 'style.css'));
   cpSync(at('web/favicon.svg'), join(out, 'favicon.svg'));

@@ -26,6 +26,7 @@ const MIME: Readonly<Record<string, string>> = {
   '.json': 'application/json; charset=utf-8',
   '.png': 'image/png',
   '.svg': 'image/svg+xml',
+  '.wasm': 'application/wasm',
   '.ico': 'image/x-icon',
   '.glsl': 'text/plain; charset=utf-8',
   '.txt': 'text/plain; charset=utf-8',

@@ -37,6 +37,8 @@ function references(file: string): string[] {
     /(?:^|[\s;{}])(?:import|export)\b\s*(?:[^'"`;]*?\bfrom\s*)?['"](\.{1,2}\/[^'"]+)['"]/g,
     /\bimport\(\s*['"](\.{1,2}\/[^'"]+)['"]\s*\)/g,
     /\bnew URL\(\s*['"](\.{1,2}\/[^'"]+\.js)['"]\s*,\s*import\.meta\.url\s*\)/g,
+    // the clipping engine's loader finds its WebAssembly beside itself
+    /\bnew URL\(\s*['"]([\w.-]+\.wasm)['"]\s*,\s*import\.meta\.url\s*\)/g,
   ];
   for (const re of patterns) for (const m of text.matchAll(re)) out.push(normalize(join(dirname(file), m[1])).replace(/\\/g, '/'));
   return out;

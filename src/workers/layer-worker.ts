@@ -1,5 +1,9 @@
-/** Worker entry: Node worker_threads or a browser Web Worker (module type). */
-import { makeHandler } from './handler.js';
+/**
+ * Worker entry: Node worker_threads or a browser Web Worker (module type). The handler (and with it the
+ * clipping engine, WebAssembly that loads asynchronously) comes behind a dynamic import; a browser worker
+ * listens before that and keeps what arrives meanwhile, which it would otherwise lose. (Node's port holds
+ * messages until a listener is added.)
+ */
 import { isNode, nodeBuiltin } from '../runtime.js';
 import type { FromWorker, ToWorker } from './protocol.js';
 
@@ -7,13 +11,19 @@ if (isNode) {
   const { parentPort } = await nodeBuiltin<typeof import('node:worker_threads')>('worker_threads');
   if (parentPort) {
     const port = parentPort;
+    const { makeHandler } = await import('./handler.js');
     const handle = makeHandler((m: FromWorker) => port.postMessage(m), await threadCpuClock());
     port.on('message', (m: ToWorker) => handle(m));
   }
 } else {
   const scope = globalThis as unknown as { postMessage(m: unknown): void; onmessage: ((e: { data: ToWorker }) => void) | null };
-  const handle = makeHandler((m: FromWorker) => scope.postMessage(m));
-  scope.onmessage = (e) => handle(e.data);
+  const early: ToWorker[] = [];
+  let handle: ((m: ToWorker) => void) | null = null;
+  scope.onmessage = (e) => (handle ? handle(e.data) : early.push(e.data));
+  void import('./handler.js').then(({ makeHandler }) => {
+    handle = makeHandler((m: FromWorker) => scope.postMessage(m));
+    for (const m of early.splice(0)) handle(m);
+  });
 }
 
 /** This thread's CPU time in ms (Node ≥ 23.9, or Linux's /proc), else undefined (wall time is used). */

@@ -1,0 +1,179 @@
+/**
+ * The clipping engine: Clipper2 compiled to WebAssembly (clipper2-wasm), loaded once per thread, and the
+ * conversion of plain rings to and from it. Only the facade (`clip.ts`) uses this module.
+ *
+ * Coordinates cross as doubles with precision 0 (the engine's scale 1): integer micrometres stay exact
+ * in both directions, and every point the engine makes is rounded to an integer. Rings go in through one
+ * reused typed buffer and one reused path, and come back through views of the engine's memory; every
+ * engine object made here is deleted before the call returns, so the engine's heap does not grow.
+ */
+import Clipper2Z from 'clipper2-wasm/dist/es/clipper2z.js';
+import type { ClipType, EndType, FillRule, JoinType, MainModule, PathD, PathsD, PolyPathD } from 'clipper2-wasm/dist/clipper2z.js';
+import type { ExPolygon, Polygon, Polyline, Pt } from './types.js';
+import { nestRings } from './nest-rings.js';
+
+/** The engine's scale as decimal places: 0 keeps integer micrometres integer. */
+const PRECISION = 0;
+
+const C: MainModule = await Clipper2Z();
+
+export type Op = 'union' | 'difference' | 'intersection';
+export type Rule = 'nonzero' | 'evenodd' | 'positive';
+export type JoinKind = 'miter' | 'round' | 'square';
+export type EndKind = 'polygon' | 'joined' | 'round' | 'square';
+
+const OPS: Record<Op, ClipType> = { union: C.ClipType.Union, difference: C.ClipType.Difference, intersection: C.ClipType.Intersection };
+const RULES: Record<Rule, FillRule> = { nonzero: C.FillRule.NonZero, evenodd: C.FillRule.EvenOdd, positive: C.FillRule.Positive };
+const JOINS: Record<JoinKind, JoinType> = { miter: C.JoinType.Miter, round: C.JoinType.Round, square: C.JoinType.Square };
+const ENDS: Record<EndKind, EndType> = { polygon: C.EndType.Polygon, joined: C.EndType.Joined, round: C.EndType.Round, square: C.EndType.Square };
+
+// Reused engine objects and buffer: every call here is synchronous and leaves them empty.
+const scratchPath: PathD = new C.PathD();
+const subjects: PathsD = new C.PathsD();
+const clips: PathsD = new C.PathsD();
+const tree: PolyPathD = new C.PolyPathD();
+const keepCollinear = new C.ClipperD(PRECISION);
+const dropCollinear = new C.ClipperD(PRECISION);
+dropCollinear.SetPreserveCollinear(false);
+/** x, y, z triplets (z stays 0): the layout the engine's paths take in bulk. */
+let coords = new Float64Array(3 * 1024);
+
+/** Copy rings into an engine path list (cleared first). */
+function load(into: PathsD, rings: readonly (readonly Pt[])[]): PathsD {
+  into.clear();
+  for (const r of rings) {
+    const n = r.length;
+    if (coords.length < 3 * n) coords = new Float64Array(Math.max(3 * n, 2 * coords.length));
+    for (let i = 0, k = 0; i < n; i++, k += 3) {
+      const p = r[i];
+      coords[k] = p.x;
+      coords[k + 1] = p.y;
+    }
+    scratchPath.assign(coords.subarray(0, 3 * n));
+    into.push_back(scratchPath);
+  }
+  return into;
+}
+
+/** A ring from an engine path (a copy the caller deletes, or one it owns). */
+function readPath(path: PathD): Pt[] {
+  const v = path.view();
+  const n = v.length / 3;
+  const out: Pt[] = new Array(n);
+  for (let i = 0, k = 0; i < n; i++, k += 3) out[i] = { x: v[k], y: v[k + 1] };
+  return out;
+}
+
+/** Every path of an engine path list, which is then deleted. */
+function readPaths(paths: PathsD, minPoints: number): Pt[][] {
+  const out: Pt[][] = [];
+  const n = paths.size();
+  for (let i = 0; i < n; i++) {
+    const p = paths.get(i); // a copy
+    if (p.size() >= minPoints) out.push(readPath(p));
+    p.delete();
+  }
+  paths.delete();
+  return out;
+}
+
+/** The islands of a result tree, in the facade's order (islands inside a hole before their host). */
+function readTree(node: PolyPathD, out: ExPolygon[]): void {
+  const n = node.count();
+  for (let i = 0; i < n; i++) {
+    const outerNode = node.child(i); // owned by the tree: never deleted here
+    const holes: Polygon[] = [];
+    const m = outerNode.count();
+    for (let j = 0; j < m; j++) {
+      const holeNode = outerNode.child(j);
+      const hp = holeNode.polygon();
+      holes.push(readPath(hp));
+      hp.delete();
+      readTree(holeNode, out);
+    }
+    const op = outerNode.polygon();
+    out.push({ outer: readPath(op), holes });
+    op.delete();
+  }
+}
+
+function takeTree(): ExPolygon[] {
+  const out: ExPolygon[] = [];
+  readTree(tree, out);
+  tree.clear();
+  return out;
+}
+
+/** A boolean of closed rings, as islands (outer rings counter-clockwise, holes clockwise). */
+export function booleanAreas(op: Op, subject: readonly Polygon[], clip: readonly Polygon[], rule: Rule): ExPolygon[] {
+  C.BooleanOpOutD(OPS[op], RULES[rule], load(subjects, subject), load(clips, clip), tree, PRECISION);
+  subjects.clear();
+  clips.clear();
+  return takeTree();
+}
+
+/** The union of rings with collinear points removed (the clean-up union of a raw offset). */
+export function unionDroppingCollinear(rings: readonly Polygon[], rule: Rule): ExPolygon[] {
+  dropCollinear.AddSubject(load(subjects, rings));
+  subjects.clear();
+  dropCollinear.ExecutePoly(OPS.union, RULES[rule], tree);
+  dropCollinear.Clear();
+  return takeTree();
+}
+
+/** Open polylines clipped against closed rings (non-zero): the parts inside (intersection) or outside (difference). */
+export function clipOpen(op: 'intersection' | 'difference', lines: readonly Polyline[], clip: readonly Polygon[]): Polyline[] {
+  keepCollinear.AddOpenSubject(load(subjects, lines));
+  keepCollinear.AddClip(load(clips, clip));
+  subjects.clear();
+  clips.clear();
+  const closed = new C.PathsD();
+  const open = new C.PathsD();
+  keepCollinear.ExecutePath(OPS[op], RULES.nonzero, closed, open);
+  keepCollinear.Clear();
+  closed.delete();
+  return readPaths(open, 2);
+}
+
+/** Rings grown (delta > 0) or shrunk by delta, as flat rings: outer rings counter-clockwise, holes clockwise. */
+export function inflateRings(
+  rings: readonly Pt[][], delta: number, join: JoinKind, end: EndKind, miterLimit: number, arcTolerance: number,
+): Polygon[] {
+  const res = C.InflatePathsD(load(subjects, rings), delta, JOINS[join], ENDS[end], miterLimit, PRECISION, arcTolerance);
+  subjects.clear();
+  return readPaths(res, 3);
+}
+
+/** Offset rings as islands. */
+export function inflateAreas(
+  rings: readonly Pt[][], delta: number, join: JoinKind, end: EndKind, miterLimit: number, arcTolerance: number,
+): ExPolygon[] {
+  return nestRings(inflateRings(rings, delta, join, end, miterLimit, arcTolerance));
+}
+
+/**
+ * The area swept by open polylines (with `lineEnd` ends) and closed loops, widened by `delta` on each
+ * side, as islands: the two offsets are made apart (the engine takes one end type per call) and united.
+ */
+export function strokeAreas(
+  lines: readonly Polyline[], loops: readonly Polygon[], delta: number, join: JoinKind, lineEnd: EndKind,
+  miterLimit: number, arcTolerance: number,
+): ExPolygon[] {
+  if (lines.length === 0 || loops.length === 0) {
+    return lines.length ? inflateAreas(lines, delta, join, lineEnd, miterLimit, arcTolerance) : inflateAreas(loops, delta, join, 'joined', miterLimit, arcTolerance);
+  }
+  const a = C.InflatePathsD(load(subjects, lines), delta, JOINS[join], ENDS[lineEnd], miterLimit, PRECISION, arcTolerance);
+  const b = C.InflatePathsD(load(subjects, loops), delta, JOINS[join], ENDS.joined, miterLimit, PRECISION, arcTolerance);
+  subjects.clear();
+  C.BooleanOpOutD(OPS.union, RULES.nonzero, a, b, tree, PRECISION);
+  a.delete();
+  b.delete();
+  return takeTree();
+}
+
+/** Each ring simplified (closed): vertices closer than epsilon to the line through their neighbours dropped. */
+export function simplifyClosed(rings: readonly Polygon[], epsilon: number): Polygon[] {
+  const res = C.SimplifyPathsD(load(subjects, rings), epsilon, true);
+  subjects.clear();
+  return readPaths(res, 0);
+}
