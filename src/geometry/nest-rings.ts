@@ -3,6 +3,7 @@
  * outer rings counter-clockwise and holes clockwise. Each hole goes to the smallest outer ring around it,
  * which is the tree a boolean would have built.
  */
+import { ringBounds } from './contain.js';
 import type { ExPolygon, Polygon, Pt } from './types.js';
 
 /** The islands the rings make, in the order of their outer rings; holes keep their order too. */
@@ -45,17 +46,11 @@ function twiceArea(r: readonly Pt[]): number {
 }
 
 function ringBox(r: readonly Pt[], out: Float64Array, at: number): void {
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-  for (const p of r) {
-    if (p.x < minX) minX = p.x;
-    if (p.x > maxX) maxX = p.x;
-    if (p.y < minY) minY = p.y;
-    if (p.y > maxY) maxY = p.y;
-  }
-  out[at] = minX;
-  out[at + 1] = minY;
-  out[at + 2] = maxX;
-  out[at + 3] = maxY;
+  const b = ringBounds(r);
+  out[at] = b.minX;
+  out[at + 1] = b.minY;
+  out[at + 2] = b.maxX;
+  out[at + 3] = b.maxY;
 }
 
 /** Whether box `o` holds box `h` (borders may coincide). */

@@ -3,6 +3,7 @@
  * list of boxes, overhangs as the regions stage finds them), the support pass run to its end, and checks of
  * the result. Not exported from the package.
  */
+import { rect } from '../../geometry/test-shapes.js';
 import { area, difference, intersection, offset, pointInArea, union } from '../../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon, type Pt } from '../../geometry/types.js';
 import { resolveConfig, type Config } from '../../settings/resolve.js';
@@ -19,15 +20,6 @@ export interface Box {
   z: [number, number];
 }
 
-const rect = (x0: number, y0: number, x1: number, y1: number): ExPolygon => ({
-  outer: [
-    { x: x0, y: y0 },
-    { x: x1, y: y0 },
-    { x: x1, y: y1 },
-    { x: x0, y: y1 },
-  ],
-  holes: [],
-});
 
 /** A box on a thin post: a 16 mm square plate 3 mm thick on a 4 mm square post 10 mm high. It overhangs all round. */
 export const BOX_ON_POST: Box[] = [
