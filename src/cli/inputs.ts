@@ -12,8 +12,7 @@ import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 import type { Config } from '../settings/resolve.js';
 import { importProfile } from '../settings/import/index.js';
 import type { SliceOptions } from '../settings/schema.js';
-import { loadInfiller, parseInfillParams } from '../shader/index.js';
-import { iceslInfillersDirs, readInfillersFolder, shippedInfillersDir } from '../shader/node-folder.js';
+import { iceslInfillersDirs, shippedInfillersDir } from '../shader/infiller-dirs.js';
 import type { ParsedArgs } from './args.js';
 import type { NamedInput } from './output.js';
 
@@ -70,6 +69,8 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
   else if (typeof opts.infillPattern === 'string' && !(PATTERN_IDS as readonly string[]).includes(opts.infillPattern)) {
     const name = opts.infillPattern;
     for (const dir of infillerDirs(args)) {
+      // the shader compiler loads only when a custom infill is used
+      const { readInfillersFolder } = await import('../shader/node-folder.js');
       const found = (await readInfillersFolder(dir)).find((f) => f.name === name);
       if (found) {
         spec = found;
@@ -90,7 +91,10 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
     }
     return undefined;
   }
-  if (assignments.length) spec.params = parseInfillParams(loadInfiller(spec).params, assignments);
+  if (assignments.length) {
+    const { loadInfiller, parseInfillParams } = await import('../shader/index.js');
+    spec.params = parseInfillParams(loadInfiller(spec).params, assignments);
+  }
   if (typeof densityShader === 'string') spec.density = { shader: input.text(densityShader, 'density shader'), fileName: basename(densityShader) };
   else if (typeof densityLayers === 'string') {
     const list = densityLayers.split(',').map((v) => Number(v.trim()));

@@ -9,12 +9,8 @@ import { fileURLToPath } from 'node:url';
 import { StrataError } from '../errors.js';
 import { VERSION } from '../pipeline/run.js';
 import { checkFlagsFor, COMMANDS, parseArgs, type Command } from './args.js';
-import { cmdInfo } from './info.js';
-import { cmdInfillers, cmdPresets, cmdSettings } from './lists.js';
 import { processIo, type Io } from './io.js';
 import { abortPendingOutputs, PipeClosed } from './output.js';
-import { cmdServe } from './serve.js';
-import { cmdPreview, cmdSlice } from './slice.js';
 
 const HELP = `strata ${VERSION}: a fast FFF slicer
 
@@ -63,7 +59,7 @@ export async function main(argv: readonly string[], io: Io = processIo): Promise
   try {
     // the web page server parses its own few flags (serve.ts)
     if (argv[0] === 'serve') {
-      await cmdServe(argv.slice(1));
+      await (await import('./serve.js')).cmdServe(argv.slice(1));
       return 0;
     }
     const args = parseArgs(argv);
@@ -79,24 +75,25 @@ export async function main(argv: readonly string[], io: Io = processIo): Promise
       throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: ${COMMANDS.join(', ')}, serve)`);
     }
     checkFlagsFor(args);
+    // each command's modules load when it runs (a slice does not load the listings, the server or the shader compiler)
     switch (args.command as Command) {
       case 'slice':
-        await cmdSlice(args, io);
+        await (await import('./slice.js')).cmdSlice(args, io);
         return 0;
       case 'info':
-        cmdInfo(args, stdout);
+        (await import('./info.js')).cmdInfo(args, stdout);
         return 0;
       case 'preview':
-        await cmdPreview(args, io);
+        await (await import('./slice.js')).cmdPreview(args, io);
         return 0;
       case 'infillers':
-        await cmdInfillers(args, stdout);
+        await (await import('./lists.js')).cmdInfillers(args, stdout);
         return 0;
       case 'presets':
-        cmdPresets(args, stdout);
+        (await import('./lists.js')).cmdPresets(args, stdout);
         return 0;
       case 'settings':
-        cmdSettings(args, stdout);
+        (await import('./lists.js')).cmdSettings(args, stdout);
         return 0;
     }
   } catch (e) {

@@ -1,6 +1,7 @@
 /** `strata slice` and `strata preview`: models and settings in, G-code or one layer's SVG out. */
 import { extname } from 'node:path';
-import { Slicer } from '../index.js';
+// the library without its shader compiler, which loads when a custom infill is used (see newSlicer)
+import { loadCustomInfill, Slicer } from '../exports.js';
 import { StrataError } from '../errors.js';
 import { layerToSvg } from '../preview/svg.js';
 import { findFilament, findPrinter } from '../settings/presets/index.js';
@@ -35,7 +36,7 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'slice needs at least one model file (see strata --help)');
   const input = new InputReader();
   const quiet = args.flags.quiet === true;
-  const slicer = new Slicer(await optionsFrom(args, input, (w) => quiet || io.err(`strata: warning: ${w}\n`)));
+  const slicer = await newSlicer(await optionsFrom(args, input, (w) => quiet || io.err(`strata: warning: ${w}\n`)));
   const models = input.models(args.positional, slicer.config);
   const first = args.positional[0];
   const given = typeof args.flags.output === 'string' ? args.flags.output : undefined;
@@ -63,7 +64,7 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
 export async function cmdPreview(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'preview needs a model file');
   const input = new InputReader();
-  const slicer = new Slicer(await optionsFrom(args, input, (w) => args.flags.quiet === true || io.err(`strata: warning: ${w}\n`)));
+  const slicer = await newSlicer(await optionsFrom(args, input, (w) => args.flags.quiet === true || io.err(`strata: warning: ${w}\n`)));
   const models = input.models(args.positional, slicer.config);
   const outPath = typeof args.flags.output === 'string' ? args.flags.output : '-';
   refuseInputAsOutput(outPath, input.read, false);
@@ -79,4 +80,10 @@ export async function cmdPreview(args: ParsedArgs, io: Io): Promise<void> {
   const svg = layerToSvg(plan.layers[index], { travel: args.flags.travel === true, widthPx: width, title });
   await writing(openOutput(outPath), (out) => out.write(svg + '\n'));
   if (outPath !== '-' && args.flags.quiet !== true) io.err(`${outPath}: layer ${index} of ${n}\n`);
+}
+
+/** A slicer for these options; with a custom infill the shader compiler is loaded first, so a broken shader is reported at once. */
+async function newSlicer(options: ConstructorParameters<typeof Slicer>[0]): Promise<Slicer> {
+  if (options?.customInfill) await loadCustomInfill();
+  return new Slicer(options);
 }

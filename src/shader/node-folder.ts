@@ -3,31 +3,19 @@
  * IceSL's layout (`NAME/shader.glsl`, `NAME/cells.png`) — and list them with their parameters.
  */
 import { readdir, readFile, stat } from 'node:fs/promises';
-import { homedir } from 'node:os';
 import { basename, dirname, extname, join } from 'node:path';
-import { fileURLToPath } from 'node:url';
 import { StrataError } from '../errors.js';
 import type { Infiller, InfillerFiles, InfillerInfo } from './infiller.js';
 import { describeInfiller, infillerFromImage, infillerFromShader, loadInfiller } from './infiller.js';
 import { MAX_SOURCE_LENGTH } from './shader.js';
+import { iceslInfillersDirs, shippedInfillersDir } from './infiller-dirs.js';
+
+export { iceslInfillersDirs, shippedInfillersDir };
 
 /** Largest cells.png read, bytes. */
 const MAX_IMAGE_BYTES = 64 * 1024 * 1024;
 /** Most infiller folders read from one directory. */
 const MAX_ENTRIES = 1000;
-
-/** The `infillers/` folder shipped with Strata (next to dist/). */
-export function shippedInfillersDir(): string {
-  return join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'infillers');
-}
-
-/** IceSL's own infiller folders: ~/.icesl/icesl-infillers (Linux, macOS), %APPDATA%\IceSL\icesl-infillers (Windows). */
-export function iceslInfillersDirs(): string[] {
-  const dirs = [join(homedir(), '.icesl', 'icesl-infillers')];
-  const appData = process.env.APPDATA;
-  if (appData) dirs.push(join(appData, 'IceSL', 'icesl-infillers'));
-  return dirs;
-}
 
 async function readLimited(path: string, limit: number): Promise<Buffer> {
   const s = await stat(path);
