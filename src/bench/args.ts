@@ -17,7 +17,7 @@ export interface BenchOptions {
   timeoutSeconds: number;
   /** Folder of models; null = ../shared/models beside the repository. */
   modelsDir: string | null;
-  /** Strata CLI script run with node; null = dist/cli/main.js of this build. */
+  /** Strata CLI script run with node; null = dist/bin/main.js of this build. */
   strataCli: string | null;
   /** Run CuraEngine / PrusaSlicer when they are on PATH. */
   peers: boolean;
@@ -40,7 +40,7 @@ export const BENCH_USAGE = `Usage: npm run bench -- [options]
   (or: node dist/bench/run.js [options])
 
 Slices every model in ../shared/models, and a ~1 M-triangle mesh made by subdividing 3DBenchy once, with Strata
-(node dist/cli/main.js slice, its default settings) and, where they are on PATH, CuraEngine and PrusaSlicer with
+(node dist/bin/main.js slice, its default settings) and, where they are on PATH, CuraEngine and PrusaSlicer with
 the common profile (0.2 mm layers, 2 walls, 0.8 mm top/bottom, 20 % grid). Runs are interleaved (A B C A B C …):
 a warm-up round, then --repeat counted rounds; it prints the medians of wall time, CPU time and peak memory,
 Strata/CuraEngine ratios (median of the per-round ratios), then on 3DBenchy Strata with 1 and 2 threads and
@@ -57,7 +57,7 @@ Options:
   --json             print the results as JSON instead of Markdown
   --timeout SEC      kill a slicer run after SEC seconds (default 600)
   --models-dir DIR   folder of models (default ../shared/models beside the repository)
-  --strata-cli FILE  Strata CLI script to run with node (default dist/cli/main.js)
+  --strata-cli FILE  Strata CLI script to run with node (default dist/bin/main.js)
   --no-peers         do not run CuraEngine or PrusaSlicer
   --no-prusa         do not run PrusaSlicer
   --no-patterns      skip the infill-pattern section

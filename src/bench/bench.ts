@@ -40,9 +40,9 @@ export interface BenchContext {
 /** Models the support section runs on, when selected. */
 export const SUPPORT_MODELS = Object.freeze(['SupportTest.stl', 'Overhang.stl', 'spot.stl', '3DBenchy.stl']);
 
-/** dist/cli/main.js of this build (from dist/bench/). */
+/** dist/bin/main.js of this build (from dist/bench/): the bundled CLI users run. */
 export function defaultStrataCli(): string {
-  return fileURLToPath(new URL('../cli/main.js', import.meta.url));
+  return fileURLToPath(new URL('../bin/main.js', import.meta.url));
 }
 
 const safeName = (s: string) => s.replace(/[^A-Za-z0-9._-]+/g, '_');

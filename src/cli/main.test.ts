@@ -85,8 +85,30 @@ test('--config, --set and a model on standard input', () => {
   assert.match(e.stderr, /not valid JSON/);
 });
 
-test('the built CLI is executable, so `npx strata` runs it', { skip: process.platform === 'win32' && 'no exec bit on Windows' }, () => {
+/** The CLI users run: package.json's bin (the bundle in dist/bin). */
+const BIN = fileURLToPath(new URL(`../../${(JSON.parse(readFileSync(fileURLToPath(new URL('../../package.json', import.meta.url)), 'utf8')) as { bin: { strata: string } }).bin.strata}`, import.meta.url));
+
+test('the shipped CLI (package.json bin) is executable, so `npx strata` runs it', { skip: process.platform === 'win32' && 'no exec bit on Windows' }, () => {
+  assert.ok((statSync(BIN).mode & 0o111) !== 0, `${BIN} has no execute permission`);
   assert.ok((statSync(CLI).mode & 0o111) !== 0, `${CLI} has no execute permission`);
+});
+
+test('the bundled CLI is the same program: same G-code (one and two threads, a custom infiller), same errors', { timeout: 120_000 }, () => {
+  const dir = mkdtempSync(join(tmpdir(), 'strata-bin-'));
+  const both = (...args: string[]) => {
+    const a = spawnSync(process.execPath, [BIN, ...args, '-o', join(dir, 'bin.gcode')], { encoding: 'utf8' });
+    const b = spawnSync(process.execPath, [CLI, ...args, '-o', join(dir, 'cli.gcode')], { encoding: 'utf8' });
+    assert.equal(a.status, b.status, `${args.join(' ')}: exit ${a.status} against ${b.status} (${a.stderr})`);
+    assert.equal(a.stderr, b.stderr);
+    if (a.status === 0) assert.ok(readFileSync(join(dir, 'bin.gcode')).equals(readFileSync(join(dir, 'cli.gcode'))), `${args.join(' ')}: G-code differs`);
+  };
+  both('slice', CUBE, '-q');
+  both('slice', CUBE, '-q', '--threads', '2', '--support-enabled', '--support-type', 'tree');
+  both('slice', CUBE, '-q', '--infill-pattern', 'hexagon-grid');
+  both('slice', CUBE, '-q', '--layer-height', '-1');
+  const info = spawnSync(process.execPath, [BIN, 'infillers'], { encoding: 'utf8' });
+  assert.equal(info.status, 0);
+  assert.match(info.stdout, /hexagon-grid/);
 });
 
 const tmp = () => mkdtempSync(join(tmpdir(), 'strata-'));

@@ -20,7 +20,7 @@ import { browserMissing, launchChromium, type Browser } from './browser.js';
 import { MODELS_DIR, modelsAvailable, readModel } from './models.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
-const cli = join(root, 'dist/cli/main.js');
+const cli = join(root, 'dist/bin/main.js');
 const shots = process.env.STRATA_SCREENSHOTS ? join(root, 'docs/screenshots') : null;
 /** Longest task allowed on the page thread while slicing, ms. */
 const LONG_TASK_MS = 100;
