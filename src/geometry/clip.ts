@@ -2,30 +2,28 @@
  * The thin geometry facade: union, difference, intersection, offset and open-path clipping over
  * Clipper2, in integer micrometres. Nothing else in Strata imports the clipping library. The engine is
  * Clipper2 compiled to WebAssembly (clipper2-wasm, see clipper-wasm.ts): on 3DBenchy a slice took 0.79 ×
- * the wall time of the same library in TypeScript (clipper2-ts), which stays as the reference engine the
- * tests hold the WebAssembly one against (`setClipBackend`).
+ * the wall time of the same library in TypeScript (clipper2-ts, clipper-ts.ts), which stays as the reference
+ * engine the tests hold the WebAssembly one against (`useClipEngine`); it is loaded only then.
  */
-import {
-  Clipper64,
-  ClipperOffset,
-  ClipType,
-  EndType,
-  FillRule,
-  JoinType,
-  PolyTree64,
-  Clipper,
-} from 'clipper2-ts';
-import type { PolyPath64 } from 'clipper2-ts';
 import type { Bounds, ExPolygon, Polygon, Polyline, Pt } from './types.js';
 import { rawMiterOffset } from './miter-offset.js';
 import { ringBounds, ringInside } from './contain.js';
 import { islandsIfSimple } from './simple-rings.js';
-import * as W from './clipper-wasm.js';
+import * as wasmEngine from './clipper-wasm.js';
 
-/** Which engine runs the clipping: an internal switch for tests and measurements, not part of the API. */
-let backend: 'ts' | 'wasm' = 'wasm';
-export function setClipBackend(b: 'ts' | 'wasm'): void {
-  backend = b;
+/** The engine's operations, as both engine modules export them. */
+type Engine = Pick<typeof wasmEngine, 'booleanAreas' | 'unionDroppingCollinear' | 'inflateAreas' | 'strokeAreas' | 'clipOpen' | 'simplifyClosed'>;
+let engine: Engine = wasmEngine;
+
+/** The reference engine's module, named through a variable so that bundlers leave it out of what ships. */
+const REFERENCE_ENGINE = './clipper-ts.js';
+
+/**
+ * Which engine clips: for tests and measurements on the compiled modules (`dist/`), not part of the API; the
+ * TypeScript one loads on first use and is not in the bundles.
+ */
+export async function useClipEngine(kind: 'wasm' | 'ts'): Promise<void> {
+  engine = kind === 'wasm' ? wasmEngine : ((await import(REFERENCE_ENGINE)) as Engine);
 }
 
 export type Join = 'miter' | 'round' | 'square';
@@ -33,10 +31,6 @@ export type Join = 'miter' | 'round' | 'square';
 /** Arc tolerance for round joins, µm: chord error allowed when offsetting curves. */
 const ARC_TOLERANCE_UM = 5;
 const MITER_LIMIT = 3;
-
-function joinType(join: Join): JoinType {
-  return join === 'round' ? JoinType.Round : join === 'square' ? JoinType.Square : JoinType.Miter;
-}
 
 /** Rings of a list of islands, as one flat list for the clipper (outer CCW, holes CW). */
 export function flatten(areas: readonly ExPolygon[]): Polygon[] {
@@ -48,46 +42,22 @@ export function flatten(areas: readonly ExPolygon[]): Polygon[] {
   return out;
 }
 
-function collectTree(node: PolyPath64, out: ExPolygon[]): void {
-  for (let i = 0; i < node.count; i++) {
-    const outer = node.child(i) as PolyPath64;
-    const holes: Polygon[] = [];
-    for (let j = 0; j < outer.count; j++) {
-      const hole = outer.child(j) as PolyPath64;
-      holes.push(hole.poly as Polygon);
-      collectTree(hole, out);
-    }
-    out.push({ outer: outer.poly as Polygon, holes });
-  }
-}
-
-function run(type: ClipType, subject: readonly Polygon[], clip: readonly Polygon[], rule: FillRule): ExPolygon[] {
-  if (backend === 'wasm') {
-    const op = type === ClipType.Union ? 'union' : type === ClipType.Difference ? 'difference' : 'intersection';
-    return W.booleanAreas(op, subject, clip, rule === FillRule.EvenOdd ? 'evenodd' : 'nonzero');
-  }
-  const c = new Clipper64();
-  if (subject.length) c.addSubject(subject as Polygon[]);
-  if (clip.length) c.addClip(clip as Polygon[]);
-  const tree = new PolyTree64();
-  c.execute(type, rule, tree);
-  const out: ExPolygon[] = [];
-  collectTree(tree, out);
-  return out;
+function run(op: wasmEngine.Op, subject: readonly Polygon[], clip: readonly Polygon[], rule: wasmEngine.Rule): ExPolygon[] {
+  return engine.booleanAreas(op, subject, clip, rule);
 }
 
 /** Union of rings with the non-zero rule (overlapping islands merge). */
 export function unionRings(rings: readonly Polygon[]): ExPolygon[] {
-  return run(ClipType.Union, rings, [], FillRule.NonZero);
+  return run('union', rings, [], 'nonzero');
 }
 
 /** Union of rings with the even-odd rule: nested rings alternate solid/hole (raw slice loops). */
 export function evenOddAreas(rings: readonly Polygon[]): ExPolygon[] {
-  return run(ClipType.Union, rings, [], FillRule.EvenOdd);
+  return run('union', rings, [], 'evenodd');
 }
 
 export function union(a: readonly ExPolygon[], b: readonly ExPolygon[] = []): ExPolygon[] {
-  return run(ClipType.Union, flatten(a), flatten(b), FillRule.NonZero);
+  return run('union', flatten(a), flatten(b), 'nonzero');
 }
 
 export function difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
@@ -96,7 +66,7 @@ export function difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): Ex
   // islands of a strictly inside b leave nothing; islands of b clear of a's bounds cut nothing
   const kept = a.filter((island) => !ringInside(island.outer, b));
   if (kept.length === 0) return [];
-  return run(ClipType.Difference, flatten(kept), flatten(touching(b, boundsOf(kept))), FillRule.NonZero);
+  return run('difference', flatten(kept), flatten(touching(b, boundsOf(kept))), 'nonzero');
 }
 
 export function intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
@@ -106,7 +76,7 @@ export function intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): 
   if (aIn.length === 0) return [];
   const bIn = touching(b, boundsOf(aIn));
   if (bIn.length === 0) return [];
-  return run(ClipType.Intersection, flatten(aIn), flatten(bIn), FillRule.NonZero);
+  return run('intersection', flatten(aIn), flatten(bIn), 'nonzero');
 }
 
 /** The islands whose outer ring's bounds overlap `box` (all of them, as the same array, when none is clear of it). */
@@ -130,28 +100,12 @@ export function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join 
   if (areas.length === 0) return [];
   if (deltaUm === 0) return areas.slice();
   const rings = flatten(areas);
-  const tree = new PolyTree64();
   const raw = join === 'miter' && Math.abs(deltaUm) >= 1 ? rawMiterOffset(rings, deltaUm, MITER_LIMIT) : null;
-  if (raw) {
-    // most offsets of a layer's islands stay simple: then they need no union
-    const simple = raw.loops ? null : islandsIfSimple(raw.rings, areas);
-    if (simple) return simple;
-    if (backend === 'wasm') return W.unionDroppingCollinear(raw.rings, 'positive');
-    // the union that resolves overlaps of the raw offset, as the general offsetter finishes
-    const c = new Clipper64();
-    c.preserveCollinear = false;
-    c.addSubject(raw.rings);
-    c.execute(ClipType.Union, FillRule.Positive, tree);
-  } else if (backend === 'wasm') {
-    return W.inflateAreas(rings, deltaUm, join, 'polygon', MITER_LIMIT, ARC_TOLERANCE_UM);
-  } else {
-    const co = new ClipperOffset(MITER_LIMIT, ARC_TOLERANCE_UM);
-    co.addPaths(rings, joinType(join), EndType.Polygon);
-    co.execute(deltaUm, tree);
-  }
-  const out: ExPolygon[] = [];
-  collectTree(tree, out);
-  return out;
+  if (!raw) return engine.inflateAreas(rings, deltaUm, join, 'polygon', MITER_LIMIT, ARC_TOLERANCE_UM);
+  // most offsets of a layer's islands stay simple: then they need no union
+  const simple = raw.loops ? null : islandsIfSimple(raw.rings, areas);
+  // else the union that resolves overlaps of the raw offset, as the general offsetter finishes
+  return simple ?? engine.unionDroppingCollinear(raw.rings, 'positive');
 }
 
 /**
@@ -163,16 +117,7 @@ export function strokeArea(
   lines: readonly Polyline[], loops: readonly Polygon[], widthUm: number, join: 'round' | 'miter' = 'round',
 ): ExPolygon[] {
   if ((lines.length === 0 && loops.length === 0) || !(widthUm > 0)) return [];
-  if (backend === 'wasm') return W.strokeAreas(lines, loops, widthUm / 2, join, join === 'round' ? 'round' : 'square', MITER_LIMIT, ARC_TOLERANCE_UM);
-  const co = new ClipperOffset(MITER_LIMIT, ARC_TOLERANCE_UM);
-  const jt = joinType(join);
-  if (lines.length) co.addPaths(lines as Polyline[], jt, join === 'round' ? EndType.Round : EndType.Square);
-  if (loops.length) co.addPaths(loops as Polygon[], jt, EndType.Joined);
-  const tree = new PolyTree64();
-  co.execute(widthUm / 2, tree);
-  const out: ExPolygon[] = [];
-  collectTree(tree, out);
-  return out;
+  return engine.strokeAreas(lines, loops, widthUm / 2, join, join === 'round' ? 'round' : 'square', MITER_LIMIT, ARC_TOLERANCE_UM);
 }
 
 /** Open-then-close (shrink then grow): removes features narrower than 2·radius µm. */
@@ -188,28 +133,14 @@ export function closing(areas: readonly ExPolygon[], radiusUm: number): ExPolygo
 /** Clip open polylines to areas: the parts inside. */
 export function clipLines(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
   if (lines.length === 0 || areas.length === 0) return [];
-  if (backend === 'wasm') return W.clipOpen('intersection', lines, flatten(areas));
-  const c = new Clipper64();
-  c.addOpenSubject(lines as Polyline[]);
-  c.addClip(flatten(areas));
-  const closed: Polygon[] = [];
-  const open: Polyline[] = [];
-  c.execute(ClipType.Intersection, FillRule.NonZero, closed, open);
-  return open;
+  return engine.clipOpen('intersection', lines, flatten(areas));
 }
 
 /** Clip open polylines to areas: the parts outside. */
 export function clipLinesOutside(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
   if (lines.length === 0) return [];
   if (areas.length === 0) return lines.slice();
-  if (backend === 'wasm') return W.clipOpen('difference', lines, flatten(areas));
-  const c = new Clipper64();
-  c.addOpenSubject(lines as Polyline[]);
-  c.addClip(flatten(areas));
-  const closed: Polygon[] = [];
-  const open: Polyline[] = [];
-  c.execute(ClipType.Difference, FillRule.NonZero, closed, open);
-  return open;
+  return engine.clipOpen('difference', lines, flatten(areas));
 }
 
 /** Signed area of a ring in µm² (positive = counter-clockwise). */
@@ -232,36 +163,21 @@ export function area(areas: readonly ExPolygon[]): number {
 
 /** Simplify rings: drop vertices closer than toleranceUm to the line through their neighbours. */
 export function simplifyRings(rings: readonly Polygon[], toleranceUm: number): Polygon[] {
-  if (backend === 'wasm') return W.simplifyClosed(rings, toleranceUm).filter((s) => s.length >= 3);
-  const out: Polygon[] = [];
-  for (const r of rings) {
-    const s = Clipper.simplifyPath(r as Polygon, toleranceUm, true) as Polygon;
-    if (s.length >= 3) out.push(s);
-  }
-  return out;
+  return engine.simplifyClosed(rings, toleranceUm).filter((r) => r.length >= 3);
 }
 
+/** Simplify islands ring by ring; an island whose outer ring falls below three points is dropped, as are such holes. */
 export function simplifyAreas(areas: readonly ExPolygon[], toleranceUm: number): ExPolygon[] {
-  if (backend === 'wasm') {
-    const s = W.simplifyClosed(flatten(areas), toleranceUm);
-    const res: ExPolygon[] = [];
-    let k = 0;
-    for (const a of areas) {
-      const outer = s[k++];
-      const holes = s.slice(k, k + a.holes.length).filter((h) => h.length >= 3);
-      k += a.holes.length;
-      if (outer.length >= 3) res.push({ outer, holes });
-    }
-    return res;
-  }
-  const out: ExPolygon[] = [];
+  const s = engine.simplifyClosed(flatten(areas), toleranceUm);
+  const res: ExPolygon[] = [];
+  let k = 0;
   for (const a of areas) {
-    const outer = Clipper.simplifyPath(a.outer, toleranceUm, true) as Polygon;
-    if (outer.length < 3) continue;
-    const holes = simplifyRings(a.holes, toleranceUm);
-    out.push({ outer, holes });
+    const outer = s[k++];
+    const holes = s.slice(k, k + a.holes.length).filter((h) => h.length >= 3);
+    k += a.holes.length;
+    if (outer.length >= 3) res.push({ outer, holes });
   }
-  return out;
+  return res;
 }
 
 export function boundsOf(areas: readonly ExPolygon[]): Bounds {

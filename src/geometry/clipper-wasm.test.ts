@@ -4,7 +4,7 @@
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { area, clipLines, clipLinesOutside, difference, intersection, offset, setClipBackend, simplifyAreas, strokeArea, union } from './clip.js';
+import { area, clipLines, clipLinesOutside, difference, intersection, offset, simplifyAreas, useClipEngine, strokeArea, union } from './clip.js';
 import type { ExPolygon, Polyline, Pt } from './types.js';
 
 /** A deterministic pseudo-random generator (so a failure can be replayed). */
@@ -23,20 +23,20 @@ function star(cx: number, cy: number, r: number, n: number, rand: () => number):
   return { outer, holes: [] };
 }
 
-function both<T>(f: () => T): { ts: T; wasm: T } {
-  setClipBackend('ts');
+async function both<T>(f: () => T): Promise<{ ts: T; wasm: T }> {
+  await useClipEngine('ts');
   try {
     const ts = f();
-    setClipBackend('wasm');
+    await useClipEngine('wasm');
     return { ts, wasm: f() };
   } finally {
-    setClipBackend('wasm');
+    await useClipEngine('wasm');
   }
 }
 
 const length = (lines: readonly Polyline[]) => lines.reduce((t, l) => t + l.slice(1).reduce((s, p, i) => s + Math.hypot(p.x - l[i].x, p.y - l[i].y), 0), 0);
 
-test('booleans, offsets, strokes, line clipping and simplification agree between the two engines', () => {
+test('booleans, offsets, strokes, line clipping and simplification agree between the two engines', async () => {
   const rand = rng(7);
   for (let round = 0; round < 40; round++) {
     const a = [star(50_000, 50_000, 20_000, 24, rand), star(62_000, 48_000, 15_000, 17, rand)];
@@ -56,7 +56,7 @@ test('booleans, offsets, strokes, line clipping and simplification agree between
       ['simplify', () => area(simplifyAreas(a, 50)), 1e-6],
     ];
     for (const [name, f, rel] of cases) {
-      const { ts, wasm } = both(f);
+      const { ts, wasm } = await both(f);
       // rel ≥ 1: an absolute tolerance (µm); else relative
       const tol = rel >= 1 ? rel : rel * Math.abs(ts);
       assert.ok(Math.abs(ts - wasm) <= tol, `${name} (round ${round}): TypeScript ${ts}, WebAssembly ${wasm}`);
