@@ -1,10 +1,10 @@
 /**
  * Worker entry: Node worker_threads or a browser Web Worker (module type). The handler (and with it the
  * clipping engine, WebAssembly that loads asynchronously) comes behind a dynamic import; a browser worker
- * listens before that and keeps what arrives meanwhile, which it would otherwise lose. (Node's port holds
- * messages until a listener is added.)
+ * listens before that (listen-first.ts). Node's port holds messages until a listener is added.
  */
 import { isNode, nodeBuiltin } from '../runtime.js';
+import { listenFirst } from './listen-first.js';
 import type { FromWorker, ToWorker } from './protocol.js';
 
 if (isNode) {
@@ -17,13 +17,7 @@ if (isNode) {
   }
 } else {
   const scope = globalThis as unknown as { postMessage(m: unknown): void; onmessage: ((e: { data: ToWorker }) => void) | null };
-  const early: ToWorker[] = [];
-  let handle: ((m: ToWorker) => void) | null = null;
-  scope.onmessage = (e) => (handle ? handle(e.data) : early.push(e.data));
-  void import('./handler.js').then(({ makeHandler }) => {
-    handle = makeHandler((m: FromWorker) => scope.postMessage(m));
-    for (const m of early.splice(0)) handle(m);
-  });
+  listenFirst(scope, async () => (await import('./handler.js')).makeHandler((m: FromWorker) => scope.postMessage(m)));
 }
 
 /** This thread's CPU time in ms (Node ≥ 23.9, or Linux's /proc), else undefined (wall time is used). */
