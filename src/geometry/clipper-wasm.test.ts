@@ -63,3 +63,8 @@ test('booleans, offsets, strokes, line clipping and simplification agree between
     }
   }
 });
+
+test('results are read straight from the engine memory (the layouts checked at load hold for the pinned clipper2-wasm)', async () => {
+  const { DIRECT } = await import('./clipper-wasm.js');
+  assert.equal(DIRECT, true);
+});

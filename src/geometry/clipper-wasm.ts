@@ -64,8 +64,8 @@ function readPath(path: PathD): Pt[] {
   return out;
 }
 
-/** Every path of an engine path list, which is then deleted. */
-function readPaths(paths: PathsD, minPoints: number): Pt[][] {
+/** Every path of an engine path list, through the engine's objects (one per path). */
+function readPathsByHandle(paths: PathsD, minPoints: number): Pt[][] {
   const out: Pt[][] = [];
   const n = paths.size();
   for (let i = 0; i < n; i++) {
@@ -73,12 +73,11 @@ function readPaths(paths: PathsD, minPoints: number): Pt[][] {
     if (p.size() >= minPoints) out.push(readPath(p));
     p.delete();
   }
-  paths.delete();
   return out;
 }
 
-/** The islands of a result tree, in the facade's order (islands inside a hole before their host). */
-function readTree(node: PolyPathD, out: ExPolygon[]): void {
+/** The islands of a result tree through the engine's objects, in the facade's order (islands inside a hole before their host). */
+function readTreeByHandle(node: PolyPathD, out: ExPolygon[]): void {
   const n = node.count();
   for (let i = 0; i < n; i++) {
     const outerNode = node.child(i); // owned by the tree: never deleted here
@@ -89,12 +88,115 @@ function readTree(node: PolyPathD, out: ExPolygon[]): void {
       const hp = holeNode.polygon();
       holes.push(readPath(hp));
       hp.delete();
-      readTree(holeNode, out);
+      readTreeByHandle(holeNode, out);
     }
     const op = outerNode.polygon();
     out.push({ outer: readPath(op), holes });
     op.delete();
   }
+}
+
+/*
+ * Reading results straight from the engine's memory. Every engine object handed to JavaScript costs about
+ * a microsecond to make (and a finaliser to register), and a result tree needs two per ring: on a slice with
+ * tree support that was 50 ms of handles. The layouts below are those of clipper2-wasm 0.4.0 (wasm32, libc++),
+ * the exact version package.json names; `directReadsAgree` checks them at load against the object interface
+ * and the handle path is used instead if they ever differ.
+ *   std::vector<T>: begin, end, capacity (three 32-bit pointers);
+ *   PointD: x, y (doubles), z (64-bit): 24 bytes;
+ *   PolyPathD: vtable, parent, children (vector of pointers) at byte 8, scale (double) at 24, polygon (vector of PointD) at 32.
+ */
+const POINT_BYTES = 24;
+const CHILDREN_AT = 8;
+const POLYGON_AT = 32;
+let heapBuffer: ArrayBufferLike | undefined;
+let u32: Uint32Array<ArrayBufferLike> = new Uint32Array(0);
+let f64: Float64Array<ArrayBufferLike> = new Float64Array(0);
+
+/** Where an engine object lives in the engine's memory (embind keeps it on every handle). */
+function addressOf(handle: PathsD | PolyPathD): number {
+  return (handle as unknown as { $$: { ptr: number } }).$$.ptr;
+}
+
+/** Views of the engine's memory, made again when it has grown. */
+function heapViews(): void {
+  const buffer = (C as unknown as { HEAPU8: Uint8Array }).HEAPU8.buffer;
+  if (buffer !== heapBuffer) {
+    heapBuffer = buffer;
+    u32 = new Uint32Array(buffer);
+    f64 = new Float64Array(buffer);
+  }
+}
+
+/** The ring held by a vector of points at byte `at`. */
+function ringAt(at: number): Pt[] {
+  const begin = u32[at >>> 2];
+  const n = (u32[(at >>> 2) + 1] - begin) / POINT_BYTES;
+  const out: Pt[] = new Array(n);
+  for (let i = 0, k = begin >>> 3; i < n; i++, k += 3) out[i] = { x: f64[k], y: f64[k + 1] };
+  return out;
+}
+
+function readPathsDirect(paths: PathsD, minPoints: number): Pt[][] {
+  heapViews();
+  const at = addressOf(paths) >>> 2;
+  const out: Pt[][] = [];
+  for (let v = u32[at], end = u32[at + 1]; v < end; v += 12) {
+    const n = (u32[(v >>> 2) + 1] - u32[v >>> 2]) / POINT_BYTES;
+    if (n >= minPoints) out.push(ringAt(v));
+  }
+  return out;
+}
+
+function readTreeFrom(node: number, out: ExPolygon[]): void {
+  for (let c = u32[(node + CHILDREN_AT) >>> 2], end = u32[(node + CHILDREN_AT + 4) >>> 2]; c < end; c += 4) {
+    const outer = u32[c >>> 2];
+    const holes: Polygon[] = [];
+    for (let h = u32[(outer + CHILDREN_AT) >>> 2], hEnd = u32[(outer + CHILDREN_AT + 4) >>> 2]; h < hEnd; h += 4) {
+      const hole = u32[h >>> 2];
+      holes.push(ringAt(hole + POLYGON_AT));
+      readTreeFrom(hole, out);
+    }
+    out.push({ outer: ringAt(outer + POLYGON_AT), holes });
+  }
+}
+
+function readTreeDirect(node: PolyPathD, out: ExPolygon[]): void {
+  heapViews();
+  readTreeFrom(addressOf(node), out);
+}
+
+/** Whether reading memory gives what the object interface gives, on a tree with a hole and an island in it. */
+function directReadsAgree(): boolean {
+  try {
+    const square = (c: number, r: number): Pt[] => [{ x: c - r, y: c - r }, { x: c + r, y: c - r }, { x: c + r, y: c + r }, { x: c - r, y: c + r }];
+    C.BooleanOpOutD(OPS.union, RULES.evenodd, load(subjects, [square(0, 100), square(0, 60), square(0, 20), square(300, 7)]), load(clips, []), tree, PRECISION);
+    const byHandle: ExPolygon[] = [];
+    const direct: ExPolygon[] = [];
+    readTreeByHandle(tree, byHandle);
+    readTreeDirect(tree, direct);
+    tree.clear();
+    const res = C.InflatePathsD(subjects, 5, JOINS.miter, ENDS.polygon, 2, PRECISION, 0.25);
+    const a = readPathsByHandle(res, 0);
+    const b = readPathsDirect(res, 0);
+    res.delete();
+    subjects.clear();
+    clips.clear();
+    return byHandle.length === 3 && a.length === 2 && JSON.stringify(byHandle) === JSON.stringify(direct) && JSON.stringify(a) === JSON.stringify(b);
+  } catch {
+    return false;
+  }
+}
+
+/** Whether results are read from memory (true unless the layouts above stopped matching). */
+export const DIRECT = directReadsAgree();
+const readTree = DIRECT ? readTreeDirect : readTreeByHandle;
+
+/** Every path of an engine path list, which is then deleted. */
+function readPaths(paths: PathsD, minPoints: number): Pt[][] {
+  const out = DIRECT ? readPathsDirect(paths, minPoints) : readPathsByHandle(paths, minPoints);
+  paths.delete();
+  return out;
 }
 
 function takeTree(): ExPolygon[] {
