@@ -267,16 +267,43 @@ export class AreaIndex {
     return null;
   }
 
-  /** Whether an area meets the areas: a vertex of either lies inside the other, or their edges cross. */
+  /**
+   * Whether an area meets the areas: a vertex of either lies inside the other, or their edges cross. Along a
+   * ring whose edges cross none of the areas' edges every vertex lies on the same side, so one vertex of each
+   * ring is tested for containment and the rest only for crossings.
+   */
   meets(a: ExPolygon): boolean {
     if (this.empty) return false;
-    for (const ring of [a.outer, ...a.holes]) {
+    // no edge in the cells under a's bounds: a lies wholly inside or wholly outside, and holds no ring of the areas
+    if (!this.#edgesUnder(a.outer)) return a.outer.length > 0 && this.contains(a.outer[0].x, a.outer[0].y);
+    for (let r = -1; r < a.holes.length; r++) {
+      const ring = r < 0 ? a.outer : a.holes[r];
+      if (ring.length && this.contains(ring[0].x, ring[0].y)) return true;
       for (let i = 0; i < ring.length; i++) {
         const p = ring[i], q = ring[i + 1 < ring.length ? i + 1 : 0];
-        if (this.contains(p.x, p.y) || this.crosses(p.x, p.y, q.x, q.y)) return true;
+        if (this.crosses(p.x, p.y, q.x, q.y)) return true;
       }
     }
     for (let k = 0; k < this.#firsts.length; k += 2) if (pointInArea({ x: this.#firsts[k], y: this.#firsts[k + 1] }, a)) return true;
+    return false;
+  }
+
+  /** Whether some edge of the areas lies in a cell under the bounds of `ring`. */
+  #edgesUnder(ring: readonly { x: number; y: number }[]): boolean {
+    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    for (const p of ring) {
+      if (p.x < minX) minX = p.x;
+      if (p.x > maxX) maxX = p.x;
+      if (p.y < minY) minY = p.y;
+      if (p.y > maxY) maxY = p.y;
+    }
+    const gx = this.#minX + this.#nx * this.#cell, gy = this.#minY + this.#ny * this.#cell;
+    if (maxX < this.#minX || maxY < this.#minY || minX > gx || minY > gy) return false;
+    const c0 = this.#col(minX), c1 = this.#col(maxX), r0 = this.#row(minY), r1 = this.#row(maxY);
+    for (let r = r0; r <= r1; r++) {
+      const row = r * this.#nx;
+      if (this.#start[row + c1 + 1] > this.#start[row + c0]) return true;
+    }
     return false;
   }
 

@@ -9,6 +9,7 @@ import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
 import type { Config } from '../../settings/resolve.js';
 import type { LayerRegions, SupportAreas } from '../types.js';
 import { sectionOf } from '../types.js';
+import { AreaIndex } from './area-index.js';
 
 /** Under an overhang, support may come this close to the part, in support line widths ("Z overrides XY"). */
 export const OVERHANG_XY_WIDTHS = 0.5;
@@ -19,6 +20,8 @@ export class ModelLayers {
   readonly layers: readonly LayerRegions[];
   readonly cfg: Config;
   readonly #sections = new Map<number, ExPolygon[]>();
+  /** Per layer, the section as a point index (made on first use). */
+  readonly #index = new Map<number, AreaIndex>();
   /** Union of the sections of layers 0..j (build-plate placement), filled on demand bottom-up. */
   readonly #shadow: ExPolygon[][] = [];
 
@@ -39,9 +42,22 @@ export class ModelLayers {
     return s;
   }
 
+  /** Layer j's section as a point index. */
+  sectionIndex(j: number): AreaIndex {
+    let ix = this.#index.get(j);
+    if (!ix) this.#index.set(j, (ix = new AreaIndex(this.section(j))));
+    return ix;
+  }
+
   /** Forget sections above layer j (support is computed top-down). */
   release(j: number): void {
     for (const k of this.#sections.keys()) if (k > j) this.#sections.delete(k);
+    for (const k of this.#index.keys()) if (k > j) this.#index.delete(k);
+  }
+
+  /** Forget what was kept for layers below j (drawing goes from the bed up). */
+  releaseBelow(j: number): void {
+    for (const k of this.#index.keys()) if (k < j) this.#index.delete(k);
   }
 
   /** Support line width, µm. */

@@ -148,9 +148,11 @@ export function clusters(discs: readonly Disc[]): Disc[][] {
     while (root[i] !== i) i = root[i] = root[root[i]];
     return i;
   };
+  const found: number[] = [];
   for (let i = 0; i < discs.length; i++) {
     const c = discs[i];
-    for (const k of grid.within(c.x, c.y, c.r + widest)) {
+    // the groups do not depend on the order the overlaps are found in (a group's root is its first disc)
+    for (const k of grid.near(c.x, c.y, c.r + widest, found)) {
       if (k <= i || Math.hypot(discs[k].x - c.x, discs[k].y - c.y) > c.r + discs[k].r) continue;
       const a = find(i), b = find(k);
       if (a !== b) root[Math.max(a, b)] = Math.min(a, b);

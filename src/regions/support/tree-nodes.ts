@@ -68,28 +68,42 @@ function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
 }
 
 /** Pairs of nearby nodes of one group (each node with its nearest few within range) as [a, b, distance], shortest first. */
-export function* nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): Generator<void, [number, number, number][]> {
+export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): [number, number, number][] {
   if (ids.length < 2 || rangeUm <= 0) return [];
   const grid = new PointGrid(Math.min(NEAR_FIRST_UM, Math.max(1000, rangeUm / 4)));
   for (const i of ids) grid.add(nodes[i].x, nodes[i].y);
   const seen = new Set<number>();
   const out: [number, number, number][] = [];
+  const found: number[] = [];
+  // the nearest few of a node, kept sorted by (distance, index) as they are found
+  const bestId = new Int32Array(NEAR_COUNT);
+  const bestD = new Float64Array(NEAR_COUNT);
   for (let a = 0; a < ids.length; a++) {
-    if (a % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
     const x = grid.xs[a], y = grid.ys[a];
-    const near: [number, number][] = [];
     // the nearest few are usually close: look further only when they are not
-    let found = grid.within(x, y, Math.min(rangeUm, NEAR_FIRST_UM));
-    if (found.length <= NEAR_COUNT && rangeUm > NEAR_FIRST_UM) found = grid.within(x, y, rangeUm);
-    for (const b of found) if (b !== a) near.push([b, Math.hypot(grid.xs[b] - x, grid.ys[b] - y)]);
-    near.sort((p, q) => p[1] - q[1] || p[0] - q[0]);
-    for (let k = 0; k < near.length && k < NEAR_COUNT; k++) {
-      const b = near[k][0];
+    grid.near(x, y, Math.min(rangeUm, NEAR_FIRST_UM), found);
+    if (found.length <= NEAR_COUNT && rangeUm > NEAR_FIRST_UM) grid.near(x, y, rangeUm, found);
+    let kept = 0;
+    for (const b of found) {
+      if (b === a) continue;
+      const d = Math.hypot(grid.xs[b] - x, grid.ys[b] - y);
+      if (kept === NEAR_COUNT && (d > bestD[kept - 1] || (d === bestD[kept - 1] && b > bestId[kept - 1]))) continue;
+      let k = kept < NEAR_COUNT ? kept++ : kept - 1;
+      while (k > 0 && (bestD[k - 1] > d || (bestD[k - 1] === d && bestId[k - 1] > b))) {
+        bestD[k] = bestD[k - 1];
+        bestId[k] = bestId[k - 1];
+        k--;
+      }
+      bestD[k] = d;
+      bestId[k] = b;
+    }
+    for (let k = 0; k < kept; k++) {
+      const b = bestId[k];
       const lo = Math.min(a, b), hi = Math.max(a, b);
       const key = lo * ids.length + hi;
       if (seen.has(key)) continue;
       seen.add(key);
-      out.push([lo, hi, near[k][1]]);
+      out.push([lo, hi, bestD[k]]);
     }
   }
   out.sort((p, q) => p[2] - q[2] || p[0] - q[0] || p[1] - q[1]);
@@ -118,48 +132,86 @@ export interface DescendResult {
   stuck: number[];
 }
 
-/** Take the nodes of layer j + 1 down to layer j; yields every ITEMS_PER_STEP branches. */
-export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes, rules: TreeRules): Generator<void, DescendResult> {
-  const m = rules.step(j + 1);
-  const lower: TreeNode[] = [];
-  const stuck: number[] = [];
-  const done = new Uint8Array(upper.length);
-  // whom each node leans towards: its partner (pairs matched closest first), else its nearest neighbour
-  const toward = new Int32Array(upper.length).fill(-1);
-  const paired = new Uint8Array(upper.length);
-  const range = Math.min(ATTRACT_MAX_UM, rules.zUm(j));
-  const barrier = vol.partIndex(j);
+/** What one layer's descent works on. */
+interface Descent {
+  upper: readonly TreeNode[];
+  j: number;
+  vol: TreeVolumes;
+  rules: TreeRules;
+  /** The one-layer move, µm. */
+  m: number;
+  lower: TreeNode[];
+  stuck: number[];
+  /** Nodes already merged into one below. */
+  done: Uint8Array;
+  /** Whom each node leans towards: its partner (pairs matched closest first), else its nearest neighbour (-1: nobody). */
+  toward: Int32Array;
+  paired: Uint8Array;
+}
 
+/**
+ * Take the nodes of layer j + 1 down to layer j; yields every ITEMS_PER_STEP branches. The work is in small
+ * plain functions, which the engine optimises early, rather than in this generator.
+ */
+export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes, rules: TreeRules): Generator<void, DescendResult> {
+  const d: Descent = {
+    upper, j, vol, rules, m: rules.step(j + 1), lower: [], stuck: [],
+    done: new Uint8Array(upper.length), toward: new Int32Array(upper.length).fill(-1), paired: new Uint8Array(upper.length),
+  };
+  const range = Math.min(ATTRACT_MAX_UM, rules.zUm(j));
   for (const keep of ['bed', 'model'] as const) {
     const ids: number[] = [];
     for (let i = 0; i < upper.length; i++) if (!upper[i].dead && !upper[i].landing && upper[i].keep === keep) ids.push(i);
-    const pairs = yield* nearPairs(upper, ids, range);
+    const pairs = nearPairs(upper, ids, range);
     // merges: the closest pairs first, each node once per layer
-    let tried = 0;
-    for (const [a, b, d] of pairs) {
-      if (done[a] || done[b] || !(d <= 2 * m || absorbs(upper[a], upper[b], d, m))) continue;
-      if (++tried % ITEMS_PER_STEP === 0) yield;
-      const merged = merge(upper[a], upper[b], a, b, d, m, j, vol, rules);
-      if (!merged) continue;
-      lower.push(merged);
-      done[a] = done[b] = 1;
+    for (let k = 0; k < pairs.length; k += ITEMS_PER_STEP) {
+      if (k > 0) yield;
+      mergePairs(d, pairs, k, Math.min(pairs.length, k + ITEMS_PER_STEP));
     }
-    const clear = (a: number, b: number) => !barrier.crosses(upper[a].x, upper[a].y, upper[b].x, upper[b].y);
-    for (const [a, b] of pairs) {
-      if (done[a] || done[b] || paired[a] || paired[b] || !clear(a, b)) continue;
-      paired[a] = paired[b] = 1;
-      toward[a] = b;
-      toward[b] = a;
-    }
-    for (const [a, b] of pairs) {
-      if (done[a] || done[b]) continue;
-      if (toward[a] < 0 && clear(a, b)) toward[a] = b;
-      if (toward[b] < 0 && clear(a, b)) toward[b] = a;
-    }
+    leanTowards(d, pairs);
   }
+  for (let i = 0; i < upper.length; i += ITEMS_PER_STEP) {
+    if (i > 0) yield;
+    stepDown(d, i, Math.min(upper.length, i + ITEMS_PER_STEP));
+  }
+  return { lower: d.lower, stuck: d.stuck };
+}
 
-  for (let i = 0; i < upper.length; i++) {
-    if (i % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
+/** Merge the pairs [from, to) that can meet (closest first, each node once). */
+function mergePairs(d: Descent, pairs: readonly [number, number, number][], from: number, to: number): void {
+  const { upper, done, m } = d;
+  for (let k = from; k < to; k++) {
+    const [a, b, dist] = pairs[k];
+    if (done[a] || done[b] || !(dist <= 2 * m || absorbs(upper[a], upper[b], dist, m))) continue;
+    const merged = merge(upper[a], upper[b], a, b, dist, m, d.j, d.vol, d.rules);
+    if (!merged) continue;
+    d.lower.push(merged);
+    done[a] = done[b] = 1;
+  }
+}
+
+/** Partners (closest pairs first), then each unpaired node towards its nearest neighbour, where the part is not between them. */
+function leanTowards(d: Descent, pairs: readonly [number, number, number][]): void {
+  const { upper, done, paired, toward } = d;
+  const barrier = d.vol.partIndex(d.j);
+  const clear = (a: number, b: number) => !barrier.crosses(upper[a].x, upper[a].y, upper[b].x, upper[b].y);
+  for (const [a, b] of pairs) {
+    if (done[a] || done[b] || paired[a] || paired[b] || !clear(a, b)) continue;
+    paired[a] = paired[b] = 1;
+    toward[a] = b;
+    toward[b] = a;
+  }
+  for (const [a, b] of pairs) {
+    if (done[a] || done[b]) continue;
+    if (toward[a] < 0 && clear(a, b)) toward[a] = b;
+    if (toward[b] < 0 && clear(a, b)) toward[b] = a;
+  }
+}
+
+/** Nodes [from, to) not merged: each one layer down, halfway to whom it leans towards and at most a move. */
+function stepDown(d: Descent, from: number, to: number): void {
+  const { upper, done, toward, m, j, vol, rules, lower, stuck } = d;
+  for (let i = from; i < to; i++) {
     const n = upper[i];
     if (n.dead || done[i]) continue;
     if (n.landing) {
@@ -168,7 +220,6 @@ export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes
       else if (next) lower.push(next);
       continue;
     }
-    // halfway to whom it leans towards, at most a move
     let vx = 0, vy = 0;
     const t = toward[i];
     if (t >= 0) {
@@ -197,7 +248,6 @@ export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes
     }
     lower.push(grown(n, i, at, keep, m, j, vol, rules));
   }
-  return { lower, stuck };
 }
 
 /** The node at `at` on layer j, its radius grown as far as its class (or a wider one that fits) allows. */

@@ -74,8 +74,8 @@ export class TreeVolumes {
   readonly #collision: ExPolygon[][] = [];
   /** The tip class's avoidance per layer. */
   readonly #avoid: ExPolygon[][] = [];
-  /** Point indexes made on first use, by `${'avoid' | 'part'}:${layer}`. */
-  readonly #index = new Map<string, AreaIndex>();
+  /** Per layer, made on first use: the avoidance and the collision as point indexes, and what each class keeps out of. */
+  readonly #layer: ({ avoid: AreaIndex | null; part: AreaIndex | null; blocked: (Blocked | undefined)[] } | undefined)[] = [];
   #built = -1;
   #avoidTop = -1;
 
@@ -113,22 +113,36 @@ export class TreeVolumes {
     return j >= 0 && j <= this.#avoidTop ? this.#avoid[j] : [];
   }
 
-  #indexOf(kind: 'avoid' | 'part', j: number): AreaIndex {
-    const key = `${kind}:${j}`;
-    let ix = this.#index.get(key);
-    if (!ix) this.#index.set(key, (ix = new AreaIndex(kind === 'avoid' ? this.avoidance(j) : this.collision(j))));
-    return ix;
+  #layerOf(j: number) {
+    return (this.#layer[j] ??= { avoid: null, part: null, blocked: [] });
+  }
+
+  #avoidIndex(j: number): AreaIndex {
+    const l = this.#layerOf(j);
+    return (l.avoid ??= new AreaIndex(this.avoidance(j)));
+  }
+
+  #partIndex(j: number): AreaIndex {
+    const l = this.#layerOf(j);
+    return (l.part ??= new AreaIndex(this.collision(j)));
   }
 
   /** What a centre of class c keeps out of on layer j: to reach the bed ('bed'), to keep off the part ('model'), or the collision itself ('part'). */
   index(keep: Keep, c: number, j: number): Blocked {
-    if (keep === 'bed') return new Blocked(this.#indexOf('avoid', j), this.radii[c] - this.radii[0]);
-    return new Blocked(this.#indexOf('part', j), keep === 'model' ? this.radii[c] : 0);
+    const blocked = this.#layerOf(j).blocked;
+    const slot = keep === 'bed' ? c : keep === 'model' ? this.radii.length + c : 2 * this.radii.length;
+    let b = blocked[slot];
+    if (!b) {
+      if (keep === 'bed') b = new Blocked(this.#avoidIndex(j), this.radii[c] - this.radii[0]);
+      else b = new Blocked(this.#partIndex(j), keep === 'model' ? this.radii[c] : 0);
+      blocked[slot] = b;
+    }
+    return b;
   }
 
   /** The collision of layer j as a point index (segment tests between branches). */
   partIndex(j: number): AreaIndex {
-    return this.#indexOf('part', j);
+    return this.#partIndex(j);
   }
 
   /** Forget what layer j + 1 needed (the branches have gone below it; collision stays for drawing). */
@@ -136,7 +150,6 @@ export class TreeVolumes {
     const k = j + 1;
     if (k > this.#avoidTop) return;
     this.#avoid[k] = [];
-    this.#index.delete(`avoid:${k}`);
-    this.#index.delete(`part:${k}`);
+    this.#layer[k] = undefined;
   }
 }

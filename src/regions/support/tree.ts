@@ -12,13 +12,12 @@
  * 3. from the bed up (tree-draw.ts), each layer's branch cross-sections and roof, the roof only where what is
  *    below holds it, off the part, split into body, roof and floor.
  */
-import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
+import { area, intersection, offset, union } from '../../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
-import { AreaIndex } from './area-index.js';
-import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
+import { circle, cutAway, drawLayer, type Disc } from './tree-draw.js';
 import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
 import { radiusClasses, TreeVolumes } from './tree-volumes.js';
@@ -131,15 +130,14 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
 /** model.split, run only on the islands that meet the part within the roof layers above or the floor layers below: the others are body. */
 function* splitNear(model: ModelLayers, j: number, s: ExPolygon[]): Generator<void, SupportAreas> {
   const cfg = model.cfg;
-  const nearby: ExPolygon[] = [];
-  for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) nearby.push(...model.section(k));
-  for (let k = j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount; k < j - cfg.supportBottomGapLayers; k++) nearby.push(...model.section(k));
+  const nearby: number[] = [];
+  for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
+  for (let k = j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount; k < j - cfg.supportBottomGapLayers; k++) if (model.section(k).length) nearby.push(k);
+  model.releaseBelow(j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount);
   if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
-  const boxes = nearby.map((p) => boundsOf([p]));
-  let index: AreaIndex | null = null;
   const near: ExPolygon[] = [], far: ExPolygon[] = [];
   for (const a of s) {
-    const hit = meetsAny(boundsOf([a]), boxes) && (index ??= new AreaIndex(nearby)).meets(a);
+    const hit = nearby.some((k) => model.sectionIndex(k).meets(a));
     (hit ? near : far).push(a);
   }
   // islands apart split apart: a few at a time
@@ -194,10 +192,11 @@ function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spac
   const gap = TIP_MIN_GAP_SHARE * spacing;
   const keeps = rules.everywhere ? (['bed', 'model'] as const) : (['bed'] as const);
   const candidates = tipCandidates(over, spacing, rules.tipR);
+  const found: number[] = [];
   for (let i = 0; i < candidates.length; i++) {
     if (i % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
     const p = candidates[i];
-    const near = existing.within(p.x, p.y, Math.max(gap, widest));
+    const near = existing.near(p.x, p.y, Math.max(gap, widest), found);
     if (near.some((k) => Math.hypot(existing.xs[k] - p.x, existing.ys[k] - p.y) < Math.max(gap, lower[k].r))) continue;
     for (const keep of keeps) {
       const q = vol.index(keep, 0, j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * spacing);
