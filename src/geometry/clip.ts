@@ -8,7 +8,7 @@
 import type { Bounds, ExPolygon, Polygon, Polyline, Pt } from './types.js';
 import { rawMiterOffset } from './miter-offset.js';
 import { ringBounds, ringInside } from './contain.js';
-import { islandsIfSimple } from './simple-rings.js';
+import { islandsApart, islandsIfSimple, MAX_RINGS } from './simple-rings.js';
 import * as wasmEngine from './clipper-wasm.js';
 
 /** The engine's operations, as both engine modules export them. */
@@ -102,10 +102,12 @@ export function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join 
   const rings = flatten(areas);
   const raw = join === 'miter' && Math.abs(deltaUm) >= 1 ? rawMiterOffset(rings, deltaUm, MITER_LIMIT) : null;
   if (!raw) return engine.inflateAreas(rings, deltaUm, join, 'polygon', MITER_LIMIT, ARC_TOLERANCE_UM);
-  // most offsets of a layer's islands stay simple: then they need no union
-  const simple = raw.loops ? null : islandsIfSimple(raw.rings, areas);
+  const unite = (rings: Pt[][]) => engine.unionDroppingCollinear(rings, 'positive');
+  if (raw.loops) return unite(raw.rings);
+  // most offsets of a layer's islands stay simple: then they need no union; many islands are taken apart
+  if (raw.rings.length > MAX_RINGS && areas.length > 1) return islandsApart(raw.rings, areas, unite);
   // else the union that resolves overlaps of the raw offset, as the general offsetter finishes
-  return simple ?? engine.unionDroppingCollinear(raw.rings, 'positive');
+  return islandsIfSimple(raw.rings, areas) ?? unite(raw.rings);
 }
 
 /**

@@ -8,7 +8,7 @@ import type { ExPolygon, Polygon, Pt } from './types.js';
 import { pointInRing, segmentsMeet } from './contain.js';
 
 /** Above this many rings the pairwise nesting check is left to the union. */
-const MAX_RINGS = 12;
+export const MAX_RINGS = 12;
 
 /**
  * The islands the raw rings make, or null when the union has work to do (or this cannot tell).
@@ -155,4 +155,60 @@ function edgesSimple(rings: readonly Polygon[]): boolean {
     openCount = w;
   }
   return true;
+}
+
+/**
+ * The islands of a raw offset of many islands, without one union over all of them: an island whose raw
+ * rings' bounds meet no other island's is made on its own (straight from its rings when they are simple,
+ * else by the union of its rings alone); the rest are united together. Islands on their own come first,
+ * in their order, then the union's.
+ * @param raw one ring per ring of `areas`, in flatten() order
+ * @param unite the clean-up union of some raw rings
+ */
+export function islandsApart(raw: readonly Pt[][], areas: readonly ExPolygon[], unite: (rings: Pt[][]) => ExPolygon[]): ExPolygon[] {
+  const n = areas.length;
+  const first = new Int32Array(n + 1);
+  for (let i = 0; i < n; i++) first[i + 1] = first[i] + 1 + areas[i].holes.length;
+  const minX = new Float64Array(n), minY = new Float64Array(n), maxX = new Float64Array(n), maxY = new Float64Array(n);
+  for (let i = 0; i < n; i++) {
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (const p of raw[first[i]]) {
+      if (p.x < x0) x0 = p.x;
+      if (p.x > x1) x1 = p.x;
+      if (p.y < y0) y0 = p.y;
+      if (p.y > y1) y1 = p.y;
+    }
+    minX[i] = x0;
+    minY[i] = y0;
+    maxX[i] = x1;
+    maxY[i] = y1;
+  }
+  // a sweep in x: every pair of islands whose bounds meet loses its "apart"
+  const order = Array.from({ length: n }, (_, i) => i).sort((a, b) => minX[a] - minX[b] || a - b);
+  const apart = new Uint8Array(n).fill(1);
+  const active: number[] = [];
+  for (const i of order) {
+    let w = 0;
+    for (const k of active) {
+      if (maxX[k] < minX[i]) continue;
+      active[w++] = k;
+      if (minY[k] <= maxY[i] && maxY[k] >= minY[i]) apart[i] = apart[k] = 0;
+    }
+    active.length = w;
+    active.push(i);
+  }
+  const out: ExPolygon[] = [];
+  const rest: Pt[][] = [];
+  for (let i = 0; i < n; i++) {
+    const rings = raw.slice(first[i], first[i + 1]);
+    if (!apart[i]) {
+      for (const r of rings) rest.push(r);
+      continue;
+    }
+    const simple = islandsIfSimple(rings, [areas[i]]);
+    if (simple) out.push(...simple);
+    else out.push(...unite(rings));
+  }
+  if (rest.length) out.push(...unite(rest));
+  return out;
 }
