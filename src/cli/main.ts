@@ -11,6 +11,7 @@ import { VERSION } from '../pipeline/run.js';
 import { checkFlagsFor, COMMANDS, parseArgs, type Command } from './args.js';
 import { processIo, type Io } from './io.js';
 import { abortPendingOutputs, PipeClosed } from './output.js';
+import { tuneEngine } from './engine-flags.js';
 
 const HELP = `strata ${VERSION}: a fast FFF slicer
 
@@ -139,6 +140,7 @@ function handleSignals(): void {
 }
 
 if (isEntryPoint()) {
+  tuneEngine();
   handleSignals();
   process.exitCode = await main(process.argv.slice(2));
 }
