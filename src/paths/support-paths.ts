@@ -8,6 +8,7 @@ import { boundsOf, flatten, offset, pointInArea, union } from '../geometry/clip.
 import { UM_PER_MM, type Bounds, type ExPolygon, type Polyline, type Pt } from '../geometry/types.js';
 import { solidFill } from '../infill/index.js';
 import type { SupportAreas } from '../regions/types.js';
+import { shrunkRegularPolygon, type RegularPolygon } from '../geometry/regular-polygon.js';
 import type { Config } from '../settings/resolve.js';
 import type { LayerZ } from '../slice/types.js';
 import type { PathEntry, PathGroup, PathRole } from './types.js';
@@ -50,23 +51,36 @@ function mayHoldLines(a: ExPolygon, d: number, angle: number, spacingUm: number,
 }
 
 /** Lines of one family `spacing` apart over `area` (shrunk so the beads stay inside it). */
-function fill(area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean): Polyline[] {
+function fill(
+  area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean,
+  circles?: ReadonlyMap<ExPolygon, RegularPolygon>,
+): Polyline[] {
   const crossed = area.filter((a) => mayHoldLines(a, insetUm, angle, spacingUm, origin));
-  const region = crossed.length ? shrink(crossed, insetUm) : [];
+  const region: ExPolygon[] = [];
+  const others: ExPolygon[] = [];
+  for (const a of crossed) {
+    const c = circles?.get(a);
+    if (!c) others.push(a);
+    else {
+      const ring = shrunkRegularPolygon(c, insetUm);
+      if (ring) region.push({ outer: ring, holes: [] });
+    }
+  }
+  if (others.length) region.push(...shrink(others, insetUm));
   return region.length ? solidFill(region, angle, spacingUm, origin, { connect }) : [];
 }
 
-function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: number, origin: Pt): Polyline[] {
+function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: number, origin: Pt, circles: ReadonlyMap<ExPolygon, RegularPolygon>): Polyline[] {
   const d = cfg.supportDensity / 100;
   switch (cfg.supportPattern) {
     case 'grid': {
       const s = (2 * w) / d;
-      return [...fill(body, insetUm, cfg.supportAngle, s, origin, true), ...fill(body, insetUm, cfg.supportAngle + 90, s, origin, true)];
+      return [...fill(body, insetUm, cfg.supportAngle, s, origin, true, circles), ...fill(body, insetUm, cfg.supportAngle + 90, s, origin, true, circles)];
     }
     case 'lines':
-      return fill(body, insetUm, cfg.supportAngle, w / d, origin, false);
+      return fill(body, insetUm, cfg.supportAngle, w / d, origin, false, circles);
     case 'zigzag':
-      return fill(body, insetUm, cfg.supportAngle, w / d, origin, true);
+      return fill(body, insetUm, cfg.supportAngle, w / d, origin, true, circles);
   }
 }
 
@@ -110,17 +124,34 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   const kinds = [s.body, s.roof, s.floor].filter((k) => k.length > 0);
   const all = s.whole ?? (kinds.length === 1 ? kinds[0] : union(kinds.flat()));
   const components: Component[] = all.map((area) => ({ area, box: boundsOf([area]), entries: new Map() }));
+  // lone tree branches are regular polygons: their walls and fill are made straight from the circle
+  const circles = new Map<ExPolygon, RegularPolygon>();
+  const plain: Component[] = [];
+  for (let i = 0; i < all.length; i++) {
+    const c = s.whole && s.circles ? s.circles[i] : null;
+    if (c) circles.set(all[i], c);
+    else plain.push(components[i]);
+  }
   // walls round each area; the fill starts inside the innermost
-  let inside = all;
+  for (let i = 0; i < all.length && cfg.supportWalls > 0; i++) {
+    const c = circles.get(all[i]);
+    if (!c) continue;
+    for (let k = 0; k < cfg.supportWalls; k++) {
+      const ring = shrunkRegularPolygon(c, w / 2 + k * w);
+      if (!ring) break;
+      add(components[i], 'support', true, ring);
+    }
+  }
+  let inside = plain.map((c) => c.area);
   for (let k = 0; k < cfg.supportWalls && inside.length; k++) {
     const centre = shrink(inside, w / 2);
-    for (const ring of flatten(centre)) add(owner(components, ring[0]), 'support', true, ring);
+    for (const ring of flatten(centre)) add(owner(plain, ring[0]), 'support', true, ring);
     // the next wall's outline (the fill is inset from the kinds themselves, below)
     if (k + 1 < cfg.supportWalls) inside = shrink(centre, w / 2);
   }
   const wallInset = cfg.supportWalls * w;
   const inset = w / 2 + wallInset;
-  for (const line of bodyLines(s.body, cfg, inset, w, origin)) add(owner(components, line[0]), 'support', false, line);
+  for (const line of bodyLines(s.body, cfg, inset, w, origin, circles)) add(owner(components, line[0]), 'support', false, line);
   const iface = w / (cfg.supportInterfaceDensity / 100);
   const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
   for (const line of fill(s.roof, inset, ifaceAngle, iface, origin, true)) add(owner(components, line[0]), 'support-roof', false, line);

@@ -4,6 +4,7 @@
  * regions cross a worker boundary as they are; every later pass (lightning, support, raft, the paths of the
  * layer) reads them instead of slicing again.
  */
+import type { RegularPolygon } from '../geometry/regular-polygon.js';
 import type { ExPolygon, Polygon } from '../geometry/types.js';
 import type { LayerZ } from '../slice/types.js';
 import type { GapLoop } from './gap-loops.js';
@@ -44,7 +45,13 @@ export interface SupportAreas {
   floor: ExPolygon[];
   /** Body, roof and floor as the one area they were split from, when the pass has it (saves a union). */
   whole?: ExPolygon[];
+  /**
+   * Per island of `whole`, when that island is a lone regular polygon standing for a circle (a tree branch):
+   * its centre and circumradius, µm, and its side count; then its walls and fill are made without an offset.
+   */
+  circles?: (RegularPolygon | null)[];
 }
+
 
 /** Raft layer areas (filled by the raft pass). */
 export interface RaftArea {

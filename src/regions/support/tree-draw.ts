@@ -7,6 +7,7 @@
  */
 import { boundsOf, difference, intersection, offset, union, unionRings } from '../../geometry/clip.js';
 import type { Bounds, ExPolygon, Polygon } from '../../geometry/types.js';
+import { regularPolygon, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
 import { AreaIndex } from './area-index.js';
 import { PointGrid } from './point-grid.js';
@@ -15,16 +16,15 @@ import { ITEMS_PER_STEP } from './tree-nodes.js';
 /** Largest gap between a drawn circle's edge and the true circle, µm. */
 export const CIRCLE_TOLERANCE_UM = 50;
 
+/** How many sides a drawn circle of radius r has (chords within CIRCLE_TOLERANCE_UM of the true circle). */
+export function circleSides(r: number): number {
+  const half = Math.acos(Math.max(-1, 1 - CIRCLE_TOLERANCE_UM / Math.max(r, CIRCLE_TOLERANCE_UM)));
+  return Math.max(8, Math.min(64, Math.ceil(Math.PI / half)));
+}
+
 /** A circle as a counter-clockwise polygon inside the true circle (chords within CIRCLE_TOLERANCE_UM). */
 export function circle(x: number, y: number, r: number): Polygon {
-  const half = Math.acos(Math.max(-1, 1 - CIRCLE_TOLERANCE_UM / Math.max(r, CIRCLE_TOLERANCE_UM)));
-  const n = Math.max(8, Math.min(64, Math.ceil(Math.PI / half)));
-  const out: Polygon = [];
-  for (let k = 0; k < n; k++) {
-    const a = (2 * Math.PI * k) / n;
-    out.push({ x: Math.round(x + r * Math.cos(a)), y: Math.round(y + r * Math.sin(a)) });
-  }
-  return out;
+  return regularPolygon(x, y, r, circleSides(r));
 }
 
 export interface Disc {
@@ -97,8 +97,14 @@ export function carried(roof: readonly ExPolygon[], base: readonly ExPolygon[], 
   return out;
 }
 
+/** One layer's support area: printable islands, and for each the circle it draws when it is a lone one. */
+export interface DrawnLayer {
+  areas: ExPolygon[];
+  circles: (RegularPolygon | null)[];
+}
+
 /** One layer's support area, printable; yields every ITEMS_PER_STEP cross-sections. */
-export function* drawLayer(d: DrawLayer): Generator<void, ExPolygon[]> {
+export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
   let roof: ExPolygon[] = d.roof.slice();
   if (roof.length && d.base) roof = carried(roof, d.base, d.roofReachUm);
   const roofIndex = roof.length ? new AreaIndex(roof) : null;
@@ -110,6 +116,7 @@ export function* drawLayer(d: DrawLayer): Generator<void, ExPolygon[]> {
   // clusters of overlapping circles clear of the collision, printable, and touching neither the roof nor
   // the part below need only their union; the rest are cut to what may and can be printed
   const free: ExPolygon[] = [];
+  const circles: (RegularPolygon | null)[] = [];
   const freeRings: Polygon[] = [];
   const rest: Polygon[] = [];
   let count = 0;
@@ -117,6 +124,7 @@ export function* drawLayer(d: DrawLayer): Generator<void, ExPolygon[]> {
     if ((count += cluster.length) >= ITEMS_PER_STEP) {
       // the overlapping free clusters so far in one union (clusters do not meet: each merges on its own)
       if (freeRings.length) for (const a of unionRings(freeRings.splice(0))) free.push(a);
+      while (circles.length < free.length) circles.push(null);
       count = 0;
       yield;
     }
@@ -126,16 +134,26 @@ export function* drawLayer(d: DrawLayer): Generator<void, ExPolygon[]> {
     // a circle inside another of its cluster adds nothing to their union
     const rings = (cluster.length > 1 ? cluster.filter((c) => !cluster.some((o) => o !== c && o.r > c.r && Math.hypot(o.x - c.x, o.y - c.y) + c.r <= o.r)) : cluster).map((c) => circle(c.x, c.y, c.r));
     if (fine) {
-      if (rings.length === 1) free.push({ outer: rings[0], holes: [] });
-      else for (const r of rings) freeRings.push(r);
+      if (rings.length === 1) {
+        const c = cluster[0];
+        while (circles.length < free.length) circles.push(null);
+        free.push({ outer: rings[0], holes: [] });
+        circles.push({ x: c.x, y: c.y, r: c.r, sides: rings[0].length });
+      } else for (const r of rings) freeRings.push(r);
     } else for (const r of rings) rest.push(r);
   }
   if (freeRings.length) for (const a of unionRings(freeRings)) free.push(a);
-  if (rest.length === 0 && roof.length === 0) return free;
+  while (circles.length < free.length) circles.push(null);
+  if (rest.length === 0 && roof.length === 0) return { areas: free, circles };
   const branches = rest.length ? unionRings(rest) : [];
   let s = branches.length && roof.length ? union(branches, roof) : branches.length ? branches : roof;
   for (const b of [d.collision, d.gapBelow]) if (s.length && b.length) s = cutAway(s, b);
-  return [...free, ...printable(s, d.widthUm)];
+  const printed = printable(s, d.widthUm);
+  for (const a of printed) {
+    free.push(a);
+    circles.push(null);
+  }
+  return { areas: free, circles };
 }
 
 /** The discs in groups that overlap (each group in the discs' order, groups by their first disc). */

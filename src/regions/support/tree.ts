@@ -119,9 +119,9 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
     const base = j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
-    const s = yield* drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, widthUm: w });
+    const { areas: s, circles } = yield* drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, widthUm: w });
     below = s;
-    out[j] = { ...(yield* splitNear(model, j, s)), whole: s };
+    out[j] = { ...(yield* splitNear(model, j, s)), whole: s, circles };
     yield;
   }
   return out;
