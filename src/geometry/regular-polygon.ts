@@ -9,13 +9,28 @@ export interface RegularPolygon {
   sides: number;
 }
 
+/** cos and sin of each vertex's angle, per side count (made on first use). */
+const units = new Map<number, Float64Array>();
+
+function unitsOf(sides: number): Float64Array {
+  let u = units.get(sides);
+  if (!u) {
+    u = new Float64Array(2 * sides);
+    for (let k = 0; k < sides; k++) {
+      const a = (2 * Math.PI * k) / sides;
+      u[2 * k] = Math.cos(a);
+      u[2 * k + 1] = Math.sin(a);
+    }
+    units.set(sides, u);
+  }
+  return u;
+}
+
 /** The polygon's vertices, rounded to whole µm. */
 export function regularPolygon(x: number, y: number, r: number, sides: number): Polygon {
-  const out: Polygon = [];
-  for (let k = 0; k < sides; k++) {
-    const a = (2 * Math.PI * k) / sides;
-    out.push({ x: Math.round(x + r * Math.cos(a)), y: Math.round(y + r * Math.sin(a)) });
-  }
+  const u = unitsOf(sides);
+  const out: Polygon = new Array(sides);
+  for (let k = 0; k < sides; k++) out[k] = { x: Math.round(x + r * u[2 * k]), y: Math.round(y + r * u[2 * k + 1]) };
   return out;
 }
 

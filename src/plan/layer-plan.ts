@@ -142,7 +142,8 @@ function printLoops(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir
     }
     return;
   }
-  const mode = ctx.cfg.seamPosition;
+  // support's loops have no seam to hide: each starts where the nozzle is nearest
+  const mode = entry.role === 'support' || entry.role === 'support-roof' || entry.role === 'support-floor' ? 'nearest' : ctx.cfg.seamPosition;
   // For ordering purposes a loop is entered at its seam (or, for 'nearest', at any vertex: use the first).
   const seams = loops.map((l, i) => (mode === 'nearest' ? -1 : chooseSeam(l, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo + i)));
   const order = orderNearest(

@@ -19,6 +19,9 @@ export interface Found {
   y: number;
 }
 
+/** Edge indices found by AreaIndex.#edgesNear (reused; every query is synchronous). */
+let nearEdges = new Int32Array(256);
+
 export class AreaIndex {
   /** Edges as x1, y1, x2, y2 (interior on the left: outer rings counter-clockwise, holes clockwise). */
   readonly #e: Float64Array;
@@ -268,28 +271,34 @@ export class AreaIndex {
   }
 
   /**
-   * Whether an area meets the areas: a vertex of either lies inside the other, or their edges cross. Along a
-   * ring whose edges cross none of the areas' edges every vertex lies on the same side, so one vertex of each
-   * ring is tested for containment and the rest only for crossings.
+   * Whether an area meets the areas: a vertex of either lies inside the other, or their edges cross. Only
+   * the areas' edges whose bounds meet the area's can cross it; when there are none, the area lies wholly
+   * inside or wholly outside (one vertex tells) and holds no ring of the areas. Along a ring whose edges
+   * cross none of the areas' edges every vertex lies on the same side, so one vertex of each ring is tested
+   * for containment and the rest only for crossings.
    */
   meets(a: ExPolygon): boolean {
-    if (this.empty) return false;
-    // no edge in the cells under a's bounds: a lies wholly inside or wholly outside, and holds no ring of the areas
-    if (!this.#edgesUnder(a.outer)) return a.outer.length > 0 && this.contains(a.outer[0].x, a.outer[0].y);
+    if (this.empty || a.outer.length === 0) return false;
+    const found = this.#edgesNear(a.outer);
+    if (found === 0) return this.contains(a.outer[0].x, a.outer[0].y);
+    const e = this.#e, near = nearEdges;
     for (let r = -1; r < a.holes.length; r++) {
       const ring = r < 0 ? a.outer : a.holes[r];
       if (ring.length && this.contains(ring[0].x, ring[0].y)) return true;
       for (let i = 0; i < ring.length; i++) {
         const p = ring[i], q = ring[i + 1 < ring.length ? i + 1 : 0];
-        if (this.crosses(p.x, p.y, q.x, q.y)) return true;
+        for (let k = 0; k < found; k++) {
+          const t = 4 * near[k];
+          if (segmentsMeet(p.x, p.y, q.x, q.y, e[t], e[t + 1], e[t + 2], e[t + 3])) return true;
+        }
       }
     }
     for (let k = 0; k < this.#firsts.length; k += 2) if (pointInArea({ x: this.#firsts[k], y: this.#firsts[k + 1] }, a)) return true;
     return false;
   }
 
-  /** Whether some edge of the areas lies in a cell under the bounds of `ring`. */
-  #edgesUnder(ring: readonly { x: number; y: number }[]): boolean {
+  /** The areas' edges (in `nearEdges`, possibly repeated) whose bounds meet those of `ring`; returns how many. */
+  #edgesNear(ring: readonly { x: number; y: number }[]): number {
     let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
     for (const p of ring) {
       if (p.x < minX) minX = p.x;
@@ -298,13 +307,25 @@ export class AreaIndex {
       if (p.y > maxY) maxY = p.y;
     }
     const gx = this.#minX + this.#nx * this.#cell, gy = this.#minY + this.#ny * this.#cell;
-    if (maxX < this.#minX || maxY < this.#minY || minX > gx || minY > gy) return false;
+    if (maxX < this.#minX || maxY < this.#minY || minX > gx || minY > gy) return 0;
+    const e = this.#e;
     const c0 = this.#col(minX), c1 = this.#col(maxX), r0 = this.#row(minY), r1 = this.#row(maxY);
+    let n = 0;
     for (let r = r0; r <= r1; r++) {
       const row = r * this.#nx;
-      if (this.#start[row + c1 + 1] > this.#start[row + c0]) return true;
+      for (let s = this.#start[row + c0], t = this.#start[row + c1 + 1]; s < t; s++) {
+        const i = this.#items[s], k = 4 * i;
+        const x1 = e[k], y1 = e[k + 1], x2 = e[k + 2], y2 = e[k + 3];
+        if ((x1 < x2 ? x2 : x1) < minX || (x1 < x2 ? x1 : x2) > maxX || (y1 < y2 ? y2 : y1) < minY || (y1 < y2 ? y1 : y2) > maxY) continue;
+        if (n === nearEdges.length) {
+          const grown = new Int32Array(2 * n);
+          grown.set(nearEdges);
+          nearEdges = grown;
+        }
+        nearEdges[n++] = i;
+      }
     }
-    return false;
+    return n;
   }
 
   /** Whether the segment from (ax, ay) to (bx, by) crosses an edge of the areas. */

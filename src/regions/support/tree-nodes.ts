@@ -18,6 +18,8 @@ const NEAR_COUNT = 6;
 const NEAR_FIRST_UM = 4000;
 /** A step of the pass handles at most this many branches (or tips, or cross-sections) before it yields. */
 export const ITEMS_PER_STEP = 200;
+/** Pairs are numbered below this in their sort keys (distances in nm above it stay exact in a double up to ATTRACT_MAX_UM). */
+const PAIR_SLOTS = 2 ** 29;
 /** Slack on the one-layer move for rounding, µm. */
 export const MOVE_SLACK_UM = 1;
 
@@ -106,12 +108,18 @@ export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], ra
       out.push([lo, hi, bestD[k]]);
     }
   }
-  out.sort((p, q) => p[2] - q[2] || p[0] - q[0] || p[1] - q[1]);
-  for (const e of out) {
+  // shortest first: sorted as numbers, distance (to the nanometre) then the order found
+  const keys = new Float64Array(out.length);
+  for (let k = 0; k < out.length; k++) keys[k] = Math.round(out[k][2] * 1000) * PAIR_SLOTS + k;
+  keys.sort();
+  const sorted: [number, number, number][] = new Array(out.length);
+  for (let k = 0; k < out.length; k++) {
+    const e = out[keys[k] % PAIR_SLOTS];
     e[0] = ids[e[0]];
     e[1] = ids[e[1]];
+    sorted[k] = e;
   }
-  return out;
+  return sorted;
 }
 
 /** A free spot for a centre: the target, or the nearest free point to it or to where the node was, within `m` of (px, py). */
