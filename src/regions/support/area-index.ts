@@ -115,16 +115,28 @@ export class AreaIndex {
     return Math.min(this.#ny - 1, Math.max(0, Math.floor((y - this.#minY) / this.#cell)));
   }
 
-  /** Whether (x, y) lies inside the areas (even-odd over every ring; a point on an edge may go either way). */
+  /**
+   * Whether (x, y) lies inside the areas (even-odd over every ring; a point on an edge may go either way): the
+   * parity of the crossings of a ray to the nearest side of the grid, so a query walks few cells.
+   */
   contains(x: number, y: number): boolean {
     if (this.empty) return false;
     const minX = this.#minX, minY = this.#minY;
     if (x < minX || y < minY || x > minX + this.#nx * this.#cell || y > minY + this.#ny * this.#cell) return false;
-    // a ray towards +x: each crossing is counted in the one cell that holds the crossing point
-    const row = this.#row(y);
+    const c = this.#col(x), r = this.#row(y);
+    const right = this.#nx - 1 - c, up = this.#ny - 1 - r;
+    const m = Math.min(right, c, up, r);
+    if (m === right) return this.#rayAlongX(x, y, c, r, 1);
+    if (m === c) return this.#rayAlongX(x, y, c, r, -1);
+    if (m === up) return this.#rayAlongY(x, y, c, r, 1);
+    return this.#rayAlongY(x, y, c, r, -1);
+  }
+
+  /** Crossings of the ray from (x, y) towards +x (dir 1) or -x (-1), each counted in the one cell that holds it. */
+  #rayAlongX(x: number, y: number, c0: number, row: number, dir: 1 | -1): boolean {
     const e = this.#e;
     let inside = false;
-    for (let c = this.#col(x); c < this.#nx; c++) {
+    for (let c = c0; c >= 0 && c < this.#nx; c += dir) {
       const cell = row * this.#nx + c;
       for (let s = this.#start[cell], t = this.#start[cell + 1]; s < t; s++) {
         const i = this.#items[s];
@@ -132,7 +144,26 @@ export class AreaIndex {
         if (y1 > y === y2 > y) continue;
         let cx = x1 + ((y - y1) * (x2 - x1)) / (y2 - y1);
         cx = Math.min(Math.max(cx, Math.min(x1, x2)), Math.max(x1, x2));
-        if (cx <= x || this.#col(cx) !== c) continue;
+        if ((dir > 0 ? cx <= x : cx >= x) || this.#col(cx) !== c) continue;
+        inside = !inside;
+      }
+    }
+    return inside;
+  }
+
+  /** Crossings of the ray from (x, y) towards +y (dir 1) or -y (-1), each counted in the one cell that holds it. */
+  #rayAlongY(x: number, y: number, col: number, r0: number, dir: 1 | -1): boolean {
+    const e = this.#e;
+    let inside = false;
+    for (let r = r0; r >= 0 && r < this.#ny; r += dir) {
+      const cell = r * this.#nx + col;
+      for (let s = this.#start[cell], t = this.#start[cell + 1]; s < t; s++) {
+        const i = this.#items[s];
+        const x1 = e[4 * i], y1 = e[4 * i + 1], x2 = e[4 * i + 2], y2 = e[4 * i + 3];
+        if (x1 > x === x2 > x) continue;
+        let cy = y1 + ((x - x1) * (y2 - y1)) / (x2 - x1);
+        cy = Math.min(Math.max(cy, Math.min(y1, y2)), Math.max(y1, y2));
+        if ((dir > 0 ? cy <= y : cy >= y) || this.#row(cy) !== r) continue;
         inside = !inside;
       }
     }
