@@ -16,6 +16,8 @@ export interface SolidFillOptions {
   connect?: boolean;
   /** Where the nozzle is before the fill; the first line starts nearest to it. */
   start?: Pt;
+  /** Order the lines nearest-first (default true); off when the caller orders them itself. */
+  order?: boolean;
 }
 
 /**
@@ -29,5 +31,6 @@ export function solidFill(region: readonly ExPolygon[], angleDeg: number, spacin
   clipSweep(geom, { angle: angleDeg, spacing: spacingUm, offset: 0 }, origin, pieces);
   const lines = options.connect === false ? pieces.map((p) => p.pts) : linkPieces(geom, pieces, LINK_REACH * spacingUm).lines;
   const clean = cleanPaths(lines, [], 0);
+  if (options.order === false) return clean.lines;
   return orderPaths(clean.lines, [], options.start ?? { x: geom.minX, y: geom.minY }).lines;
 }

@@ -50,24 +50,36 @@ function mayHoldLines(a: ExPolygon, d: number, angle: number, spacingUm: number,
   return Math.floor((hi - v0) / spacingUm) >= Math.ceil((lo - v0) / spacingUm);
 }
 
+/** mayHoldLines for a regular polygon, from its circumcircle (its extent across the lines is at most the diameter). */
+function circleMayHoldLines(c: RegularPolygon, d: number, angle: number, spacingUm: number, origin: Pt): boolean {
+  const t = (angle * Math.PI) / 180;
+  const cs = Math.cos(t), sn = Math.sin(t);
+  const v = -c.x * sn + c.y * cs;
+  const lo = v - c.r + d - 1, hi = v + c.r - d + 1;
+  if (lo > hi) return false;
+  const v0 = -origin.x * sn + origin.y * cs;
+  return Math.floor((hi - v0) / spacingUm) >= Math.ceil((lo - v0) / spacingUm);
+}
+
 /** Lines of one family `spacing` apart over `area` (shrunk so the beads stay inside it). */
 function fill(
   area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean,
   circles?: ReadonlyMap<ExPolygon, RegularPolygon>,
 ): Polyline[] {
-  const crossed = area.filter((a) => mayHoldLines(a, insetUm, angle, spacingUm, origin));
   const region: ExPolygon[] = [];
   const others: ExPolygon[] = [];
-  for (const a of crossed) {
+  for (const a of area) {
     const c = circles?.get(a);
-    if (!c) others.push(a);
-    else {
+    if (!c) {
+      if (mayHoldLines(a, insetUm, angle, spacingUm, origin)) others.push(a);
+    } else if (circleMayHoldLines(c, insetUm, angle, spacingUm, origin)) {
       const ring = shrunkRegularPolygon(c, insetUm);
       if (ring) region.push({ outer: ring, holes: [] });
     }
   }
   if (others.length) region.push(...shrink(others, insetUm));
-  return region.length ? solidFill(region, angle, spacingUm, origin, { connect }) : [];
+  // the planner orders each support area's lines itself
+  return region.length ? solidFill(region, angle, spacingUm, origin, { connect, order: false }) : [];
 }
 
 function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: number, origin: Pt, circles: ReadonlyMap<ExPolygon, RegularPolygon>): Polyline[] {
