@@ -19,6 +19,24 @@ export interface Found {
   y: number;
 }
 
+/** Candidate points of AreaIndex.nearestClear (reused; every query is synchronous). */
+interface Candidates {
+  x: Float64Array;
+  y: Float64Array;
+  d: Float64Array;
+  order: Int32Array;
+}
+const makeCandidates = (n: number): Candidates => ({ x: new Float64Array(n), y: new Float64Array(n), d: new Float64Array(n), order: new Int32Array(n) });
+let cand = makeCandidates(64);
+
+function growCandidates(c: Candidates): Candidates {
+  const g = makeCandidates(2 * c.d.length);
+  g.x.set(c.x);
+  g.y.set(c.y);
+  g.d.set(c.d);
+  return g;
+}
+
 /** Edge indices found by AreaIndex.#edgesNear (reused; every query is synchronous). */
 let nearEdges = new Int32Array(256);
 
@@ -261,13 +279,26 @@ export class AreaIndex {
     const want = d + OUTSIDE_MARGIN_UM;
     const reach = maxUm + want;
     const c0 = this.#col(x - reach), c1 = this.#col(x + reach), r0 = this.#row(y - reach), r1 = this.#row(y + reach);
-    let best: Found | null = null, bestD = Infinity;
-    const consider = (qx: number, qy: number) => {
+    // candidates within maxUm, then tested nearest first (the earliest found on a tie): the first clear one wins
+    let n = 0;
+    const candidate = (qx: number, qy: number) => {
       const dq = Math.hypot(qx - x, qy - y);
-      if (dq <= maxUm && dq < bestD && !this.meetsDisc(qx, qy, d)) {
-        best = { x: qx, y: qy };
-        bestD = dq;
+      if (!(dq <= maxUm)) return;
+      if (n === cand.d.length) cand = growCandidates(cand);
+      cand.x[n] = qx;
+      cand.y[n] = qy;
+      cand.d[n] = dq;
+      n++;
+    };
+    const firstClear = (): Found | null => {
+      const { x: cx, y: cy, d: cd, order } = cand;
+      for (let i = 0; i < n; i++) order[i] = i;
+      const ids = order.subarray(0, n).sort((a, b) => cd[a] - cd[b] || a - b);
+      for (let k = 0; k < n; k++) {
+        const i = ids[k];
+        if (!this.meetsDisc(cx[i], cy[i], d)) return { x: cx[i], y: cy[i] };
       }
+      return null;
     };
     const seen = new Set<number>();
     for (let r = r0; r <= r1; r++) {
@@ -285,18 +316,21 @@ export class AreaIndex {
           const db = Math.hypot(x - bx, y - by);
           if (db > reach) continue;
           const el = Math.sqrt(len2);
-          consider(bx + (ey / el) * want, by - (ex / el) * want);
-          if (db > 1e-6) consider(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want);
+          candidate(bx + (ey / el) * want, by - (ex / el) * want);
+          if (db > 1e-6) candidate(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want);
         }
       }
     }
+    const best = firstClear();
     if (best) return best;
     for (let k = 1; k <= 4; k++) {
+      n = 0;
       for (let a = 0; a < 16; a++) {
         const ang = (a * Math.PI) / 8;
-        consider(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang));
+        candidate(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang));
       }
-      if (best) return best;
+      const q = firstClear();
+      if (q) return q;
     }
     return null;
   }
