@@ -2,7 +2,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import type { Pt } from '../geometry/types.js';
 import { clipLines } from '../geometry/clip.js';
-import { clipSweep } from './sweep.js';
+import { clipSweep, sweepConvexRing } from './sweep.js';
 import { regionGeom } from './region-index.js';
 import type { Piece } from './piece.js';
 import { TEST_SHAPES, hull, SHAPE_CENTRE } from './test-shapes.js';
@@ -88,4 +88,27 @@ test('a scanline through vertices and along edges is counted once', () => {
   clipSweep(regionGeom(sq), { angle: 0, spacing: 15_000, offset: 0 }, c, p2);
   assert.ok(p2.length >= 1 && p2.length <= 3);
   for (const p of p2) assert.equal(Math.abs(p.pts[1].x - p.pts[0].x), 30_000);
+});
+
+test('a convex ring swept on its own gives the segments the general sweep cuts', () => {
+  let seed = 3;
+  const rand = () => ((seed = (seed * 1664525 + 1013904223) >>> 0) / 2 ** 32);
+  let compared = 0;
+  for (let round = 0; round < 200; round++) {
+    const sides = 3 + Math.floor(rand() * 40);
+    const r = 300 + rand() * 8000, cx = rand() * 50_000, cy = rand() * 50_000;
+    const ring: Pt[] = [];
+    for (let k = 0; k < sides; k++) {
+      const a = (2 * Math.PI * k) / sides;
+      ring.push({ x: Math.round(cx + r * Math.cos(a)), y: Math.round(cy + r * Math.sin(a)) });
+    }
+    const sweep = { angle: rand() * 180, spacing: 200 + rand() * 3000, offset: 0 };
+    const origin = { x: Math.round(rand() * 1000), y: Math.round(rand() * 1000) };
+    const pieces: Piece[] = [];
+    clipSweep(regionGeom([{ outer: ring, holes: [] }]), sweep, origin, pieces);
+    const want = pieces.map((p) => p.pts).filter((l) => l[0].x !== l[1].x || l[0].y !== l[1].y);
+    assert.deepEqual(sweepConvexRing(ring, sweep, origin), want, `round ${round}`);
+    compared += want.length;
+  }
+  assert.ok(compared > 200, `${compared} segments compared`);
 });

@@ -108,3 +108,46 @@ function anchorOf(
   const i = edgeLocal[e];
   return { ring: ring[e], pos: R.cum[i] + t * (R.cum[i + 1] - R.cum[i]) };
 }
+
+/**
+ * The lines of one family over a single convex ring, as clipSweep cuts them (the same frame, the same
+ * half-open crossing rule, the same rounding), without the sweep's set-up: a convex ring meets each line
+ * in at most one segment. Segments that round to a point are left out.
+ */
+export function sweepConvexRing(ring: readonly Pt[], sweep: Sweep, origin: Pt): Pt[][] {
+  const out: Pt[][] = [];
+  const n = ring.length;
+  if (!(sweep.spacing > 0) || n < 3) return out;
+  const a = (sweep.angle * Math.PI) / 180;
+  const c = Math.cos(a), s = Math.sin(a);
+  let vMin = Infinity, vMax = -Infinity;
+  for (const p of ring) {
+    const v = -p.x * s + p.y * c;
+    if (v < vMin) vMin = v;
+    if (v > vMax) vMax = v;
+  }
+  const v0 = -origin.x * s + origin.y * c + sweep.offset;
+  const kFirst = Math.ceil((vMin - v0) / sweep.spacing);
+  const kLast = Math.floor((vMax - v0) / sweep.spacing);
+  for (let k = kFirst; k <= kLast; k++) {
+    const v = v0 + k * sweep.spacing;
+    let ua = Infinity, ub = -Infinity, crossings = 0;
+    for (let i = 0; i < n; i++) {
+      const p = ring[i], q = ring[i + 1 === n ? 0 : i + 1];
+      const pv = -p.x * s + p.y * c, qv = -q.x * s + q.y * c;
+      if (pv === qv) continue;
+      const lo = pv < qv ? pv : qv, hi = pv < qv ? qv : pv;
+      if (!(lo <= v && v < hi)) continue;
+      const pu = p.x * c + p.y * s, qu = q.x * c + q.y * s;
+      const uLo = pv < qv ? pu : qu;
+      const u = uLo + (v - lo) * ((qu - pu) / (qv - pv));
+      crossings++;
+      if (u < ua) ua = u;
+      if (u > ub) ub = u;
+    }
+    if (crossings !== 2 || ub - ua < MIN_SEGMENT_UM) continue;
+    const pa = rnd(ua * c - v * s, ua * s + v * c), pb = rnd(ub * c - v * s, ub * s + v * c);
+    if (pa.x !== pb.x || pa.y !== pb.y) out.push([pa, pb]);
+  }
+  return out;
+}

@@ -7,6 +7,7 @@
 import { boundsOf, flatten, offset, pointInArea, union } from '../geometry/clip.js';
 import { UM_PER_MM, type Bounds, type ExPolygon, type Polyline, type Pt } from '../geometry/types.js';
 import { solidFill } from '../infill/index.js';
+import { sweepConvexRing } from '../infill/sweep.js';
 import type { SupportAreas } from '../regions/types.js';
 import { shrunkRegularPolygon, type RegularPolygon } from '../geometry/regular-polygon.js';
 import type { Config } from '../settings/resolve.js';
@@ -68,18 +69,24 @@ function fill(
 ): Polyline[] {
   const region: ExPolygon[] = [];
   const others: ExPolygon[] = [];
+  const direct: Polyline[] = [];
   for (const a of area) {
     const c = circles?.get(a);
     if (!c) {
       if (mayHoldLines(a, insetUm, angle, spacingUm, origin)) others.push(a);
     } else if (circleMayHoldLines(c, insetUm, angle, spacingUm, origin)) {
       const ring = shrunkRegularPolygon(c, insetUm);
-      if (ring) region.push({ outer: ring, holes: [] });
+      if (!ring) continue;
+      // a branch crossed by one line needs no linking: its chord is the whole fill
+      const chords = sweepConvexRing(ring, { angle, spacing: spacingUm, offset: 0 }, origin);
+      if (chords.length <= 1) direct.push(...chords);
+      else region.push({ outer: ring, holes: [] });
     }
   }
   if (others.length) region.push(...shrink(others, insetUm));
   // the planner orders each support area's lines itself
-  return region.length ? solidFill(region, angle, spacingUm, origin, { connect, order: false }) : [];
+  if (region.length) direct.push(...solidFill(region, angle, spacingUm, origin, { connect, order: false }));
+  return direct;
 }
 
 function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: number, origin: Pt, circles: ReadonlyMap<ExPolygon, RegularPolygon>): Polyline[] {
