@@ -4,6 +4,7 @@
  * flagged runs their own way (bridge skin, slowed overhang walls).
  */
 import { boundsOf, pointInArea } from '../geometry/clip.js';
+import { ringBounds } from '../geometry/contain.js';
 import type { Bounds, ExPolygon, Pt } from '../geometry/types.js';
 
 /** Pieces shorter than this (µm) keep their neighbour's flag: no run is shorter than a few micrometres. */
@@ -70,13 +71,7 @@ export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex
   const n = path.length;
   if (n < 2 || idx.areas.length === 0) return null;
   // quick rejection: the path's bounds miss the area
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-  for (const p of path) {
-    if (p.x < minX) minX = p.x;
-    if (p.x > maxX) maxX = p.x;
-    if (p.y < minY) minY = p.y;
-    if (p.y > maxY) maxY = p.y;
-  }
+  const { minX, minY, maxX, maxY } = ringBounds(path);
   if (!overlaps(idx.box, minX, minY, maxX, maxY)) return null;
   const points: Pt[] = [];
   const flags: number[] = [];

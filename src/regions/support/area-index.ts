@@ -5,8 +5,8 @@
  * every branch on every layer.
  */
 import { pointInArea } from '../../geometry/clip.js';
-import { segmentsMeet } from '../../geometry/contain.js';
-import type { ExPolygon } from '../../geometry/types.js';
+import { ringBounds, segmentsMeet } from '../../geometry/contain.js';
+import type { ExPolygon, Pt } from '../../geometry/types.js';
 
 /** How far beyond the boundary a point pushed out of the areas lands, µm. */
 export const OUTSIDE_MARGIN_UM = 5;
@@ -144,44 +144,30 @@ export class AreaIndex {
     const c = this.#col(x), r = this.#row(y);
     const right = this.#nx - 1 - c, up = this.#ny - 1 - r;
     const m = Math.min(right, c, up, r);
-    if (m === right) return this.#rayAlongX(x, y, c, r, 1);
-    if (m === c) return this.#rayAlongX(x, y, c, r, -1);
-    if (m === up) return this.#rayAlongY(x, y, c, r, 1);
-    return this.#rayAlongY(x, y, c, r, -1);
+    if (m === right) return this.#ray(x, y, c, r, 0, 1);
+    if (m === c) return this.#ray(x, y, c, r, 0, -1);
+    if (m === up) return this.#ray(x, y, c, r, 1, 1);
+    return this.#ray(x, y, c, r, 1, -1);
   }
 
-  /** Crossings of the ray from (x, y) towards +x (dir 1) or -x (-1), each counted in the one cell that holds it. */
-  #rayAlongX(x: number, y: number, c0: number, row: number, dir: 1 | -1): boolean {
+  /**
+   * The parity of the crossings of the ray from (x, y) along x (axis 0) or y (axis 1), towards + (dir 1) or -
+   * (-1), each crossing counted in the one cell that holds it.
+   */
+  #ray(x: number, y: number, c0: number, r0: number, axis: 0 | 1, dir: 1 | -1): boolean {
     const e = this.#e;
+    // p along the ray, q across it; edges read in the same order
+    const p = axis === 0 ? x : y, q = axis === 0 ? y : x;
     let inside = false;
-    for (let c = c0; c >= 0 && c < this.#nx; c += dir) {
-      const cell = row * this.#nx + c;
+    for (let c = c0, r = r0; c >= 0 && c < this.#nx && r >= 0 && r < this.#ny; axis === 0 ? (c += dir) : (r += dir)) {
+      const cell = r * this.#nx + c;
       for (let s = this.#start[cell], t = this.#start[cell + 1]; s < t; s++) {
-        const i = this.#items[s];
-        const x1 = e[4 * i], y1 = e[4 * i + 1], x2 = e[4 * i + 2], y2 = e[4 * i + 3];
-        if (y1 > y === y2 > y) continue;
-        let cx = x1 + ((y - y1) * (x2 - x1)) / (y2 - y1);
-        cx = Math.min(Math.max(cx, Math.min(x1, x2)), Math.max(x1, x2));
-        if ((dir > 0 ? cx <= x : cx >= x) || this.#col(cx) !== c) continue;
-        inside = !inside;
-      }
-    }
-    return inside;
-  }
-
-  /** Crossings of the ray from (x, y) towards +y (dir 1) or -y (-1), each counted in the one cell that holds it. */
-  #rayAlongY(x: number, y: number, col: number, r0: number, dir: 1 | -1): boolean {
-    const e = this.#e;
-    let inside = false;
-    for (let r = r0; r >= 0 && r < this.#ny; r += dir) {
-      const cell = r * this.#nx + col;
-      for (let s = this.#start[cell], t = this.#start[cell + 1]; s < t; s++) {
-        const i = this.#items[s];
-        const x1 = e[4 * i], y1 = e[4 * i + 1], x2 = e[4 * i + 2], y2 = e[4 * i + 3];
-        if (x1 > x === x2 > x) continue;
-        let cy = y1 + ((x - x1) * (y2 - y1)) / (x2 - x1);
-        cy = Math.min(Math.max(cy, Math.min(y1, y2)), Math.max(y1, y2));
-        if ((dir > 0 ? cy <= y : cy >= y) || this.#row(cy) !== r) continue;
+        const k = 4 * this.#items[s];
+        const p1 = e[k + axis], q1 = e[k + 1 - axis], p2 = e[k + 2 + axis], q2 = e[k + 3 - axis];
+        if (q1 > q === q2 > q) continue;
+        let cp = p1 + ((q - q1) * (p2 - p1)) / (q2 - q1);
+        cp = Math.min(Math.max(cp, Math.min(p1, p2)), Math.max(p1, p2));
+        if ((dir > 0 ? cp <= p : cp >= p) || (axis === 0 ? this.#col(cp) !== c : this.#row(cp) !== r)) continue;
         inside = !inside;
       }
     }
@@ -363,14 +349,8 @@ export class AreaIndex {
   }
 
   /** The areas' edges (in `nearEdges`, possibly repeated) whose bounds meet those of `ring`; returns how many. */
-  #edgesNear(ring: readonly { x: number; y: number }[]): number {
-    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-    for (const p of ring) {
-      if (p.x < minX) minX = p.x;
-      if (p.x > maxX) maxX = p.x;
-      if (p.y < minY) minY = p.y;
-      if (p.y > maxY) maxY = p.y;
-    }
+  #edgesNear(ring: readonly Pt[]): number {
+    const { minX, minY, maxX, maxY } = ringBounds(ring);
     const gx = this.#minX + this.#nx * this.#cell, gy = this.#minY + this.#ny * this.#cell;
     if (maxX < this.#minX || maxY < this.#minY || minX > gx || minY > gy) return 0;
     const e = this.#e;
