@@ -256,9 +256,9 @@ export class AreaIndex {
    * The point nearest (x, y), within `maxUm` of it, that lies more than `d` outside the areas (by
    * OUTSIDE_MARGIN_UM); (x, y) itself when it does; null when none is found. Tried in turn: off each edge
    * near the point by d (along its outward normal, and along the way from the edge to the point), then
-   * points round (x, y) in 16 directions.
+   * points round (x, y) in 16 directions (unless `rings` is off).
    */
-  nearestClear(x: number, y: number, d: number, maxUm: number): Found | null {
+  nearestClear(x: number, y: number, d: number, maxUm: number, rings = true): Found | null {
     if (d <= 0) return this.nearestOutside(x, y, maxUm);
     if (!this.meetsDisc(x, y, d)) return { x, y };
     const e = this.#e;
@@ -308,7 +308,7 @@ export class AreaIndex {
       }
     }
     const best = firstClear();
-    if (best) return best;
+    if (best || !rings) return best;
     for (let k = 1; k <= 4; k++) {
       n = 0;
       for (let a = 0; a < 16; a++) {

@@ -266,7 +266,8 @@ function grown(n: TreeNode, i: number, at: Found, keep: Keep, m: number, j: numb
   const wc = classOf(rules.radii, want);
   if (wc > c) {
     const left = m - dist(at.x, at.y, n.x, n.y);
-    const q = left >= 0 && !vol.index(keep, wc, j).contains(at.x, at.y) ? at : null;
+    // widening is worth a quick look nearby only: the thorough search mostly fails near walls, at a high price
+    const q = left >= 0 ? vol.index(keep, wc, j).nearestOutside(at.x, at.y, left, false) : null;
     if (q && dist(q.x, q.y, n.x, n.y) <= m + MOVE_SLACK_UM) {
       at = q;
       c = wc;

@@ -60,9 +60,12 @@ export class Blocked {
     return this.#clearUm > 0 ? this.#index.meetsDisc(x, y, this.#clearUm) : this.#index.contains(x, y);
   }
 
-  /** The nearest unblocked point within `maxUm` of (x, y) ((x, y) itself when it is free), or null. */
-  nearestOutside(x: number, y: number, maxUm: number): Found | null {
-    return this.#index.nearestClear(x, y, this.#clearUm, maxUm);
+  /**
+   * The nearest unblocked point within `maxUm` of (x, y) ((x, y) itself when it is free), or null; `thorough`
+   * off looks only just off the nearby edges, not round the point as well (cheaper, finds less).
+   */
+  nearestOutside(x: number, y: number, maxUm: number, thorough = true): Found | null {
+    return this.#index.nearestClear(x, y, this.#clearUm, maxUm, thorough);
   }
 }
 
