@@ -3,7 +3,7 @@
  *  1. every model: Strata with its default settings, CuraEngine and PrusaSlicer (where installed);
  *  2. 3DBenchy with --threads 1 and --threads 2 (and whether their G-code equals the default's);
  *  3. 3DBenchy with every infill pattern, against grid;
- *  4. support (normal, tree) against none on SupportTest, Overhang, spot and 3DBenchy.
+ *  4. support (normal, tree) against none on SupportTest, Overhang, spot, 3DBenchy, BridgeTest and the hollow cube.
  * Every block records how much other processes ran meanwhile (load.ts). Returns the results as data (report.ts).
  */
 import { createHash } from 'node:crypto';
@@ -38,7 +38,7 @@ export interface BenchContext {
 }
 
 /** Models the support section runs on, when selected. */
-export const SUPPORT_MODELS = Object.freeze(['SupportTest.stl', 'Overhang.stl', 'spot.stl', '3DBenchy.stl']);
+export const SUPPORT_MODELS = Object.freeze(['SupportTest.stl', 'Overhang.stl', 'spot.stl', '3DBenchy.stl', 'BridgeTest.stl', 'HollowCalibrationCube.stl']);
 
 /** dist/bin/main.js of this build (from dist/bench/): the bundled CLI users run. */
 export function defaultStrataCli(): string {
