@@ -215,4 +215,3 @@ export function pointInArea(p: Pt, a: ExPolygon): boolean {
   for (const h of a.holes) if (pointInRing(p, h)) return false;
   return true;
 }
-

@@ -40,6 +40,13 @@ function checkRing(ring: Polygon, box: Bounds, other: Polygon): boolean {
   return !pointInRing(other[0], ring);
 }
 
+/** Twice the signed area of a ring, µm² (positive = counter-clockwise). */
+export function twiceArea(r: readonly Pt[]): number {
+  let a = 0;
+  for (let i = 0, j = r.length - 1; i < r.length; j = i++) a += (r[j].x - r[i].x) * (r[j].y + r[i].y);
+  return a;
+}
+
 /** Bounding box of a ring. */
 export function ringBounds(r: readonly Pt[]): Bounds {
   let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;

@@ -3,7 +3,7 @@
  * outer rings counter-clockwise and holes clockwise. Each hole goes to the smallest outer ring around it,
  * which is the tree a boolean would have built.
  */
-import { ringBounds } from './contain.js';
+import { ringBounds, twiceArea } from './contain.js';
 import type { ExPolygon, Polygon, Pt } from './types.js';
 
 /** The islands the rings make, in the order of their outer rings; holes keep their order too. */
@@ -37,12 +37,6 @@ export function nestRings(rings: readonly Polygon[]): ExPolygon[] {
     if (best >= 0) islands[best].holes.push(rings[h]);
   }
   return islands;
-}
-
-function twiceArea(r: readonly Pt[]): number {
-  let a = 0;
-  for (let i = 0, j = r.length - 1; i < r.length; j = i++) a += (r[j].x - r[i].x) * (r[j].y + r[i].y);
-  return a;
 }
 
 function ringBox(r: readonly Pt[], out: Float64Array, at: number): void {

@@ -5,7 +5,7 @@
  * any other). Then the positive-fill union would return the same rings, so it is skipped.
  */
 import type { ExPolygon, Polygon, Pt } from './types.js';
-import { pointInRing, segmentsMeet } from './contain.js';
+import { pointInRing, ringBounds, segmentsMeet, twiceArea } from './contain.js';
 
 /** Above this many rings the pairwise nesting check is left to the union. */
 export const MAX_RINGS = 12;
@@ -87,12 +87,6 @@ function cleanRing(r: readonly Pt[]): Polygon | null {
   return n >= 3 ? ring : null;
 }
 
-function twiceArea(r: Polygon): number {
-  let a = 0;
-  for (let i = 0, j = r.length - 1; i < r.length; j = i++) a += (r[j].x - r[i].x) * (r[j].y + r[i].y);
-  return a;
-}
-
 /** Edge sort keys pack the lower y with the edge index: at most this many edges. */
 const KEY_SPAN = 65536;
 
@@ -169,30 +163,18 @@ export function islandsApart(raw: readonly Pt[][], areas: readonly ExPolygon[], 
   const n = areas.length;
   const first = new Int32Array(n + 1);
   for (let i = 0; i < n; i++) first[i + 1] = first[i] + 1 + areas[i].holes.length;
-  const minX = new Float64Array(n), minY = new Float64Array(n), maxX = new Float64Array(n), maxY = new Float64Array(n);
-  for (let i = 0; i < n; i++) {
-    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
-    for (const p of raw[first[i]]) {
-      if (p.x < x0) x0 = p.x;
-      if (p.x > x1) x1 = p.x;
-      if (p.y < y0) y0 = p.y;
-      if (p.y > y1) y1 = p.y;
-    }
-    minX[i] = x0;
-    minY[i] = y0;
-    maxX[i] = x1;
-    maxY[i] = y1;
-  }
+  // an island's bounds are its raw outer ring's
+  const box = Array.from({ length: n }, (_, i) => ringBounds(raw[first[i]]));
   // a sweep in x: every pair of islands whose bounds meet loses its "apart"
-  const order = Array.from({ length: n }, (_, i) => i).sort((a, b) => minX[a] - minX[b] || a - b);
+  const order = Array.from({ length: n }, (_, i) => i).sort((a, b) => box[a].minX - box[b].minX || a - b);
   const apart = new Uint8Array(n).fill(1);
   const active: number[] = [];
   for (const i of order) {
     let w = 0;
     for (const k of active) {
-      if (maxX[k] < minX[i]) continue;
+      if (box[k].maxX < box[i].minX) continue;
       active[w++] = k;
-      if (minY[k] <= maxY[i] && maxY[k] >= minY[i]) apart[i] = apart[k] = 0;
+      if (box[k].minY <= box[i].maxY && box[k].maxY >= box[i].minY) apart[i] = apart[k] = 0;
     }
     active.length = w;
     active.push(i);
