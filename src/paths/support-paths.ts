@@ -44,21 +44,21 @@ function mayHoldLines(a: ExPolygon, d: number, angle: number, spacingUm: number,
     if (v > hi) hi = v;
   }
   // a micrometre of slack for rounding: the test only ever keeps too much
-  lo += d - 1;
-  hi -= d - 1;
-  if (lo > hi) return false;
-  const v0 = -origin.x * s + origin.y * c;
-  return Math.floor((hi - v0) / spacingUm) >= Math.ceil((lo - v0) / spacingUm);
+  return familyCrosses(lo + (d - 1), hi - (d - 1), c, s, spacingUm, origin);
 }
 
 /** mayHoldLines for a regular polygon, from its circumcircle (its extent across the lines is at most the diameter). */
-function circleMayHoldLines(c: RegularPolygon, d: number, angle: number, spacingUm: number, origin: Pt): boolean {
+function circleMayHoldLines(p: RegularPolygon, d: number, angle: number, spacingUm: number, origin: Pt): boolean {
   const t = (angle * Math.PI) / 180;
-  const cs = Math.cos(t), sn = Math.sin(t);
-  const v = -c.x * sn + c.y * cs;
-  const lo = v - c.r + d - 1, hi = v + c.r - d + 1;
+  const c = Math.cos(t), s = Math.sin(t);
+  const v = -p.x * s + p.y * c;
+  return familyCrosses(v - p.r + d - 1, v + p.r - d + 1, c, s, spacingUm, origin);
+}
+
+/** Whether a line of the family (direction cos c, sin s; `spacing` apart, phase at `origin`) lies within [lo, hi] across the lines. */
+function familyCrosses(lo: number, hi: number, c: number, s: number, spacingUm: number, origin: Pt): boolean {
   if (lo > hi) return false;
-  const v0 = -origin.x * sn + origin.y * cs;
+  const v0 = -origin.x * s + origin.y * c;
   return Math.floor((hi - v0) / spacingUm) >= Math.ceil((lo - v0) / spacingUm);
 }
 

@@ -60,11 +60,6 @@ export class PointGrid {
     return out;
   }
 
-  /** Ids of the points within `dist` of (x, y), ascending. */
-  within(x: number, y: number, dist: number): number[] {
-    return this.near(x, y, dist).sort((a, b) => a - b);
-  }
-
   /** The id of the point nearest (x, y) within `dist` (the lowest id on a tie), or -1. */
   nearest(x: number, y: number, dist: number): number {
     let best = -1, bestD = Infinity;

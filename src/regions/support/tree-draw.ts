@@ -117,14 +117,17 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
   // the part below need only their union; the rest are cut to what may and can be printed
   const free: ExPolygon[] = [];
   const circles: (RegularPolygon | null)[] = [];
+  const keep = (a: ExPolygon, c: RegularPolygon | null) => {
+    free.push(a);
+    circles.push(c);
+  };
   const freeRings: Polygon[] = [];
   const rest: Polygon[] = [];
   let count = 0;
   for (const cluster of clusters(d.discs)) {
     if ((count += cluster.length) >= ITEMS_PER_STEP) {
       // the overlapping free clusters so far in one union (clusters do not meet: each merges on its own)
-      if (freeRings.length) for (const a of unionRings(freeRings.splice(0))) free.push(a);
-      while (circles.length < free.length) circles.push(null);
+      if (freeRings.length) for (const a of unionRings(freeRings.splice(0))) keep(a, null);
       count = 0;
       yield;
     }
@@ -134,25 +137,16 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
     // a circle inside another of its cluster adds nothing to their union
     const rings = (cluster.length > 1 ? cluster.filter((c) => !cluster.some((o) => o !== c && o.r > c.r && Math.hypot(o.x - c.x, o.y - c.y) + c.r <= o.r)) : cluster).map((c) => circle(c.x, c.y, c.r));
     if (fine) {
-      if (rings.length === 1) {
-        const c = cluster[0];
-        while (circles.length < free.length) circles.push(null);
-        free.push({ outer: rings[0], holes: [] });
-        circles.push({ x: c.x, y: c.y, r: c.r, sides: rings[0].length });
-      } else for (const r of rings) freeRings.push(r);
+      if (rings.length === 1) keep({ outer: rings[0], holes: [] }, { x: cluster[0].x, y: cluster[0].y, r: cluster[0].r, sides: rings[0].length });
+      else for (const r of rings) freeRings.push(r);
     } else for (const r of rings) rest.push(r);
   }
-  if (freeRings.length) for (const a of unionRings(freeRings)) free.push(a);
-  while (circles.length < free.length) circles.push(null);
+  if (freeRings.length) for (const a of unionRings(freeRings)) keep(a, null);
   if (rest.length === 0 && roof.length === 0) return { areas: free, circles };
   const branches = rest.length ? unionRings(rest) : [];
   let s = branches.length && roof.length ? union(branches, roof) : branches.length ? branches : roof;
   for (const b of [d.collision, d.gapBelow]) if (s.length && b.length) s = cutAway(s, b);
-  const printed = printable(s, d.widthUm);
-  for (const a of printed) {
-    free.push(a);
-    circles.push(null);
-  }
+  for (const a of printable(s, d.widthUm)) keep(a, null);
   return { areas: free, circles };
 }
 
