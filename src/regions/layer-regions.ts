@@ -103,7 +103,8 @@ export class RegionsRun {
         });
       }
     }
-    const overhang = cfg.supportEnabled ? overhangOf(this.#layerSection(i), below, z.height, cfg, i === 0) : [];
+    const beyond = { any: islands.some((r) => r.unsupported.length > 0), grownUm: w / 2 };
+    const overhang = cfg.supportEnabled ? overhangOf(this.#layerSection(i), below, z.height, cfg, i === 0, beyond) : [];
     return { ...z, islands, overhang, support: null };
   }
 

@@ -22,10 +22,23 @@ export interface OverhangSettings {
  * @param below the section of the layer below, µm ([] for the first layer, which rests on the bed)
  * @param layerHeightMm the layer's thickness
  * @param isFirst whether this is the first layer (it rests on the bed: no overhang)
+ * @param beyond what the caller already knows: whether any of the section lies beyond the layer below grown
+ *   by `grownUm`; when none does and the overhang reach is at least that, nothing overhangs (no clipping)
  */
-export function overhangOf(section: readonly ExPolygon[], below: readonly ExPolygon[], layerHeightMm: number, s: OverhangSettings, isFirst = false): ExPolygon[] {
+export function overhangOf(
+  section: readonly ExPolygon[],
+  below: readonly ExPolygon[],
+  layerHeightMm: number,
+  s: OverhangSettings,
+  isFirst = false,
+  beyond?: { any: boolean; grownUm: number },
+): ExPolygon[] {
   if (isFirst || section.length === 0) return [];
   const reachUm = layerHeightMm * 1000 * Math.tan((s.supportThreshold * Math.PI) / 180);
+  // the section less the layer below grown by the reach lies within the section less it grown by less;
+  // an empty difference of the smaller growth can leave only clipping-rounding slivers, which the opening
+  // below removes anyway
+  if (beyond && !beyond.any && reachUm >= beyond.grownUm && below.length) return [];
   const held = below.length && reachUm >= 1 ? offset(below, reachUm) : below;
   const raw = difference(section, held);
   if (raw.length === 0) return [];
