@@ -25,8 +25,11 @@ export function naiveLayerSeconds(layer: LayerPlan, from?: Pt): { extrude: numbe
       extrude += polyLength(s.points, s.closed) / s.speed;
       at = s.closed ? s.points[0] : s.points[s.points.length - 1];
     } else {
-      const pts = at ? [at, ...s.points] : s.points;
-      travel += polyLength(pts, false) / s.speed;
+      // the travel from where the last step ended, summed in the same order as its points
+      const pts = s.points;
+      let len = at ? Math.hypot(pts[0].x - at.x, pts[0].y - at.y) : 0;
+      for (let i = 1; i < pts.length; i++) len += Math.hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+      travel += len / 1000 / s.speed;
       at = s.points[s.points.length - 1];
     }
   }

@@ -28,8 +28,10 @@ interface Ctx {
   /** The next travel is the first of the layer (retract on layer change). */
   layerStart: boolean;
   loopNo: number;
-  /** Comb area of the group being printed, or null between groups. */
-  comb: CombArea | null;
+  /** The group being printed once the nozzle is inside it (its comb area made at its first travel), or null between groups. */
+  comb: PathGroup | null;
+  /** The comb area of `comb`, once made (undefined: not yet). */
+  combArea: CombArea | null | undefined;
   object?: number;
 }
 
@@ -53,15 +55,16 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   const minTravelUm = cfg.retractionMinTravel * UM_PER_MM;
   let points: Pt[] = [to];
   let leaves = true;
-  if (ctx.comb && cfg.combing && !forceRetract) {
-    const route = combRoute(from, to, ctx.comb);
+  const area = ctx.comb && !forceRetract ? (ctx.combArea ??= comb(ctx.comb)) : null;
+  if (area && cfg.combing) {
+    const route = combRoute(from, to, area);
     if (route) {
       points = route;
       leaves = false;
     }
-  } else if (ctx.comb && !cfg.combing && !forceRetract) {
+  } else if (area) {
     // Without combing a travel stays inside the group only when the straight line does.
-    const route = combRoute(from, to, ctx.comb);
+    const route = combRoute(from, to, area);
     leaves = !(route && route.length === 1);
   }
   const length = pathLength(from, points);
@@ -136,7 +139,9 @@ function printLoops(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir
   if (loops.length === 0) return;
   if (typeof entry.width !== 'number') {
     // gap loops with their own widths: nearest first, entered at their nearest point
-    for (const [i] of orderNearest(loops.length, (i) => [loops[i][0]], (i) => loops[i][0], ctx.at)) {
+    const order = orderNearest(loops.length, (i) => [loops[i][0]], (i) => loops[i][0], ctx.at);
+    for (let k = 0; k < order.length; k++) {
+      const i = order[k][0];
       const s = chooseSeam(loops[i], 'nearest', ctx.at, 0, 0, 0);
       extrudeFlagged(ctx, styles, rotateLoop(loops[i], s), true, widthOf(entry, i), rotateFlags(entry.overAir?.[i] ?? null, s));
     }
@@ -152,7 +157,8 @@ function printLoops(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir
     (i) => (seams[i] >= 0 ? loops[i][seams[i]] : loops[i][0]),
     ctx.at,
   );
-  for (const [i] of order) {
+  for (let k = 0; k < order.length; k++) {
+    const i = order[k][0];
     const loop = loops[i];
     const s = seams[i] >= 0 ? seams[i] : chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0);
     extrudeFlagged(ctx, styles, rotateLoop(loop, s), true, entry.width, rotateFlags(entry.overAir?.[i] ?? null, s));
@@ -177,7 +183,8 @@ function printLines(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir
     (i, s) => (s === 0 ? lines[i][lines[i].length - 1] : lines[i][0]),
     ctx.at,
   );
-  for (const [i, s] of order) {
+  for (let k = 0; k < order.length; k++) {
+    const i = order[k][0], s = order[k][1];
     const flags = entry.overAir?.[i] ?? null;
     const pts = s === 0 ? lines[i] : lines[i].slice().reverse();
     extrudeFlagged(ctx, styles, pts, false, widthOf(entry, i), flags && s !== 0 ? flags.slice().reverse() : flags);
@@ -192,6 +199,7 @@ function comb(group: PathGroup): CombArea | null {
 
 function printGroup(ctx: Ctx, group: PathGroup): void {
   ctx.comb = null; // arriving from elsewhere: the first travel leaves the previous group
+  ctx.combArea = undefined;
   ctx.object = group.object;
   const entries = sortEntries(group.entries, ctx.cfg.wallOrder);
   let combed = false;
@@ -199,14 +207,14 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
     // walls: once the first wall is printed the nozzle is inside the island, and later travels comb;
     // any other entry starts combed
     if (!combed && entry.role !== 'wall') {
-      ctx.comb = comb(group);
+      ctx.comb = group;
       combed = true;
     }
     const styles = styleOf(ctx, entry);
     if (entry.closed) printLoops(ctx, entry, styles);
     else printLines(ctx, entry, styles);
     if (!combed && entry.paths.length) {
-      ctx.comb = comb(group);
+      ctx.comb = group;
       combed = true;
     }
   }
@@ -233,11 +241,12 @@ function hasPaths(group: PathGroup): boolean {
  */
 export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, position = layer.index): LayerPlan {
   const first = position === 0;
-  const ctx: Ctx = { cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null };
+  const ctx: Ctx = { cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined };
   for (const kind of GROUP_ORDER) {
     const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
     // travels into another group are not combed (printGroup starts each group without a comb area)
-    for (const [i] of orderNearest(groups.length, (i) => [groupEntry(groups[i])], (i) => groupEntry(groups[i]), ctx.at)) printGroup(ctx, groups[i]);
+    const order = orderNearest(groups.length, (i) => [groupEntry(groups[i])], (i) => groupEntry(groups[i]), ctx.at);
+    for (let k = 0; k < order.length; k++) printGroup(ctx, groups[order[k][0]]);
   }
   state.at = ctx.at;
   const plan: LayerPlan = {

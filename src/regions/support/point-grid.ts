@@ -63,7 +63,9 @@ export class PointGrid {
   /** The id of the point nearest (x, y) within `dist` (the lowest id on a tie), or -1. */
   nearest(x: number, y: number, dist: number): number {
     let best = -1, bestD = Infinity;
-    for (const id of this.near(x, y, dist)) {
+    const found = this.near(x, y, dist);
+    for (let k = 0; k < found.length; k++) {
+      const id = found[k];
       const d = (this.xs[id] - x) ** 2 + (this.ys[id] - y) ** 2;
       if (d < bestD || (d === bestD && id < best)) {
         bestD = d;

@@ -56,7 +56,7 @@ const meets = (a: Bounds, b: Bounds) => a.minX <= b.maxX && a.maxX >= b.minX && 
 
 /** Whether `box` meets the bounds of any of `boxes`. */
 export function meetsAny(box: Bounds, boxes: readonly Bounds[]): boolean {
-  for (const b of boxes) if (meets(box, b)) return true;
+  for (let i = 0; i < boxes.length; i++) if (meets(box, boxes[i])) return true;
   return false;
 }
 
@@ -164,7 +164,9 @@ export function clusters(discs: readonly Disc[]): Disc[][] {
   for (let i = 0; i < discs.length; i++) {
     const c = discs[i];
     // the groups do not depend on the order the overlaps are found in (a group's root is its first disc)
-    for (const k of grid.near(c.x, c.y, c.r + widest, found)) {
+    grid.near(c.x, c.y, c.r + widest, found);
+    for (let f = 0; f < found.length; f++) {
+      const k = found[f];
       if (k <= i || Math.hypot(discs[k].x - c.x, discs[k].y - c.y) > c.r + discs[k].r) continue;
       const a = find(i), b = find(k);
       if (a !== b) root[Math.max(a, b)] = Math.min(a, b);

@@ -73,7 +73,7 @@ function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
 export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): [number, number, number][] {
   if (ids.length < 2 || rangeUm <= 0) return [];
   const grid = new PointGrid(Math.min(NEAR_FIRST_UM, Math.max(1000, rangeUm / 4)));
-  for (const i of ids) grid.add(nodes[i].x, nodes[i].y);
+  for (let k = 0; k < ids.length; k++) grid.add(nodes[ids[k]].x, nodes[ids[k]].y);
   const seen = new Set<number>();
   const out: [number, number, number][] = [];
   const found: number[] = [];
@@ -86,7 +86,8 @@ export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], ra
     grid.near(x, y, Math.min(rangeUm, NEAR_FIRST_UM), found);
     if (found.length <= NEAR_COUNT && rangeUm > NEAR_FIRST_UM) grid.near(x, y, rangeUm, found);
     let kept = 0;
-    for (const b of found) {
+    for (let f = 0; f < found.length; f++) {
+      const b = found[f];
       if (b === a) continue;
       const d = Math.hypot(grid.xs[b] - x, grid.ys[b] - y);
       if (kept === NEAR_COUNT && (d > bestD[kept - 1] || (d === bestD[kept - 1] && b > bestId[kept - 1]))) continue;
@@ -189,7 +190,8 @@ export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes
 function mergePairs(d: Descent, pairs: readonly [number, number, number][], from: number, to: number): void {
   const { upper, done, m } = d;
   for (let k = from; k < to; k++) {
-    const [a, b, dist] = pairs[k];
+    const pair = pairs[k];
+    const a = pair[0], b = pair[1], dist = pair[2];
     if (done[a] || done[b] || !(dist <= 2 * m || absorbs(upper[a], upper[b], dist, m))) continue;
     const merged = merge(upper[a], upper[b], a, b, dist, m, d.j, d.vol, d.rules);
     if (!merged) continue;
@@ -203,13 +205,15 @@ function leanTowards(d: Descent, pairs: readonly [number, number, number][]): vo
   const { upper, done, paired, toward } = d;
   const barrier = d.vol.partIndex(d.j);
   const clear = (a: number, b: number) => !barrier.crosses(upper[a].x, upper[a].y, upper[b].x, upper[b].y);
-  for (const [a, b] of pairs) {
+  for (let k = 0; k < pairs.length; k++) {
+    const a = pairs[k][0], b = pairs[k][1];
     if (done[a] || done[b] || paired[a] || paired[b] || !clear(a, b)) continue;
     paired[a] = paired[b] = 1;
     toward[a] = b;
     toward[b] = a;
   }
-  for (const [a, b] of pairs) {
+  for (let k = 0; k < pairs.length; k++) {
+    const a = pairs[k][0], b = pairs[k][1];
     if (done[a] || done[b]) continue;
     if (toward[a] < 0 && clear(a, b)) toward[a] = b;
     if (toward[b] < 0 && clear(a, b)) toward[b] = a;
