@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { orderLoops, orderPolylines } from './nearest-order.js';
-import type { Polyline } from '../geometry/types.js';
+import { orderLoops, orderNearest, orderPolylines } from './nearest-order.js';
+import type { Polyline, Pt } from '../geometry/types.js';
 
 test('nearest-first ordering visits every line once and reverses lines entered at their far end', () => {
   const lines: Polyline[] = [];
@@ -31,4 +31,38 @@ test('loops are entered at their nearest vertex and rotated to start there', () 
   assert.deepEqual(loops[0][0], { x: 1000, y: 1000 });
   assert.equal(loops[1][0].x >= 10000, true);
   assert.deepEqual(end, loops[1][0]);
+});
+
+test('the order is the plain nearest-first order (ties: lower item, then lower candidate), for few and many items', () => {
+  // a reference: scan every remaining candidate from where the last item ended
+  const reference = (items: Pt[][], from: Pt): Array<[number, number]> => {
+    const used = new Set<number>();
+    const out: Array<[number, number]> = [];
+    let at = from;
+    while (used.size < items.length) {
+      let best: [number, number] = [-1, -1];
+      let bestD = Infinity;
+      items.forEach((c, i) => {
+        if (used.has(i)) return;
+        c.forEach((p, k) => {
+          const d = (p.x - at.x) ** 2 + (p.y - at.y) ** 2;
+          if (d < bestD) [bestD, best] = [d, [i, k]];
+        });
+      });
+      used.add(best[0]);
+      out.push(best);
+      at = items[best[0]][items[best[0]].length - 1 - best[1]];
+    }
+    return out;
+  };
+  let seed = 7;
+  const rand = (n: number) => ((seed = (seed * 1103515245 + 12345) % 2 ** 31) % n);
+  for (const count of [1, 2, 5, 11, 12, 13, 30, 80]) {
+    // coarse coordinates, so equal distances (ties) happen
+    const items: Pt[][] = [];
+    for (let i = 0; i < count; i++) items.push([{ x: rand(20) * 100, y: rand(20) * 100 }, { x: rand(20) * 100, y: rand(20) * 100 }]);
+    const from = { x: rand(20) * 100, y: rand(20) * 100 };
+    const got = orderNearest(count, (i) => items[i], (i, k) => items[i][items[i].length - 1 - k], from);
+    assert.deepEqual(got, reference(items, from), `${count} items`);
+  }
 });

@@ -6,6 +6,9 @@
  */
 import type { Polyline, Pt } from './types.js';
 
+/** Up to this many entry points are scanned rather than put in a grid. */
+const SCAN_BELOW = 24;
+
 interface Grid {
   cell: number;
   minX: number;
@@ -63,11 +66,33 @@ export function orderNearest(
     }
   }
   const n = owner.length;
-  const ends = Float64Array.from(pts);
-  const grid = buildGrid(ends, n);
   const used = new Uint8Array(count);
   const out: Array<[number, number]> = [];
   let at = from;
+  if (n <= SCAN_BELOW) {
+    // a few entry points (a support branch's loop and line, an island's walls): a plain scan finds the
+    // same nearest (first in item, then candidate order on a tie) without building a grid
+    for (let done = 0; done < count; done++) {
+      let best = -1;
+      let bestD = Infinity;
+      for (let e = 0; e < n; e++) {
+        if (used[owner[e]]) continue;
+        const ddx = pts[2 * e] - at.x, ddy = pts[2 * e + 1] - at.y;
+        const d = ddx * ddx + ddy * ddy;
+        if (d < bestD) {
+          bestD = d;
+          best = e;
+        }
+      }
+      const item = owner[best];
+      used[item] = 1;
+      out.push([item, which[best]]);
+      at = endOf(item, which[best]);
+    }
+    return out;
+  }
+  const ends = Float64Array.from(pts);
+  const grid = buildGrid(ends, n);
   for (let done = 0; done < count; done++) {
     const cx = Math.floor((at.x - grid.minX) / grid.cell);
     const cy = Math.floor((at.y - grid.minY) / grid.cell);
