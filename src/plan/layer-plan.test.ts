@@ -1,6 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { rect } from '../geometry/test-shapes.js';
+import type { ExPolygon } from '../geometry/types.js';
 import type { LayerPaths, PathGroup } from '../paths/types.js';
 import { resolveConfig } from '../settings/resolve.js';
 import { planLayer } from './layer-plan.js';
@@ -60,4 +61,27 @@ test('the first layer prints everything at first-layer speed and sets no over-ai
   const plan = planLayer(layer([island]), cfg, { at: { x: 0, y: 0 } }, 0);
   const ex = plan.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude');
   assert.ok(ex.every((s) => s.speed === cfg.firstLayerSpeed && s.feature !== 'BRIDGE'));
+});
+
+test('a travel from support to support retracts only where it would pass over the part (this layer or the one below), or with the setting off', () => {
+  const line = (x0: number, x1: number) => [{ x: x0, y: 5_000 }, { x: x1, y: 5_000 }];
+  const a: PathGroup = { kind: 'support', area: rect(30_000, 0, 40_000, 10_000), entries: [{ role: 'support', closed: false, paths: [line(31_000, 39_000)], width: 0.4 }] };
+  const b: PathGroup = { kind: 'support', area: rect(50_000, 0, 60_000, 10_000), entries: [{ role: 'support', closed: false, paths: [line(51_000, 59_000)], width: 0.4 }] };
+  const between: PathGroup = { kind: 'island', object: 0, area: rect(42_000, 0, 48_000, 10_000), entries: [{ role: 'infill', closed: false, paths: [[{ x: 43_000, y: 1_000 }, { x: 47_000, y: 9_000 }]], width: 0.4 }] };
+  const inside: PathGroup = { kind: 'island', object: 0, area: rect(20_000, -20_000, 70_000, 30_000), entries: [] };
+  const start = { x: 30_000, y: 5_000 };
+  // whether the travel from a to b (after the first extrusion) retracts
+  const retracts = (groups: PathGroup[], c = cfg, below?: ExPolygon[]) => {
+    const plan = planLayer(layer(groups), c, { at: start, below });
+    const first = plan.steps.findIndex((s) => s.kind === 'extrude');
+    const hop = plan.steps.slice(first).find((s) => s.kind === 'travel');
+    assert.ok(hop && hop.kind === 'travel');
+    assert.deepEqual(hop.points[hop.points.length - 1], { x: 51_000, y: 5_000 });
+    return hop.retract;
+  };
+  assert.equal(retracts([a, b]), false, 'over air between two support areas');
+  assert.equal(retracts([a, b, between]), true, 'across an island of this layer');
+  assert.equal(retracts([a, b], cfg, [between.area!]), true, 'across an island of the layer below');
+  assert.equal(retracts([a, b], cfg, [inside.area!]), true, 'over the top of the part below, crossing no edge of it');
+  assert.equal(retracts([a, b], resolveConfig({ supportEnabled: true, supportLimitRetractions: false })), true, "with the setting off");
 });

@@ -4,18 +4,21 @@
  * order setting, seams placed; lines nearest-first); runs over air printed their own way (bridges, slowed
  * overhang walls). Travels are combed inside the group, retracted when they leave it or are long.
  */
-import { UM_PER_MM, type Polygon, type Pt } from '../geometry/types.js';
+import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import { orderNearest } from '../geometry/nearest-order.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
 import { combRoute, makeCombArea, pathLength, type CombArea } from './comb.js';
 import { GROUP_ORDER, OVER_AIR_STYLE, roleFeature, roleSpeed, sortEntries } from './print-order.js';
 import { chooseSeam, rotateLoop } from './seam.js';
+import { PartGuard } from './support-travel.js';
 import type { ExtrudeStep, FeatureType, LayerPlan, PlanStep } from './types.js';
 
 export interface PlanState {
   /** Nozzle position after the previous layer, µm. */
   at: Pt;
+  /** The part's islands on the previous layer (kept for support travels, see support-travel.ts). */
+  below?: ExPolygon[];
 }
 
 interface Ctx {
@@ -32,6 +35,12 @@ interface Ctx {
   comb: PathGroup | null;
   /** The comb area of `comb`, once made (undefined: not yet). */
   combArea: CombArea | null | undefined;
+  /** Kind of the group being printed, and of the group the last extrusion belonged to. */
+  kind: PathGroup['kind'] | null;
+  lastKind: PathGroup['kind'] | null;
+  /** The part's islands of this layer and the one below, and their guard once a support travel asks. */
+  part: readonly ExPolygon[];
+  guard: PartGuard | null;
   object?: number;
 }
 
@@ -68,7 +77,10 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
     leaves = !(route && route.length === 1);
   }
   const length = pathLength(from, points);
-  const retract = cfg.retractionEnabled && cfg.retractionDistance > 0 && (forceRetract || ((leaves || length > minTravelUm) && length > minTravelUm * 0.25));
+  let retract = cfg.retractionEnabled && cfg.retractionDistance > 0 && (forceRetract || ((leaves || length > minTravelUm) && length > minTravelUm * 0.25));
+  if (retract && !forceRetract && cfg.supportLimitRetractions && ctx.kind === 'support' && ctx.lastKind === 'support' && points.length === 1) {
+    retract = !(ctx.guard ??= new PartGuard(ctx.part)).clear(from, to);
+  }
   ctx.steps.push({ kind: 'travel', points, retract, zHop: retract ? cfg.zHop : 0, speed });
   ctx.at = to;
 }
@@ -89,6 +101,7 @@ function extrude(ctx: Ctx, style: Style, points: Pt[], closed: boolean, width: n
   if (ctx.object !== undefined) step.object = ctx.object;
   if (style.fan !== undefined) step.fan = style.fan;
   ctx.steps.push(step);
+  ctx.lastKind = ctx.kind;
   ctx.at = closed ? points[0] : points[points.length - 1];
 }
 
@@ -200,6 +213,7 @@ function comb(group: PathGroup): CombArea | null {
 function printGroup(ctx: Ctx, group: PathGroup): void {
   ctx.comb = null; // arriving from elsewhere: the first travel leaves the previous group
   ctx.combArea = undefined;
+  ctx.kind = group.kind;
   ctx.object = group.object;
   const entries = sortEntries(group.entries, ctx.cfg.wallOrder);
   let combed = false;
@@ -241,7 +255,11 @@ function hasPaths(group: PathGroup): boolean {
  */
 export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, position = layer.index): LayerPlan {
   const first = position === 0;
-  const ctx: Ctx = { cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined };
+  // the part's islands, here and on the layer below (support travels keep off them)
+  const islands: ExPolygon[] = [];
+  for (const g of layer.groups) if (g.kind === 'island' && g.area) islands.push(g.area);
+  const part = state.below?.length ? [...islands, ...state.below] : islands;
+  const ctx: Ctx = { cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined, kind: null, lastKind: null, part, guard: null };
   for (const kind of GROUP_ORDER) {
     const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
     // travels into another group are not combed (printGroup starts each group without a comb area)
@@ -249,6 +267,7 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
     for (let k = 0; k < order.length; k++) printGroup(ctx, groups[order[k][0]]);
   }
   state.at = ctx.at;
+  state.below = islands;
   const plan: LayerPlan = {
     index: position,
     z: layer.z,

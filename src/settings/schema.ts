@@ -278,6 +278,7 @@ export const SCHEMA = {
   supportWallCount: when(optNum(0, 5, 'count', 'support', 'Walls around support areas. Empty (null) = none for normal support, one for tree support.', 'integer'), { supportEnabled: true }, 'overhangs'),
   supportLineWidth: when(optNum(0.1, 3, 'mm', 'support', 'Line width of support and its interface. Empty (null) = lineWidth.'), { supportEnabled: true }, 'overhangs'),
   supportSpeed: when(num(50, 1, 1000, 'mm/s', 'support', 'Speed of the support body.'), { supportEnabled: true }, 'overhangs'),
+  supportLimitRetractions: when(bool(true, 'support', 'Travels from support to support on a layer do not retract, unless the straight line passes over the part (this layer or the one below): faster to print, with at most some strings inside the support.'), { supportEnabled: true }, 'overhangs'),
   supportInterfaceSpeed: when(num(35, 1, 1000, 'mm/s', 'support', 'Speed of the support interface (roof and floor).'), { supportEnabled: true }, 'overhangs'),
   supportTreeBranchAngle: when(num(40, 5, 80, '°', 'support', 'Tree support: the steepest angle from vertical at which branches lean towards each other as they go down.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
   supportTreeTipDiameter: when(num(0.8, 0.2, 10, 'mm', 'support', 'Tree support: diameter of a branch tip under the part.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
