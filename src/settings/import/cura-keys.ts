@@ -21,6 +21,7 @@ const INFILL: Readonly<Record<string, PatternId>> = {
   grid: 'grid', lines: 'lines', zigzag: 'lines', triangles: 'triangles', trihexagon: 'triangles', cubic: 'cubic', cubicsubdiv: 'cubic',
   tetrahedral: 'cubic', quarter_cubic: 'cubic', concentric: 'concentric', gyroid: 'gyroid', lightning: 'lightning', cross: 'grid', cross_3d: 'grid',
 };
+const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = { zigzag: 'zigzag', lines: 'lines', grid: 'grid' };
 const SEAM: Readonly<Record<string, Settings['seamPosition']>> = { back: 'rear', shortest: 'nearest', random: 'random', sharpest_corner: 'aligned' };
 const FLAVOR: Readonly<Record<string, Settings['gcodeFlavor']>> = {
   'RepRap (Marlin/Sprinter)': 'marlin', 'RepRap (Volumetric)': 'marlin', 'RepRap (RepRap)': 'reprap', Repetier: 'marlin',
@@ -258,10 +259,56 @@ export function mapCuraKeys(c: ImportContext): void {
   // adhesion
   const adhesion = str('adhesion_type');
   if (adhesion !== undefined) {
-    const map: Record<string, Settings['adhesionType']> = { skirt: 'skirt', brim: 'brim', none: 'none' };
-    c.set('adhesionType', map[adhesion], 'adhesion_type', `adhesion "${adhesion}" has no Strata equivalent (skirt, brim, none)`);
+    const map: Record<string, Settings['adhesionType']> = { skirt: 'skirt', brim: 'brim', raft: 'raft', none: 'none' };
+    c.set('adhesionType', map[adhesion], 'adhesion_type', `adhesion "${adhesion}" has no Strata equivalent (skirt, brim, raft, none)`);
   }
   take('skirtLoops', ['skirt_line_count'], (v) => Math.round(v));
   take('skirtDistance', ['skirt_gap']);
   take('brimWidth', ['brim_width']);
+  take('raftMargin', ['raft_margin']);
+  take('raftAirGap', ['raft_airgap']);
+
+  // support: Cura's overhang angle is measured from vertical, as Strata's; interface heights become layers
+  const flag = (key: string, setting: 'supportEnabled' | 'supportLimitRetractions') => {
+    const v = str(key);
+    if (v !== undefined) c.set(setting, bool(v), key, 'not True or False');
+  };
+  flag('support_enable', 'supportEnabled');
+  const structure = str('support_structure');
+  if (structure !== undefined) {
+    c.set('supportType', structure === 'tree' || structure === 'normal' ? structure : undefined, 'support_structure', `support structure "${structure}" has no Strata equivalent (normal, tree)`);
+  }
+  const placement = str('support_type');
+  if (placement !== undefined) {
+    const map: Record<string, Settings['supportPlacement']> = { buildplate: 'buildPlate', everywhere: 'everywhere' };
+    c.set('supportPlacement', map[placement], 'support_type', `support placement "${placement}" has no Strata equivalent (buildplate, everywhere)`);
+  }
+  take('supportThreshold', ['support_angle']);
+  const supportPattern = str('support_pattern');
+  if (supportPattern !== undefined) c.set('supportPattern', SUPPORT_PATTERN[supportPattern], 'support_pattern', `support pattern "${supportPattern}" has no Strata equivalent (zigzag, lines, grid)`);
+  take('supportDensity', ['support_infill_rate']);
+  take('supportZGap', ['support_top_distance', 'support_z_distance']);
+  take('supportBottomZGap', ['support_bottom_distance']);
+  take('supportXYGap', ['support_xy_distance']);
+  // roof and floor: on (Cura's default is off) for their height in layers, else none
+  for (const [side, setting] of [['roof', 'supportInterfaceLayers'], ['bottom', 'supportFloorLayers']] as const) {
+    const key = c.has(`support_${side}_enable`) ? `support_${side}_enable` : 'support_interface_enable';
+    const on = str(key);
+    if (on !== undefined && bool(on) === false) c.set(setting, 0, key);
+    else if (on !== undefined || c.has(`support_${side}_height`) || c.has('support_interface_height')) {
+      take(setting, [`support_${side}_height`, 'support_interface_height'], (h) => Math.round(h / layerHeight));
+    }
+  }
+  take('supportInterfaceDensity', ['support_roof_density', 'support_interface_density']);
+  take('supportLineWidth', ['support_line_width']);
+  take('supportSpeed', ['speed_support_infill', 'speed_support']);
+  take('supportInterfaceSpeed', ['speed_support_roof', 'speed_support_interface']);
+  take('supportWallCount', ['support_wall_count'], (v) => Math.round(v));
+  take('supportMinArea', ['minimum_support_area']);
+  take('supportTreeBranchAngle', ['support_tree_angle']);
+  take('supportTreeBranchDiameter', ['support_tree_branch_diameter']);
+  take('supportTreeTipDiameter', ['support_tree_tip_diameter']);
+  take('supportTreeDiameterAngle', ['support_tree_branch_diameter_angle']);
+  take('supportTreeTipSpacing', ['support_tree_branch_distance']);
+  flag('limit_support_retractions', 'supportLimitRetractions');
 }

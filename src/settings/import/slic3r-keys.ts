@@ -19,6 +19,11 @@
  *   (`reduce_fan_stop_start_freq`), else at `fan_max_speed` for the layers it cools.
  * - Pressure advance: OrcaSlicer's `pressure_advance` when enabled; PrusaSlicer's filament start G-code
  *   `M900 K…` or `SET_PRESSURE_ADVANCE ADVANCE=…`.
+ * - Support: the overhang threshold is a slope from the horizontal there (0: automatic), from the vertical
+ *   in Strata; organic (PrusaSlicer) and tree (OrcaSlicer) styles are tree support; the spacing of support
+ *   lines becomes a density; a bottom contact distance of 0 and bottom interface layers of -1 mean "as the
+ *   top"; the XY distance may be a percentage of the external perimeter width (taken over the nozzle).
+ *   PrusaSlicer's `dont_support_bridges` has no span: it is reported, for `supportSkipBridges` to be set.
  */
 import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
 import type { Settings } from '../schema.js';
@@ -80,6 +85,7 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
   cooling(c);
   retraction(c);
   adhesion(c);
+  support(c, nozzle);
   output(c);
 }
 
@@ -416,4 +422,89 @@ function output(c: ImportContext): void {
   } else if (exclude !== undefined) c.set('labelObjects', exclude ? 'firmware' : 'off', 'exclude_object');
   const m73 = c.getAny('remaining_times');
   if (m73) c.set('progressM73', bool(m73.value), m73.key, 'not 0 or 1');
+}
+
+const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = { rectilinear: 'lines', 'rectilinear-grid': 'grid', default: 'zigzag' };
+
+function support(c: ImportContext, nozzle: number): void {
+  const on = c.getAny('support_material', 'enable_support');
+  if (on) c.set('supportEnabled', bool(on.value), on.key, 'not 0 or 1');
+  const style = c.getAny('support_material_style', 'support_type', 'support_style');
+  if (style) {
+    const v = first(style.value) ?? '';
+    const type: Settings['supportType'] | undefined = v === 'organic' || v.startsWith('tree') ? 'tree' : v === 'grid' || v === 'snug' || v.startsWith('normal') || v === 'default' ? 'normal' : undefined;
+    c.set('supportType', type, style.key, `support style "${v}" has no Strata equivalent (normal, tree)`);
+  }
+  const plate = c.getAny('support_material_buildplate_only', 'support_on_build_plate_only');
+  if (plate) c.set('supportPlacement', bool(plate.value) === undefined ? undefined : bool(plate.value) ? 'buildPlate' : 'everywhere', plate.key, 'not 0 or 1');
+  const threshold = c.getAny('support_material_threshold', 'support_threshold_angle');
+  if (threshold) {
+    const v = num(threshold.value);
+    // 0 is automatic: Strata's default stands
+    if (v !== 0) c.set('supportThreshold', v === undefined ? undefined : 90 - v, threshold.key, 'not an angle');
+  }
+  const top = c.getAny('support_material_contact_distance', 'support_top_z_distance');
+  if (top) c.set('supportZGap', num(top.value), top.key, 'not a distance');
+  const bottom = c.getAny('support_material_bottom_contact_distance', 'support_bottom_z_distance');
+  if (bottom) {
+    const v = num(bottom.value);
+    if (v !== 0) c.set('supportBottomZGap', v, bottom.key, 'not a distance');
+  }
+  const roof = c.getAny('support_material_interface_layers', 'support_interface_top_layers');
+  if (roof) c.set('supportInterfaceLayers', num(roof.value), roof.key, 'not a count');
+  const floor = c.getAny('support_material_bottom_interface_layers', 'support_interface_bottom_layers');
+  if (floor) {
+    const v = num(floor.value);
+    if (v === undefined || v >= 0) c.set('supportFloorLayers', v, floor.key, 'not a count');
+  }
+  const xy = c.getAny('support_material_xy_spacing', 'support_object_xy_distance');
+  if (xy) {
+    const v = numOrPercent(xy.value);
+    c.set('supportXYGap', v && round(v.percent ? (nozzle * v.value) / 100 : v.value), xy.key, 'not a distance');
+  }
+  const pattern = c.getAny('support_material_pattern', 'support_base_pattern');
+  if (pattern) {
+    const v = first(pattern.value) ?? '';
+    c.set('supportPattern', SUPPORT_PATTERN[v], pattern.key, `support pattern "${v}" has no Strata equivalent (zigzag, lines, grid)`);
+  }
+  const width = c.getAny('support_material_extrusion_width', 'support_line_width');
+  const w = width ? numOrPercent(width.value) : undefined;
+  if (width && w && w.value > 0) c.set('supportLineWidth', round(w.percent ? (nozzle * w.value) / 100 : w.value), width.key);
+  const spacing = c.getAny('support_material_spacing', 'support_base_pattern_spacing');
+  if (spacing) {
+    // the gap between lines: density is a line's share of its pitch
+    const v = num(spacing.value);
+    const lw = c.settings.supportLineWidth ?? c.settings.lineWidth ?? nozzle;
+    c.set('supportDensity', v === undefined ? undefined : round((100 * lw) / (lw + v), 1), spacing.key, 'not a distance');
+  }
+  const angle = c.getAny('support_material_angle', 'support_angle');
+  if (angle) c.set('supportAngle', num(angle.value), angle.key, 'not an angle');
+  const speed = c.getAny('support_material_speed', 'support_speed');
+  const supportSpeed = speed ? num(speed.value) : undefined;
+  if (speed) c.set('supportSpeed', supportSpeed, speed.key, 'not a speed');
+  const ifaceSpeed = c.getAny('support_material_interface_speed', 'support_interface_speed');
+  if (ifaceSpeed) {
+    const v = numOrPercent(ifaceSpeed.value);
+    const base = supportSpeed ?? (SCHEMA.supportSpeed.default as number);
+    c.set('supportInterfaceSpeed', v && round(v.percent ? (base * v.value) / 100 : v.value, 2), ifaceSpeed.key, 'not a speed');
+  }
+  for (const [setting, keys] of [
+    ['supportTreeBranchAngle', ['support_tree_angle', 'tree_support_branch_angle']],
+    ['supportTreeBranchDiameter', ['support_tree_branch_diameter', 'tree_support_branch_diameter']],
+    ['supportTreeTipDiameter', ['support_tree_tip_diameter', 'tree_support_tip_diameter']],
+    ['supportTreeDiameterAngle', ['support_tree_branch_diameter_angle', 'tree_support_branch_diameter_angle']],
+  ] as const) {
+    const v = c.getAny(...keys);
+    if (v) c.set(setting, num(v.value), v.key, 'not a number');
+  }
+  const bridges = c.getAny('dont_support_bridges');
+  if (bridges && bool(bridges.value)) c.reject(bridges.key, 'Strata bridges spans up to supportSkipBridges mm instead (0, every overhang supported, by default)');
+  // raft
+  const raft = c.getAny('raft_layers');
+  const layers = raft ? num(raft.value) : undefined;
+  if (raft && layers !== undefined && layers > 0) c.set('adhesionType', 'raft', raft.key);
+  const gap = c.getAny('raft_contact_distance');
+  if (gap) c.set('raftAirGap', num(gap.value), gap.key, 'not a distance');
+  const margin = c.getAny('raft_expansion');
+  if (margin) c.set('raftMargin', num(margin.value), margin.key, 'not a distance');
 }
