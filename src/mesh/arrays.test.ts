@@ -2,6 +2,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { StrataError } from '../errors.js';
 import { fromArrays } from './arrays.js';
+import { weld } from './weld.js';
 import type { RawMeshArrays } from './types.js';
 
 const TET_P = [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1];
@@ -44,4 +45,17 @@ test('fromArrays rejects bad arrays with BAD_MESH and a precise message', () => 
   bad({ positions: 'abc' }, /positions must be/);
   bad({ positions: TET_P, indices: {} }, /indices must be/);
   bad(null, /expected/);
+});
+
+test('a mesh a loader welded passes through as it is (welding it again would change nothing), its coordinates still checked', () => {
+  // two triangles sharing an edge, as a triangle soup: welded to four vertices
+  const soup = new Float32Array([0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0]);
+  const welded = fromArrays({ positions: soup }).mesh;
+  assert.equal(welded.positions.length, 12);
+  const again = fromArrays(welded);
+  assert.equal(again.mesh, welded, 'taken as it is');
+  const rewelded = weld(welded.positions, welded.indices);
+  assert.deepEqual([...rewelded.positions, ...rewelded.indices], [...welded.positions, ...welded.indices], 'welding again changes nothing');
+  welded.positions[4] = NaN;
+  assert.throws(() => fromArrays(welded), (e: Error) => e instanceof StrataError && /positions\[4\] is NaN/.test(e.message));
 });

@@ -3,8 +3,8 @@
  */
 import { StrataError } from '../errors.js';
 import { printable } from './printable.js';
-import type { MeshObject, RawMeshArrays } from './types.js';
-import { weld } from './weld.js';
+import type { Mesh, MeshObject, RawMeshArrays } from './types.js';
+import { isWelded, weld } from './weld.js';
 
 function isNumberArray(v: unknown): v is ArrayLike<number> {
   return Array.isArray(v) || (ArrayBuffer.isView(v) && !(v instanceof DataView));
@@ -21,6 +21,15 @@ export function fromArrays(raw: RawMeshArrays, name = 'mesh'): MeshObject {
     throw new StrataError('BAD_MESH', `${what}: positions holds ${p.length} numbers, not a multiple of 3 (x, y, z per vertex)`);
   }
   const nVerts = p.length / 3;
+  if (isWelded(raw)) {
+    // a mesh Strata's loaders made: valid and welded; only its coordinates are checked again, in case
+    // the caller changed them
+    const q = (raw as unknown as Mesh).positions;
+    for (let i = 0; i < q.length; i++) {
+      if (!Number.isFinite(q[i])) throw new StrataError('BAD_MESH', `${what}: positions[${i}] is ${q[i]}; every coordinate must be a finite number`);
+    }
+    return { name, mesh: raw as unknown as Mesh };
+  }
   const positions = new Float32Array(p.length);
   for (let i = 0; i < p.length; i++) {
     const v = p[i];

@@ -8,7 +8,7 @@
  */
 import { StrataError } from '../errors.js';
 import type { Mesh, MeshReport } from './types.js';
-import { weld } from './weld.js';
+import { isWelded, weld } from './weld.js';
 
 export interface PreparedMesh {
   mesh: Mesh;
@@ -16,7 +16,7 @@ export interface PreparedMesh {
 }
 
 export function prepareMesh(mesh: Mesh): PreparedMesh {
-  const welded = weld(mesh.positions, mesh.indices, 'mesh');
+  const welded = isWelded(mesh) ? mesh : weld(mesh.positions, mesh.indices, 'mesh');
   const { mesh: clean, removed } = dropRepeatedCorners(welded);
   const edges = countEdges(clean.indices, clean.positions.length / 3);
   const { min, max } = positionBounds(clean.positions);

@@ -8,6 +8,18 @@ import type { Mesh } from './types.js';
 const NON_FINITE = 0x7f800000;
 
 /**
+ * The meshes `weld` made (welding one again changes nothing: its vertices are distinct and numbered in
+ * the order triangles first use them), so later stages take them as they are instead of welding a
+ * 225 k-triangle mesh two more times.
+ */
+const WELDED = new WeakSet<Mesh>();
+
+/** Whether `mesh` came out of `weld` (its arrays as weld left them: Float32Array and Uint32Array). */
+export function isWelded(mesh: unknown): boolean {
+  return typeof mesh === 'object' && mesh !== null && WELDED.has(mesh as Mesh);
+}
+
+/**
  * Weld `positions` (xyz per vertex). With `indices`, they index `positions`; with `null`, every
  * three consecutive vertices form a triangle (a "triangle soup", as STL stores it).
  * `what` names the source in error messages.
@@ -80,5 +92,7 @@ export function weld(positions: Float32Array, indices: Uint32Array | null, what 
     outIdx[c] = id;
     if (cache !== null) cache[v] = id;
   }
-  return { positions: new Float32Array(outBits.buffer.slice(0, count * 12)), indices: outIdx };
+  const mesh: Mesh = { positions: new Float32Array(outBits.buffer.slice(0, count * 12)), indices: outIdx };
+  WELDED.add(mesh);
+  return mesh;
 }
