@@ -19,6 +19,25 @@ export function isWelded(mesh: unknown): boolean {
   return typeof mesh === 'object' && mesh !== null && WELDED.has(mesh as Mesh);
 }
 
+function hash(bx: number, by: number, bz: number): number {
+  let h = Math.imul(bx, 0x9e3779b1) ^ Math.imul(by, 0x85ebca77) ^ Math.imul(bz, 0xc2b2ae3d);
+  h ^= h >>> 15;
+  h = Math.imul(h, 0x2c1b3c6d);
+  return h ^ (h >>> 13);
+}
+
+/** A table of `cap` slots (a power of two) holding vertices 0..count-1 of `bits` (linear probing). */
+function rehash(bits: Uint32Array, count: number, cap: number): Int32Array {
+  const table = new Int32Array(cap).fill(-1);
+  const mask = cap - 1;
+  for (let id = 0; id < count; id++) {
+    let h = hash(bits[id * 3], bits[id * 3 + 1], bits[id * 3 + 2]) & mask;
+    while (table[h] >= 0) h = (h + 1) & mask;
+    table[h] = id;
+  }
+  return table;
+}
+
 /**
  * Weld `positions` (xyz per vertex). With `indices`, they index `positions`; with `null`, every
  * three consecutive vertices form a triangle (a "triangle soup", as STL stores it).
@@ -34,10 +53,12 @@ export function weld(positions: Float32Array, indices: Uint32Array | null, what 
     throw new StrataError('BAD_MESH', `${what}: ${nCorners} triangle corners is not a multiple of 3`);
   }
   const maxUnique = Math.min(nVerts, nCorners);
+  // closed meshes have about one vertex per six corners: the table starts at twice that and doubles
+  // whenever it is half full, so it stays small enough to sit in the cache
   let cap = 16;
-  while (cap < maxUnique * 2) cap *= 2;
-  const mask = cap - 1;
-  const table = new Int32Array(cap).fill(-1);
+  while (cap < Math.min(maxUnique * 2, nCorners / 3)) cap *= 2;
+  let mask = cap - 1;
+  let table: Int32Array = new Int32Array(cap).fill(-1);
   const bits = new Uint32Array(positions.buffer, positions.byteOffset, positions.length);
   const outBits = new Uint32Array(maxUnique * 3);
   const outIdx = new Uint32Array(nCorners);
@@ -70,11 +91,7 @@ export function weld(positions: Float32Array, indices: Uint32Array | null, what 
     if (bx === 0x80000000) bx = 0;
     if (by === 0x80000000) by = 0;
     if (bz === 0x80000000) bz = 0;
-    let h = Math.imul(bx, 0x9e3779b1) ^ Math.imul(by, 0x85ebca77) ^ Math.imul(bz, 0xc2b2ae3d);
-    h ^= h >>> 15;
-    h = Math.imul(h, 0x2c1b3c6d);
-    h ^= h >>> 13;
-    h &= mask;
+    let h = hash(bx, by, bz) & mask;
     let id: number;
     for (;;) {
       id = table[h];
@@ -84,6 +101,11 @@ export function weld(positions: Float32Array, indices: Uint32Array | null, what 
         outBits[id * 3] = bx;
         outBits[id * 3 + 1] = by;
         outBits[id * 3 + 2] = bz;
+        if (2 * count > cap) {
+          cap *= 2;
+          mask = cap - 1;
+          table = rehash(outBits, count, cap);
+        }
         break;
       }
       if (outBits[id * 3] === bx && outBits[id * 3 + 1] === by && outBits[id * 3 + 2] === bz) break;
