@@ -85,13 +85,17 @@ describe('web page', { skip: missing ?? false }, () => {
     await input.press('Tab');
   }
 
-  /** Click Slice and wait for the result; returns the long tasks seen while slicing. */
+  /**
+   * Click Slice and wait for the result; returns the long tasks seen while slicing: from the click to the last
+   * progress report from the worker (receiving the finished G-code and preview arrays, and drawing the preview,
+   * come after).
+   */
   async function slice(page: Page): Promise<Array<[number, number]>> {
     await page.getByRole('button', { name: 'Slice', exact: true }).click();
     await page.waitForSelector('#stat-layers', { timeout: SLOW.timeout });
     return page.evaluate(() => {
       const start = performance.getEntriesByName('strata:slice-start').at(-1)!.startTime;
-      const done = performance.getEntriesByName('strata:slice-done').at(-1)!.startTime;
+      const done = performance.getEntriesByName('strata:slice-progress').at(-1)!.startTime;
       const tasks = (window as unknown as { __longTasks: Array<[number, number]> }).__longTasks;
       return tasks.filter(([t, d]) => t + d > start && t < done);
     });

@@ -467,6 +467,8 @@ async function slice(): Promise<void> {
       { type: 'slice', items, options: store.options(), custom },
       [],
       (stage, fraction) => {
+        // the last of these marks where slicing ended and the hand-over of the result began
+        performance.mark('strata:slice-progress');
         ui.progress.value = Math.round(fraction * 100);
         ui.jobText.textContent = `${STAGE_WORDS[stage] ?? stage} ${Math.round(fraction * 100)} %`;
       },
