@@ -85,7 +85,7 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
   cooling(c);
   retraction(c);
   adhesion(c);
-  support(c, nozzle);
+  support(c, flavor, nozzle, layerHeight);
   output(c);
 }
 
@@ -426,7 +426,7 @@ function output(c: ImportContext): void {
 
 const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = { rectilinear: 'lines', 'rectilinear-grid': 'grid', default: 'zigzag' };
 
-function support(c: ImportContext, nozzle: number): void {
+function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHeight: number): void {
   const on = c.getAny('support_material', 'enable_support');
   if (on) c.set('supportEnabled', bool(on.value), on.key, 'not 0 or 1');
   const style = c.getAny('support_material_style', 'support_type', 'support_style');
@@ -467,9 +467,10 @@ function support(c: ImportContext, nozzle: number): void {
     const v = first(pattern.value) ?? '';
     c.set('supportPattern', SUPPORT_PATTERN[v], pattern.key, `support pattern "${v}" has no Strata equivalent (zigzag, lines, grid)`);
   }
-  const width = c.getAny('support_material_extrusion_width', 'support_line_width');
-  const w = width ? numOrPercent(width.value) : undefined;
-  if (width && w && w.value > 0) c.set('supportLineWidth', round(w.percent ? (nozzle * w.value) / 100 : w.value), width.key);
+  // a width of 0 is automatic: Strata's default stands
+  const lineWidth = c.getAny('support_material_extrusion_width', 'support_line_width');
+  const w = lineWidth ? width(lineWidth.value, flavor, nozzle, layerHeight) : undefined;
+  if (lineWidth && w !== undefined) c.set('supportLineWidth', w, lineWidth.key);
   const spacing = c.getAny('support_material_spacing', 'support_base_pattern_spacing');
   if (spacing) {
     // the gap between lines: density is a line's share of its pitch
@@ -479,15 +480,11 @@ function support(c: ImportContext, nozzle: number): void {
   }
   const angle = c.getAny('support_material_angle', 'support_angle');
   if (angle) c.set('supportAngle', num(angle.value), angle.key, 'not an angle');
-  const speed = c.getAny('support_material_speed', 'support_speed');
-  const supportSpeed = speed ? num(speed.value) : undefined;
-  if (speed) c.set('supportSpeed', supportSpeed, speed.key, 'not a speed');
-  const ifaceSpeed = c.getAny('support_material_interface_speed', 'support_interface_speed');
-  if (ifaceSpeed) {
-    const v = numOrPercent(ifaceSpeed.value);
-    const base = supportSpeed ?? (SCHEMA.supportSpeed.default as number);
-    c.set('supportInterfaceSpeed', v && round(v.percent ? (base * v.value) / 100 : v.value, 2), ifaceSpeed.key, 'not a speed');
-  }
+  const body = c.getAny('support_material_speed', 'support_speed');
+  const supportSpeed = body ? speed(body.value, undefined) : undefined;
+  if (body) c.set('supportSpeed', supportSpeed, body.key, 'not a speed');
+  const iface = c.getAny('support_material_interface_speed', 'support_interface_speed');
+  if (iface) c.set('supportInterfaceSpeed', speed(iface.value, supportSpeed ?? (SCHEMA.supportSpeed.default as number)), iface.key, 'not a speed');
   for (const [setting, keys] of [
     ['supportTreeBranchAngle', ['support_tree_angle', 'tree_support_branch_angle']],
     ['supportTreeBranchDiameter', ['support_tree_branch_diameter', 'tree_support_branch_diameter']],
