@@ -6,8 +6,9 @@
 import type { Pt } from '../geometry/types.js';
 import type { LayerPlan } from './types.js';
 
-function polyLength(points: readonly Pt[], closed: boolean): number {
-  let len = 0;
+/** Length of the path through `points` (from `from` first, when given), mm. */
+function polyLength(points: readonly Pt[], closed: boolean, from?: Pt): number {
+  let len = from ? Math.hypot(points[0].x - from.x, points[0].y - from.y) : 0;
   for (let i = 1; i < points.length; i++) len += Math.hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
   if (closed && points.length > 2) {
     const a = points[points.length - 1], b = points[0];
@@ -25,11 +26,8 @@ export function naiveLayerSeconds(layer: LayerPlan, from?: Pt): { extrude: numbe
       extrude += polyLength(s.points, s.closed) / s.speed;
       at = s.closed ? s.points[0] : s.points[s.points.length - 1];
     } else {
-      // the travel from where the last step ended, summed in the same order as its points
-      const pts = s.points;
-      let len = at ? Math.hypot(pts[0].x - at.x, pts[0].y - at.y) : 0;
-      for (let i = 1; i < pts.length; i++) len += Math.hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
-      travel += len / 1000 / s.speed;
+      // the travel from where the last step ended
+      travel += polyLength(s.points, false, at) / s.speed;
       at = s.points[s.points.length - 1];
     }
   }

@@ -38,8 +38,9 @@ interface Ctx {
   /** Kind of the group being printed, and of the group the last extrusion belonged to. */
   kind: PathGroup['kind'] | null;
   lastKind: PathGroup['kind'] | null;
-  /** The part's islands of this layer and the one below, and their guard once a support travel asks. */
-  part: readonly ExPolygon[];
+  /** The part's islands of this layer and of the one below, and their guard, made when a support travel first asks. */
+  islands: readonly ExPolygon[];
+  below: readonly ExPolygon[];
   guard: PartGuard | null;
   object?: number;
 }
@@ -79,7 +80,7 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   const length = pathLength(from, points);
   let retract = cfg.retractionEnabled && cfg.retractionDistance > 0 && (forceRetract || ((leaves || length > minTravelUm) && length > minTravelUm * 0.25));
   if (retract && !forceRetract && cfg.supportLimitRetractions && ctx.kind === 'support' && ctx.lastKind === 'support' && points.length === 1) {
-    retract = !(ctx.guard ??= new PartGuard(ctx.part)).clear(from, to);
+    retract = !(ctx.guard ??= new PartGuard([...ctx.islands, ...ctx.below])).clear(from, to);
   }
   ctx.steps.push({ kind: 'travel', points, retract, zHop: retract ? cfg.zHop : 0, speed });
   ctx.at = to;
@@ -258,8 +259,10 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
   // the part's islands, here and on the layer below (support travels keep off them)
   const islands: ExPolygon[] = [];
   for (const g of layer.groups) if (g.kind === 'island' && g.area) islands.push(g.area);
-  const part = state.below?.length ? [...islands, ...state.below] : islands;
-  const ctx: Ctx = { cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined, kind: null, lastKind: null, part, guard: null };
+  const ctx: Ctx = {
+    cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined,
+    kind: null, lastKind: null, islands, below: state.below ?? [], guard: null,
+  };
   for (const kind of GROUP_ORDER) {
     const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
     // travels into another group are not combed (printGroup starts each group without a comb area)

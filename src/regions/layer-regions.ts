@@ -103,8 +103,9 @@ export class RegionsRun {
         });
       }
     }
-    const beyond = { any: islands.some((r) => r.unsupported.length > 0), grownUm: w / 2 };
-    const overhang = cfg.supportEnabled ? overhangOf(this.#layerSection(i), below, z.height, cfg, i === 0, beyond) : [];
+    const overhang = cfg.supportEnabled
+      ? overhangOf(this.#layerSection(i), below, z.height, cfg, i === 0, { any: islands.some((r) => r.unsupported.length > 0), grownUm: w / 2 })
+      : [];
     return { ...z, islands, overhang, support: null };
   }
 

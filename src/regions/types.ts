@@ -52,7 +52,6 @@ export interface SupportAreas {
   circles?: (RegularPolygon | null)[];
 }
 
-
 /** Raft layer areas (filled by the raft pass). */
 export interface RaftArea {
   kind: 'base' | 'interface' | 'surface';

@@ -115,6 +115,11 @@ export class ModelLayers {
     return parts;
   }
 
+  /** `sectionsBetween(j, a, b)` as a point index: the section's own (kept) index when that is one layer. */
+  indexBetween(j: number, a: number, b: number): AreaIndex {
+    return a === b ? this.sectionIndex(j + a) : new AreaIndex(this.sectionsBetween(j, a, b));
+  }
+
   /**
    * Split the support area of layer j into roof (under the part, within the interface layers above the top
    * Z gap), floor (on the part, within the floor layers above the bottom Z gap) and body.

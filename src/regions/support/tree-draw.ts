@@ -48,8 +48,8 @@ export interface DrawLayer {
   collision: readonly ExPolygon[];
   /** The part within the bottom gap below ('everywhere' placement): support is cut away from it too. */
   gapBelow: readonly ExPolygon[];
-  /** `gapBelow` as a point index, when one is at hand already (made here otherwise). */
-  gapIndex?: () => AreaIndex;
+  /** `gapBelow` as a point index, asked for only when a branch comes near it. */
+  gapIndex: () => AreaIndex;
   /** Support line width, µm. */
   widthUm: number;
 }
@@ -113,7 +113,7 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
   const gapBoxes = d.gapBelow.map((x) => boundsOf([x]));
   let gapIndex: AreaIndex | null = null;
   const onPart = (c: Disc) =>
-    meetsAny({ minX: c.x - c.r, minY: c.y - c.r, maxX: c.x + c.r, maxY: c.y + c.r }, gapBoxes) && (gapIndex ??= d.gapIndex ? d.gapIndex() : new AreaIndex(d.gapBelow)).meetsDisc(c.x, c.y, c.r);
+    meetsAny({ minX: c.x - c.r, minY: c.y - c.r, maxX: c.x + c.r, maxY: c.y + c.r }, gapBoxes) && (gapIndex ??= d.gapIndex()).meetsDisc(c.x, c.y, c.r);
   const minR = (MIN_SUPPORT_WIDTHS * d.widthUm) / 2;
   // clusters of overlapping circles clear of the collision, printable, and touching neither the roof nor
   // the part below need only their union; the rest are cut to what may and can be printed

@@ -119,8 +119,7 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
     const base = j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
-    // a one-layer gap is the section below, whose index the roof and floor split shares
-    const gapIndex = bottom === 1 ? () => model.sectionIndex(j - 1) : undefined;
+    const gapIndex = () => model.indexBetween(j, -bottom, -1);
     const { areas: s, circles } = yield* drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, gapIndex, widthUm: w });
     below = s;
     out[j] = { ...(yield* splitNear(model, j, s)), whole: s, circles };
