@@ -31,15 +31,18 @@ for (const method of methods) {
 const burn = (ms: number) => `const t0 = process.cpuUsage(); for (;;) { const u = process.cpuUsage(t0); if (u.user + u.system >= ${ms * 1000}) break; }`;
 
 test('measureCommand: CPU time from the kernel covers the process, its threads and its waited-for children', { skip: process.platform !== 'linux' && 'CPU accounting reads /proc' }, async () => {
-  // main thread 200 ms, two worker threads 200 ms each, a child process 200 ms: at least 0.8 s in all
+  // main thread 200 ms, two worker threads 200 ms each, a child process 200 ms: at least 0.8 s in all. One at a
+  // time: process.cpuUsage in a worker counts the whole process, so two burning at once would each stop early
   const script = `
     const { Worker } = require('node:worker_threads');
     const { spawnSync } = require('node:child_process');
     const burn = ${JSON.stringify(burn(200))};
-    const workers = [0, 1].map(() => new Worker(burn, { eval: true }));
-    spawnSync(process.execPath, ['-e', burn], { stdio: 'inherit' });
-    eval(burn);
-    Promise.all(workers.map((w) => new Promise((r) => w.on('exit', r)))).then(() => process.exit(0));
+    const work = () => new Promise((r) => new Worker(burn, { eval: true }).on('exit', r));
+    work().then(work).then(() => {
+      spawnSync(process.execPath, ['-e', burn], { stdio: 'inherit' });
+      eval(burn);
+      process.exit(0);
+    });
   `;
   const m = await measureCommand(process.execPath, ['-e', script], { method: 'none', timeoutMs: 60_000 });
   assert.equal(failureReason(m), '');
