@@ -4,12 +4,12 @@
  * not go (the part grown by the XY gap, less under overhangs), the shadow of the part for build-plate-only
  * support, and the split of a support area into roof, body and floor.
  */
-import { area, difference, intersection, offset, union } from '../../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
+import { area, boundsOf, difference, intersection, offset, union } from '../../geometry/clip.js';
+import { UM_PER_MM, type Bounds, type ExPolygon } from '../../geometry/types.js';
 import type { Config } from '../../settings/resolve.js';
 import type { LayerRegions, SupportAreas } from '../types.js';
 import { sectionOf } from '../types.js';
-import { AreaIndex } from './area-index.js';
+import { AreaIndex } from '../../geometry/area-index.js';
 
 /** Under an overhang, support may come this close to the part, in support line widths ("Z overrides XY"). */
 export const OVERHANG_XY_WIDTHS = 0.5;
@@ -22,6 +22,8 @@ export class ModelLayers {
   readonly #sections = new Map<number, ExPolygon[]>();
   /** Per layer, the section as a point index (made on first use). */
   readonly #index = new Map<number, AreaIndex>();
+  /** Per layer, the bounds of each island of the section (made on first use). */
+  readonly #boxes = new Map<number, Bounds[]>();
   /** Union of the sections of layers 0..j (build-plate placement), filled on demand bottom-up. */
   readonly #shadow: ExPolygon[][] = [];
 
@@ -49,15 +51,24 @@ export class ModelLayers {
     return ix;
   }
 
+  /** The bounds of each island of layer j's section. */
+  sectionBoxes(j: number): Bounds[] {
+    let b = this.#boxes.get(j);
+    if (!b) this.#boxes.set(j, (b = this.section(j).map((a) => boundsOf([a]))));
+    return b;
+  }
+
   /** Forget sections above layer j (support is computed top-down). */
   release(j: number): void {
     for (const k of this.#sections.keys()) if (k > j) this.#sections.delete(k);
     for (const k of this.#index.keys()) if (k > j) this.#index.delete(k);
+    for (const k of this.#boxes.keys()) if (k > j) this.#boxes.delete(k);
   }
 
   /** Forget what was kept for layers below j (drawing goes from the bed up). */
   releaseBelow(j: number): void {
     for (const k of this.#index.keys()) if (k < j) this.#index.delete(k);
+    for (const k of this.#boxes.keys()) if (k < j) this.#boxes.delete(k);
   }
 
   /** Support line width, µm. */

@@ -9,7 +9,7 @@ import { boundsOf, difference, intersection, offset, union, unionRings } from '.
 import type { Bounds, ExPolygon, Polygon } from '../../geometry/types.js';
 import { regularPolygon, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
-import { AreaIndex } from './area-index.js';
+import { AreaIndex } from '../../geometry/area-index.js';
 import { PointGrid } from './point-grid.js';
 import { ITEMS_PER_STEP } from './tree-nodes.js';
 

@@ -6,7 +6,7 @@
  * radius, and then goes straight down onto the part); radii grow from the tip to the branch radius, and
  * merged trunks further.
  */
-import type { Found } from './area-index.js';
+import type { Found } from '../../geometry/area-index.js';
 import { PointGrid } from './point-grid.js';
 import { classOf, type Blocked, type Keep, type TreeVolumes } from './tree-volumes.js';
 

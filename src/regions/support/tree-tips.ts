@@ -5,7 +5,7 @@
  */
 import { offset } from '../../geometry/clip.js';
 import type { ExPolygon, Pt } from '../../geometry/types.js';
-import { AreaIndex } from './area-index.js';
+import { AreaIndex } from '../../geometry/area-index.js';
 import { PointGrid } from './point-grid.js';
 
 /** Edge points closer than this share of the spacing to a point already chosen are left out. */

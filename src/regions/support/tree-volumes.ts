@@ -15,7 +15,7 @@
  */
 import { offset, union } from '../../geometry/clip.js';
 import type { ExPolygon } from '../../geometry/types.js';
-import { AreaIndex, type Found } from './area-index.js';
+import { AreaIndex, type Found } from '../../geometry/area-index.js';
 import type { ModelLayers } from './model-layers.js';
 
 /** Radius classes are at most this far apart, µm. */

@@ -12,12 +12,12 @@
  * 3. from the bed up (tree-draw.ts), each layer's branch cross-sections and roof, the roof only where what is
  *    below holds it, off the part, split into body, roof and floor.
  */
-import { area, intersection, offset, union } from '../../geometry/clip.js';
+import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
-import { circle, cutAway, drawLayer, type Disc } from './tree-draw.js';
+import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
 import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
 import { radiusClasses, TreeVolumes } from './tree-volumes.js';
@@ -137,8 +137,12 @@ function* splitNear(model: ModelLayers, j: number, s: ExPolygon[]): Generator<vo
   model.releaseBelow(j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount);
   if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
   const near: ExPolygon[] = [], far: ExPolygon[] = [];
-  for (const a of s) {
-    const hit = nearby.some((k) => model.sectionIndex(k).meets(a));
+  for (let i = 0; i < s.length; i++) {
+    const a = s[i];
+    // an island whose bounds meet no island of a layer's section cannot meet that section
+    const box = boundsOf([a]);
+    let hit = false;
+    for (let t = 0; t < nearby.length && !hit; t++) hit = meetsAny(box, model.sectionBoxes(nearby[t])) && model.sectionIndex(nearby[t]).meets(a);
     (hit ? near : far).push(a);
   }
   // islands apart split apart: a few at a time

@@ -4,9 +4,9 @@
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { pointInArea } from '../../geometry/clip.js';
-import { segmentsMeet } from '../../geometry/contain.js';
-import type { ExPolygon, Pt } from '../../geometry/types.js';
+import { pointInArea } from './clip.js';
+import { segmentsMeet } from './contain.js';
+import type { ExPolygon, Pt } from './types.js';
 import { AreaIndex } from './area-index.js';
 
 function rng(seed: number): () => number {

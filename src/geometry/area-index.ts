@@ -4,9 +4,9 @@
  * query looks at the few edges near the point instead of every edge. Tree support asks these questions for
  * every branch on every layer.
  */
-import { pointInArea } from '../../geometry/clip.js';
-import { ringBounds, segmentsMeet } from '../../geometry/contain.js';
-import type { ExPolygon, Pt } from '../../geometry/types.js';
+import { pointInArea } from './clip.js';
+import { ringBounds, segmentsMeet } from './contain.js';
+import type { ExPolygon, Pt } from './types.js';
 
 /** How far beyond the boundary a point pushed out of the areas lands, µm. */
 export const OUTSIDE_MARGIN_UM = 5;
@@ -344,7 +344,13 @@ export class AreaIndex {
         }
       }
     }
-    for (let k = 0; k < this.#firsts.length; k += 2) if (pointInArea({ x: this.#firsts[k], y: this.#firsts[k + 1] }, a)) return true;
+    // a ring of the areas inside `a` has its first vertex within a's bounds
+    const { minX, minY, maxX, maxY } = ringBounds(a.outer);
+    const f = this.#firsts;
+    for (let k = 0; k < f.length; k += 2) {
+      const x = f[k], y = f[k + 1];
+      if (x >= minX && x <= maxX && y >= minY && y <= maxY && pointInArea({ x, y }, a)) return true;
+    }
     return false;
   }
 
