@@ -98,9 +98,11 @@ function extrude(ctx: Ctx, style: Style, points: Pt[], closed: boolean, width: n
     height: ctx.layer.height,
     speed: style.speed,
     flow: style.flow,
+    // always present (undefined when unset), so every extrusion has one shape and the passes over the
+    // plan read its steps through monomorphic property loads
+    object: ctx.object,
+    fan: style.fan,
   };
-  if (ctx.object !== undefined) step.object = ctx.object;
-  if (style.fan !== undefined) step.fan = style.fan;
   ctx.steps.push(step);
   ctx.lastKind = ctx.kind;
   ctx.at = closed ? points[0] : points[points.length - 1];

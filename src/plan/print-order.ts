@@ -97,6 +97,7 @@ export function overAirMatters(role: PathRole, cfg: Config): boolean {
 
 /** Sort a group's entries into print order (stable: entries of one role keep the builder's order). */
 export function sortEntries(entries: readonly PathEntry[], wallOrder: Config['wallOrder']): PathEntry[] {
+  if (entries.length < 2) return entries.slice();
   const rank = (e: PathEntry) => PRINT_ORDER.indexOf(e.role);
   const wallKey = (e: PathEntry) => (e.wall ?? 0) * (wallOrder === 'inner-first' ? -1 : 1);
   return entries
