@@ -6,7 +6,7 @@
  */
 import { pointInArea } from './clip.js';
 import { ringBounds, segmentsMeet } from './contain.js';
-import type { ExPolygon, Pt } from './types.js';
+import type { Bounds, ExPolygon } from './types.js';
 
 /** How far beyond the boundary a point pushed out of the areas lands, µm. */
 export const OUTSIDE_MARGIN_UM = 5;
@@ -330,7 +330,8 @@ export class AreaIndex {
    */
   meets(a: ExPolygon): boolean {
     if (this.empty || a.outer.length === 0) return false;
-    const found = this.#edgesNear(a.outer);
+    const bounds = ringBounds(a.outer);
+    const found = this.#edgesNear(bounds);
     if (found === 0) return this.contains(a.outer[0].x, a.outer[0].y);
     const e = this.#e, near = nearEdges;
     for (let r = -1; r < a.holes.length; r++) {
@@ -345,7 +346,7 @@ export class AreaIndex {
       }
     }
     // a ring of the areas inside `a` has its first vertex within a's bounds
-    const { minX, minY, maxX, maxY } = ringBounds(a.outer);
+    const { minX, minY, maxX, maxY } = bounds;
     const f = this.#firsts;
     for (let k = 0; k < f.length; k += 2) {
       const x = f[k], y = f[k + 1];
@@ -354,9 +355,9 @@ export class AreaIndex {
     return false;
   }
 
-  /** The areas' edges (in `nearEdges`, possibly repeated) whose bounds meet those of `ring`; returns how many. */
-  #edgesNear(ring: readonly Pt[]): number {
-    const { minX, minY, maxX, maxY } = ringBounds(ring);
+  /** The areas' edges (in `nearEdges`, possibly repeated) whose bounds meet `bounds`; returns how many. */
+  #edgesNear(bounds: Bounds): number {
+    const { minX, minY, maxX, maxY } = bounds;
     const gx = this.#minX + this.#nx * this.#cell, gy = this.#minY + this.#ny * this.#cell;
     if (maxX < this.#minX || maxY < this.#minY || minX > gx || minY > gy) return 0;
     const e = this.#e;

@@ -53,20 +53,6 @@ export function orderNearest(
   from: Pt,
 ): Array<[number, number]> {
   if (count === 0) return [];
-  if (count === 1) {
-    // one item (a support branch's loop, a lone line): its nearest candidate, the first on a tie
-    const c = candidates(0);
-    let best = 0, bestD = Infinity;
-    for (let k = 0; k < c.length; k++) {
-      const dx = c[k].x - from.x, dy = c[k].y - from.y;
-      const d = dx * dx + dy * dy;
-      if (d < bestD) {
-        bestD = d;
-        best = k;
-      }
-    }
-    return [[0, best]];
-  }
   // flatten candidate start points
   const owner: number[] = [];
   const which: number[] = [];
