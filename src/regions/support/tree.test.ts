@@ -7,7 +7,7 @@ import { ModelLayers } from './model-layers.js';
 import {
   BOX_ON_POST, LEDGE_OVER_STEP, LEDGE_OVER_WIDE_STEP, T_SHAPE, boxLayers, heldShare, intoPart, supportArea, supportConfig, supported, type Box,
 } from './test-models.js';
-import { circle } from './tree-draw.js';
+import { CIRCLE_TOLERANCE_UM, circle } from './tree-draw.js';
 import { planTree } from './tree.js';
 
 const MODELS: [string, Box[]][] = [
@@ -16,8 +16,8 @@ const MODELS: [string, Box[]][] = [
   ['a ledge over a lower step', LEDGE_OVER_STEP],
 ];
 
-/** Tolerance for clipping and circle chords, µm. */
-const TOL_UM = 50;
+/** Tolerance for clipping and circle chords (a drawn circle lies up to CIRCLE_TOLERANCE_UM inside the true one), µm. */
+const TOL_UM = CIRCLE_TOLERANCE_UM;
 /** Area below which a difference counts as empty (polygon round-off), µm². */
 const SLIVER_UM2 = 0.01 * 1e6;
 /**
