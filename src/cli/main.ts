@@ -38,7 +38,7 @@ Slice options (slice and preview):
   --scale F | X,Y,Z      scale each model (2 = twice the size), or each axis
   --rotate Z | X,Y,Z     turn each model (degrees) about Z, or about X, then Y, then Z
   --up-axis y            the models are Y-up (three.js, many OBJ exports): stand them up
-  --threads N            worker threads (default: one per core); output is identical for any N
+  --threads N            threads (default: one per core above two cores, else one); same output for any N
   -q, --quiet            no progress bar, summary or warnings
   --infill-shader FILE   custom infill from a GLSL cellular() shader (IceSL infiller format)
   --infill-image FILE    custom infill from a cells.png image (with --infill-image-pixel-size MM)
