@@ -16,8 +16,13 @@ const MODELS: [string, Box[]][] = [
   ['a ledge over a lower step', LEDGE_OVER_STEP],
 ];
 
-/** Tolerance for clipping and circle chords (a drawn circle lies up to CIRCLE_TOLERANCE_UM inside the true one), µm. */
-const TOL_UM = CIRCLE_TOLERANCE_UM;
+/** Tolerance for clipping, µm. */
+const TOL_UM = 50;
+/**
+ * How far a layer's support may reach past the one below beyond the move, µm: a drawn circle lies up to
+ * CIRCLE_TOLERANCE_UM inside the true one, so a branch's cross-section above may stand out that much.
+ */
+const STACK_TOL_UM = Math.max(TOL_UM, CIRCLE_TOLERANCE_UM);
 /** Area below which a difference counts as empty (polygon round-off), µm². */
 const SLIVER_UM2 = 0.01 * 1e6;
 /**
@@ -96,14 +101,14 @@ for (const [name, boxes] of MODELS) {
       const here = supportArea(layers[j]), above = supportArea(layers[j + 1]);
       if (here.length === 0) continue;
       const m = rules.step(j + 1);
-      const spread = area(difference(here, offset(above, m + grow + TOL_UM)));
+      const spread = area(difference(here, offset(above, m + grow + STACK_TOL_UM)));
       assert.ok(spread <= SLIVER_UM2, `layer ${j} reaches ${(spread / 1e6).toFixed(3)} mm² beyond layer ${j + 1}`);
       // and nothing above hangs further than a move beyond it, or beyond the part it stands on (with its XY
       // gap: a branch ending beside the edge of a step is cut back by the gap on the step's top layer)
       const part: ExPolygon[] = [];
       for (let k = Math.max(0, j - cfg.supportBottomGapLayers); k <= j; k++) part.push(...model.section(k));
       const base = part.length ? union(here, offset(part, cfg.supportXYGap * UM_PER_MM)) : here;
-      const hang = area(difference(above, offset(base, m + TOL_UM)));
+      const hang = area(difference(above, offset(base, m + STACK_TOL_UM)));
       assert.ok(hang <= HANG_UM2, `layer ${j + 1} hangs ${(hang / 1e6).toFixed(3)} mm² over air`);
       checked++;
     }
