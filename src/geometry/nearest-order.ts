@@ -53,6 +53,21 @@ export function orderNearest(
   from: Pt,
 ): Array<[number, number]> {
   if (count === 0) return [];
+  if (count === 1) {
+    // one item (a tree branch's loop, its one line): its nearest start, the first on a tie, as the scan below finds it
+    const c = candidates(0);
+    let best = 0;
+    let bestD = Infinity;
+    for (let k = 0; k < c.length; k++) {
+      const ddx = c[k].x - from.x, ddy = c[k].y - from.y;
+      const d = ddx * ddx + ddy * ddy;
+      if (d < bestD) {
+        bestD = d;
+        best = k;
+      }
+    }
+    return [[0, best]];
+  }
   // flatten candidate start points
   const owner: number[] = [];
   const which: number[] = [];
