@@ -6,7 +6,7 @@
  */
 import { pointInArea } from './clip.js';
 import { ringBounds, segmentsMeet } from './contain.js';
-import type { Bounds, ExPolygon } from './types.js';
+import { hypot, type Bounds, type ExPolygon } from './types.js';
 
 /** How far beyond the boundary a point pushed out of the areas lands, µm. */
 export const OUTSIDE_MARGIN_UM = 5;
@@ -212,14 +212,14 @@ export class AreaIndex {
     // out through the nearest edge: along the way from the point to it, or along the edge's outward normal
     const d = Math.sqrt(best);
     const ex = e[4 * bi + 2] - e[4 * bi], ey = e[4 * bi + 3] - e[4 * bi + 1];
-    const el = Math.hypot(ex, ey) || 1;
+    const el = hypot(ex, ey) || 1;
     const ways: [number, number][] = [];
     if (d > 1e-6) ways.push([(bx - x) / d, (by - y) / d]);
     ways.push([ey / el, -ex / el]);
     for (const [ux, uy] of ways) {
       for (const m of [OUTSIDE_MARGIN_UM, 4 * OUTSIDE_MARGIN_UM]) {
         const qx = bx + ux * m, qy = by + uy * m;
-        if (Math.hypot(qx - x, qy - y) <= reach && !this.contains(qx, qy)) return { x: qx, y: qy };
+        if (hypot(qx - x, qy - y) <= reach && !this.contains(qx, qy)) return { x: qx, y: qy };
       }
     }
     return null;
@@ -268,7 +268,7 @@ export class AreaIndex {
     // candidates within maxUm, then tested nearest first (the earliest found on a tie): the first clear one wins
     let n = 0;
     const candidate = (qx: number, qy: number) => {
-      const dq = Math.hypot(qx - x, qy - y);
+      const dq = hypot(qx - x, qy - y);
       if (!(dq <= maxUm)) return;
       if (n === cand.d.length) cand = growCandidates(cand);
       cand.x[n] = qx;
@@ -299,7 +299,7 @@ export class AreaIndex {
           if (len2 === 0) continue;
           const u = Math.min(1, Math.max(0, ((x - x1) * ex + (y - y1) * ey) / len2));
           const bx = x1 + u * ex, by = y1 + u * ey;
-          const db = Math.hypot(x - bx, y - by);
+          const db = hypot(x - bx, y - by);
           if (db > reach) continue;
           const el = Math.sqrt(len2);
           candidate(bx + (ey / el) * want, by - (ex / el) * want);

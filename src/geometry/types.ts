@@ -32,6 +32,15 @@ export interface Bounds {
   maxY: number;
 }
 
+/**
+ * Length of the vector (dx, dy). Math.hypot guards against overflow no coordinate here comes near, and
+ * V8 does not inline it: every call boxes its result, and in the planner's and the tree support's loops
+ * that garbage was megabytes a slice.
+ */
+export function hypot(dx: number, dy: number): number {
+  return Math.sqrt(dx * dx + dy * dy);
+}
+
 /** Convert millimetres to integer micrometres. */
 export function mmToUm(mm: number): number {
   return Math.round(mm * UM_PER_MM);

@@ -1,3 +1,4 @@
+import { hypot } from '../geometry/types.js';
 /**
  * Level-set tracing on a sampled scalar field (marching squares): the crossings of the level on grid edges
  * are joined cell by cell into polylines, open where they leave the grid and closed otherwise. Saddle cells
@@ -171,8 +172,8 @@ export function contourLength(g: ScalarGrid, level: number, weight?: (i: number,
       if (sb !== sc) { px.push(1); py.push(b / (b - c)); }
       if (sc !== sd) { px.push(1 - c / (c - d)); py.push(1); }
       if (sd !== sa) { px.push(0); py.push(1 - d / (d - a)); }
-      let l = Math.hypot(px[1] - px[0], py[1] - py[0]);
-      if (px.length === 4) l += Math.hypot(px[3] - px[2], py[3] - py[2]);
+      let l = hypot(px[1] - px[0], py[1] - py[0]);
+      if (px.length === 4) l += hypot(px[3] - px[2], py[3] - py[2]);
       total += (weight ? weight(i, j) : 1) * l * h;
     }
   }

@@ -7,6 +7,7 @@
 import type { RegionIndex } from './region-index.js';
 import type { ScalarGrid } from './contour.js';
 import { closestOnSegment } from './geom-util.js';
+import { hypot } from '../geometry/types.js';
 
 export interface DistanceField extends ScalarGrid {
   /** Nearest boundary edge of each node (−1 if none). */
@@ -168,7 +169,7 @@ export function restoreCorners(ix: RegionIndex, pts: ContourPtIn[], closed: bool
   const n = pts.length;
   const dir = (e: number) => {
     const ux = ix.ex1[e] - ix.ex0[e], uy = ix.ey1[e] - ix.ey0[e];
-    const l = Math.hypot(ux, uy);
+    const l = hypot(ux, uy);
     return { x: ux / l, y: uy / l };
   };
   for (let k = 0; k < n; k++) {
@@ -185,7 +186,7 @@ export function restoreCorners(ix: RegionIndex, pts: ContourPtIn[], closed: bool
     const wx = b.x - a.x, wy = b.y - a.y;
     const sA = (wx * db.y - wy * db.x) / den;
     const cx = a.x + sA * da.x, cy = a.y + sA * da.y;
-    if (Math.hypot(cx - a.x, cy - a.y) > reach || Math.hypot(cx - b.x, cy - b.y) > reach) continue;
+    if (hypot(cx - a.x, cy - a.y) > reach || hypot(cx - b.x, cy - b.y) > reach) continue;
     out.push({ x: cx, y: cy, tag: -1 });
   }
   return out;

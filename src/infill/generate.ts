@@ -15,7 +15,7 @@
  * them thinned the lines of small regions by 10–15 %. Patterns that change with Z on purpose ('volume':
  * gyroid, cubic) run once, so their period stays the same from layer to layer and the 3D structure is kept.
  */
-import type { Pt } from '../geometry/types.js';
+import { hypot, type Pt } from '../geometry/types.js';
 import type { InfillLayerInput, InfillParams, InfillPattern, InfillResult, PatternId } from './types.js';
 import { PATTERNS } from './registry.js';
 import { type RegionGeom, type RegionIndex, indexRegion, regionGeom } from './region-index.js';
@@ -57,7 +57,7 @@ function lengthOf(paths: readonly Pt[][], closed: boolean): number {
   let l = 0;
   for (const p of paths) {
     l += polylineLength(p);
-    if (closed && p.length > 2) l += Math.hypot(p[0].x - p[p.length - 1].x, p[0].y - p[p.length - 1].y);
+    if (closed && p.length > 2) l += hypot(p[0].x - p[p.length - 1].x, p[0].y - p[p.length - 1].y);
   }
   return l;
 }

@@ -16,7 +16,7 @@
  *     a branch or the wall.
  * All plain arrays; one forest value per layer is handed to the next.
  */
-import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
+import { hypot, type ExPolygon, type Polyline, type Pt } from '../geometry/types.js';
 import { type Hit, type RegionIndex, nearestBoundary, pointInside, segmentCrosses } from './region-index.js';
 import { closestOnSegment, ringsOf, rowCrossings } from './geom-util.js';
 
@@ -93,7 +93,7 @@ export function prune(f: Forest, dist: number): Forest {
         break;
       }
       const dx = f.xs[p] - f.xs[v], dy = f.ys[p] - f.ys[v];
-      const len = Math.hypot(dx, dy);
+      const len = hypot(dx, dy);
       if (len <= rem) {
         dead[v] = 1;
         rem -= len;
@@ -126,7 +126,7 @@ export function straighten(f: Forest, dist: number): void {
     if (l2 === 0) continue;
     const t = Math.max(0, Math.min(1, ((f.xs[v] - ax) * ux + (f.ys[v] - ay) * uy) / l2));
     const tx = ax + t * ux - f.xs[v], ty = ay + t * uy - f.ys[v];
-    const d = Math.hypot(tx, ty);
+    const d = hypot(tx, ty);
     if (d === 0) continue;
     const s = Math.min(1, dist / d);
     f.xs[v] += tx * s;
@@ -259,7 +259,7 @@ export function grow(f: Forest, need: readonly ExPolygon[], ix: RegionIndex, fp:
     let attach = -1;
     if (t && !segmentCrosses(ix, p.x, p.y, t.x, t.y, ON_BOUNDARY_UM, scratch)) {
       const c = t.v, q = f.par[c];
-      const len = Math.hypot(f.xs[q] - f.xs[c], f.ys[q] - f.ys[c]);
+      const len = hypot(f.xs[q] - f.xs[c], f.ys[q] - f.ys[c]);
       if (t.t * len < 1) attach = c;
       else if ((1 - t.t) * len < 1) attach = q;
       else {

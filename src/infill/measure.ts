@@ -5,7 +5,7 @@
  * poke out by half a width). Pixel size defaults to a tenth of the line width: error well under 1 %.
  * The density setting is not the footprint but the extruded lines (see density.ts): `lineDensity`.
  */
-import type { ExPolygon, Pt } from '../geometry/types.js';
+import { hypot, type ExPolygon, type Pt } from '../geometry/types.js';
 import type { InfillResult } from './types.js';
 import { area as regionArea, clipLines, offset } from '../geometry/clip.js';
 import { ringsOf, rowCrossings } from './geom-util.js';
@@ -39,7 +39,7 @@ function linearRange(a: number, b: number, lo: number, hi: number): [number, num
 
 function drawCapsule(R: Raster, A: Pt, B: Pt, r: number): void {
   const dx = B.x - A.x, dy = B.y - A.y;
-  const len = Math.hypot(dx, dy);
+  const len = hypot(dx, dy);
   const j0 = Math.max(0, Math.ceil((Math.min(A.y, B.y) - r - R.minY) / R.p - 0.5));
   const j1 = Math.min(R.H - 1, Math.floor((Math.max(A.y, B.y) + r - R.minY) / R.p - 0.5));
   for (let j = j0; j <= j1; j++) {
@@ -123,10 +123,10 @@ export function measuredDensity(result: InfillResult, region: readonly ExPolygon
 /** Total length of all lines and loops, µm. */
 export function pathLength(result: InfillResult): number {
   let l = 0;
-  for (const pts of result.lines) for (let i = 1; i < pts.length; i++) l += Math.hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+  for (const pts of result.lines) for (let i = 1; i < pts.length; i++) l += hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
   for (const pts of result.loops) for (let i = 0; i < pts.length; i++) {
     const a = pts[i], b = pts[(i + 1) % pts.length];
-    l += Math.hypot(b.x - a.x, b.y - a.y);
+    l += hypot(b.x - a.x, b.y - a.y);
   }
   return l;
 }

@@ -2,7 +2,7 @@
  * A clipped piece of infill line: integer-µm points, and where each end meets the region boundary
  * (null when the end lies inside the region). The clippers produce pieces; the linker joins them.
  */
-import type { Pt } from '../geometry/types.js';
+import { hypot, type Pt } from '../geometry/types.js';
 import type { Anchor } from './region-index.js';
 
 export interface Piece {
@@ -14,7 +14,7 @@ export interface Piece {
 /** Length of a polyline, µm. */
 export function polylineLength(pts: readonly Pt[]): number {
   let l = 0;
-  for (let i = 1; i < pts.length; i++) l += Math.hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+  for (let i = 1; i < pts.length; i++) l += hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
   return l;
 }
 

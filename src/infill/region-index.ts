@@ -3,7 +3,7 @@
  * built spatial index over its edges: a uniform grid for segment/edge intersection and nearest-boundary
  * queries, and horizontal bands for point-in-region tests. Built once per layer call, plain arrays only.
  */
-import type { ExPolygon, Polygon } from '../geometry/types.js';
+import { hypot, type ExPolygon, type Polygon } from '../geometry/types.js';
 import { closestOnSegment } from './geom-util.js';
 
 /** One closed ring: vertex coordinates and cumulative arc length (cum[i] = length up to vertex i, cum[n] = total). */
@@ -68,7 +68,7 @@ function ringOf(poly: Polygon): Ring | null {
   }
   for (let i = 0; i < n; i++) {
     const j = i + 1 === n ? 0 : i + 1;
-    cum[i + 1] = cum[i] + Math.hypot(xs[j] - xs[i], ys[j] - ys[i]);
+    cum[i + 1] = cum[i] + hypot(xs[j] - xs[i], ys[j] - ys[i]);
   }
   return { n, xs, ys, cum, length: cum[n] };
 }
@@ -307,7 +307,7 @@ export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number,
 export function segmentCrosses(ix: RegionIndex, x0: number, y0: number, x1: number, y1: number, endSlackUm: number, scratch: Hit[]): boolean {
   segmentHits(ix, x0, y0, x1, y1, scratch);
   if (scratch.length === 0) return false;
-  const len = Math.hypot(x1 - x0, y1 - y0);
+  const len = hypot(x1 - x0, y1 - y0);
   const slack = len > 0 ? endSlackUm / len : 1;
   for (const h of scratch) if (h.t > slack && h.t < 1 - slack) return true;
   return false;

@@ -5,7 +5,7 @@
  */
 import { boundsOf, pointInArea } from '../geometry/clip.js';
 import { ringBounds } from '../geometry/contain.js';
-import type { Bounds, ExPolygon, Pt } from '../geometry/types.js';
+import { hypot, type Bounds, type ExPolygon, type Pt } from '../geometry/types.js';
 
 /** Pieces shorter than this (µm) keep their neighbour's flag: no run is shorter than a few micrometres. */
 const MIN_PIECE_UM = 5;
@@ -84,7 +84,7 @@ export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex
     ts.length = 0;
     crossings(a, b, idx, ts);
     ts.sort((p, q) => p - q);
-    const len = Math.hypot(b.x - a.x, b.y - a.y);
+    const len = hypot(b.x - a.x, b.y - a.y);
     let prevT = 0;
     let prev = a;
     const cuts = ts.filter((t, i) => (i === 0 || t - ts[i - 1] > 1e-9) && t * len > MIN_PIECE_UM && (1 - t) * len > MIN_PIECE_UM);

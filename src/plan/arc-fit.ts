@@ -13,7 +13,7 @@
  * run that fits. The arc's end points are points of the original path, so the path still passes through
  * them; E, time and filament follow the arc's own length (plan/moves.ts).
  */
-import type { Pt } from '../geometry/types.js';
+import { hypot, type Pt } from '../geometry/types.js';
 import type { ExtrudeStep, PlanArc, PrintPlan } from './types.js';
 
 /** Fewest segments worth one arc. */
@@ -45,7 +45,7 @@ const GOLDEN = (Math.sqrt(5) - 1) / 2;
 function fitRun(path: readonly Pt[], i: number, j: number, tol: number, samples: Float64Array): PlanArc | null {
   const a = path[i]!;
   const b = path[j]!;
-  const chord = Math.hypot(b.x - a.x, b.y - a.y);
+  const chord = hypot(b.x - a.x, b.y - a.y);
   if (!(chord > 0)) return null;
   const h = chord / 2;
   const tx = (b.x - a.x) / chord, ty = (b.y - a.y) / chord;

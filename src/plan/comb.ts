@@ -3,7 +3,7 @@
  * (across a concave part of the outline) or cross a hole is replaced by a walk along the boundary
  * between the points where it would cross. Rings are walked the shorter way round.
  */
-import type { ExPolygon, Polygon, Pt } from '../geometry/types.js';
+import { hypot, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 
 /** Parametric crossing of segment a→b with ring edge i: t along a→b, u along the edge. */
 interface Crossing {
@@ -21,9 +21,8 @@ export interface CombRing {
   minY: number;
   maxX: number;
   maxY: number;
-  /** Cumulative length at each vertex (for walking distances). */
-  cum: Float64Array;
-  length: number;
+  /** Cumulative length at each vertex (for walking distances), made when a travel first walks the ring. */
+  cum: Float64Array | null;
 }
 
 export interface CombArea {
@@ -33,18 +32,27 @@ export interface CombArea {
 
 function makeRing(pts: Polygon): CombRing {
   let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-  const n = pts.length;
-  const cum = new Float64Array(n + 1);
-  for (let i = 0; i < n; i++) {
+  for (let i = 0; i < pts.length; i++) {
     const p = pts[i];
     if (p.x < minX) minX = p.x;
     if (p.y < minY) minY = p.y;
     if (p.x > maxX) maxX = p.x;
     if (p.y > maxY) maxY = p.y;
-    const q = pts[(i + 1) % n];
-    cum[i + 1] = cum[i] + Math.hypot(q.x - p.x, q.y - p.y);
   }
-  return { pts, minX, minY, maxX, maxY, cum, length: cum[n] };
+  return { pts, minX, minY, maxX, maxY, cum: null };
+}
+
+/** The ring's cumulative lengths (the last is its perimeter). */
+function cumulative(ring: CombRing): Float64Array {
+  if (ring.cum) return ring.cum;
+  const pts = ring.pts;
+  const n = pts.length;
+  const cum = new Float64Array(n + 1);
+  for (let i = 0; i < n; i++) {
+    const p = pts[i], q = pts[(i + 1) % n];
+    cum[i + 1] = cum[i] + hypot(q.x - p.x, q.y - p.y);
+  }
+  return (ring.cum = cum);
 }
 
 /** Prepare an island for combing: `boundary` is the ring set to walk along (e.g. the outer wall's centreline). */
@@ -81,12 +89,14 @@ function crossings(a: Pt, b: Pt, rings: readonly CombRing[]): Crossing[] {
 /** Walk ring from crossing c1 to crossing c2 the shorter way; returns the waypoints between them. */
 function walk(ring: CombRing, c1: Crossing, c2: Crossing): Pt[] {
   const n = ring.pts.length;
-  const pos = (c: Crossing) => ring.cum[c.edge] + c.u * (ring.cum[c.edge + 1] - ring.cum[c.edge]);
+  const cum = cumulative(ring);
+  const length = cum[n];
+  const pos = (c: Crossing) => cum[c.edge] + c.u * (cum[c.edge + 1] - cum[c.edge]);
   const s1 = pos(c1), s2 = pos(c2);
   let forward = s2 - s1;
-  if (forward < 0) forward += ring.length;
+  if (forward < 0) forward += length;
   const out: Pt[] = [c1.p];
-  if (forward <= ring.length - forward) {
+  if (forward <= length - forward) {
     // forward: vertices edge+1 ... up to c2.edge
     let i = (c1.edge + 1) % n;
     const stop = (c2.edge + 1) % n;
@@ -116,7 +126,7 @@ export function pathLength(a: Pt, way: readonly Pt[]): number {
   let len = 0;
   let p = a;
   for (const q of way) {
-    len += Math.hypot(q.x - p.x, q.y - p.y);
+    len += hypot(q.x - p.x, q.y - p.y);
     p = q;
   }
   return len;

@@ -3,16 +3,16 @@
  * scaled down (never below `minPrintSpeed`) so the plastic below has time to cool.
  * The layer time here is the simple length/speed sum; the final estimate is acceleration-aware.
  */
-import type { Pt } from '../geometry/types.js';
+import { hypot, type Pt } from '../geometry/types.js';
 import type { LayerPlan } from './types.js';
 
 /** Length of the path through `points` (from `from` first, when given), mm. */
 function polyLength(points: readonly Pt[], closed: boolean, from?: Pt): number {
-  let len = from ? Math.hypot(points[0].x - from.x, points[0].y - from.y) : 0;
-  for (let i = 1; i < points.length; i++) len += Math.hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
+  let len = from ? hypot(points[0].x - from.x, points[0].y - from.y) : 0;
+  for (let i = 1; i < points.length; i++) len += hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
   if (closed && points.length > 2) {
     const a = points[points.length - 1], b = points[0];
-    len += Math.hypot(a.x - b.x, a.y - b.y);
+    len += hypot(a.x - b.x, a.y - b.y);
   }
   return len / 1000;
 }

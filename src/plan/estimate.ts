@@ -28,6 +28,7 @@
 import { filamentArea, walkPlanSteps, type MoveSettings, type MoveSink } from './moves.js';
 import type { Settings } from '../settings/schema.js';
 import type { PlanEstimate, PrintPlan } from './types.js';
+import { hypot } from '../geometry/types.js';
 
 /** The settings the estimate reads. */
 export type EstimateSettings = MoveSettings &
@@ -271,7 +272,7 @@ class MotionTimer implements MoveSink {
   }
   arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void {
     this.filament += filament;
-    const r = Math.hypot(this.px - cx, this.py - cy);
+    const r = hypot(this.px - cx, this.py - cy);
     const pieces = Math.max(1, Math.ceil(length / ARC_SEGMENT_MM));
     if (!(r > 0) || pieces === 1) {
       this.push(x, y, length, speed, this.limits.printAccel);
@@ -284,7 +285,7 @@ class MotionTimer implements MoveSink {
       const a = a0 + step * k;
       this.push(cx + r * Math.cos(a), cy + r * Math.sin(a), chord, speed, this.limits.printAccel);
     }
-    this.push(x, y, Math.hypot(x - this.px, y - this.py) / 1000, speed, this.limits.printAccel);
+    this.push(x, y, hypot(x - this.px, y - this.py) / 1000, speed, this.limits.printAccel);
   }
   retract(filament: number, speed: number): void {
     this.filament -= filament;

@@ -27,6 +27,7 @@
  */
 import type { ExtrudeStep, LayerPlan, PrintPlan } from './types.js';
 import type { Settings } from '../settings/schema.js';
+import { hypot } from '../geometry/types.js';
 
 /** Speed of standalone Z moves (layer change, Z hop), mm/s: a rate every common printer's Z axis accepts. */
 export const Z_SPEED_MM_S = 5;
@@ -81,7 +82,7 @@ export function arcLengthMm(x0: number, y0: number, x1: number, y1: number, cx: 
   const a1 = Math.atan2(y1 - cy, x1 - cx);
   let sweep = clockwise ? a0 - a1 : a1 - a0;
   if (sweep <= 0) sweep += 2 * Math.PI;
-  return (Math.hypot(x0 - cx, y0 - cy) * sweep) / 1000;
+  return (hypot(x0 - cx, y0 - cy) * sweep) / 1000;
 }
 
 /** Filament cross-section area, mm². */

@@ -2,7 +2,7 @@
  * Where a wall loop starts (its seam): aligned on a sharp corner near the rear, nearest to the nozzle,
  * at the rear, or at a seeded random vertex. Deterministic for a given layer and loop.
  */
-import type { Polygon, Pt } from '../geometry/types.js';
+import { hypot, type Polygon, type Pt } from '../geometry/types.js';
 
 export type SeamMode = 'aligned' | 'nearest' | 'rear' | 'random';
 
@@ -62,7 +62,7 @@ function aligned(loop: Polygon): number {
     if (t < SHARP) continue;
     const p = loop[i];
     // distance to the rear reference, lightly favouring sharper corners
-    const score = Math.hypot(p.x - ref.x, p.y - ref.y) * (1.5 - t / Math.PI);
+    const score = hypot(p.x - ref.x, p.y - ref.y) * (1.5 - t / Math.PI);
     if (score < bestScore) {
       bestScore = score;
       best = i;

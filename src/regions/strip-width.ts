@@ -4,13 +4,13 @@
  * (the mean width) falls short by the ends' share of the perimeter; for a wedge it is about half its widest.
  */
 import { area } from '../geometry/clip.js';
-import type { ExPolygon } from '../geometry/types.js';
+import { hypot, type ExPolygon } from '../geometry/types.js';
 
 /** Perimeter of an island's rings, µm. */
 export function perimeter(a: ExPolygon): number {
   let p = 0;
   for (const r of [a.outer, ...a.holes]) {
-    for (let i = 0, j = r.length - 1; i < r.length; j = i++) p += Math.hypot(r[i].x - r[j].x, r[i].y - r[j].y);
+    for (let i = 0, j = r.length - 1; i < r.length; j = i++) p += hypot(r[i].x - r[j].x, r[i].y - r[j].y);
   }
   return p;
 }

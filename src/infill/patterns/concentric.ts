@@ -16,7 +16,7 @@
  * round the outer loop, steps across to the nearest point of the inner one, runs round it, and so on.
  */
 import type { InfillPattern } from '../types.js';
-import type { Polygon, Pt } from '../../geometry/types.js';
+import { hypot, type Polygon, type Pt } from '../../geometry/types.js';
 import { familySpacing } from '../density.js';
 import { indexRegion, regionGeom } from '../region-index.js';
 import { type DistanceField, distanceField, refineToDepth, restoreCorners } from '../distance-field.js';
@@ -117,19 +117,19 @@ function cellLength(a: number, b: number, c: number, d: number): number {
   const sa = a >= 0, sb = b >= 0, sc = c >= 0, sd = d >= 0;
   let x0 = 0, y0 = 0, x1 = 0, y1 = 0, n = 0, extra = 0;
   const add = (x: number, y: number) => {
-    if (n === 0) { x0 = x; y0 = y; } else if (n === 1) { x1 = x; y1 = y; } else if (n === 3) extra = Math.hypot(x - x1, y - y1);
+    if (n === 0) { x0 = x; y0 = y; } else if (n === 1) { x1 = x; y1 = y; } else if (n === 3) extra = hypot(x - x1, y - y1);
     n++;
   };
   if (sa !== sb) add(a / (a - b), 0);
   if (sb !== sc) add(1, b / (b - c));
   if (sc !== sd) add(1 - c / (c - d), 1);
   if (sd !== sa) add(0, 1 - d / (d - a));
-  return n >= 2 ? Math.hypot(x1 - x0, y1 - y0) + extra : 0;
+  return n >= 2 ? hypot(x1 - x0, y1 - y0) + extra : 0;
 }
 
 function ringLength(pts: readonly Pt[]): number {
   let l = 0;
-  for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) l += Math.hypot(pts[i].x - pts[j].x, pts[i].y - pts[j].y);
+  for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) l += hypot(pts[i].x - pts[j].x, pts[i].y - pts[j].y);
   return l;
 }
 
@@ -188,11 +188,11 @@ function splitThin(pts: readonly Pt[], thin: readonly boolean[], wide: Pt[][], c
       return;
     }
     let total = 0;
-    for (let k = 1; k < run.length; k++) total += Math.hypot(run[k].x - run[k - 1].x, run[k].y - run[k - 1].y);
+    for (let k = 1; k < run.length; k++) total += hypot(run[k].x - run[k - 1].x, run[k].y - run[k - 1].y);
     const half: Pt[] = [run[0]];
     let acc = 0;
     for (let k = 1; k < run.length && acc < total / 2; k++) {
-      acc += Math.hypot(run[k].x - run[k - 1].x, run[k].y - run[k - 1].y);
+      acc += hypot(run[k].x - run[k - 1].x, run[k].y - run[k - 1].y);
       half.push(run[k]);
     }
     centre.push(half);

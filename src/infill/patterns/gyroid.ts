@@ -13,7 +13,7 @@
  */
 import type { InfillPattern, InfillParams } from '../types.js';
 import type { Pt } from '../../geometry/types.js';
-import { UM_PER_MM } from '../../geometry/types.js';
+import { hypot, UM_PER_MM } from '../../geometry/types.js';
 import { traceContours } from '../contour.js';
 import { frameBounds } from '../geom-util.js';
 
@@ -74,7 +74,7 @@ export const gyroid: InfillPattern = {
         const g2 = gu * gu + gv * gv;
         if (g2 < 1e-30) break;
         let du = (g * gu) / g2, dv = (g * gv) / g2;
-        const step = Math.hypot(du, dv);
+        const step = hypot(du, dv);
         if (step > h / 2) {
           du *= h / 2 / step;
           dv *= h / 2 / step;

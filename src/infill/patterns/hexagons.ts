@@ -11,7 +11,7 @@
  * shifted by (1.5a·k, 2A·k), so its lower flats sit beside the upper flats of chain k − 1.
  */
 import type { InfillPattern } from '../types.js';
-import type { Pt } from '../../geometry/types.js';
+import { hypot, type Pt } from '../../geometry/types.js';
 import { solveDecreasing } from '../density.js';
 import { frameBounds } from '../geom-util.js';
 
@@ -19,7 +19,7 @@ import { frameBounds } from '../geom-util.js';
 function coverage(a: number, w: number): number {
   const A = (a * Math.sqrt(3)) / 4;
   const Ap = Math.max(0, A - w / 2);
-  const len = 2 * a + 2 * Math.hypot(a / 2, 2 * Ap);
+  const len = 2 * a + 2 * hypot(a / 2, 2 * Ap);
   return (w * len) / (3 * a * 2 * A);
 }
 

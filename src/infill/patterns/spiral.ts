@@ -6,7 +6,7 @@
  * shared linker. Points are placed so the chord error stays under CHORD_TOLERANCE_UM.
  */
 import type { InfillPattern } from '../types.js';
-import type { Pt } from '../../geometry/types.js';
+import { hypot, type Pt } from '../../geometry/types.js';
 import { ringArea } from '../../geometry/clip.js';
 import { familySpacing } from '../density.js';
 
@@ -45,7 +45,7 @@ export const spiral: InfillPattern = {
     for (const isl of _layer.region) {
       const c = islandCentroid(isl.outer, isl.holes);
       let rMax = 0;
-      for (const p of isl.outer) rMax = Math.max(rMax, Math.hypot(p.x - c.x, p.y - c.y));
+      for (const p of isl.outer) rMax = Math.max(rMax, hypot(p.x - c.x, p.y - c.y));
       const thetaMax = (2 * Math.PI * (rMax + sp)) / sp;
       const pts: Pt[] = [{ x: c.x, y: c.y }];
       let th = 0;

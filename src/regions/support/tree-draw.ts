@@ -6,7 +6,7 @@
  * the clipper.
  */
 import { boundsOf, difference, intersection, offset, union, unionRings } from '../../geometry/clip.js';
-import type { Bounds, ExPolygon, Polygon } from '../../geometry/types.js';
+import { hypot, type Bounds, type ExPolygon, type Polygon } from '../../geometry/types.js';
 import { regularPolygon, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
 import { AreaIndex } from '../../geometry/area-index.js';
@@ -142,7 +142,7 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
       (c) => c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !roofIndex?.meetsDisc(c.x, c.y, c.r) && !onPart(c),
     );
     // a circle inside another of its cluster adds nothing to their union
-    const rings = (cluster.length > 1 ? cluster.filter((c) => !cluster.some((o) => o !== c && o.r > c.r && Math.hypot(o.x - c.x, o.y - c.y) + c.r <= o.r)) : cluster).map((c) => circle(c.x, c.y, c.r));
+    const rings = (cluster.length > 1 ? cluster.filter((c) => !cluster.some((o) => o !== c && o.r > c.r && hypot(o.x - c.x, o.y - c.y) + c.r <= o.r)) : cluster).map((c) => circle(c.x, c.y, c.r));
     if (fine) {
       if (rings.length === 1) keep({ outer: rings[0], holes: [] }, { x: cluster[0].x, y: cluster[0].y, r: cluster[0].r, sides: rings[0].length });
       else for (const r of rings) freeRings.push(r);
@@ -174,7 +174,7 @@ export function clusters(discs: readonly Disc[]): Disc[][] {
     grid.near(c.x, c.y, c.r + widest, found);
     for (let f = 0; f < found.length; f++) {
       const k = found[f];
-      if (k <= i || Math.hypot(discs[k].x - c.x, discs[k].y - c.y) > c.r + discs[k].r) continue;
+      if (k <= i || hypot(discs[k].x - c.x, discs[k].y - c.y) > c.r + discs[k].r) continue;
       const a = find(i), b = find(k);
       if (a !== b) root[Math.max(a, b)] = Math.min(a, b);
     }

@@ -9,6 +9,7 @@
 import type { Found } from '../../geometry/area-index.js';
 import { PointGrid } from './point-grid.js';
 import { classOf, type Blocked, type Keep, type TreeVolumes } from './tree-volumes.js';
+import { hypot } from '../../geometry/types.js';
 
 /** Neighbours further apart than this are not drawn together, µm. */
 export const ATTRACT_MAX_UM = 10000;
@@ -61,7 +62,7 @@ export interface TreeRules {
   standsOn: (j: number, x: number, y: number, r: number) => boolean;
 }
 
-const dist = (ax: number, ay: number, bx: number, by: number) => Math.hypot(bx - ax, by - ay);
+const dist = (ax: number, ay: number, bx: number, by: number) => hypot(bx - ax, by - ay);
 
 /** The radius a node grows to on its next layer. */
 function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
@@ -89,7 +90,7 @@ export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], ra
     for (let f = 0; f < found.length; f++) {
       const b = found[f];
       if (b === a) continue;
-      const d = Math.hypot(grid.xs[b] - x, grid.ys[b] - y);
+      const d = hypot(grid.xs[b] - x, grid.ys[b] - y);
       if (kept === NEAR_COUNT && (d > bestD[kept - 1] || (d === bestD[kept - 1] && b > bestId[kept - 1]))) continue;
       let k = kept < NEAR_COUNT ? kept++ : kept - 1;
       while (k > 0 && (bestD[k - 1] > d || (bestD[k - 1] === d && bestId[k - 1] > b))) {
@@ -236,7 +237,7 @@ function stepDown(d: Descent, from: number, to: number): void {
     const t = toward[i];
     if (t >= 0) {
       const dx = upper[t].x - n.x, dy = upper[t].y - n.y;
-      const len = Math.hypot(dx, dy);
+      const len = hypot(dx, dy);
       const go = Math.min(m, len / 2);
       if (len > 0) {
         vx = (dx * go) / len;

@@ -4,7 +4,7 @@
  * the rim of a roof and overhangs too thin for a lattice point are held too.
  */
 import { offset } from '../../geometry/clip.js';
-import type { ExPolygon, Pt } from '../../geometry/types.js';
+import { hypot, type ExPolygon, type Pt } from '../../geometry/types.js';
 import { AreaIndex } from '../../geometry/area-index.js';
 import { PointGrid } from './point-grid.js';
 
@@ -58,7 +58,7 @@ export function alongRing(ring: readonly Pt[], step: number): Pt[] {
   let carry = 0;
   for (let i = 0; i < ring.length; i++) {
     const a = ring[i], b = ring[(i + 1) % ring.length];
-    const len = Math.hypot(b.x - a.x, b.y - a.y);
+    const len = hypot(b.x - a.x, b.y - a.y);
     let t = carry;
     while (t < len) {
       out.push({ x: Math.round(a.x + ((b.x - a.x) * t) / len), y: Math.round(a.y + ((b.y - a.y) * t) / len) });

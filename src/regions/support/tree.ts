@@ -13,7 +13,7 @@
  *    below holds it, off the part, split into body, roof and floor.
  */
 import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
+import { hypot, UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
@@ -202,7 +202,7 @@ function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spac
     if (i % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
     const p = candidates[i];
     const near = existing.near(p.x, p.y, Math.max(gap, widest), found);
-    if (near.some((k) => Math.hypot(existing.xs[k] - p.x, existing.ys[k] - p.y) < Math.max(gap, lower[k].r))) continue;
+    if (near.some((k) => hypot(existing.xs[k] - p.x, existing.ys[k] - p.y) < Math.max(gap, lower[k].r))) continue;
     for (const keep of keeps) {
       const q = vol.index(keep, 0, j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * spacing);
       if (!q) continue;
