@@ -62,14 +62,16 @@ function familyCrosses(lo: number, hi: number, c: number, s: number, spacingUm: 
   return Math.floor((hi - v0) / spacingUm) >= Math.ceil((lo - v0) / spacingUm);
 }
 
+/** Where a line goes: the area it lies in when that is known (a lone branch's chord), else null. */
+type Emit = (line: Polyline, area: ExPolygon | null) => void;
+
 /** Lines of one family `spacing` apart over `area` (shrunk so the beads stay inside it). */
 function fill(
-  area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean,
+  area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean, emit: Emit,
   circles?: ReadonlyMap<ExPolygon, RegularPolygon>,
-): Polyline[] {
+): void {
   const region: ExPolygon[] = [];
   const others: ExPolygon[] = [];
-  const direct: Polyline[] = [];
   for (const a of area) {
     const c = circles?.get(a);
     if (!c) {
@@ -79,27 +81,28 @@ function fill(
       if (!ring) continue;
       // a branch crossed by one line needs no linking: its chord is the whole fill
       const chords = sweepConvexRing(ring, { angle, spacing: spacingUm, offset: 0 }, origin);
-      if (chords.length <= 1) direct.push(...chords);
+      if (chords.length <= 1) for (const line of chords) emit(line, a);
       else region.push({ outer: ring, holes: [] });
     }
   }
   if (others.length) region.push(...shrink(others, insetUm));
   // the planner orders each support area's lines itself
-  if (region.length) direct.push(...solidFill(region, angle, spacingUm, origin, { connect, order: false }));
-  return direct;
+  if (region.length) for (const line of solidFill(region, angle, spacingUm, origin, { connect, order: false })) emit(line, null);
 }
 
-function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: number, origin: Pt, circles: ReadonlyMap<ExPolygon, RegularPolygon>): Polyline[] {
+function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: number, origin: Pt, circles: ReadonlyMap<ExPolygon, RegularPolygon>, emit: Emit): void {
   const d = cfg.supportDensity / 100;
   switch (cfg.supportPattern) {
     case 'grid': {
       const s = (2 * w) / d;
-      return [...fill(body, insetUm, cfg.supportAngle, s, origin, true, circles), ...fill(body, insetUm, cfg.supportAngle + 90, s, origin, true, circles)];
+      fill(body, insetUm, cfg.supportAngle, s, origin, true, emit, circles);
+      fill(body, insetUm, cfg.supportAngle + 90, s, origin, true, emit, circles);
+      return;
     }
     case 'lines':
-      return fill(body, insetUm, cfg.supportAngle, w / d, origin, false, circles);
+      return fill(body, insetUm, cfg.supportAngle, w / d, origin, false, emit, circles);
     case 'zigzag':
-      return fill(body, insetUm, cfg.supportAngle, w / d, origin, true, circles);
+      return fill(body, insetUm, cfg.supportAngle, w / d, origin, true, emit, circles);
   }
 }
 
@@ -170,18 +173,21 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   }
   const wallInset = cfg.supportWalls * w;
   const inset = w / 2 + wallInset;
-  for (const line of bodyLines(s.body, cfg, inset, w, origin, circles)) add(owner(components, line[0]), 'support', false, line);
+  const byArea = new Map<ExPolygon, Component>();
+  for (const c of components) byArea.set(c.area, c);
+  const to = (role: PathRole): Emit => (line, a) => add((a && byArea.get(a)) || owner(components, line[0]), role, false, line);
+  bodyLines(s.body, cfg, inset, w, origin, circles, to('support'));
   const iface = w / (cfg.supportInterfaceDensity / 100);
   const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
-  for (const line of fill(s.roof, inset, ifaceAngle, iface, origin, true)) add(owner(components, line[0]), 'support-roof', false, line);
-  for (const line of fill(s.floor, inset, ifaceAngle, iface, origin, true)) add(owner(components, line[0]), 'support-floor', false, line);
+  fill(s.roof, inset, ifaceAngle, iface, origin, true, to('support-roof'));
+  fill(s.floor, inset, ifaceAngle, iface, origin, true, to('support-floor'));
   const width = w / UM_PER_MM;
   const groups: PathGroup[] = [];
   for (const c of components) {
     if (c.entries.size === 0) continue;
     const entries: PathEntry[] = [];
     for (const e of c.entries.values()) entries.push({ role: e.role, closed: e.closed, paths: e.paths, width });
-    groups.push({ kind: 'support', area: c.area, entries });
+    groups.push({ kind: 'support', area: c.area, convex: circles.has(c.area), entries });
   }
   return groups;
 }

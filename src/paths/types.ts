@@ -60,6 +60,8 @@ export interface PathGroup {
   area?: ExPolygon;
   /** The rings travel follows round the area (the outer wall for islands); default: the area's rings. */
   boundary?: Polygon[];
+  /** The area is convex (a lone tree branch): a straight travel between two points in it stays in it. */
+  convex?: boolean;
   entries: PathEntry[];
 }
 

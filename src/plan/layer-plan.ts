@@ -65,8 +65,11 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   const minTravelUm = cfg.retractionMinTravel * UM_PER_MM;
   let points: Pt[] = [to];
   let leaves = true;
-  const area = ctx.comb && !forceRetract ? (ctx.combArea ??= comb(ctx.comb)) : null;
-  if (area && cfg.combing) {
+  const inside = ctx.comb && !forceRetract ? ctx.comb : null;
+  // in a convex group the straight travel is the combed one, with or without combing
+  const area = inside && !inside.convex ? (ctx.combArea ??= comb(inside)) : null;
+  if (inside?.convex) leaves = false;
+  else if (area && cfg.combing) {
     const route = combRoute(from, to, area);
     if (route) {
       points = route;

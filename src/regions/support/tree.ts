@@ -133,7 +133,10 @@ function* splitNear(model: ModelLayers, j: number, s: ExPolygon[]): Generator<vo
   const cfg = model.cfg;
   const nearby: number[] = [];
   for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
-  for (let k = j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount; k < j - cfg.supportBottomGapLayers; k++) if (model.section(k).length) nearby.push(k);
+  // floors only where support may stand on the part (model.split makes none in 'buildPlate' placement)
+  if (cfg.supportPlacement === 'everywhere') {
+    for (let k = j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount; k < j - cfg.supportBottomGapLayers; k++) if (model.section(k).length) nearby.push(k);
+  }
   model.releaseBelow(j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount);
   if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
   const near: ExPolygon[] = [], far: ExPolygon[] = [];
