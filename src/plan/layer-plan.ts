@@ -43,6 +43,8 @@ interface Ctx {
   below: readonly ExPolygon[];
   guard: PartGuard | null;
   object?: number;
+  /** Styles of the entries that set no speed or flow of their own, by role and wall (a layer's support has hundreds of groups). */
+  styles: Map<string, { normal: Style; overAir: Style }>;
 }
 
 /** How one entry's extrusions print. */
@@ -112,6 +114,14 @@ function extrude(ctx: Ctx, style: Style, points: Pt[], closed: boolean, width: n
 }
 
 function styleOf(ctx: Ctx, entry: PathEntry): { normal: Style; overAir: Style } {
+  if (entry.speed !== undefined || entry.flow !== undefined) return makeStyle(ctx, entry);
+  const key = entry.wall === undefined ? entry.role : entry.role + entry.wall;
+  let s = ctx.styles.get(key);
+  if (!s) ctx.styles.set(key, (s = makeStyle(ctx, entry)));
+  return s;
+}
+
+function makeStyle(ctx: Ctx, entry: PathEntry): { normal: Style; overAir: Style } {
   const { cfg } = ctx;
   const feature = roleFeature(entry);
   const speed = ctx.first ? cfg.firstLayerSpeed : entry.speed ?? roleSpeed(entry, cfg);
@@ -266,7 +276,7 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
   for (const g of layer.groups) if (g.kind === 'island' && g.area) islands.push(g.area);
   const ctx: Ctx = {
     cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined,
-    kind: null, lastKind: null, islands, below: state.below ?? [], guard: null,
+    kind: null, lastKind: null, islands, below: state.below ?? [], guard: null, styles: new Map(),
   };
   for (const kind of GROUP_ORDER) {
     const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));

@@ -100,8 +100,13 @@ export function sortEntries(entries: readonly PathEntry[], wallOrder: Config['wa
   if (entries.length < 2) return entries.slice();
   const rank = (e: PathEntry) => PRINT_ORDER.indexOf(e.role);
   const wallKey = (e: PathEntry) => (e.wall ?? 0) * (wallOrder === 'inner-first' ? -1 : 1);
+  const before = (a: PathEntry, b: PathEntry) => rank(a) - rank(b) || (a.role === 'wall' && b.role === 'wall' ? wallKey(a) - wallKey(b) : 0);
+  // most groups come in print order already (a tree branch's wall, then its line): the stable sort would keep them
+  let sorted = true;
+  for (let i = 1; i < entries.length && sorted; i++) sorted = before(entries[i - 1], entries[i]) <= 0;
+  if (sorted) return entries.slice();
   return entries
     .map((e, i) => ({ e, i }))
-    .sort((a, b) => rank(a.e) - rank(b.e) || (a.e.role === 'wall' && b.e.role === 'wall' ? wallKey(a.e) - wallKey(b.e) : 0) || a.i - b.i)
+    .sort((a, b) => before(a.e, b.e) || a.i - b.i)
     .map((x) => x.e);
 }

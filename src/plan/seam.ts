@@ -87,5 +87,8 @@ export function chooseSeam(loop: Polygon, mode: SeamMode, at: Pt, seed: number, 
 /** The loop rotated to start at vertex `start`. */
 export function rotateLoop(loop: Polygon, start: number): Polygon {
   if (start === 0) return loop;
-  return loop.slice(start).concat(loop.slice(0, start));
+  const out: Polygon = [];
+  for (let i = start; i < loop.length; i++) out.push(loop[i]);
+  for (let i = 0; i < start; i++) out.push(loop[i]);
+  return out;
 }
