@@ -175,8 +175,8 @@ export class AreaIndex {
   }
 
   /**
-   * The point nearest to (x, y) that lies just outside the areas (OUTSIDE_MARGIN_UM beyond the boundary),
-   * looking no further than `maxUm`; (x, y) itself when it is outside; null when nothing is found.
+   * The point nearest to (x, y) that lies just outside the areas (OUTSIDE_MARGIN_UM beyond the boundary, in
+   * whole µm), looking no further than `maxUm`; (x, y) itself when it is outside; null when nothing is found.
    */
   nearestOutside(x: number, y: number, maxUm: number): Found | null {
     if (!this.contains(x, y)) return { x, y };
@@ -218,7 +218,7 @@ export class AreaIndex {
     ways.push([ey / el, -ex / el]);
     for (const [ux, uy] of ways) {
       for (const m of [OUTSIDE_MARGIN_UM, 4 * OUTSIDE_MARGIN_UM]) {
-        const qx = bx + ux * m, qy = by + uy * m;
+        const qx = Math.round(bx + ux * m), qy = Math.round(by + uy * m);
         if (hypot(qx - x, qy - y) <= reach && !this.contains(qx, qy)) return { x: qx, y: qy };
       }
     }
@@ -254,7 +254,7 @@ export class AreaIndex {
 
   /**
    * The point nearest (x, y), within `maxUm` of it, that lies more than `d` outside the areas (by
-   * OUTSIDE_MARGIN_UM); (x, y) itself when it does; null when none is found. Tried in turn: off each edge
+   * OUTSIDE_MARGIN_UM; a found point is in whole µm); (x, y) itself when it does; null when none is found. Tried in turn: off each edge
    * near the point by d (along its outward normal, and along the way from the edge to the point), then
    * points round (x, y) in 16 directions (unless `rings` is off).
    */
@@ -268,6 +268,9 @@ export class AreaIndex {
     // candidates within maxUm, then tested nearest first (the earliest found on a tie): the first clear one wins
     let n = 0;
     const candidate = (qx: number, qy: number) => {
+      // whole µm, as the areas' own points are (and as the point queries are compiled for)
+      qx = Math.round(qx);
+      qy = Math.round(qy);
       const dq = hypot(qx - x, qy - y);
       if (!(dq <= maxUm)) return;
       if (n === cand.d.length) cand = growCandidates(cand);
