@@ -59,8 +59,8 @@ function load(into: PathsD, rings: readonly (readonly Pt[])[]): PathsD {
 function readPath(path: PathD): Pt[] {
   const v = path.view();
   const n = v.length / 3;
-  const out: Pt[] = new Array(n);
-  for (let i = 0, k = 0; i < n; i++, k += 3) out[i] = { x: v[k], y: v[k + 1] };
+  const out: Pt[] = [];
+  for (let i = 0, k = 0; i < n; i++, k += 3) out.push({ x: Math.round(v[k]), y: Math.round(v[k + 1]) });
   return out;
 }
 
@@ -132,8 +132,8 @@ function heapViews(): void {
 function ringAt(at: number): Pt[] {
   const begin = u32[at >>> 2];
   const n = (u32[(at >>> 2) + 1] - begin) / POINT_BYTES;
-  const out: Pt[] = new Array(n);
-  for (let i = 0, k = begin >>> 3; i < n; i++, k += 3) out[i] = { x: f64[k], y: f64[k + 1] };
+  const out: Pt[] = [];
+  for (let i = 0, k = begin >>> 3; i < n; i++, k += 3) out.push({ x: Math.round(f64[k]), y: Math.round(f64[k + 1]) });
   return out;
 }
 
