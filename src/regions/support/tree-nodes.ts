@@ -64,10 +64,10 @@ export interface TreeRules {
 
 const dist = (ax: number, ay: number, bx: number, by: number) => hypot(bx - ax, by - ay);
 
-/** The radius a node grows to on its next layer. */
+/** The radius a node grows to on its next layer, whole µm (as its centre is). */
 function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
-  if (n.r < rules.branchR) return Math.min(rules.branchR, n.r + rules.tipGrowth);
-  return n.merged ? Math.min(rules.maxR, n.r + rules.trunkGrowth(j)) : n.r;
+  if (n.r < rules.branchR) return Math.round(Math.min(rules.branchR, n.r + rules.tipGrowth));
+  return n.merged ? Math.round(Math.min(rules.maxR, n.r + rules.trunkGrowth(j))) : n.r;
 }
 
 /** Pairs of nearby nodes of one group (each node with its nearest few within range) as [a, b, distance], shortest first. */

@@ -163,12 +163,13 @@ function* splitNear(model: ModelLayers, j: number, s: ExPolygon[]): Generator<vo
 /** The tree's sizes and steps from the settings, µm. */
 export function treeRules(model: ModelLayers): TreeRules {
   const cfg = model.cfg;
-  const tipR = (cfg.supportTreeTipDiameter * UM_PER_MM) / 2;
-  const branchR = Math.max(tipR, (cfg.supportTreeBranchDiameter * UM_PER_MM) / 2);
+  // radii in whole µm, as the centres are
+  const tipR = Math.round((cfg.supportTreeTipDiameter * UM_PER_MM) / 2);
+  const branchR = Math.max(tipR, Math.round((cfg.supportTreeBranchDiameter * UM_PER_MM) / 2));
   const tanMove = Math.tan(rad(cfg.supportTreeBranchAngle));
   const tanGrow = Math.tan(rad(cfg.supportTreeDiameterAngle));
   const height = (j: number) => model.layers[j].height * UM_PER_MM;
-  const maxR = TRUNK_MAX_BRANCH_RADII * branchR;
+  const maxR = Math.round(TRUNK_MAX_BRANCH_RADII * branchR);
   // one more class for the widest trunks, so that every branch is checked against a class as wide as it is
   const radii = radiusClasses(tipR, branchR);
   if (maxR > branchR + 0.5) radii.push(Math.round(maxR));
