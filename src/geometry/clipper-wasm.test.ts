@@ -68,3 +68,24 @@ test('results are read straight from the engine memory (the layouts checked at l
   const { DIRECT } = await import('./clipper-wasm.js');
   assert.equal(DIRECT, true);
 });
+
+test('the engine gives its results in whole micrometres, its crossing points too', async () => {
+  await useClipEngine('wasm');
+  const rand = rng(7);
+  let points = 0;
+  for (let t = 0; t < 50; t++) {
+    // overlapping stars: their edges cross at points that are seldom whole
+    const a = star(100000 + t * 7, 100000, 1250 + t, 9, rand), b = star(101500 + t * 3, 100300 + t, 1100 + 2 * t, 8, rand);
+    for (const result of [union([a], [b]), intersection([a], [b]), difference([a], [b]), offset([a, b], 333)]) {
+      for (const island of result) {
+        for (const ring of [island.outer, ...island.holes]) {
+          for (const p of ring) {
+            points++;
+            assert.ok(Number.isInteger(p.x) && Number.isInteger(p.y), `(${p.x}, ${p.y}) is not whole µm`);
+          }
+        }
+      }
+    }
+  }
+  assert.ok(points > 1000);
+});

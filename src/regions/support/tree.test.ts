@@ -69,6 +69,8 @@ for (const [name, boxes] of MODELS) {
       const collision = model.collision(j);
       for (const child of nodes[j]) {
         if (child.dead) continue;
+        // centres and radii in whole µm, as the part's points are
+        assert.ok(Number.isInteger(child.x) && Number.isInteger(child.y) && Number.isInteger(child.r), `layer ${j}: a branch at (${child.x}, ${child.y}) r ${child.r}`);
         // every cross-section of a free branch is clear of the part grown by the XY gap
         const into = child.landing ? 0 : area(intersection([{ outer: circle(child.x, child.y, child.r), holes: [] }], collision));
         assert.equal(into, 0, `layer ${j}: a branch cross-section ${(into / 1e6).toFixed(3)} mm² into the part's XY gap`);
