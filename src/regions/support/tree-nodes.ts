@@ -124,25 +124,17 @@ export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], ra
   return sorted;
 }
 
-/**
- * The point rounded to whole µm, as every centre is: the model's own coordinates are whole µm, and the point
- * queries the tree shares with the rest of the slicer stay compiled for integers (fractional centres made
- * the engine throw away and recompile them). A point found outside an area is OUTSIDE_MARGIN_UM beyond it,
- * so rounding keeps it outside.
- */
-export function whole(q: Found | null): Found | null {
-  return q && { x: Math.round(q.x), y: Math.round(q.y) };
-}
-
 /** A free spot for a centre: the target, or the nearest free point to it or to where the node was, within `m` of (px, py). */
 function place(ix: Blocked, tx: number, ty: number, px: number, py: number, m: number): Found | null {
+  // centres are whole µm, as the part's points are: the point queries the tree shares with the rest of the
+  // slicer stay compiled for integers, and the points the index finds outside are whole µm already
   tx = Math.round(tx);
   ty = Math.round(ty);
   if (!ix.contains(tx, ty)) return { x: tx, y: ty };
   const reach = m + MOVE_SLACK_UM;
-  const q = whole(ix.nearestOutside(tx, ty, m));
+  const q = ix.nearestOutside(tx, ty, m);
   if (q && dist(q.x, q.y, px, py) <= reach) return q;
-  const s = whole(ix.nearestOutside(px, py, m));
+  const s = ix.nearestOutside(px, py, m);
   if (s && dist(s.x, s.y, px, py) <= reach) return s;
   return null;
 }
@@ -284,7 +276,7 @@ function grown(n: TreeNode, i: number, at: Found, keep: Keep, m: number, j: numb
   if (wc > c) {
     const left = m - dist(at.x, at.y, n.x, n.y);
     // widening is worth a quick look nearby only: the thorough search mostly fails near walls, at a high price
-    const q = left >= 0 ? whole(vol.index(keep, wc, j).nearestOutside(at.x, at.y, left, false)) : null;
+    const q = left >= 0 ? vol.index(keep, wc, j).nearestOutside(at.x, at.y, left, false) : null;
     if (q && dist(q.x, q.y, n.x, n.y) <= m + MOVE_SLACK_UM) {
       at = q;
       c = wc;
@@ -317,7 +309,7 @@ function merge(a: TreeNode, b: TreeNode, ia: number, ib: number, d: number, m: n
   const reach = m + MOVE_SLACK_UM;
   for (const r of [want, Math.max(a.r, b.r)]) {
     const c = classOf(rules.radii, r);
-    const q = whole(vol.index(a.keep, c, j).nearestOutside(x, y, m));
+    const q = vol.index(a.keep, c, j).nearestOutside(x, y, m);
     if (!q) continue;
     const toBig = dist(q.x, q.y, big.x, big.y), toSmall = dist(q.x, q.y, small.x, small.y);
     if (toBig > reach || (toSmall > reach && toSmall + small.r > r + reach)) continue;

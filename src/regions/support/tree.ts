@@ -18,7 +18,7 @@ import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
 import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
-import { descend, ITEMS_PER_STEP, whole, type TreeNode, type TreeRules } from './tree-nodes.js';
+import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
 import { radiusClasses, TreeVolumes } from './tree-volumes.js';
 
@@ -208,7 +208,7 @@ function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spac
     const near = existing.near(p.x, p.y, Math.max(gap, widest), found);
     if (near.some((k) => hypot(existing.xs[k] - p.x, existing.ys[k] - p.y) < Math.max(gap, lower[k].r))) continue;
     for (const keep of keeps) {
-      const q = whole(vol.index(keep, 0, j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * spacing));
+      const q = vol.index(keep, 0, j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * spacing);
       if (!q) continue;
       lower.push({ x: q.x, y: q.y, r: rules.tipR, c: 0, keep, merged: false, landing: false, parents: [], dead: false });
       existing.add(q.x, q.y);
