@@ -156,24 +156,26 @@ export class Slicer {
   }
 
   /** Slice and return the whole G-code as a string. */
-  async slice(input: unknown, opts: SliceCallOptions = {}): Promise<SliceResult> {
+  // slice and sliceToSink hand `input` on without awaiting, so that only the slice holds it, and lets it go
+  // once the model is read (a file's bytes are not kept while the G-code is made)
+  slice(input: unknown, opts: SliceCallOptions = {}): Promise<SliceResult> {
     const chunks: string[] = [];
-    const { stats, warnings } = await this.sliceToSink(input, (c) => chunks.push(c), opts);
-    return { gcode: chunks.join(''), stats, warnings };
+    return this.sliceToSink(input, (c) => chunks.push(c), opts).then(({ stats, warnings }) => ({ gcode: chunks.join(''), stats, warnings }));
   }
 
   /** Slice and stream the G-code to `sink` in chunks. */
-  async sliceToSink(input: unknown, sink: (chunk: string) => void, opts: SliceCallOptions = {}): Promise<{ stats: SliceStats; warnings: string[] }> {
-    const { stats, warnings } = await this.slicePlan(input, opts, sink);
-    return { stats, warnings };
+  sliceToSink(input: unknown, sink: (chunk: string) => void, opts: SliceCallOptions = {}): Promise<{ stats: SliceStats; warnings: string[] }> {
+    return this.slicePlan(input, opts, sink).then(({ stats, warnings }) => ({ stats, warnings }));
   }
 
   /** Slice and return the structured toolpath plan (layers of typed paths) as well as the stats. */
-  async slicePlan(
-    input: unknown,
-    opts: SliceCallOptions = {},
-    sink: (chunk: string) => void = () => {},
-  ): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
+  slicePlan(input: unknown, opts: SliceCallOptions = {}, sink: (chunk: string) => void = () => {}): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
+    // the input travels in a box the slice empties once the model is read (an async function's own
+    // parameters stay alive until it returns)
+    return this.#slicePlan({ input }, opts, sink);
+  }
+
+  async #slicePlan(given: { input: unknown }, opts: SliceCallOptions, sink: (chunk: string) => void): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
     // refuse what would fail only after slicing: templates the flavour cannot run, an image over budget
@@ -184,14 +186,16 @@ export class Slicer {
     // Workers start loading now, while the model is read and placed, if they will be needed (a custom
     // density given as a JS function cannot travel to a worker).
     const auto = await autoThreads();
-    const wanted = cfg.threads > 0 ? cfg.threads : inputBytes(input) >= EARLY_START_BYTES ? auto : 1;
+    const wanted = cfg.threads > 0 ? cfg.threads : inputBytes(given.input) >= EARLY_START_BYTES ? auto : 1;
     const started = wanted > 1 && (!this.#custom || isTransferable(this.#custom)) ? startWorkers(wanted - 1) : undefined;
     let run: Awaited<ReturnType<typeof runPipeline>>;
     let model: PreparedModel;
     let threads: number;
     try {
       // paced like the slice itself, so an abort acts while a big model is still being read
-      model = await new Pacer(opts.signal).run(prepareModelSteps(input, cfg));
+      model = await new Pacer(opts.signal).run(prepareModelSteps(given.input, cfg));
+      // the meshes are made: the caller's bytes need not stay alive here while the slice runs
+      given.input = undefined;
       const b = positionBounds(model.mesh.positions);
       const layersEstimate = b.max[2] / cfg.layerHeight;
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;

@@ -3,6 +3,7 @@ import { extname } from 'node:path';
 // the library without its shader compiler, which loads when a custom infill is used (see newSlicer)
 import { loadCustomInfill, Slicer } from '../exports.js';
 import { StrataError } from '../errors.js';
+import type { ModelInput } from '../mesh/place.js';
 import { layerToSvg } from '../preview/svg.js';
 import { findFilament, findPrinter } from '../settings/presets/index.js';
 import type { ParsedArgs } from './args.js';
@@ -37,16 +38,19 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
   const input = new InputReader();
   const quiet = args.flags.quiet === true;
   const slicer = await newSlicer(await optionsFrom(args, input, (w) => quiet || io.err(`strata: warning: ${w}\n`)));
-  const models = input.models(args.positional, slicer.config);
+  // let go once handed to the slicer, which keeps the files' bytes only until it has read them
+  let models: ModelInput[] | undefined = input.models(args.positional, slicer.config);
   const first = args.positional[0];
   const given = typeof args.flags.output === 'string' ? args.flags.output : undefined;
   const outPath = given ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
   refuseInputAsOutput(outPath, input.read, given === undefined);
   const bar = !quiet && io.errIsTTY && outPath !== '-' ? progressBar(process.stderr) : null;
   try {
-    const { stats, warnings } = await writing(openOutput(outPath), (out) =>
-      slicer.sliceToSink(models, (chunk) => out.write(chunk), { onProgress: bar ? (p) => bar.update(p.fraction, p.stage) : undefined }),
-    );
+    const { stats, warnings } = await writing(openOutput(outPath), (out) => {
+      const handed = models;
+      models = undefined;
+      return slicer.sliceToSink(handed, (chunk) => out.write(chunk), { onProgress: bar ? (p) => bar.update(p.fraction, p.stage) : undefined });
+    });
     bar?.done();
     if (!quiet) {
       for (const w of warnings) io.err(`strata: warning: ${w}\n`);

@@ -177,7 +177,8 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
       pacer,
       signal,
       local: async (job) => {
-        const steps = rangeSteps(prepared(), cfg, job, custom);
+        // a paths job reads its regions, not the meshes
+        const steps = rangeSteps(job.kind === 'paths' ? [] : prepared(), cfg, job, custom);
         for (;;) {
           const s = steps.next();
           if (s.done) return s.value;
@@ -213,6 +214,8 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
         jobDone(regionJobs[id]);
       });
       const regions = regionResults.flatMap((r) => r.regions);
+      // every layer is sliced: the meshes' slicing structures go (the calling thread's copy; the pool's with it)
+      meshes = null;
       report('support', 0.4);
       await pacer.run(supportPass(regions, cfg));
       let preparedInfill: unknown[] | undefined;
@@ -267,7 +270,8 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
         }
       });
     }
-    // the workers' memory goes back before the G-code is written
+    // the workers' memory and the meshes' slicing structures go back before the G-code is written
+    meshes = null;
     await pool?.close();
     pacer.check();
     report('planning', 0.8);
