@@ -34,11 +34,19 @@ function youngGenerationBytes(): number {
 
 export function tuneEngine(): void {
   for (const flag of ENGINE_FLAGS) setFlagsFromString(flag);
+}
+
+/**
+ * Stop the young generation's growth once it reaches YOUNG_GENERATION_CAP_MIB, checked while a slice
+ * runs (whenever it gives the event loop a turn); returns what ends the checks, for when the slice is done.
+ */
+export function capYoungGeneration(): () => void {
   const timer = setInterval(() => {
     if (youngGenerationBytes() < YOUNG_GENERATION_CAP_MIB * 1024 * 1024) return;
     setFlagsFromString('--semi-space-growth-factor=1');
     clearInterval(timer);
   }, YOUNG_CHECK_MS);
-  // the check never keeps the process alive
+  // the checks never keep the process alive
   timer.unref();
+  return () => clearInterval(timer);
 }

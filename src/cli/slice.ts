@@ -7,6 +7,7 @@ import type { ModelInput } from '../mesh/place.js';
 import { layerToSvg } from '../preview/svg.js';
 import { findFilament, findPrinter } from '../settings/presets/index.js';
 import type { ParsedArgs } from './args.js';
+import { capYoungGeneration } from './engine-flags.js';
 import type { Io } from './io.js';
 import { InputReader, optionsFrom } from './inputs.js';
 import { openOutput, refuseInputAsOutput, type Output } from './output.js';
@@ -45,6 +46,7 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
   const outPath = given ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
   refuseInputAsOutput(outPath, input.read, given === undefined);
   const bar = !quiet && io.errIsTTY && outPath !== '-' ? progressBar(process.stderr) : null;
+  const uncap = capYoungGeneration();
   try {
     const { stats, warnings } = await writing(openOutput(outPath), (out) => {
       const handed = models;
@@ -61,6 +63,7 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
       );
     }
   } finally {
+    uncap();
     bar?.done();
   }
 }
@@ -74,7 +77,8 @@ export async function cmdPreview(args: ParsedArgs, io: Io): Promise<void> {
   refuseInputAsOutput(outPath, input.read, false);
   const width = typeof args.flags.width === 'string' ? Number(args.flags.width) : 800;
   if (!Number.isFinite(width) || width < 50 || width > 20000) throw new StrataError('BAD_SETTING', '--width must be 50 to 20000 pixels');
-  const { plan } = await slicer.slicePlan(models);
+  const uncap = capYoungGeneration();
+  const { plan } = await slicer.slicePlan(models).finally(uncap);
   const n = plan.layers.length;
   const layerText = typeof args.flags.layer === 'string' ? args.flags.layer : String(Math.floor(n / 2));
   const index = Number(layerText);
