@@ -112,19 +112,33 @@ function cellsByDepth(f: DistanceField, count: number, sp: number, phase: number
   return out;
 }
 
+/** The zero set's crossings of a cell's edges, x, y: scratch for cellLength (no closure made per cell). */
+const CROSSINGS = new Float64Array(8);
+
 /** Length of the zero set in a unit cell with corner values a (0,0), b (1,0), c (1,1), d (0,1). */
 function cellLength(a: number, b: number, c: number, d: number): number {
   const sa = a >= 0, sb = b >= 0, sc = c >= 0, sd = d >= 0;
-  let x0 = 0, y0 = 0, x1 = 0, y1 = 0, n = 0, extra = 0;
-  const add = (x: number, y: number) => {
-    if (n === 0) { x0 = x; y0 = y; } else if (n === 1) { x1 = x; y1 = y; } else if (n === 3) extra = hypot(x - x1, y - y1);
-    n++;
-  };
-  if (sa !== sb) add(a / (a - b), 0);
-  if (sb !== sc) add(1, b / (b - c));
-  if (sc !== sd) add(1 - c / (c - d), 1);
-  if (sd !== sa) add(0, 1 - d / (d - a));
-  return n >= 2 ? hypot(x1 - x0, y1 - y0) + extra : 0;
+  const p = CROSSINGS;
+  let n = 0;
+  if (sa !== sb) {
+    p[2 * n] = a / (a - b);
+    p[2 * n++ + 1] = 0;
+  }
+  if (sb !== sc) {
+    p[2 * n] = 1;
+    p[2 * n++ + 1] = b / (b - c);
+  }
+  if (sc !== sd) {
+    p[2 * n] = 1 - c / (c - d);
+    p[2 * n++ + 1] = 1;
+  }
+  if (sd !== sa) {
+    p[2 * n] = 0;
+    p[2 * n++ + 1] = 1 - d / (d - a);
+  }
+  if (n < 2) return 0;
+  // a saddle (four crossings): the second piece runs from the fourth crossing to the second
+  return hypot(p[2] - p[0], p[3] - p[1]) + (n === 4 ? hypot(p[6] - p[2], p[7] - p[3]) : 0);
 }
 
 function ringLength(pts: readonly Pt[]): number {
