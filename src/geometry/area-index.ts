@@ -28,6 +28,24 @@ interface Candidates {
 }
 const makeCandidates = (n: number): Candidates => ({ x: new Float64Array(n), y: new Float64Array(n), d: new Float64Array(n), order: new Int32Array(n) });
 let cand = makeCandidates(64);
+/** How many of `cand` the query in progress holds. */
+let candCount = 0;
+
+/** Keep (qx, qy), in whole µm (as the areas' own points are, and as the point queries are compiled for), when it lies within maxUm of (x, y). */
+function addCandidate(qx: number, qy: number, x: number, y: number, maxUm: number): void {
+  qx = Math.round(qx);
+  qy = Math.round(qy);
+  const dq = hypot(qx - x, qy - y);
+  if (!(dq <= maxUm)) return;
+  if (candCount === cand.d.length) cand = growCandidates(cand);
+  cand.x[candCount] = qx;
+  cand.y[candCount] = qy;
+  cand.d[candCount] = dq;
+  candCount++;
+}
+
+/** Candidates nearest first, the earliest kept on a tie. */
+const nearerCandidate = (a: number, b: number) => cand.d[a] - cand.d[b] || a - b;
 
 function growCandidates(c: Candidates): Candidates {
   const g = makeCandidates(2 * c.d.length);
@@ -54,6 +72,9 @@ export class AreaIndex {
   /** The first vertex of every ring, x, y. */
   readonly #firsts: number[] = [];
   readonly empty: boolean;
+  /** Per edge, the query that last looked at it (nearestClear visits each edge once). */
+  #seen: Int32Array | null = null;
+  #query = 0;
 
   constructor(areas: readonly ExPolygon[]) {
     let n = 0;
@@ -213,11 +234,10 @@ export class AreaIndex {
     const d = Math.sqrt(best);
     const ex = e[4 * bi + 2] - e[4 * bi], ey = e[4 * bi + 3] - e[4 * bi + 1];
     const el = hypot(ex, ey) || 1;
-    const ways: [number, number][] = [];
-    if (d > 1e-6) ways.push([(bx - x) / d, (by - y) / d]);
-    ways.push([ey / el, -ex / el]);
-    for (const [ux, uy] of ways) {
-      for (const m of [OUTSIDE_MARGIN_UM, 4 * OUTSIDE_MARGIN_UM]) {
+    for (let way = d > 1e-6 ? 0 : 1; way < 2; way++) {
+      const ux = way === 0 ? (bx - x) / d : ey / el, uy = way === 0 ? (by - y) / d : -ex / el;
+      for (let k = 0; k < 2; k++) {
+        const m = k === 0 ? OUTSIDE_MARGIN_UM : 4 * OUTSIDE_MARGIN_UM;
         const qx = Math.round(bx + ux * m), qy = Math.round(by + uy * m);
         if (hypot(qx - x, qy - y) <= reach && !this.contains(qx, qy)) return { x: qx, y: qy };
       }
@@ -266,37 +286,16 @@ export class AreaIndex {
     const reach = maxUm + want;
     const c0 = this.#col(x - reach), c1 = this.#col(x + reach), r0 = this.#row(y - reach), r1 = this.#row(y + reach);
     // candidates within maxUm, then tested nearest first (the earliest found on a tie): the first clear one wins
-    let n = 0;
-    const candidate = (qx: number, qy: number) => {
-      // whole µm, as the areas' own points are (and as the point queries are compiled for)
-      qx = Math.round(qx);
-      qy = Math.round(qy);
-      const dq = hypot(qx - x, qy - y);
-      if (!(dq <= maxUm)) return;
-      if (n === cand.d.length) cand = growCandidates(cand);
-      cand.x[n] = qx;
-      cand.y[n] = qy;
-      cand.d[n] = dq;
-      n++;
-    };
-    const firstClear = (): Found | null => {
-      const { x: cx, y: cy, d: cd, order } = cand;
-      for (let i = 0; i < n; i++) order[i] = i;
-      const ids = order.subarray(0, n).sort((a, b) => cd[a] - cd[b] || a - b);
-      for (let k = 0; k < n; k++) {
-        const i = ids[k];
-        if (!this.meetsDisc(cx[i], cy[i], d)) return { x: cx[i], y: cy[i] };
-      }
-      return null;
-    };
-    const seen = new Set<number>();
+    candCount = 0;
+    const seen = (this.#seen ??= new Int32Array(e.length / 4));
+    const query = ++this.#query;
     for (let r = r0; r <= r1; r++) {
       for (let c = c0; c <= c1; c++) {
         const id = r * this.#nx + c;
         for (let s = this.#start[id], t = this.#start[id + 1]; s < t; s++) {
           const i = this.#items[s];
-          if (seen.has(i)) continue;
-          seen.add(i);
+          if (seen[i] === query) continue;
+          seen[i] = query;
           const x1 = e[4 * i], y1 = e[4 * i + 1], ex = e[4 * i + 2] - x1, ey = e[4 * i + 3] - y1;
           const len2 = ex * ex + ey * ey;
           if (len2 === 0) continue;
@@ -305,21 +304,34 @@ export class AreaIndex {
           const db = hypot(x - bx, y - by);
           if (db > reach) continue;
           const el = Math.sqrt(len2);
-          candidate(bx + (ey / el) * want, by - (ex / el) * want);
-          if (db > 1e-6) candidate(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want);
+          addCandidate(bx + (ey / el) * want, by - (ex / el) * want, x, y, maxUm);
+          if (db > 1e-6) addCandidate(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want, x, y, maxUm);
         }
       }
     }
-    const best = firstClear();
+    const best = this.#firstClear(d);
     if (best || !rings) return best;
     for (let k = 1; k <= 4; k++) {
-      n = 0;
+      candCount = 0;
       for (let a = 0; a < 16; a++) {
         const ang = (a * Math.PI) / 8;
-        candidate(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang));
+        addCandidate(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang), x, y, maxUm);
       }
-      const q = firstClear();
+      const q = this.#firstClear(d);
       if (q) return q;
+    }
+    return null;
+  }
+
+  /** The nearest of the candidates that lies more than d from the areas, or null. */
+  #firstClear(d: number): Found | null {
+    const { x: cx, y: cy, order } = cand;
+    const n = candCount;
+    for (let i = 0; i < n; i++) order[i] = i;
+    const ids = order.subarray(0, n).sort(nearerCandidate);
+    for (let k = 0; k < n; k++) {
+      const i = ids[k];
+      if (!this.meetsDisc(cx[i], cy[i], d)) return { x: cx[i], y: cy[i] };
     }
     return null;
   }
@@ -393,10 +405,9 @@ export class AreaIndex {
     const cEnd = this.#col(bx), rEnd = this.#row(by);
     const dx = bx - ax, dy = by - ay;
     const stepC = dx > 0 ? 1 : -1, stepR = dy > 0 ? 1 : -1;
-    const nextX = (cc: number) => this.#minX + (cc + (stepC > 0 ? 1 : 0)) * cell;
-    const nextY = (rr: number) => this.#minY + (rr + (stepR > 0 ? 1 : 0)) * cell;
-    let tMaxX = dx !== 0 ? (nextX(c) - ax) / dx : Infinity;
-    let tMaxY = dy !== 0 ? (nextY(r) - ay) / dy : Infinity;
+    // where the segment leaves its first cell across x and across y
+    let tMaxX = dx !== 0 ? (this.#minX + (c + (stepC > 0 ? 1 : 0)) * cell - ax) / dx : Infinity;
+    let tMaxY = dy !== 0 ? (this.#minY + (r + (stepR > 0 ? 1 : 0)) * cell - ay) / dy : Infinity;
     const tDX = dx !== 0 ? Math.abs(cell / dx) : Infinity;
     const tDY = dy !== 0 ? Math.abs(cell / dy) : Infinity;
     for (let guard = 0; guard < this.#nx + this.#ny + 2; guard++) {
