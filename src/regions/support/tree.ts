@@ -18,6 +18,7 @@ import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
 import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
+import type { RegularPolygon } from '../../geometry/regular-polygon.js';
 import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
 import { radiusClasses, TreeVolumes } from './tree-volumes.js';
@@ -36,6 +37,8 @@ export const TIP_SHIFT_SHARE = 0.5;
 export const STAND_SHARE = 0.2;
 
 const rad = (deg: number) => (deg * Math.PI) / 180;
+/** How far a regular polygon's vertices, rounded to whole µm, may lie beyond its circle, µm (√2 / 2, rounded up). */
+const ROUNDING_UM = 1;
 
 /** The branches of a tree support, layer by layer, and what drawing them needs. */
 export interface TreePlan {
@@ -122,14 +125,17 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     const gapIndex = () => model.indexBetween(j, -bottom, -1);
     const { areas: s, circles } = yield* drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, gapIndex, widthUm: w });
     below = s;
-    out[j] = { ...(yield* splitNear(model, j, s)), whole: s, circles };
+    out[j] = { ...(yield* splitNear(model, j, s, circles)), whole: s, circles };
     yield;
   }
   return out;
 }
 
-/** model.split, run only on the islands that meet the part within the roof layers above or the floor layers below: the others are body. */
-function* splitNear(model: ModelLayers, j: number, s: ExPolygon[]): Generator<void, SupportAreas> {
+/**
+ * model.split, run only on the islands that meet the part within the roof layers above or the floor layers
+ * below: the others are body. `circles[i]`, when set, is the regular polygon island i is drawn as.
+ */
+function* splitNear(model: ModelLayers, j: number, s: ExPolygon[], circles: readonly (RegularPolygon | null)[]): Generator<void, SupportAreas> {
   const cfg = model.cfg;
   const nearby: number[] = [];
   for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
@@ -145,7 +151,14 @@ function* splitNear(model: ModelLayers, j: number, s: ExPolygon[]): Generator<vo
     // an island whose bounds meet no island of a layer's section cannot meet that section
     const box = boundsOf([a]);
     let hit = false;
-    for (let t = 0; t < nearby.length && !hit; t++) hit = meetsAny(box, model.sectionBoxes(nearby[t])) && model.sectionIndex(nearby[t]).meets(a);
+    // a lone branch's polygon lies within its circle (grown by a micrometre for its vertices' rounding): a
+    // circle clear of a section is clear of it at once
+    const c = circles[i];
+    for (let t = 0; t < nearby.length && !hit; t++) {
+      if (!meetsAny(box, model.sectionBoxes(nearby[t]))) continue;
+      const ix = model.sectionIndex(nearby[t]);
+      hit = (!c || ix.meetsDisc(c.x, c.y, c.r + ROUNDING_UM)) && ix.meets(a);
+    }
     (hit ? near : far).push(a);
   }
   // islands apart split apart: a few at a time
