@@ -26,7 +26,10 @@ function unitsOf(sides: number): Float64Array {
   return u;
 }
 
-/** The polygon's vertices, rounded to whole µm. */
+/** How far a vertex rounded to whole µm may lie beyond the polygon's circle, µm (√2 / 2, rounded up). */
+export const VERTEX_ROUNDING_UM = 1;
+
+/** The polygon's vertices, rounded to whole µm (so they may lie up to VERTEX_ROUNDING_UM outside its circle). */
 export function regularPolygon(x: number, y: number, r: number, sides: number): Polygon {
   const u = unitsOf(sides);
   const out: Polygon = new Array(sides);

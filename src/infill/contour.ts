@@ -1,4 +1,3 @@
-import { hypot } from '../geometry/types.js';
 /**
  * Level-set tracing on a sampled scalar field (marching squares): the crossings of the level on grid edges
  * are joined cell by cell into polylines, open where they leave the grid and closed otherwise. Saddle cells
@@ -149,33 +148,4 @@ export function traceContours(
     seen[e] = 0;
   }
   return out;
-}
-
-/**
- * Total length of the level set `level`, by linear interpolation only (no chaining, no refinement);
- * `weight(i, j)` scales each cell's contribution. A quick measure for choosing parameters.
- */
-export function contourLength(g: ScalarGrid, level: number, weight?: (i: number, j: number) => number): number {
-  const { nx, ny, h, v } = g;
-  const W = nx + 1;
-  let total = 0;
-  const px: number[] = [], py: number[] = [];
-  for (let j = 0; j < ny; j++) {
-    for (let i = 0; i < nx; i++) {
-      const a = v[j * W + i] - level, b = v[j * W + i + 1] - level;
-      const c = v[(j + 1) * W + i + 1] - level, d = v[(j + 1) * W + i] - level;
-      const sa = a >= 0, sb = b >= 0, sc = c >= 0, sd = d >= 0;
-      if (sa === sb && sb === sc && sc === sd) continue;
-      px.length = 0;
-      py.length = 0;
-      if (sa !== sb) { px.push(a / (a - b)); py.push(0); }
-      if (sb !== sc) { px.push(1); py.push(b / (b - c)); }
-      if (sc !== sd) { px.push(1 - c / (c - d)); py.push(1); }
-      if (sd !== sa) { px.push(0); py.push(1 - d / (d - a)); }
-      let l = hypot(px[1] - px[0], py[1] - py[0]);
-      if (px.length === 4) l += hypot(px[3] - px[2], py[3] - py[2]);
-      total += (weight ? weight(i, j) : 1) * l * h;
-    }
-  }
-  return total;
 }

@@ -18,7 +18,7 @@ import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
 import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
-import type { RegularPolygon } from '../../geometry/regular-polygon.js';
+import { VERTEX_ROUNDING_UM, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
 import { radiusClasses, TreeVolumes } from './tree-volumes.js';
@@ -37,8 +37,6 @@ export const TIP_SHIFT_SHARE = 0.5;
 export const STAND_SHARE = 0.2;
 
 const rad = (deg: number) => (deg * Math.PI) / 180;
-/** How far a regular polygon's vertices, rounded to whole µm, may lie beyond its circle, µm (√2 / 2, rounded up). */
-const ROUNDING_UM = 1;
 
 /** The branches of a tree support, layer by layer, and what drawing them needs. */
 export interface TreePlan {
@@ -157,7 +155,7 @@ function* splitNear(model: ModelLayers, j: number, s: ExPolygon[], circles: read
     for (let t = 0; t < nearby.length && !hit; t++) {
       if (!meetsAny(box, model.sectionBoxes(nearby[t]))) continue;
       const ix = model.sectionIndex(nearby[t]);
-      hit = (!c || ix.meetsDisc(c.x, c.y, c.r + ROUNDING_UM)) && ix.meets(a);
+      hit = (!c || ix.meetsDisc(c.x, c.y, c.r + VERTEX_ROUNDING_UM)) && ix.meets(a);
     }
     (hit ? near : far).push(a);
   }
@@ -185,7 +183,7 @@ export function treeRules(model: ModelLayers): TreeRules {
   const maxR = Math.round(TRUNK_MAX_BRANCH_RADII * branchR);
   // one more class for the widest trunks, so that every branch is checked against a class as wide as it is
   const radii = radiusClasses(tipR, branchR);
-  if (maxR > branchR + 0.5) radii.push(Math.round(maxR));
+  if (maxR > branchR + 0.5) radii.push(maxR);
   return {
     radii,
     tipR,
