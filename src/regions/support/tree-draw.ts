@@ -10,7 +10,7 @@ import { hypot, type Bounds, type ExPolygon, type Polygon } from '../../geometry
 import { regularPolygon, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
 import { AreaIndex } from '../../geometry/area-index.js';
-import { PointGrid } from './point-grid.js';
+import { FixedPointGrid } from './point-grid.js';
 import { ITEMS_PER_STEP } from './tree-nodes.js';
 
 /**
@@ -160,8 +160,12 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
 /** The discs in groups that overlap (each group in the discs' order, groups by their first disc). */
 export function clusters(discs: readonly Disc[]): Disc[][] {
   const widest = discs.reduce((w, c) => Math.max(w, c.r), 0);
-  const grid = new PointGrid(Math.max(1000, 2 * widest));
-  for (const c of discs) grid.add(c.x, c.y);
+  const xs = new Float64Array(discs.length), ys = new Float64Array(discs.length);
+  for (let i = 0; i < discs.length; i++) {
+    xs[i] = discs[i].x;
+    ys[i] = discs[i].y;
+  }
+  const grid = new FixedPointGrid(xs, ys, Math.max(1000, 2 * widest));
   const root = discs.map((_, i) => i);
   const find = (i: number): number => {
     while (root[i] !== i) i = root[i] = root[root[i]];
@@ -171,8 +175,8 @@ export function clusters(discs: readonly Disc[]): Disc[][] {
   for (let i = 0; i < discs.length; i++) {
     const c = discs[i];
     // the groups do not depend on the order the overlaps are found in (a group's root is its first disc)
-    grid.near(c.x, c.y, c.r + widest, found);
-    for (let f = 0; f < found.length; f++) {
+    const count = grid.near(c.x, c.y, c.r + widest, found);
+    for (let f = 0; f < count; f++) {
       const k = found[f];
       if (k <= i || hypot(discs[k].x - c.x, discs[k].y - c.y) > c.r + discs[k].r) continue;
       const a = find(i), b = find(k);

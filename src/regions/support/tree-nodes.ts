@@ -7,7 +7,7 @@
  * merged trunks further.
  */
 import type { Found } from '../../geometry/area-index.js';
-import { PointGrid } from './point-grid.js';
+import { FixedPointGrid } from './point-grid.js';
 import { classOf, type Blocked, type Keep, type TreeVolumes } from './tree-volumes.js';
 import { hypot } from '../../geometry/types.js';
 
@@ -73,8 +73,12 @@ function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
 /** Pairs of nearby nodes of one group (each node with its nearest few within range) as [a, b, distance], shortest first. */
 export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): [number, number, number][] {
   if (ids.length < 2 || rangeUm <= 0) return [];
-  const grid = new PointGrid(Math.min(NEAR_FIRST_UM, Math.max(1000, rangeUm / 4)));
-  for (let k = 0; k < ids.length; k++) grid.add(nodes[ids[k]].x, nodes[ids[k]].y);
+  const xs = new Float64Array(ids.length), ys = new Float64Array(ids.length);
+  for (let k = 0; k < ids.length; k++) {
+    xs[k] = nodes[ids[k]].x;
+    ys[k] = nodes[ids[k]].y;
+  }
+  const grid = new FixedPointGrid(xs, ys, Math.min(NEAR_FIRST_UM, Math.max(1000, rangeUm / 4)));
   const seen = new Set<number>();
   const out: [number, number, number][] = [];
   const found: number[] = [];
@@ -84,10 +88,10 @@ export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], ra
   for (let a = 0; a < ids.length; a++) {
     const x = grid.xs[a], y = grid.ys[a];
     // the nearest few are usually close: look further only when they are not
-    grid.near(x, y, Math.min(rangeUm, NEAR_FIRST_UM), found);
-    if (found.length <= NEAR_COUNT && rangeUm > NEAR_FIRST_UM) grid.near(x, y, rangeUm, found);
+    let count = grid.near(x, y, Math.min(rangeUm, NEAR_FIRST_UM), found);
+    if (count <= NEAR_COUNT && rangeUm > NEAR_FIRST_UM) count = grid.near(x, y, rangeUm, found);
     let kept = 0;
-    for (let f = 0; f < found.length; f++) {
+    for (let f = 0; f < count; f++) {
       const b = found[f];
       if (b === a) continue;
       const d = hypot(grid.xs[b] - x, grid.ys[b] - y);

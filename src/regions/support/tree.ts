@@ -13,7 +13,7 @@
  *    below holds it, off the part, split into body, roof and floor.
  */
 import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
-import { hypot, UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
+import { hypot, UM_PER_MM, type ExPolygon, type Pt } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
 import { PointGrid } from './point-grid.js';
@@ -216,8 +216,7 @@ function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spac
   for (let i = 0; i < candidates.length; i++) {
     if (i % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
     const p = candidates[i];
-    const near = existing.near(p.x, p.y, Math.max(gap, widest), found);
-    if (near.some((k) => hypot(existing.xs[k] - p.x, existing.ys[k] - p.y) < Math.max(gap, lower[k].r))) continue;
+    if (tooClose(existing, found, existing.near(p.x, p.y, Math.max(gap, widest), found), p, gap, lower)) continue;
     for (const keep of keeps) {
       const q = vol.index(keep, 0, j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * spacing);
       if (!q) continue;
@@ -226,6 +225,15 @@ function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spac
       break;
     }
   }
+}
+
+/** Whether any of the first `count` ids in `found` is a node nearer p than the gap or its own radius. */
+function tooClose(grid: PointGrid, found: readonly number[], count: number, p: Pt, gap: number, nodes: readonly TreeNode[]): boolean {
+  for (let f = 0; f < count; f++) {
+    const k = found[f];
+    if (hypot(grid.xs[k] - p.x, grid.ys[k] - p.y) < Math.max(gap, nodes[k].r)) return true;
+  }
+  return false;
 }
 
 /** Drop node i of layer j and every node above that leads into it. */
