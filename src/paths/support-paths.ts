@@ -109,15 +109,20 @@ function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: 
 interface Component {
   area: ExPolygon;
   box: Bounds;
-  /** Entries by role and closedness, in the order first met. */
-  entries: Map<string, { role: PathRole; closed: boolean; paths: Pt[][] }>;
+  /** Entries by role and closedness, in the order first met (a few at most: a list, not a map per area). */
+  entries: { role: PathRole; closed: boolean; paths: Pt[][] }[];
 }
 
 function add(c: Component, role: PathRole, closed: boolean, path: Pt[]): void {
-  const key = role + (closed ? ':loops' : ':lines');
-  let e = c.entries.get(key);
-  if (!e) c.entries.set(key, (e = { role, closed, paths: [] }));
-  e.paths.push(path);
+  const entries = c.entries;
+  for (let i = 0; i < entries.length; i++) {
+    const e = entries[i];
+    if (e.role === role && e.closed === closed) {
+      e.paths.push(path);
+      return;
+    }
+  }
+  entries.push({ role, closed, paths: [path] });
 }
 
 /** The component holding `p` (the nearest by bounds when none holds it exactly: a point on an edge). */
@@ -145,7 +150,7 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   // each kind is already a union of disjoint islands: only kinds side by side need joining into components
   const kinds = [s.body, s.roof, s.floor].filter((k) => k.length > 0);
   const all = s.whole ?? (kinds.length === 1 ? kinds[0] : union(kinds.flat()));
-  const components: Component[] = all.map((area) => ({ area, box: boundsOf([area]), entries: new Map() }));
+  const components: Component[] = all.map((area) => ({ area, box: boundsOf([area]), entries: [] }));
   // lone tree branches are regular polygons: their walls and fill are made straight from the circle
   const circles = new Map<ExPolygon, RegularPolygon>();
   const plain: Component[] = [];
@@ -184,9 +189,9 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   const width = w / UM_PER_MM;
   const groups: PathGroup[] = [];
   for (const c of components) {
-    if (c.entries.size === 0) continue;
+    if (c.entries.length === 0) continue;
     const entries: PathEntry[] = [];
-    for (const e of c.entries.values()) entries.push({ role: e.role, closed: e.closed, paths: e.paths, width });
+    for (const e of c.entries) entries.push({ role: e.role, closed: e.closed, paths: e.paths, width });
     groups.push({ kind: 'support', area: c.area, convex: circles.has(c.area), entries });
   }
   return groups;
