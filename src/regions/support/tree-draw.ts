@@ -131,22 +131,46 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
   const freeRings: Polygon[] = [];
   const rest: Polygon[] = [];
   let count = 0;
-  for (const cluster of clusters(d.discs)) {
+  const groups = clusters(d.discs);
+  for (let g = 0; g < groups.length; g++) {
+    const cluster = groups[g];
     if ((count += cluster.length) >= ITEMS_PER_STEP) {
       // the overlapping free clusters so far in one union (clusters do not meet: each merges on its own)
       if (freeRings.length) for (const a of unionRings(freeRings.splice(0))) keep(a, null);
       count = 0;
       yield;
     }
-    const fine = cluster.every(
-      (c) => c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !roofIndex?.meetsDisc(c.x, c.y, c.r) && !onPart(c),
-    );
+    let fine = true;
+    for (let k = 0; k < cluster.length && fine; k++) {
+      const c = cluster[k];
+      fine = c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !roofIndex?.meetsDisc(c.x, c.y, c.r) && !onPart(c);
+    }
+    if (cluster.length === 1) {
+      // a lone branch (most of them): its circle as it is
+      const c = cluster[0];
+      const ring = circle(c.x, c.y, c.r);
+      if (fine) keep({ outer: ring, holes: [] }, { x: c.x, y: c.y, r: c.r, sides: ring.length });
+      else rest.push(ring);
+      continue;
+    }
     // a circle inside another of its cluster adds nothing to their union
-    const rings = (cluster.length > 1 ? cluster.filter((c) => !cluster.some((o) => o !== c && o.r > c.r && hypot(o.x - c.x, o.y - c.y) + c.r <= o.r)) : cluster).map((c) => circle(c.x, c.y, c.r));
-    if (fine) {
-      if (rings.length === 1) keep({ outer: rings[0], holes: [] }, { x: cluster[0].x, y: cluster[0].y, r: cluster[0].r, sides: rings[0].length });
-      else for (const r of rings) freeRings.push(r);
-    } else for (const r of rings) rest.push(r);
+    let left = 0, last = cluster[0];
+    for (let k = 0; k < cluster.length; k++) {
+      if (insideAnother(cluster[k], cluster)) continue;
+      left++;
+      last = cluster[k];
+    }
+    if (fine && left === 1) {
+      // the others all inside one: that one is a lone circle
+      const ring = circle(last.x, last.y, last.r);
+      keep({ outer: ring, holes: [] }, { x: last.x, y: last.y, r: last.r, sides: ring.length });
+      continue;
+    }
+    const into = fine ? freeRings : rest;
+    for (let k = 0; k < cluster.length; k++) {
+      const c = cluster[k];
+      if (!insideAnother(c, cluster)) into.push(circle(c.x, c.y, c.r));
+    }
   }
   if (freeRings.length) for (const a of unionRings(freeRings)) keep(a, null);
   if (rest.length === 0 && roof.length === 0) return { areas: free, circles };
@@ -155,6 +179,15 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
   for (const b of [d.collision, d.gapBelow]) if (s.length && b.length) s = cutAway(s, b);
   for (const a of printable(s, d.widthUm)) keep(a, null);
   return { areas: free, circles };
+}
+
+/** Whether disc c lies inside a wider disc of its cluster. */
+function insideAnother(c: Disc, cluster: readonly Disc[]): boolean {
+  for (let k = 0; k < cluster.length; k++) {
+    const o = cluster[k];
+    if (o !== c && o.r > c.r && hypot(o.x - c.x, o.y - c.y) + c.r <= o.r) return true;
+  }
+  return false;
 }
 
 /** The discs in groups that overlap (each group in the discs' order, groups by their first disc). */
