@@ -78,14 +78,16 @@ export class AreaIndex {
 
   constructor(areas: readonly ExPolygon[]) {
     let n = 0;
-    for (const a of areas) {
+    for (let i = 0; i < areas.length; i++) {
+      const a = areas[i];
       n += a.outer.length;
-      for (const h of a.holes) n += h.length;
+      for (let h = 0; h < a.holes.length; h++) n += a.holes[h].length;
     }
     const e = new Float64Array(4 * n);
     let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
     let k = 0;
-    for (const a of areas) {
+    for (let i = 0; i < areas.length; i++) {
+      const a = areas[i];
       for (let r = -1; r < a.holes.length; r++) {
         const ring = r < 0 ? a.outer : a.holes[r];
         const len = ring.length;

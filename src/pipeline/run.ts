@@ -293,12 +293,18 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
 
 function planBounds(layers: readonly LayerPlan[]): PrintPlan['bounds'] {
   let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity, minZ = Infinity, maxZ = -Infinity;
-  for (const l of layers) {
-    for (const s of l.steps) {
+  // indexed loops: this runs once, mostly before the engine optimises it, and a for-of there makes an
+  // iterator result per point (4 MB a BridgeTest slice with tree support)
+  for (let li = 0; li < layers.length; li++) {
+    const l = layers[li];
+    for (let si = 0; si < l.steps.length; si++) {
+      const s = l.steps[si];
       if (s.kind !== 'extrude') continue;
       if (l.z < minZ) minZ = l.z;
       if (l.z > maxZ) maxZ = l.z;
-      for (const p of s.points) {
+      const pts = s.points;
+      for (let k = 0; k < pts.length; k++) {
+        const p = pts[k];
         if (p.x < minX) minX = p.x;
         if (p.y < minY) minY = p.y;
         if (p.x > maxX) maxX = p.x;

@@ -170,7 +170,7 @@ export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink)
         const retracting = step.retract && s.retractionEnabled;
         if (retracting && retractDistance > 0) sink.retract(retractDistance, s.retractionSpeed);
         moveZ(pos, retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, zSpeed, sink);
-        for (const p of step.points) travelTo(pos, p.x, p.y, speed, sink);
+        for (let k = 0; k < step.points.length; k++) travelTo(pos, step.points[k].x, step.points[k].y, speed, sink);
         moveZ(pos, layerZ, zSpeed, sink);
         if (retracting && primeDistance > 0) sink.prime(primeDistance, s.retractionSpeed);
         continue;
