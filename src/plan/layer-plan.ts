@@ -178,6 +178,14 @@ function printLoops(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir
   }
   // support's loops have no seam to hide: each starts where the nozzle is nearest
   const mode = entry.role === 'support' || entry.role === 'support-roof' || entry.role === 'support-floor' ? 'nearest' : ctx.cfg.seamPosition;
+  if (loops.length === 1) {
+    // one loop (a tree branch's wall, most of a layer's support): no order to find
+    const loop = loops[0];
+    const s = mode === 'nearest' ? chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0) : chooseSeam(loop, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo);
+    extrudeFlagged(ctx, styles, rotateLoop(loop, s), true, entry.width, rotateFlags(entry.overAir?.[0] ?? null, s));
+    ctx.loopNo += 1;
+    return;
+  }
   // For ordering purposes a loop is entered at its seam (or, for 'nearest', at any vertex: use the first).
   const seams = loops.map((l, i) => (mode === 'nearest' ? -1 : chooseSeam(l, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo + i)));
   const order = orderNearest(
@@ -206,6 +214,16 @@ function rotateFlags(flags: Uint8Array | null, start: number): Uint8Array | null
 /** Open lines nearest-first, each from whichever end is nearer. */
 function printLines(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir: Style }): void {
   const lines = entry.paths;
+  if (lines.length === 1) {
+    // one line (a tree branch's chord): from its nearer end, the first on a tie
+    const line = lines[0];
+    const a = line[0], b = line[line.length - 1];
+    const ax = a.x - ctx.at.x, ay = a.y - ctx.at.y, bx = b.x - ctx.at.x, by = b.y - ctx.at.y;
+    const flip = bx * bx + by * by < ax * ax + ay * ay;
+    const flags = entry.overAir?.[0] ?? null;
+    extrudeFlagged(ctx, styles, flip ? line.slice().reverse() : line, false, widthOf(entry, 0), flags && flip ? flags.slice().reverse() : flags);
+    return;
+  }
   const order = orderNearest(
     lines.length,
     (i) => [lines[i][0], lines[i][lines[i].length - 1]],
