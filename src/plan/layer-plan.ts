@@ -85,7 +85,7 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   const length = pathLength(from, points);
   let retract = cfg.retractionEnabled && cfg.retractionDistance > 0 && (forceRetract || ((leaves || length > minTravelUm) && length > minTravelUm * 0.25));
   if (retract && !forceRetract && cfg.supportLimitRetractions && ctx.kind === 'support' && ctx.lastKind === 'support' && points.length === 1) {
-    retract = !(ctx.guard ??= new PartGuard([...ctx.islands, ...ctx.below])).clear(from, to);
+    retract = !(ctx.guard ??= new PartGuard([ctx.islands, ctx.below])).clear(from, to);
   }
   ctx.steps.push({ kind: 'travel', points, retract, zHop: retract ? cfg.zHop : 0, speed });
   ctx.at = to;

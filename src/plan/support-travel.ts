@@ -6,31 +6,26 @@
  * string), or along one without crossing its edge.
  */
 import { AreaIndex } from '../geometry/area-index.js';
-import { boundsOf, pointInArea } from '../geometry/clip.js';
-import type { Bounds, ExPolygon, Pt } from '../geometry/types.js';
+import type { ExPolygon, Pt } from '../geometry/types.js';
 
 /** The part's islands of a layer and the one below, for asking whether a straight travel stays off them. */
 export class PartGuard {
-  readonly #areas: readonly ExPolygon[];
-  readonly #boxes: Bounds[];
-  /** Every edge of the islands, for crossing tests. */
-  readonly #edges: AreaIndex;
+  /** One index per layer's islands (each layer's islands lie apart, so its index's even-odd test is theirs). */
+  readonly #layers: AreaIndex[];
 
-  constructor(areas: readonly ExPolygon[]) {
-    this.#areas = areas;
-    this.#boxes = areas.map((a) => boundsOf([a]));
-    this.#edges = new AreaIndex(areas);
+  /** `layers`: the islands of each layer the travel must keep off (this layer's, the one below's). */
+  constructor(layers: readonly (readonly ExPolygon[])[]) {
+    this.#layers = layers.filter((l) => l.length > 0).map((l) => new AreaIndex(l));
   }
 
   /** Whether the straight line from a to b stays clear of every island (neither crosses nor lies over one). */
   clear(a: Pt, b: Pt): boolean {
-    if (this.#edges.crosses(a.x, a.y, b.x, b.y)) return false;
-    // no edge crossed: the whole line is inside an island or outside it, as its middle is
-    const x = (a.x + b.x) / 2, y = (a.y + b.y) / 2;
-    for (let i = 0; i < this.#areas.length; i++) {
-      const box = this.#boxes[i];
-      if (x < box.minX || x > box.maxX || y < box.minY || y > box.maxY) continue;
-      if (pointInArea({ x, y }, this.#areas[i])) return false;
+    // with no edge crossed the whole line lies inside an island or outside it, as its middle does (taken to
+    // the whole µm: the index's point queries run on integers, as the part's points are)
+    const x = Math.round((a.x + b.x) / 2), y = Math.round((a.y + b.y) / 2);
+    for (let i = 0; i < this.#layers.length; i++) {
+      const ix = this.#layers[i];
+      if (ix.crosses(a.x, a.y, b.x, b.y) || ix.contains(x, y)) return false;
     }
     return true;
   }
