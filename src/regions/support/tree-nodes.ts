@@ -213,10 +213,18 @@ function mergePairs(d: Descent, pairs: readonly [number, number, number][], from
 function leanTowards(d: Descent, pairs: readonly [number, number, number][]): void {
   const { upper, done, paired, toward } = d;
   const barrier = d.vol.partIndex(d.j);
-  const clear = (a: number, b: number) => !barrier.crosses(upper[a].x, upper[a].y, upper[b].x, upper[b].y);
+  // per pair: 0 not asked yet, 1 the part is not between them, 2 it is (each pair asked once)
+  const between = new Uint8Array(pairs.length);
+  const clear = (k: number) => {
+    if (between[k] === 0) {
+      const a = upper[pairs[k][0]], b = upper[pairs[k][1]];
+      between[k] = barrier.crosses(a.x, a.y, b.x, b.y) ? 2 : 1;
+    }
+    return between[k] === 1;
+  };
   for (let k = 0; k < pairs.length; k++) {
     const a = pairs[k][0], b = pairs[k][1];
-    if (done[a] || done[b] || paired[a] || paired[b] || !clear(a, b)) continue;
+    if (done[a] || done[b] || paired[a] || paired[b] || !clear(k)) continue;
     paired[a] = paired[b] = 1;
     toward[a] = b;
     toward[b] = a;
@@ -224,8 +232,8 @@ function leanTowards(d: Descent, pairs: readonly [number, number, number][]): vo
   for (let k = 0; k < pairs.length; k++) {
     const a = pairs[k][0], b = pairs[k][1];
     if (done[a] || done[b]) continue;
-    if (toward[a] < 0 && clear(a, b)) toward[a] = b;
-    if (toward[b] < 0 && clear(a, b)) toward[b] = a;
+    if (toward[a] < 0 && clear(k)) toward[a] = b;
+    if (toward[b] < 0 && clear(k)) toward[b] = a;
   }
 }
 
