@@ -9,13 +9,19 @@ import type { Polyline, Pt } from './types.js';
 /** Up to this many entry points are scanned rather than put in a grid. */
 const SCAN_BELOW = 24;
 
+/**
+ * Entry points bucketed by cell in flat arrays: cell c's entries are items[start[c] … start[c] + live[c]),
+ * the used ones dropped as the search passes them.
+ */
 interface Grid {
   cell: number;
   minX: number;
   minY: number;
   cols: number;
   rows: number;
-  buckets: Map<number, number[]>;
+  start: Int32Array;
+  live: Int32Array;
+  items: Int32Array;
 }
 
 function buildGrid(ends: Float64Array, count: number): Grid {
@@ -32,14 +38,44 @@ function buildGrid(ends: Float64Array, count: number): Grid {
   const cell = Math.max(span / cols0, 1);
   const cols = Math.floor((maxX - minX) / cell) + 1;
   const rows = Math.floor((maxY - minY) / cell) + 1;
-  const buckets = new Map<number, number[]>();
+  const cellOf = new Int32Array(count);
+  const start = new Int32Array(cols * rows + 1);
   for (let i = 0; i < count; i++) {
-    const key = Math.floor((ends[2 * i + 1] - minY) / cell) * cols + Math.floor((ends[2 * i] - minX) / cell);
-    let b = buckets.get(key);
-    if (!b) buckets.set(key, (b = []));
-    b.push(i);
+    const c = Math.floor((ends[2 * i + 1] - minY) / cell) * cols + Math.floor((ends[2 * i] - minX) / cell);
+    cellOf[i] = c;
+    start[c + 1]++;
   }
-  return { cell, minX, minY, cols, rows, buckets };
+  for (let c = 0; c < cols * rows; c++) start[c + 1] += start[c];
+  const live = new Int32Array(cols * rows);
+  const items = new Int32Array(count);
+  // entries in index order within a cell, as they were pushed into buckets before
+  for (let i = 0; i < count; i++) items[start[cellOf[i]] + live[cellOf[i]]++] = i;
+  return { cell, minX, minY, cols, rows, start, live, items };
+}
+
+/** The nearest live entry found so far by `visit` (squared distance, entry), reset before each search. */
+let foundD = Infinity;
+let found = -1;
+
+/** Look at the live entries of cell (gx, gy) from (x, y), dropping used ones, and keep the nearest (the lowest entry on a tie). */
+function visit(grid: Grid, gx: number, gy: number, x: number, y: number, ends: Float64Array, owner: readonly number[], used: Uint8Array): void {
+  const c = gy * grid.cols + gx;
+  const from = grid.start[c], n = grid.live[c];
+  if (n === 0) return;
+  const items = grid.items;
+  let kept = from;
+  for (let k = from; k < from + n; k++) {
+    const e = items[k];
+    if (used[owner[e]]) continue; // dead entry: dropped from the cell
+    items[kept++] = e;
+    const ddx = ends[2 * e] - x, ddy = ends[2 * e + 1] - y;
+    const d = ddx * ddx + ddy * ddy;
+    if (d < foundD || (d === foundD && e < found)) {
+      foundD = d;
+      found = e;
+    }
+  }
+  grid.live[c] = kept - from;
 }
 
 /**
@@ -111,44 +147,29 @@ export function orderNearest(
   for (let done = 0; done < count; done++) {
     const cx = Math.floor((at.x - grid.minX) / grid.cell);
     const cy = Math.floor((at.y - grid.minY) / grid.cell);
-    let best = -1;
-    let bestD = Infinity;
+    found = -1;
+    foundD = Infinity;
+    const x = at.x, y = at.y;
     // rings of cells around (cx, cy), starting at the first ring that touches the grid
     const dxOut = cx < 0 ? -cx : cx >= grid.cols ? cx - grid.cols + 1 : 0;
     const dyOut = cy < 0 ? -cy : cy >= grid.rows ? cy - grid.rows + 1 : 0;
     const r0 = Math.max(dxOut, dyOut);
     const rMax = Math.max(Math.abs(cx), Math.abs(cx - grid.cols + 1), Math.abs(cy), Math.abs(cy - grid.rows + 1));
-    const visit = (gx: number, gy: number) => {
-      const b = grid.buckets.get(gy * grid.cols + gx);
-      if (!b) return;
-      let kept = 0;
-      for (let k = 0; k < b.length; k++) {
-        const e = b[k];
-        if (used[owner[e]]) continue; // dead entry: dropped from the bucket below
-        b[kept++] = e;
-        const ddx = ends[2 * e] - at.x, ddy = ends[2 * e + 1] - at.y;
-        const d = ddx * ddx + ddy * ddy;
-        if (d < bestD || (d === bestD && e < best)) {
-          bestD = d;
-          best = e;
-        }
-      }
-      b.length = kept;
-    };
     for (let r = r0; r <= rMax; r++) {
       // every point in ring r is at least (r - 1) cells away
-      if (best >= 0 && (r - 1) * grid.cell > Math.sqrt(bestD)) break;
+      if (found >= 0 && (r - 1) * grid.cell > Math.sqrt(foundD)) break;
       const y0 = Math.max(0, cy - r), y1 = Math.min(grid.rows - 1, cy + r);
       const x0 = Math.max(0, cx - r), x1 = Math.min(grid.cols - 1, cx + r);
       for (let gy = y0; gy <= y1; gy++) {
         if (gy === cy - r || gy === cy + r) {
-          for (let gx = x0; gx <= x1; gx++) visit(gx, gy);
+          for (let gx = x0; gx <= x1; gx++) visit(grid, gx, gy, x, y, ends, owner, used);
         } else {
-          if (cx - r >= 0 && cx - r < grid.cols) visit(cx - r, gy);
-          if (r > 0 && cx + r >= 0 && cx + r < grid.cols) visit(cx + r, gy);
+          if (cx - r >= 0 && cx - r < grid.cols) visit(grid, cx - r, gy, x, y, ends, owner, used);
+          if (r > 0 && cx + r >= 0 && cx + r < grid.cols) visit(grid, cx + r, gy, x, y, ends, owner, used);
         }
       }
     }
+    const best = found;
     const item = owner[best];
     used[item] = 1;
     out.push([item, which[best]]);
