@@ -4,6 +4,7 @@
  * candidate). Entry points sit in a uniform grid searched in growing rings, so n items cost about O(n)
  * grid work instead of the O(n²) of a plain scan.
  */
+import { bucketByCell } from './cell-buckets.js';
 import type { Polyline, Pt } from './types.js';
 
 /** Up to this many entry points are scanned rather than put in a grid. */
@@ -39,17 +40,11 @@ function buildGrid(ends: Float64Array, count: number): Grid {
   const cols = Math.floor((maxX - minX) / cell) + 1;
   const rows = Math.floor((maxY - minY) / cell) + 1;
   const cellOf = new Int32Array(count);
-  const start = new Int32Array(cols * rows + 1);
-  for (let i = 0; i < count; i++) {
-    const c = Math.floor((ends[2 * i + 1] - minY) / cell) * cols + Math.floor((ends[2 * i] - minX) / cell);
-    cellOf[i] = c;
-    start[c + 1]++;
-  }
-  for (let c = 0; c < cols * rows; c++) start[c + 1] += start[c];
+  for (let i = 0; i < count; i++) cellOf[i] = Math.floor((ends[2 * i + 1] - minY) / cell) * cols + Math.floor((ends[2 * i] - minX) / cell);
+  const { start, items } = bucketByCell(cellOf, cols * rows);
+  // every entry live at first
   const live = new Int32Array(cols * rows);
-  const items = new Int32Array(count);
-  // entries in index order within a cell, as they were pushed into buckets before
-  for (let i = 0; i < count; i++) items[start[cellOf[i]] + live[cellOf[i]]++] = i;
+  for (let c = 0; c < cols * rows; c++) live[c] = start[c + 1] - start[c];
   return { cell, minX, minY, cols, rows, start, live, items };
 }
 

@@ -6,6 +6,8 @@
  * its storage). Which ids are found never depends on how the points are bucketed, only their order does.
  */
 
+import { bucketByCell } from '../../geometry/cell-buckets.js';
+
 /** Cell coordinates are taken modulo this in a bucket's key, which then stays a small integer. */
 const WRAP = 1 << 15;
 
@@ -118,16 +120,8 @@ export class FixedPointGrid {
     while ((Math.floor((maxX - minX) / cell) + 1) * (Math.floor((maxY - minY) / cell) + 1) > CELLS_PER_POINT * n + 1) cell *= 2;
     const nx = Math.floor((maxX - minX) / cell) + 1, ny = Math.floor((maxY - minY) / cell) + 1;
     const cellOf = new Int32Array(n);
-    const start = new Int32Array(nx * ny + 1);
-    for (let i = 0; i < n; i++) {
-      const c = Math.floor((ys[i] - minY) / cell) * nx + Math.floor((xs[i] - minX) / cell);
-      cellOf[i] = c;
-      start[c + 1]++;
-    }
-    for (let c = 0; c < nx * ny; c++) start[c + 1] += start[c];
-    const fill = start.slice(0, nx * ny);
-    const items = new Int32Array(n);
-    for (let i = 0; i < n; i++) items[fill[cellOf[i]]++] = i;
+    for (let i = 0; i < n; i++) cellOf[i] = Math.floor((ys[i] - minY) / cell) * nx + Math.floor((xs[i] - minX) / cell);
+    const { start, items } = bucketByCell(cellOf, nx * ny);
     this.#cell = cell;
     this.#minX = minX;
     this.#minY = minY;
