@@ -42,11 +42,17 @@ export interface SlicedModel {
 export async function sliceAndAnalyze(
   name: string, options: SliceOptions = {}, analyze: Partial<AnalyzeOptions> = {},
 ): Promise<SlicedModel> {
-  const bytes = readModel(name);
+  return sliceAndAnalyzeInput(readModel(name), options, analyze);
+}
+
+/** `sliceAndAnalyze` of any input the library reads (file bytes, raw typed arrays). */
+export async function sliceAndAnalyzeInput(
+  input: unknown, options: SliceOptions = {}, analyze: Partial<AnalyzeOptions> = {},
+): Promise<SlicedModel> {
   const slicer = new Slicer({ threads: 1, ...options });
-  const { gcode, stats, warnings } = await slicer.slice(bytes);
+  const { gcode, stats, warnings } = await slicer.slice(input);
   const cfg = slicer.config;
-  const placed = prepareModel(bytes, cfg).mesh;
+  const placed = prepareModel(input, cfg).mesh;
   const report = analyzePrint(placed, gcode, { ...analysisProfile(cfg), ...analyze });
   return { gcode, report, layers: stats.layers, warnings };
 }

@@ -1,0 +1,112 @@
+/**
+ * Test-only meshes with curved overhangs, made here rather than read from ../shared/models: a sphere on the
+ * bed, a torus lying flat and a mushroom (a thin stem under a wide cap). Closed, outward-facing, indexed, mm.
+ * Their undersides slope through every angle, where the shared models' overhangs are mostly flat or stepped.
+ */
+import type { Mesh } from '../mesh/types.js';
+
+/** A closed surface from a grid of u (around, periodic) × v (from one pole or rim to the other) vertices. */
+class GridMesh {
+  readonly positions: number[] = [];
+  readonly indices: number[] = [];
+
+  vertex(x: number, y: number, z: number): number {
+    this.positions.push(x, y, z);
+    return this.positions.length / 3 - 1;
+  }
+
+  tri(a: number, b: number, c: number): void {
+    this.indices.push(a, b, c);
+  }
+
+  /** Two triangles a b c, a c d (counter-clockwise seen from outside). */
+  quad(a: number, b: number, c: number, d: number): void {
+    this.tri(a, b, c);
+    this.tri(a, c, d);
+  }
+
+  mesh(): Mesh {
+    return { positions: new Float32Array(this.positions), indices: new Uint32Array(this.indices) };
+  }
+}
+
+/** A UV sphere of radius r resting on the bed (its centre at height r), `around` × `rings` faces. */
+export function sphere(r: number, around = 64, rings = 32): Mesh {
+  const g = new GridMesh();
+  const bottom = g.vertex(0, 0, 0);
+  const ring: number[][] = [];
+  for (let k = 1; k < rings; k++) {
+    const polar = (Math.PI * k) / rings;
+    const row: number[] = [];
+    for (let i = 0; i < around; i++) {
+      const a = (2 * Math.PI * i) / around;
+      row.push(g.vertex(r * Math.sin(polar) * Math.cos(a), r * Math.sin(polar) * Math.sin(a), r - r * Math.cos(polar)));
+    }
+    ring.push(row);
+  }
+  const top = g.vertex(0, 0, 2 * r);
+  for (let i = 0; i < around; i++) {
+    const n = (i + 1) % around;
+    g.tri(bottom, ring[0][n], ring[0][i]);
+    for (let k = 0; k + 1 < ring.length; k++) g.quad(ring[k][i], ring[k][n], ring[k + 1][n], ring[k + 1][i]);
+    g.tri(top, ring[ring.length - 1][i], ring[ring.length - 1][n]);
+  }
+  return g.mesh();
+}
+
+/** A torus lying flat on the bed: the tube's centre circle of radius R at height r, the tube's radius r. */
+export function torus(R: number, r: number, around = 72, tube = 36): Mesh {
+  const g = new GridMesh();
+  const grid: number[][] = [];
+  for (let i = 0; i < around; i++) {
+    const a = (2 * Math.PI * i) / around;
+    const row: number[] = [];
+    for (let k = 0; k < tube; k++) {
+      const b = (2 * Math.PI * k) / tube;
+      const d = R + r * Math.cos(b);
+      row.push(g.vertex(d * Math.cos(a), d * Math.sin(a), r + r * Math.sin(b)));
+    }
+    grid.push(row);
+  }
+  for (let i = 0; i < around; i++) {
+    const n = (i + 1) % around;
+    for (let k = 0; k < tube; k++) {
+      const m = (k + 1) % tube;
+      g.quad(grid[i][k], grid[n][k], grid[n][m], grid[i][m]);
+    }
+  }
+  return g.mesh();
+}
+
+/**
+ * A closed solid of revolution about the z axis from its profile, (radius, height) pairs from the bottom up
+ * (every radius above 0): a flat disc closes each end.
+ */
+function revolved(profile: readonly [number, number][], sides = 64): Mesh {
+  const g = new GridMesh();
+  const rows = profile.map(([r, z]) => {
+    const row: number[] = [];
+    for (let i = 0; i < sides; i++) {
+      const a = (2 * Math.PI * i) / sides;
+      row.push(g.vertex(r * Math.cos(a), r * Math.sin(a), z));
+    }
+    return row;
+  });
+  const c0 = g.vertex(0, 0, profile[0][1]), c1 = g.vertex(0, 0, profile[profile.length - 1][1]);
+  const last = rows[rows.length - 1];
+  for (let i = 0; i < sides; i++) {
+    const n = (i + 1) % sides;
+    g.tri(c0, rows[0][n], rows[0][i]);
+    for (let k = 0; k + 1 < rows.length; k++) g.quad(rows[k][i], rows[k][n], rows[k + 1][n], rows[k + 1][i]);
+    g.tri(c1, last[i], last[n]);
+  }
+  return g.mesh();
+}
+
+/**
+ * A mushroom: a stem of radius 4 mm, 12 mm high, under a cap widening to 15 mm at 75° from vertical, 17 mm
+ * high in all.
+ */
+export function mushroom(): Mesh {
+  return revolved([[4, 0], [4, 12], [15, 15], [15, 17]]);
+}
