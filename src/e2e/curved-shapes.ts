@@ -1,12 +1,13 @@
 /**
  * Test-only meshes with curved overhangs, made here rather than read from ../shared/models: a sphere on the
- * bed, a torus lying flat and a mushroom (a thin stem under a wide cap). Closed, outward-facing, indexed, mm.
- * Their undersides slope through every angle, where the shared models' overhangs are mostly flat or stepped.
+ * bed, a torus lying flat and a mushroom (a thin stem under a wide, conical cap). Closed, outward-facing,
+ * indexed, mm. The sphere's and torus's undersides slope through every angle, the mushroom's at one; the shared
+ * models' overhangs are mostly flat or stepped.
  */
 import type { Mesh } from '../mesh/types.js';
 
-/** A closed surface from a grid of u (around, periodic) × v (from one pole or rim to the other) vertices. */
-class GridMesh {
+/** An indexed mesh built vertex by vertex and face by face. */
+class MeshBuilder {
   readonly positions: number[] = [];
   readonly indices: number[] = [];
 
@@ -32,7 +33,7 @@ class GridMesh {
 
 /** A UV sphere of radius r resting on the bed (its centre at height r), `around` × `rings` faces. */
 export function sphere(r: number, around = 64, rings = 32): Mesh {
-  const g = new GridMesh();
+  const g = new MeshBuilder();
   const bottom = g.vertex(0, 0, 0);
   const ring: number[][] = [];
   for (let k = 1; k < rings; k++) {
@@ -56,7 +57,7 @@ export function sphere(r: number, around = 64, rings = 32): Mesh {
 
 /** A torus lying flat on the bed: the tube's centre circle of radius R at height r, the tube's radius r. */
 export function torus(R: number, r: number, around = 72, tube = 36): Mesh {
-  const g = new GridMesh();
+  const g = new MeshBuilder();
   const grid: number[][] = [];
   for (let i = 0; i < around; i++) {
     const a = (2 * Math.PI * i) / around;
@@ -83,7 +84,7 @@ export function torus(R: number, r: number, around = 72, tube = 36): Mesh {
  * (every radius above 0): a flat disc closes each end.
  */
 function revolved(profile: readonly [number, number][], sides = 64): Mesh {
-  const g = new GridMesh();
+  const g = new MeshBuilder();
   const rows = profile.map(([r, z]) => {
     const row: number[] = [];
     for (let i = 0; i < sides; i++) {
