@@ -1,7 +1,7 @@
 /**
  * The paths of a layer's support: the body filled with straight lines (zigzag, lines or grid) in one direction
  * on every layer so they stack into thin walls, the roof and floor with dense lines that turn every layer, and
- * optional walls round each support area. One group per connected support area, so travel within it combs
+ * optional walls round the body. One group per connected support area, so travel within it combs
  * and travel between areas retracts, as between islands.
  */
 import { boundsOf, flatten, offset, pointInArea, union } from '../geometry/clip.js';
@@ -153,39 +153,42 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   const components: Component[] = all.map((area) => ({ area, box: boundsOf([area]), entries: [] }));
   // lone tree branches are regular polygons: their walls and fill are made straight from the circle
   const circles = new Map<ExPolygon, RegularPolygon>();
+  const body = new Set(s.body);
+  // the components whose walls come from their body pieces (all but the lone branches that are body whole)
   const plain: Component[] = [];
   for (let i = 0; i < all.length; i++) {
     const c = s.whole && s.circles ? s.circles[i] : null;
     if (c) circles.set(all[i], c);
-    else plain.push(components[i]);
+    if (!c || !body.has(all[i])) plain.push(components[i]);
   }
-  // walls round each area; the fill starts inside the innermost
+  // walls round the body only: roof and floor are dense lines of their own, as without walls (a wall round a
+  // roof a few lines wide would print it solid)
   for (let i = 0; i < all.length && cfg.supportWalls > 0; i++) {
     const c = circles.get(all[i]);
-    if (!c) continue;
+    if (!c || !body.has(all[i])) continue;
     for (let k = 0; k < cfg.supportWalls; k++) {
       const ring = shrunkRegularPolygon(c, w / 2 + k * w);
       if (!ring) break;
       add(components[i], 'support', true, ring);
     }
   }
-  let inside = plain.map((c) => c.area);
+  let inside = s.body.filter((a) => !circles.has(a));
   for (let k = 0; k < cfg.supportWalls && inside.length; k++) {
     const centre = shrink(inside, w / 2);
     for (const ring of flatten(centre)) add(owner(plain, ring[0]), 'support', true, ring);
     // the next wall's outline (the fill is inset from the kinds themselves, below)
     if (k + 1 < cfg.supportWalls) inside = shrink(centre, w / 2);
   }
-  const wallInset = cfg.supportWalls * w;
-  const inset = w / 2 + wallInset;
+  // the body's lines start inside its innermost wall, the roof's and floor's half a line in
+  const inset = w / 2 + cfg.supportWalls * w;
   const byArea = new Map<ExPolygon, Component>();
   for (const c of components) byArea.set(c.area, c);
   const to = (role: PathRole): Emit => (line, a) => add((a && byArea.get(a)) || owner(components, line[0]), role, false, line);
   bodyLines(s.body, cfg, inset, w, origin, circles, to('support'));
   const iface = w / (cfg.supportInterfaceDensity / 100);
   const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
-  fill(s.roof, inset, ifaceAngle, iface, origin, true, to('support-roof'));
-  fill(s.floor, inset, ifaceAngle, iface, origin, true, to('support-floor'));
+  fill(s.roof, w / 2, ifaceAngle, iface, origin, true, to('support-roof'));
+  fill(s.floor, w / 2, ifaceAngle, iface, origin, true, to('support-floor'));
   const width = w / UM_PER_MM;
   const groups: PathGroup[] = [];
   for (const c of components) {
