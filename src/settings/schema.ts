@@ -282,7 +282,7 @@ export const SCHEMA = {
   supportInterfaceSpeed: when(num(35, 1, 1000, 'mm/s', 'support', 'Speed of the support interface (roof and floor).'), { supportEnabled: true }, 'overhangs'),
   supportTreeBranchAngle: when(num(40, 5, 80, '°', 'support', 'Tree support: the steepest angle from vertical at which branches lean towards each other as they go down.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
   supportTreeTipDiameter: when(num(0.8, 0.2, 10, 'mm', 'support', 'Tree support: diameter of a branch tip under the part.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
-  supportTreeBranchDiameter: when(num(2.5, 0.5, 50, 'mm', 'support', 'Tree support: diameter a branch grows to (trunks where branches merged grow further, by the diameter angle).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeBranchDiameter: when(num(2, 0.5, 50, 'mm', 'support', 'Tree support: diameter a branch grows to (trunks where branches merged grow further, by the diameter angle).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
   supportTreeDiameterAngle: when(num(5, 0, 30, '°', 'support', 'Tree support: how fast a merged branch thickens on its way down (angle of its sides from vertical).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
   supportTreeTipSpacing: when(num(3, 0.5, 20, 'mm', 'support', 'Tree support: distance between branch tips under the roof (closer holds the roof better, further apart uses less material).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
 
