@@ -187,8 +187,15 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   bodyLines(s.body, cfg, inset, w, origin, circles, to('support'));
   const iface = w / (cfg.supportInterfaceDensity / 100);
   const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
-  fill(s.roof, w / 2, ifaceAngle, iface, origin, true, to('support-roof'));
-  fill(s.floor, w / 2, ifaceAngle, iface, origin, true, to('support-floor'));
+  for (const [kind, role] of [[s.roof, 'support-roof'], [s.floor, 'support-floor']] as const) {
+    // a piece no line of the family crosses (a sliver of a sloping overhang's roof) is printed as its outline
+    const lined: ExPolygon[] = [];
+    for (const a of kind) {
+      if (mayHoldLines(a, w / 2, ifaceAngle, iface, origin)) lined.push(a);
+      else for (const ring of flatten(shrink([a], w / 2))) add(owner(components, ring[0]), role, true, ring);
+    }
+    fill(lined, w / 2, ifaceAngle, iface, origin, true, to(role));
+  }
   const width = w / UM_PER_MM;
   const groups: PathGroup[] = [];
   for (const c of components) {
