@@ -87,9 +87,9 @@ function binaryStl(tris: Tri[]): Uint8Array {
  */
 export function overhangPart(): Uint8Array {
   return binaryStl([
-    ...boxTris(0, 0, 0, 6, 6, 8), // pillar
-    ...boxTris(14, 0, 0, 18, 6, 8), // pillar
-    ...boxTris(0, 0, 8, 24, 6, 10), // slab
+    ...boxTris(0, 0, 0, 6, 6, 12), // pillar
+    ...boxTris(14, 0, 0, 18, 6, 12), // pillar
+    ...boxTris(0, 0, 12, 24, 6, 14), // slab: 12 mm up, high enough for tree branches to grow to their full width
     ...boxTris(20, 0, 0, 24, 6, 3), // ledge under the cantilever
     ...slopeTris(0, 0, 6, 2, 6), // slope
   ]);

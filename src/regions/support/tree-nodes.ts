@@ -36,6 +36,8 @@ export interface TreeNode {
   keep: Keep;
   /** Whether the branch came from a merge (then it thickens by the diameter angle). */
   merged: boolean;
+  /** Height above the bed of the highest tip the branch carries, µm. */
+  topUm: number;
   /** Stuck above the part: goes straight down until it stands on it. */
   landing: boolean;
   /** Indices of the nodes on the layer above that continue into this one. */
@@ -48,6 +50,8 @@ export interface TreeRules {
   tipR: number;
   branchR: number;
   maxR: number;
+  /** The widest a branch carrying tips up to `topUm` above the bed needs to be, µm (at least the tip's radius). */
+  heightCapR: (topUm: number) => number;
   /** Radius growth per layer of a tip, µm. */
   tipGrowth: number;
   /** Radius growth per layer of a merged trunk on layer j, µm. */
@@ -66,8 +70,10 @@ const dist = (ax: number, ay: number, bx: number, by: number) => hypot(bx - ax, 
 
 /** The radius a node grows to on its next layer, whole µm (as its centre is). */
 function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
-  if (n.r < rules.branchR) return Math.round(Math.min(rules.branchR, n.r + rules.tipGrowth));
-  return n.merged ? Math.round(Math.min(rules.maxR, n.r + rules.trunkGrowth(j))) : n.r;
+  const cap = rules.heightCapR(n.topUm);
+  if (n.r >= cap) return n.r;
+  if (n.r < rules.branchR) return Math.round(Math.min(rules.branchR, cap, n.r + rules.tipGrowth));
+  return n.merged ? Math.round(Math.min(rules.maxR, cap, n.r + rules.trunkGrowth(j))) : n.r;
 }
 
 /** Pairs of nearby nodes of one group (each node with its nearest few within range) as [a, b, distance], shortest first. */
@@ -296,7 +302,7 @@ function grown(n: TreeNode, i: number, at: Found, keep: Keep, m: number, j: numb
   }
   // a branch kept only off the part that finds itself able to reach the bed again goes for the bed
   if (keep === 'model' && !vol.index('bed', c, j).contains(at.x, at.y)) keep = 'bed';
-  return { x: at.x, y: at.y, r, c, keep, merged: n.merged, landing: false, parents: [i], dead: false };
+  return { x: at.x, y: at.y, r, c, keep, merged: n.merged, topUm: n.topUm, landing: false, parents: [i], dead: false };
 }
 
 /** Whether the wider of two nodes d apart holds the other within a move (it can take it in where it is). */
@@ -310,7 +316,7 @@ function absorbs(a: TreeNode, b: TreeNode, d: number, m: number): boolean {
  */
 function merge(a: TreeNode, b: TreeNode, ia: number, ib: number, d: number, m: number, j: number, vol: TreeVolumes, rules: TreeRules): TreeNode | null {
   const big = a.r >= b.r ? a : b, small = big === a ? b : a;
-  const want = Math.max(wantRadius({ ...big, merged: true }, rules, j), a.r, b.r);
+  const want = Math.max(wantRadius({ ...big, merged: true, topUm: Math.max(a.topUm, b.topUm) }, rules, j), a.r, b.r);
   let t: number;
   if (d <= 2 * m) {
     const wa = a.r * a.r, wb = b.r * b.r;
@@ -325,7 +331,7 @@ function merge(a: TreeNode, b: TreeNode, ia: number, ib: number, d: number, m: n
     if (!q) continue;
     const toBig = dist(q.x, q.y, big.x, big.y), toSmall = dist(q.x, q.y, small.x, small.y);
     if (toBig > reach || (toSmall > reach && toSmall + small.r > r + reach)) continue;
-    return { x: q.x, y: q.y, r, c, keep: a.keep, merged: true, landing: false, parents: [ia, ib], dead: false };
+    return { x: q.x, y: q.y, r, c, keep: a.keep, merged: true, topUm: Math.max(a.topUm, b.topUm), landing: false, parents: [ia, ib], dead: false };
   }
   return null;
 }

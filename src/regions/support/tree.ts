@@ -5,7 +5,8 @@
  * 2. tips (tree-tips.ts) under every overhang, below a dense roof of supportInterfaceLayers, `tip spacing`
  *    apart; then, from the top layer down, every branch steps one layer down (tree-nodes.ts): leaning towards
  *    its neighbours by at most layerHeight · tan(branch angle), merging with those it meets, thickening from
- *    the tip diameter to the branch diameter (merged trunks further, by the diameter angle), always outside
+ *    the tip diameter to the branch diameter (merged trunks further, by the diameter angle; none wider than
+ *    its highest tip's height over BRANCH_SLENDERNESS), always outside
  *    its avoidance, so that it reaches the bed; in 'everywhere' placement a branch that cannot reach the bed
  *    keeps clear of the part until it stands on it (the bottom Z gap above it, with a floor); in 'buildPlate'
  *    placement such branches are dropped, with every tip they carried;
@@ -33,6 +34,12 @@ export const ROOF_REACH_SHARE = 0.75;
 export const ROOF_GROW_WIDTHS = 0.5;
 /** A tip may move this share of the tip spacing to find room. */
 export const TIP_SHIFT_SHARE = 0.5;
+/**
+ * A branch grows no wider than the height of the highest tip it carries over this (and never thinner than a
+ * tip): a pin 4 mm tall stays 0.8 mm across, one 10 mm tall widens to 2 mm. Under low overhangs (a sphere's
+ * underside) the tips stand a few millimetres each, too short to merge, and widening them only adds material.
+ */
+export const BRANCH_SLENDERNESS = 5;
 /** A branch ends on the part when at least this share of its cross-section has the part under it. */
 export const STAND_SHARE = 0.2;
 
@@ -189,6 +196,7 @@ export function treeRules(model: ModelLayers): TreeRules {
     tipR,
     branchR,
     maxR,
+    heightCapR: (topUm) => Math.max(tipR, Math.round(topUm / (2 * BRANCH_SLENDERNESS))),
     tipGrowth: cfg.layerHeight * UM_PER_MM * Math.tan(rad(TIP_WIDEN_DEG)),
     trunkGrowth: (j) => height(j) * tanGrow,
     step: (j) => (j > 0 && j < model.count ? height(j) * tanMove : 0),
@@ -220,7 +228,7 @@ function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spac
     for (const keep of keeps) {
       const q = vol.index(keep, 0, j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * spacing);
       if (!q) continue;
-      lower.push({ x: q.x, y: q.y, r: rules.tipR, c: 0, keep, merged: false, landing: false, parents: [], dead: false });
+      lower.push({ x: q.x, y: q.y, r: rules.tipR, c: 0, keep, merged: false, topUm: rules.zUm(j), landing: false, parents: [], dead: false });
       existing.add(q.x, q.y);
       break;
     }
