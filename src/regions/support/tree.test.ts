@@ -8,7 +8,7 @@ import {
   BOX_ON_POST, LEDGE_OVER_STEP, LEDGE_OVER_WIDE_STEP, T_SHAPE, boxLayers, heldShare, intoPart, supportArea, supportConfig, supported, type Box,
 } from './test-models.js';
 import { CIRCLE_TOLERANCE_UM, circle } from './tree-draw.js';
-import { planTree } from './tree.js';
+import { BRANCH_SLENDERNESS, planTree } from './tree.js';
 
 const MODELS: [string, Box[]][] = [
   ['a box on a thin post', BOX_ON_POST],
@@ -170,4 +170,28 @@ test('a ledge just above a wide step gets no tree support with build-plate place
   assert.equal(totalArea(plate.layers), 0);
   const everywhere = supported(LEDGE_OVER_WIDE_STEP, { supportType: 'tree' });
   assert.ok(totalArea(everywhere.layers) > 0);
+});
+
+test('branches widen with their height: tips 4 mm up stay a tip wide, tips 12 mm up reach the branch diameter', () => {
+  const widest = (top: number) => {
+    // a 16 mm slab on a 4 mm post, its underside `top` mm up
+    const boxes: Box[] = [
+      { x: [-2, 2], y: [-2, 2], z: [0, top] },
+      { x: [-8, 8], y: [-8, 8], z: [top, top + 2] },
+    ];
+    const { layers, cfg } = supported(boxes, { supportType: 'tree' });
+    const run = planTree(new ModelLayers(layers, cfg));
+    let r = run.next();
+    while (!r.done) r = run.next();
+    const { nodes, rules } = r.value;
+    let w = 0;
+    for (const layer of nodes) for (const n of layer) if (!n.dead) w = Math.max(w, n.r);
+    return { w, rules, cfg };
+  };
+  const low = widest(4);
+  assert.equal(low.w, low.rules.tipR, `under a 4 mm overhang the widest branch is ${low.w} µm in radius, a tip ${low.rules.tipR}`);
+  // tips 12 mm up (the roof and gap below the slab) allow 12 / 5 mm: more than the 2 mm branch diameter
+  const high = widest(12);
+  assert.ok(high.w >= high.rules.branchR, `under a 12 mm overhang the widest branch is ${high.w} µm in radius, the branch radius ${high.rules.branchR}`);
+  assert.ok(high.cfg.supportTreeBranchDiameter * UM_PER_MM < (12 * UM_PER_MM) / BRANCH_SLENDERNESS);
 });
