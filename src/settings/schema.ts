@@ -275,7 +275,7 @@ export const SCHEMA = {
   supportInterfaceLayers: when(int(2, 0, 20, 'count', 'support', 'Dense interface layers at the top of the support, under the part (roof).'), { supportEnabled: true }, 'overhangs'),
   supportFloorLayers: when(optNum(0, 20, 'count', 'support', 'Dense interface layers where support stands on the part (floor). Empty (null) = supportInterfaceLayers.', 'integer'), { supportEnabled: true }, 'overhangs'),
   supportInterfaceDensity: when(num(70, 10, 100, '%', 'support', 'Density of the interface (roof and floor) lines.'), { supportEnabled: true }, 'overhangs'),
-  supportWallCount: when(optNum(0, 5, 'count', 'support', 'Walls around support areas. Empty (null) = none for normal support, one for tree support.', 'integer'), { supportEnabled: true }, 'overhangs'),
+  supportWallCount: when(optNum(0, 5, 'count', 'support', 'Walls around the support body (roof and floor are dense lines without walls). Empty (null) = none for normal support, one for tree support.', 'integer'), { supportEnabled: true }, 'overhangs'),
   supportLineWidth: when(optNum(0.1, 3, 'mm', 'support', 'Line width of support and its interface. Empty (null) = lineWidth.'), { supportEnabled: true }, 'overhangs'),
   supportSpeed: when(num(50, 1, 1000, 'mm/s', 'support', 'Speed of the support body.'), { supportEnabled: true }, 'overhangs'),
   supportLimitRetractions: when(bool(true, 'support', 'Travels from support to support on a layer do not retract, unless the straight line passes over the part (this layer or the one below): faster to print, with at most some strings inside the support.'), { supportEnabled: true }, 'overhangs'),
