@@ -79,10 +79,13 @@ export function groupLayers(raw: RawRecords): GroupedLayers {
   const layers: GcodeLayer[] = [];
   let prevZ = 0;
   const markerOf = new Float64Array(nLayers).fill(NaN);
+  const heightOf = new Float64Array(nLayers).fill(NaN);
   for (let b = 0; b < blocks; b++) {
     const l = blockLayer[b]!;
     const m = raw.blockMarker.data[b]!;
     if (l >= 0 && Number.isNaN(markerOf[l]!) && !Number.isNaN(m)) markerOf[l] = m;
+    const h = raw.blockHeight.data[b]!;
+    if (l >= 0 && Number.isNaN(heightOf[l]!) && !Number.isNaN(h)) heightOf[l] = h;
   }
   for (let i = 0; i < nLayers; i++) {
     const table = extrusions.layers[i]!;
@@ -102,6 +105,7 @@ export function groupLayers(raw: RawRecords): GroupedLayers {
       zMin,
       zMax,
       marker: Number.isNaN(marker) ? null : marker,
+      declaredHeight: Number.isNaN(heightOf[i]!) ? null : heightOf[i]!,
       extrusions: table,
       travels: travels.layers[i]!,
     });

@@ -5,7 +5,8 @@
  * under G91 or M83, as in Marlin, Klipper and Repetier), G92 (axes and E), G28 (homed axes to 0), G20/G21,
  * G10/G11 firmware retraction (G10 with P or L is a tool offset and ignored), `N` line numbers and `*` checksums,
  * `;` and `( )` comments. Markers: `;LAYER:n` (Cura), `;LAYER_CHANGE` (PrusaSlicer, Orca), `; CHANGE_LAYER`
- * (Bambu), `;TYPE:name` and `; FEATURE: name` (mapped to canonical features).
+ * (Bambu), `;TYPE:name` and `; FEATURE: name` (mapped to canonical features), `;HEIGHT:h` (PrusaSlicer, Strata:
+ * the layer's height).
  *
  * Lines are scanned by character code with no per-line allocation, so ~30 MB of G-code parse in about a second.
  */
@@ -263,6 +264,9 @@ class GcodeParserState implements GcodeParser {
       this.layerChangeOrdinal++;
     } else if (s.startsWith('LAYER_CHANGE', i) || s.startsWith('CHANGE_LAYER', i)) {
       this.openMarkerBlock(this.layerChangeOrdinal++);
+    } else if (s.startsWith('HEIGHT:', i)) {
+      const h = this.number(s, i + 7, b);
+      if (h > 0) this.raw.declareHeight(this.block, h);
     } else if (s.startsWith('TYPE:', i)) {
       this.setType(s.slice(i + 5, b).trim());
     } else if (s.startsWith('FEATURE:', i)) {

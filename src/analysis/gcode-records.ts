@@ -34,11 +34,14 @@ export class RawRecords {
   };
   /** Marker value per block (NaN for blocks not opened by a marker). */
   readonly blockMarker = growableF64(256);
+  /** Layer height the G-code declares in the block (`;HEIGHT:`, its first one), NaN without. */
+  readonly blockHeight = growableF64(256);
   /** Blocks with an id below this come before the first layer marker; Infinity when no marker was seen. */
   firstMarkerBlock = Infinity;
 
   constructor() {
     this.blockMarker.push(NaN);
+    this.blockHeight.push(NaN);
   }
 
   get blockCount(): number {
@@ -48,7 +51,13 @@ export class RawRecords {
   /** Opens a new block and returns its id. */
   openBlock(marker: number): number {
     this.blockMarker.push(marker);
+    this.blockHeight.push(NaN);
     return this.blockMarker.length - 1;
+  }
+
+  /** Record a `;HEIGHT:` of block b (the first one counts). */
+  declareHeight(b: number, heightMm: number): void {
+    if (Number.isNaN(this.blockHeight.data[b]!)) this.blockHeight.data[b] = heightMm;
   }
 
   pushExtrusion(

@@ -58,6 +58,8 @@ export interface GcodeLayer {
   zMax: number;
   /** The first `;LAYER:n` value (or `;LAYER_CHANGE` ordinal) merged into this layer, null without markers. */
   marker: number | null;
+  /** The layer height the G-code declares for this layer (its first `;HEIGHT:`), null when it declares none. */
+  declaredHeight: number | null;
   extrusions: ExtrusionTable;
   travels: TravelTable;
 }

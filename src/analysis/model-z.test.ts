@@ -53,6 +53,18 @@ test('support on a grid of its own between part layers: no raft, thickness per m
   assert.deepEqual(z.frames.filter((f) => f.hasSupport).map((f) => t(f.supportThickness)), [0.2, 0.267, 0.266]);
 });
 
+test('a declared layer height (;HEIGHT:) is the thickness of support, also after a layer without support', () => {
+  // support on layers 1 and 3, none on layer 2 (a floor starting above the part's top)
+  const spec: [number, string[]][] = [[0.2, ['WALL-OUTER']], [0.4, ['WALL-OUTER', 'SUPPORT']], [0.6, ['WALL-OUTER']], [0.8, ['WALL-OUTER', 'SUPPORT']]];
+  const t = (v: number) => Math.round(v * 1000) / 1000;
+  const supportThickness = (gcode: string) => modelZFrames(parseGcode(gcode).layers, O).frames.filter((f) => f.hasSupport).map((f) => t(f.supportThickness));
+  // without ;HEIGHT: the support is taken to reach down to the last layer with support (a grid of its own)
+  assert.deepEqual(supportThickness(layers(spec)), [0.4, 0.4]);
+  const declared = layers(spec).replace(/(;LAYER:\d+\n)/g, '$1;HEIGHT:0.2\n');
+  assert.deepEqual(supportThickness(declared), [0.2, 0.2]);
+  assert.deepEqual(parseGcode(declared).layers.map((l) => l.declaredHeight), [0.2, 0.2, 0.2, 0.2]);
+});
+
 test('without layers before the part there is no raft, typed or not', () => {
   const typed = parseGcode(layers([[0.2, ['WALL-OUTER', 'SUPPORT']], [0.4, ['WALL-OUTER']]]));
   assert.equal(modelZFrames(typed.layers, O).source, 'none');

@@ -9,7 +9,8 @@
  *
  * Layer thicknesses are per kind of material: PrusaSlicer prints support on its own layer grid between the part's
  * layers, so the part's thickness is measured from the previous layer with part material and the support's from
- * the previous layer with support.
+ * the previous layer with support, unless the G-code declares the layer's height (`;HEIGHT:`, as PrusaSlicer and
+ * Strata write): then support on a layer after one without any is as thick as declared, not down to the last.
  */
 import { Feature, isPartFeature, isSupportFeature } from './feature-names.js';
 import type { GcodeLayer } from './gcode-types.js';
@@ -112,7 +113,8 @@ export function modelZFrames(layers: readonly GcodeLayer[], o: ModelZOptions): M
       prevPartZ = modelZ;
     }
     if (frame.hasSupport) {
-      frame.supportThickness = z - prevSupportZ;
+      // the height the G-code declares for the layer, else the distance from the last layer with support
+      frame.supportThickness = layers[l]!.declaredHeight ?? z - prevSupportZ;
       prevSupportZ = z;
     }
     frames.push(frame);
