@@ -1,8 +1,8 @@
 /**
- * Test-only meshes with curved overhangs, made here rather than read from ../shared/models: a sphere on the
- * bed, a torus lying flat and a mushroom (a thin stem under a wide, conical cap). Closed, outward-facing,
- * indexed, mm. The sphere's and torus's undersides slope through every angle, the mushroom's at one; the shared
- * models' overhangs are mostly flat or stepped.
+ * Test-only meshes with curved and sloping overhangs, made here rather than read from ../shared/models: a sphere
+ * on the bed, a torus lying flat, a mushroom (a thin stem under a wide, conical cap) and fins leaning at several
+ * angles. Closed, outward-facing, indexed, mm. The sphere's and torus's undersides slope through every angle, the
+ * mushroom's and each fin's at one; the shared models' overhangs are mostly flat or stepped.
  */
 import type { Mesh } from '../mesh/types.js';
 
@@ -110,4 +110,24 @@ function revolved(profile: readonly [number, number][], sides = 64): Mesh {
  */
 export function mushroom(): Mesh {
   return revolved([[4, 0], [4, 12], [15, 15], [15, 17]]);
+}
+
+/**
+ * Four fins, 4 mm thick, 8 mm deep and 8 mm high, leaning over at 55°, 60°, 65° and 70° from vertical (their
+ * undersides flat slopes past the support threshold), 30 mm apart.
+ */
+export function leaningFins(): Mesh {
+  const g = new MeshBuilder();
+  [55, 60, 65, 70].forEach((deg, k) => {
+    const x = 30 * k, h = 8, s = h * Math.tan((deg * Math.PI) / 180);
+    const b = [g.vertex(x, 0, 0), g.vertex(x + 4, 0, 0), g.vertex(x + 4, 8, 0), g.vertex(x, 8, 0)];
+    const t = [g.vertex(x + s, 0, h), g.vertex(x + 4 + s, 0, h), g.vertex(x + 4 + s, 8, h), g.vertex(x + s, 8, h)];
+    g.quad(b[0], b[3], b[2], b[1]); // bottom
+    g.quad(t[0], t[1], t[2], t[3]); // top
+    g.quad(b[0], b[1], t[1], t[0]); // front
+    g.quad(b[3], t[3], t[2], b[2]); // back
+    g.quad(b[0], t[0], t[3], b[3]); // the side leaning over the bed
+    g.quad(b[1], b[2], t[2], t[1]); // the underside
+  });
+  return g.mesh();
 }

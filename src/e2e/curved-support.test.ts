@@ -1,12 +1,12 @@
 /**
  * Support under curved, sloping overhangs, end to end on meshes made for the test (curved-shapes.ts): a sphere
- * on the bed, a torus lying flat and a mushroom whose cap widens at 75° from vertical. The independent
+ * on the bed, a torus lying flat, a mushroom whose cap widens at 75° from vertical and fins leaning at 55-70°. The independent
  * analyser holds normal and tree support to the same bars as on the shared models (support-bars.ts): every
  * overhang held, nothing of the part over air, no support inside the part, a one- or two-layer top Z gap.
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { mushroom, sphere, torus } from './curved-shapes.js';
+import { leaningFins, mushroom, sphere, torus } from './curved-shapes.js';
 import { sliceAndAnalyzeInput } from './models.js';
 import { assertSupportBars } from './support-bars.js';
 import type { Mesh } from '../mesh/types.js';
@@ -15,6 +15,7 @@ const SHAPES: [string, () => Mesh][] = [
   ['a sphere of radius 15 mm', () => sphere(15)],
   ['a torus lying flat (18 mm, tube 6 mm)', () => torus(18, 6)],
   ['a mushroom', mushroom],
+  ['fins leaning at 55-70°', leaningFins],
 ];
 
 const volumes = new Map<string, number>();
@@ -41,8 +42,8 @@ test('without support the curved overhangs are not held (the measure discriminat
 });
 
 // Tests in a file run one after another: the runs above have filled `volumes`.
-test('under the mushroom (tall, under a wide cap) and the sphere (low, sloping) tree support uses at most 0.75 × the material of normal', () => {
-  for (const name of ['a mushroom', 'a sphere of radius 15 mm']) {
+test('under the mushroom (tall, under a wide cap), the sphere (low, sloping) and the leaning fins tree support uses at most 0.75 × the material of normal', () => {
+  for (const name of ['a mushroom', 'a sphere of radius 15 mm', 'fins leaning at 55-70°']) {
     const tree = volumes.get(`${name} tree`);
     const normal = volumes.get(`${name} normal`);
     assert.ok(tree !== undefined && normal !== undefined, `${name}: both support runs passed`);
