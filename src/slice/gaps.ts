@@ -1,8 +1,15 @@
 /**
  * Tolerant closing of open chains (holes in scans, non-manifold or flipped patches): each chain's
  * tail is joined to the nearest free chain head within a gap, closest pairs first (a chain's own
- * head included, which closes it on itself). Chains still open afterwards are closed on themselves.
+ * head included, which closes it on itself). A run of chains still open afterwards is closed on
+ * itself when that encloses solid (counter-clockwise: a part with a wall missing) or when the gap
+ * between its ends is small next to its length (a hole's wall with a hole in it). A run that would
+ * close into a hole across a wide gap is left out: a stray flap of surface (the edge of a scan's open
+ * base) would cut a cavity into the solid, where support would then be put inside the part.
  */
+
+/** A run that closes into a hole is closed only when its ends are at most this share of its length apart. */
+export const MAX_SELF_CLOSE_SHARE = 0.25;
 
 /** Join open chains (slot sequences, oriented) into closed rings (slot sequences). */
 export function closeOpenChains(
@@ -63,26 +70,43 @@ export function closeOpenChains(
       prev[j] = i;
     }
   }
-  // Walk the links: cycles become rings; paths (from a chain nobody leads into) are closed on themselves.
+  // Walk the links: cycles become rings; paths (from a chain nobody leads into) are closed on themselves
+  // unless that makes a hole across a wide gap.
   const done = new Uint8Array(n);
   const rings: Int32Array[] = [];
   const emit = (start: number): void => {
     const parts: Int32Array[] = [];
-    let length = 0;
-    for (let c = start; c !== -1 && !done[c]; c = next[c]) {
+    let count = 0;
+    let c = start;
+    for (; c !== -1 && !done[c]; c = next[c]) {
       done[c] = 1;
       parts.push(open[c]);
-      length += open[c].length;
+      count += open[c].length;
     }
-    const ring = new Int32Array(length);
+    const ring = new Int32Array(count);
     let o = 0;
     for (const p of parts) {
       ring.set(p, o);
       o += p.length;
     }
+    // a cycle came back to its start; a path ends at a chain nobody continues
+    if (c !== start && !selfClosable(ring, slotX, slotY)) return;
     rings.push(ring);
   };
   for (let i = 0; i < n; i++) if (prev[i] === -1 && !done[i]) emit(i);
   for (let i = 0; i < n; i++) if (!done[i]) emit(i);
   return rings;
+}
+
+/** Whether an open run closed on itself is kept: it encloses solid, or its ends are close next to its length. */
+function selfClosable(ring: Int32Array, slotX: Float64Array, slotY: Float64Array): boolean {
+  let length = 0, twiceArea = 0;
+  for (let k = 0; k < ring.length; k++) {
+    const p = ring[k], q = ring[(k + 1) % ring.length];
+    twiceArea += slotX[p] * slotY[q] - slotX[q] * slotY[p];
+    if (k + 1 < ring.length) length += Math.hypot(slotX[q] - slotX[p], slotY[q] - slotY[p]);
+  }
+  if (twiceArea > 0) return true;
+  const a = ring[0], b = ring[ring.length - 1];
+  return Math.hypot(slotX[a] - slotX[b], slotY[a] - slotY[b]) <= MAX_SELF_CLOSE_SHARE * length;
 }
