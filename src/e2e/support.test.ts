@@ -36,6 +36,16 @@ test('tree support uses clearly less material than normal support for the same o
   }
 });
 
+test('the Stanford bunny (an open scan): support holds its overhangs and stays out of the part, trees with less material', { skip, timeout: 600_000 }, async () => {
+  // its first layer has support and no part (the base is open): the analyser is told there is no raft
+  const volume: Record<string, number> = {};
+  for (const supportType of ['normal', 'tree'] as const) {
+    const { report } = await sliceAndAnalyze('stanford-bunny.stl', { supportEnabled: true, supportType }, { modelZOffset: 0 });
+    volume[supportType] = assertSupportBars(report);
+  }
+  assert.ok(volume.tree <= 0.75 * volume.normal, `tree ${volume.tree.toFixed(0)} mm³, normal ${volume.normal.toFixed(0)} mm³`);
+});
+
 test('without support the overhangs of SupportTest are not held (the measure discriminates)', { skip, timeout: 300_000 }, async () => {
   const { report } = await sliceAndAnalyze('SupportTest.stl', { supportEnabled: false });
   const sup = report.summary.support!;
