@@ -189,11 +189,9 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
   for (const [kind, role] of [[s.roof, 'support-roof'], [s.floor, 'support-floor']] as const) {
     // a piece no line of the family crosses (a sliver of a sloping overhang's roof) is printed as its outline
-    const lined: ExPolygon[] = [];
-    for (const a of kind) {
-      if (mayHoldLines(a, w / 2, ifaceAngle, iface, origin)) lined.push(a);
-      else for (const ring of flatten(shrink([a], w / 2))) add(owner(components, ring[0]), role, true, ring);
-    }
+    const lined: ExPolygon[] = [], slivers: ExPolygon[] = [];
+    for (const a of kind) (mayHoldLines(a, w / 2, ifaceAngle, iface, origin) ? lined : slivers).push(a);
+    if (slivers.length) for (const ring of flatten(shrink(slivers, w / 2))) add(owner(components, ring[0]), role, true, ring);
     fill(lined, w / 2, ifaceAngle, iface, origin, true, to(role));
   }
   const width = w / UM_PER_MM;
