@@ -8,7 +8,7 @@ import {
   BOX_ON_POST, LEDGE_OVER_STEP, LEDGE_OVER_WIDE_STEP, T_SHAPE, boxLayers, heldShare, intoPart, supportArea, supportConfig, supported, type Box,
 } from './test-models.js';
 import { CIRCLE_TOLERANCE_UM, circle } from './tree-draw.js';
-import { BRANCH_SLENDERNESS, planTree } from './tree.js';
+import { BRANCH_SLENDERNESS, planTree, type TreePlan } from './tree.js';
 
 const MODELS: [string, Box[]][] = [
   ['a box on a thin post', BOX_ON_POST],
@@ -30,6 +30,14 @@ const SLIVER_UM2 = 0.01 * 1e6;
  * below was cut to what a line can print.
  */
 const HANG_UM2 = 0.05 * 1e6;
+
+/** The tree plan of a model, run to its end. */
+function planOf(model: ModelLayers): TreePlan {
+  const run = planTree(model);
+  let r = run.next();
+  while (!r.done) r = run.next();
+  return r.value;
+}
 
 const totalArea = (layers: readonly LayerRegions[]) => layers.reduce((s, l) => s + area(supportArea(l)), 0);
 
@@ -59,10 +67,7 @@ for (const [name, boxes] of MODELS) {
     const cfg = supportConfig({ supportType: 'tree' });
     const layers = boxLayers(boxes, cfg);
     const model = new ModelLayers(layers, cfg);
-    const run = planTree(model);
-    let r = run.next();
-    while (!r.done) r = run.next();
-    const { nodes, rules } = r.value;
+    const { nodes, rules } = planOf(model);
     let links = 0;
     for (let j = 0; j + 1 < nodes.length; j++) {
       const m = rules.step(j + 1);
@@ -91,10 +96,7 @@ for (const [name, boxes] of MODELS) {
   test(`tree support under ${name}: below the tips, each layer lies within the one above grown by a move (and the radius growth)`, () => {
     const { layers, cfg } = supported(boxes, { supportType: 'tree' });
     const model = new ModelLayers(layers, cfg);
-    const run = planTree(model);
-    let r = run.next();
-    while (!r.done) r = run.next();
-    const { nodes, rules } = r.value;
+    const { nodes, rules } = planOf(model);
     let lowestTip = Infinity;
     nodes.forEach((layer, j) => layer.some((n) => n.parents.length === 0) && (lowestTip = Math.min(lowestTip, j)));
     const grow = Math.max(rules.tipGrowth, rules.trunkGrowth(1));
@@ -147,10 +149,7 @@ for (const [name, boxes] of [['a ledge over a lower step', LEDGE_OVER_STEP], ['a
       assert.ok(on <= SLIVER_UM2, `layer ${j}: ${(on / 1e6).toFixed(3)} mm² of support right on the part`);
     }
     // every branch goes on down to the bed
-    const run = planTree(new ModelLayers(boxLayers(boxes, cfg), cfg));
-    let r = run.next();
-    while (!r.done) r = run.next();
-    const { nodes } = r.value;
+    const { nodes } = planOf(new ModelLayers(boxLayers(boxes, cfg), cfg));
     for (let j = 1; j < nodes.length; j++) {
       const continued = new Set(nodes[j - 1].filter((n) => !n.dead).flatMap((n) => n.parents));
       nodes[j].forEach((n, i) => assert.ok(n.dead || continued.has(i), `a branch ends on layer ${j}`));
@@ -180,10 +179,7 @@ test('branches widen with their height: tips 4 mm up stay a tip wide, tips 12 mm
       { x: [-8, 8], y: [-8, 8], z: [top, top + 2] },
     ];
     const { layers, cfg } = supported(boxes, { supportType: 'tree' });
-    const run = planTree(new ModelLayers(layers, cfg));
-    let r = run.next();
-    while (!r.done) r = run.next();
-    const { nodes, rules } = r.value;
+    const { nodes, rules } = planOf(new ModelLayers(layers, cfg));
     let w = 0;
     for (const layer of nodes) for (const n of layer) if (!n.dead) w = Math.max(w, n.r);
     return { w, rules, cfg };
