@@ -327,6 +327,35 @@ describe('web page', { skip: missing ?? false }, () => {
     await page.close();
   });
 
+  test('tree support chosen in the settings: the G-code is the CLI\'s, with support under the overhangs, and the preview shows it', SLOW, async () => {
+    const page = await openPage();
+    const model = join(MODELS_DIR, 'SupportTest.stl');
+    await openModel(page, model);
+    const enabled = page.getByLabel('Support enabled', { exact: true });
+    await enabled.evaluate((el) => el.closest('details')?.setAttribute('open', ''));
+    await enabled.check();
+    await page.getByLabel('Support type', { exact: true }).selectOption('tree');
+    await slice(page);
+    const gcode = readFileSync(await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]).then(([d]) => d), 'support.gcode'));
+    const config = await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export', exact: true }).click()]).then(([d]) => d), 'support.json');
+    assert.deepEqual(JSON.parse(readFileSync(config, 'utf8')), { printer: 'creality-ender-3', filament: 'pla', supportEnabled: true, supportType: 'tree' });
+    assert.ok(gcode.equals(cliSlice(model, config, join(work, 'support-cli.gcode'))), 'the page\'s tree-support G-code is the CLI\'s');
+    // support is there, below the part's top, and the legend lists it with its length
+    const text = gcode.toString('utf8');
+    const layersWith = (type: string) => text.split(/^;LAYER:/m).filter((l) => l.includes(`\n;TYPE:${type}\n`)).length;
+    assert.ok(layersWith('SUPPORT') > 30, `${layersWith('SUPPORT')} layers with ;TYPE:SUPPORT`);
+    assert.ok(layersWith('SUPPORT-INTERFACE') > 5, `${layersWith('SUPPORT-INTERFACE')} layers with ;TYPE:SUPPORT-INTERFACE`);
+    const legend = await page.locator('#legend li').allTextContents();
+    for (const t of ['SUPPORT', 'SUPPORT-INTERFACE']) assert.ok(legend.some((l) => new RegExp(`^${t}[\\d.]+ m`).test(l)), `legend shows ${t} with a length: ${legend.join(' | ')}`);
+    if (shots) {
+      await page.getByRole('slider', { name: 'Layer', exact: true }).fill('55');
+      await page.mouse.move(460, 470);
+      for (let i = 0; i < 4; i++) await page.mouse.wheel(0, -300);
+      await shoot(page, 'tree-support.png');
+    }
+    await page.close();
+  });
+
   test('no console errors on any page', () => {
     assert.deepEqual(problems, []);
   });
