@@ -2,9 +2,10 @@
  * The web page in real Chromium (playwright-core and the system's chromium): open shared models by
  * the file input and by drag and drop, slice with given settings, download the G-code and compare it
  * byte for byte with `strata slice` on the same file and the page's exported settings; the preview's
- * layer count; Cancel; errors in words; settings kept across a reload; the shader compiler loaded only
- * for custom infill; no console errors; no long task over 100 ms on the page thread while a 3DBenchy
- * slices. With STRATA_SCREENSHOTS=1 (npm run screenshots) it also writes README's screenshots.
+ * layer count; tree support set in the panel (the CLI's G-code, support in the legend); Cancel; errors
+ * in words; settings kept across a reload; the shader compiler loaded only for custom infill; no console
+ * errors; no long task over 100 ms on the page thread while a 3DBenchy slices. With STRATA_SCREENSHOTS=1
+ * (npm run screenshots) it also writes README's screenshots.
  */
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
