@@ -81,35 +81,39 @@ export function measureTopGap(
   }
 }
 
-/** Bottom gaps of layer l's support, whose material starts at print Z `zBottom`. */
+/**
+ * Bottom gaps of layer l's support, whose material starts at print Z `zBottom`: measured down from the cells where
+ * support starts, those with no support, interface or raft within `nearCells` (along the row or the column) on the
+ * support layer whose top is at `zBottom`. The slack keeps the gaps between the dense lines of a floor from
+ * counting as places where the layer above starts on the part.
+ */
 export function measureBottomGap(
   meter: GapMeter, layers: readonly GcodeLayer[], frames: readonly LayerFrame[], rasters: LayerRasters, l: number,
-  zBottom: number, layerHeight: number,
+  zBottom: number, layerHeight: number, nearCells: number,
 ): void {
   const b = rasters.get(l).supportBounds;
   if (l === 0 || !b) return;
   const g = rasters.grid;
+  // the support layer this one stands on: the one whose top is where this one's material starts (none when the
+  // layer below that has no support, as when the support starts here on the part)
   let prev = -1;
-  for (let k = l - 1; k >= 0; k--) {
-    if (frames[k]!.hasSupport) {
-      prev = k;
-      break;
-    }
+  for (let k = l - 1; k >= 0 && layers[k]!.z >= zBottom - Z_SLACK_MM; k--) {
+    if (Math.abs(layers[k]!.z - zBottom) <= Z_SLACK_MM && frames[k]!.hasSupport) prev = k;
   }
   const holds = Cell.Support | Cell.Interface | Cell.Raft;
   let open: number[] = [];
   const hw = words(rasters.get(l).bits);
-  const bw = prev >= 0 ? words(rasters.get(prev).bits) : null;
+  const below = prev >= 0 ? rasters.get(prev).bits : null;
   const perRow = g.cols >>> 2;
   for (let j = b[1]; j < b[3]; j++) {
     const row = (j - g.j0) * perRow;
     for (let w = row + ((b[0] - g.i0) >>> 2); w < row + ((b[2] - g.i0 + 3) >>> 2); w++) {
-      // Support or interface here, and no support, interface or raft in the layer of support below.
+      // Support or interface here
       let start = ((hw[w]! >>> 2) | (hw[w]! >>> 3)) & LOW_BYTES;
-      if (start === 0) continue;
-      if (bw) start &= ~((bw[w]! >>> 2) | (bw[w]! >>> 3) | (bw[w]! >>> 4));
-      start &= LOW_BYTES;
-      for (let k = 0; start !== 0; k++, start >>>= 8) if ((start & 1) !== 0) open.push(4 * w + k);
+      for (let k = 0; start !== 0; k++, start >>>= 8) {
+        const q = 4 * w + k;
+        if ((start & 1) !== 0 && !(below && heldNear(below, q, g.cols, g.rows, nearCells, holds))) open.push(q);
+      }
     }
   }
   const limit = scanLimit(zBottom, layerHeight);
@@ -125,4 +129,15 @@ export function measureBottomGap(
     if (onPart > 0) meter.add(Math.max(0, zBottom - layers[k]!.z), onPart);
     open = next;
   }
+}
+
+/** Whether cell q, or one within `near` cells of it along its row or column, has any of `mask`. */
+function heldNear(bits: Uint8Array, q: number, cols: number, rows: number, near: number, mask: number): boolean {
+  if ((bits[q]! & mask) !== 0) return true;
+  const i = q % cols, j = (q - i) / cols;
+  for (let d = 1; d <= near; d++) {
+    if ((i >= d && (bits[q - d]! & mask) !== 0) || (i + d < cols && (bits[q + d]! & mask) !== 0)) return true;
+    if ((j >= d && (bits[q - d * cols]! & mask) !== 0) || (j + d < rows && (bits[q + d * cols]! & mask) !== 0)) return true;
+  }
+  return false;
 }

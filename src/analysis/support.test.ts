@@ -176,6 +176,39 @@ test('a raft raises the model: its offset is found and every check lines up with
   }
 });
 
+// A T standing on a slab: the slab 30 × 20 mm up to z = 2 under the column and the arms.
+const T_ON_SLAB = mergeMeshes(boxMesh(40, 50, 0, 70, 70, 2), boxMesh(50, 50, 2, 60, 70, 4), boxMesh(40, 50, 4, 70, 70, 6));
+
+/**
+ * Support standing on the slab (its top layer 9), one layer above it: a floor of two dense layers whose lines cross,
+ * a sparse body, the roof two dense layers under the arms, one layer below them.
+ */
+function supportOnSlab(i: number, _z: number, h: number): string[] {
+  if (i < 11 || i > ARM_LAYER - 2) return [];
+  const dense = i <= 12 || i >= ARM_LAYER - 3;
+  const type = dense ? 'SUPPORT-INTERFACE' : 'SUPPORT';
+  return SUPPORT_RECTS.flatMap((r) => rectLines(r, dense ? 0.57 : 2, h, LW, FIL, type, i % 2 === 0));
+}
+
+test('support standing on the part one layer above it has a one-layer bottom gap, between dense floor lines and over a raft too', () => {
+  const slab: [number, number, number, number] = [37, 47, 73, 73];
+  const raftUnder = [
+    { z: 0.3, h: 0.3, lines: rectLines(slab, 1.6, 0.3, 0.8, FIL, 'SUPPORT-INTERFACE') },
+    { z: 0.5, h: 0.2, lines: rectLines(slab, 1, 0.2, 0.8, FIL, 'SUPPORT-INTERFACE', true) },
+    { z: 0.7, h: 0.2, lines: rectLines(slab, LW, 0.2, LW, FIL, 'SUPPORT-INTERFACE') },
+  ];
+  for (const raft of [false, true]) {
+    const gcode = toyGcode(T_ON_SLAB, { ...TOY, extra: supportOnSlab, ...(raft ? { prelude: raftUnder, zOffset: RAFT_OFFSET } : {}) });
+    const u = analyzePrint(T_ON_SLAB, gcode, OPTS).summary.support!;
+    const what = raft ? 'over a raft' : 'on the bed';
+    within(u.overhangSupported, 0.95, 1, `supported, ${what}`);
+    assert.equal(u.bottomGap.medianLayers, 1, `bottom gap, ${what}`);
+    within(u.bottomGap.byLayers[1]!, 0.95, 1, `share of the bottom gap at one layer, ${what}`);
+    // what stands on the slab: the first floor's lines, 70 % of 2 × 9.4 × 20 mm²
+    within(u.bottomGap.areaMm2, 220, 330, `bottom gap area, ${what}`);
+  }
+});
+
 test('the model Z offset can be given, and a wrong one misaligns the checks', () => {
   const gcode = toyGcode(T, { ...TOY, prelude: raft('RAFT'), zOffset: RAFT_OFFSET });
   const given = analyzePrint(T, gcode, { ...OPTS, modelZOffset: RAFT_OFFSET }).summary;

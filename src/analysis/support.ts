@@ -146,7 +146,7 @@ export class SupportAnalysis {
         this.insideWorst = l;
       }
       const zSupport = layer.z - o.supportHeight(frame);
-      measureBottomGap(this.bottomGaps, this.layers, this.z.frames, this.rasters, l, zSupport, o.layerHeight);
+      measureBottomGap(this.bottomGaps, this.layers, this.z.frames, this.rasters, l, zSupport, o.layerHeight, Math.ceil(o.lineWidth / this.rasters.grid.cell));
     }
     if (!frame.hasPart) {
       this.release(l);
