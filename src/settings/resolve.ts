@@ -25,6 +25,8 @@ export interface Derived {
   supportBottomGapLayers: number;
   supportFloorLayerCount: number;
   supportWalls: number;
+  /** Distance between tree-support tips, mm. */
+  supportTreeTipSpacingMm: number;
   /** Raft base line width and spacing, interface line spacing, mm. */
   raftBaseLineWidthMm: number;
   raftBaseLineSpacingMm: number;
@@ -32,6 +34,10 @@ export interface Derived {
 }
 
 export type Config = Readonly<Settings & Derived>;
+
+/** Tree-support tips this far apart hold a roof; with no roof they hold the part itself, closer together (CuraEngine 4.13: 1 mm; PrusaSlicer's 15 % tip density: about 2 mm). */
+export const TREE_TIP_SPACING_UNDER_ROOF_MM = 3;
+export const TREE_TIP_SPACING_NO_ROOF_MM = 1.5;
 
 export const DEFAULT_PRINTER = 'creality-ender-3';
 export const DEFAULT_FILAMENT = 'pla';
@@ -211,6 +217,7 @@ export function resolveConfig(options: SliceOptions = {}): Config {
     supportBottomGapLayers: gapLayers(s.supportBottomZGap ?? s.supportZGap ?? s.layerHeight, s.layerHeight),
     supportFloorLayerCount: s.supportFloorLayers ?? s.supportInterfaceLayers,
     supportWalls: s.supportWallCount ?? (s.supportType === 'tree' ? 1 : 0),
+    supportTreeTipSpacingMm: s.supportTreeTipSpacing ?? (s.supportInterfaceLayers > 0 ? TREE_TIP_SPACING_UNDER_ROOF_MM : TREE_TIP_SPACING_NO_ROOF_MM),
     raftBaseLineWidthMm: s.raftBaseLineWidth ?? 2 * s.nozzleDiameter,
     raftBaseLineSpacingMm: s.raftBaseLineSpacing ?? 2 * (s.raftBaseLineWidth ?? 2 * s.nozzleDiameter),
     raftInterfaceLineSpacingMm: s.raftInterfaceLineSpacing ?? 2.5 * lineWidthMm,

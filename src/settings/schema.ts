@@ -284,7 +284,7 @@ export const SCHEMA = {
   supportTreeTipDiameter: when(num(0.8, 0.2, 10, 'mm', 'support', 'Tree support: diameter of a branch tip under the part.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
   supportTreeBranchDiameter: when(num(2, 0.5, 50, 'mm', 'support', 'Tree support: diameter a branch grows to (trunks where branches merged grow further, by the diameter angle).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
   supportTreeDiameterAngle: when(num(5, 0, 30, '°', 'support', 'Tree support: how fast a merged branch thickens on its way down (angle of its sides from vertical).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
-  supportTreeTipSpacing: when(num(3, 0.5, 20, 'mm', 'support', 'Tree support: distance between branch tips under the roof (closer holds the roof better, further apart uses less material).'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
+  supportTreeTipSpacing: when(optNum(0.5, 20, 'mm', 'support', 'Tree support: distance between branch tips (closer holds the part better, further apart uses less material). Empty (null) = 3 mm under a roof, 1.5 mm with no roof (supportInterfaceLayers 0), where the tips hold the part itself.'), { supportEnabled: true, supportType: 'tree' }, 'overhangs'),
 
   // ── bridges and overhangs ────────────────────────────────────────────────────
   bridgeSpeed: when(num(25, 1, 1000, 'mm/s', 'skin', 'Speed of skin printed over air (bridges).'), null, 'overhangs'),

@@ -3,6 +3,7 @@ import assert from 'node:assert/strict';
 import { area, difference, intersection, offset, union } from '../../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
 import type { LayerRegions } from '../types.js';
+import type { SliceOptions } from '../../settings/schema.js';
 import { ModelLayers } from './model-layers.js';
 import {
   BOX_ON_POST, LEDGE_OVER_STEP, LEDGE_OVER_WIDE_STEP, T_SHAPE, boxLayers, heldShare, intoPart, supportArea, supportConfig, supported, type Box,
@@ -190,4 +191,19 @@ test('branches widen with their height: tips 4 mm up stay a tip wide, tips 12 mm
   const high = widest(12);
   assert.ok(high.w >= high.rules.branchR, `under a 12 mm overhang the widest branch is ${high.w} µm in radius, the branch radius ${high.rules.branchR}`);
   assert.ok(high.cfg.supportTreeBranchDiameter * UM_PER_MM < (12 * UM_PER_MM) / BRANCH_SLENDERNESS);
+});
+
+test('with no roof the tips stand closer, so that they hold the part: every overhang point within 1 mm of support', () => {
+  // the part's first layer then bridges at most about 2 mm between tips
+  const heldWithin = (options: SliceOptions) => {
+    const { layers, cfg } = supported(T_SHAPE, { supportType: 'tree', supportInterfaceLayers: 0, ...options });
+    const model = new ModelLayers(layers, cfg);
+    return heldShare(layers, cfg, (j) => model.collision(j), 1 * UM_PER_MM);
+  };
+  const close = heldWithin({});
+  assert.ok(close.total > 100, `only ${close.total} overhang points`);
+  assert.equal(close.held, close.total, `unheld: ${JSON.stringify(close.missed.slice(0, 5))}`);
+  // at the roof's 3 mm spacing, points lie up to 1.7 mm from the nearest tip's centre
+  const sparse = heldWithin({ supportTreeTipSpacing: 3 });
+  assert.ok(sparse.held < 0.9 * sparse.total, `3 mm apart: ${sparse.held} of ${sparse.total} held within 1 mm`);
 });

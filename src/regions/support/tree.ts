@@ -84,7 +84,7 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
   const roofTop = Math.min(n - 1, highest - 1 - top);
   yield* vol.build(Math.max(roofTop, tipTop), tipTop);
 
-  const spacing = cfg.supportTreeTipSpacing * UM_PER_MM;
+  const spacing = cfg.supportTreeTipSpacingMm * UM_PER_MM;
   for (let j = tipTop; j >= 0; j--) {
     const { lower, stuck } = j < tipTop ? yield* descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
     for (const i of stuck) kill(nodes, j + 1, i);
@@ -106,7 +106,7 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
   const roofLayers = cfg.supportInterfaceLayers;
   const bottom = cfg.supportBottomGapLayers;
   const everywhere = cfg.supportPlacement === 'everywhere';
-  const spacing = cfg.supportTreeTipSpacing * UM_PER_MM;
+  const spacing = cfg.supportTreeTipSpacingMm * UM_PER_MM;
   const out: SupportAreas[] = [];
   for (let j = 0; j < n; j++) out.push({ body: [], roof: [], floor: [] });
   // areas, from the bed up
