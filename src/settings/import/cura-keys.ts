@@ -310,5 +310,10 @@ export function mapCuraKeys(c: ImportContext): void {
   take('supportTreeTipDiameter', ['support_tree_tip_diameter']);
   take('supportTreeDiameterAngle', ['support_tree_branch_diameter_angle']);
   take('supportTreeTipSpacing', ['support_tree_branch_distance']);
+  // Cura 5's branch density: its tips lie a support line's width over it apart
+  if (!c.has('support_tree_branch_distance')) {
+    const lw = c.settings.supportLineWidth ?? c.settings.lineWidth ?? 0.4;
+    take('supportTreeTipSpacing', ['support_tree_top_rate'], (v) => (v > 0 ? round((100 * lw) / v, 2) : undefined) as Settings['supportTreeTipSpacing']);
+  }
   flag('limit_support_retractions', 'supportLimitRetractions');
 }

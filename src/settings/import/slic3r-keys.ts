@@ -22,7 +22,8 @@
  * - Support: the overhang threshold is a slope from the horizontal there (0: automatic), from the vertical
  *   in Strata; organic (PrusaSlicer) and tree (OrcaSlicer) styles are tree support; the spacing of support
  *   lines becomes a density; a bottom contact distance of 0 and bottom interface layers of -1 mean "as the
- *   top"; the XY distance may be a percentage of the external perimeter width (taken over the nozzle).
+ *   top"; the XY distance may be a percentage of the external perimeter width (taken over the nozzle); the
+ *   tree's branch density becomes the tip spacing (a support line's width over it).
  *   PrusaSlicer's `dont_support_bridges` has no span: it is reported, for `supportSkipBridges` to be set.
  */
 import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
@@ -493,6 +494,13 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
   ] as const) {
     const v = c.getAny(...keys);
     if (v) c.set(setting, num(v.value), v.key, 'not a number');
+  }
+  // branch density: tips a support line's width over it apart, as CuraEngine's tree lays its tips (PrusaSlicer 15 %: 2.7 mm)
+  const rate = c.getAny('support_tree_top_rate', 'tree_support_top_rate');
+  if (rate) {
+    const v = numOrPercent(rate.value);
+    const lw = c.settings.supportLineWidth ?? c.settings.lineWidth ?? nozzle;
+    c.set('supportTreeTipSpacing', v && v.value > 0 ? round((100 * lw) / v.value, 2) : undefined, rate.key, 'not a density');
   }
   const bridges = c.getAny('dont_support_bridges');
   if (bridges && bool(bridges.value)) c.reject(bridges.key, 'Strata bridges spans up to supportSkipBridges mm instead (0, every overhang supported, by default)');
