@@ -207,3 +207,22 @@ test('with no roof the tips stand closer, so that they hold the part: every over
   const sparse = heldWithin({ supportTreeTipSpacing: 3 });
   assert.ok(sparse.held < 0.9 * sparse.total, `3 mm apart: ${sparse.held} of ${sparse.total} held within 1 mm`);
 });
+
+test('a slope stepping out less than half a line beyond what holds itself gets tips and no roof; a flatter one gets its roof', () => {
+  // a 10 mm post 6 mm high, then fifteen 0.2 mm layers each stepping out `step` mm further in x
+  const roofUnder = (step: number) => {
+    const boxes: Box[] = [{ x: [-5, 5], y: [-5, 5], z: [0, 6] }];
+    for (let k = 0; k < 15; k++) boxes.push({ x: [-5, 5 + (k + 1) * step], y: [-5, 5], z: [6 + 0.2 * k, 6 + 0.2 * (k + 1)] });
+    const { layers } = supported(boxes, { supportType: 'tree' });
+    const roof = layers.reduce((s, l) => s + (l.support ? area(l.support.roof) : 0), 0) / 1e6;
+    const body = layers.reduce((s, l) => s + (l.support ? area(l.support.body) : 0), 0) / 1e6;
+    return { roof, body };
+  };
+  // 50°: a layer holds itself 0.24 mm out; a 0.35 mm step leaves bands 0.11 mm wide, a 0.8 mm step 0.56 mm
+  const steep = roofUnder(0.35);
+  assert.ok(steep.body > 1, `tips under the steep slope: ${steep.body.toFixed(1)} mm² of branches`);
+  // what roof there is: the tops of tips right under the part (92 mm² when every band had its roof)
+  assert.ok(steep.roof < 2, `no roof under bands a line cannot print: ${steep.roof.toFixed(2)} mm²`);
+  const flat = roofUnder(0.8);
+  assert.ok(flat.roof > 2 * 15 * 0.56 * 10, `a roof under the flatter slope's bands, two layers each: ${flat.roof.toFixed(1)} mm²`);
+});

@@ -13,7 +13,7 @@
  * 3. from the bed up (tree-draw.ts), each layer's branch cross-sections and roof, the roof only where what is
  *    below holds it, off the part, split into body, roof and floor.
  */
-import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
+import { area, boundsOf, intersection, offset, opening, union } from '../../geometry/clip.js';
 import { hypot, UM_PER_MM, type ExPolygon, type Pt } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
@@ -32,6 +32,12 @@ export const TRUNK_MAX_BRANCH_RADII = 1.5;
 export const ROOF_REACH_SHARE = 0.75;
 /** The roof reaches this many support line widths beyond the overhang it holds. */
 export const ROOF_GROW_WIDTHS = 0.5;
+/**
+ * Steps of the overhang narrower than this many support line widths get no roof, only tips: the bands of a
+ * slope steeper than about 65° from vertical (at 0.2 mm layers and a 50° threshold) step out less than the part
+ * holds itself by plus half a line, and tips touch them directly, as CuraEngine's tree tips touch the part.
+ */
+export const ROOF_MIN_STEP_WIDTHS = 0.5;
 /** A tip may move this share of the tip spacing to find room. */
 export const TIP_SHIFT_SHARE = 0.5;
 /**
@@ -122,8 +128,10 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
       continue;
     }
     const collision = vol.collision(j);
-    // grown a little, so that the narrow steps of a sloping overhang make a roof a line can print
-    const roof = roofWanted.length ? cutAway(offset(union(roofWanted), ROOF_GROW_WIDTHS * w), collision) : [];
+    // steps of the overhang narrower than ROOF_MIN_STEP_WIDTHS left to the tips; the rest grown a little, so
+    // that the narrow steps of a sloping overhang make a roof a line can print
+    const steps = roofWanted.length ? opening(union(roofWanted), (ROOF_MIN_STEP_WIDTHS * w) / 2) : [];
+    const roof = steps.length ? cutAway(offset(steps, ROOF_GROW_WIDTHS * w), collision) : [];
     // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
     const base = j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
