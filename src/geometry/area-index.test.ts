@@ -79,3 +79,17 @@ test('meets agrees with a plain test of vertices and edges', () => {
   }
   assert.ok(hits > 50 && hits < 350, `${hits} of 400 meet`);
 });
+
+test('nearestOutside finds the way out when the nearest edge leads into another area a few µm away', () => {
+  const rect = (x0: number, y0: number, x1: number, y1: number): ExPolygon => ({ outer: [{ x: x0, y: y0 }, { x: x1, y: y0 }, { x: x1, y: y1 }, { x: x0, y: y1 }], holes: [] });
+  // two squares 3 µm apart: out through the right edge of the first lands in the second
+  const ix = new AreaIndex([rect(0, 0, 1000, 1000), rect(1003, 0, 2000, 1000)]);
+  const p = { x: 990, y: 500 };
+  assert.ok(ix.contains(p.x, p.y));
+  const q = ix.nearestOutside(p.x, p.y, 600);
+  assert.ok(q !== null, 'a way out within 600 µm (the top edge, 500 µm off)');
+  assert.ok(!ix.contains(q.x, q.y), `${q.x}, ${q.y} lies outside`);
+  assert.ok(Math.hypot(q.x - p.x, q.y - p.y) <= 600, `${q.x}, ${q.y} within reach`);
+  // nothing within 400 µm: none
+  assert.equal(ix.nearestOutside(500, 500, 400), null);
+});

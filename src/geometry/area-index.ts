@@ -244,7 +244,10 @@ export class AreaIndex {
         if (hypot(qx - x, qy - y) <= reach && !this.contains(qx, qy)) return { x: qx, y: qy };
       }
     }
-    return null;
+    // the nearest edge leads into more of the areas (a sliver between two of them, a small hole): the points
+    // just off every edge within reach, nearest first
+    this.#edgeCandidates(x, y, OUTSIDE_MARGIN_UM, maxUm);
+    return this.#firstClear(0);
   }
 
   /** Whether some edge of the areas comes within `dist` of (x, y). */
@@ -283,8 +286,27 @@ export class AreaIndex {
   nearestClear(x: number, y: number, d: number, maxUm: number, rings = true): Found | null {
     if (d <= 0) return this.nearestOutside(x, y, maxUm);
     if (!this.meetsDisc(x, y, d)) return { x, y };
+    this.#edgeCandidates(x, y, d + OUTSIDE_MARGIN_UM, maxUm);
+    const best = this.#firstClear(d);
+    if (best || !rings) return best;
+    for (let k = 1; k <= 4; k++) {
+      candCount = 0;
+      for (let a = 0; a < 16; a++) {
+        const ang = (a * Math.PI) / 8;
+        addCandidate(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang), x, y, maxUm);
+      }
+      const q = this.#firstClear(d);
+      if (q) return q;
+    }
+    return null;
+  }
+
+  /**
+   * The candidates (in `cand`) `want` off every edge within reach of (x, y): off the edge's nearest point along
+   * its outward normal, and away from (x, y); only those within maxUm of (x, y).
+   */
+  #edgeCandidates(x: number, y: number, want: number, maxUm: number): void {
     const e = this.#e;
-    const want = d + OUTSIDE_MARGIN_UM;
     const reach = maxUm + want;
     const c0 = this.#col(x - reach), c1 = this.#col(x + reach), r0 = this.#row(y - reach), r1 = this.#row(y + reach);
     // candidates within maxUm, then tested nearest first (the earliest found on a tie): the first clear one wins
@@ -311,21 +333,9 @@ export class AreaIndex {
         }
       }
     }
-    const best = this.#firstClear(d);
-    if (best || !rings) return best;
-    for (let k = 1; k <= 4; k++) {
-      candCount = 0;
-      for (let a = 0; a < 16; a++) {
-        const ang = (a * Math.PI) / 8;
-        addCandidate(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang), x, y, maxUm);
-      }
-      const q = this.#firstClear(d);
-      if (q) return q;
-    }
-    return null;
   }
 
-  /** The nearest of the candidates that lies more than d from the areas, or null. */
+  /** The nearest of the candidates that lies more than d from the areas (d = 0: outside them), or null. */
   #firstClear(d: number): Found | null {
     const { x: cx, y: cy, order } = cand;
     const n = candCount;
@@ -333,7 +343,7 @@ export class AreaIndex {
     const ids = order.subarray(0, n).sort(nearerCandidate);
     for (let k = 0; k < n; k++) {
       const i = ids[k];
-      if (!this.meetsDisc(cx[i], cy[i], d)) return { x: cx[i], y: cy[i] };
+      if (d > 0 ? !this.meetsDisc(cx[i], cy[i], d) : !this.contains(cx[i], cy[i])) return { x: cx[i], y: cy[i] };
     }
     return null;
   }
