@@ -226,3 +226,23 @@ test('a slope stepping out less than half a line beyond what holds itself gets t
   const flat = roofUnder(0.8);
   assert.ok(flat.roof > 2 * 15 * 0.56 * 10, `a roof under the flatter slope's bands, two layers each: ${flat.roof.toFixed(1)} mm²`);
 });
+
+test('with build-plate placement, branches lean round a slab to the bed and hold the whole plate above it; none stands on the slab', () => {
+  // a slab 30 × 12 mm, 2 mm thick; a post at one end to 20 mm; a plate over all of it, 3 mm beyond the slab
+  const boxes: Box[] = [
+    { x: [0, 30], y: [-6, 6], z: [0, 2] },
+    { x: [26, 30], y: [-6, 6], z: [2, 20] },
+    { x: [-3, 30], y: [-6, 6], z: [20, 22] },
+  ];
+  const { layers, cfg } = supported(boxes, { supportType: 'tree', supportPlacement: 'buildPlate' });
+  const model = new ModelLayers(layers, cfg);
+  // no point of the plate's underside is further than 6 mm from the slab's long sides: 18 mm up, a branch leans
+  // that far; before the avoidance left room to lean, every branch was dropped here (0 of 1392 points held)
+  const { held, total, missed } = heldShare(layers, cfg, (j) => model.collision(j), 200);
+  assert.ok(total > 1000, `only ${total} overhang points`);
+  assert.equal(held, total, `unheld: ${JSON.stringify(missed.slice(0, 5))}`);
+  const slab: ExPolygon = { outer: [{ x: 0, y: -6000 }, { x: 30000, y: -6000 }, { x: 30000, y: 6000 }, { x: 0, y: 6000 }], holes: [] };
+  // the slab's top is layer 9's: the two layers above it have no support over it (higher up, a branch leaning
+  // out may pass over its edge)
+  for (let j = 10; j < 12; j++) assert.equal(area(intersection(supportArea(layers[j]), [slab])), 0, `support over the slab on layer ${j}`);
+});
