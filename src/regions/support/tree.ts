@@ -2,8 +2,9 @@
  * Tree support, in the manner of CuraEngine's tree support and PrusaSlicer's organic support:
  * 1. model volumes (tree-volumes.ts): per layer and radius class, where a branch centre may not be so as to
  *    keep clear of the part, and where it may not be if it is to reach the bed (avoidance), from the bed up;
- * 2. tips (tree-tips.ts) under every overhang, below a dense roof of supportInterfaceLayers, `tip spacing`
- *    apart; then, from the top layer down, every branch steps one layer down (tree-nodes.ts): leaning towards
+ * 2. tips (tree-tips.ts) under every overhang, below a dense roof of supportInterfaceLayers (none under steps
+ *    narrower than ROOF_MIN_STEP_WIDTHS), `tip spacing` apart; then, from the top layer down, every branch
+ *    steps one layer down (tree-nodes.ts): leaning towards
  *    its neighbours by at most layerHeight · tan(branch angle), merging with those it meets, thickening from
  *    the tip diameter to the branch diameter (merged trunks further, by the diameter angle; none wider than
  *    its highest tip's height over BRANCH_SLENDERNESS), always outside
