@@ -62,6 +62,17 @@ test('buildPlate placement: nothing stands on the part of SupportTest', { skip, 
   assert.ok(sup.insideAreaMm2 <= 1);
 });
 
+test('buildPlate placement, tree support: the arc of Overhang over its own base is held by trees leaning out to the bed, none standing on the part', { skip, timeout: 300_000 }, async () => {
+  const tree = (await sliceAndAnalyze('Overhang.stl', { supportEnabled: true, supportType: 'tree', supportPlacement: 'buildPlate' })).report.summary.support!;
+  assert.ok(tree.overhangSupported !== null && tree.overhangSupported >= 0.95, `tree: overhang supported ${tree.overhangSupported}`);
+  assert.ok(tree.overNothing !== null && tree.overNothing <= 0.003, `tree: over nothing ${tree.overNothing}`);
+  assert.equal(tree.bottomGap.areaMm2, 0, 'no support starts on the part');
+  assert.ok(tree.insideAreaMm2 <= 1);
+  // straight columns reach the bed only beside the base
+  const normal = (await sliceAndAnalyze('Overhang.stl', { supportEnabled: true, supportPlacement: 'buildPlate' })).report.summary.support!;
+  assert.ok(normal.overhangSupported !== null && normal.overhangSupported < 0.5, `normal: overhang supported ${normal.overhangSupported}`);
+});
+
 test('a raft under the calibration cube: the model raised by the raft and its gap, its walls and skin as without', { skip, timeout: 300_000 }, async () => {
   const { report, layers } = await sliceAndAnalyze('CalibrationCube.stl', { adhesionType: 'raft' });
   const s = report.summary;
