@@ -14,7 +14,7 @@
  * 3. from the bed up (tree-draw.ts), each layer's branch cross-sections and roof, the roof only where what is
  *    below holds it, off the part, split into body, roof and floor.
  */
-import { area, boundsOf, intersection, offset, opening, union } from '../../geometry/clip.js';
+import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
 import { hypot, UM_PER_MM, type ExPolygon, type Pt } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
@@ -129,10 +129,12 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
       continue;
     }
     const collision = vol.collision(j);
-    // steps of the overhang narrower than ROOF_MIN_STEP_WIDTHS left to the tips; the rest grown a little, so
-    // that the narrow steps of a sloping overhang make a roof a line can print
-    const steps = roofWanted.length ? opening(union(roofWanted), (ROOF_MIN_STEP_WIDTHS * w) / 2) : [];
-    const roof = steps.length ? cutAway(offset(steps, ROOF_GROW_WIDTHS * w), collision) : [];
+    // steps of the overhang narrower than ROOF_MIN_STEP_WIDTHS left to the tips (an opening), the rest grown a
+    // little, so that the narrow steps of a sloping overhang make a roof a line can print: the opening's growth
+    // and this one in one offset
+    const open = (ROOF_MIN_STEP_WIDTHS * w) / 2;
+    const steps = roofWanted.length ? offset(union(roofWanted), -open) : [];
+    const roof = steps.length ? cutAway(offset(steps, open + ROOF_GROW_WIDTHS * w), collision) : [];
     // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
     const base = j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
