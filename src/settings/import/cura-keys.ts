@@ -15,7 +15,7 @@ import type { Settings } from '../schema.js';
 import { SCHEMA } from '../schema.js';
 import type { ImportContext } from './context.js';
 import { translateTemplate } from './templates.js';
-import { bool, text } from './values.js';
+import { bool, text, tipSpacingOfDensity } from './values.js';
 
 const INFILL: Readonly<Record<string, PatternId>> = {
   grid: 'grid', lines: 'lines', zigzag: 'lines', triangles: 'triangles', trihexagon: 'triangles', cubic: 'cubic', cubicsubdiv: 'cubic',
@@ -310,10 +310,10 @@ export function mapCuraKeys(c: ImportContext): void {
   take('supportTreeTipDiameter', ['support_tree_tip_diameter']);
   take('supportTreeDiameterAngle', ['support_tree_branch_diameter_angle']);
   take('supportTreeTipSpacing', ['support_tree_branch_distance']);
-  // Cura 5's branch density: its tips lie a support line's width over it apart
+  // Cura 5's branch density
   if (!c.has('support_tree_branch_distance')) {
     const lw = c.settings.supportLineWidth ?? c.settings.lineWidth ?? 0.4;
-    take('supportTreeTipSpacing', ['support_tree_top_rate'], (v) => (v > 0 ? round((100 * lw) / v, 2) : undefined) as Settings['supportTreeTipSpacing']);
+    take('supportTreeTipSpacing', ['support_tree_top_rate'], (v) => tipSpacingOfDensity(lw, v) as Settings['supportTreeTipSpacing']);
   }
   flag('limit_support_retractions', 'supportLimitRetractions');
 }

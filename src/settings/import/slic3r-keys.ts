@@ -31,7 +31,7 @@ import type { Settings } from '../schema.js';
 import { SCHEMA } from '../schema.js';
 import type { ImportContext } from './context.js';
 import { translateTemplate } from './templates.js';
-import { bool, first, num, numOrPercent, percent, points, text } from './values.js';
+import { bool, first, num, numOrPercent, percent, points, text, tipSpacingOfDensity } from './values.js';
 
 export type Slic3rFlavor = 'prusaslicer' | 'superslicer' | 'orcaslicer';
 
@@ -495,12 +495,12 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
     const v = c.getAny(...keys);
     if (v) c.set(setting, num(v.value), v.key, 'not a number');
   }
-  // branch density: tips a support line's width over it apart, as CuraEngine's tree lays its tips (PrusaSlicer 15 %: 2.7 mm)
+  // branch density (PrusaSlicer's 15 %: 2.67 mm)
   const rate = c.getAny('support_tree_top_rate', 'tree_support_top_rate');
   if (rate) {
     const v = numOrPercent(rate.value);
     const lw = c.settings.supportLineWidth ?? c.settings.lineWidth ?? nozzle;
-    c.set('supportTreeTipSpacing', v && v.value > 0 ? round((100 * lw) / v.value, 2) : undefined, rate.key, 'not a density');
+    c.set('supportTreeTipSpacing', v && tipSpacingOfDensity(lw, v.value), rate.key, 'not a density');
   }
   const bridges = c.getAny('dont_support_bridges');
   if (bridges && bool(bridges.value)) c.reject(bridges.key, 'Strata bridges spans up to supportSkipBridges mm instead (0, every overhang supported, by default)');

@@ -34,6 +34,14 @@ export function percent(value: string | undefined, fractions = false): number | 
   return !p.percent && fractions && p.value > 0 && p.value <= 1 ? p.value * 100 : p.value;
 }
 
+/**
+ * Tree-support tip spacing (mm, to the hundredth) for a branch density (%): a support line's width over the
+ * density, as CuraEngine (and PrusaSlicer's organic support after it) lays its tips. Undefined for none.
+ */
+export function tipSpacingOfDensity(lineWidthMm: number, densityPercent: number): number | undefined {
+  return densityPercent > 0 ? Math.round(((100 * lineWidthMm) / densityPercent) * 100) / 100 : undefined;
+}
+
 /** `1`/`0`, `true`/`false`. */
 export function bool(value: string | undefined): boolean | undefined {
   const v = first(value)?.toLowerCase();
