@@ -8,6 +8,7 @@ import { pointInArea } from './clip.js';
 import { segmentsMeet } from './contain.js';
 import type { ExPolygon, Pt } from './types.js';
 import { AreaIndex } from './area-index.js';
+import { rect } from './test-shapes.js';
 
 function rng(seed: number): () => number {
   let s = seed >>> 0;
@@ -81,7 +82,6 @@ test('meets agrees with a plain test of vertices and edges', () => {
 });
 
 test('nearestOutside finds the way out when the nearest edge leads into another area a few µm away', () => {
-  const rect = (x0: number, y0: number, x1: number, y1: number): ExPolygon => ({ outer: [{ x: x0, y: y0 }, { x: x1, y: y0 }, { x: x1, y: y1 }, { x: x0, y: y1 }], holes: [] });
   // two squares 3 µm apart: out through the right edge of the first lands in the second
   const ix = new AreaIndex([rect(0, 0, 1000, 1000), rect(1003, 0, 2000, 1000)]);
   const p = { x: 990, y: 500 };

@@ -2,6 +2,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { area, difference, intersection, offset, union } from '../../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
+import { rect } from '../../geometry/test-shapes.js';
 import type { LayerRegions } from '../types.js';
 import type { SliceOptions } from '../../settings/schema.js';
 import { ModelLayers } from './model-layers.js';
@@ -241,7 +242,7 @@ test('with build-plate placement, branches lean round a slab to the bed and hold
   const { held, total, missed } = heldShare(layers, cfg, (j) => model.collision(j), 200);
   assert.ok(total > 1000, `only ${total} overhang points`);
   assert.equal(held, total, `unheld: ${JSON.stringify(missed.slice(0, 5))}`);
-  const slab: ExPolygon = { outer: [{ x: 0, y: -6000 }, { x: 30000, y: -6000 }, { x: 30000, y: 6000 }, { x: 0, y: 6000 }], holes: [] };
+  const slab = rect(0, -6000, 30000, 6000);
   // the slab's top is layer 9's: the two layers above it have no support over it (higher up, a branch leaning
   // out may pass over its edge)
   for (let j = 10; j < 12; j++) assert.equal(area(intersection(supportArea(layers[j]), [slab])), 0, `support over the slab on layer ${j}`);
