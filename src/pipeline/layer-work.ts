@@ -3,6 +3,8 @@
  * - 'regions': slice the objects and compute every layer's regions (for the whole-model passes), and with
  *   `modelPaths` each layer's model paths too, when they do not wait for those passes (support alone);
  * - 'paths': turn regions (after support, lightning and raft passes) into path groups;
+ * - 'held': the model paths of a range whose 'regions' job (with `hold`) left its regions on the same thread,
+ *   so that they are made while the calling thread runs the support pass;
  * - 'layers': both at once, when no whole-model pass needs the regions of every layer first.
  * This file only orchestrates: the regions stage is in regions/, the paths stage in paths/. Each job is a
  * generator that yields after every layer, so the calling thread can report progress and stay responsive.
@@ -28,7 +30,18 @@ export interface RegionsJob extends JobBase {
   kind: 'regions';
   /** Also make each layer's model paths (without support and skirt, which follow the support pass). */
   modelPaths?: PathsParams;
+  /** Keep each layer's regions on this thread for a later 'held' job of the same range (outlines are returned). */
+  hold?: boolean;
 }
+
+/** The model paths of the regions a 'regions' job with `hold` kept on this thread. */
+export interface HeldJob extends JobBase {
+  kind: 'held';
+  modelPaths: PathsParams;
+}
+
+/** Regions kept by 'regions' jobs with `hold`, by the first layer of their range. */
+export type RegionsHeld = Map<number, LayerRegions[]>;
 
 /** What the paths stage needs besides the regions. */
 export interface PathsParams {
@@ -54,12 +67,12 @@ export interface LayersJob extends JobBase, PathsParams {
   kind: 'layers';
 }
 
-export type RangeJob = RegionsJob | PathsJob | LayersJob;
+export type RangeJob = RegionsJob | PathsJob | LayersJob | HeldJob;
 
 export interface RangeResult {
   /** For 'regions' jobs. */
   regions: LayerRegions[];
-  /** For 'paths' and 'layers' jobs, and 'regions' jobs with `modelPaths`. */
+  /** For 'paths', 'layers' and 'held' jobs, and 'regions' jobs with `modelPaths`. */
   paths: LayerPaths[];
 }
 
@@ -73,10 +86,20 @@ export function pathsOf(regions: LayerRegions, cfg: Config, job: PathsParams, cu
   return layerPaths(regions, pathsContext(regions, cfg, job, custom, supportBelow, prepared));
 }
 
-/** Run a job, yielding after each layer; returns its result. */
-export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: RangeJob, custom?: CustomInfillGenerator): Generator<void, RangeResult> {
+/** Run a job, yielding after each layer; returns its result. `held` keeps the thread's held regions. */
+export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: RangeJob, custom?: CustomInfillGenerator, held?: RegionsHeld): Generator<void, RangeResult> {
   const regions: LayerRegions[] = [];
   const paths: LayerPaths[] = [];
+  if (job.kind === 'held') {
+    const kept = held?.get(job.from);
+    if (!kept || kept.length !== job.to - job.from) throw new Error(`no regions held for layers ${job.from}-${job.to}`);
+    held!.delete(job.from);
+    for (let k = 0; k < kept.length; k++) {
+      paths.push(modelPaths(kept[k], pathsContext(kept[k], cfg, job.modelPaths, custom, [])));
+      yield;
+    }
+    return { regions, paths };
+  }
   if (job.kind === 'paths') {
     for (let k = 0; k < job.regions.length; k++) {
       paths.push(pathsOf(job.regions[k], cfg, job, custom, job.supportBelow[k] ?? [], job.prepared?.[k]));
@@ -88,7 +111,13 @@ export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: R
   for (let i = job.from; i < job.to; i++) {
     const r = run.layer(i);
     if (job.kind === 'regions') {
-      if (job.modelPaths) {
+      if (job.hold) {
+        if (!held) throw new Error('a regions job that holds its regions needs somewhere to keep them');
+        let kept = held.get(job.from);
+        if (!kept) held.set(job.from, (kept = []));
+        kept.push(r);
+        regions.push(outlinesOnly(r));
+      } else if (job.modelPaths) {
         // made while the layer's regions are at hand, after which only the outlines are kept
         paths.push(modelPaths(r, pathsContext(r, cfg, job.modelPaths, custom, [])));
         regions.push(outlinesOnly(r));
@@ -101,8 +130,8 @@ export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: R
 }
 
 /** Run a job to its end. */
-export function computeRange(meshes: readonly PreparedMesh[], cfg: Config, job: RangeJob, custom?: CustomInfillGenerator): RangeResult {
-  const steps = rangeSteps(meshes, cfg, job, custom);
+export function computeRange(meshes: readonly PreparedMesh[], cfg: Config, job: RangeJob, custom?: CustomInfillGenerator, held?: RegionsHeld): RangeResult {
+  const steps = rangeSteps(meshes, cfg, job, custom, held);
   for (;;) {
     const s = steps.next();
     if (s.done) return s.value;

@@ -26,7 +26,7 @@ import type { LayerZ } from '../slice/types.js';
 import { renderThumbnails } from '../thumbnail/index.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
-import { pathsContext, pathsOf, rangeSteps, type PathsParams, type RangeJob, type RangeResult } from './layer-work.js';
+import { pathsContext, pathsOf, rangeSteps, type HeldJob, type PathsParams, type RangeJob, type RangeResult, type RegionsHeld, type RegionsJob } from './layer-work.js';
 import type { CustomInfillSpec } from './custom-infill.js';
 import { isTransferable, loadCustomInfill } from './custom-infill-loader.js';
 import { planObjects, type PlacedObject } from './objects.js';
@@ -120,12 +120,15 @@ interface Runner {
   signal?: AbortSignal;
 }
 
-/** Run the jobs; `onResult` sees each result as it arrives (in any order with a pool). */
-async function runJobs(jobs: RangeJob[], runner: Runner, onResult: (id: number, r: RangeResult) => void): Promise<void> {
+/**
+ * Run the jobs; `onResult` sees each result as it arrives (in any order with a pool), with where it was
+ * computed (a worker's index, or -1 on this thread).
+ */
+async function runJobs(jobs: RangeJob[], runner: Runner, onResult: (id: number, r: RangeResult, where: number) => void): Promise<void> {
   const { pool, local, pacer } = runner;
   pacer.check();
   if (pool) return pool.run(jobs, { local, onResult, signal: runner.signal, helpAboveMs: HELP_ABOVE_MS });
-  for (let id = 0; id < jobs.length; id++) onResult(id, await local(jobs[id]));
+  for (let id = 0; id < jobs.length; id++) onResult(id, await local(jobs[id]), -1);
 }
 
 /** Whether some whole-model pass needs the regions of every layer before any paths are made. */
@@ -172,13 +175,15 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
       doneLayers += count;
       report('slicing', (0.8 * doneLayers) / total);
     };
+    // regions this thread keeps for its own 'held' jobs
+    const heldHere: RegionsHeld = new Map();
     const runner: Runner = {
       pool,
       pacer,
       signal,
       local: async (job) => {
-        // a paths job reads its regions, not the meshes
-        const steps = rangeSteps(job.kind === 'paths' ? [] : prepared(), cfg, job, custom);
+        // a paths or held job reads its regions, not the meshes
+        const steps = rangeSteps(job.kind === 'paths' || job.kind === 'held' ? [] : prepared(), cfg, job, custom, heldHere);
         for (;;) {
           const s = steps.next();
           if (s.done) return s.value;
@@ -207,17 +212,36 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
       // support join them after the support pass.
       const early = !lightning && !(cfg.supportEnabled && cfg.supportTopGapLayers === 0);
       const modelPaths: PathsParams | undefined = early ? { ...common, zOffset: 0, adhesion: false } : undefined;
-      const regionJobs: RangeJob[] = split.map(([from, to]) => ({ kind: 'regions', layers, from, to, modelPaths }));
+      // With workers and support, each range keeps its regions where they were made, and the workers make
+      // their ranges' model paths while this thread runs the support pass (which they would wait for idle).
+      const hold = !!modelPaths && !!pool && cfg.supportEnabled;
+      const regionJobs: RegionsJob[] = split.map(([from, to]) => ({ kind: 'regions', layers, from, to, modelPaths: hold ? undefined : modelPaths, hold }));
       const regionResults: RangeResult[] = [];
-      await runJobs(regionJobs, runner, (id, r) => {
+      const where: number[] = [];
+      await runJobs(regionJobs, runner, (id, r, w) => {
         regionResults[id] = r;
+        where[id] = w;
         jobDone(regionJobs[id]);
       });
       const regions = regionResults.flatMap((r) => r.regions);
       // every layer is sliced: the meshes' slicing structures go (the calling thread's copy; the pool's with it)
       meshes = null;
       report('support', 0.4);
+      const heldJob = (id: number): HeldJob => ({ kind: 'held', layers, from: regionJobs[id].from, to: regionJobs[id].to, modelPaths: modelPaths! });
+      const heldIds = hold ? regionJobs.map((_, id) => id).filter((id) => where[id] >= 0) : [];
+      const heldPaths: LayerPaths[][] = [];
+      const heldRun = heldIds.length
+        ? pool!.run(heldIds.map(heldJob), { placement: heldIds.map((id) => where[id]), onResult: (k, r) => (heldPaths[heldIds[k]] = r.paths), signal })
+        : null;
+      // its failure is met where it is awaited, after the support pass
+      heldRun?.catch(() => {});
       await pacer.run(supportPass(regions, cfg));
+      if (hold) {
+        // the model paths of the ranges this thread made, then the workers'
+        for (let id = 0; id < regionJobs.length; id++) if (where[id] < 0) heldPaths[id] = (await runner.local(heldJob(id))).paths;
+        await heldRun;
+        for (let id = 0; id < regionJobs.length; id++) regionResults[id].paths = heldPaths[id];
+      }
       let preparedInfill: unknown[] | undefined;
       if (lightning) {
         preparedInfill = pattern.prepare!(

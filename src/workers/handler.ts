@@ -1,7 +1,7 @@
 /** The worker side, independent of the host: keeps the mesh and config, runs range jobs. */
 import { StrataError } from '../errors.js';
 import type { PreparedMesh } from '../slice/index.js';
-import { computeRange } from '../pipeline/layer-work.js';
+import { computeRange, type RegionsHeld } from '../pipeline/layer-work.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { Config } from '../settings/resolve.js';
 import type { FromWorker, ToWorker } from './protocol.js';
@@ -10,6 +10,8 @@ interface State {
   meshes: PreparedMesh[];
   cfg: Config;
   custom?: CustomInfillGenerator;
+  /** Regions kept for this worker's later 'held' jobs. */
+  held: RegionsHeld;
 }
 
 /**
@@ -24,15 +26,15 @@ export function makeHandler(post: (msg: FromWorker) => void, clock: () => number
       const { meshes, cfg, custom } = msg;
       // the shader compiler loads only when a custom infill needs it
       state = custom
-        ? import('../pipeline/custom-infill.js').then((m) => ({ meshes, cfg, custom: m.customGenerator(custom, cfg) }))
-        : Promise.resolve({ meshes, cfg });
+        ? import('../pipeline/custom-infill.js').then((m) => ({ meshes, cfg, custom: m.customGenerator(custom, cfg), held: new Map() }))
+        : Promise.resolve({ meshes, cfg, held: new Map() });
       state.catch(() => {});
       return;
     }
     state
       .then((s) => {
         const t0 = clock();
-        const result = computeRange(s.meshes, s.cfg, msg.job, s.custom);
+        const result = computeRange(s.meshes, s.cfg, msg.job, s.custom, s.held);
         post({ type: 'result', id: msg.id, result, ms: clock() - t0 });
       })
       .catch((e: unknown) => {

@@ -134,3 +134,25 @@ test('the calling thread computes ranges only while the work left would keep the
   assert.ok(helped.length > 0 && Math.min(...helped) >= 3, `the calling thread helped with ${helped}`);
   assert.ok((await run(0, 0)).length > 0, 'helpAboveMs 0: from the start');
 });
+
+test('regions held where they were made: the held jobs placed on those workers give the model paths the calling thread makes in one go', { timeout: 20_000 }, async () => {
+  const modelPaths = { infillParams: [params], zOffset: 0, adhesion: false };
+  const regionJobs: RangeJob[] = jobs.map((j) => ({ kind: 'regions', layers, from: j.from, to: j.to, hold: true }));
+  const p = await pool('ok', 2);
+  const where: number[] = [];
+  const outlines: RangeResult[] = [];
+  await p.run(regionJobs, { onResult: (id, r, w) => ((where[id] = w), (outlines[id] = r)) });
+  assert.deepEqual(new Set(where), new Set([0, 1]), 'both workers made some ranges');
+  const held: RangeJob[] = jobs.map((j) => ({ kind: 'held', layers, from: j.from, to: j.to, modelPaths }));
+  const paths: RangeResult[] = [];
+  await p.run(held, { placement: where, onResult: (id, r, w) => ((paths[id] = r), assert.equal(w, where[id])) });
+  // what a regions job with model paths gives on the calling thread
+  const inOneGo = jobs.map((j) => local({ kind: 'regions', layers, from: j.from, to: j.to, modelPaths }));
+  assert.deepEqual(paths.map((r) => r.paths), inOneGo.map((r) => r.paths));
+  assert.deepEqual(outlines.map((r) => r.regions), inOneGo.map((r) => r.regions));
+  assert.ok(inOneGo.every((r) => r.paths.length === r.regions.length && r.paths.length > 0));
+  // held regions are used once: asked again, or on the other worker, there are none
+  await assert.rejects(p.run(held.slice(0, 1), { placement: [where[0]] }), new RegExp(`no regions held for layers ${jobs[0].from}-${jobs[0].to}`));
+  await assert.rejects(p.run(held.slice(0, 1), { placement: [2] }), /names no worker/);
+  await p.close();
+});

@@ -61,8 +61,16 @@ export interface RunOptions {
    * without spare cores the compiler's work for them competes with the workers. 0 (default): at once.
    */
   helpAboveMs?: number;
-  /** Each result as it arrives (in any order); an exception fails the run. */
-  onResult?: (id: number, result: RangeResult) => void;
+  /**
+   * Each result as it arrives (in any order), with where it was computed: the worker's index, or -1 on the
+   * calling thread; an exception fails the run.
+   */
+  onResult?: (id: number, result: RangeResult, where: number) => void;
+  /**
+   * Job i runs on worker `placement[i]` (a job that reads what an earlier job left on that worker); with it
+   * there is no `local` work and no balancing between workers.
+   */
+  placement?: readonly number[];
   signal?: AbortSignal;
 }
 
@@ -121,10 +129,16 @@ export async function createPool(size: number, prepare: () => PreparedMesh[], cf
     throw e;
   }
   return {
-    run(jobs, { local, onResult, signal, helpAboveMs = 0 } = {}) {
+    run(jobs, { local, onResult, signal, helpAboveMs = 0, placement } = {}) {
       return new Promise<void>((resolve, reject) => {
         let next = 0;
         let done = 0;
+        // with a placement, each worker's own jobs, in order
+        const queues = placement ? ports.map((_, w) => jobs.map((_, id) => id).filter((id) => placement[id] === w)) : null;
+        if (placement && (placement.length !== jobs.length || placement.some((w) => !(w >= 0 && w < ports.length)))) {
+          return reject(new Error('a placed job names no worker of this pool'));
+        }
+        if (placement) local = undefined;
         let finished = false;
         let helping = !!local && helpAboveMs <= 0;
         // layers not yet handed out, and the workers' time per layer on their last job
@@ -143,17 +157,19 @@ export async function createPool(size: number, prepare: () => PreparedMesh[], cf
           if (e) reject(e);
           else resolve();
         };
-        const complete = (id: number, r: RangeResult) => {
+        const complete = (id: number, r: RangeResult, where: number) => {
           try {
-            onResult?.(id, r);
+            onResult?.(id, r, where);
           } catch (e) {
             return finish(e as Error);
           }
           if (++done === jobs.length) finish(null);
         };
         const feed = (p: Port) => {
-          if (finished || next >= jobs.length) return;
-          const id = take();
+          if (finished) return;
+          const queue = queues?.[ports.indexOf(p)];
+          if (queue ? queue.length === 0 : next >= jobs.length) return;
+          const id = queue ? queue.shift()! : take();
           try {
             p.post({ type: 'range', id, job: jobs[id] });
           } catch (e) {
@@ -174,14 +190,14 @@ export async function createPool(size: number, prepare: () => PreparedMesh[], cf
             r.then(
               (v) => {
                 if (finished) return;
-                complete(id, v);
+                complete(id, v, -1);
                 soon(work);
               },
               (e: unknown) => finish(e as Error),
             );
             return;
           }
-          complete(id, r);
+          complete(id, r, -1);
           soon(work);
         };
         if (signal?.aborted) return finish(cancelled(signal));
@@ -199,7 +215,7 @@ export async function createPool(size: number, prepare: () => PreparedMesh[], cf
             const warm = answered.has(p);
             answered.add(p);
             if (warm) msPerLayer = m.ms / Math.max(1, jobs[m.id].to - jobs[m.id].from);
-            complete(m.id, m.result);
+            complete(m.id, m.result, ports.indexOf(p));
             feed(p);
             if (local && !helping && warm && (unassigned * msPerLayer) / ports.length > helpAboveMs) {
               helping = true;
