@@ -110,47 +110,57 @@ export interface DrawnLayer {
   circles: (RegularPolygon | null)[];
 }
 
-/** One layer's support area, printable; yields every ITEMS_PER_STEP cross-sections. */
-export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
-  let roof: ExPolygon[] = d.roof.slice();
-  if (roof.length && d.base) roof = carried(roof, d.base, d.roofReachUm);
-  const roofIndex = roof.length ? new AreaIndex(roof) : null;
-  const gapBoxes = d.gapBelow.map((x) => boundsOf([x]));
-  let gapIndex: AreaIndex | null = null;
-  const onPart = (c: Disc) =>
-    meetsAny({ minX: c.x - c.r, minY: c.y - c.r, maxX: c.x + c.r, maxY: c.y + c.r }, gapBoxes) && (gapIndex ??= d.gapIndex()).meetsDisc(c.x, c.y, c.r);
-  const minR = (MIN_SUPPORT_WIDTHS * d.widthUm) / 2;
-  // clusters of overlapping circles clear of the collision, printable, and touching neither the roof nor
-  // the part below need only their union; the rest are cut to what may and can be printed
-  const free: ExPolygon[] = [];
-  const circles: (RegularPolygon | null)[] = [];
-  const keep = (a: ExPolygon, c: RegularPolygon | null) => {
-    free.push(a);
-    circles.push(c);
-  };
-  const freeRings: Polygon[] = [];
-  const rest: Polygon[] = [];
-  let count = 0;
-  const groups = clusters(d.discs);
-  for (let g = 0; g < groups.length; g++) {
+/** What drawing a layer's clusters keeps between its steps. */
+interface Drawing {
+  d: DrawLayer;
+  roofIndex: AreaIndex | null;
+  onPart: (c: Disc) => boolean;
+  /** Narrowest printable branch radius, µm. */
+  minR: number;
+  /** Islands taken as they are, and for each its circle when it is a lone one. */
+  free: ExPolygon[];
+  circles: (RegularPolygon | null)[];
+  /** Circles of overlapping free clusters, united at each step's end. */
+  freeRings: Polygon[];
+  /** Circles to be cut to what may and can be printed. */
+  rest: Polygon[];
+  /** Cross-sections since the last step. */
+  count: number;
+}
+
+function keep(w: Drawing, a: ExPolygon, c: RegularPolygon | null): void {
+  w.free.push(a);
+  w.circles.push(c);
+}
+
+/**
+ * Draw clusters from `g` on, and stop before the first that brings the count of cross-sections to
+ * ITEMS_PER_STEP (counted once: `counted` when cluster g already was), after uniting the free clusters so far;
+ * returns that cluster's index, or the number of clusters at the end. A plain function, which the engine
+ * optimises (a generator's own loop runs unoptimised).
+ */
+function drawClusters(w: Drawing, groups: readonly Disc[][], g: number, counted: boolean): number {
+  const d = w.d;
+  for (; g < groups.length; g++) {
     const cluster = groups[g];
-    if ((count += cluster.length) >= ITEMS_PER_STEP) {
+    if (!counted && (w.count += cluster.length) >= ITEMS_PER_STEP) {
       // the overlapping free clusters so far in one union (clusters do not meet: each merges on its own)
-      if (freeRings.length) for (const a of unionRings(freeRings.splice(0))) keep(a, null);
-      count = 0;
-      yield;
+      if (w.freeRings.length) for (const a of unionRings(w.freeRings.splice(0))) keep(w, a, null);
+      w.count = 0;
+      return g;
     }
+    counted = false;
     let fine = true;
     for (let k = 0; k < cluster.length && fine; k++) {
       const c = cluster[k];
-      fine = c.clear && c.r >= minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !roofIndex?.meetsDisc(c.x, c.y, c.r) && !onPart(c);
+      fine = c.clear && c.r >= w.minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !w.roofIndex?.meetsDisc(c.x, c.y, c.r) && !w.onPart(c);
     }
     if (cluster.length === 1) {
       // a lone branch (most of them): its circle as it is
       const c = cluster[0];
       const ring = circle(c.x, c.y, c.r);
-      if (fine) keep({ outer: ring, holes: [] }, { x: c.x, y: c.y, r: c.r, sides: ring.length });
-      else rest.push(ring);
+      if (fine) keep(w, { outer: ring, holes: [] }, { x: c.x, y: c.y, r: c.r, sides: ring.length });
+      else w.rest.push(ring);
       continue;
     }
     // a circle inside another of its cluster adds nothing to their union
@@ -163,21 +173,41 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
     if (fine && left === 1) {
       // the others all inside one: that one is a lone circle
       const ring = circle(last.x, last.y, last.r);
-      keep({ outer: ring, holes: [] }, { x: last.x, y: last.y, r: last.r, sides: ring.length });
+      keep(w, { outer: ring, holes: [] }, { x: last.x, y: last.y, r: last.r, sides: ring.length });
       continue;
     }
-    const into = fine ? freeRings : rest;
+    const into = fine ? w.freeRings : w.rest;
     for (let k = 0; k < cluster.length; k++) {
       const c = cluster[k];
       if (!insideAnother(c, cluster)) into.push(circle(c.x, c.y, c.r));
     }
   }
-  if (freeRings.length) for (const a of unionRings(freeRings)) keep(a, null);
+  return g;
+}
+
+/** One layer's support area, printable; yields every ITEMS_PER_STEP cross-sections. */
+export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
+  let roof: ExPolygon[] = d.roof.slice();
+  if (roof.length && d.base) roof = carried(roof, d.base, d.roofReachUm);
+  const gapBoxes = d.gapBelow.map((x) => boundsOf([x]));
+  let gapIndex: AreaIndex | null = null;
+  const onPart = (c: Disc) =>
+    meetsAny({ minX: c.x - c.r, minY: c.y - c.r, maxX: c.x + c.r, maxY: c.y + c.r }, gapBoxes) && (gapIndex ??= d.gapIndex()).meetsDisc(c.x, c.y, c.r);
+  // clusters of overlapping circles clear of the collision, printable, and touching neither the roof nor
+  // the part below need only their union; the rest are cut to what may and can be printed
+  const w: Drawing = {
+    d, roofIndex: roof.length ? new AreaIndex(roof) : null, onPart, minR: (MIN_SUPPORT_WIDTHS * d.widthUm) / 2,
+    free: [], circles: [], freeRings: [], rest: [], count: 0,
+  };
+  const groups = clusters(d.discs);
+  for (let g = drawClusters(w, groups, 0, false); g < groups.length; g = drawClusters(w, groups, g, true)) yield;
+  const { free, circles, freeRings, rest } = w;
+  if (freeRings.length) for (const a of unionRings(freeRings)) keep(w, a, null);
   if (rest.length === 0 && roof.length === 0) return { areas: free, circles };
   const branches = rest.length ? unionRings(rest) : [];
   let s = branches.length && roof.length ? union(branches, roof) : branches.length ? branches : roof;
   for (const b of [d.collision, d.gapBelow]) if (s.length && b.length) s = cutAway(s, b);
-  for (const a of printable(s, d.widthUm)) keep(a, null);
+  for (const a of printable(s, d.widthUm)) keep(w, a, null);
   return { areas: free, circles };
 }
 

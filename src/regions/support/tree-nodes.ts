@@ -184,9 +184,7 @@ export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes
   };
   const range = Math.min(ATTRACT_MAX_UM, rules.zUm(j));
   for (const keep of ['bed', 'model'] as const) {
-    const ids: number[] = [];
-    for (let i = 0; i < upper.length; i++) if (!upper[i].dead && !upper[i].landing && upper[i].keep === keep) ids.push(i);
-    const pairs = nearPairs(upper, ids, range);
+    const pairs = nearPairs(upper, freeIds(upper, keep), range);
     // merges: the closest pairs first, each node once per layer
     for (let k = 0; k < pairs.length; k += ITEMS_PER_STEP) {
       if (k > 0) yield;
@@ -199,6 +197,13 @@ export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes
     stepDown(d, i, Math.min(upper.length, i + ITEMS_PER_STEP));
   }
   return { lower: d.lower, stuck: d.stuck };
+}
+
+/** The nodes that are alive, not landing, and keep out of `keep`. */
+function freeIds(upper: readonly TreeNode[], keep: Keep): number[] {
+  const ids: number[] = [];
+  for (let i = 0; i < upper.length; i++) if (!upper[i].dead && !upper[i].landing && upper[i].keep === keep) ids.push(i);
+  return ids;
 }
 
 /** Merge the pairs [from, to) that can meet (closest first, each node once). */

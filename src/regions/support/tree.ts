@@ -23,7 +23,7 @@ import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js'
 import { VERTEX_ROUNDING_UM, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
-import { radiusClasses, TreeVolumes } from './tree-volumes.js';
+import { radiusClasses, TreeVolumes, type Keep } from './tree-volumes.js';
 
 /** A tip widens at this angle (of its sides from vertical) until it has the branch diameter: thin tips merge before they grow thick. */
 export const TIP_WIDEN_DEG = 12;
@@ -120,8 +120,7 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
   const w = model.widthUm;
   let below: ExPolygon[] = [];
   for (let j = 0; j < n; j++) {
-    const discs: Disc[] = [];
-    for (const c of nodes[j]) if (!c.dead) discs.push({ x: c.x, y: c.y, r: c.r, clear: !c.landing && c.r <= rules.radii[c.c] + 0.5 });
+    const discs = discsOf(nodes[j], rules);
     const roofWanted: ExPolygon[] = [];
     for (let m = j + 1 + top; m <= j + top + roofLayers && m < n; m++) for (const p of overhangs[m]) roofWanted.push(p);
     if (discs.length === 0 && roofWanted.length === 0) {
@@ -147,20 +146,18 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
   return out;
 }
 
-/**
- * model.split, run only on the islands that meet the part within the roof layers above or the floor layers
- * below: the others are body. `circles[i]`, when set, is the regular polygon island i is drawn as.
- */
-function* splitNear(model: ModelLayers, j: number, s: ExPolygon[], circles: readonly (RegularPolygon | null)[]): Generator<void, SupportAreas> {
-  const cfg = model.cfg;
-  const nearby: number[] = [];
-  for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
-  // floors only where support may stand on the part (model.split makes none in 'buildPlate' placement)
-  if (cfg.supportPlacement === 'everywhere') {
-    for (let k = j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount; k < j - cfg.supportBottomGapLayers; k++) if (model.section(k).length) nearby.push(k);
+/** The cross-sections of a layer's live branches (a plain function: a generator's own loop runs unoptimised). */
+function discsOf(nodes: readonly TreeNode[], rules: TreeRules): Disc[] {
+  const discs: Disc[] = [];
+  for (let i = 0; i < nodes.length; i++) {
+    const c = nodes[i];
+    if (!c.dead) discs.push({ x: c.x, y: c.y, r: c.r, clear: !c.landing && c.r <= rules.radii[c.c] + 0.5 });
   }
-  model.releaseBelow(j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount);
-  if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
+  return discs;
+}
+
+/** The islands of s that meet the part on one of the `nearby` layers (near), and the rest (far). */
+function nearOrFar(model: ModelLayers, nearby: readonly number[], s: readonly ExPolygon[], circles: readonly (RegularPolygon | null)[]): { near: ExPolygon[]; far: ExPolygon[] } {
   const near: ExPolygon[] = [], far: ExPolygon[] = [];
   for (let i = 0; i < s.length; i++) {
     const a = s[i];
@@ -177,6 +174,24 @@ function* splitNear(model: ModelLayers, j: number, s: ExPolygon[], circles: read
     }
     (hit ? near : far).push(a);
   }
+  return { near, far };
+}
+
+/**
+ * model.split, run only on the islands that meet the part within the roof layers above or the floor layers
+ * below: the others are body. `circles[i]`, when set, is the regular polygon island i is drawn as.
+ */
+function* splitNear(model: ModelLayers, j: number, s: ExPolygon[], circles: readonly (RegularPolygon | null)[]): Generator<void, SupportAreas> {
+  const cfg = model.cfg;
+  const nearby: number[] = [];
+  for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
+  // floors only where support may stand on the part (model.split makes none in 'buildPlate' placement)
+  if (cfg.supportPlacement === 'everywhere') {
+    for (let k = j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount; k < j - cfg.supportBottomGapLayers; k++) if (model.section(k).length) nearby.push(k);
+  }
+  model.releaseBelow(j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount);
+  if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
+  const { near, far } = nearOrFar(model, nearby, s, circles);
   // islands apart split apart: a few at a time
   const out: SupportAreas = { body: far, roof: [], floor: [] };
   for (let k = 0; k < near.length; k += ITEMS_PER_STEP) {
@@ -220,26 +235,56 @@ export function treeRules(model: ModelLayers): TreeRules {
   };
 }
 
+/** What placing one layer's tips works on. */
+interface TipPlacing {
+  lower: TreeNode[];
+  candidates: readonly Pt[];
+  existing: PointGrid;
+  found: number[];
+  widest: number;
+  gap: number;
+  keeps: readonly Keep[];
+  j: number;
+  spacing: number;
+  vol: TreeVolumes;
+  rules: TreeRules;
+}
+
 /** Tips under the overhang `over`, on layer j, where no branch already passes. */
 function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spacing: number, vol: TreeVolumes, rules: TreeRules): Generator<void, void> {
-  const existing = new PointGrid(spacing);
-  let widest = 0;
-  for (const k of lower) {
-    existing.add(k.x, k.y);
-    widest = Math.max(widest, k.r);
+  const t: TipPlacing = {
+    lower, candidates: tipCandidates(over, spacing, rules.tipR), existing: new PointGrid(spacing), found: [], widest: 0,
+    gap: TIP_MIN_GAP_SHARE * spacing, keeps: rules.everywhere ? ['bed', 'model'] : ['bed'], j, spacing, vol, rules,
+  };
+  t.widest = gridOfNodes(t.existing, lower);
+  // a step before candidate ITEMS_PER_STEP - 1, and every ITEMS_PER_STEP after it
+  const n = t.candidates.length;
+  for (let from = 0; from < n; from = from < ITEMS_PER_STEP - 1 ? ITEMS_PER_STEP - 1 : from + ITEMS_PER_STEP) {
+    if (from > 0) yield;
+    placeTips(t, from, Math.min(n, from < ITEMS_PER_STEP - 1 ? ITEMS_PER_STEP - 1 : from + ITEMS_PER_STEP));
   }
-  const gap = TIP_MIN_GAP_SHARE * spacing;
-  const keeps = rules.everywhere ? (['bed', 'model'] as const) : (['bed'] as const);
-  const candidates = tipCandidates(over, spacing, rules.tipR);
-  const found: number[] = [];
-  for (let i = 0; i < candidates.length; i++) {
-    if (i % ITEMS_PER_STEP === ITEMS_PER_STEP - 1) yield;
-    const p = candidates[i];
-    if (tooClose(existing, found, existing.near(p.x, p.y, Math.max(gap, widest), found), p, gap, lower)) continue;
-    for (const keep of keeps) {
-      const q = vol.index(keep, 0, j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * spacing);
+}
+
+/** Every node's centre into the grid; returns the widest radius. */
+function gridOfNodes(grid: PointGrid, nodes: readonly TreeNode[]): number {
+  let widest = 0;
+  for (let i = 0; i < nodes.length; i++) {
+    grid.add(nodes[i].x, nodes[i].y);
+    widest = Math.max(widest, nodes[i].r);
+  }
+  return widest;
+}
+
+/** Place the tips of candidates [from, to) that no branch is too close to. */
+function placeTips(t: TipPlacing, from: number, to: number): void {
+  const { lower, existing, found, gap, vol, rules } = t;
+  for (let i = from; i < to; i++) {
+    const p = t.candidates[i];
+    if (tooClose(existing, found, existing.near(p.x, p.y, Math.max(gap, t.widest), found), p, gap, lower)) continue;
+    for (const keep of t.keeps) {
+      const q = vol.index(keep, 0, t.j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * t.spacing);
       if (!q) continue;
-      lower.push({ x: q.x, y: q.y, r: rules.tipR, c: 0, keep, merged: false, topUm: rules.zUm(j), landing: false, parents: [], dead: false });
+      lower.push({ x: q.x, y: q.y, r: rules.tipR, c: 0, keep, merged: false, topUm: rules.zUm(t.j), landing: false, parents: [], dead: false });
       existing.add(q.x, q.y);
       break;
     }
