@@ -145,80 +145,103 @@ export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void
   while (!steps.next().done);
 }
 
+/** What the walk carries from layer to layer. */
+interface Walk {
+  s: MoveSettings;
+  sink: MoveSink;
+  retractDistance: number;
+  primeDistance: number;
+  zSpeed: number;
+  pos: Position;
+  /** The object whose moves are open. */
+  open: number;
+}
+
 /** `walkPlan` as steps: yields after each layer, so a caller can pause between layers. */
 export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink): Generator<void, void> {
-  const retractDistance = s.retractionEnabled ? s.retractionDistance : 0;
-  const primeDistance = !s.retractionEnabled ? 0 : s.firmwareRetraction ? s.retractionDistance : s.retractionDistance + s.retractionExtraPrime;
-  const zSpeed = s.maxSpeedZ !== null && s.maxSpeedZ < Z_SPEED_MM_S ? s.maxSpeedZ : Z_SPEED_MM_S;
-  const pos: Position = { x: 0, y: 0, z: NaN, known: false };
-  let open = NO_OBJECT;
-
+  const w: Walk = {
+    s,
+    sink,
+    retractDistance: s.retractionEnabled ? s.retractionDistance : 0,
+    primeDistance: !s.retractionEnabled ? 0 : s.firmwareRetraction ? s.retractionDistance : s.retractionDistance + s.retractionExtraPrime,
+    zSpeed: s.maxSpeedZ !== null && s.maxSpeedZ < Z_SPEED_MM_S ? s.maxSpeedZ : Z_SPEED_MM_S,
+    pos: { x: 0, y: 0, z: NaN, known: false },
+    open: NO_OBJECT,
+  };
   for (let li = 0; li < plan.layers.length; li++) {
-    const layer = plan.layers[li]!;
-    const layerZ = layer.z;
-    const travelSpeed = capSpeed(li === 0 ? s.firstLayerTravelSpeed : s.travelSpeed, s.maxSpeed);
-    sink.layerStart(layer, li);
-    const steps = layer.steps;
-    for (let si = 0; si < steps.length; si++) {
-      const step = steps[si]!;
-      if (step.kind === 'travel') {
-        if (open !== NO_OBJECT && nextObject(steps, si) !== open) {
-          sink.objectEnd(open);
-          open = NO_OBJECT;
-        }
-        const speed = capSpeed(step.speed, s.maxSpeed);
-        const retracting = step.retract && s.retractionEnabled;
-        if (retracting && retractDistance > 0) sink.retract(retractDistance, s.retractionSpeed);
-        moveZ(pos, retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, zSpeed, sink);
-        for (let k = 0; k < step.points.length; k++) travelTo(pos, step.points[k].x, step.points[k].y, speed, sink);
-        moveZ(pos, layerZ, zSpeed, sink);
-        if (retracting && primeDistance > 0) sink.prime(primeDistance, s.retractionSpeed);
-        continue;
-      }
-      const points = step.points;
-      const n = points.length;
-      if (n === 0) continue;
-      moveZ(pos, layerZ, zSpeed, sink);
-      const object = step.object ?? NO_OBJECT;
-      if (object !== open) {
-        if (open !== NO_OBJECT) sink.objectEnd(open);
-        if (object !== NO_OBJECT) sink.objectStart(object);
-        open = object;
-      }
-      travelTo(pos, points[0]!.x, points[0]!.y, travelSpeed, sink);
-      sink.extrudeStart(step);
-      const speed = capSpeed(step.speed, s.maxSpeed);
-      const perMm = filamentPerMm(step, s);
-      const arcs = step.arcs;
-      const last = step.closed ? n : n - 1;
-      let x = pos.x;
-      let y = pos.y;
-      for (let i = 1; i <= last; i++) {
-        const p = points[i === n ? 0 : i]!;
-        const dx = p.x - x;
-        const dy = p.y - y;
-        if (dx === 0 && dy === 0) continue;
-        const arc = arcs?.[i];
-        if (arc) {
-          const length = arcLengthMm(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise);
-          x = p.x;
-          y = p.y;
-          sink.arc(x, y, arc.cx, arc.cy, arc.clockwise, length, length * perMm, speed);
-          continue;
-        }
-        const length = Math.sqrt(dx * dx + dy * dy) / 1000;
-        x = p.x;
-        y = p.y;
-        sink.extrude(x, y, length, length * perMm, speed);
-      }
-      pos.x = x;
-      pos.y = y;
-    }
-    if (open !== NO_OBJECT) {
-      sink.objectEnd(open);
-      open = NO_OBJECT;
-    }
-    sink.layerEnd(layer, li);
+    walkLayer(w, plan.layers[li]!, li);
     yield;
   }
+}
+
+/**
+ * The moves of one layer. A plain function, called once a layer, which the engine optimises early: the loop
+ * of a generator's own body runs unoptimised to its end.
+ */
+function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
+  const { s, sink, pos, retractDistance, primeDistance, zSpeed } = w;
+  const layerZ = layer.z;
+  const travelSpeed = capSpeed(li === 0 ? s.firstLayerTravelSpeed : s.travelSpeed, s.maxSpeed);
+  sink.layerStart(layer, li);
+  const steps = layer.steps;
+  for (let si = 0; si < steps.length; si++) {
+    const step = steps[si]!;
+    if (step.kind === 'travel') {
+      if (w.open !== NO_OBJECT && nextObject(steps, si) !== w.open) {
+        sink.objectEnd(w.open);
+        w.open = NO_OBJECT;
+      }
+      const speed = capSpeed(step.speed, s.maxSpeed);
+      const retracting = step.retract && s.retractionEnabled;
+      if (retracting && retractDistance > 0) sink.retract(retractDistance, s.retractionSpeed);
+      moveZ(pos, retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, zSpeed, sink);
+      for (let k = 0; k < step.points.length; k++) travelTo(pos, step.points[k].x, step.points[k].y, speed, sink);
+      moveZ(pos, layerZ, zSpeed, sink);
+      if (retracting && primeDistance > 0) sink.prime(primeDistance, s.retractionSpeed);
+      continue;
+    }
+    const points = step.points;
+    const n = points.length;
+    if (n === 0) continue;
+    moveZ(pos, layerZ, zSpeed, sink);
+    const object = step.object ?? NO_OBJECT;
+    if (object !== w.open) {
+      if (w.open !== NO_OBJECT) sink.objectEnd(w.open);
+      if (object !== NO_OBJECT) sink.objectStart(object);
+      w.open = object;
+    }
+    travelTo(pos, points[0]!.x, points[0]!.y, travelSpeed, sink);
+    sink.extrudeStart(step);
+    const speed = capSpeed(step.speed, s.maxSpeed);
+    const perMm = filamentPerMm(step, s);
+    const arcs = step.arcs;
+    const last = step.closed ? n : n - 1;
+    let x = pos.x;
+    let y = pos.y;
+    for (let i = 1; i <= last; i++) {
+      const p = points[i === n ? 0 : i]!;
+      const dx = p.x - x;
+      const dy = p.y - y;
+      if (dx === 0 && dy === 0) continue;
+      const arc = arcs?.[i];
+      if (arc) {
+        const length = arcLengthMm(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise);
+        x = p.x;
+        y = p.y;
+        sink.arc(x, y, arc.cx, arc.cy, arc.clockwise, length, length * perMm, speed);
+        continue;
+      }
+      const length = Math.sqrt(dx * dx + dy * dy) / 1000;
+      x = p.x;
+      y = p.y;
+      sink.extrude(x, y, length, length * perMm, speed);
+    }
+    pos.x = x;
+    pos.y = y;
+  }
+  if (w.open !== NO_OBJECT) {
+    sink.objectEnd(w.open);
+    w.open = NO_OBJECT;
+  }
+  sink.layerEnd(layer, li);
 }
