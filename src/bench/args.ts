@@ -45,7 +45,8 @@ the common profile (0.2 mm layers, 2 walls, 0.8 mm top/bottom, 20 % grid). Runs 
 a warm-up round, then --repeat counted rounds; it prints the medians of wall time, CPU time and peak memory,
 Strata/CuraEngine ratios (median of the per-round ratios), then on 3DBenchy Strata with 1 and 2 threads and
 every infill pattern against grid, support (normal, tree) against none on SupportTest, Overhang, spot,
-3DBenchy, BridgeTest and HollowCalibrationCube, and the targets of the speed issue with a verdict each. Warns when the machine is busy.
+3DBenchy, BridgeTest (also scaled 2× in X and Y) and HollowCalibrationCube, and the targets of the speed issue
+with a verdict each. Warns when the machine is busy.
 
 Options:
   --models NAMES     only these models: a file name or stem (3DBenchy, 3DBenchy-x4, spot …), else every model

@@ -43,6 +43,7 @@ function fixture() {
   writeFileSync(join(models, 'cube.stl'), binaryStl(12));
   writeFileSync(join(models, 'broken.stl'), binaryStl(3));
   writeFileSync(join(models, 'spot.stl'), binaryStl(4));
+  writeFileSync(join(models, 'BridgeTest.stl'), binaryStl(6));
   writeFileSync(join(models, '3DBenchy.stl.gz'), gzipSync(binaryStl(5)));
   writeFileSync(join(models, 'ascii.stl'), 'solid a\nfacet normal 0 0 1\nouter loop\nendloop\nendfacet\nfacet normal 0 0 1\nendfacet\nendsolid a\n');
   writeFileSync(join(models, 'SOURCES.md'), '# not a model\n');
@@ -63,7 +64,7 @@ async function withFixture(fn: (f: ReturnType<typeof fixture>) => Promise<void> 
 test('models: listing, triangle counts, gzip unpacked once, the big mesh made from 3DBenchy', () =>
   withFixture((f) => {
     const files = listModelFiles(f.models);
-    assert.deepEqual(files, ['3DBenchy.stl.gz', 'ascii.stl', 'broken.stl', 'cube.stl', 'spot.stl']);
+    assert.deepEqual(files, ['3DBenchy.stl.gz', 'ascii.stl', 'BridgeTest.stl', 'broken.stl', 'cube.stl', 'spot.stl']);
     assert.deepEqual(availableModels(files, true), [...files, BIG_MODEL]);
     assert.deepEqual(availableModels(files, false), files);
     assert.deepEqual(availableModels(['cube.stl'], true), ['cube.stl'], 'no 3DBenchy, no big mesh');
@@ -84,7 +85,7 @@ test('runBench with a stub CLI: every model, failures, threads, every pattern, s
     assert.equal(report.strataCli.built, true);
     assert.equal(report.peers.cura, null);
     const byName = Object.fromEntries(report.models.map((r) => [r.model, r]));
-    assert.deepEqual(Object.keys(byName), ['3DBenchy.stl', 'ascii.stl', 'broken.stl', 'cube.stl', 'spot.stl', BIG_MODEL]);
+    assert.deepEqual(Object.keys(byName), ['3DBenchy.stl', 'ascii.stl', 'BridgeTest.stl', 'broken.stl', 'cube.stl', 'spot.stl', BIG_MODEL]);
     assert.equal(byName['cube.stl']!.strata.status, 'ok');
     assert.ok(byName['cube.stl']!.strata.wallSeconds! > 0);
     assert.equal(byName['cube.stl']!.triangles, 12);
@@ -102,14 +103,17 @@ test('runBench with a stub CLI: every model, failures, threads, every pattern, s
     assert.deepEqual(report.patterns.map((p) => p.pattern), [...PATTERN_IDS]);
     assert.ok(report.patterns.every((p) => p.strata.status === 'ok' && p.relativeToGrid !== null));
     assert.equal(report.patterns[0]!.relativeToGrid, 1);
-    // support on the selected support models
-    assert.deepEqual(report.support.map((s) => s.model), ['3DBenchy.stl', 'spot.stl']);
+    // support on the selected support models, BridgeTest also scaled
+    assert.deepEqual(report.support.map((s) => s.model), ['3DBenchy.stl', 'BridgeTest.stl', 'BridgeTest.stl --scale 2,2,1', 'spot.stl']);
     assert.ok(report.support.every((s) => s.normal.status === 'ok' && s.tree.status === 'ok' && s.wallRatio.tree !== null));
     assert.ok(report.triangleScaling && report.triangleScaling.triangleRatio === 4);
     // what ran, with which flags
     const outputs = readdirSync(join(f.work, 'out'));
     for (const o of ['3DBenchy.stl.infill-gyroid.gcode', '3DBenchy.stl.threads-1.gcode', '3DBenchy.stl.threads-2.gcode', 'spot.stl.support-tree.gcode', `${BIG_MODEL}.strata.gcode`]) assert.ok(outputs.includes(o), o);
     assert.match(readFileSync(join(f.work, 'out', 'spot.stl.support-tree.gcode'), 'utf8'), /--support-enabled --support-type tree/);
+    for (const kind of ['none', 'normal', 'tree']) {
+      assert.match(readFileSync(join(f.work, 'out', `BridgeTest.stl.support-${kind}-scaled.gcode`), 'utf8'), /BridgeTest\.stl --scale 2,2,1/, kind);
+    }
     assert.ok(log.some((l) => /Strata --threads 2 run 1\/1: [\d.]+ s wall/.test(l)), log.join('\n'));
     // the targets table: Strata's own figures judged, ratios to CuraEngine not measured here
     assert.equal(report.targets.find((t) => /CuraEngine, 3DBenchy\.stl/.test(t.figure))!.measured, 'no CuraEngine');

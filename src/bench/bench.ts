@@ -3,7 +3,8 @@
  *  1. every model: Strata with its default settings, CuraEngine and PrusaSlicer (where installed);
  *  2. 3DBenchy with --threads 1 and --threads 2 (and whether their G-code equals the default's);
  *  3. 3DBenchy with every infill pattern, against grid;
- *  4. support (normal, tree) against none on SupportTest, Overhang, spot, 3DBenchy, BridgeTest and the hollow cube.
+ *  4. support (normal, tree) against none on SupportTest, Overhang, spot, 3DBenchy, BridgeTest (also scaled 2× in X
+ *     and Y) and the hollow cube.
  * Every block records how much other processes ran meanwhile (load.ts). Returns the results as data (report.ts).
  */
 import { createHash } from 'node:crypto';
@@ -39,6 +40,12 @@ export interface BenchContext {
 
 /** Models the support section runs on, when selected. */
 export const SUPPORT_MODELS = Object.freeze(['SupportTest.stl', 'Overhang.stl', 'spot.stl', '3DBenchy.stl', 'BridgeTest.stl', 'HollowCalibrationCube.stl']);
+
+/**
+ * The support section also runs this model scaled (X and Y twice, the same layers): four times the overhang
+ * over a part that is quick to slice, so the tree's work outweighs the part's more than on any shared model.
+ */
+export const SUPPORT_SCALED = Object.freeze({ model: 'BridgeTest.stl', scale: '2,2,1' });
 
 /** dist/bin/main.js of this build (from dist/bench/): the bundled CLI users run. */
 export function defaultStrataCli(): string {
@@ -198,15 +205,20 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   if (options.support && strataBuilt) {
     const supportModels = models.filter((m) => SUPPORT_MODELS.includes(m.name));
     if (supportModels.length === 0) notes.push(`support section skipped: none of ${SUPPORT_MODELS.join(', ')} is among the selected models`);
-    for (const model of supportModels) {
+    // each model as it is, and the one whose support outweighs the part most scaled up as well
+    const cases = supportModels.flatMap((model) => [{ model, scale: null as string | null }, ...(model.name === SUPPORT_SCALED.model ? [{ model, scale: SUPPORT_SCALED.scale }] : [])]);
+    for (const { model, scale } of cases) {
       if (aborted()) break;
-      ctx.log(`support on ${model.name}`);
-      const r = await block(`${model.name} support`, {
-        none: strataJob(model, 'support-none', []),
-        normal: strataJob(model, 'support-normal', ['--support-enabled', '--support-type', 'normal']),
-        tree: strataJob(model, 'support-tree', ['--support-enabled', '--support-type', 'tree']),
+      const name = scale ? `${model.name} --scale ${scale}` : model.name;
+      const extra = scale ? ['--scale', scale] : [];
+      const tag = scale ? '-scaled' : '';
+      ctx.log(`support on ${name}`);
+      const r = await block(`${name} support`, {
+        none: strataJob(model, `support-none${tag}`, extra),
+        normal: strataJob(model, `support-normal${tag}`, [...extra, '--support-enabled', '--support-type', 'normal']),
+        tree: strataJob(model, `support-tree${tag}`, [...extra, '--support-enabled', '--support-type', 'tree']),
       });
-      support.push(supportRow(model.name, r.none, r.normal, r.tree));
+      support.push(supportRow(name, r.none, r.normal, r.tree));
     }
   }
 
