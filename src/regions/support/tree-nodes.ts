@@ -54,6 +54,8 @@ export interface TreeRules {
   heightCapR: (topUm: number) => number;
   /** Radius growth per layer of a tip, µm. */
   tipGrowth: number;
+  /** How near a tip or branch already there a new tip may be, µm (edge tips apart, and from the branches passing). */
+  tipGap: number;
   /** Radius growth per layer of a merged trunk on layer j, µm. */
   trunkGrowth: (j: number) => number;
   /** Sideways move allowed between layer j and j - 1, µm. */

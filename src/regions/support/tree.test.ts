@@ -247,3 +247,24 @@ test('with build-plate placement, branches lean round a slab to the bed and hold
   // out may pass over its edge)
   for (let j = 10; j < 12; j++) assert.equal(area(intersection(supportArea(layers[j]), [slab])), 0, `support over the slab on layer ${j}`);
 });
+
+test('under a bridge 5 mm wide with a roof, the tips stand in one row (none nearer another than the roof reaches) and hold every overhang point', () => {
+  // a bar 34 mm long on two posts: its underside between them overhangs
+  const bridge: Box[] = [
+    { x: [-17, -15], y: [-2.5, 2.5], z: [0, 11] },
+    { x: [15, 17], y: [-2.5, 2.5], z: [0, 11] },
+    { x: [-17, 17], y: [-2.5, 2.5], z: [10, 11] },
+  ];
+  const { layers, cfg } = supported(bridge, { supportType: 'tree' });
+  const model = new ModelLayers(layers, cfg);
+  const plan = planOf(model);
+  let top = plan.nodes.length - 1;
+  while (top > 0 && plan.nodes[top].length === 0) top--;
+  const tips = plan.nodes[top];
+  // 30 mm of overhang, tips 3 mm apart: one row is 11 to 13; with edge tips 0.6 of the spacing apart there were 31
+  assert.ok(tips.length >= 10 && tips.length <= 15, `${tips.length} tips`);
+  for (const a of tips) for (const b of tips) if (a !== b) assert.ok(Math.hypot(a.x - b.x, a.y - b.y) >= plan.rules.tipGap - 1);
+  const { held, total } = heldShare(layers, cfg, (j) => model.collision(j), (cfg.supportLineWidthMm * UM_PER_MM) / 2);
+  assert.ok(total > 500);
+  assert.equal(held, total);
+});

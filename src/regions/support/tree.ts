@@ -29,7 +29,10 @@ import { radiusClasses, TreeVolumes, type Keep } from './tree-volumes.js';
 export const TIP_WIDEN_DEG = 12;
 /** Merged trunks grow to at most this many times the branch radius. */
 export const TRUNK_MAX_BRANCH_RADII = 1.5;
-/** A roof reaches at most this share of the tip spacing beyond the branches under it. */
+/**
+ * A roof reaches at most this share of the tip spacing beyond the branches under it; and under a roof, a tip
+ * goes no nearer than this to another tip or a branch already there (see TIP_MIN_GAP_SHARE).
+ */
 export const ROOF_REACH_SHARE = 0.75;
 /** The roof reaches this many support line widths beyond the overhang it holds. */
 export const ROOF_GROW_WIDTHS = 0.5;
@@ -224,6 +227,7 @@ export function treeRules(model: ModelLayers): TreeRules {
     maxR,
     heightCapR: (topUm) => Math.max(tipR, Math.round(topUm / (2 * BRANCH_SLENDERNESS))),
     tipGrowth: cfg.layerHeight * UM_PER_MM * Math.tan(rad(TIP_WIDEN_DEG)),
+    tipGap: (cfg.supportInterfaceLayers > 0 ? ROOF_REACH_SHARE : TIP_MIN_GAP_SHARE) * cfg.supportTreeTipSpacingMm * UM_PER_MM,
     trunkGrowth: (j) => height(j) * tanGrow,
     step: (j) => (j > 0 && j < model.count ? height(j) * tanMove : 0),
     zUm: (j) => model.layers[j].z * UM_PER_MM,
@@ -253,8 +257,8 @@ interface TipPlacing {
 /** Tips under the overhang `over`, on layer j, where no branch already passes. */
 function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spacing: number, vol: TreeVolumes, rules: TreeRules): Generator<void, void> {
   const t: TipPlacing = {
-    lower, candidates: tipCandidates(over, spacing, rules.tipR), existing: new PointGrid(spacing), found: [], widest: 0,
-    gap: TIP_MIN_GAP_SHARE * spacing, keeps: rules.everywhere ? ['bed', 'model'] : ['bed'], j, spacing, vol, rules,
+    lower, candidates: tipCandidates(over, spacing, rules.tipR, rules.tipGap), existing: new PointGrid(spacing), found: [], widest: 0,
+    gap: rules.tipGap, keeps: rules.everywhere ? ['bed', 'model'] : ['bed'], j, spacing, vol, rules,
   };
   t.widest = gridOfNodes(t.existing, lower);
   // a step before candidate ITEMS_PER_STEP - 1, and every ITEMS_PER_STEP after it
