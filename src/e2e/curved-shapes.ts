@@ -1,8 +1,9 @@
 /**
  * Test-only meshes with curved and sloping overhangs, made here rather than read from ../shared/models: a sphere
- * on the bed, a torus lying flat, a mushroom (a thin stem under a wide, conical cap) and fins leaning at several
- * angles. Closed, outward-facing, indexed, mm. The sphere's and torus's undersides slope through every angle, the
- * mushroom's and each fin's at one; the shared models' overhangs are mostly flat or stepped.
+ * on the bed, a torus lying flat, a mushroom (a thin stem under a wide, conical cap), fins leaning at several
+ * angles and an arch. Closed, outward-facing, indexed, mm. The sphere's, torus's and arch's undersides slope
+ * through every angle, the mushroom's and each fin's at one; the shared models' overhangs are mostly flat or
+ * stepped.
  */
 import type { Mesh } from '../mesh/types.js';
 
@@ -129,5 +130,42 @@ export function leaningFins(): Mesh {
     g.quad(b[0], t[0], t[3], b[3]); // the side leaning over the bed
     g.quad(b[1], b[2], t[2], t[1]); // the underside
   });
+  return g.mesh();
+}
+
+/**
+ * An arch standing on the bed: a block 2·halfWidth wide (along x), `height` high and `depth` deep (along y),
+ * with a half-cylinder of radius `radius` taken out of its underside, so the opening's roof slopes through
+ * every angle from the vertical feet to the flat crown. Each face between the opening and the outside is cut
+ * along rays from the opening's centre (the block's corners among them), so the end faces are made of convex
+ * quads.
+ */
+export function arch(halfWidth = 12, height = 14, radius = 10, depth = 10, steps = 48): Mesh {
+  const g = new MeshBuilder();
+  const corner = Math.atan2(height, halfWidth);
+  const angles = [...new Set([...Array.from({ length: steps + 1 }, (_, i) => (Math.PI * i) / steps), corner, Math.PI - corner])].sort((p, q) => p - q);
+  // where the ray at angle t from the opening's centre leaves the block (its sides x = ±halfWidth, its top z = height)
+  const exit = (t: number): [number, number] => {
+    const c = Math.cos(t), s = Math.sin(t);
+    const k = Math.min(Math.abs(c) > 1e-12 ? halfWidth / Math.abs(c) : Infinity, s > 1e-12 ? height / s : Infinity);
+    return [c * k, s * k];
+  };
+  // per ray, the opening's point and the outside's, at the front (y = 0) and the back (y = depth)
+  const inner: [number, number][] = [], outer: [number, number][] = [];
+  for (const t of angles) {
+    const [ox, oz] = exit(t);
+    const ix = radius * Math.cos(t), iz = radius * Math.sin(t);
+    inner.push([g.vertex(ix, 0, iz), g.vertex(ix, depth, iz)]);
+    outer.push([g.vertex(ox, 0, oz), g.vertex(ox, depth, oz)]);
+  }
+  const n = angles.length;
+  for (let k = 0; k + 1 < n; k++) {
+    g.quad(inner[k][0], outer[k][0], outer[k + 1][0], inner[k + 1][0]); // front
+    g.quad(inner[k][1], inner[k + 1][1], outer[k + 1][1], outer[k][1]); // back
+    g.quad(inner[k][0], inner[k + 1][0], inner[k + 1][1], inner[k][1]); // the opening's roof
+    g.quad(outer[k][0], outer[k][1], outer[k + 1][1], outer[k + 1][0]); // the outside
+  }
+  g.quad(inner[0][0], inner[0][1], outer[0][1], outer[0][0]); // the feet on the bed
+  g.quad(inner[n - 1][0], outer[n - 1][0], outer[n - 1][1], inner[n - 1][1]);
   return g.mesh();
 }
