@@ -206,12 +206,13 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
     const supportModels = models.filter((m) => SUPPORT_MODELS.includes(m.name));
     if (supportModels.length === 0) notes.push(`support section skipped: none of ${SUPPORT_MODELS.join(', ')} is among the selected models`);
     // each model as it is, and the one whose support outweighs the part most scaled up as well
-    const cases = supportModels.flatMap((model) => [{ model, scale: null as string | null }, ...(model.name === SUPPORT_SCALED.model ? [{ model, scale: SUPPORT_SCALED.scale }] : [])]);
-    for (const { model, scale } of cases) {
+    const cases = supportModels.flatMap((model) => {
+      const plain = { model, name: model.name, extra: [] as string[], tag: '' };
+      if (model.name !== SUPPORT_SCALED.model) return [plain];
+      return [plain, { model, name: `${model.name} --scale ${SUPPORT_SCALED.scale}`, extra: ['--scale', SUPPORT_SCALED.scale], tag: '-scaled' }];
+    });
+    for (const { model, name, extra, tag } of cases) {
       if (aborted()) break;
-      const name = scale ? `${model.name} --scale ${scale}` : model.name;
-      const extra = scale ? ['--scale', scale] : [];
-      const tag = scale ? '-scaled' : '';
       ctx.log(`support on ${name}`);
       const r = await block(`${name} support`, {
         none: strataJob(model, `support-none${tag}`, extra),

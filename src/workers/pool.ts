@@ -133,11 +133,11 @@ export async function createPool(size: number, prepare: () => PreparedMesh[], cf
       return new Promise<void>((resolve, reject) => {
         let next = 0;
         let done = 0;
-        // with a placement, each worker's own jobs, in order
-        const queues = placement ? ports.map((_, w) => jobs.map((_, id) => id).filter((id) => placement[id] === w)) : null;
         if (placement && (placement.length !== jobs.length || placement.some((w) => !(w >= 0 && w < ports.length)))) {
           return reject(new Error('a placed job names no worker of this pool'));
         }
+        // with a placement, each worker's own jobs, in order
+        const queues = placement ? ports.map((_, w) => jobs.map((_, id) => id).filter((id) => placement[id] === w)) : null;
         if (placement) local = undefined;
         let finished = false;
         let helping = !!local && helpAboveMs <= 0;

@@ -243,10 +243,11 @@ export function treeRules(model: ModelLayers): TreeRules {
 interface TipPlacing {
   lower: TreeNode[];
   candidates: readonly Pt[];
+  /** Every branch's and placed tip's centre. */
   existing: PointGrid;
   found: number[];
+  /** The widest branch already on the layer, µm. */
   widest: number;
-  gap: number;
   keeps: readonly Keep[];
   j: number;
   spacing: number;
@@ -254,18 +255,20 @@ interface TipPlacing {
   rules: TreeRules;
 }
 
+/** Where the step of tip placing that starts at candidate `from` ends: before candidate ITEMS_PER_STEP - 1, then every ITEMS_PER_STEP. */
+const tipStepEnd = (from: number) => (from < ITEMS_PER_STEP - 1 ? ITEMS_PER_STEP - 1 : from + ITEMS_PER_STEP);
+
 /** Tips under the overhang `over`, on layer j, where no branch already passes. */
 function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spacing: number, vol: TreeVolumes, rules: TreeRules): Generator<void, void> {
+  const existing = new PointGrid(spacing);
   const t: TipPlacing = {
-    lower, candidates: tipCandidates(over, spacing, rules.tipR, rules.tipGap), existing: new PointGrid(spacing), found: [], widest: 0,
-    gap: rules.tipGap, keeps: rules.everywhere ? ['bed', 'model'] : ['bed'], j, spacing, vol, rules,
+    lower, candidates: tipCandidates(over, spacing, rules.tipR, rules.tipGap), existing, found: [], widest: gridOfNodes(existing, lower),
+    keeps: rules.everywhere ? ['bed', 'model'] : ['bed'], j, spacing, vol, rules,
   };
-  t.widest = gridOfNodes(t.existing, lower);
-  // a step before candidate ITEMS_PER_STEP - 1, and every ITEMS_PER_STEP after it
   const n = t.candidates.length;
-  for (let from = 0; from < n; from = from < ITEMS_PER_STEP - 1 ? ITEMS_PER_STEP - 1 : from + ITEMS_PER_STEP) {
+  for (let from = 0; from < n; from = tipStepEnd(from)) {
     if (from > 0) yield;
-    placeTips(t, from, Math.min(n, from < ITEMS_PER_STEP - 1 ? ITEMS_PER_STEP - 1 : from + ITEMS_PER_STEP));
+    placeTips(t, from, Math.min(n, tipStepEnd(from)));
   }
 }
 
@@ -281,7 +284,8 @@ function gridOfNodes(grid: PointGrid, nodes: readonly TreeNode[]): number {
 
 /** Place the tips of candidates [from, to) that no branch is too close to. */
 function placeTips(t: TipPlacing, from: number, to: number): void {
-  const { lower, existing, found, gap, vol, rules } = t;
+  const { lower, existing, found, vol, rules } = t;
+  const gap = rules.tipGap;
   for (let i = from; i < to; i++) {
     const p = t.candidates[i];
     if (tooClose(existing, found, existing.near(p.x, p.y, Math.max(gap, t.widest), found), p, gap, lower)) continue;
