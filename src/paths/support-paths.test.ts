@@ -44,6 +44,25 @@ test('support walls go round the body only: the roof beside it is dense lines, n
   assert.ok(share > 0.55 && share < 0.85, `roof lines cover ${(share * 100).toFixed(0)} % of the roof`);
 });
 
+test("a tree's straight columns are printed as normal support's body: no wall unless one is asked for", () => {
+  // a tree branch's body (walled) and a column under a pocket beside it, apart
+  const branch = rect(0, 0, 4_000, 4_000);
+  const column = rect(10_000, 0, 20_000, 10_000);
+  const areas = { body: [branch, column], roof: [], floor: [], columnBody: [column] };
+  const tree = resolveConfig({ supportEnabled: true, supportType: 'tree' });
+  const walls = pathsOf(supportGroups(areas, tree, layer, origin), 'support').filter((p) => p.closed);
+  assert.ok(walls.length >= 1 && allIn(walls, [branch]), 'the branch has its wall, the column none');
+  const lines = pathsOf(supportGroups(areas, tree, layer, origin), 'support').filter((p) => !p.closed && allIn([p], [column]));
+  let length = 0;
+  for (const { path } of lines) for (let k = 1; k < path.length; k++) length += Math.hypot(path[k].x - path[k - 1].x, path[k].y - path[k - 1].y);
+  // sparse lines at the support density over the column's 100 mm²
+  const expected = (100e6 * tree.supportDensity) / 100 / (tree.supportLineWidthMm * 1000);
+  assert.ok(length > 0.6 * expected && length < 1.4 * expected, `the column's lines: ${(length / 1000).toFixed(1)} mm, ${(expected / 1000).toFixed(1)} mm expected`);
+  const asked = resolveConfig({ supportEnabled: true, supportType: 'tree', supportWallCount: 1 });
+  const both = pathsOf(supportGroups(areas, asked, layer, origin), 'support').filter((p) => p.closed);
+  assert.ok(both.some((p) => allIn([p], [column])), 'with supportWallCount 1 the column has its wall too');
+});
+
 test('a roof sliver that no interface line crosses is printed as its outline', () => {
   const cfg = resolveConfig({ supportEnabled: true, supportAngle: 0 });
   // interface lines on this even layer run at supportAngle + 90°, along y, w / 0.7 apart from x = 0: a strip

@@ -143,6 +143,17 @@ function owner(components: readonly Component[], p: Pt): Component {
   return best;
 }
 
+/** `count` walls round the body pieces `pieces`, each added to the component that holds it. */
+function addWalls(pieces: readonly ExPolygon[], count: number, w: number, plain: readonly Component[]): void {
+  let inside = pieces;
+  for (let k = 0; k < count && inside.length; k++) {
+    const centre = shrink(inside, w / 2);
+    for (const ring of flatten(centre)) add(owner(plain, ring[0]), 'support', true, ring);
+    // the next wall's outline (the fill is inset from the kinds themselves)
+    if (k + 1 < count) inside = shrink(centre, w / 2);
+  }
+}
+
 /** The support groups of one layer (none when the layer has no support). */
 export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ, origin: Pt): PathGroup[] {
   if (!s || (s.body.length === 0 && s.roof.length === 0 && s.floor.length === 0)) return [];
@@ -172,19 +183,18 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
       add(components[i], 'support', true, ring);
     }
   }
-  let inside = s.body.filter((a) => !circles.has(a));
-  for (let k = 0; k < cfg.supportWalls && inside.length; k++) {
-    const centre = shrink(inside, w / 2);
-    for (const ring of flatten(centre)) add(owner(plain, ring[0]), 'support', true, ring);
-    // the next wall's outline (the fill is inset from the kinds themselves, below)
-    if (k + 1 < cfg.supportWalls) inside = shrink(centre, w / 2);
-  }
-  // the body's lines start inside its innermost wall, the roof's and floor's half a line in
-  const inset = w / 2 + cfg.supportWalls * w;
+  // straight columns (a tree's pockets) have the walls normal support has, the rest the support's own
+  const columns = s.columnBody?.length ? new Set(s.columnBody) : null;
+  const walled = columns ? s.body.filter((a) => !circles.has(a) && !columns.has(a)) : s.body.filter((a) => !circles.has(a));
+  addWalls(walled, cfg.supportWalls, w, plain);
+  if (s.columnBody?.length) addWalls(s.columnBody, cfg.supportColumnWalls, w, plain);
   const byArea = new Map<ExPolygon, Component>();
   for (const c of components) byArea.set(c.area, c);
   const to = (role: PathRole): Emit => (line, a) => add((a && byArea.get(a)) || owner(components, line[0]), role, false, line);
-  bodyLines(s.body, cfg, inset, w, origin, circles, to('support'));
+  // the body's lines start inside its innermost wall, the roof's and floor's half a line in
+  const branches = columns ? s.body.filter((a) => !columns.has(a)) : s.body;
+  bodyLines(branches, cfg, w / 2 + cfg.supportWalls * w, w, origin, circles, to('support'));
+  if (s.columnBody?.length) bodyLines(s.columnBody, cfg, w / 2 + cfg.supportColumnWalls * w, w, origin, circles, to('support'));
   const iface = w / (cfg.supportInterfaceDensity / 100);
   const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
   for (const [kind, role] of [[s.roof, 'support-roof'], [s.floor, 'support-floor']] as const) {

@@ -43,6 +43,11 @@ export interface SupportAreas {
   roof: ExPolygon[];
   /** Dense interface where support stands on the part (floor). */
   floor: ExPolygon[];
+  /**
+   * The pieces of `body` (the same objects) that are straight columns in tree support (under its pockets),
+   * printed as normal support's body is, with its walls (supportColumnWalls).
+   */
+  columnBody?: ExPolygon[];
   /** Body, roof and floor as the one area they were split from, when the pass has it (saves a union). */
   whole?: ExPolygon[];
   /**

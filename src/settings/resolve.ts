@@ -25,6 +25,8 @@ export interface Derived {
   supportBottomGapLayers: number;
   supportFloorLayerCount: number;
   supportWalls: number;
+  /** Walls round straight support columns (normal support's, and a tree's under its pockets). */
+  supportColumnWalls: number;
   /** Distance between tree-support tips, mm. */
   supportTreeTipSpacingMm: number;
   /** Raft base line width and spacing, interface line spacing, mm. */
@@ -217,6 +219,7 @@ export function resolveConfig(options: SliceOptions = {}): Config {
     supportBottomGapLayers: gapLayers(s.supportBottomZGap ?? s.supportZGap ?? s.layerHeight, s.layerHeight),
     supportFloorLayerCount: s.supportFloorLayers ?? s.supportInterfaceLayers,
     supportWalls: s.supportWallCount ?? (s.supportType === 'tree' ? 1 : 0),
+    supportColumnWalls: s.supportWallCount ?? 0,
     supportTreeTipSpacingMm: s.supportTreeTipSpacing ?? (s.supportInterfaceLayers > 0 ? TREE_TIP_SPACING_UNDER_ROOF_MM : TREE_TIP_SPACING_NO_ROOF_MM),
     raftBaseLineWidthMm: s.raftBaseLineWidth ?? 2 * s.nozzleDiameter,
     raftBaseLineSpacingMm: s.raftBaseLineSpacing ?? 2 * (s.raftBaseLineWidth ?? 2 * s.nozzleDiameter),
