@@ -13,7 +13,7 @@ import { printable, type ModelLayers } from './model-layers.js';
 /** Columns closer than this (mm) are merged into one support area. */
 export const SUPPORT_JOIN_MM = 2;
 /** Fresh overhang is widened by this many line widths, so thin slivers of it get a printable column. */
-const EXPAND_WIDTHS = 0.5;
+export const EXPAND_WIDTHS = 0.5;
 
 /** Support areas of every layer, top down; yields after each layer. */
 export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas[]> {

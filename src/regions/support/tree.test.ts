@@ -215,14 +215,18 @@ test('a slope stepping out less than half a line beyond what holds itself gets t
     const boxes: Box[] = [{ x: [-5, 5], y: [-5, 5], z: [0, 6] }];
     for (let k = 0; k < 15; k++) boxes.push({ x: [-5, 5 + (k + 1) * step], y: [-5, 5], z: [6 + 0.2 * k, 6 + 0.2 * (k + 1)] });
     const { layers } = supported(boxes, { supportType: 'tree' });
-    const roof = layers.reduce((s, l) => s + (l.support ? area(l.support.roof) : 0), 0) / 1e6;
+    // the first band stands right over the post's wall, where no tip that is to reach the bed has room: it
+    // gets a column beside the wall, with its roof, as normal support gives it (tree-pockets.ts)
+    const columns = layers.map((l) => (l.support?.columnBody ? area(l.support.columnBody) : 0));
+    const roof = layers.reduce((s, l, j) => s + (l.support && columns[j] === 0 ? area(l.support.roof) : 0), 0) / 1e6;
     const body = layers.reduce((s, l) => s + (l.support ? area(l.support.body) : 0), 0) / 1e6;
-    return { roof, body };
+    return { roof, body, columnOnBed: columns[0] / 1e6 };
   };
   // 50°: a layer holds itself 0.24 mm out; a 0.35 mm step leaves bands 0.11 mm wide, a 0.8 mm step 0.56 mm
   const steep = roofUnder(0.35);
   assert.ok(steep.body > 1, `tips under the steep slope: ${steep.body.toFixed(1)} mm² of branches`);
-  // what roof there is: the tops of tips right under the part (92 mm² when every band had its roof)
+  assert.ok(steep.columnOnBed > 1, `a column on the bed beside the post: ${steep.columnOnBed.toFixed(2)} mm²`);
+  // what roof there is off the column: the tops of tips right under the part (92 mm² when every band had its roof)
   assert.ok(steep.roof < 2, `no roof under bands a line cannot print: ${steep.roof.toFixed(2)} mm²`);
   const flat = roofUnder(0.8);
   assert.ok(flat.roof > 2 * 15 * 0.56 * 10, `a roof under the flatter slope's bands, two layers each: ${flat.roof.toFixed(1)} mm²`);

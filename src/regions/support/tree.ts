@@ -23,6 +23,7 @@ import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js'
 import { VERTEX_ROUNDING_UM, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
+import { findPockets, pocketAreas } from './tree-pockets.js';
 import { radiusClasses, TreeVolumes, type Keep } from './tree-volumes.js';
 
 /** A tip widens at this angle (of its sides from vertical) until it has the branch diameter: thin tips merge before they grow thick. */
@@ -59,8 +60,10 @@ const rad = (deg: number) => (deg * Math.PI) / 180;
 export interface TreePlan {
   /** nodes[j]: the branches' cross-sections on layer j (dead ones carried tips that could not be held). */
   nodes: TreeNode[][];
-  /** The overhang each layer must hold. */
+  /** The overhang each layer's tree must hold (pockets left out). */
   overhangs: ExPolygon[][];
+  /** Per layer, the columns under pockets (tree-pockets.ts). */
+  pockets: ExPolygon[][];
   vol: TreeVolumes;
   rules: TreeRules;
 }
@@ -83,18 +86,19 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
   for (let j = 0; j < n; j++) nodes.push([]);
 
   // the overhang each layer must hold; its tips start under the top gap and the roof
-  const overhangs: ExPolygon[][] = [];
+  const all: ExPolygon[][] = [];
   let highest = -1;
   for (let m = 0; m < n; m++) {
-    overhangs.push(model.overhang(m));
-    if (overhangs[m].length) highest = m;
+    all.push(model.overhang(m));
+    if (all[m].length) highest = m;
   }
-  if (highest < 0) return { nodes, overhangs, vol, rules };
+  if (highest < 0) return { nodes, overhangs: all, pockets: all.map(() => []), vol, rules };
   const tipTop = highest - top - roofLayers - 1;
   const roofTop = Math.min(n - 1, highest - 1 - top);
   yield* vol.build(Math.max(roofTop, tipTop), tipTop);
-
   const spacing = cfg.supportTreeTipSpacingMm * UM_PER_MM;
+  const { overhangs, columns: pockets } = yield* findPockets({ model, collision: (j) => vol.collision(j), avoidance: (j) => vol.avoidance(j), tipRUm: rules.tipR }, all);
+
   for (let j = tipTop; j >= 0; j--) {
     const { lower, stuck } = j < tipTop ? yield* descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
     for (const i of stuck) kill(nodes, j + 1, i);
@@ -104,14 +108,14 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
     vol.release(j);
     yield;
   }
-  return { nodes, overhangs, vol, rules };
+  return { nodes, overhangs, pockets, vol, rules };
 }
 
 /** Each layer's support areas from the plan, from the bed up; yields per layer. */
 export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, SupportAreas[]> {
   const cfg = model.cfg;
   const n = model.count;
-  const { nodes, overhangs, vol, rules } = plan;
+  const { nodes, overhangs, pockets, vol, rules } = plan;
   const top = cfg.supportTopGapLayers;
   const roofLayers = cfg.supportInterfaceLayers;
   const bottom = cfg.supportBottomGapLayers;
@@ -128,6 +132,7 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     for (let m = j + 1 + top; m <= j + top + roofLayers && m < n; m++) for (const p of overhangs[m]) roofWanted.push(p);
     if (discs.length === 0 && roofWanted.length === 0) {
       below = [];
+      out[j] = pocketAreas(model, j, pockets[j], []) ?? out[j];
       continue;
     }
     const collision = vol.collision(j);
@@ -143,10 +148,24 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     const gapIndex = () => model.indexBetween(j, -bottom, -1);
     const { areas: s, circles } = yield* drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, gapIndex, widthUm: w });
     below = s;
-    out[j] = { ...(yield* splitNear(model, j, s, circles)), whole: s, circles };
+    out[j] = withPockets({ ...(yield* splitNear(model, j, s, circles)), whole: s, circles }, pocketAreas(model, j, pockets[j], s));
     yield;
   }
   return out;
+}
+
+/** A layer's tree areas and its pockets' columns (off the tree's areas) together. */
+function withPockets(tree: SupportAreas, p: SupportAreas | null): SupportAreas {
+  if (!p) return tree;
+  const n = p.whole?.length ?? 0;
+  return {
+    body: [...tree.body, ...p.body],
+    roof: [...tree.roof, ...p.roof],
+    floor: [...tree.floor, ...p.floor],
+    columnBody: p.body,
+    whole: [...(tree.whole ?? []), ...(p.whole ?? [])],
+    circles: [...(tree.circles ?? []), ...new Array<null>(n).fill(null)],
+  };
 }
 
 /** The cross-sections of a layer's live branches (a plain function: a generator's own loop runs unoptimised). */
