@@ -48,7 +48,13 @@ for (const floor of [8, 6.5]) {
   });
 }
 
-test('with build-plate placement, a recess gets no column (none may stand on the part)', () => {
-  const { layers } = supported(recessed(8), { supportType: 'tree', supportPlacement: 'buildPlate' });
-  for (let j = 0; j < layers.length; j++) assert.equal(layers[j].support?.columnBody?.length ?? 0, 0, `a column on layer ${j}`);
-});
+for (const [why, options] of [
+  ['with build-plate placement (none may stand on the part)', { supportPlacement: 'buildPlate' }],
+  ['with no roof (the tips hold the part themselves)', { supportInterfaceLayers: 0 }],
+] as const) {
+  test(`${why}, a recess gets no column`, () => {
+    const { layers } = supported(recessed(8), { supportType: 'tree', ...options });
+    for (let j = 0; j < layers.length; j++) assert.equal(layers[j].support?.columnBody?.length ?? 0, 0, `a column on layer ${j}`);
+    assert.ok(layers.some((l) => l.support), 'no support at all');
+  });
+}

@@ -7,6 +7,7 @@
  * - pieces whose column ends within POCKET_MAX_MM below them (it stands on the part, or the part closes in
  *   on it): a branch there is no shorter than the column and cannot be thinner than a tip.
  * In 'buildPlate' placement there are none: a column there must reach the bed, which the tree does better.
+ * Nor with no roof (supportInterfaceLayers 0), where the tips hold the part themselves, 1.5 mm apart.
  */
 import { area, boundsOf, difference, intersection, offset, union } from '../../geometry/clip.js';
 import { UM_PER_MM, type Bounds, type ExPolygon } from '../../geometry/types.js';
@@ -40,15 +41,16 @@ export interface PocketModel {
 }
 
 /**
- * Split every layer's overhang into pockets and the rest (all of it the rest in 'buildPlate' placement);
- * yields per layer with overhang.
+ * Split every layer's overhang into pockets and the rest (all of it the rest in 'buildPlate' placement or with
+ * no roof); yields per layer with overhang.
  */
 export function* findPockets(src: PocketModel, overhangs: readonly ExPolygon[][]): Generator<void, Pockets> {
   const { model } = src;
   const n = model.count;
   const columns: ExPolygon[][] = [];
   for (let j = 0; j < n; j++) columns.push([]);
-  if (model.cfg.supportPlacement !== 'everywhere') return { overhangs: overhangs.slice(), columns };
+  // with no roof the tips hold the part themselves, touching it: a column's sparse lines would not
+  if (model.cfg.supportPlacement !== 'everywhere' || model.cfg.supportInterfaceLayers === 0) return { overhangs: overhangs.slice(), columns };
   const gap = model.cfg.supportTopGapLayers;
   const kept: ExPolygon[][] = [];
   for (let m = 0; m < n; m++) {
