@@ -10,11 +10,12 @@
  * Nor with no roof (supportInterfaceLayers 0), where the tips hold the part themselves, 1.5 mm apart.
  */
 import { area, boundsOf, difference, intersection, offset, union } from '../../geometry/clip.js';
-import { UM_PER_MM, type Bounds, type ExPolygon } from '../../geometry/types.js';
+import { UM_PER_MM, type Bounds, type ExPolygon, type Pt } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import { printable, type ModelLayers } from './model-layers.js';
 import { EXPAND_WIDTHS } from './normal.js';
 import { meetsAny } from './tree-draw.js';
+import type { AreaIndex } from '../../geometry/area-index.js';
 
 /** An overhang piece whose column ends within this height (mm) below it is a pocket. */
 export const POCKET_MAX_MM = 4;
@@ -34,6 +35,8 @@ export interface PocketModel {
   model: ModelLayers;
   /** Where no support may be on layer j. */
   collision: (j: number) => ExPolygon[];
+  /** collision(j) as a point index. */
+  collisionIndex: (j: number) => AreaIndex;
   /** Where a tip's centre may not be on layer j if it is to reach the bed. */
   avoidance: (j: number) => ExPolygon[];
   /** A tip's radius, µm. */
@@ -95,6 +98,7 @@ export function pocketColumn(src: PocketModel, piece: ExPolygon, m: number): ExP
   else while (lowest > 0 && zTop - model.layers[lowest - 1].z * UM_PER_MM <= POCKET_MAX_MM * UM_PER_MM) lowest--;
   if (!roomless && !partNear(model, box, top, lowest - 1 - bottom)) return null;
   let s: ExPolygon[] = offset([piece], EXPAND_WIDTHS * w);
+  if (!roomless && survives(src, s, top, lowest)) return null;
   const out: ExPolygon[][] = [];
   for (let j = top; j >= lowest; j--) {
     const blocked = collision(j);
@@ -102,11 +106,45 @@ export function pocketColumn(src: PocketModel, piece: ExPolygon, m: number): ExP
     // the bottom Z gap: no support in the layers right above the part
     const under = bottom > 0 && s.length ? model.sectionsBetween(j, -bottom, -1) : [];
     if (under.length) s = difference(s, under);
-    if (s.length === 0) return out;
-    out.push(printable(s, w));
+    if (s.length === 0) return out.map((a) => printable(a, w));
+    out.push(s);
   }
   // a column that reaches the bed is a pocket only when no tip from under the piece could
-  return roomless ? out : null;
+  return roomless ? out.map((a) => printable(a, w)) : null;
+}
+
+/** At most this many corners of a column's outline (and the midpoints of the edges after them) are tried by `survives`. */
+const SURVIVOR_SAMPLES = 16;
+
+/**
+ * Whether a corner or edge midpoint of the column (at its top) stays free of the collision and the part under it on
+ * every layer from `top` down to `lowest`: then the column cannot end there (what it loses it loses for good),
+ * and the booleans need not be run to know it.
+ */
+function survives(src: PocketModel, column: readonly ExPolygon[], top: number, lowest: number): boolean {
+  const { model } = src;
+  const bottom = model.cfg.supportBottomGapLayers;
+  for (const a of column) if (cornerSurvives(src, a.outer, top, lowest, bottom)) return true;
+  return false;
+}
+
+/** Whether a corner or an edge's midpoint of `ring` survives (see survives). */
+function cornerSurvives(src: PocketModel, ring: readonly Pt[], top: number, lowest: number, bottom: number): boolean {
+  const step = Math.max(1, Math.floor(ring.length / SURVIVOR_SAMPLES));
+  for (let i = 0; i < ring.length; i += step) {
+    const a = ring[i], b = ring[(i + 1) % ring.length];
+    if (pointSurvives(src, a.x, a.y, top, lowest, bottom) || pointSurvives(src, (a.x + b.x) / 2, (a.y + b.y) / 2, top, lowest, bottom)) return true;
+  }
+  return false;
+}
+
+function pointSurvives(src: PocketModel, x: number, y: number, top: number, lowest: number, bottom: number): boolean {
+  const { model } = src;
+  for (let j = top; j >= lowest; j--) {
+    if (src.collisionIndex(j).contains(x, y)) return false;
+    for (let k = Math.max(0, j - bottom); k < j; k++) if (model.sectionIndex(k).contains(x, y)) return false;
+  }
+  return true;
 }
 
 /** Whether any layer from `from` down to `to` has part within the bounds `box`. */

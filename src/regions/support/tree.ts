@@ -97,7 +97,7 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
   const roofTop = Math.min(n - 1, highest - 1 - top);
   yield* vol.build(Math.max(roofTop, tipTop), tipTop);
   const spacing = cfg.supportTreeTipSpacingMm * UM_PER_MM;
-  const { overhangs, columns: pockets } = yield* findPockets({ model, collision: (j) => vol.collision(j), avoidance: (j) => vol.avoidance(j), tipRUm: rules.tipR }, all);
+  const { overhangs, columns: pockets } = yield* findPockets({ model, collision: (j) => vol.collision(j), collisionIndex: (j) => vol.partIndex(j), avoidance: (j) => vol.avoidance(j), tipRUm: rules.tipR }, all);
 
   for (let j = tipTop; j >= 0; j--) {
     const { lower, stuck } = j < tipTop ? yield* descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
