@@ -184,15 +184,15 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
     }
   }
   // straight columns (a tree's pockets) have the walls normal support has, the rest the support's own
-  const columns = s.columnBody?.length ? new Set(s.columnBody) : null;
-  const walled = columns ? s.body.filter((a) => !circles.has(a) && !columns.has(a)) : s.body.filter((a) => !circles.has(a));
+  const columns = new Set(s.columnBody ?? []);
+  const walled = s.body.filter((a) => !circles.has(a) && !columns.has(a));
   addWalls(walled, cfg.supportWalls, w, plain);
   if (s.columnBody?.length) addWalls(s.columnBody, cfg.supportColumnWalls, w, plain);
   const byArea = new Map<ExPolygon, Component>();
   for (const c of components) byArea.set(c.area, c);
   const to = (role: PathRole): Emit => (line, a) => add((a && byArea.get(a)) || owner(components, line[0]), role, false, line);
   // the body's lines start inside its innermost wall, the roof's and floor's half a line in
-  const branches = columns ? s.body.filter((a) => !columns.has(a)) : s.body;
+  const branches = columns.size ? s.body.filter((a) => !columns.has(a)) : s.body;
   bodyLines(branches, cfg, w / 2 + cfg.supportWalls * w, w, origin, circles, to('support'));
   if (s.columnBody?.length) bodyLines(s.columnBody, cfg, w / 2 + cfg.supportColumnWalls * w, w, origin, circles, to('support'));
   const iface = w / (cfg.supportInterfaceDensity / 100);

@@ -9,7 +9,7 @@
  * In 'buildPlate' placement there are none: a column there must reach the bed, which the tree does better.
  * Nor with no roof (supportInterfaceLayers 0), where the tips hold the part themselves, 1.5 mm apart.
  */
-import { area, boundsOf, difference, intersection, offset, union } from '../../geometry/clip.js';
+import { area, boundsOf, difference, offset, union } from '../../geometry/clip.js';
 import { UM_PER_MM, type Bounds, type ExPolygon, type Pt } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import { printable, type ModelLayers } from './model-layers.js';
@@ -155,20 +155,9 @@ function partNear(model: ModelLayers, box: Bounds, from: number, to: number): bo
 
 /** Whether a tip under `piece` on layer j may reach the bed: its centre outside the avoidance. */
 function hasRoom(src: PocketModel, piece: ExPolygon, j: number): boolean {
-  const r = src.tipRUm;
-  const b = boundsOf([piece]);
-  const reach = r;
-  const window: ExPolygon = {
-    outer: [
-      { x: b.minX - reach, y: b.minY - reach }, { x: b.maxX + reach, y: b.minY - reach },
-      { x: b.maxX + reach, y: b.maxY + reach }, { x: b.minX - reach, y: b.maxY + reach },
-    ],
-    holes: [],
-  };
   const avoid = src.avoidance(j);
-  const near = avoid.length ? intersection(avoid, [window]) : [];
-  const free = near.length ? difference([piece], near) : [piece];
-  return area(free) >= (ROOM_SIDE_TIP_RADII * r) ** 2;
+  const free = avoid.length ? difference([piece], avoid) : [piece];
+  return area(free) >= (ROOM_SIDE_TIP_RADII * src.tipRUm) ** 2;
 }
 
 /**
