@@ -57,7 +57,8 @@ test('the order is the plain nearest-first order (ties: lower item, then lower c
   };
   let seed = 7;
   const rand = (n: number) => ((seed = (seed * 1103515245 + 12345) % 2 ** 31) % n);
-  for (const count of [1, 2, 5, 11, 12, 13, 30, 80]) {
+  // 400 and 1500: the grid is made again of the rest several times as it thins out
+  for (const count of [1, 2, 5, 11, 12, 13, 30, 80, 400, 1500]) {
     // coarse coordinates, so equal distances (ties) happen
     const items: Pt[][] = [];
     for (let i = 0; i < count; i++) items.push([{ x: rand(20) * 100, y: rand(20) * 100 }, { x: rand(20) * 100, y: rand(20) * 100 }]);

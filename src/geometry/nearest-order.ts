@@ -9,6 +9,8 @@ import type { Polyline, Pt } from './types.js';
 
 /** Up to this many entry points are scanned rather than put in a grid. */
 const SCAN_BELOW = 24;
+/** The grid is made again of the entries still to be printed when they are fewer than its own over this. */
+const REGRID_SHARE = 4;
 
 /**
  * Entry points bucketed by cell in flat arrays: cell c's entries are items[start[c] … start[c] + live[c]),
@@ -25,10 +27,12 @@ interface Grid {
   items: Int32Array;
 }
 
-function buildGrid(ends: Float64Array, count: number): Grid {
+/** A grid of the entries `ids` (indices into `ends`, two coordinates each). */
+function buildGrid(ends: Float64Array, ids: Int32Array): Grid {
+  const count = ids.length;
   let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-  for (let i = 0; i < count; i++) {
-    const x = ends[2 * i], y = ends[2 * i + 1];
+  for (let k = 0; k < count; k++) {
+    const x = ends[2 * ids[k]], y = ends[2 * ids[k] + 1];
     if (x < minX) minX = x;
     if (y < minY) minY = y;
     if (x > maxX) maxX = x;
@@ -40,8 +44,10 @@ function buildGrid(ends: Float64Array, count: number): Grid {
   const cols = Math.floor((maxX - minX) / cell) + 1;
   const rows = Math.floor((maxY - minY) / cell) + 1;
   const cellOf = new Int32Array(count);
-  for (let i = 0; i < count; i++) cellOf[i] = Math.floor((ends[2 * i + 1] - minY) / cell) * cols + Math.floor((ends[2 * i] - minX) / cell);
+  for (let k = 0; k < count; k++) cellOf[k] = Math.floor((ends[2 * ids[k] + 1] - minY) / cell) * cols + Math.floor((ends[2 * ids[k]] - minX) / cell);
   const { start, items } = bucketByCell(cellOf, cols * rows);
+  // bucketed by position in `ids`: back to entry numbers, still ascending within a cell
+  for (let k = 0; k < count; k++) items[k] = ids[items[k]];
   // every entry live at first
   const live = new Int32Array(cols * rows);
   for (let c = 0; c < cols * rows; c++) live[c] = start[c + 1] - start[c];
@@ -138,8 +144,22 @@ export function orderNearest(
     return out;
   }
   const ends = Float64Array.from(pts);
-  const grid = buildGrid(ends, n);
+  const all = new Int32Array(n);
+  for (let e = 0; e < n; e++) all[e] = e;
+  let grid = buildGrid(ends, all);
+  // entries per item, and entries whose item is still to be printed: when most of the grid's entries are
+  // used, its rings are mostly empty cells, and a grid of the rest is made (the search is exact either way)
+  const per = new Int32Array(count);
+  for (let e = 0; e < n; e++) per[owner[e]]++;
+  let liveEntries = n, gridEntries = n;
   for (let done = 0; done < count; done++) {
+    if (liveEntries * REGRID_SHARE < gridEntries && liveEntries >= SCAN_BELOW) {
+      const rest = new Int32Array(liveEntries);
+      let k = 0;
+      for (let e = 0; e < n; e++) if (!used[owner[e]]) rest[k++] = e;
+      grid = buildGrid(ends, rest);
+      gridEntries = liveEntries;
+    }
     const cx = Math.floor((at.x - grid.minX) / grid.cell);
     const cy = Math.floor((at.y - grid.minY) / grid.cell);
     found = -1;
@@ -167,6 +187,7 @@ export function orderNearest(
     const best = found;
     const item = owner[best];
     used[item] = 1;
+    liveEntries -= per[item];
     out.push([item, which[best]]);
     at = endOf(item, which[best]);
   }
