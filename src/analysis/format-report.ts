@@ -99,6 +99,7 @@ export function formatSupport(u: SupportSummary): string[] {
       (u.insideWorstLayer !== null ? ` (worst layer ${u.insideWorstLayer}: ${mm2(u.insideWorstMm2)})` : '') +
       ` of ${mm2(u.supportAreaMm2)} support on ${u.supportLayers} layers`,
     `  top Z gap: ${gap(u.topGap)}`,
+    ...(u.topGapOverFirstLayer.areaMm2 > 0 ? [`  top Z gap under the second layer (no room for one over the first): ${gap(u.topGapOverFirstLayer)}`] : []),
     `  bottom Z gap: ${gap(u.bottomGap)}`,
     `  volume: support ${v.supportMm3.toFixed(0)} mm³ + interface ${v.interfaceMm3.toFixed(0)} mm³ = ` +
       `${pct(v.supportShare)} of the model's ${v.modelMm3.toFixed(0)} mm³; raft ${v.raftMm3.toFixed(0)} mm³` +

@@ -103,6 +103,8 @@ export interface SupportSummary {
   supportLayers: number;
   /** From the top of support to the model above it, and from the model to support standing on it. */
   topGap: GapStats;
+  /** The second model layer's top gap (over the first layer, where there is no room for one), not in topGap. */
+  topGapOverFirstLayer: GapStats;
   bottomGap: GapStats;
   /** Extruded volumes from E (mm³), over every layer, and support (body + interface) and raft over the model's. */
   volume: {

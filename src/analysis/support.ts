@@ -10,7 +10,9 @@
  *   and outside the interior of the model layer below (sparse infill under skin is the part's own design, judged
  *   by the infill check);
  * - inside: support and interface beads deeper than half a line width inside the model's section at their layer;
- * - Z gaps: from the top of support to the overhang above it, and from the model to support standing on it.
+ * - Z gaps: from the top of support to the overhang above it, and from the model to support standing on it; the
+ *   second model layer's top gap apart (over the first layer there is no room for a gap: support on the first
+ *   layer holds the second layer's overhang with none, as PrusaSlicer's and CuraEngine's do).
  * The first model layer rests on the bed (or on the raft, which then must lie under it).
  */
 import type { GcodeLayer } from './gcode-types.js';
@@ -93,6 +95,8 @@ export class SupportAnalysis {
   private readonly worstOverhang: WorstOverhang[] = [];
   private readonly worstNothing: WorstNothing[] = [];
   private readonly topGaps: GapMeter;
+  /** Top gaps under the second model layer, over the first: there is no room there for a gap. */
+  private readonly secondLayerGaps: GapMeter;
   private readonly bottomGaps: GapMeter;
 
   constructor(
@@ -115,6 +119,7 @@ export class SupportAnalysis {
       supportHeight: o.supportHeight,
     });
     this.topGaps = new GapMeter(o.layerHeight, this.cell * this.cell);
+    this.secondLayerGaps = new GapMeter(o.layerHeight, this.cell * this.cell);
     this.bottomGaps = new GapMeter(o.layerHeight, this.cell * this.cell);
   }
 
@@ -212,7 +217,8 @@ export class SupportAnalysis {
         let hit = 0;
         for (const q of cells) if (within(inWindow(this.grid, win, q), cellGrow)) hit++;
         out.overhangSupportedMm2 = hit * c2;
-        measureTopGap(this.topGaps, this.layers, this.rasters, l, zBottom, cells, o.layerHeight);
+        const second = this.z.firstModelLayer !== null && l === this.z.firstModelLayer + 1;
+        measureTopGap(second ? this.secondLayerGaps : this.topGaps, this.layers, this.rasters, l, zBottom, cells, o.layerHeight);
       }
       let missing = 0;
       for (const q of candidates) if (!within(inWindow(this.grid, win, q), reachGrow)) missing++;
@@ -255,6 +261,7 @@ export class SupportAnalysis {
       supportAreaMm2: this.supportArea,
       supportLayers: this.supportLayers,
       topGap: this.topGaps.stats(),
+      topGapOverFirstLayer: this.secondLayerGaps.stats(),
       bottomGap: this.bottomGaps.stats(),
       volume,
     };

@@ -91,3 +91,22 @@ test('short bridges are left unsupported when supportSkipBridges allows their sp
   drain(supportPass(c, short));
   assert.ok(c[10].support !== null, 'but supported when the setting is shorter than the span');
 });
+
+test('the overhang of the second layer (a part whose first layer is smaller) gets support on the first, for both kinds, off the part', () => {
+  // a block whose first layer is a 10 mm square and whose next layers are 14 mm: a 2 mm ledge one layer up
+  const small = square(3_000, 3_000, 10_000);
+  const big = square(1_000, 1_000, 14_000);
+  const at = (j: number) => (j === 0 ? [small] : j < 20 ? [big] : []);
+  for (const supportType of ['normal', 'tree'] as const) {
+    const cfg = resolveConfig({ supportEnabled: true, supportType });
+    const layers = layersOf(20, at, cfg);
+    assert.ok(area(layers[1].overhang) > 60e6, 'the ledge is overhang');
+    drain(supportPass(layers, cfg));
+    const s = all(layers[0]);
+    // under the ledge, from half a line off the first layer out to its edge: the zero Z gap the first layer allows
+    const ledge = difference([big], offset([small], 200));
+    assert.ok(area(intersection(s, ledge)) > 0.95 * area(ledge), `${supportType}: ledge held ${(area(intersection(s, ledge)) / 1e6).toFixed(1)} of ${(area(ledge) / 1e6).toFixed(1)} mm²`);
+    assert.equal(area(intersection(s, offset([small], 190))), 0, `${supportType}: support keeps off the first layer`);
+    for (let j = 1; j < 20; j++) assert.equal(layers[j].support, null, `${supportType}: nothing above the first layer (layer ${j})`);
+  }
+});

@@ -27,7 +27,8 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
   const join = (SUPPORT_JOIN_MM * UM_PER_MM) / 2;
   let carried: ExPolygon[] = [];
   for (let j = n - 1; j >= 0; j--) {
-    const rawFresh = model.overhang(j + 1 + top);
+    // the first layer also holds the overhang within the top Z gap over it, with no gap (there is no room for one)
+    const rawFresh = j > 0 ? model.overhang(j + 1 + top) : [...model.gapOverhang(), ...model.overhang(1 + top)];
     const fresh = rawFresh.length && EXPAND_WIDTHS > 0 ? offset(rawFresh, EXPAND_WIDTHS * w) : rawFresh;
     // merging columns closer than the join distance also unions the fresh overhang into them
     let s = fresh.length ? closing(carried.length ? [...carried, ...fresh] : fresh, join) : carried;

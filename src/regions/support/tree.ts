@@ -129,7 +129,8 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
   for (let j = 0; j < n; j++) {
     const discs = discsOf(nodes[j], rules);
     const roofWanted: ExPolygon[] = [];
-    for (let m = j + 1 + top; m <= j + top + roofLayers && m < n; m++) for (const p of overhangs[m]) roofWanted.push(p);
+    // the first layer also holds the overhang within the top Z gap over it, with no gap (ModelLayers.gapOverhang)
+    for (let m = j === 0 ? 1 : j + 1 + top; m <= j + top + roofLayers && m < n; m++) for (const p of overhangs[m]) roofWanted.push(p);
     if (discs.length === 0 && roofWanted.length === 0) {
       below = [];
       out[j] = pocketAreas(model, j, pockets[j], []) ?? out[j];
@@ -139,7 +140,8 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     // steps of the overhang narrower than ROOF_MIN_STEP_WIDTHS left to the tips (an opening), the rest grown a
     // little, so that the narrow steps of a sloping overhang make a roof a line can print: the opening's growth
     // and this one in one offset
-    const open = (ROOF_MIN_STEP_WIDTHS * w) / 2;
+    // (not on the first layer, under which no tip stands)
+    const open = j === 0 ? 0 : (ROOF_MIN_STEP_WIDTHS * w) / 2;
     const steps = roofWanted.length ? offset(union(roofWanted), -open) : [];
     const roof = steps.length ? cutAway(offset(steps, open + ROOF_GROW_WIDTHS * w), collision) : [];
     // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
