@@ -26,6 +26,7 @@ export class ModelLayers {
   readonly #boxes = new Map<number, Bounds[]>();
   /** Union of the sections of layers 0..j (build-plate placement), filled on demand bottom-up. */
   readonly #shadow: ExPolygon[][] = [];
+  /** gapOverhang(), made on first use. */
   #gapOver: ExPolygon[] | null = null;
 
   constructor(layers: readonly LayerRegions[], cfg: Config) {
@@ -99,9 +100,8 @@ export class ModelLayers {
     if (model.length === 0) return [];
     const xy = this.cfg.supportXYGap * UM_PER_MM;
     const near = OVERHANG_XY_WIDTHS * this.widthUm;
-    // on the first layer, the part beside the overhang of the layers within the top Z gap over it, which
-    // support holds from the first layer (see lowestOverhang in normal.ts)
-    const over = j === 0 ? this.#gapOverhangGrown(xy) : this.layers[j].overhang;
+    // on the first layer, the part within the XY gap of the overhang that support holds from there (gapOverhang)
+    const over = j > 0 ? this.layers[j].overhang : offset(this.gapOverhang(), xy);
     if (over.length === 0 || xy <= near) return offset(model, Math.max(xy, near));
     const held = difference(model, over);
     return union(offset(held, xy), offset(model, near));
@@ -118,11 +118,6 @@ export class ModelLayers {
       for (let m = 1; m <= this.cfg.supportTopGapLayers; m++) for (const p of this.overhang(m)) this.#gapOver.push(p);
     }
     return this.#gapOver;
-  }
-
-  #gapOverhangGrown(xy: number): ExPolygon[] {
-    const over = this.gapOverhang();
-    return over.length ? offset(over, xy) : over;
   }
 
   /** The part's shadow: every section from layer 0 to j, merged. */

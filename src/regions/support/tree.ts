@@ -140,7 +140,7 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     // steps of the overhang narrower than ROOF_MIN_STEP_WIDTHS left to the tips (an opening), the rest grown a
     // little, so that the narrow steps of a sloping overhang make a roof a line can print: the opening's growth
     // and this one in one offset
-    // (not on the first layer, under which no tip stands)
+    // (none on the first layer: no tip stands under the overhang whose roof is there)
     const open = j === 0 ? 0 : (ROOF_MIN_STEP_WIDTHS * w) / 2;
     const steps = roofWanted.length ? offset(union(roofWanted), -open) : [];
     const roof = steps.length ? cutAway(offset(steps, open + ROOF_GROW_WIDTHS * w), collision) : [];
