@@ -19,7 +19,7 @@ import { resolveConfig } from '../settings/resolve.js';
 import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey, type SettingNeed } from '../settings/schema.js';
 import { COMMANDS, FLAGS, kebab, SLICING, type Command } from './args.js';
 import { main } from './main.js';
-import { blockWithHole, overhangPart } from './test-model.js';
+import { blockWithHole, overhangPart, thinFeatures } from './test-model.js';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const DIR = mkdtempSync(join(tmpdir(), 'strata-flags-'));
@@ -32,6 +32,8 @@ const OFF_CENTRE = join(DIR, 'off-centre.stl');
 writeFileSync(OFF_CENTRE, blockWithHole(14, 10.4, 3.5, 64, [40, 30]));
 const TUBE = join(DIR, 'tube.stl');
 writeFileSync(TUBE, blockWithHole(14, 10.4, 6, 8, [0, 0], true));
+const THIN = join(DIR, 'thin.stl');
+writeFileSync(THIN, thinFeatures());
 const OVERHANGS = join(DIR, 'overhangs.stl');
 writeFileSync(OVERHANGS, overhangPart());
 
@@ -68,6 +70,7 @@ const NEEDS = {
   'several-models': { args: [], models: [MODEL, MODEL2] },
   'off-centre-model': { args: ['--no-center'], models: [OFF_CENTRE] },
   'thin-walls': { args: [], models: [TUBE] },
+  'thin-features': { args: [], models: [THIN] },
   overhangs: { args: [], models: [OVERHANGS] },
   'custom-infill': { args: ['--infill-pattern', 'checker'], models: [MODEL] },
   'custom-image-infill': { args: ['--infill-pattern', 'example-image'], models: [MODEL] },

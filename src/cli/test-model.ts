@@ -94,3 +94,23 @@ export function overhangPart(): Uint8Array {
     ...slopeTris(0, 0, 6, 2, 6), // slope
   ]);
 }
+
+/**
+ * Thin features, as binary STL: standing fins 8 mm long and 3 mm tall, 0.25 to 1.4 mm thick, 3 mm apart,
+ * and a wedge tapering from 2 mm to nothing over 10 mm (for the variable-width wall settings).
+ */
+export function thinFeatures(): Uint8Array {
+  const tris: Tri[] = [];
+  let x = 0;
+  for (const t of [0.25, 0.35, 0.5, 0.7, 1.0, 1.4]) {
+    tris.push(...boxTris(x, 0, 0, x + t, 8, 3));
+    x += t + 3;
+  }
+  // the wedge: a triangle prism from (x, 0)–(x + 2, 0) to its tip at (x + 1, 10)
+  const a = [x, 0], b = [x + 2, 0], c = [x + 1, 10];
+  const top = (p: number[]) => [p[0], p[1], 3];
+  const bot = (p: number[]) => [p[0], p[1], 0];
+  tris.push([...bot(a), ...bot(c), ...bot(b)], [...top(a), ...top(b), ...top(c)]);
+  for (const [p, q] of [[a, b], [b, c], [c, a]]) tris.push([...bot(p), ...bot(q), ...top(q)], [...bot(p), ...top(q), ...top(p)]);
+  return binaryStl(tris);
+}

@@ -173,6 +173,18 @@ export class MoveWriter implements MoveSink {
     this.out.endLine();
   }
 
+  extrudeZ(x: number, y: number, z: number, _length: number, filament: number, speed: number): void {
+    const ux = Math.round(x);
+    const uy = Math.round(y);
+    this.out.text('G1');
+    this.feed(speed);
+    if (ux !== this.x || uy !== this.y) this.xy(ux, uy);
+    this.out.text(' Z');
+    this.out.fixed(Math.round(z * POSITION_SCALE), POSITION_SCALE, POSITION_DECIMALS);
+    this.e(filament);
+    this.out.endLine();
+  }
+
   travel(x: number, y: number, _length: number, speed: number): void {
     const ux = Math.round(x);
     const uy = Math.round(y);

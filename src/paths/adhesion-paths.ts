@@ -9,6 +9,7 @@ import { adhesionLoops } from '../regions/adhesion.js';
 import type { RaftArea } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { LayerZ } from '../slice/types.js';
+import { makeEntry } from './entry.js';
 import type { PathGroup } from './types.js';
 
 /**
@@ -21,7 +22,7 @@ export function skirtOrBrim(islands: readonly ExPolygon[], support: readonly ExP
   const loops = adhesionLoops(around, cfg, widthUm);
   if (loops.length === 0) return [];
   const role = cfg.adhesionType === 'brim' ? 'brim' : 'skirt';
-  return [{ kind: 'adhesion', entries: [{ role, closed: true, paths: loops, width: widthUm / UM_PER_MM }] }];
+  return [{ kind: 'adhesion', entries: [makeEntry(cfg, role, true, loops, widthUm / UM_PER_MM)] }];
 }
 
 /** The paths of one raft layer. */
@@ -53,7 +54,7 @@ export function raftGroups(raft: RaftArea, cfg: Config, layer: LayerZ, origin: P
   const groups: PathGroup[] = [];
   for (const area of raft.area) {
     const lines = solidFill([area], angle, Math.round(spacing * UM_PER_MM), origin);
-    if (lines.length) groups.push({ kind: 'adhesion', area, entries: [{ role, closed: false, paths: lines, width }] });
+    if (lines.length) groups.push({ kind: 'adhesion', area, entries: [makeEntry(cfg, role, false, lines, width)] });
   }
   return groups;
 }

@@ -4,18 +4,18 @@
  * the pattern. Walls over air and skin over air are flagged so the planner slows them / prints them as bridges.
  */
 import { difference, flatten, offset } from '../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
+import { UM_PER_MM, type ExPolygon, type Polygon } from '../geometry/types.js';
 import { generateInfill, solidFill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
 import { allSkin } from '../regions/skin-areas.js';
+import type { GapLoop } from '../regions/gap-loops.js';
 import type { IslandRegions } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { LayerZ } from '../slice/types.js';
-import { flagOverAir, indexArea } from './over-air.js';
-import { overAirMatters } from '../plan/print-order.js';
-import type { PathEntry, PathGroup, PathRole } from './types.js';
+import { makeEntry } from './entry.js';
+import type { PathEntry, PathGroup } from './types.js';
 
 export interface IslandContext {
   cfg: Config;
@@ -28,28 +28,6 @@ export interface IslandContext {
   custom?: CustomInfillGenerator;
   /** Area of the layer below that support holds up (its bottom skin there is not a bridge), µm. */
   supportBelow: readonly ExPolygon[];
-}
-
-/** Entry of closed or open paths, with over-air flags where an area over air is given. */
-function entry(cfg: Config, role: PathRole, closed: boolean, paths: Pt[][], width: number | number[], overAir: readonly ExPolygon[] | null, wall?: number): PathEntry {
-  const e: PathEntry = { role, closed, paths, width };
-  if (wall !== undefined) e.wall = wall;
-  if (overAir && overAir.length && paths.length && overAirMatters(role, cfg)) {
-    const idx = indexArea(overAir);
-    let flags: (Uint8Array | null)[] | null = null;
-    for (let k = 0; k < paths.length; k++) {
-      const f = flagOverAir(paths[k], closed, idx);
-      if (!f) continue;
-      if (!flags) {
-        flags = new Array(paths.length).fill(null);
-        e.paths = paths = paths.slice(); // the regions' own arrays stay as they are
-      }
-      paths[k] = f.points;
-      flags[k] = f.flags;
-    }
-    if (flags) e.overAir = flags;
-  }
-  return e;
 }
 
 /** The skin of the island, as skin-wall, skin and skin-gap entries. */
@@ -78,10 +56,16 @@ function skinEntries(island: IslandRegions, ctx: IslandContext, bridgeArea: read
   const gaps = skinGapFill(island.exposed, skinWalls, lines, w);
   const out: PathEntry[] = [];
   const air = bridgeArea.length ? bridgeArea : null;
-  if (skinWalls.length) out.push(entry(cfg, 'skin-wall', true, skinWalls, w / UM_PER_MM, air));
-  if (lines.length) out.push(entry(cfg, 'skin', false, lines, w / UM_PER_MM, air));
-  if (gaps.length) out.push(entry(cfg, 'skin-gap', true, gaps.map((g) => g.loop), gaps.map((g) => g.widthUm / UM_PER_MM), null));
+  if (skinWalls.length) out.push(makeEntry(cfg, 'skin-wall', true, skinWalls, w / UM_PER_MM, { overAir: air }));
+  if (lines.length) out.push(makeEntry(cfg, 'skin', false, lines, w / UM_PER_MM, { overAir: air }));
+  if (gaps.length) out.push(gapEntry(cfg, 'skin-gap', gaps));
   return out;
+}
+
+/** Gap loops with their own widths, as one entry of per-path widths. */
+function gapEntry(cfg: Config, role: 'skin-gap', gaps: readonly GapLoop[]): PathEntry {
+  const widths = gaps.map((g) => new Float64Array(g.loop.length).fill(g.widthUm / UM_PER_MM));
+  return makeEntry(cfg, role, true, gaps.map((g) => g.loop), widths[0][0], { widths });
 }
 
 function infillEntries(island: IslandRegions, ctx: IslandContext): PathEntry[] {
@@ -92,8 +76,8 @@ function infillEntries(island: IslandRegions, ctx: IslandContext): PathEntry[] {
   const res = ctx.custom ? ctx.custom(input, params) : generateInfill(cfg.infillPattern as PatternId, input, params, ctx.prepared);
   const out: PathEntry[] = [];
   const width = widthUm / UM_PER_MM;
-  if (res.loops.length) out.push(entry(cfg, 'infill', true, res.loops, width, null));
-  if (res.lines.length) out.push(entry(cfg, 'infill', false, res.lines, width, null));
+  if (res.loops.length) out.push(makeEntry(cfg, 'infill', true, res.loops, width));
+  if (res.lines.length) out.push(makeEntry(cfg, 'infill', false, res.lines, width));
   return out;
 }
 
@@ -103,17 +87,18 @@ export function islandGroup(island: IslandRegions, ctx: IslandContext): PathGrou
   const w = ctx.widthUm / UM_PER_MM;
   const entries: PathEntry[] = [];
   const wallsOverAir = island.unsupported.length ? island.unsupported : null;
-  island.walls.forEach((loops, k) => {
-    if (loops.length) entries.push(entry(cfg, 'wall', true, loops, w, wallsOverAir, k));
-  });
-  if (island.wallGaps.length) {
-    entries.push(entry(cfg, 'wall-gap', true, island.wallGaps.map((g) => g.loop), island.wallGaps.map((g) => g.widthUm / UM_PER_MM), null));
+  for (const set of island.walls) {
+    if (set.paths.length === 0) continue;
+    const opts = { wall: set.role === 'wall' ? set.wall : undefined, widths: set.widths ?? undefined, overAir: set.role === 'wall' ? wallsOverAir : null };
+    entries.push(makeEntry(cfg, set.role, set.closed, set.paths, w, opts));
   }
   entries.push(...infillEntries(island, ctx));
   // skin resting on support right below it (no Z gap) is not a bridge; over a Z gap it is, as over air
   const bridgeArea = island.bridge.length && ctx.supportBelow.length ? difference(island.bridge, ctx.supportBelow) : island.bridge;
   entries.push(...skinEntries(island, ctx, bridgeArea));
-  const boundary = island.walls[0] && island.walls[0].length ? island.walls[0] : undefined;
+  // travel follows the outer wall's loops round the island
+  const outer = island.walls.find((set) => set.role === 'wall' && set.wall === 0 && set.closed && set.paths.length > 0);
+  const boundary = outer?.paths;
   const group: PathGroup = { kind: 'island', object: island.object, area: island.outline, entries };
   if (boundary) group.boundary = boundary;
   return group;

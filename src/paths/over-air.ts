@@ -61,13 +61,15 @@ export interface FlaggedPath {
   points: Pt[];
   /** One per edge (closed paths: the last edge returns to the first point). */
   flags: Uint8Array;
+  /** The path's per-point widths at the new points (interpolated where an edge was split), when it had them. */
+  widths: Float64Array | null;
 }
 
 /**
  * Split a path where it crosses into and out of `idx`'s area and flag each edge; null when no part of it
  * lies over air (the common case: the path is returned unchanged by the caller).
  */
-export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex): FlaggedPath | null {
+export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex, widths: Float64Array | null = null): FlaggedPath | null {
   const n = path.length;
   if (n < 2 || idx.areas.length === 0) return null;
   // quick rejection: the path's bounds miss the area
@@ -76,11 +78,14 @@ export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex
   const points: Pt[] = [];
   const flags: number[] = [];
   const ts: number[] = [];
+  const ws: number[] | null = widths ? [] : null;
   const edges = closed ? n : n - 1;
   let any = false;
   for (let e = 0; e < edges; e++) {
     const a = path[e], b = path[(e + 1) % n];
     points.push(a);
+    const wa = widths ? widths[e] : 0, wb = widths ? widths[(e + 1) % n] : 0;
+    if (ws) ws.push(wa);
     ts.length = 0;
     crossings(a, b, idx, ts);
     ts.sort((p, q) => p - q);
@@ -99,13 +104,17 @@ export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex
         const p = { x: Math.round(a.x + t * (b.x - a.x)), y: Math.round(a.y + t * (b.y - a.y)) };
         if (p.x !== prev.x || p.y !== prev.y) {
           points.push(p);
+          if (ws) ws.push(wa + t * (wb - wa));
           prev = p;
         } else flags.pop();
       }
       prevT = t;
     }
   }
-  if (!closed) points.push(path[n - 1]);
+  if (!closed) {
+    points.push(path[n - 1]);
+    if (ws) ws.push(widths![n - 1]);
+  }
   if (!any) return null;
-  return { points, flags: Uint8Array.from(flags) };
+  return { points, flags: Uint8Array.from(flags), widths: ws ? Float64Array.from(ws) : null };
 }

@@ -12,6 +12,7 @@ import type { SupportAreas } from '../regions/types.js';
 import { shrunkRegularPolygon, type RegularPolygon } from '../geometry/regular-polygon.js';
 import type { Config } from '../settings/resolve.js';
 import type { LayerZ } from '../slice/types.js';
+import { entryStyle } from './roles.js';
 import type { PathEntry, PathGroup, PathRole } from './types.js';
 
 /**
@@ -209,7 +210,7 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   for (const c of components) {
     if (c.entries.length === 0) continue;
     const entries: PathEntry[] = [];
-    for (const e of c.entries) entries.push({ role: e.role, closed: e.closed, paths: e.paths, width });
+    for (const e of c.entries) entries.push({ role: e.role, closed: e.closed, paths: e.paths, width, style: entryStyle(cfg, e.role) });
     groups.push({ kind: 'support', area: c.area, convex: circles.has(c.area), entries });
   }
   return groups;

@@ -1,32 +1,21 @@
 /**
  * What the paths stage hands to the planner: per layer, groups of path entries. A group is printed as a
  * whole (an island, one support area, the adhesion around the print); an entry is one kind of path within
- * it (the outer wall, the infill, the bridge lines…), already clipped and linked. Which entry prints when is
- * data (`print-order.ts`), so support, raft or ironing are new entries, not new code in the planner.
+ * it (the outer wall, the infill, the bridge lines…), already clipped and linked. Which entry prints when, and
+ * how, is data (`roles.ts`), so support, raft or ironing are new entries, not new code in the planner.
  * Coordinates are integer µm.
  */
 import type { ExPolygon, Polygon, Pt } from '../geometry/types.js';
 import type { LayerZ } from '../slice/types.js';
+import type { EntryStyle, PathRole } from './roles.js';
 
-/** What a path is for. The G-code feature, speed and print order follow from it (print-order.ts). */
-export const PATH_ROLES = [
-  'raft-base',
-  'raft-interface',
-  'raft-surface',
-  'skirt',
-  'brim',
-  'support-floor',
-  'support',
-  'support-roof',
-  'wall',
-  'wall-gap',
-  'infill',
-  'skin-wall',
-  'skin',
-  'skin-gap',
-] as const;
-export type PathRole = (typeof PATH_ROLES)[number];
+export { PATH_ROLES, type PathRole } from './roles.js';
 
+/**
+ * A self-describing group of extrusions of one role: its paths (closed loops or open lines), each point
+ * with its own bead width when the widths vary (variable-width walls), room for a per-point Z and per-edge
+ * over-air flags, and the style (feature, speed, flow, seam policy) resolved where it was made.
+ */
 export interface PathEntry {
   role: PathRole;
   /** For walls: 0 = outer wall, k = k-th wall inwards (the wall order setting sorts them). */
@@ -34,17 +23,20 @@ export interface PathEntry {
   /** Closed loops (true) or open polylines (false). */
   closed: boolean;
   paths: Pt[][];
-  /** Bead width, mm: one for every path, or one per path. */
-  width: number | number[];
+  /** Bead width, mm, of every path without widths of its own. */
+  width: number;
+  /** Per path (when present): the bead width at each point, mm (null: `width` all along). */
+  widths?: (Float64Array | null)[];
+  /** Per path (when present): the nozzle's Z at each point above the layer's, mm (null: flat). */
+  z?: (Float64Array | null)[];
   /**
    * Per path (when present), one flag per edge (edge k runs from point k to k+1, for loops the last back to
-   * the first): 1 where the edge lies over nothing on the layer below. Such runs print as the role's over-air
-   * variant (bridge skin, slowed overhang walls).
+   * the first): 1 where the edge lies over nothing on the layer below. Such runs print in the style's
+   * over-air variant (bridge skin, slowed overhang walls).
    */
   overAir?: (Uint8Array | null)[];
-  /** Speed (mm/s) and flow multiplier when the role's own (from the settings) do not apply (raft layers). */
-  speed?: number;
-  flow?: number;
+  /** How the entry prints, resolved from the role table where it was made (roles.ts `entryStyle`). */
+  style: EntryStyle;
 }
 
 export type GroupKind = 'adhesion' | 'support' | 'island';

@@ -11,7 +11,9 @@
  *   run has at least MIN_ARC_SEGMENTS segments.
  * Runs are grown greedily from each start: doubling while the fit holds, then bisecting to the longest
  * run that fits. The arc's end points are points of the original path, so the path still passes through
- * them; E, time and filament follow the arc's own length (plan/moves.ts).
+ * them; E, time and filament follow the arc's own length (plan/moves.ts). A path whose width varies gets
+ * arcs only along runs whose widths agree (within ARC_WIDTH_TOLERANCE), so an arc keeps one width; a path
+ * whose Z varies gets none.
  */
 import { hypot, type Pt } from '../geometry/types.js';
 import type { ExtrudeStep, PlanArc, PrintPlan } from './types.js';
@@ -122,8 +124,7 @@ function fitRun(path: readonly Pt[], i: number, j: number, tol: number, samples:
 }
 
 /** The longest run from `i` (at least MIN_ARC_SEGMENTS segments) that fits an arc, or null. */
-function longestRun(path: readonly Pt[], i: number, tol: number, samples: Float64Array): { end: number; arc: PlanArc } | null {
-  const lastIndex = path.length - 1;
+function longestRun(path: readonly Pt[], i: number, lastIndex: number, tol: number, samples: Float64Array): { end: number; arc: PlanArc } | null {
   let good = i + MIN_ARC_SEGMENTS;
   if (good > lastIndex) return null;
   let arc = fitRun(path, i, good, tol, samples);
@@ -152,22 +153,28 @@ function longestRun(path: readonly Pt[], i: number, tol: number, samples: Float6
 
 /** Fit arcs into one extrusion (in place). Returns how many segments arcs replaced. */
 export function fitStepArcs(step: ExtrudeStep, toleranceMm: number): number {
-  if (step.arcs || step.points.length < MIN_ARC_SEGMENTS) return 0;
+  // a rising or falling path stays in straight segments
+  if (step.arcs || step.z || step.points.length < MIN_ARC_SEGMENTS) return 0;
+  const widths = step.widths;
+  const n = step.points.length;
   const tol = toleranceMm * 1000;
   const path = step.closed ? [...step.points, step.points[0]!] : step.points;
   const kept: Pt[] = [path[0]!];
   const arcs: Array<PlanArc | undefined> = [undefined];
   let replaced = 0;
   const samples = new Float64Array(6 * path.length);
+  const keptIndex: number[] = [0];
   for (let i = 0; i < path.length - 1; ) {
-    const run = longestRun(path, i, tol, samples);
+    const run = longestRun(path, i, widths ? sameWidthUntil(widths, n, i, path.length - 1) : path.length - 1, tol, samples);
     if (run) {
       kept.push(path[run.end]!);
+      keptIndex.push(run.end % n);
       arcs.push(run.arc);
       replaced += run.end - i;
       i = run.end;
     } else {
       kept.push(path[i + 1]!);
+      keptIndex.push((i + 1) % n);
       arcs.push(undefined);
       i++;
     }
@@ -175,8 +182,21 @@ export function fitStepArcs(step: ExtrudeStep, toleranceMm: number): number {
   if (replaced === 0) return 0;
   // a closed step's last kept point is its first again: its segment is the closing one
   step.points = step.closed ? kept.slice(0, -1) : kept;
+  if (widths) step.widths = Float64Array.from(step.closed ? keptIndex.slice(0, -1) : keptIndex, (k) => widths[k]!);
   step.arcs = arcs;
   return replaced;
+}
+
+/** Widths within this fraction of each other along a run count as one width (an arc keeps one). */
+export const ARC_WIDTH_TOLERANCE = 0.01;
+
+/** The last path index from `i` (at most `last`) up to which every width agrees with the width at `i`. */
+function sameWidthUntil(widths: Float64Array, n: number, i: number, last: number): number {
+  const w = widths[i % n]!;
+  const tol = w * ARC_WIDTH_TOLERANCE;
+  let j = i;
+  while (j < last && Math.abs(widths[(j + 1) % n]! - w) <= tol) j++;
+  return j;
 }
 
 /** Fit arcs into every extrusion of the plan. */

@@ -270,6 +270,10 @@ class MotionTimer implements MoveSink {
     this.filament += filament;
     this.push(x, y, length, speed, this.limits.printAccel);
   }
+  extrudeZ(x: number, y: number, _z: number, length: number, filament: number, speed: number): void {
+    // the XY chain carries on: a rising nozzle is timed along the segment's whole length
+    this.extrude(x, y, length, filament, speed);
+  }
   arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void {
     this.filament += filament;
     const r = hypot(this.px - cx, this.py - cy);

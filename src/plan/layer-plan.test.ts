@@ -2,7 +2,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { rect } from '../geometry/test-shapes.js';
 import type { ExPolygon } from '../geometry/types.js';
-import type { LayerPaths, PathGroup } from '../paths/types.js';
+import { entryStyle } from '../paths/roles.js';
+import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import { resolveConfig } from '../settings/resolve.js';
 import { planLayer } from './layer-plan.js';
 import type { ExtrudeStep } from './types.js';
@@ -10,11 +11,15 @@ import type { ExtrudeStep } from './types.js';
 const cfg = resolveConfig({ wallOrder: 'inner-first', perimeterSpeed: 30, innerWallSpeed: 50, overhangWallSpeed: 12, bridgeSpeed: 20, bridgeFlow: 90, bridgeFanSpeed: 100, fanSpeed: 40, supportSpeed: 45 });
 const sq = (x: number, y: number, s: number) => rect(x, y, x + s, y + s).outer;
 
-function layer(groups: PathGroup[]): LayerPaths {
-  return { index: 5, z: 1.2, height: 0.2, sliceZ: 1.1, lineWidth: 0.4, groups };
+/** A group as written here: its entries' styles come from the role table. */
+type TestGroup = Omit<PathGroup, 'entries'> & { entries: Omit<PathEntry, 'style'>[] };
+
+function layer(groups: TestGroup[]): LayerPaths {
+  const styled = groups.map((g): PathGroup => ({ ...g, entries: g.entries.map((e) => ({ ...e, style: entryStyle(cfg, e.role, e.wall) })) }));
+  return { index: 5, z: 1.2, height: 0.2, sliceZ: 1.1, lineWidth: 0.4, groups: styled };
 }
 
-const island: PathGroup = {
+const island: TestGroup = {
   kind: 'island',
   object: 0,
   area: rect(0, 0, 20_000, 20_000),
@@ -26,7 +31,7 @@ const island: PathGroup = {
     { role: 'infill', closed: false, paths: [[{ x: 2_000, y: 2_000 }, { x: 18_000, y: 18_000 }]], width: 0.4 },
   ],
 };
-const support: PathGroup = { kind: 'support', area: rect(30_000, 0, 40_000, 10_000), entries: [{ role: 'support', closed: false, paths: [[{ x: 31_000, y: 1_000 }, { x: 39_000, y: 1_000 }]], width: 0.4 }] };
+const support: TestGroup = { kind: 'support', area: rect(30_000, 0, 40_000, 10_000), entries: [{ role: 'support', closed: false, paths: [[{ x: 31_000, y: 1_000 }, { x: 39_000, y: 1_000 }]], width: 0.4 }] };
 
 test('groups print support first, entries in print order (inner wall, outer wall, infill, skin), each extrusion tagged with its object', () => {
   const plan = planLayer(layer([island, support]), cfg, { at: { x: 0, y: 0 } });
@@ -65,13 +70,13 @@ test('the first layer prints everything at first-layer speed and sets no over-ai
 
 test('a travel from support to support retracts only where it would pass over the part (this layer or the one below), or with the setting off', () => {
   const line = (x0: number, x1: number) => [{ x: x0, y: 5_000 }, { x: x1, y: 5_000 }];
-  const a: PathGroup = { kind: 'support', area: rect(30_000, 0, 40_000, 10_000), entries: [{ role: 'support', closed: false, paths: [line(31_000, 39_000)], width: 0.4 }] };
-  const b: PathGroup = { kind: 'support', area: rect(50_000, 0, 60_000, 10_000), entries: [{ role: 'support', closed: false, paths: [line(51_000, 59_000)], width: 0.4 }] };
-  const between: PathGroup = { kind: 'island', object: 0, area: rect(42_000, 0, 48_000, 10_000), entries: [{ role: 'infill', closed: false, paths: [[{ x: 43_000, y: 1_000 }, { x: 47_000, y: 9_000 }]], width: 0.4 }] };
-  const inside: PathGroup = { kind: 'island', object: 0, area: rect(20_000, -20_000, 70_000, 30_000), entries: [] };
+  const a: TestGroup = { kind: 'support', area: rect(30_000, 0, 40_000, 10_000), entries: [{ role: 'support', closed: false, paths: [line(31_000, 39_000)], width: 0.4 }] };
+  const b: TestGroup = { kind: 'support', area: rect(50_000, 0, 60_000, 10_000), entries: [{ role: 'support', closed: false, paths: [line(51_000, 59_000)], width: 0.4 }] };
+  const between: TestGroup = { kind: 'island', object: 0, area: rect(42_000, 0, 48_000, 10_000), entries: [{ role: 'infill', closed: false, paths: [[{ x: 43_000, y: 1_000 }, { x: 47_000, y: 9_000 }]], width: 0.4 }] };
+  const inside: TestGroup = { kind: 'island', object: 0, area: rect(20_000, -20_000, 70_000, 30_000), entries: [] };
   const start = { x: 30_000, y: 5_000 };
   // whether the travel from a to b (after the first extrusion) retracts
-  const retracts = (groups: PathGroup[], c = cfg, below?: ExPolygon[]) => {
+  const retracts = (groups: TestGroup[], c = cfg, below?: ExPolygon[]) => {
     const plan = planLayer(layer(groups), c, { at: start, below });
     const first = plan.steps.findIndex((s) => s.kind === 'extrude');
     const hop = plan.steps.slice(first).find((s) => s.kind === 'travel');

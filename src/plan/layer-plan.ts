@@ -9,10 +9,11 @@ import { orderNearest } from '../geometry/nearest-order.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
 import { combRoute, makeCombArea, pathLength, type CombArea } from './comb.js';
-import { GROUP_ORDER, OVER_AIR_STYLE, roleFeature, roleSpeed, sortEntries } from './print-order.js';
+import { GROUP_ORDER, type EntryStyle, type ExtrusionStyle } from '../paths/roles.js';
+import { sortEntries } from './print-order.js';
 import { chooseSeam, rotateLoop } from './seam.js';
 import { PartGuard } from './support-travel.js';
-import type { ExtrudeStep, FeatureType, LayerPlan, PlanStep } from './types.js';
+import type { ExtrudeStep, LayerPlan, PlanStep } from './types.js';
 
 export interface PlanState {
   /** Nozzle position after the previous layer, µm. */
@@ -43,16 +44,19 @@ interface Ctx {
   below: readonly ExPolygon[];
   guard: PartGuard | null;
   object?: number;
-  /** Styles of the entries that set no speed or flow of their own, by role and wall (a layer's support has hundreds of groups). */
-  styles: Map<string, { normal: Style; overAir: Style }>;
+  /** On the first layer: each entry style as the first layer prints it (every run at the first-layer speed). */
+  firstStyles: Map<EntryStyle, EntryStyle>;
 }
 
-/** How one entry's extrusions print. */
-interface Style {
-  feature: FeatureType;
-  speed: number;
-  flow: number;
-  fan?: number;
+/** One path as the planner prints it: its points and the channels that go with them. */
+interface Run {
+  points: Pt[];
+  closed: boolean;
+  /** Bead width, mm, where `widths` is null. */
+  width: number;
+  widths: Float64Array | null;
+  z: Float64Array | null;
+  flags: Uint8Array | null;
 }
 
 function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
@@ -91,98 +95,135 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   ctx.at = to;
 }
 
-function extrude(ctx: Ctx, style: Style, points: Pt[], closed: boolean, width: number): void {
+function extrude(ctx: Ctx, style: ExtrusionStyle, run: Run): void {
+  const points = run.points;
   if (points.length < 2) return;
   travelTo(ctx, points[0]);
   const step: ExtrudeStep = {
     kind: 'extrude',
     feature: style.feature,
     points,
-    closed,
-    width,
+    closed: run.closed,
+    width: run.width,
+    // always present (undefined when unset), so every extrusion has one shape and the passes over the
+    // plan read its steps through monomorphic property loads
+    widths: run.widths ?? undefined,
+    z: run.z ?? undefined,
     height: ctx.layer.height,
     speed: style.speed,
     flow: style.flow,
-    // always present (undefined when unset), so every extrusion has one shape and the passes over the
-    // plan read its steps through monomorphic property loads
     object: ctx.object,
     fan: style.fan,
   };
   ctx.steps.push(step);
   ctx.lastKind = ctx.kind;
-  ctx.at = closed ? points[0] : points[points.length - 1];
+  ctx.at = run.closed ? points[0] : points[points.length - 1];
 }
 
-function styleOf(ctx: Ctx, entry: PathEntry): { normal: Style; overAir: Style } {
-  if (entry.speed !== undefined || entry.flow !== undefined) return makeStyle(ctx, entry);
-  const key = entry.wall === undefined ? entry.role : entry.role + entry.wall;
-  let s = ctx.styles.get(key);
-  if (!s) ctx.styles.set(key, (s = makeStyle(ctx, entry)));
+/** The entry's style as this layer prints it: on the first layer every run at the first-layer speed, nothing over air. */
+function layerStyle(ctx: Ctx, style: EntryStyle): EntryStyle {
+  if (!ctx.first) return style;
+  let s = ctx.firstStyles.get(style);
+  if (!s) {
+    const normal = { ...style.normal, speed: ctx.cfg.firstLayerSpeed };
+    ctx.firstStyles.set(style, (s = { ...style, normal, overAir: normal }));
+  }
   return s;
-}
-
-function makeStyle(ctx: Ctx, entry: PathEntry): { normal: Style; overAir: Style } {
-  const { cfg } = ctx;
-  const feature = roleFeature(entry);
-  const speed = ctx.first ? cfg.firstLayerSpeed : entry.speed ?? roleSpeed(entry, cfg);
-  const normal: Style = { feature, speed, flow: entry.flow ?? 1 };
-  const air = OVER_AIR_STYLE[entry.role];
-  if (!air || ctx.first) return { normal, overAir: normal };
-  const airSpeed = air.speed(cfg);
-  const overAir: Style = {
-    feature: air.feature ?? feature,
-    // a run that keeps its feature is only ever slowed down
-    speed: air.feature ? airSpeed : Math.min(speed, airSpeed),
-    flow: air.flow ? air.flow(cfg) : normal.flow,
-  };
-  if (air.fan) overAir.fan = air.fan(cfg);
-  const same = overAir.feature === normal.feature && overAir.speed === normal.speed && overAir.flow === normal.flow && overAir.fan === undefined;
-  return { normal, overAir: same ? normal : overAir };
 }
 
 /**
  * Extrude a path whose edges may be flagged as over air: runs of equal flags become steps of their own
  * (contiguous, so no travel between them).
  */
-function extrudeFlagged(ctx: Ctx, styles: { normal: Style; overAir: Style }, points: Pt[], closed: boolean, width: number, flags: Uint8Array | null): void {
-  if (!flags || (styles.overAir === styles.normal)) return extrude(ctx, styles.normal, points, closed, width);
+function extrudeFlagged(ctx: Ctx, style: EntryStyle, run: Run): void {
+  const flags = run.flags;
+  if (!flags || style.overAir === style.normal) return extrude(ctx, style.normal, run);
+  const { points, widths, z } = run;
   const n = points.length;
-  const edges = closed ? n : n - 1;
+  const edges = run.closed ? n : n - 1;
   let runStart = 0;
   for (let e = 1; e <= edges; e++) {
     if (e < edges && flags[e] === flags[runStart]) continue;
-    const run: Pt[] = [];
-    for (let k = runStart; k <= e; k++) run.push(points[k % n]);
-    extrude(ctx, flags[runStart] ? styles.overAir : styles.normal, run, false, width);
+    const count = e - runStart + 1;
+    const part: Pt[] = new Array(count);
+    for (let k = 0; k < count; k++) part[k] = points[(runStart + k) % n];
+    extrude(ctx, flags[runStart] ? style.overAir : style.normal, {
+      points: part,
+      closed: false,
+      width: run.width,
+      widths: widths && channelRun(widths, runStart, count),
+      z: z && channelRun(z, runStart, count),
+      flags: null,
+    });
     runStart = e;
   }
 }
 
-function widthOf(entry: PathEntry, k: number): number {
-  return typeof entry.width === 'number' ? entry.width : entry.width[k];
+/** `count` values of a per-point channel from `start`, wrapping round a loop's end. */
+function channelRun(values: Float64Array, start: number, count: number): Float64Array {
+  const n = values.length;
+  if (start + count <= n) return values.slice(start, start + count);
+  const out = new Float64Array(count);
+  for (let k = 0; k < count; k++) out[k] = values[(start + k) % n];
+  return out;
 }
 
-/** Closed loops nearest-first, each starting at its seam (walls and most loops) or wherever is nearest (gap loops). */
-function printLoops(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir: Style }): void {
+/** A loop's channel turned to start at point `s`. */
+function rotateChannel<T extends Float64Array | Uint8Array>(values: T | null, s: number): T | null {
+  if (!values || s === 0) return values;
+  const out = new (values.constructor as { new (n: number): T })(values.length);
+  out.set(values.subarray(s), 0);
+  out.set(values.subarray(0, s), values.length - s);
+  return out;
+}
+
+/** A line's channel reversed (point channels, or edge flags). */
+function reverseChannel<T extends Float64Array | Uint8Array>(values: T | null): T | null {
+  return values ? (values.slice().reverse() as T) : null;
+}
+
+/** Per-point widths that are all one value are that one width. */
+function runWidth(entry: PathEntry, i: number): { width: number; widths: Float64Array | null } {
+  const widths = entry.widths?.[i] ?? null;
+  if (!widths || widths.length === 0) return { width: entry.width, widths: null };
+  const w0 = widths[0];
+  for (let k = 1; k < widths.length; k++) if (widths[k] !== w0) return { width: w0, widths };
+  return { width: w0, widths: null };
+}
+
+/** Loop i of the entry, started at point s. */
+function loopRun(entry: PathEntry, i: number, s: number): Run {
+  const { width, widths } = runWidth(entry, i);
+  return {
+    points: rotateLoop(entry.paths[i], s),
+    closed: true,
+    width,
+    widths: rotateChannel(widths, s),
+    z: rotateChannel(entry.z?.[i] ?? null, s),
+    flags: rotateChannel(entry.overAir?.[i] ?? null, s),
+  };
+}
+
+/** Line i of the entry, from its first point or (flip) its last. */
+function lineRun(entry: PathEntry, i: number, flip: boolean): Run {
+  const { width, widths } = runWidth(entry, i);
+  const line = entry.paths[i];
+  const z = entry.z?.[i] ?? null;
+  const flags = entry.overAir?.[i] ?? null;
+  if (!flip) return { points: line, closed: false, width, widths, z, flags };
+  return { points: line.slice().reverse(), closed: false, width, widths: reverseChannel(widths), z: reverseChannel(z), flags: reverseChannel(flags) };
+}
+
+/** Closed loops nearest-first, each starting at its seam (by the seam setting) or wherever is nearest. */
+function printLoops(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
   const loops = entry.paths;
   if (loops.length === 0) return;
-  if (typeof entry.width !== 'number') {
-    // gap loops with their own widths: nearest first, entered at their nearest point
-    const order = orderNearest(loops.length, (i) => [loops[i][0]], (i) => loops[i][0], ctx.at);
-    for (let k = 0; k < order.length; k++) {
-      const i = order[k][0];
-      const s = chooseSeam(loops[i], 'nearest', ctx.at, 0, 0, 0);
-      extrudeFlagged(ctx, styles, rotateLoop(loops[i], s), true, widthOf(entry, i), rotateFlags(entry.overAir?.[i] ?? null, s));
-    }
-    return;
-  }
-  // support's loops have no seam to hide: each starts where the nozzle is nearest
-  const mode = entry.role === 'support' || entry.role === 'support-roof' || entry.role === 'support-floor' ? 'nearest' : ctx.cfg.seamPosition;
+  const mode = entry.style.seam === 'nearest' ? 'nearest' : ctx.cfg.seamPosition;
   if (loops.length === 1) {
     // one loop (a tree branch's wall, most of a layer's support): no order to find
     const loop = loops[0];
     const s = mode === 'nearest' ? chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0) : chooseSeam(loop, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo);
-    extrudeFlagged(ctx, styles, rotateLoop(loop, s), true, entry.width, rotateFlags(entry.overAir?.[0] ?? null, s));
+    extrudeFlagged(ctx, style, loopRun(entry, 0, s));
     ctx.loopNo += 1;
     return;
   }
@@ -196,32 +237,21 @@ function printLoops(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir
   );
   for (let k = 0; k < order.length; k++) {
     const i = order[k][0];
-    const loop = loops[i];
-    const s = seams[i] >= 0 ? seams[i] : chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0);
-    extrudeFlagged(ctx, styles, rotateLoop(loop, s), true, entry.width, rotateFlags(entry.overAir?.[i] ?? null, s));
+    const s = seams[i] >= 0 ? seams[i] : chooseSeam(loops[i], 'nearest', ctx.at, 0, 0, 0);
+    extrudeFlagged(ctx, style, loopRun(entry, i, s));
   }
   ctx.loopNo += loops.length;
 }
 
-function rotateFlags(flags: Uint8Array | null, start: number): Uint8Array | null {
-  if (!flags || start === 0) return flags;
-  const out = new Uint8Array(flags.length);
-  out.set(flags.subarray(start), 0);
-  out.set(flags.subarray(0, start), flags.length - start);
-  return out;
-}
-
 /** Open lines nearest-first, each from whichever end is nearer. */
-function printLines(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir: Style }): void {
+function printLines(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
   const lines = entry.paths;
   if (lines.length === 1) {
     // one line (a tree branch's chord): from its nearer end, the first on a tie
     const line = lines[0];
     const a = line[0], b = line[line.length - 1];
     const ax = a.x - ctx.at.x, ay = a.y - ctx.at.y, bx = b.x - ctx.at.x, by = b.y - ctx.at.y;
-    const flip = bx * bx + by * by < ax * ax + ay * ay;
-    const flags = entry.overAir?.[0] ?? null;
-    extrudeFlagged(ctx, styles, flip ? line.slice().reverse() : line, false, widthOf(entry, 0), flags && flip ? flags.slice().reverse() : flags);
+    extrudeFlagged(ctx, style, lineRun(entry, 0, bx * bx + by * by < ax * ax + ay * ay));
     return;
   }
   const order = orderNearest(
@@ -230,12 +260,7 @@ function printLines(ctx: Ctx, entry: PathEntry, styles: { normal: Style; overAir
     (i, s) => (s === 0 ? lines[i][lines[i].length - 1] : lines[i][0]),
     ctx.at,
   );
-  for (let k = 0; k < order.length; k++) {
-    const i = order[k][0], s = order[k][1];
-    const flags = entry.overAir?.[i] ?? null;
-    const pts = s === 0 ? lines[i] : lines[i].slice().reverse();
-    extrudeFlagged(ctx, styles, pts, false, widthOf(entry, i), flags && s !== 0 ? flags.slice().reverse() : flags);
-  }
+  for (let k = 0; k < order.length; k++) extrudeFlagged(ctx, style, lineRun(entry, order[k][0], order[k][1] !== 0));
 }
 
 function comb(group: PathGroup): CombArea | null {
@@ -258,9 +283,9 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
       ctx.comb = group;
       combed = true;
     }
-    const styles = styleOf(ctx, entry);
-    if (entry.closed) printLoops(ctx, entry, styles);
-    else printLines(ctx, entry, styles);
+    const style = layerStyle(ctx, entry.style);
+    if (entry.closed) printLoops(ctx, entry, style);
+    else printLines(ctx, entry, style);
     if (!combed && entry.paths.length) {
       ctx.comb = group;
       combed = true;
@@ -294,7 +319,7 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
   for (const g of layer.groups) if (g.kind === 'island' && g.area) islands.push(g.area);
   const ctx: Ctx = {
     cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined,
-    kind: null, lastKind: null, islands, below: state.below ?? [], guard: null, styles: new Map(),
+    kind: null, lastKind: null, islands, below: state.below ?? [], guard: null, firstStyles: new Map(),
   };
   for (const kind of GROUP_ORDER) {
     const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));

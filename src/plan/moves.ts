@@ -12,7 +12,10 @@
  *   step asks for one and `retractionEnabled` is on; the Z hop only with a retraction.
  * - Otherwise every layer's first move is preceded by a Z move to the layer's Z.
  * - E per mm of path = width × height / (π·(filamentDiameter/2)²) × flow × flowRate/100: the
- *   rectangular cross-section model (the same one the planner's widths are computed for).
+ *   rectangular cross-section model (the same one the planner's widths are computed for). A step with a
+ *   width per point gives each segment the mean of its two end widths.
+ * - A step with a Z per point moves the nozzle to the layer's Z plus that value along each segment (one
+ *   G1 with X, Y and Z); the next step comes back to the layer's Z first.
  * - XY speeds are capped at `maxSpeed` (and floored at MIN_SPEED_MM_S so a feed rate is never 0).
  * - Zero-length segments are dropped.
  * - A segment with an arc (`step.arcs[i]`) goes around its centre in its direction; its length, and so
@@ -63,6 +66,8 @@ export interface MoveSink {
   /** Called before the segments of each extrude step (after any implicit travel to its start). */
   extrudeStart(step: ExtrudeStep): void;
   extrude(x: number, y: number, length: number, filament: number, speed: number): void;
+  /** An extrusion that also moves Z (to `z`, mm), for steps with a Z per point. */
+  extrudeZ(x: number, y: number, z: number, length: number, filament: number, speed: number): void;
   /** An extrusion along a circular arc around (cx, cy) µm to (x, y); `length` is the arc's, mm. */
   arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void;
   retract(filament: number, speed: number): void;
@@ -91,9 +96,19 @@ export function filamentArea(filamentDiameter: number): number {
   return Math.PI * r * r;
 }
 
-/** Millimetres of filament per millimetre of an extrusion path (rectangular cross-section). */
-export function filamentPerMm(step: ExtrudeStep, s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>): number {
-  return ((step.width * step.height) / filamentArea(s.filamentDiameter)) * step.flow * (s.flowRate / 100);
+/** Millimetres of filament per millimetre of an extrusion path `width` mm wide (rectangular cross-section). */
+export function filamentPerMm(step: ExtrudeStep, s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>, width = step.width): number {
+  return ((width * step.height) / filamentArea(s.filamentDiameter)) * step.flow * (s.flowRate / 100);
+}
+
+/**
+ * Filament of the segment of `step` from point `a` to point `b` (indices), `length` mm long: with widths per
+ * point, the mean of its two end widths (the bead's width changes linearly along it); else the step's width.
+ */
+export function segmentFilament(step: ExtrudeStep, s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>, perMm: number, a: number, b: number, length: number): number {
+  const widths = step.widths;
+  if (!widths) return length * perMm;
+  return length * filamentPerMm(step, s, (widths[a]! + widths[b]!) / 2);
 }
 
 function capSpeed(speed: number, maxSpeed: number): number {
@@ -211,6 +226,8 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
       w.open = object;
     }
     travelTo(pos, points[0]!.x, points[0]!.y, travelSpeed, sink);
+    const zs = step.z;
+    if (zs) moveZ(pos, layerZ + zs[0]!, zSpeed, sink);
     sink.extrudeStart(step);
     const speed = capSpeed(step.speed, s.maxSpeed);
     const perMm = filamentPerMm(step, s);
@@ -219,22 +236,34 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
     let x = pos.x;
     let y = pos.y;
     for (let i = 1; i <= last; i++) {
-      const p = points[i === n ? 0 : i]!;
+      const k = i === n ? 0 : i;
+      const p = points[k]!;
       const dx = p.x - x;
       const dy = p.y - y;
+      if (zs) {
+        const z = layerZ + zs[k]!;
+        const dz = z - pos.z;
+        if (dx === 0 && dy === 0 && dz === 0) continue;
+        const length = Math.sqrt(dx * dx + dy * dy + dz * dz * 1e6) / 1000;
+        x = p.x;
+        y = p.y;
+        pos.z = z;
+        sink.extrudeZ(x, y, z, length, segmentFilament(step, s, perMm, i - 1, k, length), speed);
+        continue;
+      }
       if (dx === 0 && dy === 0) continue;
       const arc = arcs?.[i];
       if (arc) {
         const length = arcLengthMm(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise);
         x = p.x;
         y = p.y;
-        sink.arc(x, y, arc.cx, arc.cy, arc.clockwise, length, length * perMm, speed);
+        sink.arc(x, y, arc.cx, arc.cy, arc.clockwise, length, segmentFilament(step, s, perMm, i - 1, k, length), speed);
         continue;
       }
       const length = Math.sqrt(dx * dx + dy * dy) / 1000;
       x = p.x;
       y = p.y;
-      sink.extrude(x, y, length, length * perMm, speed);
+      sink.extrude(x, y, length, segmentFilament(step, s, perMm, i - 1, k, length), speed);
     }
     pos.x = x;
     pos.y = y;

@@ -1,25 +1,13 @@
 /**
  * The structured toolpath plan between planning and G-code text. Layers hold ordered steps: extrusions
- * with a feature type, width, height and speed, and travels (with retraction and combing waypoints).
+ * with a feature type, width (or one per point), height and speed, and travels (with retraction and combing waypoints).
  * Cooling, time and filament estimates are passes over this plan; the G-code writer prints it last.
  * Coordinates are integer µm in bed space; widths, heights and Z are mm; speeds mm/s.
  */
 import type { Pt } from '../geometry/types.js';
+import type { FeatureType } from '../paths/roles.js';
 
-export const FEATURE_TYPES = [
-  'WALL-OUTER',
-  'WALL-INNER',
-  'SKIN',
-  'FILL',
-  'BRIDGE',
-  'SUPPORT',
-  'SUPPORT-INTERFACE',
-  'SKIRT',
-  'BRIM',
-  'RAFT',
-] as const;
-/** Feature types, named as Cura's `;TYPE:` markers so viewers understand them. */
-export type FeatureType = (typeof FEATURE_TYPES)[number];
+export { FEATURE_TYPES, type FeatureType } from '../paths/roles.js';
 
 /** An extrusion along `points` (a closed loop returns to its first point when `closed`). */
 export interface ExtrudeStep {
@@ -27,8 +15,15 @@ export interface ExtrudeStep {
   feature: FeatureType;
   points: Pt[];
   closed: boolean;
-  /** Line width, mm. */
+  /** Line width, mm, where `widths` is absent. */
   width: number;
+  /**
+   * The bead width at each point, mm, when it varies along the path (variable-width walls): a segment's
+   * filament is its length times the mean of its two end widths.
+   */
+  widths?: Float64Array;
+  /** The nozzle's Z at each point above the layer's Z, mm, when it varies along the path. */
+  z?: Float64Array;
   /** Layer height the line is laid at, mm (first layer may differ). */
   height: number;
   /** Feed rate, mm/s (after cooling slow-down). */

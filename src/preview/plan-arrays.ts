@@ -89,9 +89,11 @@ export function planToArrays(plan: PrintPlan): PreviewArrays {
       const f = FEATURE_INDEX.get(step.feature) ?? 0;
       const pts: readonly Pt[] = step.points;
       const count = step.closed ? pts.length : pts.length - 1;
+      const widths = step.widths, zs = step.z;
       let length = 0;
       for (let k = 0; k < count; k++) {
-        const a = pts[k], b = pts[(k + 1) % pts.length];
+        const k1 = (k + 1) % pts.length;
+        const a = pts[k], b = pts[k1];
         if (a.x === b.x && a.y === b.y) continue;
         const x0 = a.x / UM_PER_MM, y0 = a.y / UM_PER_MM, x1 = b.x / UM_PER_MM, y1 = b.y / UM_PER_MM;
         length += Math.hypot(x1 - x0, y1 - y0);
@@ -100,8 +102,9 @@ export function planToArrays(plan: PrintPlan): PreviewArrays {
         d[o + 1] = y0;
         d[o + 2] = x1;
         d[o + 3] = y1;
-        d[o + 4] = layer.z;
-        d[o + 5] = step.width;
+        // a segment is drawn at the mean of its end widths (and, for a rising path, at its end's Z)
+        d[o + 4] = zs ? layer.z + zs[k1]! : layer.z;
+        d[o + 5] = widths ? (widths[k]! + widths[k1]!) / 2 : step.width;
         d[o + 6] = step.height;
         d[o + 7] = f;
         d[o + 8] = li;

@@ -74,6 +74,18 @@ export function layerToSvg(layer: LayerPlan, opts: SvgOptions = {}): string {
       return `A${r} ${r} 0 0 ${arc.clockwise ? 0 : 1} ${X(p)} ${Y(p)}`;
     };
     const n = s.points.length;
+    if (s.widths) {
+      // widths that vary: each segment a stroke of its mean width, round-capped so the strokes join
+      const w = s.widths;
+      const last = s.closed ? n : n - 1;
+      for (let i = 1; i <= last; i++) {
+        const a = s.points[i - 1]!, k = i % n, b = s.points[k]!;
+        const width = fmt((w[i - 1]! + w[k]!) / 2);
+        out.push(`<path d="M${X(a)} ${Y(a)}${segment(b, i, a)}" fill="none" stroke="${FEATURE_COLOURS[s.feature]}" stroke-width="${width}" stroke-linecap="round" stroke-opacity="0.85"/>`);
+      }
+      at = s.closed ? s.points[0] : s.points[n - 1];
+      continue;
+    }
     let d = n ? `M${X(s.points[0]!)} ${Y(s.points[0]!)}` : '';
     for (let i = 1; i < n; i++) d += segment(s.points[i]!, i, s.points[i - 1]!);
     if (s.closed && n > 0) d += s.arcs?.[n] ? segment(s.points[0]!, n, s.points[n - 1]!) : 'Z';

@@ -13,7 +13,7 @@ import { bridgeOf } from './bridge-angle.js';
 import { overhangOf } from './overhang.js';
 import { allSkin, CoverWindows, skinAreas } from './skin-areas.js';
 import type { IslandRegions, LayerRegions } from './types.js';
-import { computeWalls } from './walls.js';
+import { computeWalls } from './wall-generator.js';
 
 export function lineWidthUm(cfg: Config, layerIndex: number): number {
   return Math.round((layerIndex === 0 ? cfg.firstLayerLineWidthMm : cfg.lineWidthMm) * UM_PER_MM);
@@ -79,7 +79,7 @@ export class RegionsRun {
     const infillOn = cfg.infillDensity > 0;
     const overlapInfill = (cfg.infillOverlap / 100) * w;
     for (let o = 0; o < this.#objects.length; o++) {
-      const walls = computeWalls(this.#section(o, i), cfg.walls, w);
+      const walls = computeWalls(this.#section(o, i), cfg, w);
       const anyInner = walls.some((iw) => iw.inner.length > 0);
       const coveredAbove = anyInner ? this.#objects[o].top.window(i + 1) : [];
       const coveredBelow = anyInner ? this.#objects[o].bottom.window(i - cfg.bottomLayers) : [];
@@ -91,8 +91,8 @@ export class RegionsRun {
         islands.push({
           object: o,
           outline: iw.outline,
-          walls: iw.wallLoops,
-          wallGaps: iw.gapFill,
+          walls: iw.walls,
+          lostMm2: iw.lostMm2,
           topSkin: skin.top,
           bottomSkin: skin.bottom,
           exposed: skin.exposed,

@@ -5,9 +5,23 @@
  * layer) reads them instead of slicing again.
  */
 import type { RegularPolygon } from '../geometry/regular-polygon.js';
-import type { ExPolygon, Polygon } from '../geometry/types.js';
+import type { ExPolygon, Pt } from '../geometry/types.js';
 import type { LayerZ } from '../slice/types.js';
-import type { GapLoop } from './gap-loops.js';
+
+/**
+ * Wall paths of one index: closed loops or open lines (a thin feature's middle line), each with one width
+ * per point where the widths vary.
+ */
+export interface WallSet {
+  /** `wall`, or `wall-gap` for classic walls' thin gap loops. */
+  role: 'wall' | 'wall-gap';
+  /** 0 = outer wall, k = k-th inwards. */
+  wall: number;
+  closed: boolean;
+  paths: Pt[][];
+  /** Per path, the bead width at each point, mm (null: the layer's line width); null for none at all. */
+  widths: (Float64Array | null)[] | null;
+}
 
 /** One island of one layer. */
 export interface IslandRegions {
@@ -15,10 +29,10 @@ export interface IslandRegions {
   object: number;
   /** The island's section outline. */
   outline: ExPolygon;
-  /** walls[k] = closed centrelines of wall k (0 = outer wall), each ring as printed. */
-  walls: Polygon[][];
-  /** Thin loops (with their bead width) in strips between walls too narrow for another wall. */
-  wallGaps: GapLoop[];
+  /** The walls, as sets of loops or lines of one wall index (classic walls' gap loops apart). */
+  walls: WallSet[];
+  /** Area of the island too thin to print (thinner than the smallest feature the walls lay), mm². */
+  lostMm2: number;
   /** Top skin inside the walls: exposed within the top skin thickness above. */
   topSkin: ExPolygon[];
   /** Bottom skin inside the walls: exposed within the bottom skin thickness below. */
@@ -86,7 +100,7 @@ export function outlinesOnly(layer: LayerRegions): LayerRegions {
     object: i.object,
     outline: i.outline,
     walls: [],
-    wallGaps: [],
+    lostMm2: 0,
     topSkin: [],
     bottomSkin: [],
     exposed: [],

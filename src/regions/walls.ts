@@ -1,11 +1,12 @@
 /**
- * Walls of one layer: concentric loops inset from each island's outline.
+ * Classic walls of one layer: concentric loops of the line width inset from each island's outline.
  * The outer wall's centreline lies half a line width inside the outline, so its outer edge is the
  * model's surface. Each inner wall k is printed only where its full width fits between wall k-1 and
  * the inside (an opening of the region), so walls never overlap or cross in thin parts.
  */
 import { offset, area, difference } from '../geometry/clip.js';
-import type { ExPolygon, Polygon } from '../geometry/types.js';
+import { UM_PER_MM, type ExPolygon, type Polygon } from '../geometry/types.js';
+import type { WallSet } from './types.js';
 import { gapLoops, type GapLoop } from './gap-loops.js';
 
 export type { GapLoop } from './gap-loops.js';
@@ -13,12 +14,12 @@ export type { GapLoop } from './gap-loops.js';
 export interface IslandWalls {
   /** The island's outline (the layer section), µm. */
   outline: ExPolygon;
-  /** wallLoops[k] are the closed centrelines of wall k (0 = outer), each ring as printed. */
-  wallLoops: Polygon[][];
+  /** The wall paths by index (classic: closed loops of the line width, and the gap loops). */
+  walls: WallSet[];
   /** The area inside the innermost wall's inner edge (where skin and infill go), µm. */
   inner: ExPolygon[];
-  /** Gap fill: thin loops (with their bead width, µm) for strips between walls too narrow for another wall. */
-  gapFill: GapLoop[];
+  /** Area too thin to print, mm². */
+  lostMm2: number;
 }
 
 /** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
@@ -40,14 +41,14 @@ function rings(areas: readonly ExPolygon[]): Polygon[] {
  * @param wallCount number of walls
  * @param lineWidthUm extrusion width, µm
  */
-export function computeWalls(islands: readonly ExPolygon[], wallCount: number, lineWidthUm: number): IslandWalls[] {
+export function classicWalls(islands: readonly ExPolygon[], wallCount: number, lineWidthUm: number): IslandWalls[] {
   const w = lineWidthUm;
   const out: IslandWalls[] = [];
   for (const island of islands) {
     const wallLoops: Polygon[][] = [];
     const gapFill: GapLoop[] = [];
     if (wallCount === 0) {
-      out.push({ outline: island, wallLoops, inner: [island], gapFill });
+      out.push({ outline: island, walls: [], inner: [island], lostMm2: 0 });
       continue;
     }
     const outer = offset([island], -w / 2);
@@ -68,7 +69,12 @@ export function computeWalls(islands: readonly ExPolygon[], wallCount: number, l
       wallLoops.push(rings(centre));
       inside = fit;
     }
-    out.push({ outline: island, wallLoops, inner: inside, gapFill });
+    const walls: WallSet[] = wallLoops.map((paths, wall) => ({ role: 'wall', wall, closed: true, paths, widths: null }));
+    if (gapFill.length) {
+      const widths = gapFill.map((g) => new Float64Array(g.loop.length).fill(g.widthUm / UM_PER_MM));
+      walls.push({ role: 'wall-gap', wall: 1, closed: true, paths: gapFill.map((g) => g.loop), widths });
+    }
+    out.push({ outline: island, walls, inner: inside, lostMm2: 0 });
   }
   return out;
 }

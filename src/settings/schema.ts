@@ -14,11 +14,12 @@ export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' |
  * An input a setting needs before it can change the output, beyond other settings (`onlyWith`):
  * `several-models` (arranging models on the bed), `off-centre-model` (a model not at the bed centre),
  * `thin-walls` (a part whose layers are walls only, so one layer ends next to where the next starts),
+ * `thin-features` (a part with fins and tapers thinner than its walls need, down to a fraction of a line),
  * `overhangs` (a part with overhangs: a bridge between two pillars, a cantilever over a ledge, a slope),
  * `custom-infill` (an IceSL shader or image infill: `customInfill`, `--infill-shader`,
  * `--infill-image`), `custom-image-infill` (an image infill).
  */
-export type SettingNeed = 'several-models' | 'off-centre-model' | 'thin-walls' | 'overhangs' | 'custom-infill' | 'custom-image-infill';
+export type SettingNeed = 'several-models' | 'off-centre-model' | 'thin-walls' | 'thin-features' | 'overhangs' | 'custom-infill' | 'custom-image-infill';
 
 interface Base {
   unit: Unit;
@@ -164,6 +165,13 @@ export const SCHEMA = {
   wallOrder: enm(['inner-first', 'outer-first'] as const, 'inner-first', 'walls', 'Print inner walls before the outer wall (better surface) or the outer wall first (better dimensions).'),
   seamPosition: enm(['aligned', 'nearest', 'rear', 'random'] as const, 'aligned', 'walls', 'Where each wall loop starts: aligned on a sharp corner, nearest to the nozzle, at the rear, or random (seeded).'),
   randomSeed: when(int(1, 0, 2147483647, '', 'walls', 'Seed for random seams: the same seed gives the same G-code.'), { seamPosition: 'random' }),
+  wallGenerator: enm(['variable', 'classic'] as const, 'variable', 'walls', 'How walls are laid: variable (lines whose width follows the part, so thin features print and walls never overlap or leave slivers, as PrusaSlicer\'s and CuraEngine\'s Arachne walls) or classic (fixed-width loops, with thin gap loops between them).'),
+  minFeatureSize: when(num(25, 1, 100, '%', 'walls', 'Thinnest feature printed, % of the nozzle diameter: thinner parts of the model are left out (and reported). Thicker ones get a line at least minBeadWidth wide.'), { wallGenerator: 'variable' }, 'thin-features'),
+  minBeadWidth: when(num(50, 10, 100, '%', 'walls', 'Narrowest line the variable walls lay, % of the nozzle diameter: a feature thinner than this (but at least minFeatureSize) gets a line this wide.'), { wallGenerator: 'variable' }, 'thin-features'),
+  maxBeadWidth: when(num(200, 100, 300, '%', 'walls', 'Widest line the variable walls lay, % of the nozzle diameter: a strip up to this wide is one line, a wider one two or more.'), { wallGenerator: 'variable' }, 'thin-features'),
+  wallTransitionLength: when(num(100, 10, 1000, '%', 'walls', 'Length over which the number of lines changes where the part widens or narrows, % of the nozzle diameter: a middle line shorter than this is not started.'), { wallGenerator: 'variable' }, 'thin-features'),
+  wallTransitionAngle: when(num(10, 1, 59, '°', 'walls', 'A wedge or corner sharper than this angle gets a middle line running into it; a blunter one does not (its walls meet instead).'), { wallGenerator: 'variable' }, 'thin-features'),
+  wallDistributionCount: when(int(1, 1, 20, 'count', 'walls', 'How many lines, counted from the middle, share a change of width where the part is thinner than its walls need; the outer ones keep the line width.'), { wallGenerator: 'variable' }, 'thin-features'),
 
   // ── skin ─────────────────────────────────────────────────────────────────────
   shellSkinThickness: num(0.8, 0, 20, 'mm', 'skin', 'Thickness of solid top and bottom skin; the layer count is this over the layer height, rounded up.'),

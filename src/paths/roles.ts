@@ -1,0 +1,148 @@
+/**
+ * The one role table: for every kind of path, where it prints within its group, which G-code feature it
+ * is, its speed and flow, how its runs over air print, and where its loops start. A path entry's style is
+ * resolved from this table once, where the entry is made (`entryStyle`); the planner, the estimate and the
+ * writer read the entry's style and never the role.
+ */
+import type { Config } from '../settings/resolve.js';
+
+export const FEATURE_TYPES = [
+  'WALL-OUTER',
+  'WALL-INNER',
+  'SKIN',
+  'FILL',
+  'BRIDGE',
+  'SUPPORT',
+  'SUPPORT-INTERFACE',
+  'SKIRT',
+  'BRIM',
+  'RAFT',
+] as const;
+/** Feature types, named as Cura's `;TYPE:` markers so viewers understand them. */
+export type FeatureType = (typeof FEATURE_TYPES)[number];
+
+/** How runs over air (PathEntry.overAir) print. */
+interface OverAirRule {
+  /** Without a feature of its own the run keeps the entry's and is only ever slowed down (never sped up). */
+  feature?: FeatureType;
+  speed: (cfg: Config) => number;
+  flow?: (cfg: Config) => number;
+  /** Part-cooling fan, 0..1. */
+  fan?: (cfg: Config) => number;
+}
+
+interface RoleRule {
+  /** Feature of the role; walls: of the outer wall (wall 0) and of the others. */
+  feature: FeatureType;
+  innerFeature?: FeatureType;
+  speed: (cfg: Config) => number;
+  innerSpeed?: (cfg: Config) => number;
+  overAir?: OverAirRule;
+  /** Loops start at the seam setting's place (`configured`) or wherever the nozzle is nearest. */
+  seam: 'configured' | 'nearest';
+}
+
+const BRIDGE: OverAirRule = {
+  feature: 'BRIDGE',
+  speed: (c) => c.bridgeSpeed,
+  flow: (c) => c.bridgeFlow / 100,
+  fan: (c) => c.bridgeFanSpeed / 100,
+};
+const OVERHANG_WALL: OverAirRule = { speed: (c) => c.overhangWallSpeed };
+
+/**
+ * Every role, in print order within a group (walls among themselves by the wallOrder setting, then by
+ * their index).
+ */
+export const ROLES = {
+  'raft-base': { feature: 'RAFT', speed: (c) => c.raftSpeed, seam: 'nearest' },
+  'raft-interface': { feature: 'RAFT', speed: (c) => c.raftSpeed, seam: 'nearest' },
+  'raft-surface': { feature: 'RAFT', speed: (c) => c.skinSpeed, seam: 'nearest' },
+  skirt: { feature: 'SKIRT', speed: (c) => c.firstLayerSpeed, seam: 'configured' },
+  brim: { feature: 'BRIM', speed: (c) => c.firstLayerSpeed, seam: 'configured' },
+  'support-floor': { feature: 'SUPPORT-INTERFACE', speed: (c) => c.supportInterfaceSpeed, seam: 'nearest' },
+  support: { feature: 'SUPPORT', speed: (c) => c.supportSpeed, seam: 'nearest' },
+  'support-roof': { feature: 'SUPPORT-INTERFACE', speed: (c) => c.supportInterfaceSpeed, seam: 'nearest' },
+  wall: {
+    feature: 'WALL-OUTER',
+    innerFeature: 'WALL-INNER',
+    speed: (c) => c.perimeterSpeed,
+    innerSpeed: (c) => c.innerWallSpeed,
+    overAir: OVERHANG_WALL,
+    seam: 'configured',
+  },
+  'wall-gap': { feature: 'WALL-INNER', speed: (c) => c.innerWallSpeed, seam: 'nearest' },
+  infill: { feature: 'FILL', speed: (c) => c.infillSpeed, seam: 'configured' },
+  'skin-wall': { feature: 'SKIN', speed: (c) => c.skinSpeed, overAir: BRIDGE, seam: 'configured' },
+  skin: { feature: 'SKIN', speed: (c) => c.skinSpeed, overAir: BRIDGE, seam: 'configured' },
+  'skin-gap': { feature: 'SKIN', speed: (c) => c.skinSpeed, seam: 'nearest' },
+} as const satisfies Record<string, RoleRule>;
+
+/** What a path is for. */
+export type PathRole = keyof typeof ROLES;
+export const PATH_ROLES = Object.keys(ROLES) as PathRole[];
+const RANK: Readonly<Record<PathRole, number>> = Object.fromEntries(PATH_ROLES.map((r, i) => [r, i])) as Record<PathRole, number>;
+
+/** How one run of extrusion prints. */
+export interface ExtrusionStyle {
+  feature: FeatureType;
+  /** Feed rate, mm/s. */
+  speed: number;
+  /** Flow multiplier (1 = nominal). */
+  flow: number;
+  /** Part-cooling fan for the run, 0..1, when it differs from the layer's (bridges). */
+  fan?: number;
+}
+
+/** An entry's resolved style. */
+export interface EntryStyle {
+  normal: ExtrusionStyle;
+  /** Runs over air; the same object as `normal` when they print no differently (then nothing is flagged). */
+  overAir: ExtrusionStyle;
+  seam: 'configured' | 'nearest';
+  /** Print order within a group (the role's rank). */
+  rank: number;
+}
+
+const cache = new WeakMap<Config, Map<string, EntryStyle>>();
+
+/** The style of a role's entries (walls: of wall `wall`), resolved once per config and shared. */
+export function entryStyle(cfg: Config, role: PathRole, wall?: number): EntryStyle {
+  let styles = cache.get(cfg);
+  if (!styles) cache.set(cfg, (styles = new Map()));
+  const key = wall === undefined ? role : role + wall;
+  let s = styles.get(key);
+  if (!s) styles.set(key, (s = makeStyle(cfg, role, wall)));
+  return s;
+}
+
+function makeStyle(cfg: Config, role: PathRole, wall: number | undefined): EntryStyle {
+  const rule: RoleRule = ROLES[role];
+  const inner = wall !== undefined && wall > 0;
+  const feature = inner && rule.innerFeature ? rule.innerFeature : rule.feature;
+  const speed = (inner && rule.innerSpeed ? rule.innerSpeed : rule.speed)(cfg);
+  const normal: ExtrusionStyle = { feature, speed, flow: 1 };
+  let overAir = normal;
+  const air = rule.overAir;
+  if (air) {
+    const airSpeed = air.speed(cfg);
+    const a: ExtrusionStyle = {
+      feature: air.feature ?? feature,
+      // a run that keeps its feature is only ever slowed down
+      speed: air.feature ? airSpeed : Math.min(speed, airSpeed),
+      flow: air.flow ? air.flow(cfg) : 1,
+    };
+    if (air.fan) a.fan = air.fan(cfg);
+    const same = a.feature === normal.feature && a.speed === normal.speed && a.flow === normal.flow && a.fan === undefined;
+    if (!same) overAir = a;
+  }
+  return { normal, overAir, seam: rule.seam, rank: RANK[role] };
+}
+
+/** Whether the parts of an entry's paths over air print any differently (else they are not marked at all). */
+export function overAirMatters(style: EntryStyle): boolean {
+  return style.overAir !== style.normal;
+}
+
+/** Groups of a layer print in this order; islands among themselves nearest-first. */
+export const GROUP_ORDER = ['adhesion', 'support', 'island'] as const;

@@ -1,0 +1,14 @@
+/**
+ * The walls of a layer's islands, by the `wallGenerator` setting: variable-width walls (variable-walls.ts)
+ * or classic fixed-width loops (walls.ts).
+ */
+import type { ExPolygon } from '../geometry/types.js';
+import type { Config } from '../settings/resolve.js';
+import { variableWalls } from './variable-walls.js';
+import { classicWalls, type IslandWalls } from './walls.js';
+
+export type { IslandWalls } from './walls.js';
+
+export function computeWalls(islands: readonly ExPolygon[], cfg: Config, lineWidthUm: number): IslandWalls[] {
+  return cfg.wallGenerator === 'classic' || cfg.walls === 0 ? classicWalls(islands, cfg.walls, lineWidthUm) : variableWalls(islands, cfg, lineWidthUm);
+}
