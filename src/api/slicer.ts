@@ -9,7 +9,7 @@ import { imageDecodeBytes } from '../shader/image.js';
 import { StrataError } from '../errors.js';
 import { MiB, prepareModelSteps, type PreparedModel } from './prepare-model.js';
 import { Pacer } from '../pipeline/pacer.js';
-import { runPipeline, type Progress } from '../pipeline/run.js';
+import { runPipeline, type Progress, type ThinLoss } from '../pipeline/run.js';
 import type { PrintPlan } from '../plan/types.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 import { isTransferable, loadCustomInfill, loadedCustomInfill } from '../pipeline/custom-infill-loader.js';
@@ -28,6 +28,8 @@ export interface SliceStats {
   /** Extents of the printed part, mm. */
   bounds: { minX: number; minY: number; minZ: number; maxX: number; maxY: number; maxZ: number };
   threads: number;
+  /** Layers with parts too thin for any wall line (thinner than minFeatureSize), which are left out. */
+  thinLost: ThinLoss[];
 }
 
 export interface SliceResult {
@@ -221,9 +223,26 @@ export class Slicer {
       sliceSeconds: (performance.now() - t0) / 1000,
       bounds: run.plan.bounds,
       threads,
+      thinLost: run.thinLost,
     };
-    return { plan: run.plan, stats, warnings: model.warnings };
+    const thin = thinLossWarning(run.thinLost, cfg);
+    return { plan: run.plan, stats, warnings: thin ? [...model.warnings, thin] : model.warnings };
   }
+}
+
+/** Left-out area below which no warning is given, mm²: specks, not features. */
+const THIN_LOSS_WARN_MM2 = 0.05;
+
+/** One line saying what was too thin to print, where and how much, or null when it is only specks. */
+export function thinLossWarning(lost: readonly ThinLoss[], cfg: Config): string | null {
+  let total = 0;
+  for (const l of lost) total += l.areaMm2;
+  if (lost.length === 0 || total < THIN_LOSS_WARN_MM2) return null;
+  const first = lost[0], last = lost[lost.length - 1];
+  const layers = lost.length === 1 ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)` : `${lost.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
+  const min = ((cfg.minFeatureSize / 100) * cfg.nozzleDiameter).toFixed(2);
+  const why = cfg.wallGenerator === 'classic' ? 'thinner than a line' : `thinner than minFeatureSize (${min} mm)`;
+  return `${total.toFixed(2)} mm² of the model's sections is too thin to print (${why}) and is left out, on ${layers}`;
 }
 
 /** An infill image that would take more than inflateBudget to decode is refused before it is decoded. */

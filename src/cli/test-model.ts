@@ -96,21 +96,33 @@ export function overhangPart(): Uint8Array {
 }
 
 /**
- * Thin features, as binary STL: standing fins 8 mm long and 3 mm tall, 0.25 to 1.4 mm thick, 3 mm apart,
- * and a wedge tapering from 2 mm to nothing over 10 mm (for the variable-width wall settings).
+ * Thin features, as binary STL: standing fins 8 mm long and 3 mm tall, 0.25 to 1.8 mm thick, 3 mm apart; a
+ * 1 mm wall with a 1.4 mm bulge 2 mm long in its middle; and a wedge tapering from 2 mm to nothing over 10 mm
+ * (for the variable-width wall settings).
  */
 export function thinFeatures(): Uint8Array {
   const tris: Tri[] = [];
   let x = 0;
-  for (const t of [0.25, 0.35, 0.5, 0.7, 1.0, 1.4]) {
+  for (const t of [0.25, 0.35, 0.5, 0.7, 1.0, 1.4, 1.8]) {
     tris.push(...boxTris(x, 0, 0, x + t, 8, 3));
     x += t + 3;
   }
-  // the wedge: a triangle prism from (x, 0)–(x + 2, 0) to its tip at (x + 1, 10)
-  const a = [x, 0], b = [x + 2, 0], c = [x + 1, 10];
-  const top = (p: number[]) => [p[0], p[1], 3];
-  const bot = (p: number[]) => [p[0], p[1], 0];
-  tris.push([...bot(a), ...bot(c), ...bot(b)], [...top(a), ...top(b), ...top(c)]);
-  for (const [p, q] of [[a, b], [b, c], [c, a]]) tris.push([...bot(p), ...bot(q), ...top(q)], [...bot(p), ...top(q), ...top(p)]);
+  const bulge: [number, number][] = [[x, 0], [x + 1, 0], [x + 1, 3], [x + 1.2, 3], [x + 1.2, 5], [x + 1, 5], [x + 1, 8], [x, 8], [x, 5], [x - 0.2, 5], [x - 0.2, 3], [x, 3]];
+  tris.push(...starPrism(bulge, [x + 0.5, 4], 3));
+  x += 4;
+  tris.push(...starPrism([[x, 0], [x + 2, 0], [x + 1, 10]], [x + 1, 3], 3));
   return binaryStl(tris);
+}
+
+/** A prism `height` tall over a counter-clockwise polygon that every vertex of sees `centre` (a fan from it covers the polygon). */
+function starPrism(ring: readonly [number, number][], centre: [number, number], height: number): Tri[] {
+  const out: Tri[] = [];
+  const n = ring.length;
+  for (let i = 0; i < n; i++) {
+    const [ax, ay] = ring[i], [bx, by] = ring[(i + 1) % n];
+    out.push([centre[0], centre[1], 0, bx, by, 0, ax, ay, 0]); // bottom, facing down
+    out.push([centre[0], centre[1], height, ax, ay, height, bx, by, height]); // top
+    out.push([ax, ay, 0, bx, by, 0, bx, by, height], [ax, ay, 0, bx, by, height, ax, ay, height]); // side
+  }
+  return out;
 }

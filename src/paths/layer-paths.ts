@@ -57,7 +57,7 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
       );
     }
   }
-  return {
+  const out: LayerPaths = {
     index: regions.index,
     z: regions.z + ctx.zOffset,
     height: regions.height,
@@ -65,6 +65,10 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
     lineWidth: w / 1000,
     groups,
   };
+  let lost = 0;
+  for (const island of regions.islands) lost += island.lostMm2;
+  if (lost > 0) out.lostMm2 = lost;
+  return out;
 }
 
 /**

@@ -60,5 +60,7 @@ export interface PathGroup {
 export interface LayerPaths extends LayerZ {
   /** Nominal line width of the layer, mm. */
   lineWidth: number;
+  /** Area of the layer's islands too thin for any wall line (left out), mm²; absent when none. */
+  lostMm2?: number;
   groups: PathGroup[];
 }

@@ -59,6 +59,15 @@ export interface RunResult {
   plan: PrintPlan;
   estimate: PlanEstimate;
   layers: number;
+  /** Layers with parts too thin for any wall line, which are left out: layer number, Z (mm) and area (mm²). */
+  thinLost: ThinLoss[];
+}
+
+/** Area of one layer left out as too thin to print. */
+export interface ThinLoss {
+  layer: number;
+  z: number;
+  areaMm2: number;
 }
 
 function bedCentre(cfg: Config): Pt {
@@ -201,7 +210,11 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     // planned in order as they arrive, while later ones are still being computed.
     const state = { at: { x: 0, y: 0 } as Pt };
     const planned: LayerPlan[] = [];
-    const plan = (lp: LayerPaths) => planned.push(planLayer(lp, cfg, state, planned.length));
+    const thinLost: ThinLoss[] = [];
+    const plan = (lp: LayerPaths) => {
+      if (lp.lostMm2) thinLost.push({ layer: planned.length, z: lp.z, areaMm2: lp.lostMm2 });
+      planned.push(planLayer(lp, cfg, state, planned.length));
+    };
     let jobs: RangeJob[] = [];
     if (twoPhase) {
       const pattern = PATTERNS[cfg.infillPattern as PatternId];
@@ -309,7 +322,7 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
     await pacer.run(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
-    return { plan: printPlan, estimate, layers: planned.length };
+    return { plan: printPlan, estimate, layers: planned.length, thinLost };
   } finally {
     await pool?.close();
   }

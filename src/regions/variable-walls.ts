@@ -1,7 +1,464 @@
-import type { ExPolygon } from '../geometry/types.js';
+/**
+ * Variable-width walls: lines whose width follows the part, so thin features print, walls never overlap and
+ * no sliver too thin for a line is left between them.
+ *
+ * Per island, wall by wall from the outside in:
+ * - wall k is a loop of the line width wherever the area still to fill (`inside`) is at least two line
+ *   widths thick: its outer edge is the opening of `inside` by one width, its centreline half a width in;
+ * - what that loop cannot reach (necks and strips of `inside` thinner than two widths: thin fins, the middle
+ *   of a wall a little thicker than its loops) is the leftover of level k. Its medial axis (a centre line
+ *   with the local half-thickness, medial-axis.ts) says what to do with it, point by point:
+ *   - thinner than `minFeatureSize`: nothing prints there (reported as lost area when no wall is beside it);
+ *   - thinner than the middle-line threshold and lying against wall k's loops: the walls beside it absorb
+ *     it, each side's `wallDistributionCount` innermost walls widening by their share and moving towards it
+ *     (as Arachne's distributed beading does), so a 1.0 mm wall prints as two 0.5 mm lines rather than two
+ *     0.4 mm lines and a 0.2 mm one;
+ *   - otherwise: one middle line along the medial axis, as wide as the strip there (clamped to the minimum
+ *     and maximum bead width);
+ * - after the last wall, necks of the inner area thinner than one line are leftovers of the same kind, so
+ *   skin and infill are left only areas they can fill.
+ * Wedges and corners blunter than `wallTransitionAngle` get no middle line into their tip (their walls meet
+ * there instead): the medial axis prunes such branches.
+ */
+import { area, difference, offset, opening } from '../geometry/clip.js';
+import { medialAxis, type MedialChain } from '../geometry/medial-axis.js';
+import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
-import { classicWalls, type IslandWalls } from './walls.js';
+import { stripWidth } from './strip-width.js';
+import type { WallSet } from './types.js';
+import type { IslandWalls } from './walls.js';
 
+/** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
+const MIN_LOOP_AREA_UM2 = 50 * 50;
+/** Leftover pieces with less area than this (µm²) are specks: not worth a medial axis. */
+const MIN_PIECE_AREA_UM2 = 20 * 20;
+/**
+ * Longest boundary sample spacing of the medial axis, µm: it refines the spacing itself to a fraction of
+ * the local thickness, so thin strips get dense samples and this only bounds the wide parts.
+ */
+const AXIS_SAMPLE_UM = 200;
+const AXIS_MIN_SAMPLE_UM = 30;
+/** Leftover slivers thinner than this (µm) are the seams of offsets that do not quite meet, not features. */
+const SLIVER_UM = 40;
+/** A strip narrower than this fraction of the line width is absorbed by the walls beside it, not given a line of its own. */
+const MIDDLE_LINE_FRACTION = 0.75;
+/** Loop edges longer than this (µm) are split before widening, so a widening follows the strip beside it. */
+const WIDEN_STEP_UM = 250;
+
+/** The resolved limits, µm. */
+interface Limits {
+  /** Line width. */
+  w: number;
+  minFeature: number;
+  minBead: number;
+  maxBead: number;
+  /** Strips at least this thick get a middle line; thinner ones next to a wall widen it. */
+  middle: number;
+  /** Middle lines shorter than this are not started. */
+  minLength: number;
+  pruneAngleDeg: number;
+  /** Walls on each side that share a strip's width. */
+  distribution: number;
+}
+
+function limitsOf(cfg: Config, w: number): Limits {
+  const nozzle = cfg.nozzleDiameter * UM_PER_MM;
+  const minFeature = (cfg.minFeatureSize / 100) * nozzle;
+  const minBead = Math.max(minFeature, (cfg.minBeadWidth / 100) * nozzle);
+  return {
+    w,
+    minFeature,
+    minBead,
+    maxBead: Math.max(minBead, (cfg.maxBeadWidth / 100) * nozzle),
+    middle: Math.max(minFeature, MIDDLE_LINE_FRACTION * w),
+    minLength: (cfg.wallTransitionLength / 100) * nozzle,
+    pruneAngleDeg: cfg.wallTransitionAngle,
+    distribution: cfg.wallDistributionCount,
+  };
+}
+
+function rings(areas: readonly ExPolygon[]): Polygon[] {
+  const out: Polygon[] = [];
+  for (const a of areas) {
+    if (Math.abs(area([a])) < MIN_LOOP_AREA_UM2) continue;
+    out.push(a.outer);
+    for (const h of a.holes) out.push(h);
+  }
+  return out;
+}
+
+/** A point of a leftover's medial axis that the walls beside it absorb. */
+interface Absorbed {
+  x: number;
+  y: number;
+  /** Half the strip's thickness there, µm. */
+  r: number;
+}
+
+/** An absorbed point as one wall sees it: `j` walls out from the strip, sharing it among `c` walls. */
+interface Share extends Absorbed {
+  j: number;
+  c: number;
+}
+
+/** Absorbed points by grid cell, for the loops' look-ups. */
+class PointGrid {
+  readonly #cell: number;
+  readonly #cells = new Map<number, Share[]>();
+  constructor(cell: number) {
+    this.#cell = cell;
+  }
+  #key(cx: number, cy: number): number {
+    return (cx + 32768) * 65536 + (cy + 32768);
+  }
+  add(p: Share): void {
+    const k = this.#key(Math.floor(p.x / this.#cell), Math.floor(p.y / this.#cell));
+    const list = this.#cells.get(k);
+    if (list) list.push(p);
+    else this.#cells.set(k, [p]);
+  }
+  get size(): number {
+    return this.#cells.size;
+  }
+  /** The point nearest (x, y) within `reach` µm, or null. */
+  nearest(x: number, y: number, reach: number): Share | null {
+    const c = this.#cell;
+    const x0 = Math.floor((x - reach) / c), x1 = Math.floor((x + reach) / c);
+    const y0 = Math.floor((y - reach) / c), y1 = Math.floor((y + reach) / c);
+    let best: Share | null = null;
+    let bd = reach * reach;
+    for (let cx = x0; cx <= x1; cx++) {
+      for (let cy = y0; cy <= y1; cy++) {
+        const list = this.#cells.get(this.#key(cx, cy));
+        if (!list) continue;
+        for (const p of list) {
+          const d = (p.x - x) ** 2 + (p.y - y) ** 2;
+          if (d <= bd) {
+            bd = d;
+            best = p;
+          }
+        }
+      }
+    }
+    return best;
+  }
+}
+
+/** A middle line: open or closed, with a width per point (µm). */
+interface Bead {
+  points: Pt[];
+  widths: number[];
+  closed: boolean;
+}
+
+/** What one level's leftover becomes: middle lines, points the loops absorb, and area lost. */
+interface LeftoverResult {
+  beads: Bead[];
+  absorbed: Absorbed[];
+  lostUm2: number;
+}
+
+/** Distance from (x, y) to the nearest point of the rings, µm, if within `reach`; else Infinity. */
+function nearRings(x: number, y: number, loops: readonly Polygon[], reach: number): number {
+  let best = Infinity;
+  const r2 = reach * reach;
+  for (const ring of loops) {
+    for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
+      const a = ring[j], b = ring[i];
+      // cheap box rejection
+      if (Math.min(a.x, b.x) - reach > x || Math.max(a.x, b.x) + reach < x || Math.min(a.y, b.y) - reach > y || Math.max(a.y, b.y) + reach < y) continue;
+      const dx = b.x - a.x, dy = b.y - a.y;
+      const len2 = dx * dx + dy * dy;
+      let t = len2 > 0 ? ((x - a.x) * dx + (y - a.y) * dy) / len2 : 0;
+      t = t < 0 ? 0 : t > 1 ? 1 : t;
+      const ex = a.x + t * dx - x, ey = a.y + t * dy - y;
+      const d2 = ex * ex + ey * ey;
+      if (d2 <= r2 && d2 < best * best) best = Math.sqrt(d2);
+    }
+  }
+  return best;
+}
+
+/**
+ * The leftover of one level: each medial-axis point is printed as a middle line, absorbed by the loops
+ * beside it (`loops`, the level's wall centrelines, when it lies against them), or lost.
+ */
+function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], L: Limits): LeftoverResult {
+  const out: LeftoverResult = { beads: [], absorbed: [], lostUm2: 0 };
+  // slivers thinner than SLIVER_UM (where offsets do not quite meet) are no feature: gone before the axis
+  const real = opening(pieces, SLIVER_UM / 2).filter((p) => Math.abs(area([p])) >= MIN_PIECE_AREA_UM2);
+  if (real.length === 0) return out;
+  for (const piece of real) {
+    // samples about a third of the piece's typical thickness apart: most pieces need no second pass
+    const sampleUm = Math.max(AXIS_MIN_SAMPLE_UM, Math.min(AXIS_SAMPLE_UM, stripWidth(piece) / 3));
+    for (const chain of medialAxis([piece], { pruneAngleDeg: L.pruneAngleDeg, sampleUm })) classify(chain, loops, L, out);
+  }
+  return out;
+}
+
+const PRINT = 1, ABSORB = 2, LOST = 0;
+
+/** Medial-axis edges are split into pieces no longer than this (µm), so a line starts where the strip gets thick enough. */
+const AXIS_STEP_UM = 100;
+
+/** The chain with its edges split every AXIS_STEP_UM at most, radii interpolated. */
+function resample(chain: MedialChain): { points: Pt[]; radii: number[]; closed: boolean } {
+  const { points, radii, closed } = chain;
+  const n = points.length;
+  const pts: Pt[] = [];
+  const rs: number[] = [];
+  const edges = closed ? n : n - 1;
+  for (let e = 0; e < edges; e++) {
+    const a = points[e], b = points[(e + 1) % n];
+    const ra = radii[e], rb = radii[(e + 1) % n];
+    const parts = Math.max(1, Math.ceil(dist(a, b) / AXIS_STEP_UM));
+    for (let k = 0; k < parts; k++) {
+      pts.push(k === 0 ? a : { x: Math.round(a.x + ((b.x - a.x) * k) / parts), y: Math.round(a.y + ((b.y - a.y) * k) / parts) });
+      rs.push(ra + ((rb - ra) * k) / parts);
+    }
+  }
+  if (!closed) {
+    pts.push(points[n - 1]);
+    rs.push(radii[n - 1]);
+  }
+  return { points: pts, radii: rs, closed };
+}
+
+function classify(chain: MedialChain, loops: readonly Polygon[], L: Limits, out: LeftoverResult): void {
+  const { points, radii, closed } = resample(chain);
+  const n = points.length;
+  if (n < 2) return;
+  const kind = new Uint8Array(n);
+  for (let i = 0; i < n; i++) {
+    const g = 2 * radii[i];
+    if (g < L.minFeature) {
+      // too thin to print: still absorbed where a wall lies beside it
+      kind[i] = loops.length && nearRings(points[i].x, points[i].y, loops, radii[i] + L.w / 2 + L.w / 4) < Infinity ? ABSORB : LOST;
+    } else if (g < L.middle && loops.length && nearRings(points[i].x, points[i].y, loops, radii[i] + L.w / 2 + L.w / 4) < Infinity) {
+      kind[i] = ABSORB;
+    } else kind[i] = PRINT;
+  }
+  const edges = closed ? n : n - 1;
+  for (let i = 0; i < n; i++) if (kind[i] === ABSORB) out.absorbed.push({ x: points[i].x, y: points[i].y, r: radii[i] });
+  // lost area: edges with both ends lost
+  for (let e = 0; e < edges; e++) {
+    const a = e, b = (e + 1) % n;
+    if (kind[a] === LOST && kind[b] === LOST) out.lostUm2 += dist(points[a], points[b]) * (radii[a] + radii[b]);
+  }
+  // runs of printed points become middle lines
+  const all = kind.every((k) => k === PRINT);
+  if (all && closed) {
+    out.beads.push({ points: points.slice(), widths: radii.map((r) => beadWidth(2 * r, L)), closed: true });
+    return;
+  }
+  // start a closed chain's walk at a point that is not printed, so no run is split across its end
+  let start = 0;
+  if (closed) while (start < n && kind[start] === PRINT) start++;
+  let run: number[] = [];
+  const flush = () => {
+    if (run.length >= 2) {
+      const pts = run.map((k) => points[k]);
+      let len = 0;
+      for (let k = 1; k < pts.length; k++) len += dist(pts[k - 1], pts[k]);
+      if (len >= L.minLength || touchesEnd(run, n, closed)) out.beads.push({ points: pts, widths: run.map((k) => beadWidth(2 * radii[k], L)), closed: false });
+      else for (let k = 1; k < run.length; k++) out.lostUm2 += dist(points[run[k - 1]], points[run[k]]) * (radii[run[k - 1]] + radii[run[k]]);
+    }
+    run = [];
+  };
+  const steps = closed ? n + 1 : n;
+  for (let s = 0; s < steps; s++) {
+    const k = (start + s) % n;
+    if (kind[k] === PRINT) run.push(k);
+    else flush();
+  }
+  flush();
+}
+
+/** A run that reaches an open chain's end is a whole thin feature's line: kept however short. */
+function touchesEnd(run: readonly number[], n: number, closed: boolean): boolean {
+  return !closed && (run[0] === 0 || run[run.length - 1] === n - 1);
+}
+
+function beadWidth(g: number, L: Limits): number {
+  return g < L.minBead ? L.minBead : g > L.maxBead ? L.maxBead : g;
+}
+
+function dist(a: Pt, b: Pt): number {
+  return Math.sqrt((a.x - b.x) ** 2 + (a.y - b.y) ** 2);
+}
+
+/**
+ * Loops of the line width that absorb the strips beside them. A strip 2r thick is shared by the c walls
+ * nearest it on each side (wallDistributionCount, at most as many as there are): each widens by r / c, and
+ * each moves towards the strip by what the walls outside it gained plus half its own gain, so the outer
+ * surface stays where it is. A loop point takes the share of the absorbed point nearest it, when that point
+ * lies where a strip beside this wall would be. Long edges are split first so the widening follows the
+ * strip. Returns the loops and their widths (null for a loop that absorbs nothing).
+ */
+function widenLoops(loops: readonly Polygon[], grid: PointGrid | null, L: Limits, reach: number): { paths: Polygon[]; widths: (Float64Array | null)[] } {
+  if (!grid || grid.size === 0) return { paths: loops.slice(), widths: loops.map(() => null) };
+  const paths: Polygon[] = [];
+  const widths: (Float64Array | null)[] = [];
+  for (const loop of loops) {
+    const dense = subdivide(loop, WIDEN_STEP_UM);
+    const ws = new Float64Array(dense.length);
+    let any = false;
+    const moved: Pt[] = new Array(dense.length);
+    for (let i = 0; i < dense.length; i++) {
+      const p = dense[i];
+      const q = grid.nearest(p.x, p.y, reach);
+      // the strip lies against this wall when its axis is about half a line plus its half-thickness away
+      const d = q ? Math.sqrt((q.x - p.x) ** 2 + (q.y - p.y) ** 2) : Infinity;
+      if (q && d <= L.w / 2 + q.j * L.w + q.r + L.w / 4) {
+        const shift = Math.min(((2 * (q.c - 1 - q.j) + 1) * q.r) / (2 * q.c), d);
+        moved[i] = d > 0 ? { x: Math.round(p.x + ((q.x - p.x) / d) * shift), y: Math.round(p.y + ((q.y - p.y) / d) * shift) } : p;
+        ws[i] = (L.w + q.r / q.c) / UM_PER_MM;
+        any = true;
+      } else {
+        moved[i] = p;
+        ws[i] = L.w / UM_PER_MM;
+      }
+    }
+    if (!any) {
+      paths.push(loop);
+      widths.push(null);
+      continue;
+    }
+    const kept = dropStraight(moved, ws);
+    paths.push(kept.points);
+    widths.push(kept.widths);
+  }
+  return { paths, widths };
+}
+
+/** Points closer than this (µm) to the line through their neighbours, with a width within WIDTH_TOL_MM of theirs interpolated, add nothing. */
+const STRAIGHT_TOL_UM = 3;
+const WIDTH_TOL_MM = 0.002;
+
+/** A loop without the points that lie on the straight line between their neighbours at the width between theirs. */
+function dropStraight(points: Polygon, widths: Float64Array): { points: Polygon; widths: Float64Array } {
+  const n = points.length;
+  if (n < 4) return { points, widths };
+  const keep = new Uint8Array(n).fill(1);
+  let prev = n - 1;
+  for (let i = 0; i < n; i++) {
+    const next = (i + 1) % n;
+    const a = points[prev], b = points[i], c = points[next];
+    const dx = c.x - a.x, dy = c.y - a.y;
+    const len = Math.sqrt(dx * dx + dy * dy);
+    if (len > 0) {
+      const off = Math.abs((b.x - a.x) * dy - (b.y - a.y) * dx) / len;
+      const t = ((b.x - a.x) * dx + (b.y - a.y) * dy) / (len * len);
+      const w = widths[prev] + t * (widths[next] - widths[prev]);
+      if (off <= STRAIGHT_TOL_UM && t > 0 && t < 1 && Math.abs(w - widths[i]) <= WIDTH_TOL_MM) {
+        keep[i] = 0;
+        continue;
+      }
+    }
+    prev = i;
+  }
+  const pts: Pt[] = [];
+  const ws: number[] = [];
+  for (let i = 0; i < n; i++) {
+    if (!keep[i]) continue;
+    pts.push(points[i]);
+    ws.push(widths[i]);
+  }
+  return { points: pts, widths: Float64Array.from(ws) };
+}
+
+/** The ring with edges longer than `step` split evenly. */
+function subdivide(ring: Polygon, step: number): Polygon {
+  const out: Pt[] = [];
+  for (let i = 0; i < ring.length; i++) {
+    const a = ring[i], b = ring[(i + 1) % ring.length];
+    out.push(a);
+    const len = dist(a, b);
+    const parts = Math.ceil(len / step);
+    for (let k = 1; k < parts; k++) out.push({ x: Math.round(a.x + ((b.x - a.x) * k) / parts), y: Math.round(a.y + ((b.y - a.y) * k) / parts) });
+  }
+  return out;
+}
+
+/** One wall level of an island. */
+interface Level {
+  /** Wall k's loops (centrelines). */
+  loops: Polygon[];
+  /** Middle lines inside wall k - 1 (wall k's own index). */
+  beads: Bead[];
+  /** Points of strips beside these loops, which they absorb. */
+  absorbed: Absorbed[];
+  lostUm2: number;
+}
+
+/** Level k's leftover: its middle lines go to level k, what wall k - 1's loops absorb to level k - 1. */
+function takeLeftover(levels: Level[], k: number, rest: readonly ExPolygon[], L: Limits): void {
+  const outer = k > 0 ? levels[k - 1] : null;
+  const left = leftover(rest, outer ? outer.loops : [], L);
+  levels[k].beads.push(...left.beads);
+  levels[k].lostUm2 += left.lostUm2;
+  if (outer) outer.absorbed.push(...left.absorbed);
+}
+
+/** The walls of one island. */
+function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWalls {
+  const w = L.w;
+  const walls: WallSet[] = [];
+  let lostUm2 = 0;
+  let inside: ExPolygon[] = [island];
+  /** Each level's loops (centrelines), the middle lines of its leftover, and the strips its loops absorb. */
+  const levels: Level[] = [];
+  for (let k = 0; k < wallCount && inside.length > 0; k++) {
+    const fit = offset(inside, -w);
+    const band = fit.length ? offset(fit, w) : [];
+    const loops = fit.length ? rings(offset(fit, w / 2)) : [];
+    // what wall k's loops cannot reach lies between the sides of wall k - 1 (or is the part's outside)
+    const rest = band.length ? difference(inside, band) : inside;
+    levels.push({ loops, beads: [], absorbed: [], lostUm2: 0 });
+    if (rest.length) takeLeftover(levels, k, rest, L);
+    inside = fit;
+  }
+  // the inner area's necks thinner than a line are the last walls' to fill, not skin's or infill's
+  if (inside.length && levels.length) {
+    const kept = opening(inside, w / 2);
+    const rest = difference(inside, kept);
+    if (rest.length) {
+      levels.push({ loops: [], beads: [], absorbed: [], lostUm2: 0 });
+      takeLeftover(levels, levels.length - 1, rest, L);
+    }
+    inside = kept;
+  }
+  for (const level of levels) lostUm2 += level.lostUm2;
+  const levelCount = levels.length;
+  levels.forEach((level, k) => {
+    // the strips this level's loops share: its own (j = 0) and those of the next c - 1 levels inwards
+    let grid: PointGrid | null = null;
+    let reach = 0;
+    for (let j = 0; j < L.distribution && k + j < levelCount; j++) {
+      const c = Math.min(L.distribution, k + j + 1);
+      for (const p of levels[k + j].absorbed) {
+        grid ??= new PointGrid(w);
+        grid.add({ ...p, j, c });
+        reach = Math.max(reach, w / 2 + j * w + p.r + w / 4);
+      }
+    }
+    if (level.loops.length) {
+      const { paths, widths } = widenLoops(level.loops, grid, L, reach);
+      walls.push({ role: 'wall', wall: k, closed: true, paths, widths: widths.some((x) => x) ? widths : null });
+    }
+    const open = level.beads.filter((b) => !b.closed);
+    const closedBeads = level.beads.filter((b) => b.closed);
+    const toMm = (b: Bead) => Float64Array.from(b.widths, (x) => x / UM_PER_MM);
+    // a middle line of the first level is the part's outside: the outer wall
+    const wall = Math.min(k, wallCount - 1);
+    if (open.length) walls.push({ role: 'wall', wall, closed: false, paths: open.map((b) => b.points), widths: open.map(toMm) });
+    if (closedBeads.length) walls.push({ role: 'wall', wall, closed: true, paths: closedBeads.map((b) => b.points), widths: closedBeads.map(toMm) });
+  });
+  return { outline: island, walls, inner: inside, lostMm2: lostUm2 / (UM_PER_MM * UM_PER_MM) };
+}
+
+/** Variable-width walls of each island (see the file's comment). */
 export function variableWalls(islands: readonly ExPolygon[], cfg: Config, lineWidthUm: number): IslandWalls[] {
-  return classicWalls(islands, cfg.walls, lineWidthUm);
+  const L = limitsOf(cfg, lineWidthUm);
+  return islands.map((island) => islandWalls(island, cfg.walls, L));
 }
