@@ -9,13 +9,18 @@
  * first-layer temperatures from the others.
  *
  * Units: Cura's extra prime after a retraction is a volume (mm³), turned into filament length.
+ *
+ * Walls: Cura 5 always lays variable-width (Arachne) walls; a profile with its Arachne keys is Strata's
+ * variable walls. Its minimum feature size, minimum thin wall line width and transition length are mm,
+ * turned into % of `machine_nozzle_size` (Strata's default nozzle when the profile has none). Cura 4
+ * has none of these keys.
  */
 import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
 import type { Settings } from '../schema.js';
 import { SCHEMA } from '../schema.js';
 import type { ImportContext } from './context.js';
 import { translateTemplate } from './templates.js';
-import { bool, text, tipSpacingOfDensity } from './values.js';
+import { bool, percentOfNozzle, text, tipSpacingOfDensity } from './values.js';
 
 const INFILL: Readonly<Record<string, PatternId>> = {
   grid: 'grid', lines: 'lines', zigzag: 'lines', triangles: 'triangles', trihexagon: 'triangles', cubic: 'cubic', cubicsubdiv: 'cubic',
@@ -205,6 +210,15 @@ export function mapCuraKeys(c: ImportContext): void {
   const seam = str('z_seam_type');
   if (seam !== undefined) c.set('seamPosition', SEAM[seam], 'z_seam_type', `seam "${seam}" has no Strata equivalent`);
   take('skinOverlap', ['skin_overlap']);
+  // variable-width walls (Cura 5): mm → % of the nozzle
+  const arachne = ['min_feature_size', 'min_bead_width', 'wall_transition_length', 'wall_transition_angle', 'wall_distribution_count'].find((k) => c.has(k));
+  if (arachne !== undefined) c.set('wallGenerator', 'variable', arachne);
+  const nozzle = c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number);
+  take('minFeatureSize', ['min_feature_size'], (mm) => percentOfNozzle(mm, nozzle));
+  take('minBeadWidth', ['min_bead_width'], (mm) => percentOfNozzle(mm, nozzle));
+  take('wallTransitionLength', ['wall_transition_length'], (mm) => percentOfNozzle(mm, nozzle));
+  take('wallTransitionAngle', ['wall_transition_angle']);
+  take('wallDistributionCount', ['wall_distribution_count'], (v) => Math.round(v));
 
   // infill
   take('infillDensity', ['infill_sparse_density']);

@@ -25,13 +25,18 @@
  *   top"; the XY distance may be a percentage of the external perimeter width (taken over the nozzle); the
  *   tree's branch density becomes the tip spacing (a support line's width over it).
  *   PrusaSlicer's `dont_support_bridges` has no span: it is reported, for `supportSkipBridges` to be set.
+ * - Walls: the perimeter generator (OrcaSlicer's `wall_generator`) arachne is Strata's variable walls,
+ *   classic its classic ones. Arachne's minimum feature size, minimum perimeter width and transition
+ *   length are % of the nozzle diameter in Strata: PrusaSlicer and SuperSlicer write them in % of the
+ *   nozzle or in mm (turned into % of the profile's nozzle), OrcaSlicer in % only (a bare number is %).
+ *   PrusaSlicer's `thin_walls` (the classic generator's thin-wall detection) has no Strata equivalent.
  */
 import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
 import type { Settings } from '../schema.js';
 import { SCHEMA } from '../schema.js';
 import type { ImportContext } from './context.js';
 import { translateTemplate } from './templates.js';
-import { bool, first, num, numOrPercent, percent, points, text, tipSpacingOfDensity } from './values.js';
+import { bool, first, num, numOrPercent, percent, percentOfNozzle, points, text, tipSpacingOfDensity } from './values.js';
 
 export type Slic3rFlavor = 'prusaslicer' | 'superslicer' | 'orcaslicer';
 
@@ -52,6 +57,7 @@ const INFILL: Readonly<Record<string, PatternId>> = {
   supportcubic: 'cubic', honeycomb: 'hexagons', '3dhoneycomb': 'hexagons', gyroid: 'gyroid', concentric: 'concentric',
   archimedeanchords: 'spiral', octagramspiral: 'spiral', lightning: 'lightning',
 };
+const WALL_GENERATOR: Readonly<Record<string, Settings['wallGenerator']>> = { arachne: 'variable', classic: 'classic' };
 const SEAM: Readonly<Record<string, Settings['seamPosition']>> = { aligned: 'aligned', nearest: 'nearest', rear: 'rear', back: 'rear', random: 'random' };
 const FLAVOR: Readonly<Record<string, Settings['gcodeFlavor']>> = {
   marlin: 'marlin', marlin2: 'marlin', marlinlegacy: 'marlin', marlinfirmware: 'marlin', reprap: 'marlin', sprinter: 'marlin', smoothie: 'marlin',
@@ -79,7 +85,7 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
   }
   const firstLayerHeight = c.settings.firstLayerHeight ?? layerHeight;
   widths(c, flavor, nozzle, layerHeight, firstLayerHeight);
-  walls(c, layerHeight);
+  walls(c, flavor, nozzle, layerHeight);
   infill(c);
   speeds(c);
   temperatures(c);
@@ -201,7 +207,7 @@ function widths(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHei
   }
 }
 
-function walls(c: ImportContext, layerHeight: number): void {
+function walls(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHeight: number): void {
   const p = c.getAny('perimeters', 'wall_loops');
   if (p) c.set('wallCount', num(p.value), p.key, 'not a count');
   for (const [side, countKeys, thickKeys, setting] of [
@@ -227,6 +233,32 @@ function walls(c: ImportContext, layerHeight: number): void {
     const v = first(seam.value)?.toLowerCase() ?? '';
     c.set('seamPosition', SEAM[v], seam.key, `seam "${v}" has no Strata equivalent`);
   }
+  variableWalls(c, flavor, nozzle);
+}
+
+/** The wall generator and Arachne's sizes (% of the nozzle; PrusaSlicer and SuperSlicer may write mm). */
+function variableWalls(c: ImportContext, flavor: Slic3rFlavor, nozzle: number): void {
+  const generator = c.getAny('perimeter_generator', 'wall_generator');
+  if (generator) {
+    const v = first(generator.value)?.toLowerCase() ?? '';
+    c.set('wallGenerator', WALL_GENERATOR[v], generator.key, `wall generator "${v}" has no Strata equivalent (arachne, classic)`);
+  }
+  for (const [key, setting] of [
+    ['min_feature_size', 'minFeatureSize'],
+    ['min_bead_width', 'minBeadWidth'],
+    ['wall_transition_length', 'wallTransitionLength'],
+  ] as const) {
+    const raw = c.get(key);
+    if (raw === undefined) continue;
+    const v = numOrPercent(raw);
+    // OrcaSlicer's are percentages only: a bare number is one too
+    const pct = v === undefined ? undefined : v.percent || flavor === 'orcaslicer' ? v.value : percentOfNozzle(v.value, nozzle);
+    c.set(setting, pct, key, 'not a length or percentage');
+  }
+  const angle = c.getAny('wall_transition_angle');
+  if (angle) c.set('wallTransitionAngle', num(angle.value), angle.key, 'not an angle');
+  const count = c.getAny('wall_distribution_count');
+  if (count) c.set('wallDistributionCount', num(count.value), count.key, 'not a count');
 }
 
 function infill(c: ImportContext): void {

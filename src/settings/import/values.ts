@@ -42,6 +42,11 @@ export function tipSpacingOfDensity(lineWidthMm: number, densityPercent: number)
   return densityPercent > 0 ? Math.round(((100 * lineWidthMm) / densityPercent) * 100) / 100 : undefined;
 }
 
+/** A length in mm as a percentage of the nozzle diameter, to the hundredth (0.1 mm of a 0.4 mm nozzle: 25). */
+export function percentOfNozzle(mm: number, nozzleMm: number): number {
+  return Math.round(((100 * mm) / nozzleMm) * 100) / 100;
+}
+
 /** `1`/`0`, `true`/`false`. */
 export function bool(value: string | undefined): boolean | undefined {
   const v = first(value)?.toLowerCase();
