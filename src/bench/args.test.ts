@@ -1,13 +1,13 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { BenchArgsError, defaultBenchOptions, parseBenchArgs, selectModels } from './args.js';
+import { BENCH_USAGE, BenchArgsError, defaultBenchOptions, parseBenchArgs, selectModels } from './args.js';
 
 test('defaults: one plain run gives the issue table (5 counted runs after a warm-up, every section)', () => {
   const o = parseBenchArgs([]);
   assert.deepEqual(o, defaultBenchOptions());
   assert.deepEqual(o, {
     models: [], threads: null, repeat: 5, warmup: 1, json: false, timeoutSeconds: 600, modelsDir: null, strataCli: null,
-    peers: true, prusa: true, patterns: true, support: true, threadScaling: true, big: true, keep: false, help: false,
+    peers: true, prusa: true, patterns: true, support: true, walls: true, threadScaling: true, big: true, keep: false, help: false,
   });
 });
 
@@ -15,7 +15,7 @@ test('every flag, in both --flag value and --flag=value forms', () => {
   const o = parseBenchArgs([
     '--models', 'benchy,cube', '--only=spot', '--models', ' bunny , ', '--threads', '2', '--repeat=7', '--warmup', '0', '--json',
     '--timeout', '30.5', '--models-dir', '/m', '--strata-cli=/s.js', '--no-peers', '--no-prusa', '--no-patterns', '--no-support',
-    '--no-thread-scaling', '--no-big', '--keep',
+    '--no-walls', '--no-thread-scaling', '--no-big', '--keep',
   ]);
   assert.deepEqual(o.models, ['benchy', 'cube', 'spot', 'bunny']);
   assert.equal(o.threads, 2);
@@ -29,11 +29,21 @@ test('every flag, in both --flag value and --flag=value forms', () => {
   assert.equal(o.prusa, false);
   assert.equal(o.patterns, false);
   assert.equal(o.support, false);
+  assert.equal(o.walls, false);
   assert.equal(o.threadScaling, false);
   assert.equal(o.big, false);
   assert.equal(o.keep, true);
   assert.equal(parseBenchArgs(['-h']).help, true);
   assert.equal(parseBenchArgs(['--help']).help, true);
+});
+
+test('--no-walls skips only the walls section, and the usage lists it', () => {
+  const o = parseBenchArgs(['--no-walls']);
+  assert.deepEqual(o, { ...defaultBenchOptions(), walls: false });
+  assert.match(BENCH_USAGE, /^ {2}--no-walls +skip the walls section/m);
+  assert.match(BENCH_USAGE, /variable walls against classic/);
+  assert.throws(() => parseBenchArgs(['--no-walls=1']), /--no-walls takes no value/);
+  assert.throws(() => parseBenchArgs(['--frobnicate']), /allowed: .*--no-walls/);
 });
 
 test('bad arguments name the flag', () => {

@@ -27,6 +27,8 @@ export interface BenchOptions {
   patterns: boolean;
   /** The support section (normal and tree against none). */
   support: boolean;
+  /** The walls section (--wall-generator variable against classic). */
+  walls: boolean;
   /** The 1-thread against 2-thread section on 3DBenchy. */
   threadScaling: boolean;
   /** The ~1 M-triangle mesh made by subdividing 3DBenchy. */
@@ -45,8 +47,9 @@ the common profile (0.2 mm layers, 2 walls, 0.8 mm top/bottom, 20 % grid). Runs 
 a warm-up round, then --repeat counted rounds; it prints the medians of wall time, CPU time and peak memory,
 Strata/CuraEngine ratios (median of the per-round ratios), then on 3DBenchy Strata with 1 and 2 threads and
 every infill pattern against grid, support (normal, tree) against none on SupportTest, Overhang, spot,
-3DBenchy, BridgeTest (also scaled 2× in X and Y) and HollowCalibrationCube, and the targets of the speed issue
-with a verdict each. Warns when the machine is busy.
+3DBenchy, BridgeTest (also scaled 2× in X and Y) and HollowCalibrationCube, variable walls against classic
+(--wall-generator) on 3DBenchy, HollowCalibrationCube and BridgeTest, and the targets of the speed issue with a
+verdict each. Warns when the machine is busy.
 
 Options:
   --models NAMES     only these models: a file name or stem (3DBenchy, 3DBenchy-x4, spot …), else every model
@@ -63,6 +66,7 @@ Options:
   --no-prusa         do not run PrusaSlicer
   --no-patterns      skip the infill-pattern section
   --no-support       skip the support section
+  --no-walls         skip the walls section (--wall-generator variable against classic)
   --no-thread-scaling  skip the 1-against-2-threads section
   --no-big           skip the subdivided ~1 M-triangle mesh
   --keep             keep the temporary folder with the G-code written
@@ -78,7 +82,7 @@ const VALUE_FLAGS = ['--models', '--only', '--threads', '--repeat', '--warmup', 
 type ValueFlag = (typeof VALUE_FLAGS)[number];
 const isValueFlag = (s: string): s is ValueFlag => (VALUE_FLAGS as readonly string[]).includes(s);
 
-const SWITCHES = ['--json', '--no-peers', '--no-prusa', '--no-patterns', '--no-support', '--no-thread-scaling', '--no-big', '--keep', '--help'] as const;
+const SWITCHES = ['--json', '--no-peers', '--no-prusa', '--no-patterns', '--no-support', '--no-walls', '--no-thread-scaling', '--no-big', '--keep', '--help'] as const;
 
 function wholeNumber(flag: string, raw: string, min: number, max: number): number {
   const n = Number(raw);
@@ -108,6 +112,7 @@ export function defaultBenchOptions(): BenchOptions {
     prusa: true,
     patterns: true,
     support: true,
+    walls: true,
     threadScaling: true,
     big: true,
     keep: false,
@@ -176,6 +181,9 @@ export function parseBenchArgs(argv: readonly string[]): BenchOptions {
         break;
       case '--no-support':
         options.support = false;
+        break;
+      case '--no-walls':
+        options.walls = false;
         break;
       case '--no-thread-scaling':
         options.threadScaling = false;

@@ -6,8 +6,8 @@ import { join } from 'node:path';
 import { gzipSync } from 'node:zlib';
 import { PATTERN_IDS } from '../infill/types.js';
 import { parseBenchArgs } from './args.js';
-import { availableModels, runBench } from './bench.js';
-import { BIG_MODEL, countTriangles, listModelFiles, prepareModels } from './models.js';
+import { availableModels, runBench, wallsModels, WALLS_MODELS } from './bench.js';
+import { BIG_MODEL, countTriangles, listModelFiles, prepareModels, type BenchModel } from './models.js';
 import { renderReport } from './report.js';
 
 /** A binary STL of `n` triangles with distinct corners. */
@@ -77,7 +77,17 @@ test('models: listing, triangle counts, gzip unpacked once, the big mesh made fr
     assert.equal(readFileSync(prepared[2]!.path).length, 84 + 50 * 20);
   }));
 
-test('runBench with a stub CLI: every model, failures, threads, every pattern, support, targets', () =>
+test('wallsModels: 3DBenchy as the 3DBenchy sections pick it, the hollow cube and BridgeTest, in the models\' order', () => {
+  const m = (name: string): BenchModel => ({ name, path: `/m/${name}`, triangles: 1 });
+  const picked = (names: string[]) => wallsModels(names.map(m)).map((x) => x.name);
+  assert.deepEqual([...WALLS_MODELS], ['3DBenchy.stl', 'HollowCalibrationCube.stl', 'BridgeTest.stl']);
+  assert.deepEqual(picked(['3DBenchy.3mf', '3DBenchy.stl', '3DBenchy-x4.stl', 'BridgeTest.stl', 'CalibrationCube.stl', 'HollowCalibrationCube.stl', 'spot.stl']), ['3DBenchy.stl', 'BridgeTest.stl', 'HollowCalibrationCube.stl']);
+  assert.deepEqual(picked(['3DBenchy.3mf', 'spot.stl']), ['3DBenchy.3mf'], 'the 3MF when the STL is not selected');
+  assert.deepEqual(picked(['HollowCalibrationCube.stl']), ['HollowCalibrationCube.stl']);
+  assert.deepEqual(picked(['CalibrationCube.stl', 'spot.stl', '3DBenchy-x4.stl']), []);
+});
+
+test('runBench with a stub CLI: every model, failures, threads, every pattern, support, walls, targets', () =>
   withFixture(async (f) => {
     const options = parseBenchArgs(['--models-dir', f.models, '--strata-cli', f.cli, '--no-peers', '--repeat', '1', '--warmup', '0', '--timeout', '60']);
     const log: string[] = [];
@@ -106,6 +116,13 @@ test('runBench with a stub CLI: every model, failures, threads, every pattern, s
     // support on the selected support models, BridgeTest also scaled
     assert.deepEqual(report.support.map((s) => s.model), ['3DBenchy.stl', 'BridgeTest.stl', 'BridgeTest.stl --scale 2,2,1', 'spot.stl']);
     assert.ok(report.support.every((s) => s.normal.status === 'ok' && s.tree.status === 'ok' && s.wallRatio.tree !== null));
+    // walls on the selected walls models, variable and classic; no CuraEngine to compare with (--no-peers)
+    assert.deepEqual(report.walls.map((w) => w.model), ['3DBenchy.stl', 'BridgeTest.stl']);
+    assert.ok(report.walls.every((w) => w.variable.status === 'ok' && w.classic.status === 'ok' && w.wallRatio !== null && w.cpuRatio !== null));
+    assert.ok(report.walls.every((w) => w.cura?.status === 'missing' && w.curaWallRatio === null));
+    for (const g of ['variable', 'classic']) {
+      assert.match(readFileSync(join(f.work, 'out', `BridgeTest.stl.walls-${g}.gcode`), 'utf8'), new RegExp(`BridgeTest\\.stl --wall-generator ${g}\\n`), g);
+    }
     assert.ok(report.triangleScaling && report.triangleScaling.triangleRatio === 4);
     // what ran, with which flags
     const outputs = readdirSync(join(f.work, 'out'));
@@ -121,6 +138,9 @@ test('runBench with a stub CLI: every model, failures, threads, every pattern, s
     const text = renderReport(report);
     assert.match(text, /### Infill patterns on 3DBenchy\.stl/);
     assert.match(text, /### Support/);
+    assert.match(text, /### Walls \(--wall-generator variable against classic; wall \/ CPU\)/);
+    assert.match(text, /\| wall, variable walls \/ classic, 3DBenchy\.stl, BridgeTest\.stl +\| ≤ 1\.25× +\| worst [\d.]+× \(/);
+    assert.match(text, /\| wall, variable walls \/ CuraEngine, 3DBenchy\.stl, BridgeTest\.stl +\| ≤ 1\.00× +\| no CuraEngine +\| – +\|/);
     assert.match(text, /Strata on broken\.stl: exit code 1: stub: cannot slice/);
     assert.match(text, new RegExp(`${BIG_MODEL.replace('.', '\\.')}: made by the bench from 3DBenchy\\.stl`));
     assert.doesNotThrow(() => JSON.parse(JSON.stringify(report)));
@@ -128,7 +148,7 @@ test('runBench with a stub CLI: every model, failures, threads, every pattern, s
 
 test('runBench: warm-up plus counted rounds, interleaved; G-code that differs by thread count is caught', () =>
   withFixture(async (f) => {
-    const options = parseBenchArgs(['--models-dir', f.models, '--strata-cli', f.cli, '--no-peers', '--models', '3DBenchy', '--repeat', '2', '--no-big', '--no-support', '--no-patterns']);
+    const options = parseBenchArgs(['--models-dir', f.models, '--strata-cli', f.cli, '--no-peers', '--models', '3DBenchy', '--repeat', '2', '--no-big', '--no-support', '--no-patterns', '--no-walls']);
     const log: string[] = [];
     const report = await runBench(options, { workDir: f.work, log: (l) => log.push(l.trim()), env: { ...process.env, STUB_THREADS_MATTER: '1' } });
     assert.equal(report.models[0]!.strata.runs.length, 2);
@@ -141,7 +161,35 @@ test('runBench: warm-up plus counted rounds, interleaved; G-code that differs by
     );
     assert.equal(report.patterns.length, 0);
     assert.equal(report.support.length, 0);
+    assert.equal(report.walls.length, 0, '--no-walls');
     assert.equal(report.load.blocks.length, 2, 'one block for the model, one for the threads');
+  }));
+
+test('runBench walls section: variable and classic interleaved round by round, one block per model', () =>
+  withFixture(async (f) => {
+    const options = parseBenchArgs(['--models-dir', f.models, '--strata-cli', f.cli, '--no-peers', '--models', 'BridgeTest', '--repeat', '2', '--no-big', '--no-support', '--no-patterns', '--no-thread-scaling']);
+    const log: string[] = [];
+    const report = await runBench(options, { workDir: f.work, log: (l) => log.push(l.trim()) });
+    assert.equal(report.walls.length, 1);
+    assert.equal(report.walls[0]!.variable.runs.length, 2);
+    assert.equal(report.walls[0]!.classic.runs.length, 2);
+    assert.deepEqual(
+      log.filter((l) => l.startsWith('Strata --wall-generator')).map((l) => l.replace(/: .*/, '')),
+      [
+        'Strata --wall-generator variable warm-up 1/1', 'Strata --wall-generator classic warm-up 1/1',
+        'Strata --wall-generator variable run 1/2', 'Strata --wall-generator classic run 1/2',
+        'Strata --wall-generator variable run 2/2', 'Strata --wall-generator classic run 2/2',
+      ],
+    );
+    assert.deepEqual(report.load.blocks.map((b) => b.label), ['BridgeTest.stl', 'BridgeTest.stl walls']);
+  }));
+
+test('runBench walls section: a note when none of its models is selected', () =>
+  withFixture(async (f) => {
+    const options = parseBenchArgs(['--models-dir', f.models, '--strata-cli', f.cli, '--no-peers', '--models', 'cube', '--repeat', '1', '--warmup', '0', '--no-big', '--no-support', '--no-patterns', '--no-thread-scaling']);
+    const report = await runBench(options, { workDir: f.work, log: () => {} });
+    assert.equal(report.walls.length, 0);
+    assert.ok(report.notes.some((n) => /^walls section skipped: none of 3DBenchy\.stl, HollowCalibrationCube\.stl, BridgeTest\.stl/.test(n)), report.notes.join('\n'));
   }));
 
 test('runBench without a built CLI reports it instead of crashing', () =>

@@ -4,7 +4,9 @@
  *  2. 3DBenchy with --threads 1 and --threads 2 (and whether their G-code equals the default's);
  *  3. 3DBenchy with every infill pattern, against grid;
  *  4. support (normal, tree) against none on SupportTest, Overhang, spot, 3DBenchy, BridgeTest (also scaled 2× in X
- *     and Y) and the hollow cube.
+ *     and Y) and the hollow cube;
+ *  5. variable walls against classic (--wall-generator) on 3DBenchy, the hollow cube and BridgeTest, and
+ *     variable against CuraEngine's runs of section 1 on the same model.
  * Every block records how much other processes ran meanwhile (load.ts). Returns the results as data (report.ts).
  */
 import { createHash } from 'node:crypto';
@@ -21,8 +23,8 @@ import { detectMemoryMethod, measureCommand, type MemoryMethod } from './measure
 import { BIG_MODEL, bigModelSource, defaultModelsDir, listModelFiles, prepareModels, type BenchModel } from './models.js';
 import { curaCommand, findCuraDefinitions, findOnPath, PEER_EXECUTABLES, peerReads, peerVersion, prusaCommand } from './peers.js';
 import { readSelfTimes } from './proc.js';
-import type { BenchReport, ModelRow, PatternRow, SlicerStats, SupportRow, ThreadScaling } from './report.js';
-import { notRun, pairedRatio, relativeToGrid, supportRow, triangleScaling } from './report.js';
+import type { BenchReport, ModelRow, PatternRow, SlicerStats, SupportRow, ThreadScaling, WallsRow } from './report.js';
+import { notRun, pairedRatio, relativeToGrid, supportRow, triangleScaling, wallsRow } from './report.js';
 import { checkTargets, TARGET_MODELS } from './targets.js';
 
 export interface BenchContext {
@@ -46,6 +48,18 @@ export const SUPPORT_MODELS = Object.freeze(['SupportTest.stl', 'Overhang.stl', 
  * over a part that is quick to slice, so the tree's work outweighs the part's more than on any shared model.
  */
 export const SUPPORT_SCALED = Object.freeze({ model: 'BridgeTest.stl', scale: '2,2,1' });
+
+/** Models the walls section runs on, when selected (3DBenchy as the 3DBenchy sections pick it: see wallsModels). */
+export const WALLS_MODELS = Object.freeze(['3DBenchy.stl', 'HollowCalibrationCube.stl', 'BridgeTest.stl']);
+
+/**
+ * The selected models the walls section runs on, in their order: those of WALLS_MODELS, with 3DBenchy the one
+ * the 3DBenchy sections use (its 3MF when only that is selected).
+ */
+export function wallsModels(models: readonly BenchModel[]): BenchModel[] {
+  const benchy = patternModel(models);
+  return models.filter((m) => m === benchy || WALLS_MODELS.includes(m.name));
+}
 
 /** dist/bin/main.js of this build (from dist/bench/): the bundled CLI users run. */
 export function defaultStrataCli(): string {
@@ -223,6 +237,23 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
     }
   }
 
+  // 5. variable walls against classic, and against CuraEngine's runs of section 1
+  const walls: WallsRow[] = [];
+  if (options.walls && strataBuilt) {
+    const picked = wallsModels(models);
+    if (picked.length === 0) notes.push(`walls section skipped: none of ${WALLS_MODELS.join(', ')} is among the selected models`);
+    for (const model of picked) {
+      if (aborted()) break;
+      ctx.log(`walls on ${model.name}`);
+      // Strata's `wallGenerator` setting; interleaved variable, classic, variable, classic …
+      const r = await block(`${model.name} walls`, {
+        variable: strataJob(model, 'walls-variable', ['--wall-generator', 'variable']),
+        classic: strataJob(model, 'walls-classic', ['--wall-generator', 'classic']),
+      });
+      walls.push(wallsRow(model.name, r.variable, r.classic, rows.find((row) => row.model === model.name)?.cura ?? null));
+    }
+  }
+
   if (aborted()) notes.push('interrupted: the sections after the interruption did not run');
   const cpuList = cpus();
   const load = { cpus: cpuCount, busyAbove: busyThreshold(cpuCount), before: loadBefore, blocks };
@@ -249,6 +280,7 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
     patternModel: patterns.length > 0 ? benchy!.name : null,
     patterns,
     support,
+    walls,
     triangleScaling: triangleScaling(rows, TARGET_MODELS.benchy, BIG_MODEL),
     targets: [],
     notes,

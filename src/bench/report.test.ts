@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import type { Measurement } from './measure.js';
-import { figuresCell, notRun, pairedRatio, relativeToGrid, renderReport, summarize, supportRow, triangleScaling, type BenchReport, type ModelRow, type SlicerStats } from './report.js';
+import { figuresCell, notRun, pairedRatio, ratioOfMedians, relativeToGrid, renderReport, summarize, supportRow, triangleScaling, wallsRow, type BenchReport, type ModelRow, type SlicerStats } from './report.js';
 import { checkTargets } from './targets.js';
 
 const run = (wallSeconds: number, cpuSeconds: number | null, peakMiB: number | null, exitCode = 0): Measurement => ({
@@ -48,6 +48,34 @@ test('relativeToGrid and supportRow divide round by round', () => {
   assert.equal(s.wallRatio.tree, 2);
 });
 
+test('wallsRow: variable over classic round by round, over CuraEngine median over median', () => {
+  const cura = ok([2, 2.5, 10], 60, 2); // median 2.5 s wall, 5 s CPU; its rounds are of another block
+  const w = wallsRow('3DBenchy.stl', ok([1.2, 2.2, 1.1]), ok([1, 2, 1]), cura);
+  assert.equal(w.model, '3DBenchy.stl');
+  assert.ok(Math.abs(w.wallRatio! - 1.1) < 1e-12, 'median of 1.2, 1.1, 1.1');
+  assert.ok(Math.abs(w.cpuRatio! - 1.1) < 1e-12);
+  assert.ok(Math.abs(w.curaWallRatio! - 1.2 / 2.5) < 1e-12, 'median 1.2 s over median 2.5 s');
+  assert.ok(Math.abs(w.curaCpuRatio! - (1.2 * 1.5) / 5) < 1e-12);
+  assert.equal(w.cura, cura);
+  // no CuraEngine (not installed, or no row for the model), or a failed run: no ratio to it
+  const none = wallsRow('BridgeTest.stl', ok([1]), ok([1]), null);
+  assert.equal(none.cura, null);
+  assert.equal(none.curaWallRatio, null);
+  assert.equal(none.wallRatio, 1);
+  assert.equal(wallsRow('BridgeTest.stl', ok([1]), ok([1]), notRun('missing')).curaCpuRatio, null);
+  const failed = wallsRow('BridgeTest.stl', ok([1]), summarize([run(1, 1, 1, 1)]), cura);
+  assert.equal(failed.wallRatio, null);
+  assert.equal(failed.cpuRatio, null);
+  assert.equal(failed.curaWallRatio, 0.4, 'variable ran, so its ratio to CuraEngine stands');
+  assert.equal(wallsRow('x', summarize([run(1, 1, 1, 1)]), ok([1]), cura).curaWallRatio, null);
+});
+
+test('ratioOfMedians: null unless both ran fine and both have the figure', () => {
+  assert.equal(ratioOfMedians(ok([1, 3, 2]), ok([4, 4]), 'wallSeconds'), 0.5);
+  assert.equal(ratioOfMedians(summarize([run(1, null, null)]), ok([1]), 'cpuSeconds'), null);
+  assert.equal(ratioOfMedians(ok([1]), notRun('skipped'), 'wallSeconds'), null);
+});
+
 test('triangleScaling: time per triangle of a model and of its subdivided copy', () => {
   const row = (model: string, triangles: number, wall: number): ModelRow => ({ model, triangles, strata: ok([wall]), cura: notRun('missing'), prusa: notRun('missing'), wallRatio: null, cpuRatio: null });
   const ts = triangleScaling([row('3DBenchy.stl', 200_000, 2), row('3DBenchy-x4.stl', 800_000, 3)], '3DBenchy.stl', '3DBenchy-x4.stl')!;
@@ -82,6 +110,7 @@ function sampleReport(over: Partial<BenchReport> = {}): BenchReport {
     patternModel: '3DBenchy.stl',
     patterns: relativeToGrid([{ pattern: 'grid', strata: ok([1.5]) }, { pattern: 'gyroid', strata: ok([3]) }]),
     support: [supportRow('spot.stl', ok([1]), ok([1.2]), ok([1.4]))],
+    walls: [wallsRow('3DBenchy.stl', ok([1.2, 1.4], 100, 2), ok([1, 1]), benchyCura)],
     triangleScaling: null,
     targets: [],
     notes: [],
@@ -109,7 +138,14 @@ test('renderReport: the README table (wall / CPU / peak, ratios), statuses, sect
   assert.match(text, /### Infill patterns on 3DBenchy\.stl/);
   assert.match(text, /\| gyroid +\| 3\.00 s \/ 4\.50 s \/ 100 MiB \| +2\.00× \| +2\.00× \|/);
   assert.match(text, /\| spot\.stl \| 1\.00 s \/ 1\.50 s \| 1\.20 s \/ 1\.80 s \| +1\.20× \/ 1\.20× \| 1\.40 s \/ 2\.10 s \| +1\.40× \/ 1\.40× \|/);
+  assert.match(text, /### Walls \(--wall-generator variable against classic, and against CuraEngine; wall \/ CPU\)/);
+  assert.deepEqual(cells(lines.find((l) => l.startsWith('| model') && l.includes('variable vs classic'))!), ['model', 'variable', 'classic', 'variable vs classic', 'CuraEngine', 'variable vs CuraEngine']);
+  const wallsLine = lines.filter((l) => l.startsWith('| 3DBenchy.stl'))[1]!;
+  assert.deepEqual(cells(wallsLine), ['3DBenchy.stl', '1.30 s / 2.60 s', '1.00 s / 1.50 s', '1.30× / 1.73×', '1.31 s / 1.97 s', '0.99× / 1.32×']);
+  assert.match(text, /against CuraEngine: variable's median over CuraEngine's from the models table/);
   assert.match(text, /### Targets/);
+  assert.match(text, /\| wall, variable walls \/ classic, 3DBenchy\.stl +\| ≤ 1\.25× +\| worst 1\.30× \(3DBenchy\.stl\) +\| ✗ +\|/);
+  assert.match(text, /\| wall, variable walls \/ CuraEngine, 3DBenchy\.stl +\| ≤ 1\.00× +\| worst 0\.99× \(3DBenchy\.stl\) +\| ✓ +\|/);
   assert.match(text, /\| wall, Strata \/ CuraEngine, 3DBenchy\.stl +\| ≤ 0\.75× +\| 1\.24× +\| ✗ +\|/);
   assert.match(text, /\| peak memory, Strata, 3DBenchy\.stl +\| ≤ 120 MiB +\| 159 MiB +\| ✗ +\|/);
   assert.match(text, /\| every infill pattern \/ grid, 3DBenchy\.stl +\| ≤ 1\.50× +\| worst 2\.00× \(gyroid\) +\| ✗ +\|/);
@@ -136,11 +172,33 @@ test('renderReport says clearly when the Strata CLI is not built', () => {
       patternModel: null,
       patterns: [],
       support: [],
+      walls: [],
     }),
   );
   assert.match(text, /Strata: not built: \/repo\/dist\/cli\/main\.js is missing/);
   assert.match(text.split('\n').find((l) => l.startsWith('| cube.stl'))!, /not built/);
-  assert.doesNotMatch(text, /Infill patterns|### Threads|### Support/);
+  assert.doesNotMatch(text, /Infill patterns|### Threads|### Support|### Walls/);
+});
+
+test('renderReport: the walls section without CuraEngine has no CuraEngine columns; failed runs become notes', () => {
+  const text = renderReport(
+    sampleReport({
+      peers: { cura: null, prusa: null },
+      walls: [
+        wallsRow('3DBenchy.stl', ok([1.1]), ok([1]), notRun('missing')),
+        wallsRow('HollowCalibrationCube.stl', ok([0.5]), summarize([run(0.2, 0.2, 50, 1)]), notRun('missing')),
+      ],
+    }),
+  );
+  const lines = text.split('\n');
+  const cells = (line: string) => line.split('|').map((c) => c.trim()).filter((c) => c !== '');
+  assert.match(text, /### Walls \(--wall-generator variable against classic; wall \/ CPU\)/);
+  assert.deepEqual(cells(lines.find((l) => l.startsWith('| model') && l.includes('variable vs classic'))!), ['model', 'variable', 'classic', 'variable vs classic']);
+  assert.deepEqual(cells(lines.find((l) => l.startsWith('| HollowCalibrationCube.stl'))!), ['HollowCalibrationCube.stl', '0.50 s / 0.75 s', 'failed', '– / –']);
+  assert.doesNotMatch(text, /variable's median over CuraEngine's/);
+  assert.match(text, /Strata --wall-generator classic on HollowCalibrationCube\.stl: exit code 1: error: broken mesh/);
+  assert.match(text, /\| wall, variable walls \/ classic, 3DBenchy\.stl, HollowCalibrationCube\.stl +\| ≤ 1\.25× +\| no figure for HollowCalibrationCube\.stl \(classic failed\) +\| – +\|/);
+  assert.match(text, /\| wall, variable walls \/ CuraEngine, 3DBenchy\.stl, HollowCalibrationCube\.stl +\| ≤ 1\.00× +\| no CuraEngine +\| – +\|/);
 });
 
 test('figuresCell: wall / CPU / peak, with placeholders for what was not measurable', () => {

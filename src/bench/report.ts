@@ -79,6 +79,26 @@ export interface SupportRow {
   cpuRatio: Record<SupportKind, number | null>;
 }
 
+export type WallGenerator = 'variable' | 'classic';
+
+/** One model of the walls section: --wall-generator variable against classic, and variable against CuraEngine. */
+export interface WallsRow {
+  model: string;
+  variable: SlicerStats;
+  classic: SlicerStats;
+  /** Variable over classic, medians of the per-round ratios (the two ran interleaved). */
+  wallRatio: number | null;
+  cpuRatio: number | null;
+  /** CuraEngine on the same model in the models section, or null when that section has no row for it. */
+  cura: SlicerStats | null;
+  /**
+   * Variable's median over CuraEngine's (from the models section): a ratio of medians, not of rounds, since the
+   * two ran in different blocks. Null unless both ran fine.
+   */
+  curaWallRatio: number | null;
+  curaCpuRatio: number | null;
+}
+
 /** Strata's cost against the triangle count: a model and its subdivided copy (same shape, 4× the triangles). */
 export interface TriangleScaling {
   small: { model: string; triangles: number; wallSeconds: number; microsPerTriangle: number };
@@ -115,6 +135,7 @@ export interface BenchReport {
   patternModel: string | null;
   patterns: PatternRow[];
   support: SupportRow[];
+  walls: WallsRow[];
   triangleScaling: TriangleScaling | null;
   targets: TargetRow[];
   notes: string[];
@@ -171,6 +192,28 @@ export function supportRow(model: string, none: SlicerStats, normal: SlicerStats
     tree,
     wallRatio: { normal: pairedRatio(normal, none, 'wallSeconds'), tree: pairedRatio(tree, none, 'wallSeconds') },
     cpuRatio: { normal: pairedRatio(normal, none, 'cpuSeconds'), tree: pairedRatio(tree, none, 'cpuSeconds') },
+  };
+}
+
+/** a / b of one figure's medians (for runs of different blocks, which pair no rounds); null unless both ran fine. */
+export function ratioOfMedians(a: SlicerStats, b: SlicerStats, figure: 'wallSeconds' | 'cpuSeconds'): number | null {
+  if (a.status !== 'ok' || b.status !== 'ok') return null;
+  const x = a[figure];
+  const y = b[figure];
+  return x === null || y === null || !(y > 0) ? null : x / y;
+}
+
+/** A walls row from the two interleaved runs and CuraEngine's figures on the model (null: none). */
+export function wallsRow(model: string, variable: SlicerStats, classic: SlicerStats, cura: SlicerStats | null): WallsRow {
+  return {
+    model,
+    variable,
+    classic,
+    wallRatio: pairedRatio(variable, classic, 'wallSeconds'),
+    cpuRatio: pairedRatio(variable, classic, 'cpuSeconds'),
+    cura,
+    curaWallRatio: cura ? ratioOfMedians(variable, cura, 'wallSeconds') : null,
+    curaCpuRatio: cura ? ratioOfMedians(variable, cura, 'cpuSeconds') : null,
   };
 }
 
@@ -243,6 +286,10 @@ function failureNotes(report: BenchReport): string[] {
     add('Strata (no support)', row.model, row.none);
     add('Strata --support-type normal', row.model, row.normal);
     add('Strata --support-type tree', row.model, row.tree);
+  }
+  for (const row of report.walls) {
+    add('Strata --wall-generator variable', row.model, row.variable);
+    add('Strata --wall-generator classic', row.model, row.classic);
   }
   return notes;
 }
@@ -346,6 +393,28 @@ export function renderReport(report: BenchReport): string {
           `${formatRatio(r.wallRatio.tree)} / ${formatRatio(r.cpuRatio.tree)}`,
         ]),
       ),
+    );
+  }
+
+  if (report.walls.length > 0) {
+    // CuraEngine's columns only when it ran on one of these models (not with --no-peers or without CuraEngine)
+    const withCura = report.walls.some((r) => r.cura !== null && r.cura.status !== 'missing');
+    out.push('', `### Walls (--wall-generator variable against classic${withCura ? ', and against CuraEngine' : ''}; wall / CPU)`, '');
+    out.push(
+      markdownTable(
+        ['model', 'variable', 'classic', 'variable vs classic', ...(withCura ? ['CuraEngine', 'variable vs CuraEngine'] : [])],
+        report.walls.map((r) => [
+          r.model,
+          wallCpuCell(r.variable),
+          wallCpuCell(r.classic),
+          `${formatRatio(r.wallRatio)} / ${formatRatio(r.cpuRatio)}`,
+          ...(withCura ? [r.cura ? wallCpuCell(r.cura) : 'not run', `${formatRatio(r.curaWallRatio)} / ${formatRatio(r.curaCpuRatio)}`] : []),
+        ]),
+      ),
+    );
+    out.push(
+      '',
+      `Variable against classic: medians of the per-round ratios (interleaved)${withCura ? "; against CuraEngine: variable's median over CuraEngine's from the models table (different blocks, so not paired by round)" : ''}.`,
     );
   }
 

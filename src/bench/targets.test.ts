@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { notRun, relativeToGrid, summarize, supportRow, type ModelRow, type SlicerStats } from './report.js';
+import { notRun, relativeToGrid, summarize, supportRow, wallsRow, type ModelRow, type SlicerStats } from './report.js';
 import { checkTargets, TARGETS, type TargetRow } from './targets.js';
 
 const stats = (wallSeconds: number, peakMiB = 100): SlicerStats => summarize([{ exitCode: 0, signal: null, timedOut: false, spawnError: null, wallSeconds, cpuSeconds: wallSeconds, peakMiB, stderrTail: '' }]);
@@ -22,6 +22,7 @@ function atLimits(): Figures {
     patternModel: '3DBenchy.stl',
     patterns: relativeToGrid([{ pattern: 'grid', strata: stats(2) }, { pattern: 'gyroid', strata: stats(3) }, { pattern: 'lines', strata: stats(1.8) }]),
     support: [supportRow('spot.stl', stats(2), stats(3), stats(2.5))],
+    walls: [wallsRow('3DBenchy.stl', stats(1.25), stats(1), stats(1.25)), wallsRow('HollowCalibrationCube.stl', stats(1.1), stats(1), stats(2))],
     triangleScaling: { small: { model: '3DBenchy.stl', triangles: 225154, wallSeconds: 1, microsPerTriangle: 4.4 }, big: { model: '3DBenchy-x4.stl', triangles: 900616, wallSeconds: 4, microsPerTriangle: 4.4 }, wallRatio: 4, triangleRatio: 4 },
   };
 }
@@ -46,11 +47,15 @@ test('every target at its limit holds, and the table names the figures the issue
       'G-code, 1 thread = 2 threads = default: byte-identical',
       'every infill pattern / grid, 3DBenchy.stl: ≤ 1.50×',
       'support (normal, tree) / none, spot.stl: ≤ 1.50×',
+      'wall, variable walls / classic, 3DBenchy.stl, HollowCalibrationCube.stl: ≤ 1.25×',
+      'wall, variable walls / CuraEngine, 3DBenchy.stl, HollowCalibrationCube.stl: ≤ 1.00×',
       'wall, 3DBenchy-x4.stl / 3DBenchy.stl (4× the triangles): ≤ 4.00× (linear)',
     ],
   );
   assert.equal(find(rows, /every infill/).measured, 'worst 1.50× (gyroid)');
   assert.equal(find(rows, /support/).measured, 'worst 1.50× (normal, spot.stl)');
+  assert.equal(find(rows, /variable walls \/ classic/).measured, 'worst 1.25× (3DBenchy.stl)');
+  assert.equal(find(rows, /variable walls \/ CuraEngine/).measured, 'worst 1.00× (3DBenchy.stl)');
 });
 
 test('each target fails just past its limit', () => {
@@ -65,17 +70,20 @@ test('each target fails just past its limit', () => {
   f.threadScaling = { ...f.threadScaling!, speedup: 1.29, gcodeIdentical: false };
   f.patterns = relativeToGrid([{ pattern: 'grid', strata: stats(2) }, { pattern: 'lightning', strata: stats(3.1) }]);
   f.support = [supportRow('SupportTest.stl', stats(2), stats(2.2), stats(3.2))];
+  f.walls = [wallsRow('HollowCalibrationCube.stl', stats(1.1), stats(1), stats(2)), wallsRow('BridgeTest.stl', stats(1.26), stats(1), stats(1.2))];
   f.triangleScaling = { ...f.triangleScaling!, wallRatio: 4.2 };
   const rows = checkTargets(f);
   assert.deepEqual(verdicts(rows), rows.map(() => 'fail'), JSON.stringify(rows, null, 1));
   assert.equal(find(rows, /every infill/).measured, 'worst 1.55× (lightning)');
   assert.equal(find(rows, /support/).measured, 'worst 1.60× (tree, SupportTest.stl)');
   assert.equal(find(rows, /G-code/).measured, 'different');
+  assert.equal(find(rows, /variable walls \/ classic/).measured, 'worst 1.26× (BridgeTest.stl)');
+  assert.equal(find(rows, /variable walls \/ CuraEngine/).measured, 'worst 1.05× (BridgeTest.stl)');
   assert.equal(find(rows, /CalibrationCube/).measured, '0.20 s', 'shown rounded, judged exactly');
 });
 
 test('figures a run did not produce are "missing", with the reason', () => {
-  const empty: Figures = { models: [], threadScaling: null, patternModel: null, patterns: [], support: [], triangleScaling: null };
+  const empty: Figures = { models: [], threadScaling: null, patternModel: null, patterns: [], support: [], walls: [], triangleScaling: null };
   const rows = checkTargets(empty);
   assert.ok(rows.every((r) => r.verdict === 'missing'));
   assert.ok(rows.every((r) => /not (run|compared)/.test(r.measured)), JSON.stringify(rows.map((r) => r.measured)));
@@ -88,12 +96,27 @@ test('figures a run did not produce are "missing", with the reason', () => {
   const partial = checkTargets({ ...empty, patternModel: '3DBenchy.stl', patterns: relativeToGrid([{ pattern: 'grid', strata: stats(1) }, { pattern: 'gyroid', strata: notRun('skipped') }]) });
   assert.equal(find(partial, /every infill/).verdict, 'missing');
   assert.match(find(partial, /every infill/).measured, /no figure for gyroid/);
+  // the walls section without CuraEngine: variable against classic judged, against CuraEngine says why not
+  const noCura = checkTargets({ ...empty, walls: [wallsRow('3DBenchy.stl', stats(1.2), stats(1), notRun('missing')), wallsRow('BridgeTest.stl', stats(1), stats(1), notRun('missing'))] });
+  assert.equal(find(noCura, /variable walls \/ classic/).verdict, 'pass');
+  assert.equal(find(noCura, /variable walls \/ CuraEngine/).verdict, 'missing');
+  assert.equal(find(noCura, /variable walls \/ CuraEngine/).measured, 'no CuraEngine');
+  // CuraEngine on one model only (it reads no 3MF), a failed classic run: open verdicts naming the model and why
+  const mixed = checkTargets({
+    ...empty,
+    walls: [wallsRow('3DBenchy.3mf', stats(1), stats(1), notRun('unsupported')), wallsRow('BridgeTest.stl', stats(1), summarize([{ exitCode: 1, signal: null, timedOut: false, spawnError: null, wallSeconds: 1, cpuSeconds: 1, peakMiB: 1, stderrTail: 'x' }]), stats(2))],
+  });
+  assert.equal(find(mixed, /variable walls \/ classic/).verdict, 'missing');
+  assert.equal(find(mixed, /variable walls \/ classic/).measured, 'no figure for BridgeTest.stl (classic failed)');
+  assert.equal(find(mixed, /variable walls \/ CuraEngine/).verdict, 'missing');
+  assert.equal(find(mixed, /variable walls \/ CuraEngine/).measured, 'no figure for 3DBenchy.3mf (CuraEngine unsupported)');
+  assert.equal(checkTargets({ ...empty, walls: [wallsRow('3DBenchy.stl', stats(1), stats(1), null)] }).find((r) => /CuraEngine, 3DBenchy/.test(r.figure) && /walls/.test(r.figure))!.measured, 'CuraEngine not run');
 });
 
 test('the limits are the issue\'s', () => {
   assert.deepEqual({ ...TARGETS }, {
     wallRatioVsCura: 0.75, wallRatioVsCuraSpot: 1, cubeWallSeconds: 0.2, cpuRatioVsCuraBenchy: 1, benchyPeakMiB: 120,
-    twoThreadSpeedup: 1.3, patternRatioVsGrid: 1.5, supportRatioVsNone: 1.5,
+    twoThreadSpeedup: 1.3, patternRatioVsGrid: 1.5, supportRatioVsNone: 1.5, variableWallsRatioVsClassic: 1.25, variableWallsRatioVsCura: 1,
   });
 });
 

@@ -1,8 +1,9 @@
 /**
- * The speed targets of issue 11 ("Faster than CuraEngine on every model, from a cold start, on both cores") and
- * their verdicts from a benchmark's figures. Pure: the report's data in, table rows out.
+ * The speed targets of issue 11 ("Faster than CuraEngine on every model, from a cold start, on both cores"), and
+ * those of the variable-width walls (against classic walls and CuraEngine), with their verdicts from a benchmark's
+ * figures. Pure: the report's data in, table rows out.
  */
-import type { BenchReport, ModelRow } from './report.js';
+import type { BenchReport, ModelRow, SlicerStats, WallsRow } from './report.js';
 import { formatMiB, formatRatio, formatSeconds } from './stats.js';
 
 /** The limits, each with its unit in the name. */
@@ -23,6 +24,10 @@ export const TARGETS = Object.freeze({
   patternRatioVsGrid: 1.5,
   /** Wall with support (normal or tree) / without. */
   supportRatioVsNone: 1.5,
+  /** Wall with variable walls / with classic walls (--wall-generator), on every model of the walls section. */
+  variableWallsRatioVsClassic: 1.25,
+  /** Wall with variable walls / CuraEngine's, on every model of the walls section CuraEngine ran on. */
+  variableWallsRatioVsCura: 1.0,
 });
 
 /** The models the targets name (file names as the bench reports them). */
@@ -44,13 +49,34 @@ export interface TargetRow {
   verdict: Verdict;
 }
 
-type Figures = Pick<BenchReport, 'models' | 'threadScaling' | 'patterns' | 'patternModel' | 'support' | 'triangleScaling'>;
+type Figures = Pick<BenchReport, 'models' | 'threadScaling' | 'patterns' | 'patternModel' | 'support' | 'walls' | 'triangleScaling'>;
 
 const verdict = (ok: boolean): Verdict => (ok ? 'pass' : 'fail');
 
 function row(figure: string, target: string, value: number | null, holds: (v: number) => boolean, show: (v: number) => string, why = 'not run'): TargetRow {
   return value === null ? { figure, target, measured: why, verdict: 'missing' } : { figure, target, measured: show(value), verdict: verdict(holds(value)) };
 }
+
+/**
+ * A target on the largest of one ratio per walls row: judged only when every row has it, else "missing" with
+ * the rows lacking it (and why, when `why` says).
+ */
+function worstWallsRow(figure: string, limit: number, walls: readonly WallsRow[], ratio: (r: WallsRow) => number | null, why: (r: WallsRow) => string): TargetRow {
+  const target = `≤ ${formatRatio(limit)}`;
+  const models = walls.map((r) => r.model).join(', ');
+  if (walls.length === 0) return { figure, target, measured: 'not run', verdict: 'missing' };
+  const unmeasured = walls.filter((r) => ratio(r) === null);
+  if (unmeasured.length > 0) {
+    const reasons = unmeasured.map(why);
+    const measured =
+      unmeasured.length === walls.length && reasons.every((w) => w === reasons[0]) ? reasons[0]! : `no figure for ${unmeasured.map((r, i) => `${r.model} (${reasons[i]})`).join(', ')}`;
+    return { figure: `${figure}, ${models}`, target, measured, verdict: 'missing' };
+  }
+  const worst = walls.reduce((a, r) => (ratio(r)! > ratio(a)! ? r : a));
+  return row(`${figure}, ${models}`, target, ratio(worst), (v) => v <= limit, (v) => `worst ${formatRatio(v)} (${worst.model})`);
+}
+
+const notOk = (who: string, s: SlicerStats) => (s.status === 'missing' && who === 'CuraEngine' ? 'no CuraEngine' : `${who} ${s.status}`);
 
 /** Each target with its verdict. A figure the run did not produce (model not selected, peer missing) is "missing". */
 export function checkTargets(report: Figures): TargetRow[] {
@@ -109,6 +135,17 @@ export function checkTargets(report: Figures): TargetRow[] {
     unmeasuredSupport.length > 0 || !worstSupport
       ? { figure: 'support (normal, tree) / none', target: `≤ ${formatRatio(T.supportRatioVsNone)}`, measured: supportRatios.length === 0 ? 'not run' : `no figure for ${unmeasuredSupport.join(', ')}`, verdict: 'missing' }
       : row(`support (normal, tree) / none, ${supportModels}`, `≤ ${formatRatio(T.supportRatioVsNone)}`, worstSupport.ratio, (v) => v <= T.supportRatioVsNone, (v) => `worst ${formatRatio(v)} (${worstSupport.kind}, ${worstSupport.model})`),
+  );
+
+  rows.push(
+    worstWallsRow('wall, variable walls / classic', T.variableWallsRatioVsClassic, report.walls, (r) => r.wallRatio, (r) =>
+      r.variable.status !== 'ok' ? notOk('variable', r.variable) : r.classic.status !== 'ok' ? notOk('classic', r.classic) : 'not measured',
+    ),
+  );
+  rows.push(
+    worstWallsRow('wall, variable walls / CuraEngine', T.variableWallsRatioVsCura, report.walls, (r) => r.curaWallRatio, (r) =>
+      r.variable.status !== 'ok' ? notOk('variable', r.variable) : r.cura === null ? 'CuraEngine not run' : r.cura.status !== 'ok' ? notOk('CuraEngine', r.cura) : 'not measured',
+    ),
   );
 
   const ts = report.triangleScaling;
