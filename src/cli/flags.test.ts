@@ -31,8 +31,7 @@ copyFileSync(MODEL, MODEL2);
 const OFF_CENTRE = join(DIR, 'off-centre.stl');
 writeFileSync(OFF_CENTRE, blockWithHole(14, 10.4, 3.5, 64, [40, 30]));
 const TUBE = join(DIR, 'tube.stl');
-// walls 1.6 mm thick: two walls a side, whichever wall generator
-writeFileSync(TUBE, blockWithHole(14, 10.4, 5.4, 8, [0, 0], true));
+writeFileSync(TUBE, blockWithHole(14, 10.4, 6, 8, [0, 0], true));
 const THIN = join(DIR, 'thin.stl');
 writeFileSync(THIN, thinFeatures());
 const OVERHANGS = join(DIR, 'overhangs.stl');
