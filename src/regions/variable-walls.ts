@@ -20,7 +20,7 @@
  * Wedges and corners blunter than `wallTransitionAngle` get no middle line into their tip (their walls meet
  * there instead): the medial axis prunes such branches.
  */
-import { area, difference, offset, opening } from '../geometry/clip.js';
+import { area, difference, offset } from '../geometry/clip.js';
 import { medialAxis, type MedialChain } from '../geometry/medial-axis.js';
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
@@ -30,16 +30,20 @@ import type { IslandWalls } from './walls.js';
 
 /** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
 const MIN_LOOP_AREA_UM2 = 50 * 50;
+/** A level whose loops leave less than this (µm²) unfilled has no leftover worth a look. */
+const MIN_LEFTOVER_UM2 = 60 * 60;
 /** Leftover pieces with less area than this (µm²) are specks: not worth a medial axis. */
 const MIN_PIECE_AREA_UM2 = 20 * 20;
+/** Leftover pieces inside the walls with less area than this (µm²) are left to the walls round them. */
+const MIN_INNER_PIECE_AREA_UM2 = 100 * 100;
 /**
  * Longest boundary sample spacing of the medial axis, µm: it refines the spacing itself to a fraction of
  * the local thickness, so thin strips get dense samples and this only bounds the wide parts.
  */
 const AXIS_SAMPLE_UM = 200;
 const AXIS_MIN_SAMPLE_UM = 30;
-/** Leftover slivers thinner than this (µm) are the seams of offsets that do not quite meet, not features. */
-const SLIVER_UM = 40;
+/** The loops' cover is grown by this much (µm) before the leftover is cut: the seams of offsets that do not quite meet are no feature. */
+const SLIVER_UM = 20;
 /** A strip narrower than this fraction of the line width is absorbed by the walls beside it, not given a line of its own. */
 const MIDDLE_LINE_FRACTION = 0.75;
 /** Loop edges longer than this (µm) are split before widening, so a widening follows the strip beside it. */
@@ -185,8 +189,9 @@ function nearRings(x: number, y: number, loops: readonly Polygon[], reach: numbe
  */
 function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], L: Limits): LeftoverResult {
   const out: LeftoverResult = { beads: [], absorbed: [], lostUm2: 0 };
-  // slivers thinner than SLIVER_UM (where offsets do not quite meet) are no feature: gone before the axis
-  const real = opening(pieces, SLIVER_UM / 2).filter((p) => Math.abs(area([p])) >= MIN_PIECE_AREA_UM2);
+  // inside the walls, a piece this small is a corner's crumb: what it would add to a wall is not worth its axis
+  const least = loops.length ? MIN_INNER_PIECE_AREA_UM2 : MIN_PIECE_AREA_UM2;
+  const real = pieces.filter((p) => Math.abs(area([p])) >= least);
   if (real.length === 0) return out;
   for (const piece of real) {
     // samples about a third of the piece's typical thickness apart: most pieces need no second pass
@@ -410,18 +415,23 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
   const levels: Level[] = [];
   for (let k = 0; k < wallCount && inside.length > 0; k++) {
     const fit = offset(inside, -w);
-    const band = fit.length ? offset(fit, w) : [];
+    // what the loops cover, grown by a sliver so the seams of offsets that do not quite meet are no leftover
+    const band = fit.length ? offset(fit, w + SLIVER_UM) : [];
     const loops = fit.length ? rings(offset(fit, w / 2)) : [];
     // what wall k's loops cannot reach lies between the sides of wall k - 1 (or is the part's outside)
-    const rest = band.length ? difference(inside, band) : inside;
     levels.push({ loops, beads: [], absorbed: [], lostUm2: 0 });
-    if (rest.length) takeLeftover(levels, k, rest, L);
+    // most levels leave nothing between their loops: no difference, no medial axis
+    if (band.length === 0 || area(inside) - area(band) >= MIN_LEFTOVER_UM2) {
+      const rest = band.length ? difference(inside, band) : inside;
+      if (rest.length) takeLeftover(levels, k, rest, L);
+    }
     inside = fit;
   }
   // the inner area's necks thinner than a line are the last walls' to fill, not skin's or infill's
   if (inside.length && levels.length) {
-    const kept = opening(inside, w / 2);
-    const rest = difference(inside, kept);
+    const shrunk = offset(inside, -w / 2);
+    const kept = shrunk.length ? offset(shrunk, w / 2) : [];
+    const rest = area(inside) - area(kept) >= MIN_LEFTOVER_UM2 ? difference(inside, shrunk.length ? offset(shrunk, w / 2 + SLIVER_UM) : []) : [];
     if (rest.length) {
       levels.push({ loops: [], beads: [], absorbed: [], lostUm2: 0 });
       takeLeftover(levels, levels.length - 1, rest, L);
