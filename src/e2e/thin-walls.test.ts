@@ -12,7 +12,7 @@ import { Slicer } from '../api/slicer.js';
 import type { SliceOptions } from '../settings/schema.js';
 import { skipWithoutModels, sliceAndAnalyze, type SlicedModel } from './models.js';
 import {
-  COMB_FIN_THICKNESSES, FIN_THICKNESSES, THIN_PART_HEIGHT, combPart, finsPart, polygonArea, rectPolygon, taperPart,
+  COMB_FIN_THICKNESSES, FIN_THICKNESSES, THIN_PART_HEIGHT, binaryStl, combPart, finsPart, polygonArea, prismTris, rectPolygon, taperPart,
   taperSections, type Polygon,
 } from './thin-shapes.js';
 import { beadLayers, measurePolygons, underWidthFraction, type PolygonMeasure } from './thin-measure.js';
@@ -275,4 +275,24 @@ test('fins: two slices give byte-identical G-code', { timeout: 60_000 }, async (
   const again = (await new Slicer({ threads: 1, center: false, wallGenerator: 'variable' }).slice(part.stl)).gcode;
   assert.ok(first.length > 1000);
   assert.ok(first === again, 'run to run');
+});
+
+test('a feature thinner than minFeatureSize is left out and the result says where and how much', { timeout: 60_000 }, async () => {
+  // a 10 × 10 mm block with a 0.06 mm fin standing off it, 12 mm long, 2 mm tall
+  const block = prismTris(rectPolygon({ x0: 100, y0: 100, x1: 110, y1: 110 }), 0, 2);
+  const fin = prismTris(rectPolygon({ x0: 112, y0: 100, x1: 112.06, y1: 112 }), 0, 2);
+  const stl = binaryStl([...block, ...fin]);
+  const r = await new Slicer({ threads: 1, center: false }).slice(stl);
+  const lost = r.stats.thinLost;
+  assert.ok(lost.length >= 8, `layers with area left out: ${lost.length}`);
+  const total = lost.reduce((a, l) => a + l.areaMm2, 0);
+  // 0.06 × 12 mm a layer, over the layers the fin stands in (all but a layer or two at its ends)
+  assert.ok(total > 0.5 * 0.72 * lost.length && total < 1.5 * 0.72 * lost.length, `area left out ${total} mm² over ${lost.length} layers`);
+  assert.ok(lost.every((l) => l.z <= 2.01), 'only the fin layers');
+  assert.equal(r.warnings.filter((w) => /too thin to print/.test(w)).length, 1, r.warnings.join('; '));
+  // a fin the walls can print is not reported
+  const printable = binaryStl([...block, ...prismTris(rectPolygon({ x0: 112, y0: 100, x1: 112.3, y1: 112 }), 0, 2)]);
+  const ok = await new Slicer({ threads: 1, center: false }).slice(printable);
+  assert.equal(ok.stats.thinLost.reduce((a, l) => a + l.areaMm2, 0) < 0.05, true, 'nothing reported for a 0.3 mm fin');
+  assert.equal(ok.warnings.length, 0, ok.warnings.join('; '));
 });
