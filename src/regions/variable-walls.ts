@@ -20,7 +20,7 @@
  * Wedges and corners blunter than `wallTransitionAngle` get no middle line into their tip (their walls meet
  * there instead): the medial axis prunes such branches.
  */
-import { area, difference, offset } from '../geometry/clip.js';
+import { area, difference, flatten, offset } from '../geometry/clip.js';
 import { medialAxis, type MedialChain } from '../geometry/medial-axis.js';
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
@@ -187,7 +187,7 @@ function nearRings(x: number, y: number, loops: readonly Polygon[], reach: numbe
  * The leftover of one level: each medial-axis point is printed as a middle line, absorbed by the loops
  * beside it (`loops`, the level's wall centrelines, when it lies against them), or lost.
  */
-function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], L: Limits): LeftoverResult {
+function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], band: readonly Polygon[], L: Limits): LeftoverResult {
   const out: LeftoverResult = { beads: [], absorbed: [], lostUm2: 0 };
   // inside the walls, a piece this small is a corner's crumb: what it would add to a wall is not worth its axis
   const least = loops.length ? MIN_INNER_PIECE_AREA_UM2 : MIN_PIECE_AREA_UM2;
@@ -196,9 +196,34 @@ function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], L: Li
   for (const piece of real) {
     // samples about a third of the piece's typical thickness apart: most pieces need no second pass
     const sampleUm = Math.max(AXIS_MIN_SAMPLE_UM, Math.min(AXIS_SAMPLE_UM, stripWidth(piece) / 3));
-    for (const chain of medialAxis([piece], { pruneAngleDeg: L.pruneAngleDeg, sampleUm })) classify(chain, loops, L, out);
+    for (const chain of medialAxis([piece], { pruneAngleDeg: L.pruneAngleDeg, sampleUm })) {
+      if (chain.points.length === 1) speck(piece, chain, loops, L, out);
+      else classify(chain, loops, band, L, out);
+    }
   }
   return out;
+}
+
+/**
+ * A compact piece whose axis is one point (a small square, a pin): absorbed by the walls beside it, else a
+ * loop half its thickness wide, a quarter of it in from its edge (the two passes cover it), else lost.
+ */
+function speck(piece: ExPolygon, chain: MedialChain, loops: readonly Polygon[], L: Limits, out: LeftoverResult): void {
+  const p = chain.points[0], r = chain.radii[0];
+  const g = 2 * r;
+  if (loops.length && nearRings(p.x, p.y, loops, r + L.w / 2 + L.w / 4) < Infinity) {
+    out.absorbed.push({ x: p.x, y: p.y, r });
+    return;
+  }
+  if (g >= L.minFeature) {
+    const bead = beadWidth(g / 2, L);
+    const ring = offset([piece], -Math.min(bead / 2, r / 2));
+    if (ring.length && ring[0].outer.length >= 3) {
+      out.beads.push({ points: ring[0].outer, widths: ring[0].outer.map(() => bead), closed: true });
+      return;
+    }
+  }
+  out.lostUm2 += Math.abs(area([piece]));
 }
 
 const PRINT = 1, ABSORB = 2, LOST = 0;
@@ -229,7 +254,7 @@ function resample(chain: MedialChain): { points: Pt[]; radii: number[]; closed: 
   return { points: pts, radii: rs, closed };
 }
 
-function classify(chain: MedialChain, loops: readonly Polygon[], L: Limits, out: LeftoverResult): void {
+function classify(chain: MedialChain, loops: readonly Polygon[], band: readonly Polygon[], L: Limits, out: LeftoverResult): void {
   const { points, radii, closed } = resample(chain);
   const n = points.length;
   if (n < 2) return;
@@ -265,7 +290,13 @@ function classify(chain: MedialChain, loops: readonly Polygon[], L: Limits, out:
       const pts = run.map((k) => points[k]);
       let len = 0;
       for (let k = 1; k < pts.length; k++) len += dist(pts[k - 1], pts[k]);
-      if (len >= L.minLength || touchesEnd(run, n, closed)) out.beads.push({ points: pts, widths: run.map((k) => beadWidth(2 * radii[k], L)), closed: false });
+      if (len >= L.minLength || touchesEnd(run, n, closed)) {
+        if (band.length && !closed) {
+          if (run[0] === 0) pts[0] = joinBand(pts[1], pts[0], radii[0], band, L);
+          if (run[run.length - 1] === n - 1) pts[pts.length - 1] = joinBand(pts[pts.length - 2], pts[pts.length - 1], radii[n - 1], band, L);
+        }
+        out.beads.push({ points: pts, widths: run.map((k) => beadWidth(2 * radii[k], L)), closed: false });
+      }
       else for (let k = 1; k < run.length; k++) out.lostUm2 += dist(points[run[k - 1]], points[run[k]]) * (radii[run[k - 1]] + radii[run[k]]);
     }
     run = [];
@@ -277,6 +308,19 @@ function classify(chain: MedialChain, loops: readonly Polygon[], L: Limits, out:
     else flush();
   }
   flush();
+}
+
+/**
+ * The end `b` of a middle line coming from `a`, moved on along the line when it stops against the loops'
+ * cover (a fin standing off a wall): on to the cover's edge, so its round end overlaps the loop's bead by its
+ * radius and the two bond with no pocket between them. A free end (a fin's tip) stays.
+ */
+function joinBand(a: Pt, b: Pt, r: number, band: readonly Polygon[], L: Limits): Pt {
+  if (nearRings(b.x, b.y, band, r + SLIVER_UM + L.w / 10) === Infinity) return b;
+  const d = dist(a, b);
+  if (d === 0) return b;
+  const by = r + SLIVER_UM;
+  return { x: Math.round(b.x + ((b.x - a.x) / d) * by), y: Math.round(b.y + ((b.y - a.y) / d) * by) };
 }
 
 /** A run that reaches an open chain's end is a whole thin feature's line: kept however short. */
@@ -397,9 +441,9 @@ interface Level {
 }
 
 /** Level k's leftover: its middle lines go to level k, what wall k - 1's loops absorb to level k - 1. */
-function takeLeftover(levels: Level[], k: number, rest: readonly ExPolygon[], L: Limits): void {
+function takeLeftover(levels: Level[], k: number, rest: readonly ExPolygon[], band: readonly ExPolygon[], L: Limits): void {
   const outer = k > 0 ? levels[k - 1] : null;
-  const left = leftover(rest, outer ? outer.loops : [], L);
+  const left = leftover(rest, outer ? outer.loops : [], flatten(band), L);
   levels[k].beads.push(...left.beads);
   levels[k].lostUm2 += left.lostUm2;
   if (outer) outer.absorbed.push(...left.absorbed);
@@ -420,21 +464,19 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
     const loops = fit.length ? rings(offset(fit, w / 2)) : [];
     // what wall k's loops cannot reach lies between the sides of wall k - 1 (or is the part's outside)
     levels.push({ loops, beads: [], absorbed: [], lostUm2: 0 });
-    // most levels leave nothing between their loops: no difference, no medial axis
-    if (band.length === 0 || area(inside) - area(band) >= MIN_LEFTOVER_UM2) {
-      const rest = band.length ? difference(inside, band) : inside;
-      if (rest.length) takeLeftover(levels, k, rest, L);
-    }
+    const rest = band.length ? difference(inside, band) : inside;
+    if (rest.length) takeLeftover(levels, k, rest, band, L);
     inside = fit;
   }
   // the inner area's necks thinner than a line are the last walls' to fill, not skin's or infill's
   if (inside.length && levels.length) {
     const shrunk = offset(inside, -w / 2);
     const kept = shrunk.length ? offset(shrunk, w / 2) : [];
-    const rest = area(inside) - area(kept) >= MIN_LEFTOVER_UM2 ? difference(inside, shrunk.length ? offset(shrunk, w / 2 + SLIVER_UM) : []) : [];
+    const cover = shrunk.length ? offset(shrunk, w / 2 + SLIVER_UM) : [];
+    const rest = area(inside) - area(kept) >= MIN_LEFTOVER_UM2 ? difference(inside, cover) : [];
     if (rest.length) {
       levels.push({ loops: [], beads: [], absorbed: [], lostUm2: 0 });
-      takeLeftover(levels, levels.length - 1, rest, L);
+      takeLeftover(levels, levels.length - 1, rest, cover, L);
     }
     inside = kept;
   }
