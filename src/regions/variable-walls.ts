@@ -20,7 +20,7 @@
  * Wedges and corners blunter than `wallTransitionAngle` get no middle line into their tip (their walls meet
  * there instead): the medial axis prunes such branches.
  */
-import { area, difference, flatten, offset } from '../geometry/clip.js';
+import { area, boundsOf, difference, flatten, offset, pointInArea } from '../geometry/clip.js';
 import { medialAxis, type MedialChain } from '../geometry/medial-axis.js';
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
@@ -191,8 +191,9 @@ function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], band:
   const out: LeftoverResult = { beads: [], absorbed: [], lostUm2: 0 };
   // inside the walls, a piece this small is a corner's crumb: what it would add to a wall is not worth its axis
   const least = loops.length ? MIN_INNER_PIECE_AREA_UM2 : MIN_PIECE_AREA_UM2;
-  const real = pieces.filter((p) => Math.abs(area([p])) >= least);
+  let real = pieces.filter((p) => Math.abs(area([p])) >= least);
   if (real.length === 0) return out;
+  if (loops.length) real = absorbThin(real, L, out);
   for (const piece of real) {
     // samples about a third of the piece's typical thickness apart: most pieces need no second pass
     const sampleUm = Math.max(AXIS_MIN_SAMPLE_UM, Math.min(AXIS_SAMPLE_UM, stripWidth(piece) / 3));
@@ -202,6 +203,40 @@ function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], band:
     }
   }
   return out;
+}
+
+/**
+ * Inside the walls, the pieces thinner everywhere than a middle line need no medial axis: the walls beside
+ * them take them whole. Their boundary points stand for the axis (the loops look up the nearest one, on the
+ * side facing them), each with the piece's mean half-thickness. Returns the pieces that need the axis.
+ */
+function absorbThin(pieces: ExPolygon[], L: Limits, out: LeftoverResult): ExPolygon[] {
+  // one offset for all the pieces: what survives shrinking by half a middle line is where one could go
+  const cores = offset(pieces, -L.middle / 2);
+  if (cores.length === 0 && pieces.length === 0) return pieces;
+  const thick = new Uint8Array(pieces.length);
+  const boxes = pieces.map((p) => boundsOf([p]));
+  for (const core of cores) {
+    const q = core.outer[0];
+    for (let i = 0; i < pieces.length; i++) {
+      const b = boxes[i];
+      if (q.x < b.minX || q.x > b.maxX || q.y < b.minY || q.y > b.maxY || !pointInArea(q, pieces[i])) continue;
+      thick[i] = 1;
+      break;
+    }
+  }
+  const rest: ExPolygon[] = [];
+  for (let i = 0; i < pieces.length; i++) {
+    if (thick[i]) {
+      rest.push(pieces[i]);
+      continue;
+    }
+    const r = stripWidth(pieces[i]) / 2;
+    for (const ring of [pieces[i].outer, ...pieces[i].holes]) {
+      for (const p of subdivide(ring, AXIS_STEP_UM)) out.absorbed.push({ x: p.x, y: p.y, r });
+    }
+  }
+  return rest;
 }
 
 /**
