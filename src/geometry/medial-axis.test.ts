@@ -127,6 +127,39 @@ for (const t of [100, 250, 450, 800, 1600]) {
   });
 }
 
+test('staggered samples on the two sides of a strip (an extra vertex on one side): nodes centred, one straight line of radius t/2', () => {
+  // with the spacing set by the radius, uncentred circumcentres zigzag about the centre line by up to s²/(8t)
+  // and their radii are up to s²/(4t²) short: simplification at 1 µm would keep most of them
+  for (const t of [60, 200, 400]) {
+    const L = 5000;
+    const area: ExPolygon = { outer: [P(0, 0), P(L, 0), P(L, t), P(1234, t), P(0, t)], holes: [] };
+    const chains = medialAxis([area], { sampleUm: t / 2, toleranceUm: 1 });
+    assert.equal(chains.length, 1);
+    const [c] = chains;
+    assert.ok(c.points.length <= 4, `${c.points.length} points for t = ${t}`);
+    c.points.forEach((p, i) => {
+      assert.ok(Math.abs(p.y - t / 2) <= 2, `off the centre line: ${p.x},${p.y}`);
+      assert.ok(Math.abs(c.radii[i] - t / 2) <= 0.01 * (t / 2), `radius ${c.radii[i]} at x ${p.x}, t ${t}`);
+    });
+    assert.ok(c.points[0].x <= t && c.points[c.points.length - 1].x >= L - t);
+    assertSound(chains, [area]);
+  }
+});
+
+test('a strip given with 200 vertices along its sides (too many for ear clipping) has the axis it has with 4', () => {
+  const few: ExPolygon = { outer: [P(0, 0), P(10000, 0), P(10000, 400), P(0, 400)], holes: [] };
+  const dense: Pt[] = [];
+  for (let i = 0; i < 100; i++) dense.push(P(i * 100, 0));
+  dense.push(P(10000, 0), P(10000, 400));
+  for (let i = 100; i > 0; i--) dense.push(P(i * 100 - 37, 400));
+  dense.push(P(0, 400));
+  const a = medialAxis([few]), b = medialAxis([{ outer: dense, holes: [] }]);
+  assert.equal(a.length, 1);
+  assert.equal(b.length, 1);
+  for (let k = 0; k < 2; k++) assert.ok(near(ends(a[0])[k], ends(b[0])[k], 3), `ends ${JSON.stringify(ends(a[0]))} and ${JSON.stringify(ends(b[0]))}`);
+  for (const c of [...a, ...b]) for (const r of c.radii) assert.ok(Math.abs(r - 200) <= 0.01 * 200, `radius ${r}`);
+});
+
 // ---------------------------------------------------------------------------------------------------------
 // rings
 
@@ -186,6 +219,34 @@ test('a ring with a spur: a closed cycle and an open chain that ends on one of i
   assert.ok(joint, 'the spur ends on a point of the cycle');
   assert.ok(near(joint, P(4750, 2500), 100));
   assert.ok(ends(spur).some((e) => near(e, P(7750, 2500), 20)));
+  assertSound(chains, [area]);
+});
+
+test('a plate with two holes side by side: three chains between the two junctions of the bar between the holes', () => {
+  const area: ExPolygon = {
+    outer: rect(0, 0, 6000, 2000).outer,
+    holes: [rect(500, 500, 2700, 1500).outer.reverse(), rect(3300, 500, 5500, 1500).outer.reverse()],
+  };
+  const chains = medialAxis([area]);
+  assert.equal(chains.length, 3);
+  assert.ok(chains.every((c) => !c.closed));
+  for (const want of [P(3000, 340), P(3000, 1660)]) {
+    assert.ok(chains.every((c) => ends(c).some((e) => near(e, want, 15))), `every chain ends near ${want.x},${want.y}`);
+  }
+  for (const c of chains) for (const r of c.radii) assert.ok(r >= 0.95 * 250 && r <= 345, `radius ${r}`);
+  assertSound(chains, [area]);
+});
+
+test('a hole level with a notch in the outer ring: one closed chain round it', () => {
+  const area: ExPolygon = {
+    outer: [P(0, 0), P(3000, 0), P(3000, 400), P(2600, 500), P(3000, 600), P(3000, 1000), P(0, 1000)],
+    holes: [[P(500, 300), P(500, 700), P(2000, 500)]],
+  };
+  const chains = medialAxis([area]);
+  assert.equal(chains.length, 1);
+  assert.equal(chains[0].closed, true);
+  const xs = chains[0].points.map((p) => p.x), ys = chains[0].points.map((p) => p.y);
+  assert.ok(Math.min(...xs) < 500 && Math.max(...xs) > 2000 && Math.min(...ys) < 300 && Math.max(...ys) > 700, 'round the hole');
   assertSound(chains, [area]);
 });
 
