@@ -15,8 +15,8 @@
  *     0.4 mm lines and a 0.2 mm one;
  *   - otherwise: one middle line along the medial axis, as wide as the strip there (clamped to the minimum
  *     and maximum bead width);
- * - after the last wall, necks of the inner area thinner than one line are leftovers of the same kind, so
- *   skin and infill are left only areas they can fill.
+ * - after the last wall, pieces of the inner area thinner than one line all along are leftovers of the same
+ *   kind, so skin and infill are left only areas they can fill.
  * Wedges and corners blunter than `wallTransitionAngle` get no middle line into their tip (their walls meet
  * there instead): the medial axis prunes such branches.
  */
@@ -30,8 +30,6 @@ import type { IslandWalls } from './walls.js';
 
 /** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
 const MIN_LOOP_AREA_UM2 = 50 * 50;
-/** A level whose loops leave less than this (µm²) unfilled has no leftover worth a look. */
-const MIN_LEFTOVER_UM2 = 60 * 60;
 /** Leftover pieces with less area than this (µm²) are specks: not worth a medial axis. */
 const MIN_PIECE_AREA_UM2 = 20 * 20;
 /** Leftover pieces inside the walls with less area than this (µm²) are left to the walls round them. */
@@ -503,17 +501,17 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
     if (rest.length) takeLeftover(levels, k, rest, band, L);
     inside = fit;
   }
-  // the inner area's necks thinner than a line are the last walls' to fill, not skin's or infill's
+  // pieces of the inner area thinner than a line all along (the middle of a wall a little thicker than its
+  // loops) are the last walls' to fill, not skin's or infill's: their mean width tells them, no boolean needed
   if (inside.length && levels.length) {
-    const shrunk = offset(inside, -w / 2);
-    const kept = shrunk.length ? offset(shrunk, w / 2) : [];
-    const cover = shrunk.length ? offset(shrunk, w / 2 + SLIVER_UM) : [];
-    const rest = area(inside) - area(kept) >= MIN_LEFTOVER_UM2 ? difference(inside, cover) : [];
-    if (rest.length) {
+    const thin: ExPolygon[] = [];
+    const kept: ExPolygon[] = [];
+    for (const piece of inside) (stripWidth(piece) < w ? thin : kept).push(piece);
+    if (thin.length) {
       levels.push({ loops: [], beads: [], absorbed: [], lostUm2: 0 });
-      takeLeftover(levels, levels.length - 1, rest, cover, L);
+      takeLeftover(levels, levels.length - 1, thin, [], L);
+      inside = kept;
     }
-    inside = kept;
   }
   for (const level of levels) lostUm2 += level.lostUm2;
   const levelCount = levels.length;
