@@ -230,14 +230,21 @@ export class Slicer {
   }
 }
 
-/** Left-out area below which no warning is given, mm²: specks, not features. */
-const THIN_LOSS_WARN_MM2 = 0.05;
+/**
+ * No warning for less than this left out on any one layer and in all, mm²: the tip of a sharp corner or a
+ * crease's last sliver, not a feature (a 0.06 mm fin 2 mm long is 0.12 mm² a layer).
+ */
+const THIN_LOSS_WARN_LAYER_MM2 = 0.1;
+const THIN_LOSS_WARN_TOTAL_MM2 = 0.5;
 
 /** One line saying what was too thin to print, where and how much, or null when it is only specks. */
 export function thinLossWarning(lost: readonly ThinLoss[], cfg: Config): string | null {
-  let total = 0;
-  for (const l of lost) total += l.areaMm2;
-  if (lost.length === 0 || total < THIN_LOSS_WARN_MM2) return null;
+  let total = 0, most = 0;
+  for (const l of lost) {
+    total += l.areaMm2;
+    if (l.areaMm2 > most) most = l.areaMm2;
+  }
+  if (lost.length === 0 || (most < THIN_LOSS_WARN_LAYER_MM2 && total < THIN_LOSS_WARN_TOTAL_MM2)) return null;
   const first = lost[0], last = lost[lost.length - 1];
   const layers = lost.length === 1 ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)` : `${lost.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
   const min = ((cfg.minFeatureSize / 100) * cfg.nozzleDiameter).toFixed(2);
