@@ -231,7 +231,7 @@ function absorbThin(pieces: ExPolygon[], L: Limits, out: LeftoverResult): ExPoly
     }
     const r = stripWidth(pieces[i]) / 2;
     for (const ring of [pieces[i].outer, ...pieces[i].holes]) {
-      for (const p of subdivide(ring, AXIS_STEP_UM)) out.absorbed.push({ x: p.x, y: p.y, r });
+      for (const p of subdivide(ring, WIDEN_STEP_UM)) out.absorbed.push({ x: p.x, y: p.y, r });
     }
   }
   return rest;
@@ -523,7 +523,7 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
       const c = Math.min(L.distribution, k + j + 1);
       for (const p of levels[k + j].absorbed) {
         grid ??= new PointGrid(w);
-        grid.add({ ...p, j, c });
+        grid.add({ x: p.x, y: p.y, r: p.r, j, c });
         reach = Math.max(reach, w / 2 + j * w + p.r + w / 4);
       }
     }
