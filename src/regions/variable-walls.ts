@@ -26,10 +26,8 @@ import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/ty
 import type { Config } from '../settings/resolve.js';
 import { stripWidth } from './strip-width.js';
 import type { WallSet } from './types.js';
-import type { IslandWalls } from './walls.js';
+import { rings, type IslandWalls } from './walls.js';
 
-/** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
-const MIN_LOOP_AREA_UM2 = 50 * 50;
 /** Leftover pieces with less area than this (µm²) are specks: not worth a medial axis. */
 const MIN_PIECE_AREA_UM2 = 20 * 20;
 /** Leftover pieces inside the walls with less area than this (µm²) are left to the walls round them. */
@@ -77,16 +75,6 @@ function limitsOf(cfg: Config, w: number): Limits {
     pruneAngleDeg: cfg.wallTransitionAngle,
     distribution: cfg.wallDistributionCount,
   };
-}
-
-function rings(areas: readonly ExPolygon[]): Polygon[] {
-  const out: Polygon[] = [];
-  for (const a of areas) {
-    if (Math.abs(area([a])) < MIN_LOOP_AREA_UM2) continue;
-    out.push(a.outer);
-    for (const h of a.holes) out.push(h);
-  }
-  return out;
 }
 
 /** A point of a leftover's medial axis that the walls beside it absorb. */

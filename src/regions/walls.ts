@@ -25,7 +25,8 @@ export interface IslandWalls {
 /** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
 const MIN_LOOP_AREA_UM2 = 0.05 * 1000 * 0.05 * 1000;
 
-function rings(areas: readonly ExPolygon[]): Polygon[] {
+/** The rings of the areas big enough to print as loops (wall centrelines). */
+export function rings(areas: readonly ExPolygon[]): Polygon[] {
   const out: Polygon[] = [];
   for (const a of areas) {
     if (Math.abs(area([a])) < MIN_LOOP_AREA_UM2) continue;
