@@ -299,7 +299,7 @@ function classify(chain: MedialChain, loops: readonly Polygon[], band: readonly 
   // runs of printed points become middle lines
   const all = kind.every((k) => k === PRINT);
   if (all && closed) {
-    out.beads.push({ points: points.slice(), widths: radii.map((r) => beadWidth(2 * r, L)), closed: true });
+    out.beads.push(simplifyBead(points.slice(), radii.map((r) => beadWidth(2 * r, L)), true));
     return;
   }
   // start a closed chain's walk at a point that is not printed, so no run is split across its end
@@ -316,7 +316,7 @@ function classify(chain: MedialChain, loops: readonly Polygon[], band: readonly 
           if (run[0] === 0) pts[0] = joinBand(pts[1], pts[0], radii[0], band, L);
           if (run[run.length - 1] === n - 1) pts[pts.length - 1] = joinBand(pts[pts.length - 2], pts[pts.length - 1], radii[n - 1], band, L);
         }
-        out.beads.push({ points: pts, widths: run.map((k) => beadWidth(2 * radii[k], L)), closed: false });
+        out.beads.push(simplifyBead(pts, run.map((k) => beadWidth(2 * radii[k], L)), false));
       }
       else for (let k = 1; k < run.length; k++) out.lostUm2 += dist(points[run[k - 1]], points[run[k]]) * (radii[run[k - 1]] + radii[run[k]]);
     }
@@ -342,6 +342,76 @@ function joinBand(a: Pt, b: Pt, r: number, band: readonly Polygon[], L: Limits):
   if (d === 0) return b;
   const by = r + SLIVER_UM;
   return { x: Math.round(b.x + ((b.x - a.x) / d) * by), y: Math.round(b.y + ((b.y - a.y) / d) * by) };
+}
+
+/** A middle line's points may leave the line by this much (µm) and its widths by this much (µm) when simplified. */
+const BEAD_TOL_UM = 5;
+const BEAD_WIDTH_TOL_UM = 5;
+/** Widths of a segment's two ends differ by at most this (µm): the firmware lays a segment at one width. */
+const BEAD_WIDTH_STEP_UM = 20;
+
+/**
+ * A middle line with the points it does not need (Douglas–Peucker over position and width together: a point
+ * goes when it lies within BEAD_TOL_UM of the line between the points kept round it, and its width within
+ * BEAD_WIDTH_TOL_UM of the width interpolated there). The axis was resampled finely to find where lines start.
+ */
+function simplifyBead(points: Pt[], widths: number[], closed: boolean): Bead {
+  const n = points.length;
+  if (n < 3) return { points, widths, closed };
+  const keep = new Uint8Array(n);
+  const last = closed ? n : n - 1;
+  keep[0] = 1;
+  keep[last % n] = 1;
+  // a closed line is split at its first point and the point farthest from it
+  const stack: [number, number][] = [];
+  if (closed) {
+    let far = 1, fd = -1;
+    for (let i = 1; i < n; i++) {
+      const d = dist(points[0], points[i]);
+      if (d > fd) {
+        fd = d;
+        far = i;
+      }
+    }
+    keep[far] = 1;
+    stack.push([0, far], [far, n]);
+  } else stack.push([0, n - 1]);
+  while (stack.length) {
+    const [a, b] = stack.pop()!;
+    if (b - a < 2) continue;
+    const pa = points[a], pb = points[b % n];
+    const wa = widths[a], wb = widths[b % n];
+    const dx = pb.x - pa.x, dy = pb.y - pa.y;
+    const len2 = dx * dx + dy * dy;
+    let worst = -1, at = -1;
+    for (let i = a + 1; i < b; i++) {
+      const p = points[i];
+      const t = len2 > 0 ? Math.max(0, Math.min(1, ((p.x - pa.x) * dx + (p.y - pa.y) * dy) / len2)) : 0;
+      const off = Math.hypot(pa.x + t * dx - p.x, pa.y + t * dy - p.y) / BEAD_TOL_UM;
+      const wOff = Math.abs(wa + t * (wb - wa) - widths[i]) / BEAD_WIDTH_TOL_UM;
+      const e = Math.max(off, wOff);
+      if (e > worst) {
+        worst = e;
+        at = i;
+      }
+    }
+    // a segment prints at one width (its E is spread evenly along it): no segment spans more than one step
+    if (worst <= 1 && Math.abs(wb - wa) > BEAD_WIDTH_STEP_UM) {
+      worst = 2;
+      at = (a + b) >> 1;
+    }
+    if (worst > 1) {
+      keep[at] = 1;
+      stack.push([a, at], [at, b]);
+    }
+  }
+  const pts: Pt[] = [], ws: number[] = [];
+  for (let i = 0; i < n; i++) {
+    if (!keep[i]) continue;
+    pts.push(points[i]);
+    ws.push(widths[i]);
+  }
+  return { points: pts, widths: ws, closed };
 }
 
 /** A run that reaches an open chain's end is a whole thin feature's line: kept however short. */
@@ -420,7 +490,8 @@ function dropStraight(points: Polygon, widths: Float64Array): { points: Polygon;
       const off = Math.abs((b.x - a.x) * dy - (b.y - a.y) * dx) / len;
       const t = ((b.x - a.x) * dx + (b.y - a.y) * dy) / (len * len);
       const w = widths[prev] + t * (widths[next] - widths[prev]);
-      if (off <= STRAIGHT_TOL_UM && t > 0 && t < 1 && Math.abs(w - widths[i]) <= WIDTH_TOL_MM) {
+      // (and the segment left would not span more than one width step: it prints at one width)
+      if (off <= STRAIGHT_TOL_UM && t > 0 && t < 1 && Math.abs(w - widths[i]) <= WIDTH_TOL_MM && Math.abs(widths[next] - widths[prev]) * UM_PER_MM <= BEAD_WIDTH_STEP_UM) {
         keep[i] = 0;
         continue;
       }
