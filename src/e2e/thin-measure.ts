@@ -10,6 +10,7 @@
 import { parseGcode } from '../analysis/gcode-parse.js';
 import { Feature } from '../analysis/feature-names.js';
 import type { ParsedGcode } from '../analysis/gcode-types.js';
+import { segmentDistance2 } from '../geometry/types.js';
 import { polygonArea, type Polygon } from './thin-shapes.js';
 
 export type { Point, Polygon } from './thin-shapes.js';
@@ -93,21 +94,11 @@ export function pointInPolygon(x: number, y: number, poly: Polygon): boolean {
   return inside;
 }
 
-/** Squared distance from a point to segment a–b. */
-function segDist2(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const dx = bx - ax, dy = by - ay;
-  const l2 = dx * dx + dy * dy;
-  let t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
-  t = t < 0 ? 0 : t > 1 ? 1 : t;
-  const ex = ax + t * dx - px, ey = ay + t * dy - py;
-  return ex * ex + ey * ey;
-}
-
 /** Distance from a point to a polygon's boundary. */
 export function distanceToBoundary(x: number, y: number, poly: Polygon): number {
   let best = Infinity;
   for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
-    best = Math.min(best, segDist2(x, y, poly[j][0], poly[j][1], poly[i][0], poly[i][1]));
+    best = Math.min(best, segmentDistance2(x, y, poly[j][0], poly[j][1], poly[i][0], poly[i][1]));
   }
   return Math.sqrt(best);
 }
@@ -217,7 +208,7 @@ function rasterBeads(grid: Grid, layer: BeadLayer, covered: Uint8Array): void {
       for (let i = i0; i <= i1; i++) {
         const idx = j * nx + i;
         if (covered[idx]) continue;
-        if (segDist2(x0 + (i + 0.5) * cell, y, ax, ay, bx, by) <= r2) covered[idx] = 1;
+        if (segmentDistance2(x0 + (i + 0.5) * cell, y, ax, ay, bx, by) <= r2) covered[idx] = 1;
       }
     }
   }

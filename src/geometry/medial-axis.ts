@@ -35,7 +35,7 @@
  */
 import Delaunator from 'delaunator';
 import { pointInRing, twiceArea } from './contain.js';
-import { hypot, type ExPolygon, type Pt } from './types.js';
+import { hypot, segmentDistance2, type ExPolygon, type Pt } from './types.js';
 
 export interface MedialChain {
   /** Points along the axis, integer µm (rounded). */
@@ -333,15 +333,6 @@ function splitRings(m: Mesh, pieces: Int32Array): number[][] {
 /** Twice the signed area of triangle abc (positive when c is left of a→b). */
 function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: number): number {
   return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
-}
-
-/** Squared distance from p to segment ab. */
-function segDist2(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const dx = bx - ax, dy = by - ay, l2 = dx * dx + dy * dy;
-  let t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
-  t = t < 0 ? 0 : t > 1 ? 1 : t;
-  const ex = ax + t * dx - px, ey = ay + t * dy - py;
-  return ex * ex + ey * ey;
 }
 
 /** Circumcentre and circumradius of triangle t, into `out`; false for a degenerate triangle. */
@@ -1095,7 +1086,7 @@ function boundaryDistance(m: Mesh, t: number, px: number, py: number): number {
   for (let k = 0; k < 3; k++) {
     const a = m.tri[3 * t + k], b = next[a], c = prev[a];
     const ax = xy[2 * a], ay = xy[2 * a + 1];
-    d2 = Math.min(d2, segDist2(px, py, ax, ay, xy[2 * b], xy[2 * b + 1]), segDist2(px, py, xy[2 * c], xy[2 * c + 1], ax, ay));
+    d2 = Math.min(d2, segmentDistance2(px, py, ax, ay, xy[2 * b], xy[2 * b + 1]), segmentDistance2(px, py, xy[2 * c], xy[2 * c + 1], ax, ay));
   }
   return Math.sqrt(d2);
 }
@@ -1126,7 +1117,7 @@ function centred(m: Mesh, t: number, px: number, py: number): Float64Array | nul
     const nx = -dy / len, ny = dx / len;
     const db = (px - ax) * nx + (py - ay) * ny;
     const wx = xy[2 * w], wy = xy[2 * w + 1], pw = prev[w], nw = next[w];
-    const dw = Math.sqrt(Math.min(segDist2(px, py, xy[2 * pw], xy[2 * pw + 1], wx, wy), segDist2(px, py, wx, wy, xy[2 * nw], xy[2 * nw + 1])));
+    const dw = Math.sqrt(Math.min(segmentDistance2(px, py, xy[2 * pw], xy[2 * pw + 1], wx, wy), segmentDistance2(px, py, wx, wy, xy[2 * nw], xy[2 * nw + 1])));
     const shift = (dw - db) / 2;
     if (!(db > 0) || Math.abs(shift) > CENTRING_LIMIT * db) return null;
     centre[0] = px + shift * nx;

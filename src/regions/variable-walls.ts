@@ -22,7 +22,7 @@
  */
 import { area, boundsOf, difference, flatten, offset, pointInArea } from '../geometry/clip.js';
 import { medialAxis, type MedialChain } from '../geometry/medial-axis.js';
-import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
+import { hypot, segmentDistance2, UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
 import { stripWidth } from './strip-width.js';
 import type { WallSet } from './types.js';
@@ -150,23 +150,21 @@ interface LeftoverResult {
 
 /** Distance from (x, y) to the nearest point of the rings, µm, if within `reach`; else Infinity. */
 function nearRings(x: number, y: number, loops: readonly Polygon[], reach: number): number {
-  let best = Infinity;
-  const r2 = reach * reach;
+  let best2 = reach * reach;
+  let found = false;
   for (const ring of loops) {
     for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
       const a = ring[j], b = ring[i];
       // cheap box rejection
       if (Math.min(a.x, b.x) - reach > x || Math.max(a.x, b.x) + reach < x || Math.min(a.y, b.y) - reach > y || Math.max(a.y, b.y) + reach < y) continue;
-      const dx = b.x - a.x, dy = b.y - a.y;
-      const len2 = dx * dx + dy * dy;
-      let t = len2 > 0 ? ((x - a.x) * dx + (y - a.y) * dy) / len2 : 0;
-      t = t < 0 ? 0 : t > 1 ? 1 : t;
-      const ex = a.x + t * dx - x, ey = a.y + t * dy - y;
-      const d2 = ex * ex + ey * ey;
-      if (d2 <= r2 && d2 < best * best) best = Math.sqrt(d2);
+      const d2 = segmentDistance2(x, y, a.x, a.y, b.x, b.y);
+      if (d2 <= best2) {
+        best2 = d2;
+        found = true;
+      }
     }
   }
-  return best;
+  return found ? Math.sqrt(best2) : Infinity;
 }
 
 /**
@@ -424,7 +422,7 @@ function beadWidth(g: number, L: Limits): number {
 }
 
 function dist(a: Pt, b: Pt): number {
-  return Math.sqrt((a.x - b.x) ** 2 + (a.y - b.y) ** 2);
+  return hypot(a.x - b.x, a.y - b.y);
 }
 
 /**

@@ -3,7 +3,7 @@
  * labels over the infill region, refined by bisection, linked, simplified, clipped to the region and
  * chained with short travel. A multi-pass shader gives one set of paths per pass.
  */
-import type { ExPolygon, Polyline, Pt } from '../geometry/types.js';
+import { segmentDistance2, type ExPolygon, type Polyline, type Pt } from '../geometry/types.js';
 import { boundsOf, clipLines, offset } from '../geometry/clip.js';
 import { StrataError } from '../errors.js';
 import { orderPaths } from './chain.js';
@@ -105,22 +105,10 @@ export function labelBoundaries(label: LabelFn, region: readonly ExPolygon[], op
   return orderPaths(out, opts.start ?? { x: all.minX, y: all.minY });
 }
 
-/** Squared distance from (px, py) to segment ab, µm². */
-function segDist2(px: number, py: number, a: Pt, b: Pt): number {
-  const dx = b.x - a.x;
-  const dy = b.y - a.y;
-  const len2 = dx * dx + dy * dy;
-  let t = len2 === 0 ? 0 : ((px - a.x) * dx + (py - a.y) * dy) / len2;
-  t = Math.max(0, Math.min(1, t));
-  const qx = a.x + t * dx - px;
-  const qy = a.y + t * dy - py;
-  return qx * qx + qy * qy;
-}
-
 function nearBoundary(px: number, py: number, region: readonly ExPolygon[], tol2: number): boolean {
   for (const e of region) {
     for (const ring of [e.outer, ...e.holes]) {
-      for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) if (segDist2(px, py, ring[j], ring[i]) <= tol2) return true;
+      for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) if (segmentDistance2(px, py, ring[j].x, ring[j].y, ring[i].x, ring[i].y) <= tol2) return true;
     }
   }
   return false;

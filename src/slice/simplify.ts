@@ -3,18 +3,7 @@
  * consecutive duplicates are dropped, then Douglas–Peucker keeps every removed point within the
  * tolerance of the kept outline, starting from a hull corner (a strict bound, unlike neighbour-only vertex removal).
  */
-import type { Polygon } from '../geometry/types.js';
-
-/** Squared distance from (px, py) to the segment (ax, ay)–(bx, by). */
-function segDist2(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const dx = bx - ax, dy = by - ay;
-  const len2 = dx * dx + dy * dy;
-  let u = len2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / len2 : 0;
-  if (u < 0) u = 0;
-  else if (u > 1) u = 1;
-  const ex = px - (ax + u * dx), ey = py - (ay + u * dy);
-  return ex * ex + ey * ey;
-}
+import { segmentDistance2, type Polygon } from '../geometry/types.js';
 
 /**
  * Simplify closed rings given as slot sequences into µm polygons. Rings left with fewer than three
@@ -94,7 +83,7 @@ export function simplifySlotRings(
       let best = -1, bestD = tol2;
       const ax = xs[a], ay = ys[a], bx = xs[b], by = ys[b];
       for (let i = a + 1; i < b; i++) {
-        const d = segDist2(xs[i], ys[i], ax, ay, bx, by);
+        const d = segmentDistance2(xs[i], ys[i], ax, ay, bx, by);
         if (d > bestD) {
           bestD = d;
           best = i;
