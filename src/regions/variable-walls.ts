@@ -22,6 +22,7 @@
  */
 import { area, boundsOf, difference, flatten, offset, pointInArea } from '../geometry/clip.js';
 import { medialAxis, type MedialChain } from '../geometry/medial-axis.js';
+import { PointGrid } from '../geometry/point-grid.js';
 import { hypot, segmentDistance2, UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
 import { stripWidth } from './strip-width.js';
@@ -91,47 +92,10 @@ interface Share extends Absorbed {
   c: number;
 }
 
-/** Absorbed points by grid cell, for the loops' look-ups. */
-class PointGrid {
-  readonly #cell: number;
-  readonly #cells = new Map<number, Share[]>();
-  constructor(cell: number) {
-    this.#cell = cell;
-  }
-  #key(cx: number, cy: number): number {
-    return (cx + 32768) * 65536 + (cy + 32768);
-  }
-  add(p: Share): void {
-    const k = this.#key(Math.floor(p.x / this.#cell), Math.floor(p.y / this.#cell));
-    const list = this.#cells.get(k);
-    if (list) list.push(p);
-    else this.#cells.set(k, [p]);
-  }
-  get size(): number {
-    return this.#cells.size;
-  }
-  /** The point nearest (x, y) within `reach` µm, or null. */
-  nearest(x: number, y: number, reach: number): Share | null {
-    const c = this.#cell;
-    const x0 = Math.floor((x - reach) / c), x1 = Math.floor((x + reach) / c);
-    const y0 = Math.floor((y - reach) / c), y1 = Math.floor((y + reach) / c);
-    let best: Share | null = null;
-    let bd = reach * reach;
-    for (let cx = x0; cx <= x1; cx++) {
-      for (let cy = y0; cy <= y1; cy++) {
-        const list = this.#cells.get(this.#key(cx, cy));
-        if (!list) continue;
-        for (const p of list) {
-          const d = (p.x - x) ** 2 + (p.y - y) ** 2;
-          if (d <= bd) {
-            bd = d;
-            best = p;
-          }
-        }
-      }
-    }
-    return best;
-  }
+/** The absorbed points a level's loops look up, with their grid (ids are indices into `shares`). */
+interface Shares {
+  grid: PointGrid;
+  shares: Share[];
 }
 
 /** A middle line: open or closed, with a width per point (µm). */
@@ -433,8 +397,9 @@ function dist(a: Pt, b: Pt): number {
  * lies where a strip beside this wall would be. Long edges are split first so the widening follows the
  * strip. Returns the loops and their widths (null for a loop that absorbs nothing).
  */
-function widenLoops(loops: readonly Polygon[], grid: PointGrid | null, L: Limits, reach: number): { paths: Polygon[]; widths: (Float64Array | null)[] } {
-  if (!grid || grid.size === 0) return { paths: loops.slice(), widths: loops.map(() => null) };
+function widenLoops(loops: readonly Polygon[], found: Shares | null, L: Limits, reach: number): { paths: Polygon[]; widths: (Float64Array | null)[] } {
+  if (!found) return { paths: loops.slice(), widths: loops.map(() => null) };
+  const { grid, shares } = found;
   const paths: Polygon[] = [];
   const widths: (Float64Array | null)[] = [];
   for (const loop of loops) {
@@ -444,7 +409,8 @@ function widenLoops(loops: readonly Polygon[], grid: PointGrid | null, L: Limits
     const moved: Pt[] = new Array(dense.length);
     for (let i = 0; i < dense.length; i++) {
       const p = dense[i];
-      const q = grid.nearest(p.x, p.y, reach);
+      const id = grid.nearest(p.x, p.y, reach);
+      const q = id >= 0 ? shares[id] : null;
       // the strip lies against this wall when its axis is about half a line plus its half-thickness away
       const d = q ? Math.sqrt((q.x - p.x) ** 2 + (q.y - p.y) ** 2) : Infinity;
       if (q && d <= L.w / 2 + q.j * L.w + q.r + L.w / 4) {
@@ -574,18 +540,19 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
   const levelCount = levels.length;
   levels.forEach((level, k) => {
     // the strips this level's loops share: its own (j = 0) and those of the next c - 1 levels inwards
-    let grid: PointGrid | null = null;
+    let found: Shares | null = null;
     let reach = 0;
     for (let j = 0; j < L.distribution && k + j < levelCount; j++) {
       const c = Math.min(L.distribution, k + j + 1);
       for (const p of levels[k + j].absorbed) {
-        grid ??= new PointGrid(w);
-        grid.add({ x: p.x, y: p.y, r: p.r, j, c });
+        found ??= { grid: new PointGrid(w), shares: [] };
+        found.grid.add(p.x, p.y);
+        found.shares.push({ x: p.x, y: p.y, r: p.r, j, c });
         reach = Math.max(reach, w / 2 + j * w + p.r + w / 4);
       }
     }
     if (level.loops.length) {
-      const { paths, widths } = widenLoops(level.loops, grid, L, reach);
+      const { paths, widths } = widenLoops(level.loops, found, L, reach);
       walls.push({ role: 'wall', wall: k, closed: true, paths, widths: widths.some((x) => x) ? widths : null });
     }
     const open = level.beads.filter((b) => !b.closed);

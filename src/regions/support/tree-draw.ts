@@ -10,7 +10,7 @@ import { hypot, type Bounds, type ExPolygon, type Polygon } from '../../geometry
 import { regularPolygon, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
 import { AreaIndex } from '../../geometry/area-index.js';
-import { FixedPointGrid } from './point-grid.js';
+import { FixedPointGrid } from '../../geometry/point-grid.js';
 import { ITEMS_PER_STEP } from './tree-nodes.js';
 
 /**

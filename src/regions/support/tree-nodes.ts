@@ -7,7 +7,7 @@
  * merged trunks further.
  */
 import type { Found } from '../../geometry/area-index.js';
-import { FixedPointGrid } from './point-grid.js';
+import { FixedPointGrid } from '../../geometry/point-grid.js';
 import { classOf, type Blocked, type Keep, type TreeVolumes } from './tree-volumes.js';
 import { hypot } from '../../geometry/types.js';
 

@@ -6,7 +6,7 @@
 import { offset } from '../../geometry/clip.js';
 import { hypot, type ExPolygon, type Pt } from '../../geometry/types.js';
 import { AreaIndex } from '../../geometry/area-index.js';
-import { PointGrid } from './point-grid.js';
+import { PointGrid } from '../../geometry/point-grid.js';
 
 /**
  * With no roof (the tips hold the part themselves), edge points closer than this share of the spacing to a

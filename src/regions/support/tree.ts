@@ -18,7 +18,7 @@ import { area, boundsOf, intersection, offset, union } from '../../geometry/clip
 import { hypot, UM_PER_MM, type ExPolygon, type Pt } from '../../geometry/types.js';
 import type { SupportAreas } from '../types.js';
 import type { ModelLayers } from './model-layers.js';
-import { PointGrid } from './point-grid.js';
+import { PointGrid } from '../../geometry/point-grid.js';
 import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
 import { VERTEX_ROUNDING_UM, type RegularPolygon } from '../../geometry/regular-polygon.js';
 import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';

@@ -6,7 +6,7 @@
  * its storage). Which ids are found never depends on how the points are bucketed, only their order does.
  */
 
-import { bucketByCell } from '../../geometry/cell-buckets.js';
+import { bucketByCell } from './cell-buckets.js';
 
 /** Cell coordinates are taken modulo this in a bucket's key, which then stays a small integer. */
 const WRAP = 1 << 15;
