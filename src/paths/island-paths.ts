@@ -9,7 +9,7 @@ import { generateInfill, solidFill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
 import { allSkin } from '../regions/skin-areas.js';
-import type { GapLoop } from '../regions/gap-loops.js';
+import { gapLoopWidths, type GapLoop } from '../regions/gap-loops.js';
 import type { IslandRegions } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
@@ -64,7 +64,7 @@ function skinEntries(island: IslandRegions, ctx: IslandContext, bridgeArea: read
 
 /** Gap loops with their own widths, as one entry of per-path widths. */
 function gapEntry(cfg: Config, role: 'skin-gap', gaps: readonly GapLoop[]): PathEntry {
-  const widths = gaps.map((g) => new Float64Array(g.loop.length).fill(g.widthUm / UM_PER_MM));
+  const widths = gapLoopWidths(gaps);
   return makeEntry(cfg, role, true, gaps.map((g) => g.loop), widths[0][0], { widths });
 }
 

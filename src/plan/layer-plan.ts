@@ -66,12 +66,12 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
     ctx.layerStart = false;
     if (cfg.retractOnLayerChange) forceRetract = true;
   }
+  const speed = ctx.first ? cfg.firstLayerTravelSpeed : cfg.travelSpeed;
   if (from.x === to.x && from.y === to.y) {
     // a layer that starts where the last one ended still retracts on the layer change when asked
-    if (forceRetract && cfg.retractionEnabled && cfg.retractionDistance > 0) ctx.steps.push({ kind: 'travel', points: [to], retract: true, zHop: cfg.zHop, speed: ctx.first ? cfg.firstLayerTravelSpeed : cfg.travelSpeed });
+    if (forceRetract && cfg.retractionEnabled && cfg.retractionDistance > 0) ctx.steps.push({ kind: 'travel', points: [to], retract: true, zHop: cfg.zHop, speed });
     return;
   }
-  const speed = ctx.first ? cfg.firstLayerTravelSpeed : cfg.travelSpeed;
   const minTravelUm = cfg.retractionMinTravel * UM_PER_MM;
   let points: Pt[] = [to];
   let leaves = true;

@@ -103,7 +103,8 @@ export function filamentPerMm(step: ExtrudeStep, s: Pick<MoveSettings, 'filament
 
 /**
  * Filament of the segment of `step` from point `a` to point `b` (indices), `length` mm long: with widths per
- * point, the mean of its two end widths (the bead's width changes linearly along it); else the step's width.
+ * point, for the mean of its two end widths (the firmware spreads a segment's E evenly, so it is laid at one
+ * width); else for the step's width.
  */
 export function segmentFilament(step: ExtrudeStep, s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>, perMm: number, a: number, b: number, length: number): number {
   const widths = step.widths;

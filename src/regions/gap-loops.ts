@@ -4,12 +4,17 @@
  * a piece widens (a wedge), further loops fill what the first leaves towards its wide end.
  */
 import { area, difference, offset, opening, ringArea, strokeArea } from '../geometry/clip.js';
-import type { ExPolygon, Polygon } from '../geometry/types.js';
+import { UM_PER_MM, type ExPolygon, type Polygon } from '../geometry/types.js';
 import { stripWidth } from './strip-width.js';
 
 export interface GapLoop {
   loop: Polygon;
   widthUm: number;
+}
+
+/** Each gap loop's width, mm, at every one of its points (the per-point widths a path entry carries). */
+export function gapLoopWidths(gaps: readonly GapLoop[]): Float64Array[] {
+  return gaps.map((g) => new Float64Array(g.loop.length).fill(g.widthUm / UM_PER_MM));
 }
 
 /** Strips narrower than this fraction of a line width are left empty (nothing prints that thin). */

@@ -131,6 +131,11 @@ function nearRings(x: number, y: number, loops: readonly Polygon[], reach: numbe
   return found ? Math.sqrt(best2) : Infinity;
 }
 
+/** Whether a strip's axis point `p` of half-thickness `r` lies against one of the loops (about half a line plus r away). */
+function besideLoops(p: Pt, r: number, loops: readonly Polygon[], L: Limits): boolean {
+  return loops.length > 0 && nearRings(p.x, p.y, loops, r + L.w / 2 + L.w / 4) < Infinity;
+}
+
 /**
  * The leftover of one level: each medial-axis point is printed as a middle line, absorbed by the loops
  * beside it (`loops`, the level's wall centrelines, when it lies against them), or lost.
@@ -161,7 +166,6 @@ function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], band:
 function absorbThin(pieces: ExPolygon[], L: Limits, out: LeftoverResult): ExPolygon[] {
   // one offset for all the pieces: what survives shrinking by half a middle line is where one could go
   const cores = offset(pieces, -L.middle / 2);
-  if (cores.length === 0 && pieces.length === 0) return pieces;
   const thick = new Uint8Array(pieces.length);
   const boxes = pieces.map((p) => boundsOf([p]));
   for (const core of cores) {
@@ -194,7 +198,7 @@ function absorbThin(pieces: ExPolygon[], L: Limits, out: LeftoverResult): ExPoly
 function speck(piece: ExPolygon, chain: MedialChain, loops: readonly Polygon[], L: Limits, out: LeftoverResult): void {
   const p = chain.points[0], r = chain.radii[0];
   const g = 2 * r;
-  if (loops.length && nearRings(p.x, p.y, loops, r + L.w / 2 + L.w / 4) < Infinity) {
+  if (besideLoops(p, r, loops, L)) {
     out.absorbed.push({ x: p.x, y: p.y, r });
     return;
   }
@@ -244,12 +248,9 @@ function classify(chain: MedialChain, loops: readonly Polygon[], band: readonly 
   const kind = new Uint8Array(n);
   for (let i = 0; i < n; i++) {
     const g = 2 * radii[i];
-    if (g < L.minFeature) {
-      // too thin to print: still absorbed where a wall lies beside it
-      kind[i] = loops.length && nearRings(points[i].x, points[i].y, loops, radii[i] + L.w / 2 + L.w / 4) < Infinity ? ABSORB : LOST;
-    } else if (g < L.middle && loops.length && nearRings(points[i].x, points[i].y, loops, radii[i] + L.w / 2 + L.w / 4) < Infinity) {
-      kind[i] = ABSORB;
-    } else kind[i] = PRINT;
+    // thinner than a middle line (or than anything printable) with a wall beside it: the wall takes it
+    if (g < L.middle && besideLoops(points[i], radii[i], loops, L)) kind[i] = ABSORB;
+    else kind[i] = g < L.minFeature ? LOST : PRINT;
   }
   const edges = closed ? n : n - 1;
   for (let i = 0; i < n; i++) if (kind[i] === ABSORB) out.absorbed.push({ x: points[i].x, y: points[i].y, r: radii[i] });

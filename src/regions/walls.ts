@@ -5,9 +5,9 @@
  * the inside (an opening of the region), so walls never overlap or cross in thin parts.
  */
 import { offset, area, difference } from '../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon, type Polygon } from '../geometry/types.js';
+import type { ExPolygon, Polygon } from '../geometry/types.js';
 import type { WallSet } from './types.js';
-import { gapLoops, type GapLoop } from './gap-loops.js';
+import { gapLoops, gapLoopWidths, type GapLoop } from './gap-loops.js';
 
 export type { GapLoop } from './gap-loops.js';
 
@@ -72,8 +72,7 @@ export function classicWalls(islands: readonly ExPolygon[], wallCount: number, l
     }
     const walls: WallSet[] = wallLoops.map((paths, wall) => ({ role: 'wall', wall, closed: true, paths, widths: null }));
     if (gapFill.length) {
-      const widths = gapFill.map((g) => new Float64Array(g.loop.length).fill(g.widthUm / UM_PER_MM));
-      walls.push({ role: 'wall-gap', wall: 1, closed: true, paths: gapFill.map((g) => g.loop), widths });
+      walls.push({ role: 'wall-gap', wall: 1, closed: true, paths: gapFill.map((g) => g.loop), widths: gapLoopWidths(gapFill) });
     }
     out.push({ outline: island, walls, inner: inside, lostMm2: 0 });
   }
