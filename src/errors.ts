@@ -10,6 +10,7 @@ export type ErrorCode =
   | 'UNKNOWN_SETTING'
   | 'UNKNOWN_PRESET'
   | 'DOES_NOT_FIT'
+  | 'OVERLAPPING_OBJECTS'
   | 'EMPTY_MODEL'
   | 'BAD_SHADER'
   | 'BAD_IMAGE'

@@ -53,7 +53,7 @@ export function* prepareModelSteps(input: unknown, cfg: Config): Generator<void,
       reports.push(report);
       const prefix = totalObjects > 1 ? `${o.name}: ` : '';
       for (const w of report.warnings) warnings.push(prefix + w);
-      if (mesh.indices.length > 0) objects.push({ name: o.name, mesh });
+      if (mesh.indices.length > 0) objects.push(withVolumesPrepared({ ...o, mesh }, warnings));
       yield;
     }
     const why = objects.length === 0 ? 'has no printable triangles' : nothingToPrint(mergeObjects(objects), combineReports(reports.slice(-m.objects.length)));
@@ -101,8 +101,20 @@ function uniqueNames(objects: MeshObject[]): MeshObject[] {
     let name = base;
     for (let k = 2; used.has(name); k++) name = `${base} (${k})`;
     used.add(name);
-    return name === o.name ? o : { name, mesh: o.mesh };
+    return name === o.name ? o : { ...o, name };
   });
+}
+
+/** The object with its volumes welded and cleaned as its parts are (an empty volume is dropped, with a note). */
+function withVolumesPrepared(o: MeshObject, warnings: string[]): MeshObject {
+  if (!o.volumes?.length) return o;
+  const volumes = [];
+  for (const v of o.volumes) {
+    const { mesh } = prepareMesh(v.mesh);
+    if (mesh.indices.length > 0) volumes.push({ ...v, mesh });
+    else warnings.push(`${o.name}: ${v.kind} "${v.name}" has no triangles and is ignored`);
+  }
+  return { ...o, volumes };
 }
 
 /** Sums and overall bounds of several objects' reports. */

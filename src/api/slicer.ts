@@ -10,6 +10,8 @@ import { StrataError } from '../errors.js';
 import { MiB, prepareModelSteps, type PreparedModel } from './prepare-model.js';
 import { Pacer } from '../pipeline/pacer.js';
 import { runPipeline, type Progress, type ThinLoss } from '../pipeline/run.js';
+import { plateOf } from './plate.js';
+import { ConfigTable } from '../settings/scoped.js';
 import type { PrintPlan } from '../plan/types.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 import { isTransferable, loadCustomInfill, loadedCustomInfill } from '../pipeline/custom-infill-loader.js';
@@ -39,6 +41,14 @@ export interface SliceResult {
 }
 
 export { prepareModel, type PreparedModel } from './prepare-model.js';
+
+/** An object's own settings, volumes and layer ranges (`Slicer.addObject`). */
+export interface ObjectOptions {
+  name?: string;
+  settings?: Partial<Settings>;
+  volumes?: Array<{ type: 'part' | 'modifier' | 'negative' | 'support-blocker' | 'support-enforcer'; mesh: unknown; name?: string; settings?: Partial<Settings> }>;
+  layerRanges?: Array<{ fromZ: number; toZ: number; settings: Partial<Settings> }>;
+}
 
 export interface SliceCallOptions {
   onProgress?: (p: Progress) => void;
@@ -89,6 +99,7 @@ export class Slicer {
   #options: SliceOptions;
   #config: Config;
   #custom: CustomInfillSpec | undefined;
+  #objects: Array<ObjectOptions & { mesh: unknown }> = [];
 
   /**
    * @param options settings (any subset), `printer` and `filament` preset names, and optionally
@@ -157,10 +168,36 @@ export class Slicer {
     return this.#apply({ ...this.#options, filament: name });
   }
 
+  /**
+   * Add an object to the plate the next `slice()` without a model slices: a mesh (any model input) with
+   * settings of its own (object- and region-scoped ones), volumes (`{ type: 'modifier' | 'negative' |
+   * 'support-blocker' | 'support-enforcer' | 'part', mesh, settings? }`, in the mesh's coordinates) and
+   * layer ranges (`{ fromZ, toZ, settings }`, mm from the bed). Settings are checked now, each misuse (a
+   * key that does not exist, a value out of range, a setting that cannot vary there) one clear error.
+   */
+  addObject(mesh: unknown, object: ObjectOptions = {}): this {
+    const name = object.name ?? `object ${this.#objects.length + 1}`;
+    const table = new ConfigTable(this.#options, this.#config);
+    const own = { settings: object.settings, use: 'object' as const, where: `object "${name}"` };
+    table.resolve([own]);
+    for (const v of object.volumes ?? []) {
+      if (v.settings) table.resolve([own, { settings: v.settings, use: 'modifier', where: `${v.type} "${v.name ?? ''}" of "${name}"` }]);
+    }
+    for (const r of object.layerRanges ?? []) table.resolve([own, { settings: r.settings, use: 'layer range', where: `object "${name}" layers ${r.fromZ}–${r.toZ} mm` }]);
+    this.#objects.push({ ...object, name, mesh, settings: object.settings ?? {} });
+    return this;
+  }
+
+  /** Take every object added with `addObject` off the plate. */
+  clearObjects(): this {
+    this.#objects = [];
+    return this;
+  }
+
   /** Slice and return the whole G-code as a string. */
   // slice and sliceToSink hand `input` on without awaiting, so that only the slice holds it, and lets it go
   // once the model is read (a file's bytes are not kept while the G-code is made)
-  slice(input: unknown, opts: SliceCallOptions = {}): Promise<SliceResult> {
+  slice(input?: unknown, opts: SliceCallOptions = {}): Promise<SliceResult> {
     const chunks: string[] = [];
     return this.sliceToSink(input, (c) => chunks.push(c), opts).then(({ stats, warnings }) => ({ gcode: chunks.join(''), stats, warnings }));
   }
@@ -171,10 +208,10 @@ export class Slicer {
   }
 
   /** Slice and return the structured toolpath plan (layers of typed paths) as well as the stats. */
-  slicePlan(input: unknown, opts: SliceCallOptions = {}, sink: (chunk: string) => void = () => {}): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
+  slicePlan(input?: unknown, opts: SliceCallOptions = {}, sink: (chunk: string) => void = () => {}): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     // the input travels in a box the slice empties once the model is read (an async function's own
     // parameters stay alive until it returns)
-    return this.#slicePlan({ input }, opts, sink);
+    return this.#slicePlan({ input: input === undefined && this.#objects.length ? this.#objects : input }, opts, sink);
   }
 
   async #slicePlan(given: { input: unknown }, opts: SliceCallOptions, sink: (chunk: string) => void): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
@@ -202,7 +239,10 @@ export class Slicer {
       const layersEstimate = b.max[2] / cfg.layerHeight;
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
       threads = cfg.threads > 0 ? cfg.threads : small ? 1 : auto;
-      run = await runPipeline(model.objects, cfg, {
+      const warnings = [...model.warnings];
+      const plate = plateOf(model.objects, this.#options, cfg, warnings);
+      model = { ...model, warnings };
+      run = await runPipeline(plate, {
         threads,
         sink,
         onProgress: opts.onProgress,

@@ -4,6 +4,7 @@
  */
 import { StrataError } from '../errors.js';
 import { fromArrays } from './arrays.js';
+import { isObjectInput, objectFromInput } from './object-input.js';
 import { parseObj } from './obj.js';
 import { parseStl } from './stl.js';
 import type { ModelInput } from './place.js';
@@ -122,6 +123,7 @@ function convert(input: unknown, depth: number, opts: LoadOptions, warnings: str
       }
       return objects;
     }
+    if (isObjectInput(o)) return [objectFromInput(o as Record<string, unknown>, (mesh) => convert(mesh, depth + 1, opts, warnings), 0)];
     if ('positions' in o) return [fromArrays(o as unknown as RawMeshArrays, typeof o.name === 'string' ? o.name : 'mesh')];
     if (typeof o.mesh === 'object' && o.mesh !== null && 'positions' in o.mesh) {
       const name = typeof o.name === 'string' && o.name !== '' ? o.name : 'mesh';

@@ -116,10 +116,12 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
       throw new StrataError('EMPTY_MODEL', `${m.name}: the model has no triangles: there is nothing to print`);
     }
     const box = emptyBox();
-    const objects = m.objects.map((o) => {
+    const objects = m.objects.map((o): MeshObject => {
       const mesh = linear ? transformMesh(o.mesh, linear) : o.mesh;
       usedBounds(mesh, m.name, box);
-      return { name: o.name, mesh };
+      // the object's other volumes turn with it; only its parts are printed, so only they are placed
+      const volumes = o.volumes?.map((v) => (linear ? { ...v, mesh: transformMesh(v.mesh, linear) } : v));
+      return volumes ? { ...o, mesh, volumes } : { ...o, mesh };
     });
     return { name: m.name, objects, box };
   });
@@ -198,7 +200,12 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
   const objects: MeshObject[] = [];
   turned.forEach((m, i) => {
     const [dx, dy, dz] = offsets[i];
-    for (const o of m.objects) objects.push({ name: o.name, mesh: translate(o.mesh, dx, dy, dz) });
+    for (const o of m.objects) {
+      const placed: MeshObject = { ...o, mesh: translate(o.mesh, dx, dy, dz) };
+      if (o.volumes) placed.volumes = o.volumes.map((v) => ({ ...v, mesh: translate(v.mesh, dx, dy, dz) }));
+      if (o.layerRanges) placed.layerRanges = o.layerRanges;
+      objects.push(placed);
+    }
   });
   return { objects, offsets, warnings };
 }

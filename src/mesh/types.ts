@@ -14,10 +14,52 @@ export interface RawMeshArrays {
   indices?: Uint32Array | Uint16Array | number[];
 }
 
-/** One named object of a loaded model (a 3MF object/build item, an OBJ group, a three.js mesh). */
+/**
+ * Settings as a file or a caller gave them, before they are checked against the schema: Strata's own keys
+ * and values, or another slicer's (PrusaSlicer/OrcaSlicer config keys, Cura setting keys, values as text),
+ * which settings/import maps onto ours.
+ */
+export interface SettingsSource {
+  format: 'strata' | 'prusaslicer' | 'orcaslicer' | 'cura';
+  values: Readonly<Record<string, unknown>>;
+}
+
+/**
+ * What a volume of an object does: a modifier changes the settings inside it (and is not printed), a
+ * negative volume is cut out of the parts, support blockers and enforcers keep support out of, or put it
+ * under, the overhangs inside them.
+ */
+export type VolumeKind = 'modifier' | 'negative' | 'support-blocker' | 'support-enforcer';
+
+/** A volume of an object other than its printed parts, in the same coordinates as the object's mesh. */
+export interface MeshVolume {
+  kind: VolumeKind;
+  name: string;
+  mesh: Mesh;
+  /** A modifier's settings (region-scoped ones only). */
+  settings?: SettingsSource;
+}
+
+/** Settings for the layers of one object whose Z (from the bed, mm) lies in [fromZ, toZ). */
+export interface LayerRangeSettings {
+  fromZ: number;
+  toZ: number;
+  settings: SettingsSource;
+}
+
+/**
+ * One named object of a loaded model (a 3MF object/build item, an OBJ group, a three.js mesh). Its mesh is
+ * every printed part of it together (overlapping parts print once); a project file or the caller may add
+ * volumes, settings of its own and settings for ranges of its layers.
+ */
 export interface MeshObject {
   name: string;
   mesh: Mesh;
+  /** Modifiers, negative volumes, support blockers and enforcers, in the order they apply. */
+  volumes?: MeshVolume[];
+  /** The object's own settings (object- and region-scoped ones), over the print's. */
+  settings?: SettingsSource;
+  layerRanges?: LayerRangeSettings[];
 }
 
 /** What mesh preparation found: counts and human-readable warnings. */

@@ -10,7 +10,7 @@ import type { InfillParams, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
 import { allSkin } from '../regions/skin-areas.js';
 import { gapLoopWidths, type GapLoop } from '../regions/gap-loops.js';
-import type { IslandRegions } from '../regions/types.js';
+import type { IslandRegions, RegionFill } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { LayerZ } from '../slice/types.js';
@@ -18,10 +18,12 @@ import { makeEntry } from './entry.js';
 import type { PathEntry, PathGroup } from './types.js';
 
 export interface IslandContext {
-  cfg: Config;
+  /** Every config of the print (the island's walls read `configs[island.region]`, each fill its own). */
+  configs: readonly Config[];
   layer: LayerZ;
   /** Line width of the layer, µm. */
   widthUm: number;
+  /** The object's infill parameters (a region's config changes their density, angle and linking). */
   params: InfillParams;
   /** The pattern's whole-model data for this layer (lightning), if any. */
   prepared?: unknown;
@@ -30,8 +32,13 @@ export interface IslandContext {
   supportBelow: readonly ExPolygon[];
 }
 
-/** The skin of the island, as skin-wall, skin and skin-gap entries. */
-function skinEntries(island: IslandRegions, ctx: IslandContext, bridgeArea: readonly ExPolygon[]): PathEntry[] {
+/** What one region of an island prints with: its config and infill parameters. */
+interface FillContext extends IslandContext {
+  cfg: Config;
+}
+
+/** The skin of one region of an island, as skin-wall, skin and skin-gap entries. */
+function skinEntries(island: RegionFill, ctx: FillContext, bridgeArea: readonly ExPolygon[]): PathEntry[] {
   const { cfg, widthUm: w, layer } = ctx;
   const skinAll = allSkin({ top: island.topSkin, bottom: island.bottomSkin, exposed: island.exposed });
   if (skinAll.length === 0 && island.exposed.length === 0) return [];
@@ -68,7 +75,7 @@ function gapEntry(cfg: Config, role: 'skin-gap', gaps: readonly GapLoop[]): Path
   return makeEntry(cfg, role, true, gaps.map((g) => g.loop), widths[0][0], { widths });
 }
 
-function infillEntries(island: IslandRegions, ctx: IslandContext): PathEntry[] {
+function infillEntries(island: RegionFill, ctx: FillContext): PathEntry[] {
   if (island.sparse.length === 0) return [];
   const { cfg, layer, widthUm } = ctx;
   const input = { layerIndex: layer.index, z: layer.z, layerHeight: layer.height, region: island.sparse };
@@ -81,9 +88,27 @@ function infillEntries(island: IslandRegions, ctx: IslandContext): PathEntry[] {
   return out;
 }
 
+/** The infill parameters of a region: the object's, with the region's density, angle and linking. */
+function regionParams(params: InfillParams, cfg: Config): InfillParams {
+  const density = cfg.infillDensity / 100;
+  if (params.density === density && params.angle === cfg.infillAngle && params.connect === cfg.infillConnect) return params;
+  return { ...params, density, angle: cfg.infillAngle, connect: cfg.infillConnect };
+}
+
+/** The infill and skin entries of one region of an island. */
+function fillEntries(fill: RegionFill, ctx: IslandContext): PathEntry[] {
+  const cfg = ctx.configs[fill.region];
+  const fctx: FillContext = { ...ctx, cfg, params: regionParams(ctx.params, cfg) };
+  const entries = infillEntries(fill, fctx);
+  // skin resting on support right below it (no Z gap) is not a bridge; over a Z gap it is, as over air
+  const bridgeArea = fill.bridge.length && ctx.supportBelow.length ? difference(fill.bridge, ctx.supportBelow) : fill.bridge;
+  entries.push(...skinEntries(fill, fctx, bridgeArea));
+  return entries;
+}
+
 /** The island's group of entries (unsorted: the planner puts them in print order). */
 export function islandGroup(island: IslandRegions, ctx: IslandContext): PathGroup {
-  const { cfg } = ctx;
+  const cfg = ctx.configs[island.region];
   const w = ctx.widthUm / UM_PER_MM;
   const entries: PathEntry[] = [];
   const wallsOverAir = island.unsupported.length ? island.unsupported : null;
@@ -92,10 +117,8 @@ export function islandGroup(island: IslandRegions, ctx: IslandContext): PathGrou
     const opts = { wall: set.role === 'wall' ? set.wall : undefined, widths: set.widths ?? undefined, overAir: set.role === 'wall' ? wallsOverAir : null };
     entries.push(makeEntry(cfg, set.role, set.closed, set.paths, w, opts));
   }
-  entries.push(...infillEntries(island, ctx));
-  // skin resting on support right below it (no Z gap) is not a bridge; over a Z gap it is, as over air
-  const bridgeArea = island.bridge.length && ctx.supportBelow.length ? difference(island.bridge, ctx.supportBelow) : island.bridge;
-  entries.push(...skinEntries(island, ctx, bridgeArea));
+  entries.push(...fillEntries(island, ctx));
+  if (island.fills) for (const f of island.fills) entries.push(...fillEntries(f, ctx));
   // travel follows the outer wall's loops round the island
   const outer = island.walls.find((set) => set.role === 'wall' && set.wall === 0 && set.closed && set.paths.length > 0);
   const boundary = outer?.paths;

@@ -14,7 +14,12 @@ import { supportGroups } from './support-paths.js';
 import type { LayerPaths, PathGroup } from './types.js';
 
 export interface LayerPathsContext {
+  /** The print's config. */
   cfg: Config;
+  /** Every config of the print (configs[0] is `cfg`): islands and support read their object's or region's. */
+  configs: readonly Config[];
+  /** Per object, the index of its config. */
+  objectConfigs: readonly number[];
   /** Infill parameters of each object (its pattern origin), by object index. */
   params: readonly InfillParams[];
   /** The pattern's whole-model data for this layer (lightning). */
@@ -46,7 +51,7 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
     for (const island of regions.islands) {
       groups.push(
         islandGroup(island, {
-          cfg,
+          configs: ctx.configs,
           layer: regions,
           widthUm: w,
           params: ctx.params[island.object] ?? ctx.params[0],
@@ -83,7 +88,12 @@ export function withSharedGroups(paths: LayerPaths, regions: LayerRegions, ctx: 
     const support = regions.support ? [...regions.support.body, ...regions.support.roof, ...regions.support.floor] : [];
     shared.push(...skirtOrBrim(regions.islands.map((i) => i.outline), support, cfg, widthOf(regions, cfg)));
   }
-  shared.push(...supportGroups(regions.support, cfg, regions, ctx.params[0].origin));
+  if (regions.supports) {
+    // each object's support prints inside the object's label, so cancelling the object stops its support
+    regions.supports.forEach((support, o) => {
+      for (const g of supportGroups(support, ctx.configs[ctx.objectConfigs[o]], regions, ctx.params[0].origin)) shared.push({ ...g, object: o });
+    });
+  } else shared.push(...supportGroups(regions.support, ctx.configs[ctx.objectConfigs[0] ?? 0], regions, ctx.params[0].origin));
   if (shared.length) paths.groups = [...shared, ...paths.groups];
   paths.z = regions.z + ctx.zOffset;
   return paths;

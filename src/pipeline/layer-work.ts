@@ -15,7 +15,7 @@ import { layerPaths, modelPaths, type LayerPathsContext } from '../paths/layer-p
 import type { LayerPaths } from '../paths/types.js';
 import { RegionsRun } from '../regions/layer-regions.js';
 import { outlinesOnly, type LayerRegions } from '../regions/types.js';
-import type { Config } from '../settings/resolve.js';
+import type { PrintSetup } from '../regions/objects.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
@@ -45,7 +45,7 @@ export type RegionsHeld = Map<number, LayerRegions[]>;
 
 /** What the paths stage needs besides the regions. */
 export interface PathsParams {
-  /** Infill parameters per object. */
+  /** Infill parameters per object (with the object's config; a region's config changes density and angle). */
   infillParams: InfillParams[];
   /** Added to every model layer's Z (the raft), mm. */
   zOffset: number;
@@ -77,17 +77,17 @@ export interface RangeResult {
 }
 
 /** What the paths stage of one layer is given. */
-export function pathsContext(regions: LayerRegions, cfg: Config, job: PathsParams, custom: CustomInfillGenerator | undefined, supportBelow: ExPolygon[], prepared?: unknown): LayerPathsContext {
-  return { cfg, params: job.infillParams, prepared, custom, supportBelow, zOffset: job.zOffset, adhesion: job.adhesion && regions.index === 0 };
+export function pathsContext(regions: LayerRegions, setup: PrintSetup, job: PathsParams, custom: CustomInfillGenerator | undefined, supportBelow: ExPolygon[], prepared?: unknown): LayerPathsContext {
+  return { cfg: setup.configs[0], configs: setup.configs, objectConfigs: setup.objects.map((o) => o.config), params: job.infillParams, prepared, custom, supportBelow, zOffset: job.zOffset, adhesion: job.adhesion && regions.index === 0 };
 }
 
 /** The paths of one layer from its regions. */
-export function pathsOf(regions: LayerRegions, cfg: Config, job: PathsParams, custom: CustomInfillGenerator | undefined, supportBelow: ExPolygon[], prepared?: unknown): LayerPaths {
-  return layerPaths(regions, pathsContext(regions, cfg, job, custom, supportBelow, prepared));
+export function pathsOf(regions: LayerRegions, setup: PrintSetup, job: PathsParams, custom: CustomInfillGenerator | undefined, supportBelow: ExPolygon[], prepared?: unknown): LayerPaths {
+  return layerPaths(regions, pathsContext(regions, setup, job, custom, supportBelow, prepared));
 }
 
 /** Run a job, yielding after each layer; returns its result. `held` keeps the thread's held regions. */
-export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: RangeJob, custom?: CustomInfillGenerator, held?: RegionsHeld): Generator<void, RangeResult> {
+export function* rangeSteps(meshes: readonly PreparedMesh[], setup: PrintSetup, job: RangeJob, custom?: CustomInfillGenerator, held?: RegionsHeld): Generator<void, RangeResult> {
   const regions: LayerRegions[] = [];
   const paths: LayerPaths[] = [];
   if (job.kind === 'held') {
@@ -95,19 +95,19 @@ export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: R
     if (!kept || kept.length !== job.to - job.from) throw new Error(`no regions held for layers ${job.from}-${job.to}`);
     held!.delete(job.from);
     for (let k = 0; k < kept.length; k++) {
-      paths.push(modelPaths(kept[k], pathsContext(kept[k], cfg, job.modelPaths, custom, [])));
+      paths.push(modelPaths(kept[k], pathsContext(kept[k], setup, job.modelPaths, custom, [])));
       yield;
     }
     return { regions, paths };
   }
   if (job.kind === 'paths') {
     for (let k = 0; k < job.regions.length; k++) {
-      paths.push(pathsOf(job.regions[k], cfg, job, custom, job.supportBelow[k] ?? [], job.prepared?.[k]));
+      paths.push(pathsOf(job.regions[k], setup, job, custom, job.supportBelow[k] ?? [], job.prepared?.[k]));
       yield;
     }
     return { regions, paths };
   }
-  const run = new RegionsRun(meshes, cfg, job.layers, job.from, job.to);
+  const run = new RegionsRun(meshes, setup, job.layers, job.from, job.to);
   for (let i = job.from; i < job.to; i++) {
     const r = run.layer(i);
     if (job.kind === 'regions') {
@@ -119,10 +119,10 @@ export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: R
         regions.push(outlinesOnly(r));
       } else if (job.modelPaths) {
         // made while the layer's regions are at hand, after which only the outlines are kept
-        paths.push(modelPaths(r, pathsContext(r, cfg, job.modelPaths, custom, [])));
+        paths.push(modelPaths(r, pathsContext(r, setup, job.modelPaths, custom, [])));
         regions.push(outlinesOnly(r));
       } else regions.push(r);
-    } else paths.push(pathsOf(r, cfg, job, custom, []));
+    } else paths.push(pathsOf(r, setup, job, custom, []));
     run.release(i);
     yield;
   }
@@ -130,8 +130,8 @@ export function* rangeSteps(meshes: readonly PreparedMesh[], cfg: Config, job: R
 }
 
 /** Run a job to its end. */
-export function computeRange(meshes: readonly PreparedMesh[], cfg: Config, job: RangeJob, custom?: CustomInfillGenerator, held?: RegionsHeld): RangeResult {
-  const steps = rangeSteps(meshes, cfg, job, custom, held);
+export function computeRange(meshes: readonly PreparedMesh[], setup: PrintSetup, job: RangeJob, custom?: CustomInfillGenerator, held?: RegionsHeld): RangeResult {
+  const steps = rangeSteps(meshes, setup, job, custom, held);
   for (;;) {
     const s = steps.next();
     if (s.done) return s.value;

@@ -18,8 +18,9 @@ import { runPlanPasses } from '../plan/passes.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
 import { layerSparse, layerTopSkin } from '../regions/layer-regions.js';
 import { raftUnder } from '../regions/raft.js';
-import { supportPass } from '../regions/support/index.js';
+import { objectsSupportPass } from '../regions/support/index.js';
 import type { LayerRegions } from '../regions/types.js';
+import type { PrintSetup } from '../regions/objects.js';
 import type { Config } from '../settings/resolve.js';
 import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
@@ -29,10 +30,11 @@ import type { Port } from '../workers/ports.js';
 import { pathsContext, pathsOf, rangeSteps, type HeldJob, type PathsParams, type RangeJob, type RangeResult, type RegionsHeld, type RegionsJob } from './layer-work.js';
 import type { CustomInfillSpec } from './custom-infill.js';
 import { isTransferable, loadCustomInfill } from './custom-infill-loader.js';
-import { planObjects, type PlacedObject } from './objects.js';
+import { planObjects } from './objects.js';
+import type { PlacedObject, PlateSetup } from './print-setup.js';
 import { Pacer } from './pacer.js';
 
-export type { PlacedObject } from './objects.js';
+export type { PlacedObject, PlateSetup } from './print-setup.js';
 
 export const VERSION = '0.1.0';
 
@@ -140,14 +142,34 @@ async function runJobs(jobs: RangeJob[], runner: Runner, onResult: (id: number, 
   for (let id = 0; id < jobs.length; id++) onResult(id, await local(jobs[id]), -1);
 }
 
-/** Whether some whole-model pass needs the regions of every layer before any paths are made. */
-function needsRegionsFirst(cfg: Config, custom: CustomInfillSpec | undefined): boolean {
-  const pattern = PATTERNS[cfg.infillPattern as PatternId];
-  return cfg.supportEnabled || cfg.adhesionType === 'raft' || (!!pattern.prepare && !custom && cfg.infillDensity > 0);
+/** The config of the first region whose pattern is a whole-model pass (lightning), if any. */
+function wholeModelInfill(setup: PrintSetup, custom: CustomInfillSpec | undefined): Config | undefined {
+  if (custom) return undefined;
+  return setup.configs.find((c) => !!PATTERNS[c.infillPattern as PatternId].prepare && c.infillDensity > 0);
 }
 
-export async function runPipeline(objects: readonly PlacedObject[], cfg: Config, opts: RunOptions): Promise<RunResult> {
+/** Whether some object gets support (on, or enforced by a volume). */
+function anySupport(setup: PrintSetup): boolean {
+  return setup.objects.some((o) => setup.configs[o.config].supportEnabled || o.enforcers.length > 0);
+}
+
+/** Whether some object's skin rests on its support with no Z gap (its paths then wait for the support pass). */
+function skinOnSupport(setup: PrintSetup): boolean {
+  return setup.objects.some((o) => {
+    const c = setup.configs[o.config];
+    return (c.supportEnabled || o.enforcers.length > 0) && c.supportTopGapLayers === 0;
+  });
+}
+
+/** Whether some whole-model pass needs the regions of every layer before any paths are made. */
+function needsRegionsFirst(setup: PrintSetup, custom: CustomInfillSpec | undefined): boolean {
+  return anySupport(setup) || setup.configs[0].adhesionType === 'raft' || !!wholeModelInfill(setup, custom);
+}
+
+export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<RunResult> {
   const { signal } = opts;
+  const { setup, objects } = plate;
+  const cfg = setup.configs[0];
   const pacer = new Pacer(signal);
   pacer.check();
   let height = 0;
@@ -157,26 +179,26 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
   }
   const layers: LayerZ[] = planLayers(height, cfg.firstLayerHeight, cfg.layerHeight);
   if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
-  const infillParams = objects.map((o) => infillParamsFor(cfg, o));
+  const infillParams = objects.map((o, k) => infillParamsFor(setup.configs[setup.objects[k].config], o));
   const split = ranges(layers.length, opts.threads);
   // N threads: the calling thread and N-1 workers
   // (a custom density given as a JS function cannot travel to a worker)
   const workers = opts.custom && !isTransferable(opts.custom) ? 0 : Math.min(opts.threads, split.length) - 1;
   let meshes: PreparedMesh[] | null = null;
   // with workers, the calling thread uses the copy it shares with them
-  const prepared = () => (meshes ??= objects.map((o) => (workers > 0 ? sharePrepared(prepareForSlicing(o.mesh)) : prepareForSlicing(o.mesh))));
+  const prepared = () => (meshes ??= plate.meshes.map((m) => (workers > 0 ? sharePrepared(prepareForSlicing(m)) : prepareForSlicing(m))));
   // each object's mesh made ready for slicing, pausing between objects
-  for (let k = 0; k < objects.length && workers === 0; k++) {
+  for (let k = 0; k < plate.meshes.length && workers === 0; k++) {
     meshes ??= [];
-    meshes.push(prepareForSlicing(objects[k].mesh));
+    meshes.push(prepareForSlicing(plate.meshes[k]));
     await pacer.pause();
   }
-  const pool = workers > 0 ? await createPool(workers, prepared, cfg, opts.custom, opts.started) : null;
+  const pool = workers > 0 ? await createPool(workers, prepared, setup, opts.custom, opts.started) : null;
   if (!pool && opts.started) await releaseWorkers(opts.started);
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
     const custom = opts.custom ? (await loadCustomInfill()).customGenerator(opts.custom, cfg) : undefined;
-    const twoPhase = needsRegionsFirst(cfg, opts.custom);
+    const twoPhase = needsRegionsFirst(setup, opts.custom);
     // progress: the layer work is 80 % of the run (regions and paths halves when there are two phases)
     const total = layers.length * (twoPhase ? 2 : 1);
     let doneLayers = 0;
@@ -192,7 +214,7 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
       signal,
       local: async (job) => {
         // a paths or held job reads its regions, not the meshes
-        const steps = rangeSteps(job.kind === 'paths' || job.kind === 'held' ? [] : prepared(), cfg, job, custom, heldHere);
+        const steps = rangeSteps(job.kind === 'paths' || job.kind === 'held' ? [] : prepared(), setup, job, custom, heldHere);
         for (;;) {
           const s = steps.next();
           if (s.done) return s.value;
@@ -217,17 +239,17 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
     };
     let jobs: RangeJob[] = [];
     if (twoPhase) {
-      const pattern = PATTERNS[cfg.infillPattern as PatternId];
-      const lightning = !!pattern.prepare && !custom && cfg.infillDensity > 0;
+      const lightningCfg = wholeModelInfill(setup, opts.custom);
+      const lightning = !!lightningCfg;
       // The model's own paths wait for no whole-model pass unless lightning infill or skin resting on
       // support (no top Z gap) reads them: then each range makes them with its regions, while both are at
       // hand (coming back to every layer's regions later costs ~10 % more), and only the skirt and
       // support join them after the support pass.
-      const early = !lightning && !(cfg.supportEnabled && cfg.supportTopGapLayers === 0);
+      const early = !lightning && !skinOnSupport(setup);
       const modelPaths: PathsParams | undefined = early ? { ...common, zOffset: 0, adhesion: false } : undefined;
       // With workers and support, each range keeps its regions where they were made, and the workers make
       // their ranges' model paths while this thread runs the support pass (which they would wait for idle).
-      const hold = !!modelPaths && !!pool && cfg.supportEnabled;
+      const hold = !!modelPaths && !!pool && anySupport(setup);
       const regionJobs: RegionsJob[] = split.map(([from, to]) => ({ kind: 'regions', layers, from, to, modelPaths: hold ? undefined : modelPaths, hold }));
       const regionResults: RangeResult[] = [];
       const where: number[] = [];
@@ -248,7 +270,7 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
         : null;
       // its failure is met where it is awaited, after the support pass
       heldRun?.catch(() => {});
-      await pacer.run(supportPass(regions, cfg));
+      await pacer.run(objectsSupportPass(regions, setup.configs, setup.objects.map((o) => o.config)));
       if (hold) {
         // the model paths of the ranges this thread made, then the workers'
         for (let id = 0; id < regionJobs.length; id++) if (where[id] < 0) heldPaths[id] = (await runner.local(heldJob(id))).paths;
@@ -256,30 +278,39 @@ export async function runPipeline(objects: readonly PlacedObject[], cfg: Config,
         for (let id = 0; id < regionJobs.length; id++) regionResults[id].paths = heldPaths[id];
       }
       let preparedInfill: unknown[] | undefined;
-      if (lightning) {
-        preparedInfill = pattern.prepare!(
+      if (lightningCfg) {
+        // every region printed with the pattern, with the first such region's density
+        const pattern = lightningCfg.infillPattern;
+        const ofPattern = setup.configs.length === 1 ? undefined : (region: number) => setup.configs[region].infillPattern === pattern;
+        const density = lightningCfg.infillDensity / 100;
+        preparedInfill = PATTERNS[pattern as PatternId].prepare!(
           {
-            layers: regions.map((r) => ({ layerIndex: r.index, z: r.z, layerHeight: r.height, region: layerSparse(r) })),
+            layers: regions.map((r) => ({ layerIndex: r.index, z: r.z, layerHeight: r.height, region: layerSparse(r, ofPattern) })),
             supportNeeded: regions.map((_, i) => (i + 1 < regions.length ? layerTopSkin(regions[i + 1]) : [])),
           },
-          infillParams[0],
+          infillParams[0].density === density ? infillParams[0] : { ...infillParams[0], density },
         );
       }
       const raft = raftUnder(regions[0], cfg);
       common.zOffset = raft.zOffset;
       if (raft.layers.length) {
         const raftParams = { ...common, zOffset: 0, adhesion: false };
-        for (const r of raft.layers) plan(pathsOf(r, cfg, raftParams, custom, []));
+        for (const r of raft.layers) plan(pathsOf(r, setup, raftParams, custom, []));
       }
       if (early) {
         const model = regionResults.flatMap((r) => r.paths);
         for (let i = 0; i < regions.length; i++) {
-          plan(withSharedGroups(model[i], regions[i], pathsContext(regions[i], cfg, common, custom, [])));
+          plan(withSharedGroups(model[i], regions[i], pathsContext(regions[i], setup, common, custom, [])));
           layerDone(1);
           await pacer.pause();
         }
       } else {
-        const supportOf = (r: LayerRegions | undefined): ExPolygon[] => (r?.support && cfg.supportTopGapLayers === 0 ? [...r.support.body, ...r.support.roof] : []);
+        const supportOf = (r: LayerRegions | undefined): ExPolygon[] => {
+          if (!r?.support) return [];
+          const held = (o: number) => setup.configs[setup.objects[o].config].supportTopGapLayers === 0;
+          if (!r.supports) return held(0) ? [...r.support.body, ...r.support.roof] : [];
+          return r.supports.flatMap((a, o) => (a && held(o) ? [...a.body, ...a.roof] : []));
+        };
         jobs = split.map(([from, to]) => ({
           kind: 'paths',
           layers,

@@ -4,7 +4,8 @@
  * area, the outline over nothing (overhanging walls) and, with support on, the overhang that needs support.
  * Pure over plain data: the same result inline or in a worker, however the layers are split into runs.
  */
-import { difference, offset, union } from '../geometry/clip.js';
+import { area, difference, intersection, offset, union } from '../geometry/clip.js';
+import { StrataError } from '../errors.js';
 import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
 import { SectionStream, type PreparedMesh } from '../slice/index.js';
@@ -12,7 +13,8 @@ import type { LayerZ } from '../slice/types.js';
 import { bridgeOf } from './bridge-angle.js';
 import { overhangOf } from './overhang.js';
 import { allSkin, CoverWindows, skinAreas } from './skin-areas.js';
-import type { IslandRegions, LayerRegions } from './types.js';
+import { rangeAt, type ObjectSetup, type PrintSetup } from './objects.js';
+import type { IslandRegions, LayerRegions, RegionFill } from './types.js';
 import { computeWalls } from './wall-generator.js';
 
 export function lineWidthUm(cfg: Config, layerIndex: number): number {
@@ -20,9 +22,32 @@ export function lineWidthUm(cfg: Config, layerIndex: number): number {
 }
 
 interface ObjectSections {
-  stream: SectionStream;
+  setup: ObjectSetup;
+  /** The object's config (its skin thickness, its support). */
+  cfg: Config;
+  parts: SectionStream;
+  negatives: SectionStream[];
+  modifiers: SectionStream[];
+  blockers: SectionStream[];
+  enforcers: SectionStream[];
+  /** Sections with the negative volumes cut out, by layer (only with negative volumes). */
+  cut: Map<number, ExPolygon[]>;
   top: CoverWindows;
   bottom: CoverWindows;
+}
+
+/** Below this, mm², two objects' sections are taken not to overlap (touching faces, rounding). */
+const OVERLAP_MIN_MM2 = 0.05;
+
+/** Parts of one island's inside with one config: the whole of it (area null) or a modifier's piece. */
+interface Piece {
+  region: number;
+  area: ExPolygon[] | null;
+}
+
+/** The walls' settings: regions that agree on these share their walls. */
+function wallsKey(cfg: Config): string {
+  return [cfg.walls, cfg.wallGenerator, cfg.minFeatureSize, cfg.minBeadWidth, cfg.maxBeadWidth, cfg.wallTransitionLength, cfg.wallTransitionAngle, cfg.wallDistributionCount].join('/');
 }
 
 /**
@@ -31,31 +56,73 @@ interface ObjectSections {
  * asked for need.
  */
 export class RegionsRun {
+  readonly #setup: PrintSetup;
   readonly #cfg: Config;
   readonly #layers: readonly LayerZ[];
   readonly #lo: number;
   readonly #hi: number;
   readonly #objects: ObjectSections[];
+  readonly #keepBelow: number;
 
-  constructor(meshes: readonly PreparedMesh[], cfg: Config, layers: readonly LayerZ[], from: number, to: number) {
-    this.#cfg = cfg;
+  /** @param meshes the meshes the setup's objects point into, prepared for slicing */
+  constructor(meshes: readonly PreparedMesh[], setup: PrintSetup, layers: readonly LayerZ[], from: number, to: number) {
+    this.#setup = setup;
+    const cfg = (this.#cfg = setup.configs[0]);
     this.#layers = layers;
     const n = layers.length;
-    this.#lo = Math.max(0, from - Math.max(cfg.bottomLayers, 1));
-    this.#hi = Math.min(n, to + cfg.topLayers);
+    const objectCfgs = setup.objects.map((o) => setup.configs[o.config]);
+    const maxBottom = Math.max(1, ...objectCfgs.map((c) => c.bottomLayers));
+    const maxTop = Math.max(0, ...objectCfgs.map((c) => c.topLayers));
+    this.#keepBelow = maxBottom;
+    this.#lo = Math.max(0, from - maxBottom);
+    this.#hi = Math.min(n, to + maxTop);
     const run = layers.slice(this.#lo, this.#hi);
     const tolerance = Math.round(cfg.meshTolerance * UM_PER_MM);
-    this.#objects = meshes.map((mesh) => {
-      const stream = new SectionStream(mesh, run, tolerance);
-      const sectionAt = (i: number): ExPolygon[] => (i >= this.#lo && i < this.#hi ? stream.at(i - this.#lo).islands : []);
-      const top = new CoverWindows(sectionAt, cfg.topLayers, n);
-      const bottom = cfg.bottomLayers === cfg.topLayers ? top : new CoverWindows(sectionAt, cfg.bottomLayers, n);
-      return { stream, top, bottom };
+    const stream = (m: number) => new SectionStream(meshes[m], run, tolerance);
+    this.#objects = setup.objects.map((o, k) => {
+      const ocfg = objectCfgs[k];
+      const sectionAt = (i: number): ExPolygon[] => this.#section(k, i);
+      const top = new CoverWindows(sectionAt, ocfg.topLayers, n);
+      const bottom = ocfg.bottomLayers === ocfg.topLayers ? top : new CoverWindows(sectionAt, ocfg.bottomLayers, n);
+      return {
+        setup: o,
+        cfg: ocfg,
+        parts: stream(o.parts),
+        negatives: o.negatives.map(stream),
+        modifiers: o.modifiers.map(stream),
+        blockers: o.blockers.map(stream),
+        enforcers: o.enforcers.map(stream),
+        cut: new Map(),
+        top,
+        bottom,
+      };
     });
   }
 
-  #section(object: number, i: number): ExPolygon[] {
-    return i >= this.#lo && i < this.#hi ? this.#objects[object].stream.at(i - this.#lo).islands : [];
+  #inRun(i: number): boolean {
+    return i >= this.#lo && i < this.#hi;
+  }
+
+  /** The sections of volumes of one kind on layer i, together. */
+  #volumes(streams: readonly SectionStream[], i: number): ExPolygon[] {
+    if (!this.#inRun(i) || streams.length === 0) return [];
+    const all: ExPolygon[] = [];
+    for (const s of streams) for (const a of s.at(i - this.#lo).islands) all.push(a);
+    return streams.length > 1 ? union(all) : all;
+  }
+
+  /** Object k's section of layer i: its parts less its negative volumes. */
+  #section(k: number, i: number): ExPolygon[] {
+    if (!this.#inRun(i)) return [];
+    const o = this.#objects[k];
+    const parts = o.parts.at(i - this.#lo).islands;
+    if (o.negatives.length === 0 || parts.length === 0) return parts;
+    let s = o.cut.get(i);
+    if (!s) {
+      const neg = this.#volumes(o.negatives, i);
+      o.cut.set(i, (s = neg.length ? difference(parts, neg) : parts));
+    }
+    return s;
   }
 
   /** Every object's section of layer i, as one list of islands. */
@@ -64,6 +131,109 @@ export class RegionsRun {
     const all: ExPolygon[] = [];
     for (let o = 0; o < this.#objects.length; o++) for (const a of this.#section(o, i)) all.push(a);
     return all;
+  }
+
+  /** Object k's pieces of layer i with a config each: the modifiers' (a later one wins), and the rest. */
+  #pieces(k: number, i: number, section: readonly ExPolygon[]): Piece[] {
+    const o = this.#objects[k];
+    const row = o.setup.regions[rangeAt(o.setup, this.#layers[i].sliceZ)];
+    if (o.modifiers.length === 0 || section.length === 0) return [{ region: row[0], area: null }];
+    const pieces: Piece[] = [];
+    let claimed: ExPolygon[] = [];
+    for (let m = o.modifiers.length - 1; m >= 0; m--) {
+      const mod = this.#volumes([o.modifiers[m]], i);
+      if (mod.length === 0) continue;
+      const inside = intersection(section, mod);
+      const own = claimed.length && inside.length ? difference(inside, claimed) : inside;
+      if (own.length) pieces.push({ region: row[m + 1], area: own });
+      claimed = claimed.length ? union(claimed, mod) : mod;
+    }
+    if (pieces.length === 0) return [{ region: row[0], area: null }];
+    const rest = difference(section, claimed);
+    if (rest.length) pieces.push({ region: row[0], area: rest });
+    // pieces of one config are one piece
+    const byRegion = new Map<number, ExPolygon[]>();
+    for (const p of pieces) byRegion.set(p.region, [...(byRegion.get(p.region) ?? []), ...p.area!]);
+    if (byRegion.size === 1) return [{ region: pieces[0].region, area: null }];
+    return [...byRegion].sort((a, b) => a[0] - b[0]).map(([region, area]) => ({ region, area }));
+  }
+
+  /** The skin and infill of one region of an island. */
+  #fill(k: number, i: number, region: number, inner: readonly ExPolygon[], below: readonly ExPolygon[], w: number): RegionFill {
+    const o = this.#objects[k];
+    const cfg = this.#setup.configs[region];
+    const coveredAbove = inner.length ? o.top.window(i + 1) : [];
+    const coveredBelow = inner.length ? o.bottom.window(i - o.cfg.bottomLayers) : [];
+    const skin = skinAreas(inner, coveredAbove, coveredBelow, o.cfg.topLayers, o.cfg.bottomLayers, w);
+    const skinAll = allSkin(skin);
+    const overlapInfill = (cfg.infillOverlap / 100) * w;
+    const sparse = cfg.infillDensity > 0 ? offset(skinAll.length ? difference(inner, skinAll) : inner, -(w / 2 - overlapInfill)) : [];
+    const bridge = i > 0 ? bridgeOf(skin.bottom, below, w) : null;
+    return {
+      region,
+      topSkin: skin.top,
+      bottomSkin: skin.bottom,
+      exposed: skin.exposed,
+      bridge: bridge?.area ?? [],
+      bridgeAngle: bridge && bridge.mostly ? bridge.angle : null,
+      sparse,
+    };
+  }
+
+  /** Object k's islands of layer i. */
+  #islands(k: number, i: number, w: number, below: readonly ExPolygon[], belowGrown: readonly ExPolygon[]): IslandRegions[] {
+    const section = this.#section(k, i);
+    const pieces = this.#pieces(k, i, section);
+    const configs = this.#setup.configs;
+    // regions that lay the same walls share them: one wall set round all of them
+    const groups = new Map<string, Piece[]>();
+    for (const p of pieces) {
+      const key = pieces.length === 1 ? '' : wallsKey(configs[p.region]);
+      groups.set(key, [...(groups.get(key) ?? []), p]);
+    }
+    const out: IslandRegions[] = [];
+    for (const group of groups.values()) {
+      const area = groups.size === 1 ? section : group.length === 1 ? group[0].area! : union(group.flatMap((p) => p.area!));
+      const first = group[0].region;
+      for (const iw of computeWalls(area, configs[first], w)) {
+        const fills: RegionFill[] = [];
+        for (const p of group) {
+          const inner = group.length === 1 ? iw.inner : intersection(iw.inner, p.area!);
+          if (inner.length || group.length === 1) fills.push(this.#fill(k, i, p.region, inner, below, w));
+        }
+        const main = fills.shift() ?? this.#fill(k, i, first, [], below, w);
+        const island: IslandRegions = {
+          object: k,
+          ...main,
+          outline: iw.outline,
+          walls: iw.walls,
+          lostMm2: iw.lostMm2,
+          unsupported: i > 0 ? difference([iw.outline], belowGrown) : [],
+        };
+        if (fills.length) island.fills = fills;
+        out.push(island);
+      }
+    }
+    return out;
+  }
+
+  /** Object k's overhang on layer i, with its support blockers and enforcers. */
+  #overhang(k: number, i: number, islands: readonly IslandRegions[], grownUm: number): ExPolygon[] {
+    const o = this.#objects[k];
+    const z = this.#layers[i];
+    if (i === 0 || !(o.cfg.supportEnabled || o.enforcers.length)) return [];
+    const section = this.#section(k, i);
+    const below = this.#section(k, i - 1);
+    let over = o.cfg.supportEnabled ? overhangOf(section, below, z.height, o.cfg, false, { any: islands.some((r) => r.unsupported.length > 0), grownUm }) : [];
+    const enforced = this.#volumes(o.enforcers, i);
+    if (enforced.length) {
+      // inside an enforcer every overhang is held, however steep
+      const more = overhangOf(intersection(section, enforced), below, z.height, { ...o.cfg, supportThreshold: 0 });
+      if (more.length) over = over.length ? union(over, more) : more;
+    }
+    const blocked = this.#volumes(o.blockers, i);
+    if (blocked.length && over.length) over = difference(over, blocked);
+    return over;
   }
 
   /** The regions of layer i (call in ascending order). */
@@ -76,53 +246,53 @@ export class RegionsRun {
     // (as PrusaSlicer marks overhang perimeters): the parts of the outline beyond that grown section
     const belowGrown = below.length ? offset(below, w / 2) : below;
     const islands: IslandRegions[] = [];
-    const infillOn = cfg.infillDensity > 0;
-    const overlapInfill = (cfg.infillOverlap / 100) * w;
-    for (let o = 0; o < this.#objects.length; o++) {
-      const walls = computeWalls(this.#section(o, i), cfg, w);
-      const anyInner = walls.some((iw) => iw.inner.length > 0);
-      const coveredAbove = anyInner ? this.#objects[o].top.window(i + 1) : [];
-      const coveredBelow = anyInner ? this.#objects[o].bottom.window(i - cfg.bottomLayers) : [];
-      for (const iw of walls) {
-        const skin = skinAreas(iw.inner, coveredAbove, coveredBelow, cfg.topLayers, cfg.bottomLayers, w);
-        const skinAll = allSkin(skin);
-        const sparse = infillOn ? offset(skinAll.length ? difference(iw.inner, skinAll) : iw.inner, -(w / 2 - overlapInfill)) : [];
-        const bridge = i > 0 ? bridgeOf(skin.bottom, below, w) : null;
-        islands.push({
-          object: o,
-          outline: iw.outline,
-          walls: iw.walls,
-          lostMm2: iw.lostMm2,
-          topSkin: skin.top,
-          bottomSkin: skin.bottom,
-          exposed: skin.exposed,
-          bridge: bridge?.area ?? [],
-          bridgeAngle: bridge && bridge.mostly ? bridge.angle : null,
-          sparse,
-          unsupported: i > 0 ? difference([iw.outline], belowGrown) : [],
-        });
+    const overhangs: ExPolygon[][] = [];
+    for (let k = 0; k < this.#objects.length; k++) {
+      const own = this.#islands(k, i, w, below, belowGrown);
+      for (const r of own) islands.push(r);
+      overhangs.push(this.#overhang(k, i, own, w / 2));
+    }
+    this.#checkOverlaps(i);
+    if (overhangs.length === 1) return { ...z, islands, overhang: overhangs[0], support: null };
+    return { ...z, islands, overhang: overhangs.flat(), overhangs, support: null };
+  }
+
+  /** Refuse objects with different settings that share volume on layer i. */
+  #checkOverlaps(i: number): void {
+    for (const [a, b] of this.#setup.overlapPairs) {
+      const sa = this.#section(a, i), sb = this.#section(b, i);
+      if (!sa.length || !sb.length) continue;
+      const shared = area(intersection(sa, sb)) / 1e6;
+      if (shared > OVERLAP_MIN_MM2) {
+        const na = this.#setup.objects[a].name, nb = this.#setup.objects[b].name;
+        throw new StrataError(
+          'OVERLAPPING_OBJECTS',
+          `objects "${na}" and "${nb}" overlap (${shared.toFixed(1)} mm² at Z ${this.#layers[i].z.toFixed(2)} mm) and have different settings or volumes of their own: move them apart, give them the same settings, or make one a modifier of the other`,
+        );
       }
     }
-    const overhang = cfg.supportEnabled
-      ? overhangOf(this.#layerSection(i), below, z.height, cfg, i === 0, { any: islands.some((r) => r.unsupported.length > 0), grownUm: w / 2 })
-      : [];
-    return { ...z, islands, overhang, support: null };
   }
 
   /** Forget sections no later layer (from i on) needs. */
   release(i: number): void {
-    const keepFrom = i - Math.max(this.#cfg.bottomLayers, 1) - 1 - this.#lo;
-    for (const o of this.#objects) o.stream.release(keepFrom);
+    const keepFrom = i - this.#keepBelow - 1 - this.#lo;
+    for (const o of this.#objects) {
+      for (const s of [o.parts, ...o.negatives, ...o.modifiers, ...o.blockers, ...o.enforcers]) s.release(keepFrom);
+      for (const key of o.cut.keys()) if (key - this.#lo < keepFrom) o.cut.delete(key);
+    }
   }
 }
 
 /** The whole layer's sparse area (every island's, merged), for whole-model infill passes. */
-export function layerSparse(layer: LayerRegions): ExPolygon[] {
-  const all = layer.islands.flatMap((i) => i.sparse);
+export function layerSparse(layer: LayerRegions, regions?: (region: number) => boolean): ExPolygon[] {
+  const all: ExPolygon[] = [];
+  for (const island of layer.islands) {
+    for (const f of island.fills ? [island, ...island.fills] : [island]) if (!regions || regions(f.region)) all.push(...f.sparse);
+  }
   return all.length > 1 ? union(all) : all;
 }
 
 /** The whole layer's top skin. */
 export function layerTopSkin(layer: LayerRegions): ExPolygon[] {
-  return layer.islands.flatMap((i) => i.topSkin);
+  return layer.islands.flatMap((i) => (i.fills ? [i, ...i.fills].flatMap((f) => f.topSkin) : i.topSkin));
 }

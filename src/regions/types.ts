@@ -23,16 +23,13 @@ export interface WallSet {
   widths: (Float64Array | null)[] | null;
 }
 
-/** One island of one layer. */
-export interface IslandRegions {
-  /** The object the island belongs to (index into the pipeline's object list). */
-  object: number;
-  /** The island's section outline. */
-  outline: ExPolygon;
-  /** The walls, as sets of loops or lines of one wall index (classic walls' gap loops apart). */
-  walls: WallSet[];
-  /** Area of the island too thin to print (thinner than the smallest feature the walls lay), mm². */
-  lostMm2: number;
+/**
+ * The skin and infill areas of one region of an island: inside the island's walls, where one config
+ * applies (the object's, or a layer range's or modifier's).
+ */
+export interface RegionFill {
+  /** Index of the config the region reads (PrintSetup.configs). */
+  region: number;
   /** Top skin inside the walls: exposed within the top skin thickness above. */
   topSkin: ExPolygon[];
   /** Bottom skin inside the walls: exposed within the bottom skin thickness below. */
@@ -45,8 +42,25 @@ export interface IslandRegions {
   bridgeAngle: number | null;
   /** Centreline area of the sparse infill. */
   sparse: ExPolygon[];
+}
+
+/**
+ * One island of one layer: its outline and walls (laid with the config `region`), and its skin and infill
+ * (the region's, and with modifiers inside it, further `fills` with configs of their own).
+ */
+export interface IslandRegions extends RegionFill {
+  /** The object the island belongs to (index into the pipeline's object list). */
+  object: number;
+  /** The island's section outline. */
+  outline: ExPolygon;
+  /** The walls, as sets of loops or lines of one wall index (classic walls' gap loops apart). */
+  walls: WallSet[];
+  /** Area of the island too thin to print (thinner than the smallest feature the walls lay), mm². */
+  lostMm2: number;
   /** The part of the outline more than half a line width out from the layer below: walls there are overhangs. */
   unsupported: ExPolygon[];
+  /** The skin and infill of the parts of the island inside modifiers whose configs differ from `region`'s. */
+  fills?: RegionFill[];
 }
 
 /** Support areas of one layer (filled by the support pass), µm. */
@@ -85,11 +99,16 @@ export interface LayerRegions extends LayerZ {
    */
   overhang: ExPolygon[];
   support: SupportAreas | null;
+  /**
+   * With several objects: per object, its overhang (`overhang` is all of them) and its own support
+   * (`support` is all of them together), so that each object's support prints with the object.
+   */
+  overhangs?: ExPolygon[][];
+  supports?: (SupportAreas | null)[];
   /** Set on raft layers (below the model's first layer), which have no islands. */
   raft?: RaftArea;
 }
 
-/** The layer's whole section (every island's outline). */
 /**
  * The layer with its islands cut down to their outlines (walls, skin and infill areas left empty): what the
  * support and raft passes and the skirt read, once the layer's own paths are made. Keeping every layer's
@@ -98,6 +117,7 @@ export interface LayerRegions extends LayerZ {
 export function outlinesOnly(layer: LayerRegions): LayerRegions {
   const islands = layer.islands.map((i): IslandRegions => ({
     object: i.object,
+    region: i.region,
     outline: i.outline,
     walls: [],
     lostMm2: 0,
@@ -112,6 +132,7 @@ export function outlinesOnly(layer: LayerRegions): LayerRegions {
   return { ...layer, islands };
 }
 
+/** The layer's whole section (every island's outline). */
 export function sectionOf(layer: LayerRegions): ExPolygon[] {
   return layer.islands.map((i) => i.outline);
 }

@@ -3,12 +3,12 @@ import { StrataError } from '../errors.js';
 import type { PreparedMesh } from '../slice/index.js';
 import { computeRange, type RegionsHeld } from '../pipeline/layer-work.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
-import type { Config } from '../settings/resolve.js';
+import type { PrintSetup } from '../regions/objects.js';
 import type { FromWorker, ToWorker } from './protocol.js';
 
 interface State {
   meshes: PreparedMesh[];
-  cfg: Config;
+  setup: PrintSetup;
   custom?: CustomInfillGenerator;
   /** Regions kept for this worker's later 'held' jobs. */
   held: RegionsHeld;
@@ -23,18 +23,18 @@ export function makeHandler(post: (msg: FromWorker) => void, clock: () => number
   state.catch(() => {});
   return (msg) => {
     if (msg.type === 'init') {
-      const { meshes, cfg, custom } = msg;
+      const { meshes, setup, custom } = msg;
       // the shader compiler loads only when a custom infill needs it
       state = custom
-        ? import('../pipeline/custom-infill.js').then((m) => ({ meshes, cfg, custom: m.customGenerator(custom, cfg), held: new Map() }))
-        : Promise.resolve({ meshes, cfg, held: new Map() });
+        ? import('../pipeline/custom-infill.js').then((m) => ({ meshes, setup, custom: m.customGenerator(custom, setup.configs[0]), held: new Map() }))
+        : Promise.resolve({ meshes, setup, held: new Map() });
       state.catch(() => {});
       return;
     }
     state
       .then((s) => {
         const t0 = clock();
-        const result = computeRange(s.meshes, s.cfg, msg.job, s.custom, s.held);
+        const result = computeRange(s.meshes, s.setup, msg.job, s.custom, s.held);
         post({ type: 'result', id: msg.id, result, ms: clock() - t0 });
       })
       .catch((e: unknown) => {

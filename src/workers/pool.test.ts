@@ -10,6 +10,7 @@ import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { prepareModel } from '../api/slicer.js';
 import { resolveConfig } from '../settings/resolve.js';
+import { plainSetup } from '../regions/objects.js';
 import { planLayers, prepareMesh } from '../slice/index.js';
 import { computeRange, type RangeJob, type RangeResult } from '../pipeline/layer-work.js';
 import { makeHandler } from './handler.js';
@@ -68,10 +69,10 @@ const layers = planLayers(20, cfg.firstLayerHeight, cfg.layerHeight);
 const params = { density: 0.2, lineWidth: 400, nozzleDiameter: 400, angle: 45, centering: 'object' as const, origin: { x: 0, y: 0 }, connect: false };
 const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({ kind: 'layers', layers, from: Math.floor((k * layers.length) / 6), to: Math.floor(((k + 1) * layers.length) / 6), infillParams: [params], zOffset: 0, adhesion: true }));
 const prepared = [prepareMesh(model.mesh)];
-const local = (j: RangeJob) => computeRange(prepared, cfg, j);
+const local = (j: RangeJob) => computeRange(prepared, plainSetup(cfg), j);
 const url = new URL('./layer-worker.js', import.meta.url);
 const pool = (mode: Mode, workers = 1, msPerLayer?: number) =>
-  createPool(workers, () => prepared, cfg, undefined, undefined, () => webWorkerPort(fakeWorker(mode, msPerLayer), url));
+  createPool(workers, () => prepared, plainSetup(cfg), undefined, undefined, () => webWorkerPort(fakeWorker(mode, msPerLayer), url));
 const tick = () => new Promise((r) => setTimeout(r, 5));
 
 test('through Web Workers, results come back in job order and equal the calling thread’s', { timeout: 20_000 }, async () => {
@@ -98,7 +99,7 @@ test('a worker whose script does not load fails the next run with a clear messag
 test('a worker started early that fails before the pool listens still fails the run', { timeout: 20_000 }, async () => {
   const started = startWorkers(1, () => webWorkerPort(fakeWorker('no-script'), url));
   await tick();
-  const p = await createPool(1, () => prepared, cfg, undefined, started);
+  const p = await createPool(1, () => prepared, plainSetup(cfg), undefined, started);
   await assert.rejects(p.run(jobs, { local }), /could not be started/);
   await p.close();
 });

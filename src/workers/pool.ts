@@ -8,7 +8,7 @@ import { cancelled, StrataError } from '../errors.js';
 import { isNode, soon } from '../runtime.js';
 import type { PreparedMesh } from '../slice/index.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
-import type { Config } from '../settings/resolve.js';
+import type { PrintSetup } from '../regions/objects.js';
 import type { FromWorker } from './protocol.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 import { nodeWorkerPort, webWorkerPort, type Port, type WebWorkerCtor } from './ports.js';
@@ -104,7 +104,7 @@ export async function releaseWorkers(started: Promise<Port[]>): Promise<void> {
  * object) on this thread while they load (`prepare`: best in shared memory, see `sharePrepared`) and send
  * them to the workers with the settings.
  */
-export async function createPool(size: number, prepare: () => PreparedMesh[], cfg: Config, custom?: CustomInfillSpec, started?: Promise<Port[]>, spawn: Spawn = defaultSpawn): Promise<LayerPool> {
+export async function createPool(size: number, prepare: () => PreparedMesh[], setup: PrintSetup, custom?: CustomInfillSpec, started?: Promise<Port[]>, spawn: Spawn = defaultSpawn): Promise<LayerPool> {
   const ready = started ? await started : [];
   await Promise.all(ready.slice(size).map((p) => p.terminate()));
   const ports = [...ready.slice(0, size), ...(await startWorkers(Math.max(0, size - ready.length), spawn))];
@@ -123,7 +123,7 @@ export async function createPool(size: number, prepare: () => PreparedMesh[], cf
   }
   try {
     const meshes = prepare();
-    for (const p of ports) p.post({ type: 'init', meshes, cfg, custom });
+    for (const p of ports) p.post({ type: 'init', meshes, setup, custom });
   } catch (e) {
     await Promise.all(ports.map((p) => p.terminate()));
     throw e;

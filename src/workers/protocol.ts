@@ -1,11 +1,11 @@
 /** Messages between the pipeline and its layer workers: plain data only. */
 import type { PreparedMesh } from '../slice/index.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
-import type { Config } from '../settings/resolve.js';
+import type { PrintSetup } from '../regions/objects.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 
 export type ToWorker =
-  | { type: 'init'; meshes: PreparedMesh[]; cfg: Config; custom?: CustomInfillSpec }
+  | { type: 'init'; meshes: PreparedMesh[]; setup: PrintSetup; custom?: CustomInfillSpec }
   | { type: 'range'; id: number; job: RangeJob };
 
 export type FromWorker =

@@ -5,7 +5,7 @@ import { overhangOf } from '../overhang.js';
 import type { IslandRegions, LayerRegions } from '../types.js';
 
 const island = (outline: ExPolygon): IslandRegions => ({
-  object: 0, outline, walls: [], lostMm2: 0, topSkin: [], bottomSkin: [], exposed: [], bridge: [], bridgeAngle: null, sparse: [], unsupported: [],
+  object: 0, region: 0, outline, walls: [], lostMm2: 0, topSkin: [], bottomSkin: [], exposed: [], bridge: [], bridgeAngle: null, sparse: [], unsupported: [],
 });
 
 /** `sectionAt(j)` for layers 0..count-1, heights from the config, overhangs found as the regions stage does. */

@@ -1,0 +1,171 @@
+/**
+ * What the layer stages need to know about the plate, as plain data that crosses to the workers: the
+ * meshes to slice (each object's parts, and its other volumes), which volume does what, and the
+ * deduplicated configs with, per object, the config index of each layer range and modifier.
+ *
+ * Objects that overlap and have the same settings (and no volumes or layer ranges of their own) are
+ * printed as one object, their union; objects that overlap with different settings are checked layer by
+ * layer, and refused where they really share volume (`overlapPairs`).
+ */
+import type { Mesh, VolumeKind } from '../mesh/types.js';
+import { ConfigTable, type ScopedSettings } from '../settings/scoped.js';
+import type { ObjectSetup, PrintSetup } from '../regions/objects.js';
+import type { Config } from '../settings/resolve.js';
+import type { SliceOptions } from '../settings/schema.js';
+
+/** A volume of a placed object other than its parts. */
+export interface PlacedVolume {
+  kind: VolumeKind;
+  name: string;
+  mesh: Mesh;
+  /** A modifier's settings (Strata keys). */
+  settings?: ScopedSettings;
+}
+
+export interface PlacedObject {
+  name: string;
+  /** Every printed part, in bed coordinates, mm. */
+  mesh: Mesh;
+  volumes?: readonly PlacedVolume[];
+  /** The object's own settings (Strata keys). */
+  settings?: ScopedSettings;
+  /** Settings of the layers whose Z lies in [fromZ, toZ), mm from the bed; a later range wins. */
+  layerRanges?: ReadonlyArray<{ fromZ: number; toZ: number; settings: ScopedSettings }>;
+}
+
+/** The meshes the setup's indices point into, and the setup. */
+export interface PlateSetup {
+  setup: PrintSetup;
+  meshes: Mesh[];
+  /** The objects as printed (merged ones as one), for labels, thumbnails and infill origins. */
+  objects: PlacedObject[];
+  /** Notes for the caller (objects merged). */
+  warnings: string[];
+}
+
+interface Box {
+  min: [number, number, number];
+  max: [number, number, number];
+}
+
+function meshBox(mesh: Mesh): Box {
+  const box: Box = { min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity] };
+  const { positions: p, indices } = mesh;
+  for (let i = 0; i < indices.length; i++) {
+    const v = indices[i] * 3;
+    for (let k = 0; k < 3; k++) {
+      const c = p[v + k];
+      if (c < box.min[k]) box.min[k] = c;
+      if (c > box.max[k]) box.max[k] = c;
+    }
+  }
+  return box;
+}
+
+function boxesOverlap(a: Box, b: Box): boolean {
+  for (let k = 0; k < 3; k++) if (!(a.min[k] < b.max[k] && b.min[k] < a.max[k])) return false;
+  return true;
+}
+
+function concatMeshes(meshes: readonly Mesh[]): Mesh {
+  let nPos = 0, nIdx = 0;
+  for (const m of meshes) {
+    nPos += m.positions.length;
+    nIdx += m.indices.length;
+  }
+  const positions = new Float32Array(nPos);
+  const indices = new Uint32Array(nIdx);
+  let p = 0, k = 0;
+  for (const m of meshes) {
+    positions.set(m.positions, p);
+    const base = p / 3;
+    for (let i = 0; i < m.indices.length; i++) indices[k + i] = m.indices[i] + base;
+    p += m.positions.length;
+    k += m.indices.length;
+  }
+  return { positions, indices };
+}
+
+/** Whether an object has nothing of its own beyond its settings (so merging it with a twin changes nothing). */
+function plain(o: PlacedObject): boolean {
+  return !o.volumes?.length && !o.layerRanges?.length;
+}
+
+/**
+ * Resolve every object's, range's and modifier's settings (throwing one clear error per misuse: a key that
+ * does not exist, a value out of range, a print setting given to an object) and lay out the plate.
+ */
+export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions, print: Config): PlateSetup {
+  const table = new ConfigTable(base, print);
+  const objectConfig = objects.map((o) => table.resolve([{ settings: o.settings, use: 'object', where: `object "${o.name}"` }]));
+  // overlapping twins print as one object
+  const boxes = objects.map((o) => meshBox(o.mesh));
+  const groupOf = objects.map((_, i) => i);
+  const find = (i: number): number => (groupOf[i] === i ? i : (groupOf[i] = find(groupOf[i])));
+  const overlapPairs: Array<[number, number]> = [];
+  for (let i = 0; i < objects.length; i++) {
+    for (let j = i + 1; j < objects.length; j++) {
+      if (!boxesOverlap(boxes[i], boxes[j])) continue;
+      if (plain(objects[i]) && plain(objects[j]) && objectConfig[i] === objectConfig[j]) {
+        const a = find(i), b = find(j);
+        if (a !== b) groupOf[Math.max(a, b)] = Math.min(a, b);
+      } else overlapPairs.push([i, j]);
+    }
+  }
+  const warnings: string[] = [];
+  const printed: PlacedObject[] = [];
+  const printedIndex = new Map<number, number>();
+  const settingsOf: number[] = [];
+  for (let i = 0; i < objects.length; i++) {
+    const root = find(i);
+    if (root !== i) continue;
+    const members = objects.map((_, j) => j).filter((j) => find(j) === i);
+    printedIndex.set(i, printed.length);
+    settingsOf.push(objectConfig[i]);
+    if (members.length === 1) printed.push(objects[i]);
+    else {
+      const names = members.map((j) => objects[j].name);
+      warnings.push(`${names.join(', ')} overlap: they print as one object (their union), "${names.join(' + ')}"`);
+      printed.push({ name: names.join(' + '), mesh: concatMeshes(members.map((j) => objects[j].mesh)), settings: objects[i].settings });
+    }
+  }
+  for (let i = 0; i < objects.length; i++) if (find(i) !== i) printedIndex.set(i, printedIndex.get(find(i))!);
+
+  const meshes: Mesh[] = [];
+  const add = (m: Mesh) => meshes.push(m) - 1;
+  const setups = printed.map((o, k): ObjectSetup => {
+    const volumes = o.volumes ?? [];
+    const of = (kind: VolumeKind) => volumes.filter((v) => v.kind === kind);
+    const modifiers = of('modifier');
+    const ranges = (o.layerRanges ?? []).map((r) => ({ fromZ: r.fromZ, toZ: r.toZ }));
+    const objectLayer = { settings: o.settings, use: 'object' as const, where: `object "${o.name}"` };
+    const regions: number[][] = [];
+    for (let r = 0; r <= ranges.length; r++) {
+      const range = r === 0 ? null : o.layerRanges![r - 1];
+      const rangeLayer = range ? [{ settings: range.settings, use: 'layer range' as const, where: `object "${o.name}" layers ${range.fromZ}–${range.toZ} mm` }] : [];
+      const row: number[] = [];
+      for (let m = 0; m <= modifiers.length; m++) {
+        if (r === 0 && m === 0) {
+          row.push(settingsOf[k]);
+          continue;
+        }
+        const mod = m === 0 ? [] : [{ settings: modifiers[m - 1].settings, use: 'modifier' as const, where: `modifier "${modifiers[m - 1].name}" of "${o.name}"` }];
+        row.push(table.resolve([objectLayer, ...rangeLayer, ...mod]));
+      }
+      regions.push(row);
+    }
+    return {
+      name: o.name,
+      parts: add(o.mesh),
+      negatives: of('negative').map((v) => add(v.mesh)),
+      modifiers: modifiers.map((v) => add(v.mesh)),
+      blockers: of('support-blocker').map((v) => add(v.mesh)),
+      enforcers: of('support-enforcer').map((v) => add(v.mesh)),
+      config: settingsOf[k],
+      ranges,
+      regions,
+    };
+  });
+  const pairs = overlapPairs.map(([a, b]): [number, number] => [printedIndex.get(a)!, printedIndex.get(b)!]).filter(([a, b]) => a !== b);
+  return { setup: { configs: table.configs, objects: setups, overlapPairs: pairs }, meshes, objects: printed, warnings };
+}
