@@ -62,3 +62,14 @@ test('malformed XML throws BAD_FILE with a line number', () => {
     );
   }
 });
+
+test('textContent reads an element\'s text, entities decoded and CDATA unwrapped', () => {
+  const x = new XmlScanner(enc('<m><v n="a">80 &amp; up</v><v n="b"><![CDATA[<raw> &amp;]]> tail</v><v n="c"></v></m>'), 't');
+  const got: string[] = [];
+  let start = -1;
+  for (let ev = x.next(); ev !== XML_EOF; ev = x.next()) {
+    if (ev === XML_START && x.is('v')) start = x.contentStart();
+    else if (ev === XML_END && x.is('v')) got.push(x.textContent(start));
+  }
+  assert.deepEqual(got, ['80 & up', '<raw> &amp; tail', '']);
+});

@@ -1,6 +1,7 @@
 /**
  * A small, fast pull tokenizer for XML in UTF-8 bytes, enough for 3MF and OPC parts: elements,
- * attributes, comments, processing instructions, CDATA (skipped). Text content is ignored.
+ * attributes, comments, processing instructions, CDATA (skipped). Text content is skipped unless a caller
+ * asks for an element's text (textContent).
  * It does not build a tree or allocate per element: callers compare names and read attribute
  * values (numbers straight from the bytes) through the scanner. DTDs are refused (no entity expansion).
  */
@@ -239,6 +240,29 @@ export class XmlScanner {
       v = v * 10 + d;
     }
     return v > 0xffffffff ? -1 : v;
+  }
+
+  /** Where the content of the element just started begins (after XML_START of an element that is not self-closing). */
+  contentStart(): number {
+    return this.attrEnd + 1;
+  }
+
+  /**
+   * After XML_END: the element's text from `start` (its contentStart()) to this end tag, entity-decoded,
+   * CDATA sections unwrapped. Meant for elements that hold only text (`<metadata name="…">value</metadata>`).
+   */
+  textContent(start: number): string {
+    const raw = this.text(start, this.nameStart - 2);
+    if (raw.indexOf('<![CDATA[') < 0) return decodeEntities(raw);
+    let out = '';
+    let at = 0;
+    for (let i = raw.indexOf('<![CDATA['); i >= 0; i = raw.indexOf('<![CDATA[', at)) {
+      const end = raw.indexOf(']]>', i + 9);
+      if (end < 0) break;
+      out += decodeEntities(raw.slice(at, i)) + raw.slice(i + 9, end);
+      at = end + 3;
+    }
+    return out + decodeEntities(raw.slice(at));
   }
 
   text(s: number, e: number): string {
