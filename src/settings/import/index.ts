@@ -157,3 +157,5 @@ export function importProfile(text: string, fileName = 'profile'): ImportedProfi
   }
   return importIni(text, fileName, name.endsWith('.cfg'));
 }
+
+export { settingsFromSource, type ObjectSettings } from './object-settings.js';
