@@ -26,6 +26,8 @@ export interface FlagDef {
   value: string;
   /** Given several times, the values accumulate (newline-separated). */
   repeat?: boolean;
+  /** Belongs to the model file given before it (kept in `ParsedArgs.modelFlags`). */
+  ofModel?: boolean;
   /** Commands the flag applies to (empty: any command, and none). */
   commands: readonly Command[];
   help: string;
@@ -48,6 +50,13 @@ export const FLAGS: readonly FlagDef[] = [
   { name: 'infill-density-shader', value: 'FILE', commands: SLICING, help: 'density() from a shader' },
   { name: 'infill-density-layers', value: 'A,B,…', commands: SLICING, help: 'density() per layer' },
   { name: 'infillers', value: 'DIR', repeat: true, commands: [...SLICING, 'infillers'], help: 'another infiller folder' },
+  { name: 'object', value: 'KEY=VALUE,…', repeat: true, ofModel: true, commands: SLICING, help: 'settings of the model file before it only (object- and region-scoped ones)' },
+  { name: 'modifier', value: 'FILE[:KEY=VALUE,…]', repeat: true, ofModel: true, commands: SLICING, help: 'a mesh that changes the settings of the model before it inside it (not printed)' },
+  { name: 'negative', value: 'FILE', repeat: true, ofModel: true, commands: SLICING, help: 'a mesh cut out of the model before it' },
+  { name: 'support-blocker', value: 'FILE', repeat: true, ofModel: true, commands: SLICING, help: 'no support for the model before it inside this mesh' },
+  { name: 'support-enforcer', value: 'FILE', repeat: true, ofModel: true, commands: SLICING, help: 'support under every overhang of the model before it inside this mesh' },
+  { name: 'layer-range', value: 'FROM-TO:KEY=VALUE,…', repeat: true, ofModel: true, commands: SLICING, help: 'settings of the model before it from Z FROM to TO mm' },
+  { name: 'save-project', value: 'FILE.3mf', commands: ['slice'], help: 'also write the plate as a project 3MF (objects, volumes, settings)' },
   { name: 'layer', value: 'N', commands: ['preview'], help: 'the layer to draw' },
   { name: 'width', value: 'PX', commands: ['preview'], help: 'picture width' },
   { name: 'travel', value: '', commands: ['preview'], help: 'draw travels too' },
@@ -55,7 +64,7 @@ export const FLAGS: readonly FlagDef[] = [
 ];
 
 const BY_NAME: ReadonlyMap<string, FlagDef> = new Map(FLAGS.flatMap((f) => [[f.name, f] as const, ...(f.short ? [[f.short, f] as const] : [])]));
-const FLAG_TO_KEY: ReadonlyMap<string, SettingKey> = new Map(SETTING_KEYS.map((k) => [kebab(k), k]));
+export const FLAG_TO_KEY: ReadonlyMap<string, SettingKey> = new Map(SETTING_KEYS.map((k) => [kebab(k), k]));
 
 /** Every flag the CLI accepts, with dashes: the FLAGS table and every setting's (with --no- for on/off ones). */
 export function allFlags(): string[] {
@@ -76,6 +85,8 @@ export interface ParsedArgs {
   flags: Record<string, string | true>;
   /** Setting flags as given (for messages about the command). */
   settingFlags: string[];
+  /** Flags that belong to one model file: the index of the file in `positional`, the flag's long name and value. */
+  modelFlags: Array<{ model: number; flag: string; value: string }>;
 }
 
 /** A list of numbers "a,b,c" (exactly `n` of them when n > 1), or one number. */
@@ -88,7 +99,7 @@ function numbers(flag: string, text: string, n: number): number[] {
 }
 
 export function parseArgs(argv: readonly string[]): ParsedArgs {
-  const out: ParsedArgs = { command: '', positional: [], settings: {}, flags: {}, settingFlags: [] };
+  const out: ParsedArgs = { command: '', positional: [], settings: {}, flags: {}, settingFlags: [], modelFlags: [] };
   let i = 0;
   const need = (flag: string): string => {
     const v = argv[++i];
@@ -122,6 +133,8 @@ export function parseArgs(argv: readonly string[]): ParsedArgs {
         continue;
       }
       const v = value(a);
+      // (before any model file: -1, refused by the slicing commands, which read these)
+      if (def.ofModel) out.modelFlags.push({ model: out.positional.length - 1, flag: def.name, value: v });
       if (def.name === 'set') {
         const k = v.indexOf('=');
         if (k <= 0) throw new StrataError('BAD_SETTING', `--set expects key=value, got "${v}"`);

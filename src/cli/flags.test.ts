@@ -36,6 +36,11 @@ const THIN = join(DIR, 'thin.stl');
 writeFileSync(THIN, thinFeatures());
 const OVERHANGS = join(DIR, 'overhangs.stl');
 writeFileSync(OVERHANGS, overhangPart());
+// a 5 mm block through the model's corner (a modifier's or negative volume's mesh), and one over everything
+const CORNER = join(DIR, 'corner.stl');
+writeFileSync(CORNER, blockWithHole(5, 30, 1, 16, [5, 5]));
+const EVERYTHING = join(DIR, 'everything.stl');
+writeFileSync(EVERYTHING, blockWithHole(150, 60, 1, 16));
 
 interface Run {
   code: number;
@@ -263,6 +268,22 @@ const PROOFS: Record<string, (command: Command) => Promise<void>> = {
     const without = await cli(...BASE_ARGS[c], '--infill-pattern', 'my-stripes', '-o', fresh('x'));
     assert.equal(without.code, 1, 'an unknown infiller without --infillers');
     await differs(c, ['--infillers', EXTRA_INFILLERS, '--infill-pattern', 'my-stripes']);
+  },
+  object: (c) => differs(c, ['--object', 'infill-density=60,wall-count=3']),
+  modifier: (c) => differs(c, ['--modifier', `${CORNER}:infill-density=90,wallCount=1`]),
+  negative: (c) => differs(c, ['--negative', CORNER]),
+  'support-blocker': (c) => differs(c, [OVERHANGS, '--support-enabled', '--support-blocker', EVERYTHING], [OVERHANGS, '--support-enabled']),
+  'support-enforcer': (c) => differs(c, [OVERHANGS, '--support-enforcer', EVERYTHING], [OVERHANGS]),
+  'layer-range': (c) => differs(c, ['--layer-range', '2-6:infill-density=100']),
+  'save-project': async () => {
+    const project = fresh('3mf');
+    const r = await cli(...BASE_ARGS.slice, '--object', 'infill-density=60', '--modifier', `${CORNER}:infill-density=90`, '--save-project', project, '-o', fresh('gcode'));
+    assert.equal(r.code, 0, r.err);
+    // the project slices to the same G-code as the command line it was saved from
+    const again = await produce(['slice', project, '-q', '--threads', '1', '-o', fresh('gcode')]);
+    const first = await produce([...BASE_ARGS.slice, '--object', 'infill-density=60', '--modifier', `${CORNER}:infill-density=90`, '-o', fresh('gcode')]);
+    assert.equal(again.code, 0, again.err);
+    assert.ok(again.file && again.file === first.file, 'the saved project slices as the command line did');
   },
   layer: (c) => differs(c, ['--layer', '3']),
   width: (c) => differs(c, ['--width', '300']),

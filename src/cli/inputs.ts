@@ -6,14 +6,16 @@ import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
 import { StrataError } from '../errors.js';
 import { PATTERN_IDS } from '../infill/types.js';
-import { loadModelBytes } from '../mesh/index.js';
+import { loadModelBytes, mergeObjects } from '../mesh/index.js';
+import type { MeshObject, MeshVolume } from '../mesh/types.js';
 import type { ModelInput } from '../mesh/place.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 import type { Config } from '../settings/resolve.js';
 import { importProfile } from '../settings/import/index.js';
 import type { SliceOptions } from '../settings/schema.js';
 import { iceslInfillersDirs, shippedInfillersDir } from '../shader/infiller-dirs.js';
-import type { ParsedArgs } from './args.js';
+import { FLAG_TO_KEY, type ParsedArgs } from './args.js';
+import { checkKey, parseSettingText } from '../settings/resolve.js';
 import type { NamedInput } from './output.js';
 
 const MiB = 1024 * 1024;
@@ -37,13 +39,55 @@ export class InputReader {
     return new TextDecoder().decode(this.bytes(path, what));
   }
 
-  /** One model per file, named after it, within the config's unpack budget. */
-  models(paths: readonly string[], cfg: Config): ModelInput[] {
-    return paths.map((p) => {
+  /** The objects of one file, within the config's unpack budget. */
+  #objects(path: string, what: string, cfg: Config): MeshObject[] {
+    return loadModelBytes(this.bytes(path, what), path === '-' ? undefined : basename(path), { maxInflatedBytes: cfg.inflateBudget * MiB });
+  }
+
+  /**
+   * One model per file, named after it; the flags that follow a file (`--object`, `--modifier`, `--negative`,
+   * `--support-blocker`, `--support-enforcer`, `--layer-range`) give every object of that file its
+   * settings and volumes.
+   */
+  models(paths: readonly string[], cfg: Config, modelFlags: ParsedArgs['modelFlags'] = []): ModelInput[] {
+    const early = modelFlags.find((f) => f.model < 0);
+    if (early) throw new StrataError('BAD_SETTING', `--${early.flag} belongs to a model: give it after the model file it applies to`);
+    return paths.map((p, k) => {
       const name = p === '-' ? 'standard input' : basename(p);
-      const objects = loadModelBytes(this.bytes(p, 'model'), p === '-' ? undefined : basename(p), { maxInflatedBytes: cfg.inflateBudget * MiB });
-      return { name, objects };
+      const objects = this.#objects(p, 'model', cfg);
+      const flags = modelFlags.filter((f) => f.model === k);
+      return { name, objects: flags.length ? objects.map((o) => this.#withFlags(o, flags, cfg)) : objects };
     });
+  }
+
+  #withFlags(o: MeshObject, flags: ParsedArgs['modelFlags'], cfg: Config): MeshObject {
+    const out: MeshObject = { ...o, volumes: [...(o.volumes ?? [])], layerRanges: [...(o.layerRanges ?? [])] };
+    const own: Record<string, unknown> = { ...(o.settings?.format === 'strata' ? o.settings.values : {}) };
+    const volumeMesh = (path: string, what: string) => mergeObjects(this.#objects(path, what, cfg));
+    for (const { flag, value } of flags) {
+      if (flag === 'object') Object.assign(own, parseSettingList(value, `--object ${value}`));
+      else if (flag === 'layer-range') {
+        const m = /^\s*([0-9.]+)\s*-\s*([0-9.]+)\s*:(.*)$/.exec(value);
+        const fromZ = Number(m?.[1]), toZ = Number(m?.[2]);
+        if (!m || !Number.isFinite(fromZ) || !Number.isFinite(toZ) || !(toZ > fromZ)) {
+          throw new StrataError('BAD_SETTING', `--layer-range expects FROM-TO:KEY=VALUE,… (mm from the bed, FROM < TO), got "${value}"`);
+        }
+        out.layerRanges!.push({ fromZ, toZ, settings: { format: 'strata', values: parseSettingList(m[3], `--layer-range ${value}`) } });
+      } else {
+        const colon = flag === 'modifier' ? value.lastIndexOf(':') : -1;
+        // a Windows drive letter (C:\…) is not a settings list
+        const split = colon > 1 && /=/.test(value.slice(colon + 1));
+        const path = split ? value.slice(0, colon) : value;
+        const kind = flag === 'modifier' ? 'modifier' : flag === 'negative' ? 'negative' : flag === 'support-blocker' ? 'support-blocker' : 'support-enforcer';
+        const volume: MeshVolume = { kind, name: basename(path), mesh: volumeMesh(path, `--${flag} mesh`) };
+        if (split) volume.settings = { format: 'strata', values: parseSettingList(value.slice(colon + 1), `--${flag} ${value}`) };
+        out.volumes!.push(volume);
+      }
+    }
+    if (Object.keys(own).length) out.settings = { format: 'strata', values: own };
+    if (!out.volumes!.length) delete out.volumes;
+    if (!out.layerRanges!.length) delete out.layerRanges;
+    return out;
   }
 
   /** Settings from a Strata JSON file or another slicer's profile (settings/import); what is left out is in `warnings`. */
@@ -121,4 +165,18 @@ export async function optionsFrom(args: ParsedArgs, input: InputReader, warn: (w
   Object.assign(opts, args.settings);
   const customInfill = await customInfillFrom(args, opts, input);
   return { ...(opts as SliceOptions), ...(customInfill ? { customInfill } : {}) };
+}
+
+/** `key=value,key=value` (keys as flags, `infill-density`, or as settings, `infillDensity`) parsed by type. */
+export function parseSettingList(text: string, where: string): Record<string, unknown> {
+  const out: Record<string, unknown> = {};
+  for (const part of text.split(',')) {
+    if (part.trim() === '') continue;
+    const eq = part.indexOf('=');
+    if (eq <= 0) throw new StrataError('BAD_SETTING', `${where}: expected KEY=VALUE pairs separated by commas, got "${part.trim()}"`);
+    const raw = part.slice(0, eq).trim();
+    const key = FLAG_TO_KEY.get(raw) ?? checkKey(raw, 'setting');
+    out[key] = parseSettingText(key, part.slice(eq + 1));
+  }
+  return out;
 }

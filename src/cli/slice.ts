@@ -40,7 +40,7 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
   const quiet = args.flags.quiet === true;
   const slicer = await newSlicer(await optionsFrom(args, input, (w) => quiet || io.err(`strata: warning: ${w}\n`)));
   // let go once handed to the slicer, which keeps the files' bytes only until it has read them
-  let models: ModelInput[] | undefined = input.models(args.positional, slicer.config);
+  let models: ModelInput[] | undefined = input.models(args.positional, slicer.config, args.modelFlags);
   const first = args.positional[0];
   const given = typeof args.flags.output === 'string' ? args.flags.output : undefined;
   const outPath = given ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
@@ -72,7 +72,7 @@ export async function cmdPreview(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'preview needs a model file');
   const input = new InputReader();
   const slicer = await newSlicer(await optionsFrom(args, input, (w) => args.flags.quiet === true || io.err(`strata: warning: ${w}\n`)));
-  const models = input.models(args.positional, slicer.config);
+  const models = input.models(args.positional, slicer.config, args.modelFlags);
   const outPath = typeof args.flags.output === 'string' ? args.flags.output : '-';
   refuseInputAsOutput(outPath, input.read, false);
   const width = typeof args.flags.width === 'string' ? Number(args.flags.width) : 800;

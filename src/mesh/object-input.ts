@@ -11,7 +11,7 @@
  */
 import { StrataError } from '../errors.js';
 import { mergeObjects } from './place.js';
-import type { LayerRangeSettings, MeshObject, MeshVolume, VolumeKind } from './types.js';
+import type { LayerRangeSettings, MeshObject, MeshVolume, SettingsSource, VolumeKind } from './types.js';
 
 const KINDS: readonly (VolumeKind | 'part')[] = ['part', 'modifier', 'negative', 'support-blocker', 'support-enforcer'];
 
@@ -25,10 +25,17 @@ export function isObjectInput(v: unknown): boolean {
   return 'settings' in o || 'volumes' in o || 'layerRanges' in o;
 }
 
+const FORMATS: readonly SettingsSource['format'][] = ['strata', 'prusaslicer', 'orcaslicer', 'cura'];
+
+/** Settings as given: Strata keys, or a `SettingsSource` (`{ format, values }`, as a project file's objects carry them). */
 function settingsOf(v: unknown, what: string): MeshObject['settings'] {
   if (v === undefined) return undefined;
   if (typeof v !== 'object' || v === null || Array.isArray(v)) throw new StrataError('BAD_SETTING', `${what}: settings must be an object of settings`);
-  return { format: 'strata', values: { ...(v as Record<string, unknown>) } };
+  const o = v as Record<string, unknown>;
+  if (Object.keys(o).length === 2 && FORMATS.includes(o.format as never) && typeof o.values === 'object' && o.values !== null) {
+    return { format: o.format as SettingsSource['format'], values: { ...(o.values as Record<string, unknown>) } };
+  }
+  return { format: 'strata', values: { ...o } };
 }
 
 function list(v: unknown, what: string): unknown[] {

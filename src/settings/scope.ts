@@ -73,5 +73,5 @@ export function checkScope(key: SettingKey, use: ScopeUse, where: string): void 
   const scope = SETTING_SCOPE[key];
   if (ALLOWED[use].includes(scope)) return;
   const what = scope === 'print' ? 'is the same for the whole print' : 'may vary per object but not inside one';
-  throw new StrataError('BAD_SETTING', `${where}: ${key} ${what}, so it cannot be set for a ${use}; set it for the ${scope === 'print' ? 'print' : 'object'} instead`);
+  throw new StrataError('BAD_SETTING', `${where}: ${key} ${what}, so it cannot be set for ${use === 'object' ? 'an' : 'a'} ${use}; set it for the ${scope === 'print' ? 'print' : 'object'} instead`);
 }
