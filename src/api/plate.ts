@@ -1,36 +1,46 @@
 /**
  * From the prepared model's objects to the plate the pipeline slices: each object's, volume's and layer
- * range's settings read into Strata's keys (another slicer's project keys mapped by settings/import,
- * those we do not use named in one warning), then resolved with their scopes into deduplicated configs.
+ * range's settings read into Strata's keys (another slicer's project keys mapped by settings/import over
+ * the project's print settings; those we do not use, and those that cannot vary there in Strata, named in
+ * warnings), then resolved with their scopes into deduplicated configs. The caller's own settings (format
+ * 'strata') that cannot vary where they are given are refused instead, one clear error each.
  */
 import type { MeshObject, SettingsSource } from '../mesh/types.js';
 import { plateSetup, type PlacedObject, type PlateSetup } from '../pipeline/print-setup.js';
 import type { Config } from '../settings/resolve.js';
-import type { SliceOptions } from '../settings/schema.js';
+import type { SettingKey, SliceOptions } from '../settings/schema.js';
 import type { ScopedSettings } from '../settings/scoped.js';
-// TEMP until settings/import/object-settings.ts lands
-function settingsFromSource(src: SettingsSource): { settings: Record<string, unknown>; ignored: string[] } {
-  return { settings: { ...src.values }, ignored: [] };
-}
+import { settingsFromSource } from '../settings/import/object-settings.js';
+import { SETTING_SCOPE, type ScopeUse } from '../settings/scope.js';
 
 /** The plate of these objects over the print's options; `warnings` gets what was ignored or merged. */
-export function plateOf(objects: readonly MeshObject[], options: SliceOptions, cfg: Config, warnings: string[]): PlateSetup {
+export function plateOf(objects: readonly MeshObject[], options: SliceOptions, cfg: Config, warnings: string[], project?: SettingsSource): PlateSetup {
   const ignored = new Set<string>();
-  const read = (src: SettingsSource | undefined): ScopedSettings | undefined => {
+  const outOfScope = new Set<string>();
+  const read = (src: SettingsSource | undefined, use: ScopeUse): ScopedSettings | undefined => {
     if (!src) return undefined;
-    const { settings, ignored: skipped } = settingsFromSource(src);
-    for (const k of skipped) ignored.add(k);
+    const mapped = settingsFromSource(src, project && project.format === src.format ? project : undefined);
+    for (const k of mapped.ignored) ignored.add(k);
+    for (const r of mapped.rejected) warnings.push(`object settings: ${r.key} = ${r.value} not taken: ${r.reason}`);
+    const settings: Record<string, unknown> = {};
+    for (const [k, v] of Object.entries(mapped.settings)) {
+      const scope = SETTING_SCOPE[k as SettingKey];
+      // another slicer's project may vary what Strata keeps per print (or per object): left to the print
+      if (src.format !== 'strata' && (scope === 'print' || (scope === 'object' && use !== 'object'))) outOfScope.add(k);
+      else settings[k] = v;
+    }
     return Object.keys(settings).length ? settings : undefined;
   };
   const placed = objects.map((o): PlacedObject => {
     const p: PlacedObject = { name: o.name, mesh: o.mesh };
-    const settings = read(o.settings);
+    const settings = read(o.settings, 'object');
     if (settings) p.settings = settings;
-    if (o.volumes?.length) p.volumes = o.volumes.map((v) => ({ kind: v.kind, name: v.name, mesh: v.mesh, settings: read(v.settings) }));
-    if (o.layerRanges?.length) p.layerRanges = o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: read(r.settings) ?? {} }));
+    if (o.volumes?.length) p.volumes = o.volumes.map((v) => ({ kind: v.kind, name: v.name, mesh: v.mesh, settings: read(v.settings, 'modifier') }));
+    if (o.layerRanges?.length) p.layerRanges = o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: read(r.settings, 'layer range') ?? {} }));
     return p;
   });
   if (ignored.size) warnings.push(`object settings not used by Strata, ignored: ${[...ignored].sort().join(', ')}`);
+  if (outOfScope.size) warnings.push(`object settings that Strata keeps the same for the whole print (or object), ignored there: ${[...outOfScope].sort().join(', ')}`);
   const plate = plateSetup(placed, options, cfg);
   warnings.push(...plate.warnings);
   return plate;

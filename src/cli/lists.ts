@@ -1,6 +1,7 @@
 /** `strata infillers`, `strata presets` and `strata settings`: what is available, as text or JSON. */
 import { listPresets } from '../settings/presets/index.js';
 import { SCHEMA, SETTING_KEYS, type SettingDef } from '../settings/schema.js';
+import { SETTING_SCOPE } from '../settings/scope.js';
 import { listInfillers } from '../shader/node-folder.js';
 import { kebab, type ParsedArgs } from './args.js';
 import { infillerDirs } from './inputs.js';
@@ -39,7 +40,7 @@ export function cmdPresets(args: ParsedArgs, write: Write): void {
 
 export function cmdSettings(args: ParsedArgs, write: Write): void {
   if (args.flags.json === true) {
-    write(JSON.stringify(Object.fromEntries(SETTING_KEYS.map((k) => [k, { flag: `--${kebab(k)}`, ...SCHEMA[k] }])), null, 2) + '\n');
+    write(JSON.stringify(Object.fromEntries(SETTING_KEYS.map((k) => [k, { flag: `--${kebab(k)}`, scope: SETTING_SCOPE[k], ...SCHEMA[k] }])), null, 2) + '\n');
     return;
   }
   for (const key of SETTING_KEYS) {
@@ -48,6 +49,6 @@ export function cmdSettings(args: ParsedArgs, write: Write): void {
       d.type === 'number' || d.type === 'integer' ? ` [${d.min}–${d.max}]` : d.type === 'enum' ? ` {${d.values.join('|')}}` : d.type === 'boolean' ? ' (--no-' + kebab(key) + ')' : '';
     const def = d.type === 'string' ? '(template)' : JSON.stringify(d.default);
     const only = d.onlyWith ? `  (only with ${Object.entries(d.onlyWith).map(([k, v]) => `${kebab(k)}=${String(v)}`).join(', ')})` : '';
-    write(`--${kebab(key)} ${d.unit ? `(${d.unit}) ` : ''}default ${def}${range}${only}\n    ${d.description}\n`);
+    write(`--${kebab(key)} ${d.unit ? `(${d.unit}) ` : ''}default ${def}${range}${only}  [${SETTING_SCOPE[key]}]\n    ${d.description}\n`);
   }
 }
