@@ -1,6 +1,7 @@
 /**
- * One 3MF model part (XML): its unit, its objects (meshes and components) and its build items.
- * Coordinates and transform translations are converted to millimetres here.
+ * One 3MF model part (XML): its unit, its objects (meshes and components) and its build items, and the
+ * metadata a slicer may keep there (the model's `<metadata>`, an object's or item's `<metadatagroup>`,
+ * Cura's older `<settings>`). Coordinates and transform translations are converted to millimetres here.
  */
 import { StrataError } from '../errors.js';
 import { GrowableF64, GrowableU32 } from './growable.js';
@@ -28,6 +29,8 @@ export interface ObjectRef {
   path: string | null;
   /** Object space → parent (or build) space, translation in mm. */
   transform: Affine | null;
+  /** A build item's `<metadatagroup>` entries by name, when it has any. */
+  metadata?: Map<string, string>;
 }
 
 export interface ModelObject {
@@ -37,12 +40,18 @@ export interface ModelObject {
   vertices: Float64Array | null;
   triangles: Uint32Array | null;
   components: ObjectRef[];
+  /** `<metadatagroup>` (and Cura's older `<settings>`) entries by name, or null when there are none. */
+  metadata: Map<string, string> | null;
 }
 
 export interface ModelPart {
   unitScale: number;
   objects: Map<number, ModelObject>;
   items: ObjectRef[];
+  /** The model's own `<metadata name="…">` entries (Application, Title, a slicer's version). */
+  metadata: Map<string, string>;
+  /** Namespace prefixes declared on `<model>`, prefix → URI. */
+  namespaces: Map<string, string>;
 }
 
 // Element contexts: what the parent of the element being read is.
@@ -56,6 +65,11 @@ const C_VERTICES = 6;
 const C_TRIANGLES = 7;
 const C_COMPONENTS = 8;
 const C_BUILD = 9;
+const C_ITEM = 10;
+/** A `<metadatagroup>` or `<settings>` of an object or item: its children are named values. */
+const C_GROUP = 11;
+/** A `<metadata>` or `<setting>` whose text is its value. */
+const C_VALUE = 12;
 
 const MAX_DEPTH = 64;
 export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
@@ -67,6 +81,11 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
   let sawModel = false;
   const objects = new Map<number, ModelObject>();
   const items: ObjectRef[] = [];
+  const metadata = new Map<string, string>();
+  const namespaces = new Map<string, string>();
+  // the named value being read: where its text starts and which map it goes to
+  const value: { name: string; start: number; target: Map<string, string> | null } = { name: '', start: 0, target: null };
+  let groupTarget: Map<string, string> | null = null;
 
   let obj: ModelObject | null = null;
   let verts: GrowableF64 | null = null;
@@ -84,6 +103,9 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
         tris = null;
       } else if (closed === C_OBJECT) {
         obj = null;
+      } else if (closed === C_VALUE && value.target !== null) {
+        value.target.set(value.name, x.textContent(value.start));
+        value.target = null;
       }
       continue;
     }
@@ -134,8 +156,10 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
             const s = UNIT_MM[u];
             if (s === undefined) x.fail(`unknown unit "${printable(u)}" (expected micron, millimeter, centimeter, inch, foot or meter)`, x.nameStart);
             unitScale = s;
-          } else if (x.attrNameEnd - x.attrNameStart > 6 && x.attrName().startsWith('xmlns:') && x.value() === CORE_NS) {
-            corePrefixes.push(x.attrName().slice(6));
+          } else if (x.attrNameEnd - x.attrNameStart > 6 && x.attrName().startsWith('xmlns:')) {
+            const uri = x.value();
+            namespaces.set(x.attrName().slice(6), uri);
+            if (uri === CORE_NS) corePrefixes.push(x.attrName().slice(6));
           }
         }
         break;
@@ -143,6 +167,7 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
         if (isCore()) {
           if (x.is('resources')) here = C_RESOURCES;
           else if (x.is('build')) here = C_BUILD;
+          else if (x.is('metadata')) here = startValue(x, 'name', metadata);
         }
         break;
       case C_RESOURCES:
@@ -156,7 +181,7 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
           }
           if (id < 0) x.fail('an <object> needs a numeric id', x.nameStart);
           if (objects.has(id)) x.fail(`two objects have the id ${id}`, x.nameStart);
-          obj = { id, name, vertices: null, triangles: null, components: [] };
+          obj = { id, name, vertices: null, triangles: null, components: [], metadata: null };
           objects.set(id, obj);
         }
         break;
@@ -169,7 +194,22 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
             maxIndex = -1;
           } else if (x.is('components')) {
             here = C_COMPONENTS;
+          } else if ((x.is('metadatagroup') || x.is('settings')) && obj !== null) {
+            here = C_GROUP;
+            groupTarget = obj.metadata ??= new Map();
           }
+        }
+        break;
+      case C_ITEM:
+        if (isCore() && x.is('metadatagroup') && items.length > 0) {
+          here = C_GROUP;
+          groupTarget = items[items.length - 1].metadata ??= new Map();
+        }
+        break;
+      case C_GROUP:
+        if (isCore() && groupTarget !== null) {
+          if (x.is('metadata')) here = startValue(x, 'name', groupTarget);
+          else if (x.is('setting')) here = startValue(x, 'key', groupTarget);
         }
         break;
       case C_MESH:
@@ -182,13 +222,31 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
         if (x.is('component') && isCore() && obj !== null) obj.components.push(readRef(x, unitScale, 'component'));
         break;
       case C_BUILD:
-        if (x.is('item') && isCore()) items.push(readRef(x, unitScale, 'build item'));
+        if (x.is('item') && isCore()) {
+          items.push(readRef(x, unitScale, 'build item'));
+          here = C_ITEM;
+        }
         break;
     }
     if (!x.selfClosing) ctx[x.depth] = here;
   }
   if (!sawModel) throw new StrataError('BAD_FILE', `3MF model part ${partName} has no <model> element`);
-  return { unitScale, objects, items };
+  return { unitScale, objects, items, metadata, namespaces };
+
+  /** At a named value's start tag: remember where its text goes (C_VALUE), or store an empty one. */
+  function startValue(x: XmlScanner, nameAttr: string, target: Map<string, string>): number {
+    let key = '';
+    while (x.nextAttr()) if (x.attrIs(nameAttr)) key = x.value();
+    if (key === '') return C_OTHER;
+    if (x.selfClosing) {
+      target.set(key, '');
+      return C_OTHER;
+    }
+    value.name = key;
+    value.start = x.contentStart();
+    value.target = target;
+    return C_VALUE;
+  }
 }
 
 function finishMesh(x: XmlScanner, obj: ModelObject, verts: GrowableF64, tris: GrowableU32, maxIndex: number): void {

@@ -1,10 +1,11 @@
 /**
  * The 3MF container: a zip (OPC package) whose `_rels/.rels` points at the root model part. Parts are
- * inflated only when read, so only `_rels/.rels` and the model parts the build refers to are ever
- * unpacked (thumbnails, textures, slicer configs and unreferenced models stay packed), within the
- * unpack budget of zip.ts.
+ * inflated only when read, so only `_rels/.rels`, the model parts the build refers to and the slicer
+ * configs a project reader asks for are ever unpacked (thumbnails, textures and unreferenced models stay
+ * packed), within the unpack budget of zip.ts.
  */
 import { StrataError } from '../errors.js';
+import { printable } from './printable.js';
 import { XML_EOF, XML_START, XmlScanner } from './xml-scanner.js';
 import { ZipArchive, type ZipBudget } from './zip.js';
 
@@ -18,6 +19,13 @@ export interface ThreeMfPackage {
   root: string;
   /** A model part's bytes by normalised name (inflated on first use), or undefined when absent. */
   read(key: string): Uint8Array | undefined;
+  /** Normalised names of every part in the archive. */
+  keys(): string[];
+  /**
+   * Any other part's bytes (a slicer's config under Metadata/), read through the same unpack budget;
+   * undefined when absent. A part that declares more than `maxBytes` is refused (LIMIT_EXCEEDED).
+   */
+  readFile(key: string, maxBytes: number): Uint8Array | undefined;
 }
 
 /** Normalise an OPC part name for lookup: drop the leading "/", undo %-escapes, lower-case. */
@@ -58,8 +66,22 @@ export function openPackage(bytes: Uint8Array, budget: ZipBudget = { maxBytes: D
     }
     root = models[0];
   }
+  const readFile = (key: string, maxBytes: number): Uint8Array | undefined => {
+    const entry = zip.entries.get(key);
+    if (entry === undefined) return undefined;
+    if (entry.size > maxBytes) {
+      const mib = (n: number) => `${Math.ceil((n / 1048576) * 10) / 10} MiB`;
+      throw new StrataError('LIMIT_EXCEEDED', `3MF part ${printable(entry.name)} unpacks to ${mib(entry.size)}, more than the ${mib(maxBytes)} a slicer config may take`);
+    }
+    return read(key);
+  };
   // only model parts are read as models
-  return { root, read: (key) => (key.endsWith('.model') || key === root ? read(key) : undefined) };
+  return {
+    root,
+    read: (key) => (key.endsWith('.model') || key === root ? read(key) : undefined),
+    keys: () => [...zip.entries.keys()],
+    readFile,
+  };
 }
 
 /** The Target of the first 3D-model relationship in `_rels/.rels`. */
