@@ -9,8 +9,8 @@ import { parseObj } from './obj.js';
 import { parseStl } from './stl.js';
 import type { ModelInput } from './place.js';
 import { isThreeLike, fromThree, threeLooksYUp } from './three.js';
-import { parse3mf } from './threemf.js';
-import type { MeshObject, RawMeshArrays } from './types.js';
+import { parse3mfProject } from './threemf-project.js';
+import type { MeshObject, RawMeshArrays, SettingsSource } from './types.js';
 
 export interface LoadOptions {
   /** Most bytes a 3MF's referenced parts may unpack to together (default 512 MiB). */
@@ -22,6 +22,15 @@ export interface LoadOptions {
 /** Models and the notes made while reading them. */
 export interface LoadedModels {
   models: ModelInput[];
+  warnings: string[];
+  /** The print settings of the first project file (3MF) among the inputs that holds any. */
+  projectSettings?: SettingsSource;
+}
+
+/** One model file read: its objects, a project's print settings, and the notes made while reading it. */
+export interface LoadedFile {
+  objects: MeshObject[];
+  projectSettings?: SettingsSource;
   warnings: string[];
 }
 
@@ -53,14 +62,22 @@ export function detectFormat(bytes: Uint8Array, fileName?: string): ModelFormat 
 
 /** Parse model file bytes; `fileName` helps detection and names the objects. */
 export function loadModelBytes(bytes: Uint8Array, fileName?: string, opts: LoadOptions = {}): MeshObject[] {
+  return loadModelFile(bytes, fileName, opts).objects;
+}
+
+/**
+ * Parse model file bytes, keeping what a project file says besides its objects (their volumes and
+ * settings are on the objects): the print's settings and the reader's warnings.
+ */
+export function loadModelFile(bytes: Uint8Array, fileName?: string, opts: LoadOptions = {}): LoadedFile {
   const name = fileName ? baseName(fileName) : 'model';
   switch (detectFormat(bytes, fileName)) {
     case '3mf':
-      return parse3mf(bytes, name, { maxInflatedBytes: opts.maxInflatedBytes });
+      return parse3mfProject(bytes, name, { maxInflatedBytes: opts.maxInflatedBytes });
     case 'obj':
-      return parseObj(bytes, name);
+      return { objects: parseObj(bytes, name), warnings: [] };
     case 'stl':
-      return parseStl(bytes, name);
+      return { objects: parseStl(bytes, name), warnings: [] };
   }
 }
 
@@ -70,7 +87,13 @@ export function loadModelBytes(bytes: Uint8Array, fileName?: string, opts: LoadO
  * or an array of these.
  */
 export function toMeshObjects(input: unknown, opts: LoadOptions = {}): MeshObject[] {
-  return convert(input, 0, opts, []);
+  return convert(input, 0, opts, { warnings: [] });
+}
+
+/** What converting inputs collects besides objects. */
+interface Notes {
+  warnings: string[];
+  projectSettings?: SettingsSource;
 }
 
 /**
@@ -80,26 +103,36 @@ export function toMeshObjects(input: unknown, opts: LoadOptions = {}): MeshObjec
  * relative to each other; models are arranged on the bed.
  */
 export function toModels(input: unknown, opts: LoadOptions = {}): LoadedModels {
-  const warnings: string[] = [];
+  const notes: Notes = { warnings: [] };
   const list = Array.isArray(input) && !input.every((v) => typeof v === 'number') ? input : [input];
   const models = list.map((item, i): ModelInput => {
-    if (isNamedModel(item)) return { name: item.name, objects: convert(item.objects, 1, opts, warnings) };
-    const objects = convert(item, 1, opts, warnings);
+    if (isNamedModel(item)) return { name: item.name, objects: convert(item.objects, 1, opts, notes) };
+    const objects = convert(item, 1, opts, notes);
     const name = list.length === 1 ? 'the model' : objects.length === 1 ? objects[0].name : `model ${i + 1}`;
     return { name, objects };
   });
-  return { models, warnings };
+  const out: LoadedModels = { models, warnings: notes.warnings };
+  if (notes.projectSettings !== undefined) out.projectSettings = notes.projectSettings;
+  return out;
 }
 
 function isNamedModel(v: unknown): v is { name: string; objects: unknown[] } {
   return typeof v === 'object' && v !== null && typeof (v as { name?: unknown }).name === 'string' && Array.isArray((v as { objects?: unknown }).objects);
 }
 
-function convert(input: unknown, depth: number, opts: LoadOptions, warnings: string[]): MeshObject[] {
+/** File bytes: their objects, with the file's warnings and (the first) project settings noted. */
+function fromBytes(bytes: Uint8Array, opts: LoadOptions, notes: Notes): MeshObject[] {
+  const file = loadModelFile(bytes, undefined, opts);
+  notes.warnings.push(...file.warnings);
+  if (notes.projectSettings === undefined && file.projectSettings !== undefined) notes.projectSettings = file.projectSettings;
+  return file.objects;
+}
+
+function convert(input: unknown, depth: number, opts: LoadOptions, notes: Notes): MeshObject[] {
   if (depth > MAX_INPUT_DEPTH) throw new StrataError('UNSUPPORTED_FORMAT', 'the input is nested too deeply');
-  if (input instanceof Uint8Array) return loadModelBytes(input, undefined, opts);
-  if (input instanceof ArrayBuffer) return loadModelBytes(new Uint8Array(input), undefined, opts);
-  if (input instanceof DataView) return loadModelBytes(new Uint8Array(input.buffer, input.byteOffset, input.byteLength), undefined, opts);
+  if (input instanceof Uint8Array) return fromBytes(input, opts, notes);
+  if (input instanceof ArrayBuffer) return fromBytes(new Uint8Array(input), opts, notes);
+  if (input instanceof DataView) return fromBytes(new Uint8Array(input.buffer, input.byteOffset, input.byteLength), opts, notes);
   if (typeof input === 'string') {
     if (/^\s*solid(\s|$)/i.test(input.slice(0, 256))) return parseStl(new TextEncoder().encode(input));
     if (/^\s*(v|vn|vt|f|o|g|mtllib|usemtl|#)/m.test(input.slice(0, 4096))) return parseObj(input);
@@ -109,21 +142,21 @@ function convert(input: unknown, depth: number, opts: LoadOptions, warnings: str
     if (input.length > 0 && input.every((v) => typeof v === 'number')) {
       throw new StrataError('UNSUPPORTED_FORMAT', 'got an array of numbers: pass { positions, indices } for raw arrays');
     }
-    return input.flatMap((item) => convert(item, depth + 1, opts, warnings));
+    return input.flatMap((item) => convert(item, depth + 1, opts, notes));
   }
   if (typeof input === 'object' && input !== null) {
     const o = input as Record<string, unknown>;
     if (isThreeLike(o)) {
       const objects = fromThree(o);
       if (opts.upAxis !== 'y' && threeLooksYUp(o)) {
-        warnings.push(
+        notes.warnings.push(
           "the three.js scene's up axis is +Y (three.js's default), but it is sliced with Z up, so a Y-up scene lies on its side: " +
             "pass upAxis: 'y' to stand it up, or set the scene's up to (0, 0, 1) if it is modelled Z-up",
         );
       }
       return objects;
     }
-    if (isObjectInput(o)) return [objectFromInput(o as Record<string, unknown>, (mesh) => convert(mesh, depth + 1, opts, warnings), 0)];
+    if (isObjectInput(o)) return [objectFromInput(o as Record<string, unknown>, (mesh) => convert(mesh, depth + 1, opts, notes), 0)];
     if ('positions' in o) return [fromArrays(o as unknown as RawMeshArrays, typeof o.name === 'string' ? o.name : 'mesh')];
     if (typeof o.mesh === 'object' && o.mesh !== null && 'positions' in o.mesh) {
       const name = typeof o.name === 'string' && o.name !== '' ? o.name : 'mesh';
