@@ -161,7 +161,10 @@ export function curaProjectSettings(pkg: ThreeMfPackage, readText: (key: string,
   return any ? { format: 'cura', values } : undefined;
 }
 
-/** Cura's container files: `[section]` headers, `key = value` lines, indented lines continuing a value. */
+/**
+ * Cura's container files: `[section]` headers, `key = value` lines, indented lines continuing a value (a
+ * start G-code's lines, which settings/import/ini.ts would take for keys of their own).
+ */
 function parseCuraIni(text: string): Map<string, Map<string, string>> {
   const out = new Map<string, Map<string, string>>();
   let section: Map<string, string> | null = null;

@@ -5,7 +5,7 @@
  * from PrusaSlicer's model config; this file then replaces names, kinds and settings. A file that does not
  * match the geometry (edited by hand, or by another program) is reported and PrusaSlicer's data kept.
  */
-import type { ObjectSpec } from './threemf-assemble.js';
+import type { ObjectSpec, PieceSpec } from './threemf-assemble.js';
 import type { LayerRangeSettings, SettingsSource, VolumeKind } from './types.js';
 
 export const STRATA_PROJECT_VERSION = 1;
@@ -77,8 +77,9 @@ export function readStrataProject(text: string): StrataProject | string {
   return { version: STRATA_PROJECT_VERSION, printSettings: printSettings as Record<string, unknown>, objects };
 }
 
+/** Strata settings of their own (instances of one object must not share them), or undefined when empty. */
 const strata = (values: Record<string, unknown>): SettingsSource | undefined =>
-  Object.keys(values).length > 0 ? { format: 'strata', values } : undefined;
+  Object.keys(values).length > 0 ? { format: 'strata', values: { ...values } } : undefined;
 
 /** Replace what PrusaSlicer's data says of an object (`spec`) with Strata's copy, found by the object's id. */
 export function overlayStrata(spec: ObjectSpec, objects: ReadonlyMap<number, StrataProjectObject>, warnings: string[]): ObjectSpec {
@@ -90,18 +91,19 @@ export function overlayStrata(spec: ObjectSpec, objects: ReadonlyMap<number, Str
     return spec;
   }
   let k = 0;
-  const pieces = spec.pieces.map((p) => {
-    if (p.kind === 'part') return { ...p, settings: undefined };
+  const pieces = spec.pieces.map((p): PieceSpec => {
+    const out: PieceSpec = { kind: p.kind, name: p.name, runs: p.runs };
+    if (p.kind === 'part') return out;
     const v = o.volumes[k++];
-    const out = { ...p, name: v.name, settings: strata(v.settings) };
-    if (out.settings === undefined) delete out.settings;
+    out.name = v.name;
+    const settings = strata(v.settings);
+    if (settings !== undefined) out.settings = settings;
     return out;
   });
-  for (const p of pieces) if (p.settings === undefined) delete p.settings;
   const out: ObjectSpec = { name: o.name, pieces };
   const settings = strata(o.settings);
   if (settings !== undefined) out.settings = settings;
-  const ranges: LayerRangeSettings[] = o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { format: 'strata', values: r.settings } }));
+  const ranges: LayerRangeSettings[] = o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { format: 'strata', values: { ...r.settings } } }));
   if (ranges.length > 0) out.layerRanges = ranges;
   return out;
 }
