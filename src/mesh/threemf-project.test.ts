@@ -395,3 +395,39 @@ test('writeProject3mf: no objects, or an object without triangles, is an error; 
   assert.equal(o.volumes, undefined);
   assert.equal(triangles(o.mesh), 12);
 });
+
+test('corrupted slicer configs either read or throw a one-line StrataError', () => {
+  let seed = 11;
+  const rnd = (n: number): number => {
+    seed = (Math.imul(seed, 1664525) + 1013904223) >>> 0;
+    return seed % n;
+  };
+  const written = unzipSync(writeProject3mf(projectObjects()));
+  const texts: Record<string, string> = {
+    'Metadata/Slic3r_PE_model.config': PRUSA_CONFIG,
+    'Metadata/Prusa_Slicer_layer_config_ranges.xml': PRUSA_RANGES,
+    'Metadata/Strata_project.json': new TextDecoder().decode(written['Metadata/Strata_project.json']),
+    'Metadata/model_settings.config': '<config><object id="1"><metadata key="name" value="o"/><part id="2" subtype="modifier_part"/><part id="1" firstid="0" lastid="11"/></object></config>',
+    'Metadata/project_settings.config': '{"sparse_infill_density": "15%", "wall_loops": ["2"]}',
+    'Cura/a.global.cfg': '[containers]\n0 = user\n',
+    'Cura/user.inst.cfg': '[values]\ninfill_sparse_density = 20\n',
+  };
+  const modelFor = (file: string) => (file === 'Metadata/Strata_project.json' ? new TextDecoder().decode(written['3D/3dmodel.model']) : PRUSA_MODEL);
+  for (const [file, text] of Object.entries(texts)) {
+    const others: Record<string, string> =
+      file === 'Metadata/Strata_project.json' ? { 'Metadata/Slic3r_PE_model.config': new TextDecoder().decode(written['Metadata/Slic3r_PE_model.config']) } : {};
+    for (let r = 0; r < 120; r++) {
+      const chars = [...text];
+      const cut = r % 3 === 0 ? rnd(chars.length) : chars.length;
+      for (let k = 0; k < 1 + rnd(6); k++) chars[rnd(cut)] = '<>"=/ 0-9ax%[]{}\n'[rnd(18)];
+      const bytes = zip({ '3D/3dmodel.model': modelFor(file), ...others, [file]: chars.slice(0, cut).join('') });
+      try {
+        const p = parse3mfProject(bytes);
+        assert.ok(p.objects.length > 0);
+      } catch (e) {
+        if (!(e instanceof StrataError)) assert.fail(`${file}: ${String(e)}`);
+        assert.ok(!e.message.includes('\n'), e.message);
+      }
+    }
+  }
+});
