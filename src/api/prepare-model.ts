@@ -7,7 +7,8 @@ import { StrataError } from '../errors.js';
 import { mergeObjects, placeModels, prepareMesh, toModels } from '../mesh/index.js';
 import type { ModelInput } from '../mesh/place.js';
 import { nothingToPrint } from '../mesh/solid.js';
-import type { Mesh, MeshObject, MeshReport } from '../mesh/types.js';
+import type { Mesh, MeshObject, MeshReport, SettingsSource } from '../mesh/types.js';
+import type { SliceOptions } from '../settings/schema.js';
 import type { Config } from '../settings/resolve.js';
 
 export interface PreparedModel {
@@ -23,7 +24,14 @@ export interface PreparedModel {
   /** Translation applied to the first model after its rotation and scaling, mm. */
   offset: [number, number, number];
   warnings: string[];
+  /** The config the model was placed with: the caller's, or with a project's print settings under it. */
+  config: Config;
+  /** A project file's print settings as it gave them, and the options they made with the caller's. */
+  project?: { settings: SettingsSource; options: SliceOptions };
 }
+
+/** A config for a project's print settings (under the caller's options), with notes on what was left out. */
+export type ProjectConfig = (settings: SettingsSource) => { config: Config; options: SliceOptions; warnings: string[] };
 
 export const MiB = 1024 * 1024;
 
@@ -37,8 +45,11 @@ export function prepareModel(input: unknown, cfg: Config): PreparedModel {
 }
 
 /** `prepareModel` as steps: yields after reading and after each object's preparation, so a caller can pause. */
-export function* prepareModelSteps(input: unknown, cfg: Config): Generator<void, PreparedModel> {
-  const loaded = toModels(input, { maxInflatedBytes: cfg.inflateBudget * MiB, upAxis: cfg.upAxis });
+export function* prepareModelSteps(input: unknown, given: Config, reconfigure?: ProjectConfig): Generator<void, PreparedModel> {
+  const loaded = toModels(input, { maxInflatedBytes: given.inflateBudget * MiB, upAxis: given.upAxis });
+  // a project's print settings go under the caller's own before the models are placed
+  const project = loaded.projectSettings && reconfigure ? reconfigure(loaded.projectSettings) : null;
+  const cfg = project?.config ?? given;
   yield;
   const models = loaded.models.filter((m) => m.objects.length > 0);
   if (models.length === 0) throw new StrataError('EMPTY_MODEL', 'the input holds no mesh');
@@ -82,7 +93,7 @@ export function* prepareModelSteps(input: unknown, cfg: Config): Generator<void,
         : `${prepared.length} models kept at their own coordinates`,
     );
   }
-  warnings.push(...loaded.warnings, ...placed.warnings);
+  warnings.push(...loaded.warnings, ...(project?.warnings ?? []), ...placed.warnings);
   const objects = uniqueNames(placed.objects);
   return {
     mesh: objects.length === 1 ? objects[0].mesh : mergeObjects(objects),
@@ -90,6 +101,8 @@ export function* prepareModelSteps(input: unknown, cfg: Config): Generator<void,
     report: combineReports(reports),
     offset: placed.offsets[0],
     warnings: [...new Set(warnings)],
+    config: cfg,
+    ...(project ? { project: { settings: loaded.projectSettings!, options: project.options } } : {}),
   };
 }
 

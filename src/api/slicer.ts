@@ -7,7 +7,11 @@ import { positionBounds } from '../mesh/index.js';
 import { checkTemplatesForFlavor } from '../gcode/flavor-templates.js';
 import { imageDecodeBytes } from '../shader/image.js';
 import { StrataError } from '../errors.js';
-import { MiB, prepareModelSteps, type PreparedModel } from './prepare-model.js';
+import { MiB, prepareModel, prepareModelSteps, type PreparedModel } from './prepare-model.js';
+import type { SettingsSource } from '../mesh/types.js';
+import { writeProject3mf } from '../mesh/threemf-write.js';
+import { settingsFromSource } from '../settings/import/object-settings.js';
+import { toSlic3rKeys } from '../settings/import/to-slic3r.js';
 import { Pacer } from '../pipeline/pacer.js';
 import { runPipeline, type Progress, type ThinLoss } from '../pipeline/run.js';
 import { plateOf } from './plate.js';
@@ -63,6 +67,9 @@ async function coreCount(): Promise<number> {
   }
   return nav?.hardwareConcurrency ?? 1;
 }
+
+/** Settings of how a slice runs, which a project file does not choose for the machine it is opened on. */
+const RUNTIME_KEYS: ReadonlySet<string> = new Set(['threads', 'inflateBudget']);
 
 /**
  * Automatic thread count: one per core with more than two cores, else one. With a worker, the calling
@@ -188,6 +195,43 @@ export class Slicer {
     return this;
   }
 
+  /**
+   * The options a project's print settings make with this slicer's: the project's under the caller's
+   * own, and the project's objects kept where it put them (unless `center` was set).
+   */
+  #projectConfig(project: SettingsSource): { config: Config; options: SliceOptions; warnings: string[] } {
+    const mapped = settingsFromSource(project);
+    const warnings: string[] = [];
+    const own: Record<string, unknown> = Object.fromEntries(Object.entries(mapped.settings).filter(([k]) => !RUNTIME_KEYS.has(k)));
+    // Strata's own projects name their presets too
+    for (const k of ['printer', 'filament'] as const) if (project.format === 'strata' && typeof project.values[k] === 'string') own[k] = project.values[k];
+    const unknown = mapped.ignored.filter((k) => !(project.format === 'strata' && (k === 'printer' || k === 'filament')));
+    if (unknown.length) warnings.push(`${unknown.length} of the project's print settings have no Strata equivalent and are ignored${unknown.length <= 8 ? ` (${unknown.join(', ')})` : ''}`);
+    for (const r of mapped.rejected) warnings.push(`the project's ${r.key} = ${r.value} is not taken: ${r.reason}`);
+    const options: SliceOptions = { ...own, ...('center' in this.#options ? {} : { center: false }), ...this.#options };
+    try {
+      return { config: resolveConfig(options), options, warnings };
+    } catch (e) {
+      if (e instanceof StrataError) throw new StrataError(e.code, `the project's print settings: ${e.message}`);
+      throw e;
+    }
+  }
+
+  /**
+   * The plate as a project 3MF (PrusaSlicer's layout, which PrusaSlicer opens, with Strata's own copy of every
+   * setting): the objects placed as a slice would place them, their volumes, settings and layer ranges, and
+   * this slicer's options as the print settings. `input` as for `slice` (default: the objects added).
+   */
+  async saveProject(input?: unknown): Promise<Uint8Array> {
+    const source = input === undefined && this.#objects.length ? this.#objects : input;
+    const model = prepareModel(source, this.#config);
+    // every setting as resolved (presets included), so that the project slices the same anywhere
+    const cfg = this.#config;
+    const print: Record<string, unknown> = { printer: cfg.printerId, filament: cfg.filamentId };
+    for (const k of SETTING_KEYS) if (!RUNTIME_KEYS.has(k)) print[k] = cfg[k];
+    return writeProject3mf(model.objects, { printSettings: print, slic3rPrintSettings: toSlic3rKeys(print, this.#config.layerHeight) });
+  }
+
   /** Take every object added with `addObject` off the plate. */
   clearObjects(): this {
     this.#objects = [];
@@ -232,7 +276,7 @@ export class Slicer {
     let threads: number;
     try {
       // paced like the slice itself, so an abort acts while a big model is still being read
-      model = await new Pacer(opts.signal).run(prepareModelSteps(given.input, cfg));
+      model = await new Pacer(opts.signal).run(prepareModelSteps(given.input, cfg, (project) => this.#projectConfig(project)));
       // the meshes are made: the caller's bytes need not stay alive here while the slice runs
       given.input = undefined;
       const b = positionBounds(model.mesh.positions);
@@ -240,7 +284,7 @@ export class Slicer {
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
       threads = cfg.threads > 0 ? cfg.threads : small ? 1 : auto;
       const warnings = [...model.warnings];
-      const plate = plateOf(model.objects, this.#options, cfg, warnings);
+      const plate = plateOf(model.objects, model.project?.options ?? this.#options, model.config, warnings, model.project?.settings);
       model = { ...model, warnings };
       run = await runPipeline(plate, {
         threads,

@@ -6,7 +6,7 @@ import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
 import { StrataError } from '../errors.js';
 import { PATTERN_IDS } from '../infill/types.js';
-import { loadModelBytes, mergeObjects } from '../mesh/index.js';
+import { loadModelFile, mergeObjects, type LoadedFile } from '../mesh/index.js';
 import type { MeshObject, MeshVolume } from '../mesh/types.js';
 import type { ModelInput } from '../mesh/place.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
@@ -39,9 +39,13 @@ export class InputReader {
     return new TextDecoder().decode(this.bytes(path, what));
   }
 
-  /** The objects of one file, within the config's unpack budget. */
+  /** One file's objects (and a project's print settings), within the config's unpack budget. */
+  #file(path: string, what: string, cfg: Config): LoadedFile {
+    return loadModelFile(this.bytes(path, what), path === '-' ? undefined : basename(path), { maxInflatedBytes: cfg.inflateBudget * MiB });
+  }
+
   #objects(path: string, what: string, cfg: Config): MeshObject[] {
-    return loadModelBytes(this.bytes(path, what), path === '-' ? undefined : basename(path), { maxInflatedBytes: cfg.inflateBudget * MiB });
+    return this.#file(path, what, cfg).objects;
   }
 
   /**
@@ -54,9 +58,12 @@ export class InputReader {
     if (early) throw new StrataError('BAD_SETTING', `--${early.flag} belongs to a model: give it after the model file it applies to`);
     return paths.map((p, k) => {
       const name = p === '-' ? 'standard input' : basename(p);
-      const objects = this.#objects(p, 'model', cfg);
+      const file = this.#file(p, 'model', cfg);
       const flags = modelFlags.filter((f) => f.model === k);
-      return { name, objects: flags.length ? objects.map((o) => this.#withFlags(o, flags, cfg)) : objects };
+      const model: ModelInput = { name, objects: flags.length ? file.objects.map((o) => this.#withFlags(o, flags, cfg)) : file.objects };
+      if (file.projectSettings) model.projectSettings = file.projectSettings;
+      if (file.warnings.length) model.warnings = file.warnings;
+      return model;
     });
   }
 

@@ -20,7 +20,8 @@ export class PipeClosed extends Error {
 export interface Output {
   /** As the user named it ('-' for standard output). */
   readonly path: string;
-  write(chunk: string): void;
+  /** Text (UTF-8) or bytes. */
+  write(chunk: string | Uint8Array): void;
   /** Put the written data in place (rename the temporary file). */
   commit(): void;
   /** Throw away what was written; the target stays as it was. Safe to call more than once. */
@@ -150,10 +151,10 @@ class AtomicFile implements Output {
     pending.add(this);
   }
 
-  write(chunk: string): void {
+  write(chunk: string | Uint8Array): void {
     if (this.#fd === null) throw new StrataError('WRITE_FAILED', `cannot write ${this.path}: the output is closed`);
     try {
-      writeAll(this.#fd, Buffer.from(chunk, 'utf8'));
+      writeAll(this.#fd, typeof chunk === 'string' ? Buffer.from(chunk, 'utf8') : chunk);
     } catch (e) {
       this.abort();
       throw writeFailed(this.path, e);
@@ -204,10 +205,10 @@ class DirectFile implements Output {
     this.path = path;
     this.#fd = fd;
   }
-  write(chunk: string): void {
+  write(chunk: string | Uint8Array): void {
     if (this.#fd === null) return;
     try {
-      writeAll(this.#fd, Buffer.from(chunk, 'utf8'));
+      writeAll(this.#fd, typeof chunk === 'string' ? Buffer.from(chunk, 'utf8') : chunk);
     } catch (e) {
       throw writeFailed(this.path === '-' ? 'standard output' : this.path, e);
     }

@@ -45,6 +45,14 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
   const given = typeof args.flags.output === 'string' ? args.flags.output : undefined;
   const outPath = given ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
   refuseInputAsOutput(outPath, input.read, given === undefined);
+  const project = args.flags['save-project'];
+  if (typeof project === 'string') {
+    refuseInputAsOutput(project, input.read, false);
+    if (project === outPath) throw new StrataError('BAD_SETTING', `--save-project ${project} is the G-code output too`);
+    const bytes = await slicer.saveProject(models);
+    await writing(openOutput(project), (out) => out.write(bytes));
+    if (!quiet) io.err(`${project}: project saved\n`);
+  }
   const bar = !quiet && io.errIsTTY && outPath !== '-' ? progressBar(process.stderr) : null;
   const uncap = capYoungGeneration();
   try {

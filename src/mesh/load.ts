@@ -106,7 +106,12 @@ export function toModels(input: unknown, opts: LoadOptions = {}): LoadedModels {
   const notes: Notes = { warnings: [] };
   const list = Array.isArray(input) && !input.every((v) => typeof v === 'number') ? input : [input];
   const models = list.map((item, i): ModelInput => {
-    if (isNamedModel(item)) return { name: item.name, objects: convert(item.objects, 1, opts, notes) };
+    if (isNamedModel(item)) {
+      const named = item as ModelInput;
+      if (named.warnings) notes.warnings.push(...named.warnings);
+      if (notes.projectSettings === undefined && named.projectSettings !== undefined) notes.projectSettings = named.projectSettings;
+      return { name: item.name, objects: convert(item.objects, 1, opts, notes) };
+    }
     const objects = convert(item, 1, opts, notes);
     const name = list.length === 1 ? 'the model' : objects.length === 1 ? objects[0].name : `model ${i + 1}`;
     return { name, objects };

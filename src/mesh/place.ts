@@ -9,13 +9,16 @@ import { StrataError } from '../errors.js';
 import { arrangeAll } from './arrange.js';
 import { isIdentity, modelMatrix, NO_TRANSFORM, type ModelTransform } from './model-transform.js';
 import { transformPoints } from './transform.js';
-import type { Mesh, MeshObject } from './types.js';
+import type { Mesh, MeshObject, SettingsSource } from './types.js';
 
 /** One model: what the caller gave as one input. */
 export interface ModelInput {
   /** For messages: the file name, or the object's name. */
   name: string;
   objects: MeshObject[];
+  /** A project file's print settings, and what its reader noted (carried to the slicer with the objects). */
+  projectSettings?: SettingsSource;
+  warnings?: string[];
 }
 
 /** Concatenate the objects' meshes (no welding across objects). */
