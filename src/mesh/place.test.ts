@@ -156,11 +156,10 @@ test('models that cannot all fit together are refused, naming the count and the 
   doesNotFit(() => placeModels(big, BED), /^the 3 models do not fit on the 220 × 220 mm bed together, 6 mm apart/);
 });
 
-test('without centring, each model keeps its XY; overlapping ones are named in a warning', () => {
+test('without centring, each model keeps its XY (overlaps are resolved by the plate, print-setup.ts)', () => {
   const r = placeModels([model('a', box(10, 10, 2, 30, 30, 12)), model('b', box(20, 20, 0, 40, 40, 10))], { ...BED, center: false });
   assert.deepEqual(bounds(r.objects[0].mesh), [[10, 10, 0], [30, 30, 10]]);
   assert.deepEqual(bounds(r.objects[1].mesh), [[20, 20, 0], [40, 40, 10]]);
-  assert.match(r.warnings.join('\n'), /a and b overlap on the bed/);
 });
 
 test('rotation and scale are applied before placing (quarter turns exact)', () => {

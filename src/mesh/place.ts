@@ -65,7 +65,7 @@ export interface PlacedModels {
   objects: MeshObject[];
   /** Translation given to each model after its transform, mm. */
   offsets: Array<[number, number, number]>;
-  /** Notes for the caller (models overlapping when kept at their coordinates). */
+  /** Notes for the caller. */
   warnings: string[];
 }
 
@@ -189,14 +189,6 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
     }
     if (off.length) {
       throw new StrataError('DOES_NOT_FIT', `${off.join('; ')}; without --no-center (center: true) it would be placed on the bed`);
-    }
-    for (let i = 0; i < turned.length; i++) {
-      for (let j = i + 1; j < turned.length; j++) {
-        const a = turned[i].box, b = turned[j].box;
-        if (a.min[0] < b.max[0] && b.min[0] < a.max[0] && a.min[1] < b.max[1] && b.min[1] < a.max[1]) {
-          warnings.push(`${turned[i].name} and ${turned[j].name} overlap on the bed (their own coordinates are kept): they print as one`);
-        }
-      }
     }
   }
 

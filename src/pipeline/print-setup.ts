@@ -125,7 +125,7 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
     if (members.length === 1) printed.push(objects[i]);
     else {
       const names = members.map((j) => objects[j].name);
-      warnings.push(`${names.join(', ')} overlap: they print as one object (their union), "${names.join(' + ')}"`);
+      warnings.push(`${names.join(', ')} overlap (their bounds do) and have the same settings: they print as one object (their union), "${names.join(' + ')}"`);
       printed.push({ name: names.join(' + '), mesh: concatMeshes(members.map((j) => objects[j].mesh)), settings: objects[i].settings });
     }
   }
