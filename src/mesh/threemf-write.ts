@@ -136,7 +136,9 @@ function layerRangesXml(objects: readonly MeshObject[], layerHeight: number): st
     out.push(` <object id="${i + 1}">\n`);
     for (const r of ranges) {
       out.push(`  <range min_z="${r.fromZ}" max_z="${r.toZ}">\n`);
-      for (const [k, v] of Object.entries(slic3rValues(r.settings, layerHeight))) out.push(`   <option opt_key="${attr(k)}">${text(v)}</option>\n`);
+      // PrusaSlicer's ranges always hold a layer height and an extruder (2.5 crashes slicing a range without the first)
+      const values = { layer_height: String(layerHeight), extruder: '0', ...slic3rValues(r.settings, layerHeight) };
+      for (const [k, v] of Object.entries(values)) out.push(`   <option opt_key="${attr(k)}">${text(v)}</option>\n`);
       out.push('  </range>\n');
     }
     out.push(' </object>\n');
