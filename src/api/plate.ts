@@ -20,13 +20,17 @@ export function plateOf(objects: readonly MeshObject[], options: SliceOptions, c
   const read = (src: SettingsSource | undefined, use: ScopeUse): ScopedSettings | undefined => {
     if (!src) return undefined;
     const mapped = settingsFromSource(src, project && project.format === src.format ? project : undefined);
-    for (const k of mapped.ignored) ignored.add(k);
+    // the extruder of a single-extruder print says nothing (PrusaSlicer writes it into every layer range)
+    for (const k of mapped.ignored) if (!(k === 'extruder' && /^[01]?$/.test(String(src.values[k] ?? '').trim()))) ignored.add(k);
     for (const r of mapped.rejected) warnings.push(`object settings: ${r.key} = ${r.value} not taken: ${r.reason}`);
     const settings: Record<string, unknown> = {};
     for (const [k, v] of Object.entries(mapped.settings)) {
       const scope = SETTING_SCOPE[k as SettingKey];
       // another slicer's project may vary what Strata keeps per print (or per object): left to the print
-      if (src.format !== 'strata' && (scope === 'print' || (scope === 'object' && use !== 'object'))) outOfScope.add(k);
+      if (src.format !== 'strata' && (scope === 'print' || (scope === 'object' && use !== 'object'))) {
+        // (the same value as the print's changes nothing: PrusaSlicer repeats the layer height in every range)
+        if (v !== cfg[k as SettingKey]) outOfScope.add(k);
+      }
       else settings[k] = v;
     }
     return Object.keys(settings).length ? settings : undefined;

@@ -266,7 +266,7 @@ test('a written project in PrusaSlicer\'s layout alone (no Strata copy) reads as
     values: { fill_pattern: 'gyroid', perimeters: '4', top_solid_layers: '4', top_solid_min_thickness: '1' },
   });
   assert.deepEqual(objects[0].volumes?.[0].settings, { format: 'prusaslicer', values: { fill_density: '80%', fill_pattern: 'cubic' } });
-  assert.deepEqual(objects[0].layerRanges?.[0].settings, { format: 'prusaslicer', values: { layer_height: '0.1', fill_density: '10%' } });
+  assert.deepEqual(objects[0].layerRanges?.[0].settings, { format: 'prusaslicer', values: { layer_height: '0.1', extruder: '0', fill_density: '10%' } });
   assert.deepEqual(objects[0].volumes?.map((v) => v.kind), ['modifier', 'negative', 'support-blocker']);
 });
 
