@@ -1,7 +1,7 @@
 /** `strata info`: what is in a model file (triangles, size, volume, open and non-manifold edges), as text or JSON. */
 import { basename } from 'node:path';
 import { StrataError } from '../errors.js';
-import { loadModelBytes, prepareMesh } from '../mesh/index.js';
+import { loadModelFile, prepareMesh } from '../mesh/index.js';
 import type { MeshReport } from '../mesh/types.js';
 import { SCHEMA } from '../settings/schema.js';
 import type { ParsedArgs } from './args.js';
@@ -11,7 +11,10 @@ const MiB = 1024 * 1024;
 
 export interface ModelInfo {
   file: string;
-  objects: Array<{ name: string; triangles: number }>;
+  /** Each object: its triangles, and what a project gives it (volumes by kind and name, settings, layer ranges). */
+  objects: Array<{ name: string; triangles: number; volumes?: Array<{ kind: string; name: string; triangles: number; settings?: Record<string, unknown> }>; settings?: Record<string, unknown>; layerRanges?: Array<{ fromZ: number; toZ: number; settings: Record<string, unknown> }> }>;
+  /** A project's print settings, as the file gives them (its slicer's keys). */
+  projectSettings?: { format: string; count: number };
   triangles: number;
   vertices: number;
   degenerateRemoved: number;
@@ -28,7 +31,8 @@ export interface ModelInfo {
 
 /** The report of one model file, over all its objects (each prepared on its own, as slicing does). */
 export function modelInfo(file: string, bytes: Uint8Array, maxInflatedBytes: number): ModelInfo {
-  const objects = loadModelBytes(bytes, file === '-' ? undefined : basename(file), { maxInflatedBytes });
+  const loaded = loadModelFile(bytes, file === '-' ? undefined : basename(file), { maxInflatedBytes });
+  const objects = loaded.objects;
   const reports: MeshReport[] = objects.map((o) => prepareMesh(o.mesh).report);
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
@@ -46,7 +50,14 @@ export function modelInfo(file: string, bytes: Uint8Array, maxInflatedBytes: num
   const several = objects.length > 1;
   return {
     file,
-    objects: objects.map((o, i) => ({ name: o.name, triangles: reports[i].triangles })),
+    objects: objects.map((o, i) => ({
+      name: o.name,
+      triangles: reports[i].triangles,
+      ...(o.volumes?.length ? { volumes: o.volumes.map((v) => ({ kind: v.kind, name: v.name, triangles: v.mesh.indices.length / 3, ...(v.settings ? { settings: { ...v.settings.values } } : {}) })) } : {}),
+      ...(o.settings ? { settings: { ...o.settings.values } } : {}),
+      ...(o.layerRanges?.length ? { layerRanges: o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { ...r.settings.values } })) } : {}),
+    })),
+    ...(loaded.projectSettings ? { projectSettings: { format: loaded.projectSettings.format, count: Object.keys(loaded.projectSettings.values).length } } : {}),
     triangles: sum((r) => r.triangles),
     vertices: sum((r) => r.vertices),
     degenerateRemoved: sum((r) => r.degenerateRemoved),
@@ -57,7 +68,7 @@ export function modelInfo(file: string, bytes: Uint8Array, maxInflatedBytes: num
     openEdges,
     nonManifoldEdges,
     watertight: openEdges === 0 && nonManifoldEdges === 0,
-    warnings: reports.flatMap((r, i) => r.warnings.map((w) => (several ? `${objects[i].name}: ${w}` : w))),
+    warnings: [...loaded.warnings, ...reports.flatMap((r, i) => r.warnings.map((w) => (several ? `${objects[i].name}: ${w}` : w)))],
   };
 }
 
@@ -73,6 +84,12 @@ function text(info: ModelInfo): string {
     `  open edges:         ${info.openEdges}`,
     `  non-manifold edges: ${info.nonManifoldEdges}`,
     `  watertight:         ${info.watertight ? 'yes' : 'no'}`,
+    ...(info.projectSettings ? [`  project:            ${info.projectSettings.count} print settings (${info.projectSettings.format})`] : []),
+    ...info.objects.flatMap((o) => {
+      const own = (s?: Record<string, unknown>) => (s && Object.keys(s).length ? ` (${Object.entries(s).map(([k, v]) => `${k}=${String(v)}`).join(', ')})` : '');
+      const lines = [...(o.volumes ?? []).map((v) => `    ${v.kind} "${v.name}": ${v.triangles} triangles${own(v.settings)}`), ...(o.layerRanges ?? []).map((r) => `    layers ${r.fromZ}–${r.toZ} mm${own(r.settings)}`)];
+      return o.settings || lines.length ? [`  object "${o.name}"${own(o.settings)}`, ...lines] : [];
+    }),
   ].join('\n');
 }
 
