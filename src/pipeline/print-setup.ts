@@ -7,6 +7,7 @@
  * printed as one object, their union; objects that overlap with different settings are checked layer by
  * layer, and refused where they really share volume (`overlapPairs`).
  */
+import { StrataError } from '../errors.js';
 import type { Mesh, VolumeKind } from '../mesh/types.js';
 import { ConfigTable, type ScopedSettings } from '../settings/scoped.js';
 import type { ObjectSetup, PrintSetup } from '../regions/objects.js';
@@ -42,6 +43,9 @@ export interface PlateSetup {
   /** Notes for the caller (objects merged). */
   warnings: string[];
 }
+
+/** Most (layer ranges + 1) × (modifiers + 1) of one object, each a config to resolve. */
+const MAX_REGIONS = 4096;
 
 interface Box {
   min: [number, number, number];
@@ -138,6 +142,9 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
     const of = (kind: VolumeKind) => volumes.filter((v) => v.kind === kind);
     const modifiers = of('modifier');
     const ranges = (o.layerRanges ?? []).map((r) => ({ fromZ: r.fromZ, toZ: r.toZ }));
+    if ((ranges.length + 1) * (modifiers.length + 1) > MAX_REGIONS) {
+      throw new StrataError('LIMIT_EXCEEDED', `object "${o.name}" has ${modifiers.length} modifiers and ${ranges.length} layer ranges: more than ${MAX_REGIONS} combinations of them to resolve`);
+    }
     const objectLayer = { settings: o.settings, use: 'object' as const, where: `object "${o.name}"` };
     const regions: number[][] = [];
     for (let r = 0; r <= ranges.length; r++) {
