@@ -12,7 +12,7 @@ import { InfillPanel } from './infill-panel.js';
 import { Plate, bedShape, type PlateItem } from './plate.js';
 import { PreviewPanel } from './preview-panel.js';
 import type { FromWorker, SliceSummary } from './protocol.js';
-import { buildSettingsPanel } from './settings-panel.js';
+import { buildSettingsPanel, printSource } from './settings-panel.js';
 import { SettingsStore } from './settings.js';
 import { ToolpathView } from './toolpath.js';
 import { Viewer } from './viewer.js';
@@ -370,7 +370,8 @@ ui.filament.addEventListener('change', () => {
   store.changed();
 });
 
-const panel = buildSettingsPanel(byId('settings'), byId<HTMLInputElement>('settings-filter'), store);
+const panel = buildSettingsPanel(byId('settings'), byId<HTMLInputElement>('settings-filter'), printSource(store), { idPrefix: 'set-', resetTitle: 'Back to the preset value', infillSlot: true });
+store.onChange(panel.refresh);
 const infill = new InfillPanel(panel.infillSlot, store, async (spec) => (await loader.request<'infiller'>({ type: 'infiller', spec })).info);
 void infill.init();
 

@@ -1,10 +1,10 @@
 /**
- * The settings panel, built from the schema: one collapsible group per stage (in schema order),
- * one field per setting with its unit, range and description; changed settings are marked and can
- * be reset. A new setting in the schema appears here with no edit.
+ * A settings panel, built from the schema: one collapsible group per stage (most used first), one
+ * field per setting with its unit, range and description; settings set here are marked and can be
+ * reset. The print's panel lists every setting; an object's, a modifier's or a layer range's lists
+ * those that may vary there (settings/scope.ts). A new setting in the schema appears with no edit.
  */
 import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey } from '../../src/settings/schema.js';
-import type { Config } from '../../src/settings/resolve.js';
 import { h } from './dom.js';
 import { labelOf } from './format.js';
 import type { SettingsStore } from './settings.js';
@@ -51,50 +51,78 @@ interface Field {
   searchText: string;
 }
 
+/** What a panel shows and changes: the print's settings, or an object's, a modifier's, a layer range's. */
+export interface PanelSource {
+  /** The settings listed, in schema order. */
+  keys: readonly SettingKey[];
+  /** Whether a setting is set here (marked as changed, with its reset button). */
+  isSet(key: SettingKey): boolean;
+  /** Every value shown (set here, else inherited), and what is wrong with them together, if anything. */
+  values(): { values: Readonly<Partial<Record<SettingKey, unknown>>>; problem: string | null };
+  /** Set one (throws a StrataError naming the problem when the value is not allowed). */
+  set(key: SettingKey, value: unknown): void;
+  reset(key: SettingKey): void;
+}
+
+export interface PanelOptions {
+  /** Prefix of the fields' element ids (unique on the page). */
+  idPrefix: string;
+  /** Added to each field's accessible name ("Infill density (object)"), so panels side by side differ. */
+  nameSuffix?: string;
+  /** The reset button's tooltip. */
+  resetTitle: string;
+  /** Groups open at first (default: the common ones). */
+  open?: (stage: string) => boolean;
+  /** Put the custom-infill controls' slot after the infill pattern (the print's panel). */
+  infillSlot?: boolean;
+}
+
 export interface SettingsPanel {
-  /** Show the store's values (after presets or settings changed elsewhere). */
+  /** Show the source's values (after they changed elsewhere). */
   refresh(): void;
   /** The element custom-infill controls go into (inside the infill group, after the pattern). */
   infillSlot: HTMLElement;
 }
 
-export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElement, store: SettingsStore): SettingsPanel {
+export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElement, source: PanelSource, opts: PanelOptions): SettingsPanel {
   const fields: Field[] = [];
   const groups = new Map<string, { details: HTMLDetailsElement; body: HTMLElement; count: HTMLElement; fields: Field[] }>();
   const problem = h('p', { class: 'settings-error', role: 'alert', hidden: true });
   container.append(problem);
   const infillSlot = h('div', { class: 'infill-custom' });
+  const isOpen = opts.open ?? ((stage: string) => OPEN_STAGES.has(stage));
 
   const rank = (stage: string) => {
     const i = STAGE_ORDER.indexOf(stage);
     return i < 0 ? STAGE_ORDER.length : i;
   };
-  const keys = [...SETTING_KEYS].sort((a, b) => rank(SCHEMA[a].stage) - rank(SCHEMA[b].stage));
+  const keys = [...source.keys].sort((a, b) => rank(SCHEMA[a].stage) - rank(SCHEMA[b].stage));
   for (const key of keys) {
     const def: SettingDef = SCHEMA[key];
     let g = groups.get(def.stage);
     if (!g) {
       const count = h('span', { class: 'count' });
       const body = h('div', { class: 'group-body' });
-      const details = h('details', { class: 'group', open: OPEN_STAGES.has(def.stage) }, h('summary', {}, STAGE_TITLES[def.stage] ?? labelOf(def.stage), count), body);
+      const details = h('details', { class: 'group', open: isOpen(def.stage) }, h('summary', {}, STAGE_TITLES[def.stage] ?? labelOf(def.stage), count), body);
       g = { details, body, count, fields: [] };
       groups.set(def.stage, g);
       container.append(details);
     }
-    const id = `set-${key}`;
+    const id = `${opts.idPrefix}${key}`;
     const label = labelOf(key);
+    const name = opts.nameSuffix ? `${label} ${opts.nameSuffix}` : undefined;
     const helpId = `${id}-help`;
     let input: Field['input'];
     if (def.type === 'boolean') {
-      input = h('input', { id, type: 'checkbox', 'aria-describedby': helpId });
+      input = h('input', { id, type: 'checkbox', 'aria-describedby': helpId, 'aria-label': name });
     } else if (def.type === 'enum') {
-      input = h('select', { id, 'aria-describedby': helpId }, ...def.values.map((v) => h('option', { value: v }, v)));
+      input = h('select', { id, 'aria-describedby': helpId, 'aria-label': name }, ...def.values.map((v) => h('option', { value: v }, v)));
     } else if (def.type === 'string') {
-      input = h('textarea', { id, 'aria-describedby': helpId, spellcheck: 'false', rows: 6, maxlength: def.maxLength });
+      input = h('textarea', { id, 'aria-describedby': helpId, 'aria-label': name, spellcheck: 'false', rows: 6, maxlength: def.maxLength });
     } else {
-      input = h('input', { id, type: 'number', min: def.min, max: def.max, step: stepOf(def), inputmode: 'decimal', 'aria-describedby': helpId, placeholder: def.nullable ? 'auto' : undefined });
+      input = h('input', { id, type: 'number', min: def.min, max: def.max, step: stepOf(def), inputmode: 'decimal', 'aria-describedby': helpId, 'aria-label': name, placeholder: def.nullable ? 'auto' : undefined });
     }
-    const reset = h('button', { type: 'button', class: 'reset', title: 'Back to the preset value', 'aria-label': `Reset ${label}` }, '↺');
+    const reset = h('button', { type: 'button', class: 'reset', title: opts.resetTitle, 'aria-label': `Reset ${label}${opts.nameSuffix ? ' ' + opts.nameSuffix : ''}` }, '↺');
     const unit = def.unit && def.unit !== 'count' ? h('span', { class: 'unit' }, def.unit) : h('span', { class: 'unit' });
     const range = rangeText(def);
     const help = h('p', { class: 'help', id: helpId }, def.description, range ? h('span', { class: 'range' }, ` (${range})`) : null);
@@ -110,7 +138,7 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
       error,
     );
     g.body.append(row);
-    if (key === 'infillPattern') g.body.append(infillSlot);
+    if (key === 'infillPattern' && opts.infillSlot) g.body.append(infillSlot);
     const field: Field = { key, row, input, error, searchText: `${key} ${label} ${def.description}`.toLowerCase() };
     fields.push(field);
     g.fields.push(field);
@@ -118,7 +146,7 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
     const commit = () => {
       const value = readValue(def, input);
       try {
-        store.set(key, value);
+        source.set(key, value);
         error.hidden = true;
         row.classList.remove('invalid');
       } catch (e) {
@@ -131,7 +159,7 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
     reset.addEventListener('click', () => {
       error.hidden = true;
       row.classList.remove('invalid');
-      store.reset(key);
+      source.reset(key);
     });
   }
 
@@ -146,28 +174,38 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
   });
 
   const refresh = () => {
-    let cfg: Config;
-    try {
-      cfg = store.config();
-      problem.hidden = true;
-    } catch (e) {
-      problem.textContent = e instanceof Error ? e.message : String(e);
-      problem.hidden = false;
-      cfg = store.base();
-    }
+    const { values, problem: wrong } = source.values();
+    problem.textContent = wrong ?? '';
+    problem.hidden = wrong === null;
     for (const g of groups.values()) {
-      const n = g.fields.filter((f) => f.key in store.overrides).length;
+      const n = g.fields.filter((f) => source.isSet(f.key)).length;
       g.count.textContent = n ? `${n} changed` : '';
     }
     for (const f of fields) {
-      f.row.classList.toggle('changed', f.key in store.overrides);
+      f.row.classList.toggle('changed', source.isSet(f.key));
       if (f.row.classList.contains('invalid') || document.activeElement === f.input) continue;
-      writeValue(SCHEMA[f.key], f.input, f.key in store.overrides ? store.overrides[f.key] : cfg[f.key]);
+      writeValue(SCHEMA[f.key], f.input, values[f.key]);
     }
   };
-  store.onChange(refresh);
   refresh();
   return { refresh, infillSlot };
+}
+
+/** The print's settings: presets and the settings the user changed, kept by the store. */
+export function printSource(store: SettingsStore): PanelSource {
+  return {
+    keys: SETTING_KEYS,
+    isSet: (key) => key in store.overrides,
+    values: () => {
+      try {
+        return { values: { ...store.config(), ...store.overrides }, problem: null };
+      } catch (e) {
+        return { values: { ...store.base(), ...store.overrides }, problem: e instanceof Error ? e.message : String(e) };
+      }
+    },
+    set: (key, value) => store.set(key, value),
+    reset: (key) => store.reset(key),
+  };
 }
 
 function readValue(def: SettingDef, input: Field['input']): unknown {
