@@ -9,13 +9,16 @@ import type { Config } from '../../src/settings/resolve.js';
 import { byId, h, saveFile } from './dom.js';
 import { duration, grams, metres, mm1 } from './format.js';
 import { InfillPanel } from './infill-panel.js';
+import { ObjectPanel } from './object-panel.js';
 import { Plate, bedShape, type PlateItem } from './plate.js';
 import { PreviewPanel } from './preview-panel.js';
-import type { FromWorker, SliceSummary } from './protocol.js';
+import type { FromWorker, LoadedProject, SliceSummary } from './protocol.js';
 import { buildSettingsPanel, printSource } from './settings-panel.js';
 import { SettingsStore } from './settings.js';
+import { drawArrays } from './shapes.js';
 import { ToolpathView } from './toolpath.js';
 import { Viewer } from './viewer.js';
+import { boxOf, KIND_INFO, volumeMesh } from './volumes.js';
 import { Cancelled, WorkerClient } from './worker-client.js';
 
 /** Largest model file read, bytes. */
@@ -30,6 +33,7 @@ const slicerWorker = new WorkerClient();
 
 const ui = {
   open: byId<HTMLInputElement>('open-model'),
+  saveProject: byId<HTMLButtonElement>('save-project'),
   printer: byId<HTMLSelectElement>('printer'),
   filament: byId<HTMLSelectElement>('filament'),
   slice: byId<HTMLButtonElement>('slice'),
@@ -104,6 +108,13 @@ try {
       plate.selected = plate.items.find((i) => i.id === id) ?? null;
       refreshObjects();
     },
+    pickVolume: (objectId, volumeId) => {
+      const it = plate.items.find((i) => i.id === objectId);
+      if (!it) return;
+      plate.selected = it;
+      objectPanel.selectVolume(it, volumeId);
+      refreshObjects();
+    },
     drag: (id, centre, done) => {
       const it = plate.items.find((i) => i.id === id);
       if (!it) return;
@@ -140,17 +151,57 @@ ui.viewModel.addEventListener('click', () => setView('model'));
 ui.viewPreview.addEventListener('click', () => result && setView('preview'));
 
 // ── objects ──────────────────────────────────────────────────────────────────
+const objectPanel = new ObjectPanel(byId('object-card'), {
+  plate,
+  store,
+  changed: (what) => {
+    if (what === 'selection') return viewObjects();
+    invalidate();
+    refreshObjects();
+  },
+  message,
+  loadMesh: async (file) => {
+    try {
+      const bytes = await file.arrayBuffer();
+      const { model } = await loader.request<'loaded'>({ type: 'load', fileName: file.name, bytes, mesh: true }, [bytes]);
+      for (const w of model!.warnings) message('warning', `${file.name}: ${w}`);
+      return model;
+    } catch (e) {
+      message('error', `${file.name}: ${errorText(e)}`);
+      return null;
+    }
+  },
+});
+
 function viewObjects(): void {
-  viewer?.setObjects(
+  if (!viewer) return;
+  const sel = plate.selected;
+  const matrices = new Map(plate.items.map((it) => [it, matrixOf(plate.affine(it))]));
+  viewer.setObjects(
     plate.items.map((it) => ({
       id: it.id,
       positions: it.model.positions,
       normals: it.model.normals,
-      matrix: matrixOf(plate.affine(it)),
+      matrix: matrices.get(it)!,
       centre: it.center,
-      selected: it === plate.selected,
+      selected: it === sel,
       problem: plate.problems(it).length > 0,
+      seeThrough: it.volumes.length > 0,
     })),
+  );
+  viewer.setVolumes(
+    plate.items.flatMap((it) =>
+      it.volumes.map((v) => ({
+        objectId: it.id,
+        volumeId: v.id,
+        shapeKey: `${v.shape} ${v.centre.join(' ')} ${v.size.join(' ')}`,
+        arrays: () => drawArrays(volumeMesh(v)),
+        matrix: matrices.get(it)!,
+        colour: KIND_INFO[v.kind].colour,
+        selected: it === sel && objectPanel.selectedVolume === v.id,
+        pickable: it === sel,
+      })),
+    ),
   );
 }
 
@@ -192,14 +243,17 @@ function refreshObjects(light = false): void {
     ui.objSize.textContent = `${mm1(sx)} × ${mm1(sy)} × ${mm1(sz)} mm, ${sel.model.triangles.toLocaleString('en')} triangles`;
   }
   if (light) return;
+  objectPanel.show(sel);
   ui.objectList.replaceChildren(
     ...plate.items.map((it) => {
       const problems = [...plate.problems(it), ...(it.model.openEdges ? [`${it.model.openEdges} open edges`] : [])];
       const [sx, sy, sz] = plate.size(it);
+      const own = ownText(it);
       const b = h(
         'button',
         { type: 'button', 'aria-current': String(it === plate.selected) },
         h('span', { class: 'name', title: it.fileName }, it.name),
+        own ? h('span', { class: 'own', title: own }, h('span', { 'aria-hidden': 'true' }, '●'), h('span', { class: 'visually-hidden' }, own)) : null,
         h('span', { class: 'meta' }, `${mm1(sx)}×${mm1(sy)}×${mm1(sz)} mm`),
       );
       b.addEventListener('click', () => {
@@ -210,6 +264,13 @@ function refreshObjects(light = false): void {
     }),
   );
   updateSliceButton();
+}
+
+/** What an object has of its own, in words ('' for nothing). */
+function ownText(it: PlateItem): string {
+  const n = Object.keys(it.settings).length, v = it.volumes.length, r = it.layerRanges.length;
+  const words = [n && `${n} setting${n === 1 ? '' : 's'}`, v && `${v} volume${v === 1 ? '' : 's'}`, r && `${r} layer range${r === 1 ? '' : 's'}`].filter(Boolean);
+  return words.length ? `Its own: ${words.join(', ')}` : '';
 }
 
 function selectedOrNull(): PlateItem | null {
@@ -289,6 +350,7 @@ document.addEventListener('keydown', (e) => {
   const t = e.target as HTMLElement;
   if (t.closest('input, select, textarea')) return;
   if ((e.key === 'Delete' || e.key === 'Backspace') && plate.selected) {
+    if (objectPanel.deleteSelected()) return;
     plate.remove(plate.selected);
     invalidate();
     refreshObjects();
@@ -309,10 +371,15 @@ async function openFiles(files: readonly File[]): Promise<void> {
     try {
       const bytes = await file.arrayBuffer();
       const copy = bytes.slice(0);
-      const { model } = await loader.request<'loaded'>({ type: 'load', fileName: file.name, bytes: copy }, [copy]);
+      const { model, project } = await loader.request<'loaded'>({ type: 'load', fileName: file.name, bytes: copy }, [copy]);
       const first = plate.items.length === 0;
-      const it = plate.add(file.name, bytes, model);
-      for (const w of model.warnings) message('warning', `${it.name}: ${w}`);
+      if (project) {
+        await openProject(file.name, project);
+        if (first) frameObjects();
+        continue;
+      }
+      const it = plate.add(file.name, bytes, model!);
+      for (const w of it.model.warnings) message('warning', `${it.name}: ${w}`);
       for (const p of plate.problems(it)) message('warning', `${it.name}: ${p}`);
       invalidate();
       refreshObjects();
@@ -322,6 +389,53 @@ async function openFiles(files: readonly File[]): Promise<void> {
     }
   }
 }
+
+/**
+ * A project: its print settings into the print's panel (replacing the current ones, as importing a
+ * settings file does), its objects onto the plate where it put them, with their settings, volumes and
+ * layer ranges.
+ */
+async function openProject(fileName: string, p: LoadedProject): Promise<void> {
+  if (p.printSettings) {
+    try {
+      store.fromJson(p.printSettings, infill.shipped.map((s) => s.name));
+      await infill.init();
+      message('info', `Print settings from ${fileName}`);
+    } catch (e) {
+      message('error', `${fileName}: its print settings are not used: ${errorText(e)}`);
+    }
+  }
+  for (const o of p.objects) {
+    const it = plate.add(fileName, null, o.model, 'own', o.name);
+    it.settings = { ...o.settings };
+    objectPanel.adopt(
+      it,
+      o.volumes.map((v) => ({ kind: v.kind, name: v.name, shape: 'mesh' as const, ...boxOf(v.mesh), source: v.mesh, settings: { ...v.settings } })),
+      o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { ...r.settings } })),
+    );
+    for (const w of o.model.warnings) message('warning', `${it.name}: ${w}`);
+    for (const pr of plate.problems(it)) message('warning', `${it.name}: ${pr}`);
+  }
+  for (const w of p.warnings) message('warning', `${fileName}: ${w}`);
+  invalidate();
+  refreshObjects();
+}
+
+/** Print settings the saved objects have already taken (they are saved turned and scaled): not saved again. */
+const PLACEMENT_KEYS = ['upAxis', 'rotateX', 'rotateY', 'rotateZ', 'scale', 'scaleX', 'scaleY', 'scaleZ'];
+
+ui.saveProject.addEventListener('click', async () => {
+  if (plate.items.length === 0) return;
+  const printSettings = store.toJson();
+  for (const k of PLACEMENT_KEYS) delete printSettings[k];
+  try {
+    const { bytes } = await loader.request<'saved'>({ type: 'save', items: plate.sliceItems(), options: store.options(), printSettings });
+    saveFile(`${plate.items[0].name}.3mf`, bytes, 'model/3mf');
+    if (store.custom?.source === 'file') message('info', `The loaded infiller ${store.custom.fileName ?? store.custom.name} is not part of the project.`);
+  } catch (e) {
+    message('error', `Saving the project failed: ${errorText(e)}`);
+  }
+});
 
 ui.open.addEventListener('change', () => {
   const files = [...(ui.open.files ?? [])];
@@ -388,6 +502,7 @@ store.onChange(() => {
   plate.setBed(bedShape(cfg));
   if (viewer?.setBed(plate.bed)) frameObjects();
   invalidate();
+  // the selected object's settings show what they inherit from the print's
   refreshObjects();
 });
 
@@ -435,6 +550,7 @@ function invalidate(): void {
 
 function updateSliceButton(): void {
   ui.slice.disabled = slicing || plate.items.length === 0 || settingsError !== null;
+  ui.saveProject.disabled = plate.items.length === 0;
   ui.slice.title = settingsError ?? (plate.items.length === 0 ? 'Open a model first' : '');
 }
 
@@ -442,6 +558,8 @@ const STAGE_WORDS: Readonly<Record<string, string>> = { slicing: 'Slicing', plan
 
 function setSlicing(on: boolean): void {
   slicing = on;
+  // the last stage's words would keep their width in the top bar
+  if (!on) ui.jobText.textContent = '';
   ui.cancel.classList.toggle('off', !on);
   ui.slice.classList.toggle('off', on);
   ui.job.classList.toggle('off', !on);

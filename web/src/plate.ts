@@ -1,21 +1,29 @@
 /**
- * The objects on the build plate: each one's file, turn, scale and place; arranging them without
- * overlap, and what is wrong with where they stand. An object alone that the user has not moved
- * stands where `strata slice` would put it, and is sliced as read, so the G-code is the CLI's.
+ * The objects on the build plate: each one's file (or a project's mesh), turn, scale and place, and its
+ * own settings, volumes and layer ranges; arranging them without overlap, and what is wrong with where
+ * they stand. An object alone that the user has not moved stands where `strata slice` would put it, and
+ * is sliced as read, so the G-code is the CLI's.
  */
 import { arrange, findSpot, footprintsOverlap, type Bed, type PlacedFootprint } from '../../src/mesh/arrange.js';
 import { IDENTITY_LINEAR, axisRotation, linearBounds, mul3, placementAffine, rotationBetween, type Box, type Placement } from '../../src/mesh/placement.js';
 import type { Config } from '../../src/settings/resolve.js';
 import { mm1 } from './format.js';
-import type { LoadedModel, SliceItem } from './protocol.js';
+import type { LoadedModel, SliceItem, SliceVolume } from './protocol.js';
+import type { Overrides } from './settings.js';
+import { volumeMesh, type PlateRange, type PlateVolume } from './volumes.js';
 
 export interface PlateItem {
   id: number;
   fileName: string;
-  /** The file name without its extension (as the CLI names the G-code). */
+  /** The file name without its extension (as the CLI names the G-code), or the project's object name. */
   name: string;
-  bytes: ArrayBuffer;
+  /** The file as read; null for an object from a project, sliced from `model`'s mesh. */
+  bytes: ArrayBuffer | null;
   model: LoadedModel;
+  /** The object's own settings (object- and region-scoped ones), over the print's. */
+  settings: Overrides;
+  volumes: PlateVolume[];
+  layerRanges: PlateRange[];
   /** Turns from "rotate 90°" and "lay on face", row-major 3×3. */
   rotation: number[];
   /** Turn about Z, degrees, applied after `rotation`. */
@@ -75,22 +83,30 @@ export class Plate {
     return { center: bedCentre(this.bed), width: this.bed.width, depth: this.bed.depth };
   }
 
-  add(fileName: string, bytes: ArrayBuffer, model: LoadedModel): PlateItem {
+  /**
+   * A model on the plate: a file (`bytes`), or an object of a project (`bytes` null); `at` 'own': it
+   * stands where its own coordinates put it (a project's objects, as placed when saved).
+   */
+  add(fileName: string, bytes: ArrayBuffer | null, model: LoadedModel, at?: 'own', name?: string): PlateItem {
     const base = fileName.split(/[\\/]/).pop() ?? fileName;
     const dot = base.lastIndexOf('.');
     const it: PlateItem = {
       id: this.#nextId++,
       fileName,
-      name: dot > 0 ? base.slice(0, dot) : base,
+      name: name ?? (dot > 0 ? base.slice(0, dot) : base),
       bytes,
       model,
+      settings: {},
+      volumes: [],
+      layerRanges: [],
       rotation: [...IDENTITY_LINEAR],
       turnZ: 0,
       scale: 1,
       center: [0, 0],
       box: linearBounds(model.vertices),
     };
-    if (this.items.length === 0) it.center = this.defaultCentre(it);
+    if (at === 'own') it.center = [(it.box.min[0] + it.box.max[0]) / 2, (it.box.min[1] + it.box.max[1]) / 2];
+    else if (this.items.length === 0) it.center = this.defaultCentre(it);
     else {
       const size = this.#footprint(it);
       it.center = findSpot(size, this.items.map((o) => this.#footprint(o)), this.#bedRect()) ?? bedCentre(this.bed);
@@ -108,7 +124,7 @@ export class Plate {
 
   /** A lone, unturned, unscaled object goes back to where the CLI would put it. */
   #toDefaultIfUntouched(it: PlateItem): void {
-    if (it.scale === 1 && it.turnZ === 0 && it.rotation.every((v, i) => v === IDENTITY_LINEAR[i])) it.center = this.defaultCentre(it);
+    if (it.bytes && it.scale === 1 && it.turnZ === 0 && it.rotation.every((v, i) => v === IDENTITY_LINEAR[i])) it.center = this.defaultCentre(it);
   }
 
   /** Every object re-placed without overlap (one alone goes where the CLI puts it). */
@@ -136,7 +152,7 @@ export class Plate {
   /** Stands exactly where and as `strata slice` would put it: sliced from the file as read. */
   isDefault(it: PlateItem): boolean {
     const d = this.defaultCentre(it);
-    return this.items.length === 1 && this.isUntransformed(it) && it.center[0] === d[0] && it.center[1] === d[1];
+    return this.items.length === 1 && it.bytes !== null && this.isUntransformed(it) && it.center[0] === d[0] && it.center[1] === d[1];
   }
 
   /** Rotation, scale or "lay on face" changed: bounds follow, the footprint centre stays. */
@@ -192,9 +208,36 @@ export class Plate {
     return out;
   }
 
-  /** What the worker slices: an object in its CLI place goes as read, any other with its placement. */
+  /**
+   * What the worker slices: an object in its CLI place goes as read, any other with its placement; each
+   * with its settings, volumes (meshes in the model's coordinates) and layer ranges.
+   */
   sliceItems(): SliceItem[] {
-    return this.items.map((it) => ({ fileName: it.fileName, bytes: it.bytes, placement: this.isDefault(it) ? null : this.placement(it) }));
+    return this.items.map((it) => ({
+      name: it.name,
+      fileName: it.fileName,
+      bytes: it.bytes,
+      mesh: it.bytes ? null : { positions: it.model.vertices, indices: it.model.indices },
+      placement: this.isDefault(it) ? null : this.placement(it),
+      settings: { ...it.settings },
+      volumes: it.volumes.map((v) => {
+        const out: SliceVolume = { type: v.kind, name: v.name, mesh: volumeMesh(v) };
+        if (v.kind === 'modifier' && Object.keys(v.settings).length) out.settings = { ...v.settings };
+        return out;
+      }),
+      layerRanges: it.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { ...r.settings } })),
+    }));
+  }
+
+  /** The object's bounds in its own coordinates (before turning and scaling). */
+  modelBox(it: PlateItem): Box {
+    return linearBounds(it.model.vertices);
+  }
+
+  /** The reference of a volume's position fields in the object's coordinates: its box's centre in X and Y, its bottom in Z. */
+  origin(it: PlateItem): [number, number, number] {
+    const b = this.modelBox(it);
+    return [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2, b.min[2]];
   }
 
   /** The G-code's file name: the first model's, as `strata slice` names it. */

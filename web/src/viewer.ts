@@ -1,6 +1,7 @@
 /**
  * The 3D view (three.js): the printer's bed with its grid and build volume, the objects on it
- * (pick, drag to move, pick a face to lay it down), orbit/zoom/pan. Bed coordinates, Z up, mm.
+ * (pick, drag to move, pick a face to lay it down) and their volumes (translucent, coloured by kind;
+ * pick one of the selected object's), orbit/zoom/pan. Bed coordinates, Z up, mm.
  * It draws only when something changed, so it costs nothing while a slice runs.
  */
 import {
@@ -40,11 +41,29 @@ export interface ViewObject {
   centre: [number, number];
   selected: boolean;
   problem: boolean;
+  /** Drawn translucent, so the volumes inside show. */
+  seeThrough: boolean;
+}
+
+/** A volume of an object: drawn translucent in its kind's colour, with its object's matrix. */
+export interface ViewVolume {
+  objectId: number;
+  volumeId: number;
+  /** Changes when the volume's shape, place or size does (its triangles are then asked for again). */
+  shapeKey: string;
+  arrays(): { positions: Float32Array; normals: Float32Array };
+  matrix: Matrix4;
+  colour: string;
+  selected: boolean;
+  /** Whether a click can pick it (its object is the selected one). */
+  pickable: boolean;
 }
 
 export interface ViewerEvents {
   /** An object (or none) was clicked. */
   pick(id: number | null): void;
+  /** A volume of the selected object was clicked. */
+  pickVolume(objectId: number, volumeId: number): void;
   /** An object is dragged to a new footprint centre (bed XY, mm); `done` at the end. */
   drag(id: number, centre: [number, number], done: boolean): void;
   /** In lay-on-face mode, a face was clicked: its normal in model coordinates. */
@@ -71,6 +90,7 @@ export class Viewer {
   #bed = new Group();
   #objects = new Group();
   #meshes = new Map<number, Mesh>();
+  #volumes = new Map<string, Mesh>();
   #pending = false;
   #raycaster = new Raycaster();
   #faceMode = false;
@@ -211,7 +231,58 @@ export class Viewer {
       mesh.matrix.copy(o.matrix);
       mesh.userData.centre = o.centre;
       mesh.matrixWorldNeedsUpdate = true;
-      (mesh.material as MeshStandardMaterial).color.copy(o.problem ? COLOURS.problem : o.selected ? COLOURS.selected : COLOURS.object);
+      const material = mesh.material as MeshStandardMaterial;
+      material.color.copy(o.problem ? COLOURS.problem : o.selected ? COLOURS.selected : COLOURS.object);
+      if (material.transparent !== o.seeThrough) {
+        // drawn after the volumes inside it, over them
+        material.transparent = o.seeThrough;
+        material.opacity = o.seeThrough ? 0.4 : 1;
+        material.depthWrite = !o.seeThrough;
+        material.needsUpdate = true;
+        mesh.renderOrder = o.seeThrough ? 2 : 0;
+      }
+    }
+    this.render();
+  }
+
+  setVolumes(list: ViewVolume[]): void {
+    const key = (v: ViewVolume) => `${v.objectId}:${v.volumeId}`;
+    const keep = new Set(list.map(key));
+    for (const [k, mesh] of this.#volumes) {
+      if (keep.has(k)) continue;
+      this.#objects.remove(mesh);
+      mesh.geometry.dispose();
+      (mesh.material as MeshStandardMaterial).dispose();
+      this.#volumes.delete(k);
+    }
+    for (const v of list) {
+      let mesh = this.#volumes.get(key(v));
+      if (!mesh) {
+        mesh = new Mesh(new BufferGeometry(), new MeshStandardMaterial({ transparent: true, depthWrite: false, roughness: 0.7 }));
+        mesh.matrixAutoUpdate = false;
+        mesh.renderOrder = 1;
+        mesh.userData = { objectId: v.objectId, volumeId: v.volumeId };
+        this.#volumes.set(key(v), mesh);
+        this.#objects.add(mesh);
+      }
+      if (mesh.userData.shapeKey !== v.shapeKey) {
+        const { positions, normals } = v.arrays();
+        mesh.geometry.dispose();
+        const g = new BufferGeometry();
+        g.setAttribute('position', new BufferAttribute(positions, 3));
+        g.setAttribute('normal', new BufferAttribute(normals, 3));
+        g.computeBoundingSphere();
+        mesh.geometry = g;
+        mesh.userData.shapeKey = v.shapeKey;
+      }
+      mesh.userData.pickable = v.pickable;
+      mesh.matrix.copy(v.matrix);
+      mesh.matrixWorldNeedsUpdate = true;
+      const material = mesh.material as MeshStandardMaterial;
+      material.color.set(v.colour);
+      material.opacity = v.selected ? 0.8 : 0.5;
+      material.emissive.set(v.selected ? v.colour : '#000000');
+      material.emissiveIntensity = v.selected ? 0.35 : 0;
     }
     this.render();
   }
@@ -227,6 +298,15 @@ export class Viewer {
     return this.#raycaster.intersectObjects([...this.#meshes.values()], false)[0] ?? null;
   }
 
+  /** The nearest volume of the selected object under the pointer. */
+  #hitVolume(e: PointerEvent): Mesh | null {
+    if (!this.#objects.visible) return null;
+    const pickable = [...this.#volumes.values()].filter((m) => m.userData.pickable);
+    if (pickable.length === 0) return null;
+    this.#raycaster.setFromCamera(this.#ndc(e), this.camera);
+    return (this.#raycaster.intersectObjects(pickable, false)[0]?.object as Mesh | undefined) ?? null;
+  }
+
   #bedPoint(e: PointerEvent): Vector3 | null {
     this.#raycaster.setFromCamera(this.#ndc(e), this.camera);
     return this.#raycaster.ray.intersectPlane(new Plane(new Vector3(0, 0, 1), 0), new Vector3());
@@ -240,6 +320,11 @@ export class Viewer {
     el.addEventListener('pointerdown', (e) => {
       down = { x: e.clientX, y: e.clientY };
       if (e.button !== 0) return;
+      const volume = this.#faceMode ? null : this.#hitVolume(e);
+      if (volume) {
+        this.events.pickVolume(volume.userData.objectId as number, volume.userData.volumeId as number);
+        return;
+      }
       const hit = this.#hit(e);
       if (!hit) return;
       const id = hit.object.userData.id as number;
@@ -276,7 +361,7 @@ export class Viewer {
     };
     el.addEventListener('pointerup', (e) => {
       const click = down && Math.hypot(e.clientX - down.x, e.clientY - down.y) < 4;
-      if (click && !drag && !this.#faceMode && e.button === 0 && !this.#hit(e)) this.events.pick(null);
+      if (click && !drag && !this.#faceMode && e.button === 0 && !this.#hit(e) && !this.#hitVolume(e)) this.events.pick(null);
       end(e);
     });
     el.addEventListener('pointercancel', end);
