@@ -8,6 +8,8 @@
  * layer, and refused where they really share volume (`overlapPairs`).
  */
 import { StrataError } from '../errors.js';
+import { mergeObjects } from '../mesh/place.js';
+import { positionBounds } from '../mesh/prepare.js';
 import type { Mesh, VolumeKind } from '../mesh/types.js';
 import { ConfigTable, type ScopedSettings } from '../settings/scoped.js';
 import type { ObjectSetup, PrintSetup } from '../regions/objects.js';
@@ -47,47 +49,11 @@ export interface PlateSetup {
 /** Most (layer ranges + 1) × (modifiers + 1) of one object, each a config to resolve. */
 const MAX_REGIONS = 4096;
 
-interface Box {
-  min: [number, number, number];
-  max: [number, number, number];
-}
-
-function meshBox(mesh: Mesh): Box {
-  const box: Box = { min: [Infinity, Infinity, Infinity], max: [-Infinity, -Infinity, -Infinity] };
-  const { positions: p, indices } = mesh;
-  for (let i = 0; i < indices.length; i++) {
-    const v = indices[i] * 3;
-    for (let k = 0; k < 3; k++) {
-      const c = p[v + k];
-      if (c < box.min[k]) box.min[k] = c;
-      if (c > box.max[k]) box.max[k] = c;
-    }
-  }
-  return box;
-}
+type Box = { min: number[]; max: number[] };
 
 function boxesOverlap(a: Box, b: Box): boolean {
   for (let k = 0; k < 3; k++) if (!(a.min[k] < b.max[k] && b.min[k] < a.max[k])) return false;
   return true;
-}
-
-function concatMeshes(meshes: readonly Mesh[]): Mesh {
-  let nPos = 0, nIdx = 0;
-  for (const m of meshes) {
-    nPos += m.positions.length;
-    nIdx += m.indices.length;
-  }
-  const positions = new Float32Array(nPos);
-  const indices = new Uint32Array(nIdx);
-  let p = 0, k = 0;
-  for (const m of meshes) {
-    positions.set(m.positions, p);
-    const base = p / 3;
-    for (let i = 0; i < m.indices.length; i++) indices[k + i] = m.indices[i] + base;
-    p += m.positions.length;
-    k += m.indices.length;
-  }
-  return { positions, indices };
 }
 
 /** Whether an object has nothing of its own beyond its settings (so merging it with a twin changes nothing). */
@@ -103,7 +69,7 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
   const table = new ConfigTable(base, print);
   const objectConfig = objects.map((o) => table.resolve([{ settings: o.settings, use: 'object', where: `object "${o.name}"` }]));
   // overlapping twins print as one object
-  const boxes = objects.map((o) => meshBox(o.mesh));
+  const boxes: Box[] = objects.map((o) => positionBounds(o.mesh.positions));
   const groupOf = objects.map((_, i) => i);
   const find = (i: number): number => (groupOf[i] === i ? i : (groupOf[i] = find(groupOf[i])));
   const overlapPairs: Array<[number, number]> = [];
@@ -130,7 +96,7 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
     else {
       const names = members.map((j) => objects[j].name);
       warnings.push(`${names.join(', ')} overlap (their bounds do) and have the same settings: they print as one object (their union), "${names.join(' + ')}"`);
-      printed.push({ name: names.join(' + '), mesh: concatMeshes(members.map((j) => objects[j].mesh)), settings: objects[i].settings });
+      printed.push({ name: names.join(' + '), mesh: mergeObjects(members.map((j) => ({ name: objects[j].name, mesh: objects[j].mesh }))), settings: objects[i].settings });
     }
   }
   for (let i = 0; i < objects.length; i++) if (find(i) !== i) printedIndex.set(i, printedIndex.get(find(i))!);
