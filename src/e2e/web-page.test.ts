@@ -4,8 +4,10 @@
  * byte for byte with `strata slice` on the same file and the page's exported settings; the preview's
  * layer count; tree support set in the panel (the CLI's G-code, support in the legend); Cancel; errors
  * in words; settings kept across a reload; the shader compiler loaded only for custom infill; no console
- * errors; no long task over 100 ms on the page thread while a 3DBenchy slices. With STRATA_SCREENSHOTS=1
- * (npm run screenshots) it also writes README's screenshots.
+ * errors; no long task over 100 ms on the page thread while a 3DBenchy slices; an object with its own
+ * settings, a modifier, a negative volume and a layer range sliced as the library slices them, saved as a
+ * project and reopened to the same G-code (the CLI's for that project too); overlapping objects refused in
+ * one line. With STRATA_SCREENSHOTS=1 (npm run screenshots) it also writes README's screenshots.
  */
 import { after, before, describe, test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -16,7 +18,9 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import type { Server } from 'node:http';
 import type { Download, Page } from 'playwright-core';
+import { Slicer } from '../api/slicer.js';
 import { startServer } from '../cli/serve.js';
+import { loadModelBytes, mergeObjects, positionBounds, prepareMesh } from '../mesh/index.js';
 import { browserMissing, launchChromium, type Browser } from './browser.js';
 import { MODELS_DIR, modelsAvailable, readModel } from './models.js';
 
@@ -27,6 +31,46 @@ const shots = process.env.STRATA_SCREENSHOTS ? join(root, 'docs/screenshots') : 
 const LONG_TASK_MS = 100;
 /** Per test: a 3DBenchy slice in the page takes several seconds on two cores, more under load. */
 const SLOW = { timeout: 240_000 };
+
+/** The page's shape builder (web/src/shapes.ts), the page's own code, bundled here to build the same volumes. */
+interface Shapes {
+  boxMesh(centre: number[], size: number[]): { positions: Float32Array; indices: Uint32Array };
+  cylinderMesh(centre: number[], size: number[]): { positions: Float32Array; indices: Uint32Array };
+}
+
+async function pageShapes(): Promise<Shapes> {
+  const { build } = await import('esbuild');
+  const out = await build({ entryPoints: [join(root, 'web/src/shapes.ts')], bundle: true, write: false, format: 'esm', platform: 'neutral', logLevel: 'silent' });
+  return (await import(`data:text/javascript;base64,${Buffer.from(out.outputFiles[0].text).toString('base64')}`)) as Shapes;
+}
+
+test("the page's box and cylinder volumes are closed and face outwards", async () => {
+  const shapes = await pageShapes();
+  const cases = [
+    { mesh: shapes.boxMesh([1, 2, 3], [4, 5, 6]), volume: 4 * 5 * 6 },
+    // a 48-gon's area is 24 sin(2π/48) r1 r2
+    { mesh: shapes.cylinderMesh([0, 0, 5], [10, 6, 10]), volume: 24 * Math.sin((2 * Math.PI) / 48) * 5 * 3 * 10 },
+  ];
+  for (const { mesh, volume } of cases) {
+    const { positions: p, indices: ix } = mesh;
+    const edges = new Map<string, number>();
+    let signed = 0;
+    for (let t = 0; t < ix.length; t += 3) {
+      for (let k = 0; k < 3; k++) {
+        const key = `${ix[t + k]},${ix[t + ((k + 1) % 3)]}`;
+        edges.set(key, (edges.get(key) ?? 0) + 1);
+      }
+      const [a, b, c] = [ix[t] * 3, ix[t + 1] * 3, ix[t + 2] * 3];
+      signed += (p[a] * (p[b + 1] * p[c + 2] - p[b + 2] * p[c + 1]) - p[a + 1] * (p[b] * p[c + 2] - p[b + 2] * p[c]) + p[a + 2] * (p[b] * p[c + 1] - p[b + 1] * p[c])) / 6;
+    }
+    for (const [key, n] of edges) {
+      const [a, b] = key.split(',');
+      assert.equal(n, 1, `edge ${key} used once in its direction`);
+      assert.equal(edges.get(`${b},${a}`), 1, `edge ${key} has its twin: the mesh is closed`);
+    }
+    assert.ok(Math.abs(signed - volume) < 1e-3 * volume, `outward: signed volume ${signed} ≈ ${volume}`);
+  }
+});
 
 const missing = browserMissing() ?? (modelsAvailable() ? null : 'the shared models are not there');
 if (missing && process.env.CI === 'true') throw new Error(`web page tests must run under CI=true: ${missing}`);
@@ -102,14 +146,16 @@ describe('web page', { skip: missing ?? false }, () => {
     });
   }
 
-  /** A README screenshot: no focus ring, the sidebar at its top. */
-  async function shoot(page: Page, name: string): Promise<void> {
+  /** A README screenshot: no focus ring, the sidebar at its top (or at the element `at`). */
+  async function shoot(page: Page, name: string, at?: string): Promise<void> {
     if (!shots) return;
-    await page.evaluate(() => {
+    await page.evaluate((at) => {
       (document.activeElement as HTMLElement | null)?.blur();
-      document.querySelector('.sidebar')?.scrollTo(0, 0);
+      const sidebar = document.querySelector('.sidebar')!;
+      const el = at ? (document.querySelector(at) as HTMLElement | null) : null;
+      sidebar.scrollTo(0, el ? el.offsetTop - 10 : 0);
       document.querySelectorAll('#messages .msg').forEach((m) => m.remove());
-    });
+    }, at);
     await page.waitForTimeout(400);
     await page.screenshot({ path: join(shots, name) });
   }
@@ -119,6 +165,26 @@ describe('web page', { skip: missing ?? false }, () => {
     const path = join(work, name);
     await d.saveAs(path);
     return path;
+  }
+
+  /** Set a number field (by its accessible name) and leave it, as a person does. */
+  async function setNumber(page: Page, label: string, value: number): Promise<void> {
+    const input = page.getByLabel(label, { exact: true });
+    await input.fill(String(value));
+    await input.press('Tab');
+  }
+
+  /** Add a volume to the selected object with this centre (from the object's centre and bottom) and size. */
+  async function addVolume(page: Page, type: string, shape: string, centre: number[], size: number[]): Promise<void> {
+    await page.getByLabel('Volume type', { exact: true }).selectOption(type);
+    await page.getByLabel('Volume shape', { exact: true }).selectOption(shape);
+    await page.getByRole('button', { name: 'Add volume', exact: true }).click();
+    for (const [k, axis] of ['X', 'Y', 'Z'].entries()) await setNumber(page, `Centre ${axis} mm`, centre[k]);
+    for (const [k, axis] of ['X', 'Y', 'Z'].entries()) await setNumber(page, `Size ${axis} mm`, size[k]);
+  }
+
+  async function download(page: Page, button: string, name: string): Promise<string> {
+    return saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: button, exact: true }).click()]).then(([d]) => d), name);
   }
 
   function cliSlice(model: string, config: string, out: string): Buffer {
@@ -354,6 +420,142 @@ describe('web page', { skip: missing ?? false }, () => {
       for (let i = 0; i < 4; i++) await page.mouse.wheel(0, -300);
       await shoot(page, 'tree-support.png');
     }
+    await page.close();
+  });
+
+  test('an object with its own settings, a box modifier, a negative box and a layer range: the library\'s G-code; saved as a project and reopened, the same G-code and settings (the CLI\'s for the project too)', SLOW, async () => {
+    const page = await openPage();
+    const cube = join(MODELS_DIR, 'CalibrationCube.stl');
+    await openModel(page, cube);
+    await setSetting(page, 'Wall count', '3');
+    // the object's own settings: marked where changed, and reset back to the print's
+    await setSetting(page, 'Infill density (object)', '60');
+    await setSetting(page, 'Infill angle (object)', '30');
+    const row = (key: string) => page.locator(`#object-card .setting[data-key="${key}"]`);
+    assert.match((await row('infillDensity').getAttribute('class')) ?? '', /\bchanged\b/);
+    await page.getByRole('button', { name: 'Reset Infill angle (object)', exact: true }).click();
+    assert.doesNotMatch((await row('infillAngle').getAttribute('class')) ?? '', /\bchanged\b/);
+    assert.equal(await page.getByLabel('Infill angle (object)', { exact: true }).inputValue(), '45', 'back to the print\'s value');
+    assert.equal(await page.getByLabel('Wall count (object)', { exact: true }).inputValue(), '3', 'an unchanged setting shows the print\'s');
+    // the object panel offers only settings that may vary per object; a modifier's only those that may vary inside one
+    assert.equal(await page.getByLabel('Nozzle temperature (object)', { exact: true }).count(), 0);
+    assert.equal(await page.getByLabel('Top skin thickness (object)', { exact: true }).count(), 1);
+    // a value out of range is refused in words, and not taken
+    await setSetting(page, 'Infill speed (object)', '5000');
+    await row('infillSpeed').locator('.error').filter({ hasText: /infillSpeed/ }).waitFor();
+    assert.doesNotMatch((await row('infillSpeed').getAttribute('class')) ?? '', /\bchanged\b/);
+    await setSetting(page, 'Infill speed (object)', '60');
+    await page.getByRole('button', { name: 'Reset Infill speed (object)', exact: true }).click();
+
+    const modifier = { centre: [-4, -4, 7], size: [9, 9, 10] };
+    const negative = { centre: [5, 5, 16], size: [6, 6, 10] };
+    await addVolume(page, 'modifier', 'box', modifier.centre, modifier.size);
+    assert.equal(await page.getByLabel('Top skin thickness (modifier)', { exact: true }).count(), 0, 'skin thickness may not vary inside an object');
+    await setSetting(page, 'Infill density (modifier)', '90');
+    await addVolume(page, 'negative', 'box', negative.centre, negative.size);
+    await page.getByRole('button', { name: 'Add layer range', exact: true }).click();
+    await setNumber(page, 'From Z mm', 2);
+    await setNumber(page, 'To Z mm', 4);
+    await setSetting(page, 'Infill density (layer range)', '100');
+    assert.deepEqual(
+      (await page.locator('#object-card .part-list .name').allTextContents()),
+      ['Object', 'Modifier 1', 'Negative volume 1', 'Layers 2.0–4.0 mm'],
+    );
+    if (shots) {
+      await page.getByRole('button', { name: /^Modifier 1/ }).click();
+      await page.mouse.move(460, 420);
+      for (let i = 0; i < 3; i++) await page.mouse.wheel(0, -300);
+      await shoot(page, 'objects.png', '#object-card');
+    }
+    await slice(page);
+    const gcode = readFileSync(await download(page, 'Download G-code', 'objects.gcode'), 'utf8');
+    const options = JSON.parse(readFileSync(await download(page, 'Export', 'objects.json'), 'utf8')) as Record<string, unknown>;
+    assert.deepEqual(options, { printer: 'creality-ender-3', filament: 'pla', wallCount: 3 });
+
+    // the library, given the same objects: the page's shapes where the page put them (from the model's centre and bottom)
+    const shapes = await pageShapes();
+    const bytes = readFileSync(cube);
+    const b = positionBounds(prepareMesh(mergeObjects(loadModelBytes(bytes, 'CalibrationCube.stl'))).mesh.positions);
+    const origin = [(b.min[0] + b.max[0]) / 2, (b.min[1] + b.max[1]) / 2, b.min[2]];
+    const at = (c: number[]) => c.map((v, k) => origin[k] + v);
+    const object = {
+      mesh: new Uint8Array(bytes),
+      name: 'CalibrationCube',
+      settings: { infillDensity: 60 },
+      volumes: [
+        { type: 'modifier' as const, name: 'Modifier 1', mesh: shapes.boxMesh(at(modifier.centre), modifier.size), settings: { infillDensity: 90 } },
+        { type: 'negative' as const, name: 'Negative volume 1', mesh: shapes.boxMesh(at(negative.centre), negative.size) },
+      ],
+      layerRanges: [{ fromZ: 2, toZ: 4, settings: { infillDensity: 100 } }],
+    };
+    const expected = (await new Slicer(options).slice([object])).gcode;
+    assert.ok(gcode === expected, `the page's G-code (${gcode.length} bytes) is the library's for the same objects (${expected.length} bytes)`);
+    const plain = (await new Slicer(options).slice([{ mesh: new Uint8Array(bytes), name: 'CalibrationCube', settings: { infillDensity: 60 } }])).gcode;
+    assert.notEqual(gcode, plain, 'the volumes and the layer range change the print');
+
+    // saved as a project, opened on a fresh page: the same objects, settings and G-code
+    const [projectDownload] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Save project', exact: true }).click()]);
+    assert.equal(projectDownload.suggestedFilename(), 'CalibrationCube.3mf', 'named after the first object');
+    const project = await saved(Promise.resolve(projectDownload), 'objects.3mf');
+    await page.close();
+    const again = await openPage();
+    await again.getByLabel('Open model', { exact: true }).setInputFiles(project);
+    await again.waitForFunction(() => document.querySelectorAll('#object-list li').length === 1);
+    assert.equal(await again.getByLabel('Wall count', { exact: true }).inputValue(), '3', 'the print settings come back');
+    assert.equal(await again.getByLabel('Infill density (object)', { exact: true }).inputValue(), '60');
+    assert.deepEqual(
+      await again.locator('#object-card .part-list .name').allTextContents(),
+      ['Object', 'Modifier 1', 'Negative volume 1', 'Layers 2.0–4.0 mm'],
+    );
+    await again.getByRole('button', { name: /^Modifier 1/ }).click();
+    assert.equal(await again.getByLabel('Infill density (modifier)', { exact: true }).inputValue(), '90');
+    await slice(again);
+    const reopened = readFileSync(await download(again, 'Download G-code', 'reopened.gcode'), 'utf8');
+    assert.ok(reopened === gcode, `the reopened project's G-code (${reopened.length} bytes) is the first (${gcode.length} bytes)`);
+    // strata slice on the project file (its print settings and objects as saved)
+    const r = spawnSync(process.execPath, [cli, 'slice', project, '-o', join(work, 'project-cli.gcode'), '-q'], { encoding: 'utf8' });
+    assert.equal(r.status, 0, r.stderr);
+    assert.ok(readFileSync(join(work, 'project-cli.gcode'), 'utf8') === gcode, 'strata slice on the saved project gives the page\'s G-code');
+    await again.close();
+  });
+
+  test('a volume picked in the 3D view and deleted with the Delete key; overlapping objects with different settings refused in one line', SLOW, async () => {
+    const page = await openPage();
+    const cube = join(MODELS_DIR, 'CalibrationCube.stl');
+    await openModel(page, cube);
+    // a support enforcer (a cylinder) inside the cube: the view is framed on the cube, so its middle is under the view's
+    await addVolume(page, 'support-enforcer', 'cylinder', [0, 0, 10], [10, 10, 12]);
+    const current = page.locator('#object-card .part-list button[aria-current="true"] .name');
+    await page.getByRole('button', { name: /^Object/ }).click();
+    assert.equal(await current.textContent(), 'Object');
+    const canvas = (await page.locator('#viewport canvas').boundingBox())!;
+    await page.mouse.click(canvas.x + canvas.width / 2, canvas.y + canvas.height / 2);
+    await page.waitForFunction(() => document.querySelector('#object-card .part-list button[aria-current="true"] .name')?.textContent === 'Support enforcer 1');
+    await page.keyboard.press('Delete');
+    await page.waitForFunction(() => document.querySelectorAll('#object-card .part-list li').length === 1);
+    assert.equal(await page.locator('#object-list li').count(), 1, 'the object stays');
+    // a modifier from a mesh file: it meets the cube where it is, so it stays at its own coordinates
+    const box = ['v 0 0 0', 'v 10 0 0', 'v 10 10 0', 'v 0 10 0', 'v 0 0 10', 'v 10 0 10', 'v 10 10 10', 'v 0 10 10', 'f 1 3 2', 'f 1 4 3', 'f 5 6 7', 'f 5 7 8', 'f 1 2 6', 'f 1 6 5', 'f 2 3 7', 'f 2 7 6', 'f 3 4 8', 'f 3 8 7', 'f 4 1 5', 'f 4 5 8'].join('\n');
+    await page.getByLabel('Volume type', { exact: true }).selectOption('modifier');
+    await page.getByLabel('Volume shape', { exact: true }).selectOption('mesh');
+    const [chooser] = await Promise.all([page.waitForEvent('filechooser'), page.getByRole('button', { name: 'Add volume', exact: true }).click()]);
+    await chooser.setFiles({ name: 'rib.obj', mimeType: 'text/plain', buffer: Buffer.from(box + '\n') });
+    await page.waitForFunction(() => document.querySelector('#object-card .part-list button[aria-current="true"] .name')?.textContent === 'rib');
+    for (const [label, value] of [['Centre X mm', '5'], ['Centre Z mm', '5'], ['Size Y mm', '10']]) assert.equal(await page.getByLabel(label, { exact: true }).inputValue(), value, label);
+    await page.getByRole('button', { name: 'Delete volume', exact: true }).click();
+
+    // a second cube moved onto the first, with a setting of its own: refused, naming both, in one line
+    const [x, y] = [Number(await page.getByLabel('X mm', { exact: true }).inputValue()), Number(await page.getByLabel('Y mm', { exact: true }).inputValue())];
+    await openModel(page, cube, 2);
+    await setNumber(page, 'X mm', x + 5);
+    await setNumber(page, 'Y mm', y);
+    await setSetting(page, 'Infill density (object)', '70');
+    await page.getByRole('button', { name: 'Slice', exact: true }).click();
+    const alert = page.getByRole('alert').filter({ hasText: /overlap/ });
+    await alert.waitFor({ timeout: SLOW.timeout });
+    const text = (await alert.textContent()) ?? '';
+    assert.match(text, /^Slicing failed: objects "CalibrationCube.*" and "CalibrationCube.*" overlap .*different settings/);
+    assert.ok(!text.includes('\n'), 'one line');
     await page.close();
   });
 
