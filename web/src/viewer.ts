@@ -206,23 +206,23 @@ export class Viewer {
     this.render();
   }
 
-  setObjects(list: ViewObject[]): void {
-    const keep = new Set(list.map((o) => o.id));
-    for (const [id, mesh] of this.#meshes) {
-      if (keep.has(id)) continue;
+  /** Take out of the view (and free) the meshes of `shown` whose key is not kept. */
+  #prune<K>(shown: Map<K, Mesh>, keep: ReadonlySet<K>): void {
+    for (const [k, mesh] of shown) {
+      if (keep.has(k)) continue;
       this.#objects.remove(mesh);
       mesh.geometry.dispose();
       (mesh.material as MeshStandardMaterial).dispose();
-      this.#meshes.delete(id);
+      shown.delete(k);
     }
+  }
+
+  setObjects(list: ViewObject[]): void {
+    this.#prune(this.#meshes, new Set(list.map((o) => o.id)));
     for (const o of list) {
       let mesh = this.#meshes.get(o.id);
       if (!mesh) {
-        const g = new BufferGeometry();
-        g.setAttribute('position', new BufferAttribute(o.positions, 3));
-        g.setAttribute('normal', new BufferAttribute(o.normals, 3));
-        g.computeBoundingSphere();
-        mesh = new Mesh(g, new MeshStandardMaterial({ color: COLOURS.object, roughness: 0.6, metalness: 0.05 }));
+        mesh = new Mesh(geometry(o.positions, o.normals), new MeshStandardMaterial({ color: COLOURS.object, roughness: 0.6, metalness: 0.05 }));
         mesh.matrixAutoUpdate = false;
         mesh.userData.id = o.id;
         this.#meshes.set(o.id, mesh);
@@ -247,14 +247,7 @@ export class Viewer {
 
   setVolumes(list: ViewVolume[]): void {
     const key = (v: ViewVolume) => `${v.objectId}:${v.volumeId}`;
-    const keep = new Set(list.map(key));
-    for (const [k, mesh] of this.#volumes) {
-      if (keep.has(k)) continue;
-      this.#objects.remove(mesh);
-      mesh.geometry.dispose();
-      (mesh.material as MeshStandardMaterial).dispose();
-      this.#volumes.delete(k);
-    }
+    this.#prune(this.#volumes, new Set(list.map(key)));
     for (const v of list) {
       let mesh = this.#volumes.get(key(v));
       if (!mesh) {
@@ -268,11 +261,7 @@ export class Viewer {
       if (mesh.userData.shapeKey !== v.shapeKey) {
         const { positions, normals } = v.arrays();
         mesh.geometry.dispose();
-        const g = new BufferGeometry();
-        g.setAttribute('position', new BufferAttribute(positions, 3));
-        g.setAttribute('normal', new BufferAttribute(normals, 3));
-        g.computeBoundingSphere();
-        mesh.geometry = g;
+        mesh.geometry = geometry(positions, normals);
         mesh.userData.shapeKey = v.shapeKey;
       }
       mesh.userData.pickable = v.pickable;
@@ -366,6 +355,15 @@ export class Viewer {
     });
     el.addEventListener('pointercancel', end);
   }
+}
+
+/** Triangles to draw: corners and their normals. */
+function geometry(positions: Float32Array, normals: Float32Array): BufferGeometry {
+  const g = new BufferGeometry();
+  g.setAttribute('position', new BufferAttribute(positions, 3));
+  g.setAttribute('normal', new BufferAttribute(normals, 3));
+  g.computeBoundingSphere();
+  return g;
 }
 
 /** Dragged positions snap to 0.1 mm. */
