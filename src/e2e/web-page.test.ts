@@ -152,8 +152,8 @@ describe('web page', { skip: missing ?? false }, () => {
     await page.evaluate((at) => {
       (document.activeElement as HTMLElement | null)?.blur();
       const sidebar = document.querySelector('.sidebar')!;
-      const el = at ? (document.querySelector(at) as HTMLElement | null) : null;
-      sidebar.scrollTo(0, el ? el.offsetTop - 10 : 0);
+      const el = at ? document.querySelector(at) : null;
+      sidebar.scrollTo(0, el ? el.getBoundingClientRect().top - sidebar.getBoundingClientRect().top + sidebar.scrollTop - 10 : 0);
       document.querySelectorAll('#messages .msg').forEach((m) => m.remove());
     }, at);
     await page.waitForTimeout(400);
