@@ -68,6 +68,9 @@ async function coreCount(): Promise<number> {
   return nav?.hardwareConcurrency ?? 1;
 }
 
+/** The placement settings of objects saved as placed (a project's objects are not turned or scaled again). */
+const PLACED = { upAxis: 'z', rotateX: 0, rotateY: 0, rotateZ: 0, scale: 1, scaleX: null, scaleY: null, scaleZ: null } as const;
+
 /** Settings of how a slice runs, which a project file does not choose for the machine it is opened on. */
 const RUNTIME_KEYS: ReadonlySet<string> = new Set(['threads', 'inflateBudget']);
 
@@ -229,6 +232,8 @@ export class Slicer {
     const cfg = this.#config;
     const print: Record<string, unknown> = { printer: cfg.printerId, filament: cfg.filamentId };
     for (const k of SETTING_KEYS) if (!RUNTIME_KEYS.has(k)) print[k] = cfg[k];
+    // the objects are saved as placed: turned, scaled and stood up already
+    Object.assign(print, PLACED);
     return writeProject3mf(model.objects, { printSettings: print, slic3rPrintSettings: toSlic3rKeys(print, this.#config.layerHeight) });
   }
 

@@ -240,3 +240,13 @@ test('settings that cannot vary where they are given are refused, one clear erro
   bad({ name: 'd', settings: { infillDensty: 40 } as never }, /unknown object "d" setting "infillDensty" \(did you mean "infillDensity"\?\)/);
   bad({ name: 'e', layerRanges: [{ fromZ: 1, toZ: 2, settings: { supportEnabled: true } }] }, /supportEnabled may vary per object but not inside one/);
 });
+
+test('a saved project slices to the same G-code, also when the print turned and scaled its models', async () => {
+  const options = { ...BASE, center: true, rotateZ: 90, scale: 1.5 };
+  const s = new Slicer(options as never).addObject(BAR, { settings: { infillDensity: 25 }, volumes: [{ type: 'modifier', mesh: box(70, 40, -1, 100, 80, 20), settings: { infillDensity: 70 } }] });
+  const direct = await s.slice();
+  const project = await s.saveProject();
+  const again = await new Slicer({ threads: 1 }).slice(project);
+  assert.equal(again.gcode, direct.gcode);
+  assert.ok(again.warnings.every((w) => !/ignored/.test(w)), again.warnings.join('\n'));
+});
