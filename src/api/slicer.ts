@@ -9,9 +9,7 @@ import { imageDecodeBytes } from '../shader/image.js';
 import { StrataError } from '../errors.js';
 import { MiB, prepareModel, prepareModelSteps, type PreparedModel } from './prepare-model.js';
 import type { SettingsSource } from '../mesh/types.js';
-import { writeProject3mf } from '../mesh/threemf-write.js';
 import { settingsFromSource } from '../settings/import/object-settings.js';
-import { toSlic3rKeys } from '../settings/import/to-slic3r.js';
 import { Pacer } from '../pipeline/pacer.js';
 import { runPipeline, type Progress, type ThinLoss } from '../pipeline/run.js';
 import { plateOf } from './plate.js';
@@ -234,6 +232,8 @@ export class Slicer {
     for (const k of SETTING_KEYS) if (!RUNTIME_KEYS.has(k)) print[k] = cfg[k];
     // the objects are saved as placed: turned, scaled and stood up already
     Object.assign(print, PLACED);
+    // loaded when first used: a slice that saves no project does not load the writer
+    const [{ writeProject3mf }, { toSlic3rKeys }] = await Promise.all([import('../mesh/threemf-write.js'), import('../settings/import/to-slic3r.js')]);
     return writeProject3mf(model.objects, { printSettings: print, slic3rPrintSettings: toSlic3rKeys(print, this.#config.layerHeight) });
   }
 
