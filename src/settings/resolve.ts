@@ -4,7 +4,7 @@
  */
 import { StrataError } from '../errors.js';
 import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey, type Settings, type SliceOptions } from './schema.js';
-import { findFilament, findPrinter, listPresets } from './presets/index.js';
+import { findFilament, findPrinter, listPresets, printerWithoutPreset } from './presets/index.js';
 
 /** Values computed once from the settings; algorithms read these rather than re-deriving them. */
 export interface Derived {
@@ -165,6 +165,12 @@ export function resolveConfig(options: SliceOptions = {}): Config {
   const printer = findPrinter(printerId);
   const presets = listPresets();
   if (!printer) {
+    const gap = printerWithoutPreset(printerId);
+    if (gap) {
+      const [x, y, z] = gap.size;
+      const size = `buildPlateWidth ${x}, buildPlateLength ${y}, buildVolumeHeight ${z}`;
+      throw new StrataError('UNKNOWN_PRESET', `no printer preset for ${gap.name} ("${printerId}"): ${gap.why}${gap.kind === 'g-code' ? `; a generic Marlin printer with its size (${size}) slices for it` : ''}`);
+    }
     const s = suggest(printerId, presets.printers.map((p) => p.id));
     throw new StrataError('UNKNOWN_PRESET', `unknown printer "${printerId}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata presets\` lists them`);
   }

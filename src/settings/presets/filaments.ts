@@ -5,6 +5,7 @@
  * sheets for a 0.4 mm brass (or, for the fibre-filled ones, hardened) nozzle.
  */
 import type { Settings } from '../schema.js';
+import { brandFilaments } from './brand-filaments.js';
 
 export interface FilamentPreset {
   /** Lower-case, hyphenated, unique among filaments. */
@@ -32,9 +33,9 @@ function freezePreset(d: Draft): FilamentPreset {
   });
 }
 
-/** Every filament preset, in display order. */
-export const FILAMENTS: readonly FilamentPreset[] = Object.freeze(
-  ([
+/** The generic materials, in display order. */
+const GENERIC: readonly Draft[] = (
+  [
     {
       id: 'pla',
       name: 'Generic PLA',
@@ -379,5 +380,8 @@ export const FILAMENTS: readonly FilamentPreset[] = Object.freeze(
         fanSpeed: 0, firstLayerFanSpeed: 0, minLayerTime: 20, filamentDensity: 1.3,
       },
     },
-  ] satisfies Draft[]).map(freezePreset),
+  ] satisfies Draft[]
 );
+
+/** Every filament preset, in display order: the generic materials, then branded spools of them (brand-filaments.ts). */
+export const FILAMENTS: readonly FilamentPreset[] = Object.freeze([...GENERIC, ...brandFilaments(GENERIC)].map(freezePreset));

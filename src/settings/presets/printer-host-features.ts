@@ -68,6 +68,7 @@ export const PRINTER_HOST_FEATURES: Readonly<Record<string, Readonly<Partial<Set
   'creality-ender-5-s1': CREALITY_MARLIN_LIMITS,
   'creality-ender-5-plus': CREALITY_MARLIN_LIMITS,
   'creality-cr-10': CREALITY_MARLIN_LIMITS,
+  'creality-cr-10-s5': CREALITY_MARLIN_LIMITS,
   'creality-k1': K1,
   'creality-k1-max': K1,
   'creality-k1c': K1,

@@ -827,5 +827,101 @@ export const PRINTERS: readonly PrinterPreset[] = Object.freeze(
       endGcode: PRESENT_BED,
     },
   },
+
+  // ── printers the seeds' library (Polyslice) names, from the makers' specifications ──
+  {
+    id: 'creality-cr-10-s5',
+    name: 'Creality CR-10 S5',
+    aliases: ['cr-10-s5', 'cr10s5', 'cr-10 s5'],
+    extruder: 'bowden',
+    settings: {
+      buildPlateWidth: 500, buildPlateLength: 500, buildVolumeHeight: 500,
+      gcodeFlavor: 'marlin', acceleration: 500, cornerVelocity: 8, maxSpeed: 500,
+      ...BOWDEN_5,
+      startGcode: creality220Start(),
+      endGcode: PRESENT_BED,
+    },
+  },
+  {
+    id: 'creality-ender-6',
+    name: 'Creality Ender-6',
+    aliases: ['ender-6', 'ender6', 'ender 6'],
+    extruder: 'bowden',
+    settings: {
+      // CoreXY; the bed moves in Z.
+      buildPlateWidth: 250, buildPlateLength: 250, buildVolumeHeight: 400,
+      gcodeFlavor: 'marlin', acceleration: 1000, cornerVelocity: 8, maxSpeed: 150,
+      ...BOWDEN_5,
+      startGcode: creality220Start(),
+      endGcode: marlinEnd({ present: 'lower-bed' }),
+    },
+  },
+  {
+    id: 'anycubic-kobra',
+    name: 'Anycubic Kobra',
+    aliases: ['kobra'],
+    extruder: 'direct',
+    settings: {
+      buildPlateWidth: 220, buildPlateLength: 220, buildVolumeHeight: 250,
+      gcodeFlavor: 'marlin', acceleration: 1000, cornerVelocity: 8, maxSpeed: 180,
+      retractionDistance: 0.8, retractionSpeed: 40,
+      startGcode: creality220Start(['M420 S1 ; use the saved LeviQ mesh']),
+      endGcode: PRESENT_BED,
+    },
+  },
+  {
+    id: 'elegoo-neptune-3',
+    name: 'Elegoo Neptune 3',
+    aliases: ['neptune-3', 'neptune3', 'neptune 3'],
+    extruder: 'direct',
+    settings: {
+      buildPlateWidth: 220, buildPlateLength: 220, buildVolumeHeight: 280,
+      gcodeFlavor: 'marlin', acceleration: 1000, cornerVelocity: 8, maxSpeed: 180,
+      retractionDistance: 0.8, retractionSpeed: 40,
+      startGcode: creality220Start(['M420 S1 ; use the saved mesh']),
+      endGcode: PRESENT_BED,
+    },
+  },
+  {
+    id: 'artillery-genius',
+    name: 'Artillery Genius',
+    aliases: ['genius'],
+    extruder: 'direct',
+    settings: {
+      buildPlateWidth: 220, buildPlateLength: 220, buildVolumeHeight: 250,
+      gcodeFlavor: 'marlin', acceleration: 500, cornerVelocity: 10, maxSpeed: 150,
+      // Titan-type direct drive.
+      retractionDistance: 1, retractionSpeed: 35,
+      startGcode: creality220Start(),
+      endGcode: PRESENT_BED,
+    },
+  },
+  {
+    id: 'sovol-sv06-plus',
+    name: 'Sovol SV06 Plus',
+    aliases: ['sv06-plus', 'sv06plus', 'sv06 plus'],
+    extruder: 'direct',
+    settings: {
+      buildPlateWidth: 300, buildPlateLength: 300, buildVolumeHeight: 340,
+      gcodeFlavor: 'marlin', acceleration: 1250, cornerVelocity: 8, maxSpeed: 180,
+      retractionDistance: 0.5, retractionSpeed: 30,
+      startGcode: marlinStart({ afterHome: ['G29 ; mesh bed levelling (inductive probe)'], prime: frontEdgePrime(1, 5, 145) }),
+      endGcode: PRESENT_BED,
+    },
+  },
+  {
+    id: 'kingroon-kp3s',
+    name: 'Kingroon KP3S',
+    aliases: ['kp3s'],
+    extruder: 'direct',
+    settings: {
+      buildPlateWidth: 180, buildPlateLength: 180, buildVolumeHeight: 180,
+      gcodeFlavor: 'marlin', acceleration: 1000, cornerVelocity: 8, maxSpeed: 200,
+      // Titan-type direct drive.
+      retractionDistance: 1, retractionSpeed: 35,
+      startGcode: marlinStart({ prime: frontEdgePrime(2, 5, 90) }),
+      endGcode: PRESENT_BED,
+    },
+  },
   ] satisfies Draft[]).map(freezePreset),
 );
