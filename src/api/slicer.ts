@@ -10,8 +10,8 @@ import { StrataError } from '../errors.js';
 import { MiB, prepareModel, prepareModelSteps, type PreparedModel } from './prepare-model.js';
 import type { SettingsSource } from '../mesh/types.js';
 import { settingsFromSource } from '../settings/import/object-settings.js';
-import { Pacer } from '../pipeline/pacer.js';
-import { runPipeline, type Progress, type ThinLoss } from '../pipeline/run.js';
+import { Pacer, paced, wait, type Steps } from '../pipeline/pacer.js';
+import { runPipelineSteps, type Progress, type RunResult, type ThinLoss } from '../pipeline/run.js';
 import { plateOf } from './plate.js';
 import { ConfigTable } from '../settings/scoped.js';
 import type { PrintPlan } from '../plan/types.js';
@@ -243,6 +243,19 @@ export class Slicer {
     return this;
   }
 
+  /**
+   * Slice at once, on this thread (no workers, nothing awaited), and return the whole G-code: the same
+   * G-code as `slice()` with the same settings. It blocks the thread for the whole slice, so in a page run
+   * it in a worker. Cancellation: a signal already aborted stops it. A custom infill needs its compiler
+   * loaded first (always in Node; in a browser `await loadCustomInfill()`).
+   */
+  sliceSync(input?: unknown, opts: Omit<SliceCallOptions, 'signal'> & { signal?: AbortSignal } = {}): SliceResult {
+    const chunks: string[] = [];
+    const steps = this.#sliceSteps({ input: input === undefined && this.#objects.length ? this.#objects : input }, opts, (c) => chunks.push(c), true);
+    const { stats, warnings } = new Pacer(opts.signal).driveSync(steps);
+    return { gcode: chunks.join(''), stats, warnings };
+  }
+
   /** Slice and return the whole G-code as a string. */
   // slice and sliceToSink hand `input` on without awaiting, so that only the slice holds it, and lets it go
   // once the model is read (a file's bytes are not kept while the G-code is made)
@@ -260,47 +273,49 @@ export class Slicer {
   slicePlan(input?: unknown, opts: SliceCallOptions = {}, sink: (chunk: string) => void = () => {}): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     // the input travels in a box the slice empties once the model is read (an async function's own
     // parameters stay alive until it returns)
-    return this.#slicePlan({ input: input === undefined && this.#objects.length ? this.#objects : input }, opts, sink);
+    const pacer = new Pacer(opts.signal);
+    return pacer.drive(this.#sliceSteps({ input: input === undefined && this.#objects.length ? this.#objects : input }, opts, sink, false));
   }
 
-  async #slicePlan(given: { input: unknown }, opts: SliceCallOptions, sink: (chunk: string) => void): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
+  /** The slice as paced steps; `sync`: on this thread only (one thread, nothing to wait for). */
+  *#sliceSteps(given: { input: unknown }, opts: SliceCallOptions, sink: (chunk: string) => void, sync: boolean): Steps<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
     // refuse what would fail only after slicing: templates the flavour cannot run, an image over budget
     checkTemplatesForFlavor(cfg);
     if (this.#custom) checkImageBudget(this.#custom, cfg);
     // the shader compiler loads on first use (the pipeline compiles the infiller and reports its errors)
-    if (this.#custom) await loadCustomInfill();
+    if (this.#custom && !loadedCustomInfill()) {
+      if (sync) throw new StrataError('BAD_SETTING', 'a custom infill in a synchronous slice needs the shader compiler loaded first: await loadCustomInfill(), or use slice()');
+      yield* wait(loadCustomInfill());
+    }
     // Workers start loading now, while the model is read and placed, if they will be needed (a custom
     // density given as a JS function cannot travel to a worker).
-    const auto = await autoThreads();
-    const wanted = cfg.threads > 0 ? cfg.threads : inputBytes(given.input) >= EARLY_START_BYTES ? auto : 1;
+    const auto = sync ? 1 : yield* wait(autoThreads());
+    const wanted = sync ? 1 : cfg.threads > 0 ? cfg.threads : inputBytes(given.input) >= EARLY_START_BYTES ? auto : 1;
     const started = wanted > 1 && (!this.#custom || isTransferable(this.#custom)) ? startWorkers(wanted - 1) : undefined;
-    let run: Awaited<ReturnType<typeof runPipeline>>;
+    let run: RunResult;
     let model: PreparedModel;
     let threads: number;
     try {
       // paced like the slice itself, so an abort acts while a big model is still being read
-      model = await new Pacer(opts.signal).run(prepareModelSteps(given.input, cfg, (project) => this.#projectConfig(project)));
+      model = yield* paced(prepareModelSteps(given.input, cfg, (project) => this.#projectConfig(project)));
       // the meshes are made: the caller's bytes need not stay alive here while the slice runs
       given.input = undefined;
       const b = positionBounds(model.mesh.positions);
       const layersEstimate = b.max[2] / cfg.layerHeight;
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
-      threads = cfg.threads > 0 ? cfg.threads : small ? 1 : auto;
+      threads = sync ? 1 : cfg.threads > 0 ? cfg.threads : small ? 1 : auto;
       const warnings = [...model.warnings];
       const plate = plateOf(model.objects, model.project?.options ?? this.#options, model.config, warnings, model.project?.settings);
       model = { ...model, warnings };
-      run = await runPipeline(plate, {
-        threads,
-        sink,
-        onProgress: opts.onProgress,
-        signal: opts.signal,
-        custom: this.#custom,
-        started,
-      });
+      run = yield* runPipelineSteps(
+        plate,
+        { threads, sink, onProgress: opts.onProgress, signal: opts.signal, custom: this.#custom, started },
+        new Pacer(opts.signal),
+      );
     } catch (e) {
-      if (started) await releaseWorkers(started);
+      if (started) yield* wait(releaseWorkers(started));
       throw e;
     }
     const stats: SliceStats = {

@@ -4,8 +4,8 @@
  * - Every setting (walked generically over the schema): each value tried is either refused with one
  *   line, or slices; at least one accepted value changes the G-code (every value, for a choice), or a
  *   value the setting limits by is refused by the slice itself (a model taller than the volume).
- *   `onlyWith` settings are set first, `needs` inputs given. Runtime settings (threads…) must leave
- *   the G-code byte-identical. Out-of-range values are refused.
+ *   `onlyWith` settings are set first (a list's first value), `needs` inputs given. Runtime settings
+ *   (threads…) must leave the G-code byte-identical. Out-of-range values are refused.
  * - Every other flag (args.ts FLAGS): proven to act on each command it belongs to, and refused by
  *   every command it does not belong to.
  */
@@ -157,7 +157,7 @@ test('every setting flag changes the G-code (or is refused by the slice it limit
   for (const key of SETTING_KEYS) {
     const def: SettingDef = SCHEMA[key];
     const context: string[] = [];
-    for (const [k, v] of Object.entries(def.onlyWith ?? {})) context.push(...setting(k, v));
+    for (const [k, v] of Object.entries(def.onlyWith ?? {})) context.push(...setting(k, Array.isArray(v) ? v[0] : v));
     const need = def.needs ? NEEDS[def.needs] : { args: [], models: [MODEL] };
     context.push(...need.args);
     const base = await baseline(context, need.models);

@@ -48,7 +48,7 @@ export function cmdSettings(args: ParsedArgs, write: Write): void {
     const range =
       d.type === 'number' || d.type === 'integer' ? ` [${d.min}–${d.max}]` : d.type === 'enum' ? ` {${d.values.join('|')}}` : d.type === 'boolean' ? ' (--no-' + kebab(key) + ')' : '';
     const def = d.type === 'string' ? '(template)' : JSON.stringify(d.default);
-    const only = d.onlyWith ? `  (only with ${Object.entries(d.onlyWith).map(([k, v]) => `${kebab(k)}=${String(v)}`).join(', ')})` : '';
+    const only = d.onlyWith ? `  (only with ${Object.entries(d.onlyWith).map(([k, v]) => `${kebab(k)}=${Array.isArray(v) ? v.join('|') : String(v)}`).join(', ')})` : '';
     write(`--${kebab(key)} ${d.unit ? `(${d.unit}) ` : ''}default ${def}${range}${only}  [${SETTING_SCOPE[key]}]\n    ${d.description}\n`);
   }
 }

@@ -40,6 +40,8 @@ interface RoleRule {
   overAir?: OverAirRule;
   /** Loops start at the seam setting's place (`configured`) or wherever the nozzle is nearest. */
   seam: 'configured' | 'nearest';
+  /** Closed loops may start on a scarf ramp (the scarfSeam setting says which walls). */
+  scarf?: true;
 }
 
 const BRIDGE: OverAirRule = {
@@ -70,6 +72,7 @@ export const ROLES = {
     innerSpeed: (c) => c.innerWallSpeed,
     overAir: OVERHANG_WALL,
     seam: 'configured',
+    scarf: true,
   },
   'wall-gap': { feature: 'WALL-INNER', speed: (c) => c.innerWallSpeed, seam: 'nearest' },
   infill: { feature: 'FILL', speed: (c) => c.infillSpeed, seam: 'configured' },
@@ -94,6 +97,18 @@ export interface ExtrusionStyle {
   fan?: number;
 }
 
+/** A scarf seam, as the region's settings make it (the planner lays it: plan/scarf.ts). */
+export interface ScarfStyle {
+  /** Length of the ramp along the loop, mm. */
+  length: number;
+  /** Height above the layer below where the ramp starts, a fraction of the layer height. */
+  startHeight: number;
+  /** The ramp is at least this many moves. */
+  steps: number;
+  /** Only where the seam is not in a sharp corner. */
+  conditional: boolean;
+}
+
 /** An entry's resolved style. */
 export interface EntryStyle {
   normal: ExtrusionStyle;
@@ -102,6 +117,8 @@ export interface EntryStyle {
   seam: 'configured' | 'nearest';
   /** Print order within a group (the role's rank). */
   rank: number;
+  /** Closed loops start on a scarf ramp (absent: a plain seam). */
+  scarf?: ScarfStyle;
 }
 
 const cache = new WeakMap<Config, Map<string, EntryStyle>>();
@@ -136,7 +153,16 @@ function makeStyle(cfg: Config, role: PathRole, wall: number | undefined): Entry
     const same = a.feature === normal.feature && a.speed === normal.speed && a.flow === normal.flow && a.fan === undefined;
     if (!same) overAir = a;
   }
-  return { normal, overAir, seam: rule.seam, rank: RANK[role] };
+  const style: EntryStyle = { normal, overAir, seam: rule.seam, rank: RANK[role] };
+  const scarf = rule.scarf ? scarfOf(cfg, wall ?? 0) : undefined;
+  if (scarf) style.scarf = scarf;
+  return style;
+}
+
+/** The scarf seam of wall `wall`'s loops by the region's settings (none: undefined). */
+function scarfOf(cfg: Config, wall: number): ScarfStyle | undefined {
+  if (cfg.scarfSeam === 'off' || (cfg.scarfSeam === 'outer' && wall > 0)) return undefined;
+  return { length: cfg.scarfLength, startHeight: cfg.scarfStartHeight / 100, steps: cfg.scarfSteps, conditional: cfg.scarfConditional };
 }
 
 /** Whether the parts of an entry's paths over air print any differently (else they are not marked at all). */

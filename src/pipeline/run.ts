@@ -29,10 +29,10 @@ import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../wo
 import type { Port } from '../workers/ports.js';
 import { pathsContext, pathsOf, rangeSteps, type HeldJob, type PathsParams, type RangeJob, type RangeResult, type RegionsHeld, type RegionsJob } from './layer-work.js';
 import type { CustomInfillSpec } from './custom-infill.js';
-import { isTransferable, loadCustomInfill } from './custom-infill-loader.js';
+import { isTransferable, loadCustomInfill, loadedCustomInfill } from './custom-infill-loader.js';
 import { planObjects } from './objects.js';
 import type { PlacedObject, PlateSetup } from './print-setup.js';
-import { Pacer } from './pacer.js';
+import { Pacer, paced, wait, type Steps } from './pacer.js';
 
 export type { PlacedObject, PlateSetup } from './print-setup.js';
 
@@ -125,8 +125,8 @@ function ranges(n: number, threads: number): Array<[number, number]> {
 
 interface Runner {
   pool: LayerPool | null;
-  /** Computes a job on the calling thread, step by step; `onLayer` after each layer. */
-  local: (job: RangeJob) => Promise<RangeResult>;
+  /** Computes a job on the calling thread, step by step (a pause after each layer). */
+  local: (job: RangeJob) => Steps<RangeResult>;
   pacer: Pacer;
   signal?: AbortSignal;
 }
@@ -135,11 +135,11 @@ interface Runner {
  * Run the jobs; `onResult` sees each result as it arrives (in any order with a pool), with where it was
  * computed (a worker's index, or -1 on this thread).
  */
-async function runJobs(jobs: RangeJob[], runner: Runner, onResult: (id: number, r: RangeResult, where: number) => void): Promise<void> {
+function* runJobs(jobs: RangeJob[], runner: Runner, onResult: (id: number, r: RangeResult, where: number) => void): Steps<void> {
   const { pool, local, pacer } = runner;
   pacer.check();
-  if (pool) return pool.run(jobs, { local, onResult, signal: runner.signal, helpAboveMs: HELP_ABOVE_MS });
-  for (let id = 0; id < jobs.length; id++) onResult(id, await local(jobs[id]), -1);
+  if (pool) return yield* wait(pool.run(jobs, { local: (job) => pacer.drive(local(job)), onResult, signal: runner.signal, helpAboveMs: HELP_ABOVE_MS }));
+  for (let id = 0; id < jobs.length; id++) onResult(id, yield* local(jobs[id]), -1);
 }
 
 /** The config of the first region whose pattern is a whole-model pass (lightning), if any. */
@@ -166,11 +166,30 @@ function needsRegionsFirst(setup: PrintSetup, custom: CustomInfillSpec | undefin
   return anySupport(setup) || setup.configs[0].adhesionType === 'raft' || !!wholeModelInfill(setup, custom);
 }
 
-export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<RunResult> {
+/** Run the pipeline, pacing the calling thread's work (see Pacer). */
+export function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<RunResult> {
+  const pacer = new Pacer(opts.signal);
+  return pacer.drive(runPipelineSteps(plate, opts, pacer));
+}
+
+/**
+ * Run the pipeline on the calling thread at once, without workers: the same stages and the same G-code as
+ * `runPipeline` with any thread count. Throws if something would have to be waited for (a custom infill's
+ * compiler not loaded yet).
+ */
+export function runPipelineSync(plate: PlateSetup, opts: Omit<RunOptions, 'threads' | 'started'>): RunResult {
+  const pacer = new Pacer(opts.signal);
+  return pacer.driveSync(runPipelineSteps(plate, { ...opts, threads: 1 }, pacer));
+}
+
+/**
+ * The pipeline as steps: a pause point after each piece of calling-thread work (layer, object, pass step),
+ * and a promise where it waits (workers, the compiler); the driver resumes it with the promise's value.
+ */
+export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pacer): Steps<RunResult> {
   const { signal } = opts;
   const { setup, objects } = plate;
   const cfg = setup.configs[0];
-  const pacer = new Pacer(signal);
   pacer.check();
   let height = 0;
   for (const o of objects) {
@@ -191,13 +210,13 @@ export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<
   for (let k = 0; k < plate.meshes.length && workers === 0; k++) {
     meshes ??= [];
     meshes.push(prepareForSlicing(plate.meshes[k]));
-    await pacer.pause();
+    yield;
   }
-  const pool = workers > 0 ? await createPool(workers, prepared, setup, opts.custom, opts.started) : null;
-  if (!pool && opts.started) await releaseWorkers(opts.started);
+  const pool = workers > 0 ? yield* wait(createPool(workers, prepared, setup, opts.custom, opts.started)) : null;
+  if (!pool && opts.started) yield* wait(releaseWorkers(opts.started));
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
-    const custom = opts.custom ? (await loadCustomInfill()).customGenerator(opts.custom, cfg) : undefined;
+    const custom = opts.custom ? (loadedCustomInfill() ?? (yield* wait(loadCustomInfill()))).customGenerator(opts.custom, cfg) : undefined;
     const twoPhase = needsRegionsFirst(setup, opts.custom);
     // progress: the layer work is 80 % of the run (regions and paths halves when there are two phases)
     const total = layers.length * (twoPhase ? 2 : 1);
@@ -212,14 +231,14 @@ export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<
       pool,
       pacer,
       signal,
-      local: async (job) => {
+      local: function* (job) {
         // a paths or held job reads its regions, not the meshes
         const steps = rangeSteps(job.kind === 'paths' || job.kind === 'held' ? [] : prepared(), setup, job, custom, heldHere);
         for (;;) {
           const s = steps.next();
           if (s.done) return s.value;
           if (!pool) layerDone(1);
-          await pacer.pause();
+          yield;
         }
       },
     };
@@ -253,7 +272,7 @@ export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<
       const regionJobs: RegionsJob[] = split.map(([from, to]) => ({ kind: 'regions', layers, from, to, modelPaths: hold ? undefined : modelPaths, hold }));
       const regionResults: RangeResult[] = [];
       const where: number[] = [];
-      await runJobs(regionJobs, runner, (id, r, w) => {
+      yield* runJobs(regionJobs, runner, (id, r, w) => {
         regionResults[id] = r;
         where[id] = w;
         jobDone(regionJobs[id]);
@@ -270,11 +289,11 @@ export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<
         : null;
       // its failure is met where it is awaited, after the support pass
       heldRun?.catch(() => {});
-      await pacer.run(objectsSupportPass(regions, setup.configs, setup.objects.map((o) => o.config)));
+      yield* paced(objectsSupportPass(regions, setup.configs, setup.objects.map((o) => o.config)));
       if (hold) {
         // the model paths of the ranges this thread made, then the workers'
-        for (let id = 0; id < regionJobs.length; id++) if (where[id] < 0) heldPaths[id] = (await runner.local(heldJob(id))).paths;
-        await heldRun;
+        for (let id = 0; id < regionJobs.length; id++) if (where[id] < 0) heldPaths[id] = (yield* runner.local(heldJob(id))).paths;
+        yield* wait(heldRun!);
         for (let id = 0; id < regionJobs.length; id++) regionResults[id].paths = heldPaths[id];
       }
       let preparedInfill: unknown[] | undefined;
@@ -302,7 +321,7 @@ export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<
         for (let i = 0; i < regions.length; i++) {
           plan(withSharedGroups(model[i], regions[i], pathsContext(regions[i], setup, common, custom, [])));
           layerDone(1);
-          await pacer.pause();
+          yield;
         }
       } else {
         const supportOf = (r: LayerRegions | undefined): ExPolygon[] => {
@@ -329,7 +348,7 @@ export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<
     const arrived: Array<RangeResult | undefined> = new Array(jobs.length);
     let nextToPlan = 0;
     if (jobs.length) {
-      await runJobs(jobs, runner, (id, r) => {
+      yield* runJobs(jobs, runner, (id, r) => {
         jobDone(jobs[id]);
         arrived[id] = r;
         for (let ready = arrived[nextToPlan]; ready; ready = arrived[nextToPlan]) {
@@ -340,7 +359,7 @@ export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<
     }
     // the workers' memory and the meshes' slicing structures go back before the G-code is written
     meshes = null;
-    await pool?.close();
+    if (pool) yield* wait(pool.close());
     pacer.check();
     report('planning', 0.8);
     const printPlan: PrintPlan = { layers: planned, objects: planObjects(objects), bounds: planBounds(planned) };
@@ -348,14 +367,14 @@ export async function runPipeline(plate: PlateSetup, opts: RunOptions): Promise<
     pacer.check();
     const n = planned.length;
     let k = 0;
-    const estimate = await pacer.run(estimatePlanSteps(printPlan, cfg), () => report('planning', 0.8 + (0.1 * ++k) / n));
+    const estimate = yield* paced(estimatePlanSteps(printPlan, cfg), () => report('planning', 0.8 + (0.1 * ++k) / n));
     k = 0;
     const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
-    await pacer.run(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
+    yield* paced(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
     return { plan: printPlan, estimate, layers: planned.length, thinLost };
   } finally {
-    await pool?.close();
+    if (pool) yield* wait(pool.close());
   }
 }
 

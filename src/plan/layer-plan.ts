@@ -11,6 +11,7 @@ import type { Config } from '../settings/resolve.js';
 import { combRoute, makeCombArea, pathLength, type CombArea } from './comb.js';
 import { GROUP_ORDER, type EntryStyle, type ExtrusionStyle } from '../paths/roles.js';
 import { sortEntries } from './print-order.js';
+import { scarfRuns } from './scarf.js';
 import { chooseSeam, rotateLoop } from './seam.js';
 import { PartGuard } from './support-travel.js';
 import type { ExtrudeStep, LayerPlan, PlanStep } from './types.js';
@@ -218,6 +219,18 @@ function lineRun(entry: PathEntry, i: number, flip: boolean): Run {
   return { points: line.slice().reverse(), closed: false, width, widths: reverseChannel(widths), z: reverseChannel(z), flags: reverseChannel(flags) };
 }
 
+/**
+ * Loop i of the entry from point s: on a scarf ramp where the entry's style asks for one (scarf.ts; never on
+ * the object's first layer, which has nothing below to ramp from), else with a plain seam.
+ */
+function printLoop(ctx: Ctx, entry: PathEntry, style: EntryStyle, i: number, s: number): void {
+  const run = loopRun(entry, i, s);
+  const scarf = entry.style.scarf;
+  const runs = scarf && !ctx.first && ctx.layer.index > 0 ? scarfRuns(run, scarf, ctx.layer.height) : null;
+  if (!runs) return extrudeFlagged(ctx, style, run);
+  for (const r of runs) extrudeFlagged(ctx, style, r);
+}
+
 /** Closed loops nearest-first, each starting at its seam (by the seam setting) or wherever is nearest. */
 function printLoops(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
   const loops = entry.paths;
@@ -227,7 +240,7 @@ function printLoops(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
     // one loop (a tree branch's wall, most of a layer's support): no order to find
     const loop = loops[0];
     const s = mode === 'nearest' ? chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0) : chooseSeam(loop, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo);
-    extrudeFlagged(ctx, style, loopRun(entry, 0, s));
+    printLoop(ctx, entry, style, 0, s);
     ctx.loopNo += 1;
     return;
   }
@@ -242,7 +255,7 @@ function printLoops(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
   for (let k = 0; k < order.length; k++) {
     const i = order[k][0];
     const s = seams[i] >= 0 ? seams[i] : chooseSeam(loops[i], 'nearest', ctx.at, 0, 0, 0);
-    extrudeFlagged(ctx, style, loopRun(entry, i, s));
+    printLoop(ctx, entry, style, i, s);
   }
   ctx.loopNo += loops.length;
 }

@@ -21,15 +21,19 @@ export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' |
  */
 export type SettingNeed = 'several-models' | 'off-centre-model' | 'thin-walls' | 'thin-features' | 'overhangs' | 'custom-infill' | 'custom-image-infill';
 
+/** A value `onlyWith` asks another setting for, or a list of values any of which will do. */
+export type OnlyWithValue = string | number | boolean | readonly string[];
+
 interface Base {
   unit: Unit;
   description: string;
   stage: Stage;
   /**
    * The setting matters only while these other settings have these values (e.g. brimWidth only with
-   * `{ adhesionType: 'brim' }`). UIs show it only then; the every-flag CLI test sets them first.
+   * `{ adhesionType: 'brim' }`; a list: any of its values). UIs show it only then; the every-flag CLI test
+   * sets them first (a list's first value).
    */
-  onlyWith?: Readonly<Record<string, string | number | boolean>>;
+  onlyWith?: Readonly<Record<string, OnlyWithValue>>;
   /** The setting matters only with this kind of input (see SettingNeed). */
   needs?: SettingNeed;
 }
@@ -113,7 +117,7 @@ const str = (def: string, stage: Stage, description: string, maxLength = 65536, 
 });
 
 /** A definition that matters only when `onlyWith` holds (and, optionally, with a `needs` input). */
-const when = <D extends SettingDef>(def: D, onlyWith: Readonly<Record<string, string | number | boolean>> | null, needs?: SettingNeed): D => ({
+const when = <D extends SettingDef>(def: D, onlyWith: Readonly<Record<string, OnlyWithValue>> | null, needs?: SettingNeed): D => ({
   ...def,
   ...(onlyWith ? { onlyWith } : {}),
   ...(needs ? { needs } : {}),
@@ -299,6 +303,13 @@ export const SCHEMA = {
   bridgeFlow: when(num(100, 10, 200, '%', 'skin', 'Flow of bridge lines, % of normal.'), null, 'overhangs'),
   bridgeFanSpeed: when(num(100, 0, 100, '%', 'cooling', 'Part-cooling fan while printing bridges.'), null, 'overhangs'),
   overhangWallSpeed: when(num(15, 1, 1000, 'mm/s', 'walls', 'Speed of walls where they hang over nothing on the layer below.'), null, 'overhangs'),
+
+  // ── scarf seams and fuzzy skin ───────────────────────────────────────────────
+  scarfSeam: enm(['off', 'outer', 'all'] as const, 'off', 'walls', "Scarf joint seams: a wall loop starts on a ramp, the nozzle rising from scarfStartHeight to the layer's height and the flow growing with it over scarfLength, and ends by printing over the ramp again at the layer's height with the flow shrinking to nothing, so the seam is a long slope instead of a blob. On the outer wall's loops (outer, holes included), on every wall loop (all), or nowhere (off). Never on the first layer; a loop shorter than scarfLength keeps a plain seam."),
+  scarfLength: when(num(20, 0.5, 200, 'mm', 'walls', 'Length of the scarf ramp along the loop, from the seam.'), { scarfSeam: ['outer', 'all'] }),
+  scarfStartHeight: when(num(10, 0, 90, '%', 'walls', 'Where the scarf ramp starts above the layer below, % of the layer height (the nozzle never comes closer than 0.02 mm to the layer below).'), { scarfSeam: ['outer', 'all'] }),
+  scarfSteps: when(int(10, 1, 100, 'count', 'walls', 'The scarf ramp is written as at least this many moves of equal length (more where the loop has corners within it), Z and flow rising along each.'), { scarfSeam: ['outer', 'all'] }),
+  scarfConditional: when(bool(false, 'walls', "Scarf only where the seam is not in a sharp corner (one turning 40° or more within a line width either side, where an aligned seam hides): a corner's seam stays plain."), { scarfSeam: ['outer', 'all'] }),
 
   // ── runtime ──────────────────────────────────────────────────────────────────
   threads: int(0, 0, 256, 'count', 'runtime', 'Threads for the per-layer stages (0 = automatic: one per core above two cores, else one). The G-code is the same for any count.'),
