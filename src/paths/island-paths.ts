@@ -15,6 +15,7 @@ import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { makeEntry } from './entry.js';
+import { fuzzyWalls } from './fuzzy-skin.js';
 import type { PathEntry, PathGroup } from './types.js';
 
 export interface IslandContext {
@@ -114,8 +115,10 @@ export function islandGroup(island: IslandRegions, ctx: IslandContext): PathGrou
   const wallsOverAir = island.unsupported.length ? island.unsupported : null;
   for (const set of island.walls) {
     if (set.paths.length === 0) continue;
-    const opts = { wall: set.role === 'wall' ? set.wall : undefined, widths: set.widths ?? undefined, overAir: set.role === 'wall' ? wallsOverAir : null };
-    entries.push(makeEntry(cfg, set.role, set.closed, set.paths, w, opts));
+    // the outer wall made rough where fuzzy skin is on (fuzzy-skin.ts), its widths with it
+    const { paths, widths } = fuzzyWalls(set, cfg, ctx.layer.index);
+    const opts = { wall: set.role === 'wall' ? set.wall : undefined, widths: widths ?? undefined, overAir: set.role === 'wall' ? wallsOverAir : null };
+    entries.push(makeEntry(cfg, set.role, set.closed, paths, w, opts));
   }
   entries.push(...fillEntries(island, ctx));
   if (island.fills) for (const f of island.fills) entries.push(...fillEntries(f, ctx));

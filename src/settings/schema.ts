@@ -310,6 +310,9 @@ export const SCHEMA = {
   scarfStartHeight: when(num(10, 0, 90, '%', 'walls', 'Where the scarf ramp starts above the layer below, % of the layer height (the nozzle never comes closer than 0.02 mm to the layer below).'), { scarfSeam: ['outer', 'all'] }),
   scarfSteps: when(int(10, 1, 100, 'count', 'walls', 'The scarf ramp is written as at least this many moves of equal length (more where the loop has corners within it), Z and flow rising along each.'), { scarfSeam: ['outer', 'all'] }),
   scarfConditional: when(bool(false, 'walls', "Scarf only where the seam is not in a sharp corner (one turning 40° or more within a line width either side, where an aligned seam hides): a corner's seam stays plain."), { scarfSeam: ['outer', 'all'] }),
+  fuzzySkin: enm(['off', 'outer', 'all'] as const, 'off', 'walls', "A rough, textured surface: the outer wall is redrawn through points about fuzzySkinPointDistance apart, each moved in or out across the wall by up to fuzzySkinThickness (seeded by the layer and the wall's shape, so the G-code is the same every run). On the part's outside (outer), on the outer wall of holes too (all), or nowhere (off). Inner walls stay smooth; never on the first layer."),
+  fuzzySkinThickness: when(num(0.3, 0.01, 2, 'mm', 'walls', 'How far fuzzy skin moves each point in or out of the wall, at most (the texture is twice this deep).'), { fuzzySkin: ['outer', 'all'] }),
+  fuzzySkinPointDistance: when(num(0.8, 0.1, 10, 'mm', 'walls', 'Average distance between the points of a fuzzy wall (each gap ¾ to 1¼ of it).'), { fuzzySkin: ['outer', 'all'] }),
 
   // ── runtime ──────────────────────────────────────────────────────────────────
   threads: int(0, 0, 256, 'count', 'runtime', 'Threads for the per-layer stages (0 = automatic: one per core above two cores, else one). The G-code is the same for any count.'),
