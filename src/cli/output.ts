@@ -3,9 +3,11 @@
  * when everything is written (so a failure, Ctrl-C or a full disk leaves the old file as it was and
  * no temporary file behind), or standard output. An output that is one of the inputs is refused
  * before anything is written. Write errors become one line, "cannot write PATH: no space left on
- * device"; a reader that closes the pipe early ends the command quietly (PipeClosed).
+ * device"; a reader that closes the pipe early ends the command quietly (PipeClosed). A write-protected
+ * file is not replaced (as `cp` without `-f` would not), and temporary files a killed run left beside
+ * the target are removed by the next run that writes it.
  */
-import { chmodSync, closeSync, fsyncSync, openSync, realpathSync, renameSync, statSync, unlinkSync, writeSync } from 'node:fs';
+import { accessSync, chmodSync, closeSync, constants, fsyncSync, lstatSync, openSync, readdirSync, realpathSync, renameSync, statSync, unlinkSync, writeSync } from 'node:fs';
 import { basename, dirname, join, resolve } from 'node:path';
 import { StrataError } from '../errors.js';
 
@@ -123,6 +125,63 @@ export function abortPendingOutputs(): void {
   for (const f of [...pending]) f.abort();
 }
 
+/** A temporary file older than this whose process is gone was left by a killed run, ms. */
+export const STALE_TEMP_MS = 10 * 60 * 1000;
+
+/** The temporary file's name for a target: hidden, with the writing process's id. */
+function tempName(base: string): string {
+  return `.${base}.${process.pid}.${Math.random().toString(36).slice(2, 10)}.tmp`;
+}
+
+function isAlive(pid: number): boolean {
+  try {
+    process.kill(pid, 0);
+    return true;
+  } catch (e) {
+    // EPERM: it runs, as another user
+    return (e as NodeJS.ErrnoException).code === 'EPERM';
+  }
+}
+
+/**
+ * Remove the temporary files of `base` in `dir` that a run killed before it could clean up left
+ * (SIGKILL, a power cut): our name pattern, untouched for STALE_TEMP_MS, their process gone.
+ */
+export function removeStaleTemps(dir: string, base: string, now = Date.now()): void {
+  const escaped = base.replace(/[.*+?^$|()[\]{}\\]/g, '\\$&');
+  const pattern = new RegExp(`^\\.${escaped}\\.(\\d+)\\.[0-9a-z]{1,8}\\.tmp$`);
+  let names: string[];
+  try {
+    names = readdirSync(dir);
+  } catch {
+    return;
+  }
+  for (const name of names) {
+    const m = pattern.exec(name);
+    if (!m || Number(m[1]) === process.pid || isAlive(Number(m[1]))) continue;
+    const path = join(dir, name);
+    try {
+      const s = lstatSync(path);
+      if (s.isFile() && now - s.mtimeMs > STALE_TEMP_MS) unlinkSync(path);
+    } catch {
+      // gone already, or not ours to remove
+    }
+  }
+}
+
+/** Refuse to replace a file that is write-protected (no write permission bits, or none for us). */
+function refuseProtected(path: string, target: string, mode: number): void {
+  let writable = (mode & 0o222) !== 0;
+  if (writable) {
+    try {
+      accessSync(target, constants.W_OK);
+    } catch {
+      writable = false;
+    }
+  }
+  if (!writable) throw new StrataError('WRITE_FAILED', `cannot write ${path}: the file is write-protected (make it writable, or choose another -o)`);
+}
+
 class AtomicFile implements Output {
   readonly path: string;
   readonly #target: string;
@@ -142,7 +201,9 @@ class AtomicFile implements Output {
     }
     this.#target = target;
     this.#mode = existing?.mode;
-    this.#temp = join(dirname(target), `.${basename(target)}.${process.pid}.${Math.random().toString(36).slice(2, 10)}.tmp`);
+    if (existing) refuseProtected(path, target, existing.mode);
+    removeStaleTemps(dirname(target), basename(target));
+    this.#temp = join(dirname(target), tempName(basename(target)));
     try {
       this.#fd = openSync(this.#temp, 'wx', 0o666);
     } catch (e) {
