@@ -6,7 +6,7 @@
  */
 import { StrataError } from '../errors.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey } from '../settings/schema.js';
-import { checkKey, parseSettingText, suggest } from '../settings/resolve.js';
+import { checkKey, parseDecimal, parseSettingText, suggest } from '../settings/resolve.js';
 
 export function kebab(key: string): string {
   return key.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase());
@@ -91,7 +91,7 @@ export interface ParsedArgs {
 
 /** A list of numbers "a,b,c" (exactly `n` of them when n > 1), or one number. */
 function numbers(flag: string, text: string, n: number): number[] {
-  const parts = text.split(',').map((t) => Number(t.trim()));
+  const parts = text.split(',').map(parseDecimal);
   if ((parts.length !== 1 && parts.length !== n) || parts.some((v) => !Number.isFinite(v)) || text.trim() === '') {
     throw new StrataError('BAD_SETTING', `${flag} expects a number or ${n} numbers separated by commas, got "${text}"`);
   }

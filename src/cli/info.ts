@@ -93,10 +93,11 @@ function text(info: ModelInfo): string {
   ].join('\n');
 }
 
-export function cmdInfo(args: ParsedArgs, write: (s: string) => void): void {
+export async function cmdInfo(args: ParsedArgs, write: (s: string) => void): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'info needs a model file');
   const input = new InputReader();
-  const infos = args.positional.map((p) => modelInfo(p, input.bytes(p, 'model'), Number(SCHEMA.inflateBudget.default) * MiB));
+  const infos: ModelInfo[] = [];
+  for (const p of args.positional) infos.push(modelInfo(p, await input.bytes(p, 'model', 'model'), Number(SCHEMA.inflateBudget.default) * MiB));
   if (args.flags.json === true) write(JSON.stringify(infos, null, 2) + '\n');
   else for (const i of infos) write(text(i) + '\n');
 }

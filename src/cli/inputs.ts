@@ -2,7 +2,6 @@
  * What the slicing commands read: model files, JSON configs, custom infillers, each recorded so the
  * output can be checked against them (an output that is one of the inputs is refused).
  */
-import { readFileSync } from 'node:fs';
 import { basename } from 'node:path';
 import { StrataError } from '../errors.js';
 import { PATTERN_IDS } from '../infill/types.js';
@@ -15,8 +14,9 @@ import { importProfile } from '../settings/import/index.js';
 import type { SliceOptions } from '../settings/schema.js';
 import { iceslInfillersDirs, shippedInfillersDir } from '../shader/infiller-dirs.js';
 import { FLAG_TO_KEY, type ParsedArgs } from './args.js';
-import { checkKey, parseSettingText } from '../settings/resolve.js';
+import { checkKey, parseDecimal, parseSettingText } from '../settings/resolve.js';
 import type { NamedInput } from './output.js';
+import { readInput, type InputKind } from './read-input.js';
 
 const MiB = 1024 * 1024;
 
@@ -24,28 +24,23 @@ const MiB = 1024 * 1024;
 export class InputReader {
   readonly read: NamedInput[] = [];
 
-  bytes(path: string, what: string): Uint8Array {
+  /** A file's bytes ('-': standard input), within the limit of its kind (read-input.ts); `what` names it in messages. */
+  bytes(path: string, what: string, kind: InputKind): Promise<Uint8Array> {
     this.read.push({ path, what });
-    try {
-      return path === '-' ? readFileSync(0) : readFileSync(path);
-    } catch (e) {
-      const code = (e as NodeJS.ErrnoException).code;
-      const why = code === 'ENOENT' ? 'no such file' : code === 'EISDIR' ? 'it is a folder' : code === 'EACCES' ? 'permission denied' : (e as Error).message;
-      throw new StrataError('BAD_FILE', `cannot read ${path}: ${why}`);
-    }
+    return readInput(path, kind, what);
   }
 
-  text(path: string, what: string): string {
-    return new TextDecoder().decode(this.bytes(path, what));
+  async text(path: string, what: string, kind: InputKind): Promise<string> {
+    return new TextDecoder().decode(await this.bytes(path, what, kind));
   }
 
   /** One file's objects (and a project's print settings), within the config's unpack budget. */
-  #file(path: string, what: string, cfg: Config): LoadedFile {
-    return loadModelFile(this.bytes(path, what), path === '-' ? undefined : basename(path), { maxInflatedBytes: cfg.inflateBudget * MiB });
+  async #file(path: string, what: string, cfg: Config): Promise<LoadedFile> {
+    return loadModelFile(await this.bytes(path, what, 'model'), path === '-' ? undefined : basename(path), { maxInflatedBytes: cfg.inflateBudget * MiB });
   }
 
-  #objects(path: string, what: string, cfg: Config): MeshObject[] {
-    return this.#file(path, what, cfg).objects;
+  async #objects(path: string, what: string, cfg: Config): Promise<MeshObject[]> {
+    return (await this.#file(path, what, cfg)).objects;
   }
 
   /**
@@ -53,29 +48,33 @@ export class InputReader {
    * `--support-blocker`, `--support-enforcer`, `--layer-range`) give every object of that file its
    * settings and volumes.
    */
-  models(paths: readonly string[], cfg: Config, modelFlags: ParsedArgs['modelFlags'] = []): ModelInput[] {
+  async models(paths: readonly string[], cfg: Config, modelFlags: ParsedArgs['modelFlags'] = []): Promise<ModelInput[]> {
     const early = modelFlags.find((f) => f.model < 0);
     if (early) throw new StrataError('BAD_SETTING', `--${early.flag} belongs to a model: give it after the model file it applies to`);
-    return paths.map((p, k) => {
+    const models: ModelInput[] = [];
+    for (const [k, p] of paths.entries()) {
       const name = p === '-' ? 'standard input' : basename(p);
-      const file = this.#file(p, 'model', cfg);
+      const file = await this.#file(p, 'model', cfg);
       const flags = modelFlags.filter((f) => f.model === k);
-      const model: ModelInput = { name, objects: flags.length ? file.objects.map((o) => this.#withFlags(o, flags, cfg)) : file.objects };
+      const objects: MeshObject[] = [];
+      for (const o of file.objects) objects.push(flags.length ? await this.#withFlags(o, flags, cfg) : o);
+      const model: ModelInput = { name, objects };
       if (file.projectSettings) model.projectSettings = file.projectSettings;
       if (file.warnings.length) model.warnings = file.warnings;
-      return model;
-    });
+      models.push(model);
+    }
+    return models;
   }
 
-  #withFlags(o: MeshObject, flags: ParsedArgs['modelFlags'], cfg: Config): MeshObject {
+  async #withFlags(o: MeshObject, flags: ParsedArgs['modelFlags'], cfg: Config): Promise<MeshObject> {
     const out: MeshObject = { ...o, volumes: [...(o.volumes ?? [])], layerRanges: [...(o.layerRanges ?? [])] };
     const own: Record<string, unknown> = { ...(o.settings?.format === 'strata' ? o.settings.values : {}) };
-    const volumeMesh = (path: string, what: string) => mergeObjects(this.#objects(path, what, cfg));
+    const volumeMesh = async (path: string, what: string) => mergeObjects(await this.#objects(path, what, cfg));
     for (const { flag, value } of flags) {
       if (flag === 'object') Object.assign(own, parseSettingList(value, `--object ${value}`));
       else if (flag === 'layer-range') {
         const m = /^\s*([0-9.]+)\s*-\s*([0-9.]+)\s*:(.*)$/.exec(value);
-        const fromZ = Number(m?.[1]), toZ = Number(m?.[2]);
+        const fromZ = parseDecimal(m?.[1] ?? ''), toZ = parseDecimal(m?.[2] ?? '');
         if (!m || !Number.isFinite(fromZ) || !Number.isFinite(toZ) || !(toZ > fromZ)) {
           throw new StrataError('BAD_SETTING', `--layer-range expects FROM-TO:KEY=VALUE,… (mm from the bed, FROM < TO), got "${value}"`);
         }
@@ -86,7 +85,7 @@ export class InputReader {
         const split = colon > 1 && /=/.test(value.slice(colon + 1));
         const path = split ? value.slice(0, colon) : value;
         const kind = flag === 'modifier' ? 'modifier' : flag === 'negative' ? 'negative' : flag === 'support-blocker' ? 'support-blocker' : 'support-enforcer';
-        const volume: MeshVolume = { kind, name: basename(path), mesh: volumeMesh(path, `--${flag} mesh`) };
+        const volume: MeshVolume = { kind, name: basename(path), mesh: await volumeMesh(path, `--${flag} mesh`) };
         if (split) volume.settings = { format: 'strata', values: parseSettingList(value.slice(colon + 1), `--${flag} ${value}`) };
         out.volumes!.push(volume);
       }
@@ -98,8 +97,8 @@ export class InputReader {
   }
 
   /** Settings from a Strata JSON file or another slicer's profile (settings/import); what is left out is in `warnings`. */
-  config(path: string): { settings: Record<string, unknown>; warnings: string[] } {
-    const profile = importProfile(this.text(path, 'config file'), path);
+  async config(path: string): Promise<{ settings: Record<string, unknown>; warnings: string[] }> {
+    const profile = importProfile(await this.text(path, 'config file', 'config'), path);
     return { settings: profile.settings, warnings: profile.warnings };
   }
 }
@@ -115,8 +114,8 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
   const shader = args.flags['infill-shader'];
   const image = args.flags['infill-image'];
   if (typeof shader === 'string' && typeof image === 'string') throw new StrataError('BAD_SETTING', '--infill-shader and --infill-image exclude each other');
-  if (typeof shader === 'string') spec = { name: basename(shader), shader: input.text(shader, 'infill shader') };
-  else if (typeof image === 'string') spec = { name: basename(image), image: input.bytes(image, 'infill image') };
+  if (typeof shader === 'string') spec = { name: basename(shader), shader: await input.text(shader, 'infill shader', 'shader') };
+  else if (typeof image === 'string') spec = { name: basename(image), image: await input.bytes(image, 'infill image', 'image') };
   else if (typeof opts.infillPattern === 'string' && !(PATTERN_IDS as readonly string[]).includes(opts.infillPattern)) {
     const name = opts.infillPattern;
     for (const dir of infillerDirs(args)) {
@@ -146,9 +145,9 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
     const { loadInfiller, parseInfillParams } = await import('../shader/index.js');
     spec.params = parseInfillParams(loadInfiller(spec).params, assignments);
   }
-  if (typeof densityShader === 'string') spec.density = { shader: input.text(densityShader, 'density shader'), fileName: basename(densityShader) };
+  if (typeof densityShader === 'string') spec.density = { shader: await input.text(densityShader, 'density shader', 'shader'), fileName: basename(densityShader) };
   else if (typeof densityLayers === 'string') {
-    const list = densityLayers.split(',').map((v) => Number(v.trim()));
+    const list = densityLayers.split(',').map(parseDecimal);
     if (!list.length || list.some((v) => !Number.isFinite(v) || v < 0 || v > 100)) throw new StrataError('BAD_SETTING', '--infill-density-layers expects comma-separated percentages 0-100, one per layer');
     spec.density = list;
   }
@@ -160,10 +159,11 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
  * `warn` hears what an imported profile leaves out.
  */
 export async function optionsFrom(args: ParsedArgs, input: InputReader, warn: (w: string) => void): Promise<SliceOptions & { customInfill?: CustomInfillSpec }> {
-  const opts: Record<string, unknown> = {};
+  // no prototype: a config's "__proto__" key stays a key, refused by the slicer as the library refuses it
+  const opts: Record<string, unknown> = Object.create(null) as Record<string, unknown>;
   const configs = typeof args.flags.config === 'string' ? args.flags.config.split('\n') : [];
   for (const f of configs) {
-    const { settings, warnings } = input.config(f);
+    const { settings, warnings } = await input.config(f);
     Object.assign(opts, settings);
     for (const w of warnings) warn(w);
   }

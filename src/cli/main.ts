@@ -82,7 +82,7 @@ export async function main(argv: readonly string[], io: Io = processIo): Promise
         await (await import('./slice.js')).cmdSlice(args, io);
         return 0;
       case 'info':
-        (await import('./info.js')).cmdInfo(args, stdout);
+        await (await import('./info.js')).cmdInfo(args, stdout);
         return 0;
       case 'preview':
         await (await import('./slice.js')).cmdPreview(args, io);

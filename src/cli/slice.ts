@@ -6,6 +6,7 @@ import { StrataError } from '../errors.js';
 import type { ModelInput } from '../mesh/place.js';
 import { layerToSvg } from '../preview/svg.js';
 import { findFilament, findPrinter } from '../settings/presets/index.js';
+import { parseDecimal } from '../settings/resolve.js';
 import type { ParsedArgs } from './args.js';
 import { capYoungGeneration } from './engine-flags.js';
 import type { Io } from './io.js';
@@ -40,7 +41,7 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
   const quiet = args.flags.quiet === true;
   const slicer = await newSlicer(await optionsFrom(args, input, (w) => quiet || io.err(`strata: warning: ${w}\n`)));
   // let go once handed to the slicer, which keeps the files' bytes only until it has read them
-  let models: ModelInput[] | undefined = input.models(args.positional, slicer.config, args.modelFlags);
+  let models: ModelInput[] | undefined = await input.models(args.positional, slicer.config, args.modelFlags);
   const first = args.positional[0];
   const given = typeof args.flags.output === 'string' ? args.flags.output : undefined;
   const outPath = given ?? (first === '-' ? '-' : first.slice(0, first.length - extname(first).length) + '.gcode');
@@ -80,16 +81,16 @@ export async function cmdPreview(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'preview needs a model file');
   const input = new InputReader();
   const slicer = await newSlicer(await optionsFrom(args, input, (w) => args.flags.quiet === true || io.err(`strata: warning: ${w}\n`)));
-  const models = input.models(args.positional, slicer.config, args.modelFlags);
+  const models = await input.models(args.positional, slicer.config, args.modelFlags);
   const outPath = typeof args.flags.output === 'string' ? args.flags.output : '-';
   refuseInputAsOutput(outPath, input.read, false);
-  const width = typeof args.flags.width === 'string' ? Number(args.flags.width) : 800;
+  const width = typeof args.flags.width === 'string' ? parseDecimal(args.flags.width) : 800;
   if (!Number.isFinite(width) || width < 50 || width > 20000) throw new StrataError('BAD_SETTING', '--width must be 50 to 20000 pixels');
   const uncap = capYoungGeneration();
   const { plan } = await slicer.slicePlan(models).finally(uncap);
   const n = plan.layers.length;
   const layerText = typeof args.flags.layer === 'string' ? args.flags.layer : String(Math.floor(n / 2));
-  const index = Number(layerText);
+  const index = parseDecimal(layerText);
   if (!Number.isInteger(index) || index < 0 || index >= n) throw new StrataError('BAD_SETTING', `--layer must be a layer number from 0 to ${n - 1}`);
   const cfg = slicer.config;
   const title = `layer ${index} of ${n} at Z ${plan.layers[index].z} mm, ${findPrinter(cfg.printerId)?.name ?? cfg.printerId}, ${findFilament(cfg.filamentId)?.name ?? cfg.filamentId}`;

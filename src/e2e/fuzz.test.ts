@@ -1,13 +1,18 @@
 /**
  * Seeded fuzzing of the whole slicer: mutated STL, OBJ, 3MF, PNG and GLSL inputs (from the shared
- * models and the shipped infillers) and random settings in and out of range. Every outcome must be
+ * models and the shipped infillers), random settings in and out of range, and the command line's
+ * inputs as devices and streams (endless, empty, random, a folder, a FIFO, standard input in random
+ * pieces). Every outcome must be
  * valid G-code or one StrataError with a one-line message: never another exception, a hang or
  * unbounded memory. The case counts are fixed (so CI time is bounded and a failure replays with the
  * same seed); STRATA_FUZZ_SEED picks another seed and STRATA_FUZZ_SCALE multiplies the counts.
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { spawn, spawnSync } from 'node:child_process';
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { strToU8, zipSync } from 'fflate';
 import { Slicer } from '../api/slicer.js';
@@ -293,4 +298,108 @@ test('random settings in and out of range: valid G-code or one StrataError', { s
 test('peak memory stays bounded over all the cases', { skip }, () => {
   const peakMiB = Math.max(maxRssSeen, process.resourceUsage().maxRSS * 1024) / (1024 * 1024);
   assert.ok(peakMiB < 512, `peak RSS ${Math.round(peakMiB)} MiB`);
+});
+
+// ── devices and streams through the command line ────────────────────────────
+
+const CLI = fileURLToPath(new URL('../cli/main.js', import.meta.url));
+const CUBE = ROOT + 'examples/calibration-cube.stl';
+
+interface CliOutcome {
+  status: number | null;
+  stderr: string;
+  /** Peak resident memory of the run, MiB (when /usr/bin/time can tell). */
+  peakMiB: number | null;
+  ms: number;
+}
+
+/** Run the CLI with `stdin` written in random pieces at random moments (then closed), or nothing on it. */
+function runCli(args: string[], r: Rng, stdin?: Uint8Array): Promise<CliOutcome> {
+  const dir = mkdtempSync(join(tmpdir(), 'strata-fuzz-cli-'));
+  const timeFile = join(dir, 'rss');
+  const timed = existsSync('/usr/bin/time');
+  const [cmd, argv] = timed ? ['/usr/bin/time', ['-o', timeFile, '-f', '%M', process.execPath, CLI, ...args]] : [process.execPath, [CLI, ...args]];
+  const t0 = performance.now();
+  const child = spawn(cmd, argv, { stdio: ['pipe', 'ignore', 'pipe'] });
+  let stderr = '';
+  child.stderr.on('data', (d) => (stderr += d));
+  child.stdin.on('error', () => {});
+  const pieces: Uint8Array[] = [];
+  for (let at = 0; stdin && at < stdin.length; ) {
+    const n = 1 + r.int(Math.min(stdin.length - at, 1 + r.int(256 * 1024)));
+    pieces.push(stdin.subarray(at, at + n));
+    at += n;
+  }
+  const delays = pieces.map(() => (r.chance(0.2) ? r.int(30) : 0));
+  void (async () => {
+    for (const [i, p] of pieces.entries()) {
+      if (delays[i]) await new Promise((res) => setTimeout(res, delays[i]));
+      if (child.stdin.destroyed || !child.stdin.write(p)) await new Promise((res) => (child.stdin.destroyed ? res(null) : child.stdin.once('drain', res).once('close', res)));
+    }
+    child.stdin.end();
+  })();
+  return new Promise((resolve) => {
+    const killer = setTimeout(() => child.kill('SIGKILL'), 120_000);
+    child.on('close', (status) => {
+      clearTimeout(killer);
+      const ms = performance.now() - t0;
+      const rss = timed && existsSync(timeFile) ? Number(readFileSync(timeFile, 'utf8').trim().split('\n').at(-1)) : NaN;
+      rmSync(dir, { recursive: true, force: true });
+      resolve({ status, stderr, peakMiB: Number.isFinite(rss) ? rss / 1024 : null, ms });
+    });
+  });
+}
+
+test('devices and streams as models, configs, shaders and images: G-code or one line, within the limits', { skip: process.platform !== 'linux' && 'needs Linux devices', timeout: 900_000 }, async () => {
+  const r = new Rng(SEED + 3);
+  const work = mkdtempSync(join(tmpdir(), 'strata-fuzz-dev-'));
+  const fifo = join(work, 'fifo');
+  const haveFifo = spawnSync('mkfifo', [fifo]).status === 0;
+  const cube = new Uint8Array(readFileSync(CUBE));
+  const random = (n: number) => Uint8Array.from({ length: n }, () => r.int(256));
+  // a flag, and how much memory that kind of input may take (its read limit and the slicer around it)
+  const kinds = [
+    { flag: null, limitMiB: 954 },
+    { flag: '--config', limitMiB: 16 },
+    { flag: '--infill-shader', limitMiB: 1 },
+    { flag: '--infill-image', limitMiB: 64 },
+  ];
+  const sources: Array<{ name: string; path: string; stdin?: () => Uint8Array; fifo?: () => Uint8Array }> = [
+    { name: '/dev/zero', path: '/dev/zero' },
+    { name: '/dev/urandom', path: '/dev/urandom' },
+    { name: '/dev/null', path: '/dev/null' },
+    { name: 'a folder', path: work },
+    { name: 'stdin: random bytes', path: '-', stdin: () => random(r.int(200_000)) },
+    { name: 'stdin: the cube in pieces', path: '-', stdin: () => cube },
+    { name: 'stdin: a mutated cube in pieces', path: '-', stdin: () => mutateBytes(r, cube) },
+    { name: 'stdin: nothing', path: '-', stdin: () => new Uint8Array(0) },
+    ...(haveFifo ? [{ name: 'a FIFO with random bytes', path: fifo, fifo: () => random(r.int(100_000)) }] : []),
+  ];
+  const seen = { gcode: 0, refused: 0 };
+  for (const kind of kinds) {
+    for (const src of sources) {
+      const what = `${kind.flag ?? 'model'} ${src.name}`;
+      const args = kind.flag === null ? ['slice', src.path] : ['slice', CUBE, kind.flag, src.path];
+      args.push('-o', join(work, 'out.gcode'), '-q', '--threads', '1');
+      let writer: ReturnType<typeof spawn> | null = null;
+      if (src.fifo) {
+        // a writer that sends its bytes and closes, as a pipe from another program does
+        writer = spawn('sh', ['-c', `cat > "${fifo}"`], { stdio: ['pipe', 'ignore', 'ignore'] });
+        writer.stdin!.on('error', () => {});
+        writer.stdin!.end(src.fifo());
+      }
+      const out = await runCli(args, r, src.stdin?.());
+      writer?.kill('SIGKILL');
+      assert.ok(out.status === 0 || out.status === 1, `${what}: exit ${out.status}: ${out.stderr}`);
+      if (out.status === 1) {
+        assert.match(out.stderr, /^strata: error: [^\n]+\n$/, `${what}: one line`);
+        seen.refused++;
+      } else seen.gcode++;
+      if (out.peakMiB !== null) assert.ok(out.peakMiB < kind.limitMiB + 450, `${what}: peak ${Math.round(out.peakMiB)} MiB`);
+      assert.deepEqual(readdirSync(work).filter((f) => f.endsWith('.tmp')), [], `${what}: no temporary file left`);
+      rmSync(join(work, 'out.gcode'), { force: true });
+    }
+  }
+  rmSync(work, { recursive: true, force: true });
+  assert.ok(seen.gcode > 0 && seen.refused > 0, JSON.stringify(seen));
 });

@@ -112,6 +112,15 @@ export function validateValue(key: SettingKey, value: unknown, source = 'option'
   }
 }
 
+/** Decimal numbers only: `20`, `-0.5`, `.5`, `1e3`; not hex, octal or binary (`0x14` is not 20), nor `Infinity`. */
+const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)(e[+-]?\d+)?$/i;
+
+/** The number a text writes in decimal (surrounding spaces allowed), or NaN. */
+export function parseDecimal(text: string): number {
+  const t = text.trim();
+  return DECIMAL.test(t) ? Number(t) : NaN;
+}
+
 /** Parse a CLI/text value for a setting into the schema's type. */
 export function parseSettingText(key: SettingKey, text: string): unknown {
   const def: SettingDef = SCHEMA[key];
@@ -120,7 +129,7 @@ export function parseSettingText(key: SettingKey, text: string): unknown {
     case 'number':
     case 'integer': {
       if (def.nullable && (t === '' || t === 'null' || t === 'auto')) return null;
-      const n = t === '' ? NaN : Number(t.endsWith('%') && def.unit === '%' ? t.slice(0, -1) : t);
+      const n = parseDecimal(t.endsWith('%') && def.unit === '%' ? t.slice(0, -1) : t);
       return Number.isFinite(n) ? n : text;
     }
     case 'boolean':

@@ -124,6 +124,9 @@ function importJson(text: string, source: string): ImportedProfile {
   }
   if (!obj || typeof obj !== 'object' || Array.isArray(obj)) throw new StrataError('BAD_FILE', `${source} must hold a JSON object of settings`);
   const record = obj as Record<string, unknown>;
+  // JSON.parse keeps "__proto__" as a key, but copying it (Object.assign, a spread into a setter) would
+  // drop it or change a prototype: refused here, as the Slicer and the page refuse it
+  if (Object.hasOwn(record, '__proto__')) throw new StrataError('UNKNOWN_SETTING', `${source}: unknown setting "__proto__"; \`strata settings\` lists them all`);
   const keys = Object.keys(record);
   const strataKeys = keys.filter((k) => Object.hasOwn(SCHEMA, k) || k === 'printer' || k === 'filament');
   // an OrcaSlicer / Bambu Studio preset: their keys, values as strings or lists of strings
