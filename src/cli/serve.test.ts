@@ -2,16 +2,19 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn } from 'node:child_process';
 import { request } from 'node:http';
+import { mkdtempSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { StrataError } from '../errors.js';
-import { parseServeArgs, resolveUnder, startServer } from './serve.js';
+import { hostName, matchesEtag, parseServeArgs, resolveUnder, startServer } from './serve.js';
 
 const cli = fileURLToPath(new URL('./main.js', import.meta.url));
 
-function get(url: string, path: string, method = 'GET'): Promise<{ status: number; headers: Record<string, string | string[] | undefined>; body: string }> {
+function get(url: string, path: string, method = 'GET', headers: Record<string, string> = {}): Promise<{ status: number; headers: Record<string, string | string[] | undefined>; body: string }> {
   return new Promise((resolve, reject) => {
     const u = new URL(url);
-    const req = request({ host: u.hostname, port: u.port, path, method }, (res) => {
+    const req = request({ host: u.hostname, port: u.port, path, method, headers }, (res) => {
       let body = '';
       res.setEncoding('utf8');
       res.on('data', (c) => (body += c));
@@ -91,5 +94,74 @@ test('strata serve --port 0 prints the URL it serves on, and a taken port is a o
     assert.match(err, /^strata: error: port \d+ is in use: choose another with --port N\n$/);
   } finally {
     child.kill('SIGTERM');
+  }
+});
+
+test('the page is sent with a Content-Security-Policy and is never framed; eval only in the workers', async () => {
+  const { server, url } = await startServer({ port: 0 });
+  try {
+    const page = await get(url, '/');
+    const csp = String(page.headers['content-security-policy']);
+    assert.match(csp, /(^|; )default-src 'self'(;|$)/);
+    assert.match(csp, /(^|; )frame-ancestors 'none'(;|$)/);
+    assert.match(csp, /(^|; )script-src 'self' 'wasm-unsafe-eval'(;|$)/, 'no eval on the page');
+    assert.match(csp, /(^|; )object-src 'none'(;|$)/);
+    assert.equal(page.headers['x-frame-options'], 'DENY');
+    for (const worker of ['/slice-worker.js', '/layer-worker.js']) {
+      const w = await get(url, worker);
+      assert.match(String(w.headers['content-security-policy']), /script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'/, `${worker}: custom infill shaders are compiled to JavaScript there`);
+    }
+    assert.doesNotMatch(String((await get(url, '/app.js')).headers['content-security-policy']), /'unsafe-eval'/);
+    assert.match(String((await get(url, '/nothing-here')).headers['content-security-policy']), /default-src 'self'/, 'errors too');
+  } finally {
+    server.close();
+  }
+});
+
+test('only requests addressed to this machine by name are answered (DNS rebinding)', async () => {
+  const { server, url } = await startServer({ port: 0 });
+  const port = new URL(url).port;
+  try {
+    for (const host of [`127.0.0.1:${port}`, `localhost:${port}`, `LOCALHOST:${port}`, `[::1]:${port}`, 'localhost', `localhost.:${port}`]) {
+      assert.equal((await get(url, '/', 'GET', { Host: host })).status, 200, host);
+    }
+    for (const host of [`attacker.example:${port}`, 'attacker.example', `127.0.0.1.attacker.example:${port}`, `localhost.attacker.example`, `192.168.1.5:${port}`, 'a b']) {
+      const r = await get(url, '/', 'GET', { Host: host });
+      assert.equal(r.status, 403, `Host: ${JSON.stringify(host)}`);
+      assert.doesNotMatch(r.body, /<title>/, 'no page for another name');
+    }
+    assert.equal(hostName('LocalHost:8080'), 'localhost');
+    assert.equal(hostName('[::1]:80'), '[::1]');
+    assert.equal(hostName('evil:80:80'), null);
+    assert.equal(hostName(undefined), null);
+  } finally {
+    server.close();
+  }
+});
+
+test('ETags: a reload revalidates and gets 304 without the body; a changed file is sent again', async () => {
+  const root = mkdtempSync(join(tmpdir(), 'strata-serve-'));
+  writeFileSync(join(root, 'index.html'), '<title>Strata</title>');
+  writeFileSync(join(root, 'app.js'), 'x'.repeat(100_000));
+  const { server, url } = await startServer({ port: 0, root });
+  try {
+    const first = await get(url, '/app.js');
+    assert.equal(first.status, 200);
+    const etag = String(first.headers.etag);
+    assert.match(etag, /^"[0-9a-f]+-[0-9a-f]+"$/);
+    const again = await get(url, '/app.js', 'GET', { 'If-None-Match': etag });
+    assert.equal(again.status, 304);
+    assert.equal(again.body, '');
+    assert.equal(again.headers.etag, etag);
+    assert.equal((await get(url, '/app.js', 'GET', { 'If-None-Match': `"other", W/${etag}` })).status, 304, 'a list, a weak tag');
+    assert.equal((await get(url, '/app.js', 'GET', { 'If-None-Match': '"other"' })).status, 200);
+    writeFileSync(join(root, 'app.js'), 'y'.repeat(100_001));
+    const changed = await get(url, '/app.js', 'GET', { 'If-None-Match': etag });
+    assert.equal(changed.status, 200, 'a new version is sent');
+    assert.notEqual(changed.headers.etag, etag);
+    assert.equal(changed.body.length, 100_001);
+    assert.ok(matchesEtag('*', '"a"') && !matchesEtag(undefined, '"a"') && matchesEtag(' "b" , "a"', '"a"'));
+  } finally {
+    server.close();
   }
 });
