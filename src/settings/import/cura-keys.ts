@@ -8,7 +8,8 @@
  * `speed_print`; widths from `line_width`; top and bottom thickness from `top_bottom_thickness`; the
  * first-layer temperatures from the others.
  *
- * Units: Cura's extra prime after a retraction is a volume (mm³), turned into filament length.
+ * Units: Cura's extra prime after a retraction is a volume (mm³), turned into filament length; its fuzzy skin
+ * point density (points per mm) into a distance; its scarf split distance into a count of steps.
  *
  * Walls: Cura 5 always lays variable-width (Arachne) walls; a profile with its Arachne keys is Strata's
  * variable walls. Its minimum feature size, minimum thin wall line width and transition length are mm,
@@ -210,6 +211,26 @@ export function mapCuraKeys(c: ImportContext): void {
   const seam = str('z_seam_type');
   if (seam !== undefined) c.set('seamPosition', SEAM[seam], 'z_seam_type', `seam "${seam}" has no Strata equivalent`);
   take('skinOverlap', ['skin_overlap']);
+  // scarf seam (Cura 5.9: the outer wall only; a length of 0 is none) and fuzzy skin
+  const scarf = value('scarf_joint_seam_length');
+  if (scarf !== undefined) {
+    c.set('scarfSeam', scarf > 0 ? 'outer' : 'off', 'scarf_joint_seam_length');
+    if (scarf > 0) c.set('scarfLength', scarf, 'scarf_joint_seam_length');
+  }
+  take('scarfStartHeight', ['scarf_joint_seam_start_height_ratio']);
+  const split = value('scarf_split_distance');
+  if (split !== undefined && split > 0) {
+    const length = c.settings.scarfLength ?? (SCHEMA.scarfLength.default as number);
+    c.set('scarfSteps', Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(length / split - 1e-9))), 'scarf_split_distance');
+  }
+  const fuzzy = str('magic_fuzzy_skin_enabled');
+  if (fuzzy !== undefined) {
+    const outside = bool(str('magic_fuzzy_skin_outside_only'));
+    c.set('fuzzySkin', bool(fuzzy) === undefined ? undefined : bool(fuzzy) ? (outside ? 'outer' : 'all') : 'off', 'magic_fuzzy_skin_enabled', 'not True or False');
+  }
+  take('fuzzySkinThickness', ['magic_fuzzy_skin_thickness']);
+  if (c.has('magic_fuzzy_skin_point_dist')) take('fuzzySkinPointDistance', ['magic_fuzzy_skin_point_dist']);
+  else take('fuzzySkinPointDistance', ['magic_fuzzy_skin_point_density'], (perMm) => round(1 / perMm));
   // variable-width walls (Cura 5): mm → % of the nozzle
   const arachne = ['min_feature_size', 'min_bead_width', 'wall_transition_length', 'wall_transition_angle', 'wall_distribution_count'].find((k) => c.has(k));
   if (arachne !== undefined) c.set('wallGenerator', 'variable', arachne);

@@ -30,6 +30,13 @@
  *   length are % of the nozzle diameter in Strata: PrusaSlicer and SuperSlicer write them in % of the
  *   nozzle or in mm (turned into % of the profile's nozzle), OrcaSlicer in % only (a bare number is %).
  *   PrusaSlicer's `thin_walls` (the classic generator's thin-wall detection) has no Strata equivalent.
+ * - Scarf seams: PrusaSlicer's `scarf_seam_placement` (contours, everywhere) and OrcaSlicer's `seam_slope_type`
+ *   (external, all) put the scarf on the outer wall's loops, holes included (Strata's `outer`), or with their
+ *   inner-wall switch on every wall (`all`). The start height is % of the layer height (OrcaSlicer's may be
+ *   mm, turned into %); PrusaSlicer's largest segment length becomes a count of steps over the length. A
+ *   scarf round the entire loop is reported: Strata's is `scarfLength` long.
+ * - Fuzzy skin: `external` is the part's outside (`outer`), `all` holes too; OrcaSlicer's `allwalls` (inner
+ *   walls as well) is taken as `all`, whose inner walls stay smooth.
  */
 import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
 import type { Settings } from '../schema.js';
@@ -86,6 +93,7 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
   const firstLayerHeight = c.settings.firstLayerHeight ?? layerHeight;
   widths(c, flavor, nozzle, layerHeight, firstLayerHeight);
   walls(c, flavor, nozzle, layerHeight);
+  seamsAndSurface(c, layerHeight);
   infill(c);
   speeds(c);
   temperatures(c);
@@ -544,4 +552,55 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
   if (gap) c.set('raftAirGap', num(gap.value), gap.key, 'not a distance');
   const margin = c.getAny('raft_expansion');
   if (margin) c.set('raftMargin', num(margin.value), margin.key, 'not a distance');
+}
+
+const FUZZY: Readonly<Record<string, Settings['fuzzySkin']>> = { none: 'off', external: 'outer', all: 'all', allwalls: 'all' };
+
+/** Scarf seams (PrusaSlicer 2.9, OrcaSlicer) and fuzzy skin. */
+function seamsAndSurface(c: ImportContext, layerHeight: number): void {
+  const placement = c.getAny('scarf_seam_placement', 'seam_slope_type');
+  const inner = c.getAny('scarf_seam_on_inner_perimeters', 'seam_slope_inner_walls');
+  const length = c.getAny('scarf_seam_length', 'seam_slope_min_length');
+  const lengthMm = length ? num(length.value) : undefined;
+  if (placement) {
+    const v = first(placement.value) ?? '';
+    const on = v === 'contours' || v === 'everywhere' || v === 'external' || v === 'all';
+    const type: Settings['scarfSeam'] | undefined = v === 'nowhere' || v === 'none' || lengthMm === 0 ? 'off' : on ? (inner && bool(inner.value) ? 'all' : 'outer') : undefined;
+    c.set('scarfSeam', type, placement.key, `scarf placement "${v}" has no Strata equivalent`);
+  }
+  if (length && lengthMm !== 0) c.set('scarfLength', lengthMm, length.key, 'not a length');
+  const start = c.getAny('scarf_seam_start_height', 'seam_slope_start_height');
+  if (start) {
+    const v = numOrPercent(start.value);
+    c.set('scarfStartHeight', v && round(v.percent ? v.value : (100 * v.value) / layerHeight, 2), start.key, 'not a height or percentage');
+  }
+  const steps = c.getAny('seam_slope_steps');
+  if (steps) c.set('scarfSteps', num(steps.value), steps.key, 'not a count');
+  const segment = c.getAny('scarf_seam_max_segment_length');
+  if (segment) {
+    const v = num(segment.value);
+    const over = c.settings.scarfLength ?? (SCHEMA.scarfLength.default as number);
+    c.set('scarfSteps', v && v > 0 ? Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(over / v - 1e-9))) : undefined, segment.key, 'not a length');
+  }
+  const smooth = c.getAny('scarf_seam_only_on_smooth', 'seam_slope_conditional');
+  if (smooth) c.set('scarfConditional', bool(smooth.value), smooth.key, 'not 0 or 1');
+  const whole = c.getAny('scarf_seam_entire_loop', 'seam_slope_entire_loop');
+  if (whole && bool(whole.value) && c.settings.scarfSeam !== 'off') c.reject(whole.key, "Strata's scarf is scarfLength long, not round the entire loop");
+  const angle = c.getAny('scarf_angle_threshold');
+  if (angle && c.settings.scarfConditional && num(angle.value) !== 140) {
+    c.reject(angle.key, 'a conditional scarf in Strata leaves out seams in corners turning 40° or more (an angle of 140° or less)');
+  }
+  const fuzzy = c.getAny('fuzzy_skin');
+  if (fuzzy) {
+    const v = first(fuzzy.value) ?? '';
+    c.set('fuzzySkin', FUZZY[v], fuzzy.key, `fuzzy skin "${v}" has no Strata equivalent (none, external, all)`);
+  }
+  const thickness = c.getAny('fuzzy_skin_thickness');
+  if (thickness) c.set('fuzzySkinThickness', num(thickness.value), thickness.key, 'not a thickness');
+  const dist = c.getAny('fuzzy_skin_point_dist', 'fuzzy_skin_point_distance');
+  if (dist) c.set('fuzzySkinPointDistance', num(dist.value), dist.key, 'not a distance');
+  const firstLayer = c.getAny('fuzzy_skin_first_layer');
+  if (firstLayer && bool(firstLayer.value) && c.settings.fuzzySkin && c.settings.fuzzySkin !== 'off') {
+    c.reject(firstLayer.key, "Strata's fuzzy skin leaves the first layer smooth");
+  }
 }
