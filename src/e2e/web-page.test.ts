@@ -246,14 +246,18 @@ describe('web page', { skip: missing ?? false }, () => {
     await page.close();
   });
 
-  test('Cancel stops a slice and the page stays usable', SLOW, async () => {
+  test('Cancel stops a slice and the page stays usable; Cancel again shows one message, not two', SLOW, async () => {
     const page = await openPage();
     await openModel(page, benchy);
-    await page.getByRole('button', { name: 'Slice', exact: true }).click();
     const progress = page.getByRole('progressbar');
-    await progress.waitFor({ state: 'visible' });
-    await page.getByRole('button', { name: 'Cancel', exact: true }).click();
-    await page.getByText('Slicing cancelled.').waitFor();
+    for (let round = 1; round <= 2; round++) {
+      await page.getByRole('button', { name: 'Slice', exact: true }).click();
+      await progress.waitFor({ state: 'visible' });
+      await page.getByRole('button', { name: 'Cancel', exact: true }).click();
+      await page.getByText('Slicing cancelled.').first().waitFor();
+      await progress.waitFor({ state: 'hidden' });
+      assert.equal(await page.locator('#messages .msg').filter({ hasText: 'Slicing cancelled.' }).count(), 1, `after Cancel ${round}: one message`);
+    }
     assert.equal(await page.getByRole('button', { name: 'Download G-code', exact: true }).isDisabled(), true);
     assert.equal(await page.getByRole('button', { name: 'Slice', exact: true }).isEnabled(), true);
     assert.equal(await page.locator('#result-card').isHidden(), true);
@@ -262,6 +266,60 @@ describe('web page', { skip: missing ?? false }, () => {
     await openModel(page, join(MODELS_DIR, 'CalibrationCube.stl'));
     await slice(page);
     assert.equal(await page.locator('#stat-layers').textContent(), '100');
+    await page.close();
+  });
+
+  test('a refused field stops Slice and Download, naming it (the print\'s settings and the object\'s); errors about failed files go once a model opens', SLOW, async () => {
+    const page = await openPage();
+    const broken = (name: string) => ({ name, mimeType: 'model/stl', buffer: Buffer.from('solid broken\n  facet normal 0 0 1\n    outer loop\n      vertex 0 0 x\n') });
+    await page.getByLabel('Open model', { exact: true }).setInputFiles([broken('first.stl'), broken('second.stl')]);
+    await page.getByRole('alert').filter({ hasText: 'second.stl' }).waitFor();
+    assert.equal(await page.getByRole('alert').filter({ hasText: 'first.stl' }).count(), 1, 'each failed file has its message');
+    await openModel(page, join(MODELS_DIR, 'CalibrationCube.stl'));
+    assert.equal(await page.getByRole('alert').filter({ hasText: /first\.stl|second\.stl/ }).count(), 0, 'the errors about earlier files are gone once a model opens');
+    await slice(page);
+    const downloadButton = page.getByRole('button', { name: 'Download G-code', exact: true });
+    const sliceButton = page.getByRole('button', { name: 'Slice', exact: true });
+    let downloads = 0;
+    page.on('download', () => downloads++);
+    // an infill density of 400 and a layer height of −1: the fields turn red, and neither Slice nor Download goes on
+    await setSetting(page, 'Infill density', '400');
+    await setSetting(page, 'Layer height', '-1');
+    assert.match((await page.locator('#settings .setting[data-key="infillDensity"]').getAttribute('class')) ?? '', /\binvalid\b/);
+    await downloadButton.click();
+    const refusal = page.getByRole('alert').filter({ hasText: /^Not downloaded: / });
+    await refusal.waitFor();
+    assert.match((await refusal.textContent()) ?? '', /Infill density: infillDensity = 400 is not allowed/);
+    await sliceButton.click();
+    const notSliced = page.getByRole('alert').filter({ hasText: /^Not sliced: / });
+    await notSliced.waitFor();
+    assert.match((await notSliced.textContent()) ?? '', /Infill density/);
+    assert.equal(await page.getByRole('progressbar').isVisible(), false, 'no slice started');
+    assert.equal(await page.evaluate(() => document.activeElement?.id), 'set-infillDensity', 'the field is shown');
+    await page.waitForTimeout(300);
+    assert.equal(downloads, 0, 'nothing downloaded');
+    // corrected: the next refused field is named
+    await setSetting(page, 'Infill density', '30');
+    await sliceButton.click();
+    await page.getByRole('alert').filter({ hasText: /^Not sliced: .*Layer height: layerHeight = -1 is not allowed/ }).waitFor();
+    await page.getByRole('button', { name: 'Reset Layer height', exact: true }).click();
+    await slice(page);
+    const config = JSON.parse(readFileSync(await download(page, 'Export', 'refused.json'), 'utf8')) as Record<string, unknown>;
+    assert.deepEqual(config, { printer: 'creality-ender-3', filament: 'pla', infillDensity: 30 }, 'sliced with what the fields show');
+    // an object's own setting too, named as its field is
+    await setSetting(page, 'Infill density (object)', '400');
+    await sliceButton.click();
+    await page.getByRole('alert').filter({ hasText: /^Not sliced: .*Infill density \(object\): / }).waitFor();
+    await downloadButton.click();
+    await page.getByRole('alert').filter({ hasText: /^Not downloaded: .*Infill density \(object\): / }).waitFor();
+    await page.waitForTimeout(300);
+    assert.equal(downloads, 1, 'only the settings export');
+    await page.getByRole('button', { name: 'Reset Infill density (object)', exact: true }).click();
+    assert.equal(await page.locator('#object-card .setting.invalid').count(), 0);
+    await slice(page);
+    await downloadButton.click();
+    await page.waitForTimeout(300);
+    assert.equal(downloads, 2, 'the G-code once the field is reset');
     await page.close();
   });
 

@@ -13,7 +13,7 @@ import { ObjectPanel } from './object-panel.js';
 import { Plate, bedShape, type PlateItem } from './plate.js';
 import { PreviewPanel } from './preview-panel.js';
 import type { FromWorker, LoadedProject, SliceSummary } from './protocol.js';
-import { buildSettingsPanel, printSource } from './settings-panel.js';
+import { buildSettingsPanel, InvalidFields, printSource } from './settings-panel.js';
 import { SettingsStore } from './settings.js';
 import { drawArrays } from './shapes.js';
 import { ToolpathView } from './toolpath.js';
@@ -30,6 +30,8 @@ store.load();
 
 const loader = new WorkerClient();
 const slicerWorker = new WorkerClient();
+/** Setting fields whose text was refused, in the print's panel and the object's. */
+const invalidFields = new InvalidFields();
 
 const ui = {
   open: byId<HTMLInputElement>('open-model'),
@@ -69,14 +71,34 @@ const ui = {
 };
 
 // ── messages ─────────────────────────────────────────────────────────────────
-/** Show a message over the 3D view; errors stay until closed, the rest fade after a while. */
-function message(kind: 'error' | 'warning' | 'info', text: string): void {
+/**
+ * What a message is about: a slice's outcome replaces the last one's (repeated Cancels show one
+ * "Slicing cancelled."), and errors about files that failed to open go once a model opens.
+ */
+type Topic = 'open' | 'slice';
+/** Topics whose newest message replaces the older ones. */
+const ONE_AT_A_TIME: ReadonlySet<Topic> = new Set(['slice']);
+
+/**
+ * Show a message over the 3D view; errors stay until closed or their topic is settled, the rest fade
+ * after a while. The same words again replace the message shown, so repeats do not pile up.
+ */
+function message(kind: 'error' | 'warning' | 'info', text: string, topic?: Topic): void {
+  for (const old of ui.messages.querySelectorAll<HTMLElement>('.msg')) {
+    if ((topic && ONE_AT_A_TIME.has(topic) && old.dataset.topic === topic) || (old.dataset.kind === kind && old.dataset.text === text)) old.remove();
+  }
   const close = h('button', { type: 'button', class: 'close', 'aria-label': 'Dismiss' }, '×');
-  const el = h('div', { class: `msg ${kind}`, role: kind === 'error' ? 'alert' : 'status' }, h('span', {}, text), close);
+  const el = h('div', { class: `msg ${kind}`, role: kind === 'error' ? 'alert' : 'status', 'data-kind': kind, 'data-topic': topic }, h('span', {}, text), close);
+  el.dataset.text = text;
   close.addEventListener('click', () => el.remove());
   ui.messages.append(el);
   while (ui.messages.children.length > 5) ui.messages.firstElementChild?.remove();
   if (kind !== 'error') setTimeout(() => el.remove(), kind === 'info' ? 6000 : 12000);
+}
+
+/** Remove the messages about a topic that is settled. */
+function clearMessages(topic: Topic): void {
+  for (const el of ui.messages.querySelectorAll<HTMLElement>(`.msg[data-topic="${topic}"]`)) el.remove();
 }
 
 function errorText(e: unknown): string {
@@ -160,6 +182,7 @@ const objectPanel = new ObjectPanel(byId('object-card'), {
     refreshObjects();
   },
   message,
+  invalid: invalidFields,
   loadMesh: async (file) => {
     try {
       const bytes = await file.arrayBuffer();
@@ -359,13 +382,15 @@ document.addEventListener('keydown', (e) => {
 
 // ── opening models ───────────────────────────────────────────────────────────
 async function openFiles(files: readonly File[]): Promise<void> {
+  // once a model opens, the errors about files that failed before are out of the way (this batch's stay)
+  const earlier = [...ui.messages.querySelectorAll('.msg[data-topic="open"]')];
   for (const file of files) {
     if (!MODEL_EXTENSIONS.test(file.name)) {
-      message('error', `${file.name}: not a model file (open STL, OBJ or 3MF)`);
+      message('error', `${file.name}: not a model file (open STL, OBJ or 3MF)`, 'open');
       continue;
     }
     if (file.size > MAX_MODEL_BYTES) {
-      message('error', `${file.name} is larger than ${MAX_MODEL_BYTES / 1024 / 1024} MB`);
+      message('error', `${file.name} is larger than ${MAX_MODEL_BYTES / 1024 / 1024} MB`, 'open');
       continue;
     }
     try {
@@ -373,6 +398,7 @@ async function openFiles(files: readonly File[]): Promise<void> {
       const copy = bytes.slice(0);
       const { model, project } = await loader.request<'loaded'>({ type: 'load', fileName: file.name, bytes: copy }, [copy]);
       const first = plate.items.length === 0;
+      for (const el of earlier) el.remove();
       if (project) {
         await openProject(file.name, project);
         if (first) frameObjects();
@@ -385,7 +411,7 @@ async function openFiles(files: readonly File[]): Promise<void> {
       refreshObjects();
       if (first) frameObjects();
     } catch (e) {
-      message('error', `${file.name}: ${errorText(e)}`);
+      message('error', `${file.name}: ${errorText(e)}`, 'open');
     }
   }
 }
@@ -484,7 +510,13 @@ ui.filament.addEventListener('change', () => {
   store.changed();
 });
 
-const panel = buildSettingsPanel(byId('settings'), byId<HTMLInputElement>('settings-filter'), printSource(store), { idPrefix: 'set-', resetTitle: 'Back to the preset value', infillSlot: true });
+const panel = buildSettingsPanel(byId('settings'), byId<HTMLInputElement>('settings-filter'), printSource(store), {
+  idPrefix: 'set-',
+  resetTitle: 'Back to the preset value',
+  infillSlot: true,
+  invalid: invalidFields,
+});
+invalidFields.onChange(() => updateSliceButton());
 store.onChange(panel.refresh);
 const infill = new InfillPanel(panel.infillSlot, store, async (spec) => (await loader.request<'infiller'>({ type: 'infiller', spec })).info);
 void infill.init();
@@ -523,6 +555,7 @@ ui.importSettings.addEventListener('change', async () => {
   }
   try {
     store.fromJson(obj, infill.shipped.map((s) => s.name));
+    panel.clearInvalid();
     await infill.init();
     message('info', `Settings from ${file.name}`);
   } catch (e) {
@@ -532,6 +565,7 @@ ui.importSettings.addEventListener('change', async () => {
 ui.resetSettings.addEventListener('click', () => {
   store.overrides = {};
   store.custom = null;
+  panel.clearInvalid();
   store.changed();
   void infill.init();
 });
@@ -551,7 +585,23 @@ function invalidate(): void {
 function updateSliceButton(): void {
   ui.slice.disabled = slicing || plate.items.length === 0 || settingsError !== null;
   ui.saveProject.disabled = plate.items.length === 0;
-  ui.slice.title = settingsError ?? (plate.items.length === 0 ? 'Open a model first' : '');
+  const bad = invalidFields.first();
+  ui.slice.title = settingsError ?? (plate.items.length === 0 ? 'Open a model first' : bad ? `A setting is not valid: ${bad.why}` : '');
+  ui.download.title = bad && result ? `A setting is not valid: ${bad.why}` : '';
+}
+
+/**
+ * Whether a refused field holds back `what` (Slice, Download): the slicer still has the value before
+ * it, so the G-code would not be what the panel shows. Says which field, and shows it.
+ */
+function refusedForInvalidField(what: string): boolean {
+  const bad = invalidFields.first();
+  if (!bad) return false;
+  message('error', `${what}: a setting is not valid. ${bad.why}. Correct it or reset it with ↺.`, 'slice');
+  bad.input.closest('details')?.setAttribute('open', '');
+  bad.input.scrollIntoView({ block: 'center' });
+  bad.input.focus({ preventScroll: true });
+  return true;
 }
 
 const STAGE_WORDS: Readonly<Record<string, string>> = { slicing: 'Slicing', planning: 'Planning', writing: 'Writing G-code' };
@@ -569,10 +619,12 @@ function setSlicing(on: boolean): void {
 
 async function slice(): Promise<void> {
   if (slicing || plate.items.length === 0) return;
+  if (refusedForInvalidField('Not sliced')) return;
   if (settingsError) {
-    message('error', settingsError);
+    message('error', settingsError, 'slice');
     return;
   }
+  clearMessages('slice');
   invalidate();
   setFaceMode(false);
   setSlicing(true);
@@ -596,8 +648,8 @@ async function slice(): Promise<void> {
     performance.mark('strata:slice-done');
   } catch (e) {
     performance.mark('strata:slice-done');
-    if (e instanceof Cancelled) message('info', 'Slicing cancelled.');
-    else message('error', `Slicing failed: ${errorText(e)}`);
+    if (e instanceof Cancelled) message('info', 'Slicing cancelled.', 'slice');
+    else message('error', `Slicing failed: ${errorText(e)}`, 'slice');
   } finally {
     setSlicing(false);
   }
@@ -634,7 +686,8 @@ function showResult(r: Extract<FromWorker, { type: 'sliced' }>, name: string): v
 ui.slice.addEventListener('click', () => void slice());
 ui.cancel.addEventListener('click', () => slicerWorker.cancel());
 ui.download.addEventListener('click', () => {
-  if (result) saveFile(result.name, result.gcode, 'text/x-gcode');
+  if (!result || refusedForInvalidField('Not downloaded')) return;
+  saveFile(result.name, result.gcode, 'text/x-gcode');
 });
 
 // the page is ready: tests and people can start

@@ -14,7 +14,7 @@ import { h } from './dom.js';
 import { mm1 } from './format.js';
 import type { Plate, PlateItem } from './plate.js';
 import type { LoadedModel } from './protocol.js';
-import { buildSettingsPanel, type PanelSource } from './settings-panel.js';
+import { buildSettingsPanel, type InvalidFields, type PanelSource, type SettingsPanel } from './settings-panel.js';
 import type { Overrides, SettingsStore } from './settings.js';
 import { boxOf, KIND_INFO, SHAPE_LABELS, VOLUME_KINDS, type PlateRange, type PlateVolume, type VolumeKind, type VolumeShape } from './volumes.js';
 
@@ -41,6 +41,8 @@ export interface ObjectPanelHost {
   message(kind: 'error' | 'warning' | 'info', text: string): void;
   /** Read a mesh file (in the worker); null when it could not be read (the host says why). */
   loadMesh(file: File): Promise<LoadedModel | null>;
+  /** Where refused setting fields are told. */
+  invalid: InvalidFields;
 }
 
 export class ObjectPanel {
@@ -57,7 +59,7 @@ export class ObjectPanel {
   #kind = h('select', { 'aria-label': 'Volume type' }, ...VOLUME_KINDS.map((k) => h('option', { value: k }, KIND_INFO[k].label)));
   #shape = h('select', { 'aria-label': 'Volume shape' }, h('option', { value: 'box' }, 'Box'), h('option', { value: 'cylinder' }, 'Cylinder'), h('option', { value: 'mesh' }, 'Mesh file…'));
   #file = h('input', { type: 'file', class: 'visually-hidden', accept: '.stl,.obj,.3mf', 'aria-label': 'Volume mesh file', tabindex: -1 });
-  #refreshSettings: (() => void) | null = null;
+  #panel: SettingsPanel | null = null;
   #shown = '';
 
   constructor(card: HTMLElement, private host: ObjectPanelHost) {
@@ -92,7 +94,11 @@ export class ObjectPanel {
     if (item !== this.#item) this.target = { kind: 'object' };
     this.#item = item;
     this.#card.hidden = !item;
-    if (!item) return;
+    if (!item) {
+      // a hidden panel's refused fields hold nothing back
+      this.#panel?.clearInvalid();
+      return;
+    }
     if (this.target.kind === 'volume' && !this.#volume()) this.target = { kind: 'object' };
     if (this.target.kind === 'range' && !this.#range()) this.target = { kind: 'object' };
     this.#title.textContent = item.name;
@@ -169,15 +175,17 @@ export class ObjectPanel {
     const v = this.#volume(), r = this.#range();
     const shown = `${it.id}:${this.target.kind}:${v?.id ?? r?.id ?? ''}`;
     if (shown === this.#shown) {
-      this.#refreshSettings?.();
+      this.#panel?.refresh();
       return;
     }
     this.#shown = shown;
+    // what was typed into the panel being replaced is dropped with it
+    this.#panel?.clearInvalid();
     if (v) this.#volumeEditor(it, v);
     else if (r) this.#rangeEditor(it, r);
     else this.#editor.replaceChildren();
     this.#settings.replaceChildren();
-    this.#refreshSettings = null;
+    this.#panel = null;
     // a new search box for the new list (the panel listens to the one it is given)
     const filter = h('input', { type: 'search', placeholder: 'Find a setting', 'aria-label': 'Find an object setting' });
     this.#filter.replaceWith(filter);
@@ -192,8 +200,9 @@ export class ObjectPanel {
       nameSuffix: suffix,
       resetTitle: v || r ? 'Back to the object’s value' : 'Back to the print’s value',
       open: (stage) => stage === 'infill' || stage === 'walls',
+      invalid: this.host.invalid,
     });
-    this.#refreshSettings = panel.refresh;
+    this.#panel = panel;
   }
 
   /** A number field with a visible label (its accessible name) that calls `set` with valid numbers. */

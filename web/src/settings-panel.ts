@@ -43,12 +43,41 @@ function stepOf(def: SettingDef): string {
   return span <= 5 ? '0.01' : span <= 50 ? '0.1' : '1';
 }
 
+/**
+ * The fields, in every panel, whose text was refused (out of range, not a number): the slicer still
+ * has the value before, so Slice and Download wait until each is corrected or reset, and name it.
+ */
+export class InvalidFields {
+  #fields = new Map<HTMLElement, string>();
+  #listeners: Array<() => void> = [];
+
+  /** Mark a field refused, with why in words; `why` null: it is valid again. */
+  set(input: HTMLElement, why: string | null): void {
+    const had = this.#fields.get(input);
+    if (why === null) this.#fields.delete(input);
+    else this.#fields.set(input, why);
+    if (had !== (why ?? undefined)) for (const fn of this.#listeners) fn();
+  }
+
+  /** The first refused field (in the order they were refused) and why, or null. */
+  first(): { input: HTMLElement; why: string } | null {
+    for (const [input, why] of this.#fields) return { input, why };
+    return null;
+  }
+
+  onChange(fn: () => void): void {
+    this.#listeners.push(fn);
+  }
+}
+
 interface Field {
   key: SettingKey;
   row: HTMLElement;
   input: HTMLInputElement | HTMLSelectElement | HTMLTextAreaElement;
   error: HTMLElement;
   searchText: string;
+  /** Clear the field's refusal. */
+  valid(): void;
 }
 
 /** What a panel shows and changes: the print's settings, or an object's, a modifier's, a layer range's. */
@@ -75,11 +104,15 @@ export interface PanelOptions {
   open?: (stage: string) => boolean;
   /** Put the custom-infill controls' slot after the infill pattern (the print's panel). */
   infillSlot?: boolean;
+  /** Where refused fields are told (Slice and Download wait for them). */
+  invalid?: InvalidFields;
 }
 
 export interface SettingsPanel {
   /** Show the source's values (after they changed elsewhere). */
   refresh(): void;
+  /** Drop what was typed into refused fields and show the source's values (the panel is replaced, or everything was reset). */
+  clearInvalid(): void;
   /** The element custom-infill controls go into (inside the infill group, after the pattern). */
   infillSlot: HTMLElement;
 }
@@ -139,26 +172,34 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
     );
     g.body.append(row);
     if (key === 'infillPattern' && opts.infillSlot) g.body.append(infillSlot);
-    const field: Field = { key, row, input, error, searchText: `${key} ${label} ${def.description}`.toLowerCase() };
+    const field: Field = { key, row, input, error, searchText: `${key} ${label} ${def.description}`.toLowerCase(), valid: () => {} };
     fields.push(field);
     g.fields.push(field);
 
+    const fieldName = name ?? label;
     const commit = () => {
       const value = readValue(def, input);
       try {
+        field.valid();
         source.set(key, value);
-        error.hidden = true;
-        row.classList.remove('invalid');
       } catch (e) {
-        error.textContent = e instanceof Error ? e.message.replace(/^setting /, '') : String(e);
+        const why = e instanceof Error ? e.message.replace(/^setting /, '') : String(e);
+        error.textContent = why;
         error.hidden = false;
         row.classList.add('invalid');
+        input.setAttribute('aria-invalid', 'true');
+        opts.invalid?.set(input, `${fieldName}: ${why}`);
       }
+    };
+    field.valid = () => {
+      error.hidden = true;
+      row.classList.remove('invalid');
+      input.removeAttribute('aria-invalid');
+      opts.invalid?.set(input, null);
     };
     input.addEventListener('change', commit);
     reset.addEventListener('click', () => {
-      error.hidden = true;
-      row.classList.remove('invalid');
+      field.valid();
       source.reset(key);
     });
   }
@@ -188,7 +229,11 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
     }
   };
   refresh();
-  return { refresh, infillSlot };
+  const clearInvalid = () => {
+    for (const f of fields) f.valid();
+    refresh();
+  };
+  return { refresh, clearInvalid, infillSlot };
 }
 
 /** The print's settings: presets and the settings the user changed, kept by the store. */
