@@ -12,7 +12,7 @@ export function kebab(key: string): string {
   return key.replace(/[A-Z]/g, (c) => '-' + c.toLowerCase());
 }
 
-export const COMMANDS = ['slice', 'info', 'preview', 'infillers', 'presets', 'settings'] as const;
+export const COMMANDS = ['slice', 'info', 'preview', 'infillers', 'presets', 'settings', 'send'] as const;
 export type Command = (typeof COMMANDS)[number];
 
 /** Commands that slice, and so take every setting's flag. */
@@ -61,6 +61,9 @@ export const FLAGS: readonly FlagDef[] = [
   { name: 'width', value: 'PX', commands: ['preview'], help: 'picture width' },
   { name: 'travel', value: '', commands: ['preview'], help: 'draw travels too' },
   { name: 'json', value: '', commands: ['info', 'presets', 'settings'], help: 'print JSON' },
+  { name: 'to', value: 'octoprint|moonraker', commands: ['send'], help: 'the print host: its software (then its address)' },
+  { name: 'api-key', value: 'KEY', commands: ['send'], help: "the host's API key (or STRATA_API_KEY)" },
+  { name: 'print', value: '', commands: ['send'], help: 'start printing the file once it is uploaded' },
 ];
 
 const BY_NAME: ReadonlyMap<string, FlagDef> = new Map(FLAGS.flatMap((f) => [[f.name, f] as const, ...(f.short ? [[f.short, f] as const] : [])]));

@@ -20,6 +20,7 @@ import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey, type SettingNee
 import { COMMANDS, FLAGS, kebab, SLICING, type Command } from './args.js';
 import { main } from './main.js';
 import { blockWithHole, overhangPart, thinFeatures } from './test-model.js';
+import { fakeHost, type Received } from '../send/test-fake-host.js';
 
 const ROOT = fileURLToPath(new URL('../../', import.meta.url));
 const DIR = mkdtempSync(join(tmpdir(), 'strata-flags-'));
@@ -194,6 +195,8 @@ test('every setting flag changes the G-code (or is refused by the slice it limit
 });
 
 const INFILLERS = join(ROOT, 'infillers');
+const SENT = join(DIR, 'sent.gcode');
+writeFileSync(SENT, ';FLAVOR:Marlin\nG28\nG1 X10 Y10 E1\n');
 const CONFIG = join(DIR, 'profile.json');
 writeFileSync(CONFIG, JSON.stringify({ layerHeight: 0.25 }));
 const EXTRA_INFILLERS = join(DIR, 'more-infillers');
@@ -210,7 +213,21 @@ const BASE_ARGS: Record<Command, string[]> = {
   infillers: ['infillers'],
   presets: ['presets'],
   settings: ['settings'],
+  // nothing listens on port 9 (discard): the send fails after its flags are checked
+  send: ['send', SENT, '--to', 'octoprint', 'http://127.0.0.1:9'],
 };
+
+/** What a print host received from `strata send SENT … URL` with these flags. */
+async function sent(...flags: string[]): Promise<Received> {
+  const host = await fakeHost(() => ({ status: 201, body: { effectivePrint: true, print_started: true } }));
+  try {
+    const r = await cli('send', SENT, ...flags, host.url);
+    assert.equal(r.code, 0, r.err);
+    return host.received[0]!;
+  } finally {
+    await host.close();
+  }
+}
 
 /** What a run produced: standard output, or the file written with -o. */
 async function produce(args: string[]): Promise<Run & { file?: string }> {
@@ -288,6 +305,18 @@ const PROOFS: Record<string, (command: Command) => Promise<void>> = {
   layer: (c) => differs(c, ['--layer', '3']),
   width: (c) => differs(c, ['--width', '300']),
   travel: (c) => differs(c, ['--travel']),
+  to: async () => {
+    assert.equal((await sent('--to', 'octoprint')).path, '/api/files/local');
+    assert.equal((await sent('--to', 'moonraker')).path, '/server/files/upload');
+  },
+  'api-key': async () => {
+    assert.equal((await sent('--to', 'octoprint', '--api-key', 'K1')).headers['x-api-key'], 'K1');
+    assert.equal((await sent('--to', 'octoprint')).headers['x-api-key'], undefined);
+  },
+  print: async () => {
+    assert.equal((await sent('--to', 'moonraker', '--print')).fields.print, 'true');
+    assert.equal((await sent('--to', 'moonraker')).fields.print, 'false');
+  },
   json: async (c) => {
     const text = await cli(...BASE_ARGS[c]);
     const json = await cli(...BASE_ARGS[c], '--json');

@@ -24,6 +24,8 @@ Usage:
   strata presets [--json]                          list printer and filament presets
   strata settings [--json]                         list every setting with its flag, unit, default and range
   strata serve [--port N]                          the web page on http://127.0.0.1:N/ (default 8080)
+  strata send FILE.gcode --to octoprint|moonraker URL [--api-key KEY] [--print]
+                                                   upload G-code to a print host (and start printing it)
 
 Slice options (slice and preview):
   -o, --output FILE      where to write (- for stdout; slice's default: MODEL.gcode). The file is
@@ -95,6 +97,9 @@ export async function main(argv: readonly string[], io: Io = processIo): Promise
         return 0;
       case 'settings':
         (await import('./lists.js')).cmdSettings(args, stdout);
+        return 0;
+      case 'send':
+        await (await import('./send.js')).cmdSend(args, io);
         return 0;
     }
   } catch (e) {
