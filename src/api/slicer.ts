@@ -4,7 +4,7 @@
  */
 import { isNode, nodeBuiltin } from '../runtime.js';
 import { positionBounds } from '../mesh/index.js';
-import { checkTemplatesForFlavor } from '../gcode/flavor-templates.js';
+import { checkTemplatesForFlavor } from '../gcode/custom-gcode.js';
 import { imageDecodeBytes } from '../shader/image.js';
 import { StrataError } from '../errors.js';
 import { MiB, prepareModel, prepareModelSteps, type PreparedModel } from './prepare-model.js';

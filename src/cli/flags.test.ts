@@ -80,6 +80,10 @@ const NEEDS = {
   overhangs: { args: [], models: [OVERHANGS] },
   'custom-infill': { args: ['--infill-pattern', 'checker'], models: [MODEL] },
   'custom-image-infill': { args: ['--infill-pattern', 'example-image'], models: [MODEL] },
+  // the model is 10.4 mm tall
+  'color-change': { args: ['--color-change-at', '5'], models: [MODEL] },
+  pause: { args: ['--pause-at', '5'], models: [MODEL] },
+  'template-placeholder': { args: ['--start-gcode', 'G28\nM117 {filamentType}'], models: [MODEL] },
 } as const satisfies Record<SettingNeed, { args: readonly string[]; models: readonly string[] }>;
 
 const flagValue = (v: unknown) => (typeof v === 'string' ? v : JSON.stringify(v));

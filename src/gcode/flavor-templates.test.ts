@@ -4,7 +4,8 @@ import { Slicer } from '../api/slicer.js';
 import { StrataError } from '../errors.js';
 import { listPresets } from '../settings/presets/index.js';
 import { SCHEMA } from '../settings/schema.js';
-import { checkTemplatesForFlavor, templateForFlavor } from './flavor-templates.js';
+import { checkTemplatesForFlavor } from './custom-gcode.js';
+import { templateForFlavor } from './flavor-templates.js';
 import type { GcodeFlavor } from './flavor.js';
 
 /** A 10 mm cube as raw arrays. */

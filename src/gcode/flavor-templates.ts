@@ -103,12 +103,6 @@ export function templateForFlavor(lines: readonly string[], flavor: GcodeFlavor,
   return out;
 }
 
-/** Check both templates for the flavour before slicing (the same check the writer makes). */
-export function checkTemplatesForFlavor(settings: { gcodeFlavor: GcodeFlavor; startGcode: string; endGcode: string }): void {
-  templateForFlavor(settings.startGcode.split(/\r?\n/), settings.gcodeFlavor, 'startGcode');
-  templateForFlavor(settings.endGcode.split(/\r?\n/), settings.gcodeFlavor, 'endGcode');
-}
-
 /** Whether the template sets the nozzle temperature itself, in Marlin's words or the flavour's own. */
 export function templateHeatsNozzle(template: string, flavor: GcodeFlavor): boolean {
   if (/^\s*M10[49]\b/im.test(template)) return true;

@@ -12,6 +12,12 @@
  *
  * Pressure advance: Marlin's linear advance `M900 K`, Klipper's `SET_PRESSURE_ADVANCE ADVANCE=`,
  * RepRapFirmware's `M572 D0 S` (all in seconds of pressure per mm/s of flow).
+ * Colour change and pause (the defaults of colorChangeGcode and pauseGcode): Marlin M600 (filament change,
+ * ADVANCED_PAUSE_FEATURE) and M601 (pause print); RepRapFirmware M600 (runs sys/filament-change.g, else
+ * pause.g) and M226 (a pause from within the file being printed: M25 is for other sources of commands);
+ * Klipper has neither M600 nor M601 of its own, but its pause_resume module's PAUSE (which a printer's
+ * macros usually extend to park the head), so both are PAUSE there: a printer whose Klipper config defines
+ * an M600 macro sets colorChangeGcode to M600, as PrusaSlicer and OrcaSlicer write it.
  * Machine limits: Marlin `M201` (max acceleration per axis, mm/s²), `M203` (max feed rate, mm/s),
  * `M204 P R T` (print, retract, travel acceleration), `M205 X Y` (jerk); RepRapFirmware the same
  * M-codes but `M203` in mm/min, and jerk as `M566` in mm/min; Klipper has one velocity and acceleration
@@ -39,6 +45,10 @@ export interface FlavorCommands {
   pressureAdvance(seconds: number): string;
   /** The machine limits of the settings as start-of-print commands. */
   machineLimits(s: LimitSettings): string[];
+  /** Default colour change (filament change) command. */
+  colorChange: string;
+  /** Default pause command. */
+  pause: string;
 }
 
 /** The settings the machine-limit commands are written from. */
@@ -95,6 +105,8 @@ const MARLIN: FlavorCommands = {
   acceleration: (a) => `M204 P${accel(a)} T${accel(a)}`,
   pressureAdvance: (k) => `M900 K${compact(k, 4)}`,
   machineLimits: (s) => m20xLimits(s, 1, (j) => `M205 X${compact(j, 2)} Y${compact(j, 2)}`, true),
+  colorChange: 'M600',
+  pause: 'M601',
 };
 
 const KLIPPER: FlavorCommands = {
@@ -107,6 +119,8 @@ const KLIPPER: FlavorCommands = {
     const velocity = axes.length ? Math.min(...axes) : s.maxSpeed;
     return [`SET_VELOCITY_LIMIT VELOCITY=${compact(velocity, 2)} ACCEL=${accel(s.acceleration)} SQUARE_CORNER_VELOCITY=${compact(s.cornerVelocity, 2)}`];
   },
+  colorChange: 'PAUSE',
+  pause: 'PAUSE',
 };
 
 const REPRAP: FlavorCommands = {
@@ -119,6 +133,8 @@ const REPRAP: FlavorCommands = {
   acceleration: (a) => `M204 P${accel(a)} T${accel(a)}`,
   pressureAdvance: (k) => `M572 D0 S${compact(k, 4)}`,
   machineLimits: (s) => m20xLimits(s, 60, (j) => `M566 X${compact(j * 60, 0)} Y${compact(j * 60, 0)}`, false),
+  colorChange: 'M600',
+  pause: 'M226',
 };
 
 export const FLAVORS = { marlin: MARLIN, klipper: KLIPPER, reprap: REPRAP } as const satisfies Record<GcodeFlavor, FlavorCommands>;

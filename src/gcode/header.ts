@@ -5,7 +5,6 @@
 import type { PlanEstimate, PrintPlan } from '../plan/types.js';
 import type { Settings } from '../settings/schema.js';
 import { compact, humanDuration, mm } from './format.js';
-import type { TemplateValues } from './template.js';
 import type { EncodedThumbnail } from '../thumbnail/types.js';
 
 /** What the caller tells the writer about this file beyond plan and settings. */
@@ -44,19 +43,36 @@ export function headerLines(plan: PrintPlan, settings: Settings, estimate: PlanE
   return lines;
 }
 
-/** Placeholder values derived from the plan and estimate, for start/end templates. */
-export function derivedTemplateValues(plan: PrintPlan, estimate: PlanEstimate): TemplateValues {
+/** Placeholder values derived from the plan and estimate, for every template (see template-vars.ts DERIVED_VALUES). */
+export function derivedTemplateValues(plan: PrintPlan, estimate: PlanEstimate): Record<string, number> {
   const b = plan.bounds;
+  const r3 = (v: number) => Math.round(v * 1000) / 1000;
+  // the first layer's extent (skirt, brim or raft included), mm
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  for (const step of plan.layers[0]?.steps ?? []) {
+    if (step.kind !== 'extrude') continue;
+    for (const p of step.points) {
+      if (p.x < x0) x0 = p.x;
+      if (p.y < y0) y0 = p.y;
+      if (p.x > x1) x1 = p.x;
+      if (p.y > y1) y1 = p.y;
+    }
+  }
+  if (x0 > x1) x0 = y0 = x1 = y1 = 0;
   return {
     layerCount: plan.layers.length,
     printTimeSeconds: Math.round(estimate.printTimeSeconds),
     filamentMm: Math.round(estimate.filamentMm * 100) / 100,
     filamentGrams: Math.round(estimate.filamentGrams * 100) / 100,
-    minX: Math.round(b.minX * 1000) / 1000,
-    minY: Math.round(b.minY * 1000) / 1000,
-    minZ: Math.round(b.minZ * 1000) / 1000,
-    maxX: Math.round(b.maxX * 1000) / 1000,
-    maxY: Math.round(b.maxY * 1000) / 1000,
-    maxZ: Math.round(b.maxZ * 1000) / 1000,
+    minX: r3(b.minX),
+    minY: r3(b.minY),
+    minZ: r3(b.minZ),
+    maxX: r3(b.maxX),
+    maxY: r3(b.maxY),
+    maxZ: r3(b.maxZ),
+    firstLayerMinX: r3(x0 / 1000),
+    firstLayerMinY: r3(y0 / 1000),
+    firstLayerMaxX: r3(x1 / 1000),
+    firstLayerMaxY: r3(y1 / 1000),
   };
 }

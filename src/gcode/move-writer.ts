@@ -7,6 +7,10 @@
  * when either changes; P rounded down, R up, so both move one way only). Object labels come from
  * object-labels.ts. Firmware retraction writes G10/G11 instead of E moves.
  *
+ * Custom per-layer G-code (custom-gcode.ts) comes before the layer's temperatures (beforeLayerChangeGcode,
+ * colour changes, pauses) and after its first Z move (layerChangeGcode); a `G92 E` in it resets the E the
+ * writer counts from, as it resets the printer's.
+ *
  * Travels are G0, the rest G1 (arcs G2 clockwise / G3 counter-clockwise, with I J from the start point as
  * written to the centre); axes and F are modal (written only when they change); X/Y/Z to the µm,
  * E to 1e-5 mm, F whole mm/min. E is accumulated unrounded and each written value is rounded from the
@@ -19,6 +23,7 @@ import type { FlavorCommands } from './flavor.js';
 import { E_SCALE, POSITION_SCALE, compact, feedrate, mm } from './format.js';
 import type { MoveSink } from '../plan/moves.js';
 import type { ObjectLabels } from './object-labels.js';
+import type { LayerGcode } from './custom-gcode.js';
 
 /** The `;TYPE:` marker of each feature, as Cura names them (Cura writes its brim as SKIRT, its raft as SUPPORT-INTERFACE); skin over air is BRIDGE, as OrcaSlicer names it. */
 export const TYPE_MARKERS = {
@@ -52,7 +57,12 @@ export interface MoveWriterOptions {
   firmwareRetraction: boolean;
   /** Object label lines, or null for none. */
   labels: ObjectLabels | null;
+  /** Custom per-layer G-code, or null for none. */
+  layerGcode?: LayerGcode | null;
 }
+
+/** `G92 E<value>` (with other axes or a comment too): the E the printer counts from is set. */
+const SETS_E = /^\s*G92\b[^;]*?\bE\s*([-+]?(?:\d+\.?\d*|\.\d+))/i;
 
 export class MoveWriter implements MoveSink {
   /** Position as written, µm (NaN = not written yet). */
@@ -69,6 +79,11 @@ export class MoveWriter implements MoveSink {
   private fan = NaN;
   /** The current layer's fan, which a step with its own fan (bridges) returns to. */
   private layerFan = NaN;
+  /** Filament extruded so far, mm (for the per-layer templates). */
+  private extruded = 0;
+  /** The layer whose layerChangeGcode waits for its first Z move (-1: none). */
+  private pendingAfter = -1;
+  private pendingLayer: LayerPlan | null = null;
   private elapsed = 0;
   private readonly totalSeconds: number;
   /** Last M73 values written (-1 = none yet). */
@@ -144,6 +159,11 @@ export class MoveWriter implements MoveSink {
     out.line(`;Z:${mm(layer.z)}`);
     out.line(`;HEIGHT:${mm(layer.height)}`);
     if (o.progress) this.progress(this.elapsed);
+    if (o.layerGcode) {
+      this.custom(o.layerGcode.before(layer, position, this.extruded));
+      this.pendingAfter = position;
+      this.pendingLayer = layer;
+    }
     if (layer.nozzleTemperature !== undefined && layer.nozzleTemperature !== this.nozzle) {
       this.nozzle = layer.nozzleTemperature;
       for (const l of o.flavor.setNozzle(this.nozzle)) out.line(l);
@@ -161,6 +181,7 @@ export class MoveWriter implements MoveSink {
   }
 
   layerEnd(_layer: LayerPlan, position: number): void {
+    if (this.pendingAfter >= 0) this.afterLayerChange();
     this.elapsed += this.o.layerSeconds[position] ?? 0;
     this.out.line(`;TIME_ELAPSED:${compact(this.elapsed, 3)}`);
   }
@@ -171,9 +192,30 @@ export class MoveWriter implements MoveSink {
     this.out.text(' Z');
     this.out.fixed(Math.round(z * POSITION_SCALE), POSITION_SCALE, POSITION_DECIMALS);
     this.out.endLine();
+    if (this.pendingAfter >= 0) this.afterLayerChange();
+  }
+
+  /** The layer's layerChangeGcode, after its first Z move (or before its first move if it has none). */
+  private afterLayerChange(): void {
+    const position = this.pendingAfter;
+    this.pendingAfter = -1;
+    this.custom(this.o.layerGcode!.after(this.pendingLayer!, position, this.extruded));
+  }
+
+  /** Lines of custom G-code; a `G92 E` among them sets the E counted from. */
+  private custom(lines: readonly string[]): void {
+    for (const l of lines) {
+      this.out.line(l);
+      const e = SETS_E.exec(l);
+      if (e) {
+        this.eTotal = Number(e[1]);
+        this.eUnits = Math.round(this.eTotal * E_SCALE);
+      }
+    }
   }
 
   extrudeZ(x: number, y: number, z: number, _length: number, filament: number, speed: number): void {
+    this.extruded += filament;
     const ux = Math.round(x);
     const uy = Math.round(y);
     this.out.text('G1');
@@ -186,6 +228,7 @@ export class MoveWriter implements MoveSink {
   }
 
   travel(x: number, y: number, _length: number, speed: number): void {
+    if (this.pendingAfter >= 0) this.afterLayerChange();
     const ux = Math.round(x);
     const uy = Math.round(y);
     if (ux === this.x && uy === this.y) return;
@@ -202,6 +245,7 @@ export class MoveWriter implements MoveSink {
   }
 
   extrudeStart(step: ExtrudeStep): void {
+    if (this.pendingAfter >= 0) this.afterLayerChange();
     this.setFan(step.fan ?? this.layerFan);
     const marker = TYPE_MARKERS[step.feature];
     if (marker === this.feature) return;
@@ -210,6 +254,7 @@ export class MoveWriter implements MoveSink {
   }
 
   extrude(x: number, y: number, _length: number, filament: number, speed: number): void {
+    this.extruded += filament;
     const ux = Math.round(x);
     const uy = Math.round(y);
     if (ux === this.x && uy === this.y) {
@@ -224,6 +269,7 @@ export class MoveWriter implements MoveSink {
   }
 
   arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, _length: number, filament: number, speed: number): void {
+    this.extruded += filament;
     const ux = Math.round(x);
     const uy = Math.round(y);
     if (ux === this.x && uy === this.y) {
@@ -271,6 +317,7 @@ export class MoveWriter implements MoveSink {
   }
 
   objectStart(index: number): void {
+    if (this.pendingAfter >= 0) this.afterLayerChange();
     for (const l of this.o.labels?.start(index) ?? []) this.out.line(l);
   }
 

@@ -219,9 +219,9 @@ test('z-hop lifts during the retracted travel and comes back down before printin
 });
 
 test('placeholders are replaced by settings and derived values; unknown ones are rejected', () => {
-  const startGcode = 'M190 S{firstLayerBedTemperature}\nM109 S{firstLayerNozzleTemperature}\n; plate {buildPlateWidth} x {buildPlateLength}, {layerCount} layers, bed {heatedBed}, top {maxZ}\n; { not a placeholder }';
+  const startGcode = 'M190 S{firstLayerBedTemperature}\nM109 S{firstLayerNozzleTemperature}\n; plate {buildPlateWidth} x {buildPlateLength}, {layerCount} layers, bed {heatedBed}, top {maxZ}\n; [not a placeholder]';
   const { gcode } = gcodeFor({ startGcode, nozzleTemperature: 215, firstLayerNozzleTemperature: null, firstLayerBedTemperature: 65 });
-  assert.match(gcode, /\nM190 S65\nM109 S215\n; plate 220 x 220, 2 layers, bed 1, top 0\.4\n; \{ not a placeholder \}\n/);
+  assert.match(gcode, /\nM190 S65\nM109 S215\n; plate 220 x 220, 2 layers, bed 1, top 0\.4\n; \[not a placeholder\]\n/);
   assert.ok(!/\{\w+\}/.test(gcode));
 
   const plan = smallPlan();
@@ -229,12 +229,12 @@ test('placeholders are replaced by settings and derived values; unknown ones are
   const chunks: string[] = [];
   assert.throws(
     () => writeGcode(plan, bad, estimatePlan(plan, bad), (c) => chunks.push(c), META),
-    (err: unknown) => err instanceof StrataError && err.code === 'BAD_SETTING' && err.message === 'startGcode: unknown placeholder {foo}',
+    (err: unknown) => err instanceof StrataError && err.code === 'BAD_SETTING' && err.message === 'startGcode line 2: unknown placeholder {foo}',
   );
   assert.equal(chunks.length, 0, 'nothing written before the check');
   const badEnd = defaults({ endGcode: 'M84 {nope}' });
-  assert.throws(() => gcodeFor({ endGcode: badEnd.endGcode }), /endGcode: unknown placeholder \{nope\}/);
-  assert.throws(() => gcodeFor({ startGcode: '; walls {wallCount}' }), /startGcode: placeholder \{wallCount\} has no value/);
+  assert.throws(() => gcodeFor({ endGcode: badEnd.endGcode }), /endGcode line 1: unknown placeholder \{nope\}/);
+  assert.throws(() => gcodeFor({ startGcode: '; walls {wallCount}' }), /startGcode line 1: placeholder \{wallCount\} has no value/);
 });
 
 test('heat-up is written only when the start template does not handle temperatures', () => {

@@ -7,19 +7,20 @@
  * the extrusion mode (M82/M83, forced whatever the template did) and `G92 E0`; the machine limits when
  * `machineLimits` is `write`, else M204 when `acceleration` is not the schema default (firmware keeps
  * its own unless a preset or the user chose one); pressure advance when set; `;LAYER_COUNT:`; the layers
- * (move-writer.ts, walking the plan through moves.ts exactly as the estimate does); `M73 P100 R0`; the
- * end template.
+ * (move-writer.ts, walking the plan through moves.ts exactly as the estimate does, with the per-layer
+ * templates of custom-gcode.ts); `M73 P100 R0`; the end template.
  */
 import { StrataError } from '../errors.js';
 import type { PlanEstimate, PrintPlan } from '../plan/types.js';
 import { SCHEMA, type Settings } from '../settings/schema.js';
 import { ChunkedText } from './chunked-text.js';
 import { FLAVORS } from './flavor.js';
-import { templateForFlavor, templateHeatsNozzle } from './flavor-templates.js';
-import { derivedTemplateValues, headerLines, type GcodeMeta } from './header.js';
+import { templateHeatsNozzle } from './flavor-templates.js';
+import { printCustomGcode } from './custom-gcode.js';
+import { headerLines, type GcodeMeta } from './header.js';
 import { MoveWriter } from './move-writer.js';
 import { walkPlanSteps } from '../plan/moves.js';
-import { expandTemplate, placeholders, settingValue } from './template.js';
+import { placeholders, settingValue } from './template.js';
 import { labelMode, objectLabels } from './object-labels.js';
 import { thumbnailBlockLines } from './thumbnail-blocks.js';
 
@@ -32,12 +33,6 @@ export const CHUNK_BYTES = 65536;
 const NOZZLE_KEYS = ['firstLayerNozzleTemperature', 'nozzleTemperature'];
 const BED_KEYS = ['firstLayerBedTemperature', 'bedTemperature'];
 const SETS_BED = /^\s*M1[49]0\b/im;
-
-function templateLines(text: string): string[] {
-  const lines = text.split(/\r?\n/).map((l) => l.trimEnd());
-  while (lines.length > 0 && lines[lines.length - 1] === '') lines.pop();
-  return lines;
-}
 
 function temperature(settings: Settings, key: string): number {
   const value = settingValue(settings, key);
@@ -70,9 +65,7 @@ export function* writeGcodeSteps(
 ): Generator<void, void> {
   const flavor = FLAVORS[settings.gcodeFlavor];
   const relative = settings.extruderMode === 'relative';
-  const derived = derivedTemplateValues(plan, estimate);
-  const start = templateForFlavor(templateLines(expandTemplate('startGcode', settings.startGcode, settings, derived)), settings.gcodeFlavor, 'startGcode', settings.heatedBed);
-  const end = templateForFlavor(templateLines(expandTemplate('endGcode', settings.endGcode, settings, derived)), settings.gcodeFlavor, 'endGcode', settings.heatedBed);
+  const { start, end, layers: layerGcode } = printCustomGcode(plan, settings, estimate);
 
   const labels = objectLabels(plan.objects, labelMode(settings), settings.gcodeFlavor);
 
@@ -113,6 +106,7 @@ export function* writeGcodeSteps(
     progress: settings.progressM73,
     firmwareRetraction: settings.firmwareRetraction && settings.retractionEnabled,
     labels,
+    layerGcode,
   });
   yield* walkPlanSteps(plan, settings, moves);
   moves.finish();

@@ -17,9 +17,21 @@ export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' |
  * `thin-features` (a part with fins and tapers thinner than its walls need, down to a fraction of a line),
  * `overhangs` (a part with overhangs: a bridge between two pillars, a cantilever over a ledge, a slope),
  * `custom-infill` (an IceSL shader or image infill: `customInfill`, `--infill-shader`,
- * `--infill-image`), `custom-image-infill` (an image infill).
+ * `--infill-image`), `custom-image-infill` (an image infill), `color-change` / `pause` (a colour change or
+ * pause at some height: colorChangeAt, pauseAt), `template-placeholder` (a start G-code that writes the
+ * setting's placeholder).
  */
-export type SettingNeed = 'several-models' | 'off-centre-model' | 'thin-walls' | 'thin-features' | 'overhangs' | 'custom-infill' | 'custom-image-infill';
+export type SettingNeed =
+  | 'several-models'
+  | 'off-centre-model'
+  | 'thin-walls'
+  | 'thin-features'
+  | 'overhangs'
+  | 'custom-infill'
+  | 'custom-image-infill'
+  | 'color-change'
+  | 'pause'
+  | 'template-placeholder';
 
 /** A value `onlyWith` asks another setting for, or a list of values any of which will do. */
 export type OnlyWithValue = string | number | boolean | readonly string[];
@@ -123,6 +135,9 @@ const when = <D extends SettingDef>(def: D, onlyWith: Readonly<Record<string, On
   ...(needs ? { needs } : {}),
 });
 
+/** Up to 100 heights in mm (numbers from 0, at most 4 digits before the point and 6 after), separated by commas or spaces; empty for none. */
+const HEIGHT_LIST = /^\s*(?:(?:\d{1,4}(?:\.\d{0,6})?|\.\d{1,6})(?:\s*[,;\s]\s*(?:\d{1,4}(?:\.\d{0,6})?|\.\d{1,6})){0,99})?\s*$/;
+
 /** `WxH` or `WxH/FORMAT` (PNG, QOI, JPG), comma-separated; empty for none. Sizes 1..1024 px are checked later. */
 const THUMBNAIL_LIST = /^\s*(?:\d{1,4}\s*x\s*\d{1,4}(?:\s*\/\s*(?:png|qoi|jpg|jpeg))?\s*(?:,\s*\d{1,4}\s*x\s*\d{1,4}(?:\s*\/\s*(?:png|qoi|jpg|jpeg))?\s*)*)?$/i;
 
@@ -140,8 +155,15 @@ export const SCHEMA = {
   acceleration: num(500, 10, 100000, 'mm/s²', 'machine', 'Print acceleration used by the time estimate (and written as M204 when set by a preset).'),
   cornerVelocity: num(8, 0.1, 100, 'mm/s', 'machine', 'Speed change allowed at a sharp corner without slowing (jerk / square-corner velocity), for the time estimate.'),
   maxSpeed: num(300, 5, 2000, 'mm/s', 'machine', 'Fastest XY feed rate the printer accepts; faster requested speeds are capped.'),
-  startGcode: str(MARLIN_START, 'gcode', 'G-code before the print. {key} placeholders are replaced by setting values (e.g. {nozzleTemperature}).'),
-  endGcode: str(MARLIN_END, 'gcode', 'G-code after the print, with the same {key} placeholders.'),
+  startGcode: str(MARLIN_START, 'gcode', "G-code before the print, a template: {key} placeholders are replaced by setting values (e.g. {nozzleTemperature}); PrusaSlicer's and OrcaSlicer's [key], {key[0]}, arithmetic and {if …}…{else}…{endif}, and Cura's {key} (their names too: {first_layer_temperature[0]}, {material_bed_temperature}) are read as they write them."),
+  endGcode: str(MARLIN_END, 'gcode', 'G-code after the print, a template like startGcode.'),
+  layerChangeGcode: str('', 'gcode', "G-code after each layer change (after the move to the layer's height, before its first travel), a template like startGcode with {layer_num} (from 0) and {layer_z} (mm), e.g. `;AFTER_LAYER_CHANGE` or Klipper's `TIMELAPSE_TAKE_FRAME`. Every layer, the first too. Empty = none."),
+  beforeLayerChangeGcode: str('', 'gcode', "G-code before each layer change (before the move to the layer's height), a template like layerChangeGcode. Empty = none."),
+  colorChangeAt: { ...str('', 'gcode', 'Heights (mm) at which to change filament, e.g. `5,10` (any order): colorChangeGcode is written before the first layer at or above each height, once (heights that fall on one layer give one change, heights above the print none). Empty = none.', 1000, HEIGHT_LIST), example: '5' },
+  pauseAt: { ...str('', 'gcode', 'Heights (mm) at which to pause the print (to insert a nut or a magnet), e.g. `5,10`: pauseGcode is written before the first layer at or above each height. Empty = none. A pause adds nothing to the time estimate.', 1000, HEIGHT_LIST), example: '5' },
+  colorChangeGcode: when(str('', 'gcode', "G-code of a colour change (colorChangeAt), a template like startGcode. Empty = the flavour's: M600 (Marlin, RepRapFirmware), PAUSE (Klipper, which has an M600 only where the printer's config defines one)."), null, 'color-change'),
+  pauseGcode: when(str('', 'gcode', "G-code of a pause (pauseAt), a template like startGcode. Empty = the flavour's: M601 (Marlin), M226 (RepRapFirmware), PAUSE (Klipper)."), null, 'pause'),
+  filamentType: when({ ...str('PLA', 'gcode', "The filament's material (PLA, PETG, ABS, TPU…), set by the filament presets, for templates: {filamentType}, PrusaSlicer's {filament_type[0]}.", 32, /^[A-Za-z0-9+._ -]*$/), example: 'PETG' }, null, 'template-placeholder'),
 
   // ── layers and lines ─────────────────────────────────────────────────────────
   layerHeight: num(0.2, 0.02, 1.2, 'mm', 'slice', 'Thickness of every layer after the first.'),

@@ -29,7 +29,7 @@ function freezePreset(d: Draft): FilamentPreset {
     aliases: Object.freeze([...d.aliases]),
     material: d.material,
     abrasive: d.abrasive ?? false,
-    settings: Object.freeze({ ...d.settings }),
+    settings: Object.freeze({ filamentType: d.material, ...d.settings }),
   });
 }
 
