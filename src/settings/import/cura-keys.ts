@@ -20,8 +20,8 @@ import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
 import type { Settings } from '../schema.js';
 import { SCHEMA } from '../schema.js';
 import type { ImportContext } from './context.js';
-import { translateTemplate } from './templates.js';
-import { bool, percentOfNozzle, text, tipSpacingOfDensity } from './values.js';
+import { importTemplate } from './templates.js';
+import { bool, percentOfNozzle, tipSpacingOfDensity } from './values.js';
 
 const INFILL: Readonly<Record<string, PatternId>> = {
   grid: 'grid', lines: 'lines', zigzag: 'lines', triangles: 'triangles', trihexagon: 'triangles', cubic: 'cubic', cubicsubdiv: 'cubic',
@@ -170,12 +170,9 @@ export function mapCuraKeys(c: ImportContext): void {
   if (rel !== undefined) c.set('extruderMode', bool(rel) ? 'relative' : 'absolute', 'relative_extrusion');
   const flavor = str('machine_gcode_flavor');
   if (flavor !== undefined) c.set('gcodeFlavor', FLAVOR[flavor], 'machine_gcode_flavor', `G-code flavour "${flavor}" has no Strata equivalent`);
+  // templates, kept as written (templates.ts)
   for (const [key, setting] of [['machine_start_gcode', 'startGcode'], ['machine_end_gcode', 'endGcode']] as const) {
-    const raw = c.get(key);
-    if (raw === undefined) continue;
-    const t = translateTemplate(text(raw.replace(/^"""|"""$/g, '')) ?? '');
-    if ('text' in t) c.set(setting, t.text, key);
-    else c.reject(key, `uses placeholders Strata cannot fill (${t.unknown.slice(0, 6).join(', ')}); the preset's is kept`);
+    importTemplate(c, [key], setting, (v) => v.replace(/^"""|"""$/g, ''));
   }
   take('maxSpeedX', ['machine_max_feedrate_x']);
   take('maxSpeedY', ['machine_max_feedrate_y']);

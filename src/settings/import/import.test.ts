@@ -148,7 +148,8 @@ test('PrusaSlicer .ini: layer height, widths, walls, skin, infill, speeds, tempe
   assert.equal(s.skirtDistance, 2);
   assert.equal(
     s.startGcode,
-    'M104 S{firstLayerNozzleTemperature}\nM140 S{firstLayerBedTemperature}\nG28 W ; home\nM190 S{firstLayerBedTemperature}\nM109 S{firstLayerNozzleTemperature}\nG92 E0',
+    // kept as written: Strata reads PrusaSlicer's placeholders (templates.test.ts runs real profiles')
+    'M104 S[first_layer_temperature]\nM140 S[first_layer_bed_temperature]\nG28 W ; home\nM190 S{first_layer_bed_temperature[0]}\nM109 S{first_layer_temperature[initial_extruder]}\nG92 E0',
   );
   assert.equal(s.endGcode, 'G1 E-1 F2100\nM104 S0\nM140 S0\nM84');
   // what maps onto nothing is listed, once
@@ -332,7 +333,7 @@ test('OrcaSlicer JSON preset: values as strings and lists', () => {
   assert.equal(p.settings.nozzleTemperature, 230);
   assert.equal(p.settings.retractionDistance, 0.6, 'nil filament override leaves the printer value');
   assert.equal(p.settings.buildPlateWidth, 220);
-  assert.equal(p.settings.startGcode, 'M190 S{firstLayerBedTemperature}\nM109 S{firstLayerNozzleTemperature}\nG28');
+  assert.equal(p.settings.startGcode, 'M190 S[bed_temperature_initial_layer_single]\nM109 S[nozzle_temperature_initial_layer]\nG28');
   assert.ok(!p.unused.includes('name') && !p.unused.includes('inherits'), 'metadata is not reported');
 });
 
@@ -431,12 +432,12 @@ acceleration_print = 800
   const p = importProfile(machine, 'ender.cfg');
   const s = p.settings;
   assert.deepEqual([s.buildPlateWidth, s.buildPlateLength, s.buildVolumeHeight, s.heatedBed, s.originAtCenter, s.gcodeFlavor], [235, 235, 250, true, false, 'marlin']);
-  assert.equal(s.startGcode, 'G28 ;Home\nM104 S{firstLayerNozzleTemperature}\nM190 S{firstLayerBedTemperature}\nM109 S{firstLayerNozzleTemperature}\nG92 E0');
+  assert.equal(s.startGcode, 'G28 ;Home\nM104 S{material_print_temperature_layer_0}\nM190 S{material_bed_temperature_layer_0}\nM109 S{material_print_temperature_layer_0, 0}\nG92 E0');
   assert.deepEqual([s.maxSpeedX, s.maxAccelerationX, s.acceleration], [500, 500, 800]);
 });
 
 test('values that map but cannot be taken are reported with the reason, and the rest still imports', () => {
-  const p = importProfile('layer_height = 0.2\ngcode_flavor = makerware\ntravel_speed = 5000\nstart_gcode = {if layer_z > 0}G1 Z5{endif}\\nG28\nfill_pattern = hilbertcurve\n', 'odd.ini');
+  const p = importProfile('layer_height = 0.2\ngcode_flavor = makerware\ntravel_speed = 5000\nstart_gcode = {if chamber_temperature > 0}G1 Z5{endif}\\nG28\nfill_pattern = hilbertcurve\n', 'odd.ini');
   assert.equal(p.settings.layerHeight, 0.2);
   const keys = p.rejected.map((r) => r.key).sort();
   assert.deepEqual(keys, ['fill_pattern', 'gcode_flavor', 'start_gcode', 'travel_speed']);

@@ -42,7 +42,7 @@ import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
 import type { Settings } from '../schema.js';
 import { SCHEMA } from '../schema.js';
 import type { ImportContext } from './context.js';
-import { translateTemplate } from './templates.js';
+import { importTemplate, listEntries } from './templates.js';
 import { bool, first, num, numOrPercent, percent, percentOfNozzle, points, text, tipSpacingOfDensity } from './values.js';
 
 export type Slic3rFlavor = 'prusaslicer' | 'superslicer' | 'orcaslicer';
@@ -131,16 +131,19 @@ function machine(c: ImportContext, nozzle: number): void {
   if (rel) c.set('extruderMode', bool(rel.value) === undefined ? undefined : bool(rel.value) ? 'relative' : 'absolute', rel.key, 'not 0 or 1');
   const fw = c.getAny('use_firmware_retraction');
   if (fw) c.set('firmwareRetraction', bool(fw.value), fw.key, 'not 0 or 1');
+  // templates, kept as written (templates.ts); PrusaSlicer's names, then OrcaSlicer's
   for (const [keys, setting] of [
     [['start_gcode', 'machine_start_gcode'], 'startGcode'],
     [['end_gcode', 'machine_end_gcode'], 'endGcode'],
+    [['before_layer_gcode', 'before_layer_change_gcode'], 'beforeLayerChangeGcode'],
+    [['layer_gcode', 'layer_change_gcode'], 'layerChangeGcode'],
+    [['color_change_gcode'], 'colorChangeGcode'],
+    [['pause_print_gcode', 'machine_pause_gcode'], 'pauseGcode'],
   ] as const) {
-    const t = c.getAny(...keys);
-    if (!t) continue;
-    const translated = translateTemplate(text(t.value) ?? '');
-    if ('text' in translated) c.set(setting, translated.text, t.key);
-    else c.reject(t.key, `uses placeholders Strata cannot fill (${translated.unknown.slice(0, 6).join(', ')}); the preset's is kept`);
+    importTemplate(c, keys, setting);
   }
+  const material = c.getAny('filament_type');
+  if (material) c.set('filamentType', listEntries(material.value)[0], material.key, 'not a material name');
   limits(c);
 }
 

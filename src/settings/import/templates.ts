@@ -1,70 +1,119 @@
 /**
- * Start and end G-code from other slicers: their placeholders translated to Strata's `{key}` ones.
- * PrusaSlicer and OrcaSlicer write `[key]`, `{key}`, `{key[0]}` or `{key[initial_extruder]}`; Cura
- * `{key}` or `{key, 0}`. A template whose placeholders are not all known here (conditionals, layer
- * counts, macros of the slicer's own language) cannot be kept: the caller keeps Strata's.
+ * G-code templates from other slicers (start, end, layer change, colour change, pause), kept as their
+ * authors wrote them: Strata's template language reads PrusaSlicer's and OrcaSlicer's macros (`[key]`,
+ * `{key[0]}`, `{if …}`, arithmetic) and Cura's `{key}` / `{key, 0}`, and knows their names for the
+ * quantities Strata has (temperatures, heights, the bed, the layer: gcode/template-vars.ts), which the
+ * G-code then gets from Strata's settings.
+ *
+ * A name Strata has no quantity for (`printer_model`, `filament_notes`, `print_settings_id`,
+ * `nozzle_high_flow`…) is fixed to the profile's own value where the profile holds one: `[printer_model]`
+ * becomes `MK4`, `{filament_notes[0] =~ /HT_MBL10/}` compares the profile's notes. A template naming
+ * anything else, or that does not parse, cannot be kept: the caller keeps Strata's and says why.
  */
-import type { SettingKey } from '../schema.js';
+import { legacyIsText, parseTemplate, variableUses, type Expr, type VariableUse } from '../../gcode/template-lang.js';
+import { isTemplateVariable } from '../../gcode/template-vars.js';
+import { StrataError } from '../../errors.js';
+import type { ImportContext } from './context.js';
+import { text } from './values.js';
 
-/** Other slicers' placeholder names → the Strata setting (or derived value) that holds the same value. */
-const PLACEHOLDERS: Readonly<Record<string, SettingKey | 'layerCount' | 'maxZ'>> = {
-  // PrusaSlicer, SuperSlicer
-  temperature: 'nozzleTemperature',
-  first_layer_temperature: 'firstLayerNozzleTemperature',
-  bed_temperature: 'bedTemperature',
-  first_layer_bed_temperature: 'firstLayerBedTemperature',
-  layer_height: 'layerHeight',
-  first_layer_height: 'firstLayerHeight',
-  nozzle_diameter: 'nozzleDiameter',
-  filament_diameter: 'filamentDiameter',
-  max_print_height: 'buildVolumeHeight',
-  total_layer_count: 'layerCount',
-  max_layer_z: 'maxZ',
-  // OrcaSlicer, Bambu Studio
-  nozzle_temperature: 'nozzleTemperature',
-  nozzle_temperature_initial_layer: 'firstLayerNozzleTemperature',
-  bed_temperature_initial_layer: 'firstLayerBedTemperature',
-  bed_temperature_initial_layer_single: 'firstLayerBedTemperature',
-  hot_plate_temp: 'bedTemperature',
-  hot_plate_temp_initial_layer: 'firstLayerBedTemperature',
-  initial_layer_print_height: 'firstLayerHeight',
-  printable_height: 'buildVolumeHeight',
-  // Cura
-  material_print_temperature: 'nozzleTemperature',
-  material_print_temperature_layer_0: 'firstLayerNozzleTemperature',
-  material_initial_print_temperature: 'firstLayerNozzleTemperature',
-  print_temperature: 'nozzleTemperature',
-  material_bed_temperature: 'bedTemperature',
-  material_bed_temperature_layer_0: 'firstLayerBedTemperature',
-  print_bed_temperature: 'bedTemperature',
-  machine_width: 'buildPlateWidth',
-  machine_depth: 'buildPlateLength',
-  machine_height: 'buildVolumeHeight',
-  machine_nozzle_size: 'nozzleDiameter',
-  material_diameter: 'filamentDiameter',
-  layer_height_0: 'firstLayerHeight',
-};
+/** A profile's raw value of a key (undefined when it has none). */
+export type ProfileLookup = (key: string) => string | undefined;
 
-/** `[name]`, `{name}`, `{name[i]}`, `{name, i}` (i a number or an extruder variable). */
-const PLACEHOLDER = /\[([A-Za-z_][A-Za-z0-9_]*)\]|\{\s*([A-Za-z_][A-Za-z0-9_]*)\s*(?:\[\s*(?:\d+|[A-Za-z_]+)\s*\]|,\s*\d+)?\s*\}/g;
-
-/** The template in Strata's form, or the placeholders that cannot be translated. */
-export function translateTemplate(template: string): { text: string } | { unknown: string[] } {
-  const unknown = new Set<string>();
-  const out = template.replace(PLACEHOLDER, (whole, square: string | undefined, curly: string | undefined) => {
-    const name = (square ?? curly)!;
-    const key = PLACEHOLDERS[name];
-    if (key === undefined) {
-      // square brackets around a word that is not a placeholder of theirs are plain text (comments)
-      if (square !== undefined && !/^[a-z0-9_]+$/.test(name)) return whole;
-      unknown.add(name);
-      return whole;
-    }
-    return `{${key}}`;
-  });
-  // anything brace-delimited left over is their macro language ({if …}, {endif}, expressions)
-  for (const m of out.matchAll(/\{([^{}]*)\}/g)) {
-    if (!/^[A-Za-z][A-Za-z0-9]*$/.test(m[1]!)) unknown.add(m[0]);
+/** The entries of a list value: `a,b`, `"a";"b"` (PrusaSlicer's text lists, `\n` escapes), or one value. */
+export function listEntries(raw: string): string[] {
+  const v = raw.trim();
+  if (v.startsWith('"')) {
+    const out: string[] = [];
+    const re = /"((?:[^"\\]|\\.)*)"\s*[;,]?\s*/gy;
+    let m: RegExpExecArray | null;
+    while ((m = re.exec(v))) out.push(m[1]!.replace(/\\(.)/g, (_w, c: string) => (c === 'n' ? '\n' : c === 't' ? '\t' : c)));
+    if (re.lastIndex === 0 && out.length === 0) return [v];
+    return out;
   }
-  return unknown.size ? { unknown: [...unknown] } : { text: out };
+  if (v.includes(';')) return v.split(';').map((s) => s.trim());
+  const parts = v.split(',').map((s) => s.trim());
+  return parts.length > 1 && parts.every((p) => /^-?(\d+\.?\d*|\.\d+)%?$/.test(p) || p === 'nil') ? parts : [v];
+}
+
+const NUMBER = /^-?(\d+\.?\d*|\.\d+)$/;
+
+/** An expression literal for a profile value: a number, true / false (Cura's), or quoted text (one line). */
+function literal(value: string): string {
+  if (NUMBER.test(value)) return String(Number(value));
+  if (value === 'True' || value === 'False') return value === 'True' ? 'true' : 'false';
+  return `"${value.replace(/\r?\n/g, ' ').replace(/\\/g, '\\\\').replace(/"/g, '\\"')}"`;
+}
+
+/** The index a use asks for, when it can be known now (a number, or an extruder number: 0); else 0. */
+function indexOf(use: VariableUse): number {
+  const i = use.index;
+  if (i === null) return 0;
+  if (typeof i === 'string') return /^\d+$/.test(i) ? Number(i) : 0;
+  const e: Expr = i;
+  return e.k === 'num' && Number.isInteger(e.v) && e.v >= 0 ? e.v : 0;
+}
+
+/**
+ * `template` kept in its own syntax, with the names Strata has no quantity for replaced by the profile's
+ * values; or why it cannot be kept (`unknown`: names neither Strata nor the profile has; `error`: it does
+ * not parse).
+ */
+export function keepTemplate(template: string, profile: ProfileLookup): { text: string } | { unknown: string[] } | { error: string } {
+  let uses: VariableUse[];
+  try {
+    uses = variableUses(parseTemplate('template', template));
+  } catch (e) {
+    if (e instanceof StrataError) return { error: e.message.replace(/^template /, '') };
+    throw e;
+  }
+  const unknown = new Set<string>();
+  const edits: Array<{ start: number; end: number; text: string }> = [];
+  let replacedTo = -1;
+  for (const use of [...uses].sort((a, b) => a.start - b.start)) {
+    if (use.start < replacedTo) continue; // inside a replaced reference (its index)
+    let name = use.name;
+    let index = indexOf(use);
+    if (isTemplateVariable(name)) continue;
+    const suffix = use.legacy && use.index === null ? /^(.+)_(\d+)$/.exec(name) : null;
+    if (suffix && isTemplateVariable(suffix[1]!)) continue;
+    const raw = profile(name) ?? (suffix ? profile(suffix[1]!) : undefined);
+    if (raw === undefined || raw.startsWith('=')) {
+      if (!(use.legacy && legacyIsText(use))) unknown.add(name);
+      continue;
+    }
+    if (suffix && profile(name) === undefined) {
+      name = suffix[1]!;
+      index = Number(suffix[2]);
+    }
+    const entries = listEntries(raw);
+    const value = entries[index] ?? entries[0]!;
+    if (value === 'nil') {
+      unknown.add(name);
+      continue;
+    }
+    // `[name]` writes text as it is, where it stands; inside an expression it is a literal
+    const text = use.legacy ? (/[{}[\]\n]/.test(value) ? `{${literal(value)}}` : value) : literal(value);
+    edits.push({ start: use.start, end: use.end, text });
+    replacedTo = use.end;
+  }
+  if (unknown.size) return { unknown: [...unknown] };
+  let out = template;
+  for (const e of edits.sort((a, b) => b.start - a.start)) out = out.slice(0, e.start) + e.text + out.slice(e.end);
+  return { text: out };
+}
+
+/** The template settings an import can set. */
+export type TemplateSetting = 'startGcode' | 'endGcode' | 'beforeLayerChangeGcode' | 'layerChangeGcode' | 'colorChangeGcode' | 'pauseGcode';
+
+/**
+ * Take the template under the first of `keys` the profile has for `setting`, kept as written (see
+ * keepTemplate), or report why not. `unwrap` takes off a quoting of the whole value (Cura's `"""`).
+ */
+export function importTemplate(c: ImportContext, keys: readonly string[], setting: TemplateSetting, unwrap = (v: string) => v): void {
+  const t = c.getAny(...keys);
+  if (!t) return;
+  const kept = keepTemplate(text(unwrap(t.value)) ?? '', (k) => c.get(k));
+  if ('text' in kept) c.set(setting, kept.text, t.key);
+  else if ('unknown' in kept) c.reject(t.key, `uses placeholders Strata cannot fill (${kept.unknown.slice(0, 6).join(', ')}); the preset's is kept`);
+  else c.reject(t.key, `cannot be read (${kept.error}); the preset's is kept`);
 }

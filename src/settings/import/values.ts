@@ -55,12 +55,16 @@ export function bool(value: string | undefined): boolean | undefined {
   return undefined;
 }
 
-/** Multi-line text written on one line with `\n` escapes (PrusaSlicer), possibly quoted. */
+/**
+ * Multi-line text written on one line with C-style escapes (PrusaSlicer), possibly quoted: `\n` is a
+ * line end, `\r` a carriage return, `\t` a tab, a backslash before any other character stands for that
+ * character (`\"` is `"`, `\\` a backslash), as PrusaSlicer unescapes them.
+ */
 export function text(value: string | undefined): string | undefined {
   if (value === undefined) return undefined;
   let v = value;
-  if (v.length >= 2 && v.startsWith('"') && v.endsWith('"')) v = v.slice(1, -1).replace(/\\"/g, '"');
-  return v.replace(/\\r\\n|\\n/g, '\n').replace(/\\t/g, '\t').replace(/\\\\/g, '\\');
+  if (v.length >= 2 && v.startsWith('"') && v.endsWith('"')) v = v.slice(1, -1);
+  return v.replace(/\\r\\n/g, '\n').replace(/\\(.)/g, (_w, c: string) => (c === 'n' ? '\n' : c === 'r' ? '\r' : c === 't' ? '\t' : c));
 }
 
 /** Points `0x0,250x0,250x210,0x210` (a bed outline) → [x, y] pairs. */
