@@ -2,6 +2,10 @@
 export { generateInfill, LINK_REACH } from './generate.js';
 export { solidFill } from './solid-fill.js';
 export type { SolidFillOptions } from './solid-fill.js';
+export { monotonicFill } from './monotonic.js';
+export type { MonotonicOptions } from './monotonic.js';
+export { SKIN_PATTERNS, concentricLoops } from './skin-patterns.js';
+export type { SkinFill, SkinPattern } from './skin-patterns.js';
 export { PATTERNS } from './registry.js';
 export { extrudedArea, lineDensity, measuredDensity, pathLength } from './measure.js';
 export { clipSweep } from './sweep.js';
@@ -9,7 +13,7 @@ export { clipPolylines, clipToRegion } from './clip-polylines.js';
 export { linkPieces } from './link.js';
 export { orderPaths, travelLength } from './order.js';
 export { regionGeom, indexRegion } from './region-index.js';
-export { PATTERN_IDS } from './types.js';
+export { PATTERN_IDS, SKIN_PATTERN_IDS } from './types.js';
 export type {
   Centering,
   DensityModel,
@@ -20,5 +24,6 @@ export type {
   InfillResult,
   PatternId,
   PatternOutput,
+  SkinPatternId,
   Sweep,
 } from './types.js';

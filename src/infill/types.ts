@@ -18,6 +18,10 @@ export const PATTERN_IDS = [
 ] as const;
 export type PatternId = (typeof PATTERN_IDS)[number];
 
+/** Skin (top and bottom solid) pattern ids; skin-patterns.ts maps each to its fill. */
+export const SKIN_PATTERN_IDS = ['lines', 'monotonic', 'concentric'] as const;
+export type SkinPatternId = (typeof SKIN_PATTERN_IDS)[number];
+
 export type Centering = 'object' | 'global';
 
 /** Everything a pattern may know about the layer it fills. Lengths in µm, angles in degrees. */
