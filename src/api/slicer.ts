@@ -311,7 +311,8 @@ export class Slicer {
       model = { ...model, warnings };
       run = yield* runPipelineSteps(
         plate,
-        { threads, sink, onProgress: opts.onProgress, signal: opts.signal, custom: this.#custom, started },
+        // a custom infill's layers in workers, so that an abort never waits for a shader's layer
+        { threads, sink, onProgress: opts.onProgress, signal: opts.signal, custom: this.#custom, started, customInWorkers: !sync },
         new Pacer(opts.signal),
       );
     } catch (e) {

@@ -14,6 +14,7 @@ import { fileURLToPath } from 'node:url';
 import { Slicer } from '../api/slicer.js';
 import { StrataError } from '../errors.js';
 import { importProfile } from '../settings/import/index.js';
+import { HEAVY_SHADER } from '../shader/test-heavy-shader.js';
 
 const CLI = fileURLToPath(new URL('./main.js', import.meta.url));
 const CUBE = fileURLToPath(new URL('../../examples/calibration-cube.stl', import.meta.url));
@@ -56,7 +57,7 @@ test('a large G-code file as a config: its head and tail are read, where slicers
   assert.match(readFileSync(out, 'utf8'), /^;Layer height: 0\.25$/m);
 });
 
-/** Start the CLI, wait until it is blocked reading, send `signal`; resolves with its exit status (128 + n after a signal) and the delay. */
+/** Start the CLI, wait until it is busy (reading, computing), send `signal`; resolves with its exit status (128 + n after a signal) and the delay. */
 async function signalWhileReading(child: ChildProcess, signal: NodeJS.Signals, ready: () => boolean | Promise<boolean>): Promise<{ status: number | null; ms: number; stderr: string }> {
   let stderr = '';
   child.stderr?.on('data', (d) => (stderr += d));
@@ -193,4 +194,23 @@ test('a config\'s "__proto__" key is refused, in the CLI as in the library; numb
   const r = run(['slice', CUBE, '--set', 'infillDensity=2e1', '--wall-count', '+3', '--layer-height', '.25', '-o', out, '-q', '--threads', '1']);
   assert.equal(r.status, 0, r.stderr);
   assert.match(readFileSync(out, 'utf8'), /^;Layer height: 0\.25$/m);
+});
+
+test("Ctrl-C or SIGTERM during a heavy custom shader's layer ends the run at once, leaving no temporary file", { skip: linux, timeout: 120_000 }, async () => {
+  const dir = tmp();
+  const shader = join(dir, 'heavy.glsl');
+  writeFileSync(shader, HEAVY_SHADER);
+  const figures: string[] = [];
+  for (const signal of ['SIGINT', 'SIGTERM'] as const) {
+    const out = join(dir, 'out.gcode');
+    // before: the signal waited for the layer (up to ~30 s, when the shader's step budget ran out)
+    const child = spawn(process.execPath, [CLI, 'slice', CUBE, '--infill-shader', shader, '--threads', '1', '-o', out], { stdio: ['ignore', 'ignore', 'pipe'] });
+    const started = Date.now();
+    const r = await signalWhileReading(child, signal, () => Date.now() - started > 2500);
+    assert.equal(r.status, signal === 'SIGINT' ? 130 : 143, r.stderr);
+    assert.ok(r.ms < SIGNAL_MS, `ended ${Math.round(r.ms)} ms after ${signal}`);
+    assert.deepEqual(readdirSync(dir), ['heavy.glsl'], 'no output, no temporary file');
+    figures.push(`${signal} ${Math.round(r.ms)} ms`);
+  }
+  console.log(`signal to exit in a heavy shader's layer: ${figures.join(', ')}`);
 });

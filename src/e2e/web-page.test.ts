@@ -22,6 +22,7 @@ import { Slicer } from '../api/slicer.js';
 import { startServer } from '../cli/serve.js';
 import { loadModelBytes, mergeObjects, positionBounds, prepareMesh } from '../mesh/index.js';
 import { browserMissing, launchChromium, type Browser } from './browser.js';
+import { HEAVY_SHADER } from '../shader/test-heavy-shader.js';
 import { MODELS_DIR, modelsAvailable, readModel } from './models.js';
 
 const root = fileURLToPath(new URL('../../', import.meta.url));
@@ -266,6 +267,26 @@ describe('web page', { skip: missing ?? false }, () => {
     await openModel(page, join(MODELS_DIR, 'CalibrationCube.stl'));
     await slice(page);
     assert.equal(await page.locator('#stat-layers').textContent(), '100');
+    await page.close();
+  });
+
+  test('Cancel during a heavy custom shader\'s layer stops at once', SLOW, async () => {
+    const page = await openPage();
+    await openModel(page, join(MODELS_DIR, 'CalibrationCube.stl'));
+    await page.getByLabel('Load infill shader or image', { exact: true }).setInputFiles({ name: 'heavy.glsl', mimeType: 'text/plain', buffer: Buffer.from(HEAVY_SHADER) });
+    await page.getByText(/Shader heavy/).waitFor();
+    await page.getByRole('button', { name: 'Slice', exact: true }).click();
+    await page.getByRole('progressbar').waitFor({ state: 'visible' });
+    await page.waitForTimeout(2500);
+    const ms = await page.evaluate(async () => {
+      const t0 = performance.now();
+      (document.getElementById('cancel') as HTMLButtonElement).click();
+      while (!document.querySelector('#messages .msg')?.textContent?.includes('Slicing cancelled.')) await new Promise((r) => setTimeout(r, 5));
+      return performance.now() - t0;
+    });
+    assert.ok(ms < 1000, `cancelled ${Math.round(ms)} ms after the click`);
+    console.log(`page: Cancel to "Slicing cancelled." with a heavy shader: ${Math.round(ms)} ms`);
+    assert.equal(await page.getByRole('button', { name: 'Slice', exact: true }).isEnabled(), true);
     await page.close();
   });
 

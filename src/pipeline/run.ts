@@ -55,6 +55,13 @@ export interface RunOptions {
   custom?: CustomInfillSpec;
   /** Workers started early (`startWorkers`); used, or ended, here. */
   started?: Promise<Port[]>;
+  /**
+   * Compute a custom infill's layers in workers only (as many as `threads`; the calling thread plans the
+   * ranges and computes none): a shader may spend many seconds on one layer, which the calling thread
+   * cannot break off, so an abort (a signal, Ctrl-C) would wait for it there; a worker is ended at once.
+   * For runs that can wait (not the synchronous slice); a density given as a JS function stays inline.
+   */
+  customInWorkers?: boolean;
 }
 
 export interface RunResult {
@@ -125,6 +132,8 @@ function ranges(n: number, threads: number): Array<[number, number]> {
 
 interface Runner {
   pool: LayerPool | null;
+  /** The calling thread computes no range (they all go to the pool). */
+  plansOnly: boolean;
   /** Computes a job on the calling thread, step by step (a pause after each layer). */
   local: (job: RangeJob) => Steps<RangeResult>;
   pacer: Pacer;
@@ -138,7 +147,7 @@ interface Runner {
 function* runJobs(jobs: RangeJob[], runner: Runner, onResult: (id: number, r: RangeResult, where: number) => void): Steps<void> {
   const { pool, local, pacer } = runner;
   pacer.check();
-  if (pool) return yield* wait(pool.run(jobs, { local: (job) => pacer.drive(local(job)), onResult, signal: runner.signal, helpAboveMs: HELP_ABOVE_MS }));
+  if (pool) return yield* wait(pool.run(jobs, { local: (job) => pacer.drive(local(job)), onResult, signal: runner.signal, helpAboveMs: runner.plansOnly ? Infinity : HELP_ABOVE_MS }));
   for (let id = 0; id < jobs.length; id++) onResult(id, yield* local(jobs[id]), -1);
 }
 
@@ -199,10 +208,12 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
   const layers: LayerZ[] = planLayers(height, cfg.firstLayerHeight, cfg.layerHeight);
   if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
   const infillParams = objects.map((o, k) => infillParamsFor(setup.configs[setup.objects[k].config], o));
-  const split = ranges(layers.length, opts.threads);
-  // N threads: the calling thread and N-1 workers
+  // N threads: the calling thread and N-1 workers, or for a custom infill N workers and the calling thread
+  // only planning (see customInWorkers; split in two ranges at least, so progress is seen)
   // (a custom density given as a JS function cannot travel to a worker)
-  const workers = opts.custom && !isTransferable(opts.custom) ? 0 : Math.min(opts.threads, split.length) - 1;
+  const plansOnly = !!opts.customInWorkers && !!opts.custom && isTransferable(opts.custom);
+  const split = ranges(layers.length, plansOnly ? Math.max(2, opts.threads) : opts.threads);
+  const workers = opts.custom && !isTransferable(opts.custom) ? 0 : plansOnly ? Math.min(Math.max(1, opts.threads), split.length) : Math.min(opts.threads, split.length) - 1;
   let meshes: PreparedMesh[] | null = null;
   // with workers, the calling thread uses the copy it shares with them
   const prepared = () => (meshes ??= plate.meshes.map((m) => (workers > 0 ? sharePrepared(prepareForSlicing(m)) : prepareForSlicing(m))));
@@ -229,6 +240,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const heldHere: RegionsHeld = new Map();
     const runner: Runner = {
       pool,
+      plansOnly: plansOnly && pool !== null,
       pacer,
       signal,
       local: function* (job) {
