@@ -25,7 +25,7 @@ import { FLAVORS } from './flavor.js';
 import { templateForFlavor } from './flavor-templates.js';
 import { derivedTemplateValues } from './header.js';
 import { compileTemplate, runCompiledTemplate } from './template.js';
-import type { ParsedTemplate } from './template-lang.js';
+import type { ParsedTemplate } from './template-parse.js';
 import { DERIVED_VALUES } from './template-vars.js';
 
 /** A layer is at or above a height when its top is within this of it or higher (PrusaSlicer's EPSILON), mm. */

@@ -1,6 +1,6 @@
 /**
  * Start, end and per-layer G-code templates: parsed and checked once (`compileTemplate`), run once per
- * use (`runCompiledTemplate`). The language is template-lang.ts's (Strata's `{key}`, PrusaSlicer's and
+ * use (`runCompiledTemplate`). The language is template-parse.ts's and template-lang.ts's (Strata's `{key}`, PrusaSlicer's and
  * OrcaSlicer's macros, Cura's `{key}`); the variables are template-vars.ts's (every setting, the values
  * the writer derives, and other slicers' names for them).
  *
@@ -10,7 +10,8 @@
  */
 import { StrataError } from '../errors.js';
 import type { Settings } from '../settings/schema.js';
-import { legacyIsText, parseTemplate, runTemplate, variableUses, type ParsedTemplate } from './template-lang.js';
+import { runTemplate } from './template-lang.js';
+import { legacyIsText, parseTemplate, variableUses, type ParsedTemplate } from './template-parse.js';
 import { aliasOf, isTemplateVariable, templateVariable, templateVariableSize, type TemplateValues } from './template-vars.js';
 
 export type { TemplateValue } from './template-lang.js';
