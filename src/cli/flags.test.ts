@@ -78,6 +78,8 @@ const NEEDS = {
   'thin-walls': { args: [], models: [TUBE] },
   'thin-features': { args: [], models: [THIN] },
   overhangs: { args: [], models: [OVERHANGS] },
+  // the slab's top, 14 mm up, and the ledge's, 3 mm up
+  'several-tops': { args: [], models: [OVERHANGS] },
   'custom-infill': { args: ['--infill-pattern', 'checker'], models: [MODEL] },
   'custom-image-infill': { args: ['--infill-pattern', 'example-image'], models: [MODEL] },
   // the model is 10.4 mm tall

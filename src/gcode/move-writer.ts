@@ -37,6 +37,7 @@ export const TYPE_MARKERS = {
   SKIRT: 'SKIRT',
   BRIM: 'SKIRT',
   RAFT: 'SUPPORT-INTERFACE',
+  IRONING: 'IRONING',
 } as const satisfies Record<FeatureType, string>;
 
 const E_DECIMALS = 5;

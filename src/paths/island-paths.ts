@@ -1,11 +1,12 @@
 /**
  * The paths of one island, from its regions: walls and wall gap fill as the regions stage found them, skin
- * walls and skin lines (bridge direction where the skin lies over air), skin gap fill, and sparse infill from
- * the pattern. Walls over air and skin over air are flagged so the planner slows them / prints them as bridges.
+ * walls and skin lines or loops by the skin patterns (bridge direction where the skin lies over air), skin gap
+ * fill, sparse infill from the pattern, and ironing over the top surfaces. Walls over air and skin over air are
+ * flagged so the planner slows them / prints them as bridges.
  */
 import { difference, flatten, offset } from '../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon, type Polygon } from '../geometry/types.js';
-import { generateInfill, solidFill } from '../infill/index.js';
+import { generateInfill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
 import { allSkin } from '../regions/skin-areas.js';
@@ -15,6 +16,8 @@ import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { makeEntry } from './entry.js';
+import { ironingEntry } from './ironing-paths.js';
+import { skinFills } from './skin-fill.js';
 import { fuzzyWalls } from './fuzzy-skin.js';
 import type { PathEntry, PathGroup } from './types.js';
 
@@ -59,15 +62,29 @@ function skinEntries(island: RegionFill, ctx: FillContext, bridgeArea: readonly 
   } else {
     fillArea = offset(skinAll, -(w / 2 - overlapSkin));
   }
-  const angle = island.bridgeAngle ?? cfg.skinAngle + (layer.index % 2 === 1 ? 90 : 0);
-  const lines = fillArea.length ? solidFill(fillArea, angle, w, ctx.params.origin) : [];
-  const gaps = skinGapFill(island.exposed, skinWalls, lines, w);
+  // lines, loops or both, by the region's top and bottom skin patterns
+  const fills = fillArea.length ? skinFills(island, cfg, fillArea, skinAngleOf(island, cfg, layer.index), w, ctx.params.origin) : [];
+  const lines = fills.length === 1 ? fills[0].lines : fills.flatMap((f) => f.lines);
+  const loops = fills.flatMap((f) => f.loops);
+  const gaps = skinGapFill(island.exposed, loops.length ? skinWalls.concat(loops) : skinWalls, lines, w);
   const out: PathEntry[] = [];
   const air = bridgeArea.length ? bridgeArea : null;
   if (skinWalls.length) out.push(makeEntry(cfg, 'skin-wall', true, skinWalls, w / UM_PER_MM, { overAir: air }));
-  if (lines.length) out.push(makeEntry(cfg, 'skin', false, lines, w / UM_PER_MM, { overAir: air }));
+  for (const f of fills) {
+    for (const [closed, paths] of [[false, f.lines], [true, f.loops]] as const) {
+      if (paths.length === 0) continue;
+      const e = makeEntry(cfg, 'skin', closed, paths, w / UM_PER_MM, { overAir: air });
+      if (f.ordered) e.ordered = true;
+      out.push(e);
+    }
+  }
   if (gaps.length) out.push(gapEntry(cfg, 'skin-gap', gaps));
   return out;
+}
+
+/** Direction of a region's skin lines on a layer: across its bridge where it has one, else by the skin angle. */
+function skinAngleOf(fill: RegionFill, cfg: Config, layerIndex: number): number {
+  return fill.bridgeAngle ?? cfg.skinAngle + (layerIndex % 2 === 1 ? 90 : 0);
 }
 
 /** Gap loops with their own widths, as one entry of per-path widths. */
@@ -104,6 +121,8 @@ function fillEntries(fill: RegionFill, ctx: IslandContext): PathEntry[] {
   // skin resting on support right below it (no Z gap) is not a bridge; over a Z gap it is, as over air
   const bridgeArea = fill.bridge.length && ctx.supportBelow.length ? difference(fill.bridge, ctx.supportBelow) : fill.bridge;
   entries.push(...skinEntries(fill, fctx, bridgeArea));
+  const iron = ironingEntry(fill, cfg, skinAngleOf(fill, cfg, ctx.layer.index), fctx.params.origin);
+  if (iron) entries.push(iron);
   return entries;
 }
 

@@ -17,6 +17,7 @@ export const FEATURE_TYPES = [
   'SKIRT',
   'BRIM',
   'RAFT',
+  'IRONING',
 ] as const;
 /** Feature types, named as Cura's `;TYPE:` markers so viewers understand them. */
 export type FeatureType = (typeof FEATURE_TYPES)[number];
@@ -37,6 +38,8 @@ interface RoleRule {
   innerFeature?: FeatureType;
   speed: (cfg: Config) => number;
   innerSpeed?: (cfg: Config) => number;
+  /** Flow multiplier of the role's lines (default 1). */
+  flow?: (cfg: Config) => number;
   overAir?: OverAirRule;
   /** Loops start at the seam setting's place (`configured`) or wherever the nozzle is nearest. */
   seam: 'configured' | 'nearest';
@@ -79,6 +82,8 @@ export const ROLES = {
   'skin-wall': { feature: 'SKIN', speed: (c) => c.skinSpeed, overAir: BRIDGE, seam: 'configured' },
   skin: { feature: 'SKIN', speed: (c) => c.skinSpeed, overAir: BRIDGE, seam: 'configured' },
   'skin-gap': { feature: 'SKIN', speed: (c) => c.skinSpeed, seam: 'nearest' },
+  // a pass over the finished surface with a trickle of flow (ironing-paths.ts), after its skin
+  ironing: { feature: 'IRONING', speed: (c) => c.ironingSpeed, flow: (c) => c.ironingFlow / 100, seam: 'nearest' },
 } as const satisfies Record<string, RoleRule>;
 
 /** What a path is for. */
@@ -138,7 +143,7 @@ function makeStyle(cfg: Config, role: PathRole, wall: number | undefined): Entry
   const inner = wall !== undefined && wall > 0;
   const feature = inner && rule.innerFeature ? rule.innerFeature : rule.feature;
   const speed = (inner && rule.innerSpeed ? rule.innerSpeed : rule.speed)(cfg);
-  const normal: ExtrusionStyle = { feature, speed, flow: 1 };
+  const normal: ExtrusionStyle = { feature, speed, flow: rule.flow ? rule.flow(cfg) : 1 };
   let overAir = normal;
   const air = rule.overAir;
   if (air) {

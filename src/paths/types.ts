@@ -37,6 +37,11 @@ export interface PathEntry {
   overAir?: (Uint8Array | null)[];
   /** How the entry prints, resolved from the role table where it was made (roles.ts `entryStyle`). */
   style: EntryStyle;
+  /**
+   * The paths print in the order given, open ones from their first point (monotonic skin, concentric skin
+   * loops from the outside in, ironing); absent: the planner orders them nearest-first.
+   */
+  ordered?: true;
 }
 
 export type GroupKind = 'adhesion' | 'support' | 'island';

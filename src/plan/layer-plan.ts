@@ -280,6 +280,14 @@ function printLines(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
   for (let k = 0; k < order.length; k++) extrudeFlagged(ctx, style, lineRun(entry, order[k][0], order[k][1] !== 0));
 }
 
+/** Paths in the order the entry gives them (PathEntry.ordered): lines from their first point, loops from their nearest point. */
+function printInOrder(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
+  for (let i = 0; i < entry.paths.length; i++) {
+    if (entry.closed) extrudeFlagged(ctx, style, loopRun(entry, i, chooseSeam(entry.paths[i], 'nearest', ctx.at, 0, 0, 0)));
+    else extrudeFlagged(ctx, style, lineRun(entry, i, false));
+  }
+}
+
 function comb(group: PathGroup): CombArea | null {
   if (!group.area) return null;
   const boundary: Polygon[] = group.boundary ?? [group.area.outer, ...group.area.holes];
@@ -301,7 +309,8 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
       combed = true;
     }
     const style = layerStyle(ctx, entry.style);
-    if (entry.closed) printLoops(ctx, entry, style);
+    if (entry.ordered) printInOrder(ctx, entry, style);
+    else if (entry.closed) printLoops(ctx, entry, style);
     else printLines(ctx, entry, style);
     if (!combed && entry.paths.length) {
       ctx.comb = group;

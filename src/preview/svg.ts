@@ -16,6 +16,7 @@ export const FEATURE_COLOURS: Readonly<Record<FeatureType, string>> = {
   SKIRT: '#7f7f7f',
   BRIM: '#7f7f7f',
   RAFT: '#8c564b',
+  IRONING: '#bcbd22',
 };
 
 export interface SvgOptions {

@@ -8,9 +8,10 @@ import { area, difference, intersection, offset, union } from '../geometry/clip.
 import { StrataError } from '../errors.js';
 import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
-import { SectionStream, type PreparedMesh } from '../slice/index.js';
+import { SectionStream, toHalfUm, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { bridgeOf } from './bridge-angle.js';
+import { ironingArea, type IroningIsland } from './ironing-area.js';
 import { overhangOf } from './overhang.js';
 import { allSkin, CoverWindows, skinAreas } from './skin-areas.js';
 import { rangeAt, type ObjectSetup, type PrintSetup } from './objects.js';
@@ -32,6 +33,8 @@ interface ObjectSections {
   enforcers: SectionStream[];
   /** Sections with the negative volumes cut out, by layer (only with negative volumes). */
   cut: Map<number, ExPolygon[]>;
+  /** The highest vertex of the parts (half-µm), found when first asked for (topmost ironing). */
+  topPlane?: number;
   top: CoverWindows;
   bottom: CoverWindows;
 }
@@ -63,10 +66,14 @@ export class RegionsRun {
   readonly #hi: number;
   readonly #objects: ObjectSections[];
   readonly #keepBelow: number;
+  readonly #meshes: readonly PreparedMesh[];
+  /** How many layers above a layer topmost ironing looks for more of the object (see #isTopmost). */
+  readonly #reach: number;
 
   /** @param meshes the meshes the setup's objects point into, prepared for slicing */
   constructor(meshes: readonly PreparedMesh[], setup: PrintSetup, layers: readonly LayerZ[], from: number, to: number) {
     this.#setup = setup;
+    this.#meshes = meshes;
     const cfg = (this.#cfg = setup.configs[0]);
     this.#layers = layers;
     const n = layers.length;
@@ -74,8 +81,11 @@ export class RegionsRun {
     const maxBottom = Math.max(1, ...objectCfgs.map((c) => c.bottomLayers));
     const maxTop = Math.max(0, ...objectCfgs.map((c) => c.topLayers));
     this.#keepBelow = maxBottom;
+    // ironing finds the top surface from the layer above, and topmost ironing looks up to #reach layers up
+    this.#reach = Math.max(1, maxTop);
+    const ironing = setup.configs.some((c) => c.ironingEnabled);
     this.#lo = Math.max(0, from - maxBottom);
-    this.#hi = Math.min(n, to + maxTop);
+    this.#hi = Math.min(n, to + (ironing ? this.#reach : maxTop));
     const run = layers.slice(this.#lo, this.#hi);
     const tolerance = Math.round(cfg.meshTolerance * UM_PER_MM);
     const stream = (m: number) => new SectionStream(meshes[m], run, tolerance);
@@ -158,18 +168,23 @@ export class RegionsRun {
     return [...byRegion].sort((a, b) => a[0] - b[0]).map(([region, area]) => ({ region, area }));
   }
 
-  /** The skin and infill of one region of an island. */
-  #fill(k: number, i: number, region: number, inner: readonly ExPolygon[], below: readonly ExPolygon[], w: number): RegionFill {
+  /**
+   * The skin and infill of one region of an island, and where it irons when it does (`iron`: the island's
+   * outline and top surface, `piece`: the region's part of it, null for all of it).
+   */
+  #fill(k: number, i: number, region: number, inner: readonly ExPolygon[], below: readonly ExPolygon[], w: number, iron: IroningIsland | null = null, piece: readonly ExPolygon[] | null = null): RegionFill {
     const o = this.#objects[k];
     const cfg = this.#setup.configs[region];
     const coveredAbove = inner.length ? o.top.window(i + 1) : [];
     const coveredBelow = inner.length ? o.bottom.window(i - o.cfg.bottomLayers) : [];
-    const skin = skinAreas(inner, coveredAbove, coveredBelow, o.cfg.topLayers, o.cfg.bottomLayers, w);
+    const skin = skinAreas(inner, coveredAbove, coveredBelow, o.cfg.topLayers, o.cfg.bottomLayers, w, cfg.topSkinPattern !== cfg.bottomSkinPattern);
     const skinAll = allSkin(skin);
     const overlapInfill = (cfg.infillOverlap / 100) * w;
-    const sparse = cfg.infillDensity > 0 ? offset(skinAll.length ? difference(inner, skinAll) : inner, -(w / 2 - overlapInfill)) : [];
+    const ironsAll = iron !== null && this.#irons(k, i, cfg) && cfg.ironingType === 'all';
+    const rest = cfg.infillDensity > 0 || ironsAll ? (skinAll.length ? difference(inner, skinAll) : inner) : [];
+    const sparse = cfg.infillDensity > 0 ? offset(rest, -(w / 2 - overlapInfill)) : [];
     const bridge = i > 0 ? bridgeOf(skin.bottom, below, w) : null;
-    return {
+    const fill: RegionFill = {
       region,
       topSkin: skin.top,
       bottomSkin: skin.bottom,
@@ -178,6 +193,38 @@ export class RegionsRun {
       bridgeAngle: bridge && bridge.mostly ? bridge.angle : null,
       sparse,
     };
+    if (skin.both) fill.topAndBottom = skin.both;
+    if (iron && this.#irons(k, i, cfg)) {
+      // solid throughout: no sparse area left, or sparse infill as good as solid (OrcaSlicer: over 95 %)
+      const area = ironingArea(cfg.ironingType, iron, piece, fill, rest.length === 0 || cfg.infillDensity > 95, w / 2);
+      if (area.length) fill.ironing = area;
+    }
+    return fill;
+  }
+
+  /** Whether a region of object k with config `cfg` irons on layer i. */
+  #irons(k: number, i: number, cfg: Config): boolean {
+    return cfg.ironingEnabled && (cfg.ironingType !== 'topmost' || this.#isTopmost(k, i));
+  }
+
+  /**
+   * Whether layer i is object k's last layer with material: no layer above it that still cuts the parts'
+   * mesh has any of the object (a tip too small to slice, a negative volume over the top). Only #reach
+   * layers up are looked at, the same for every layer, so the answer does not depend on how the layers are
+   * split into runs; an object that goes on further up is taken to have material there.
+   */
+  #isTopmost(k: number, i: number): boolean {
+    const o = this.#objects[k];
+    if (o.topPlane === undefined) {
+      const zq = this.#meshes[o.setup.parts].zq;
+      let top = -Infinity;
+      for (let v = 0; v < zq.length; v++) if (zq[v] > top) top = zq[v];
+      o.topPlane = top;
+    }
+    for (let j = i + 1; j < this.#layers.length && toHalfUm(this.#layers[j].sliceZ) <= o.topPlane; j++) {
+      if (j > i + this.#reach || this.#section(k, j).length) return false;
+    }
+    return true;
   }
 
   /** Object k's islands of layer i. */
@@ -195,11 +242,18 @@ export class RegionsRun {
     for (const group of groups.values()) {
       const area = groups.size === 1 ? section : group.length === 1 ? group[0].area! : union(group.flatMap((p) => p.area!));
       const first = group[0].region;
+      const irons = group.some((p) => this.#irons(k, i, configs[p.region]));
       for (const iw of computeWalls(area, configs[first], w)) {
         const fills: RegionFill[] = [];
+        // the island's top surface, where a region of it irons
+        let iron: IroningIsland | null = null;
+        if (irons) {
+          const above = this.#section(k, i + 1);
+          iron = { outline: iw.outline, topSurface: above.length ? difference([iw.outline], above) : [iw.outline] };
+        }
         for (const p of group) {
           const inner = group.length === 1 ? iw.inner : intersection(iw.inner, p.area!);
-          if (inner.length || group.length === 1) fills.push(this.#fill(k, i, p.region, inner, below, w));
+          if (inner.length || group.length === 1) fills.push(this.#fill(k, i, p.region, inner, below, w, iron, group.length === 1 ? null : p.area));
         }
         const main = fills.shift() ?? this.#fill(k, i, first, [], below, w);
         const island: IslandRegions = {

@@ -12,6 +12,8 @@ export interface SkinAreas {
   bottom: ExPolygon[];
   /** All exposed area (top or bottom) before slivers were dropped: what skin gap fill must still reach. */
   exposed: ExPolygon[];
+  /** The part of `bottom` exposed above too (within the top skin thickness), when asked for and not empty. */
+  both?: ExPolygon[];
 }
 
 /**
@@ -20,6 +22,7 @@ export interface SkinAreas {
  * @param coveredAbove area with material on each of the `topLayers` layers above (CoverWindows.window), µm
  * @param coveredBelow the same for the `bottomLayers` layers below
  * @param minWidthUm features of skin narrower than this are dropped (they are slivers along the walls)
+ * @param wantBoth also give the part of the bottom skin that is exposed above (`both`)
  */
 export function skinAreas(
   inner: readonly ExPolygon[],
@@ -28,6 +31,7 @@ export function skinAreas(
   topLayers: number,
   bottomLayers: number,
   minWidthUm: number,
+  wantBoth = false,
 ): SkinAreas {
   if (inner.length === 0) return { top: [], bottom: [], exposed: [] };
   const topRaw = topLayers > 0 ? difference(inner, coveredAbove) : [];
@@ -40,7 +44,12 @@ export function skinAreas(
   if (bottomRaw.length === 0) return { top: all, bottom: [], exposed: raw };
   if (topRaw.length === 0) return { top: [], bottom: all, exposed: raw };
   const bottom = intersection(all, bottomRaw);
-  return { top: difference(all, bottom), bottom, exposed: raw };
+  const out: SkinAreas = { top: difference(all, bottom), bottom, exposed: raw };
+  if (wantBoth) {
+    const both = intersection(bottom, topRaw);
+    if (both.length) out.both = both;
+  }
+  return out;
 }
 
 /**

@@ -42,6 +42,13 @@ export interface RegionFill {
   bridgeAngle: number | null;
   /** Centreline area of the sparse infill. */
   sparse: ExPolygon[];
+  /**
+   * The part of `bottomSkin` exposed above too: printed in the top skin's pattern (set only where the top
+   * and bottom skin patterns differ).
+   */
+  topAndBottom?: ExPolygon[];
+  /** Where the region irons after its skin (ironingEnabled; ironing-area.ts), µm. */
+  ironing?: ExPolygon[];
 }
 
 /**

@@ -4,7 +4,7 @@
  * against it and resolved once into a frozen typed config (see resolve.ts).
  * Key names follow the seeds' library where the concept is the same.
  */
-import { PATTERN_IDS } from '../infill/types.js';
+import { PATTERN_IDS, SKIN_PATTERN_IDS } from '../infill/types.js';
 
 export type Unit = 'mm' | 'mm²' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '×' | 'MiB' | '';
 /** The stage a setting affects. `runtime` settings change how a slice runs, never the G-code it makes. */
@@ -17,9 +17,9 @@ export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' |
  * `thin-features` (a part with fins and tapers thinner than its walls need, down to a fraction of a line),
  * `overhangs` (a part with overhangs: a bridge between two pillars, a cantilever over a ledge, a slope),
  * `custom-infill` (an IceSL shader or image infill: `customInfill`, `--infill-shader`,
- * `--infill-image`), `custom-image-infill` (an image infill), `color-change` / `pause` (a colour change or
- * pause at some height: colorChangeAt, pauseAt), `template-placeholder` (a start G-code that writes the
- * setting's placeholder).
+ * `--infill-image`), `custom-image-infill` (an image infill), `several-tops` (a part with top surfaces at
+ * more than one height: a step), `color-change` / `pause` (a colour change or pause at some height:
+ * colorChangeAt, pauseAt), `template-placeholder` (a start G-code that writes the setting's placeholder).
  */
 export type SettingNeed =
   | 'several-models'
@@ -29,6 +29,7 @@ export type SettingNeed =
   | 'overhangs'
   | 'custom-infill'
   | 'custom-image-infill'
+  | 'several-tops'
   | 'color-change'
   | 'pause'
   | 'template-placeholder';
@@ -206,6 +207,16 @@ export const SCHEMA = {
   skinWall: bool(true, 'skin', 'Print one perimeter around each skin region before its lines.'),
   skinOverlap: num(25, 0, 100, '%', 'skin', 'How far skin lines reach into the innermost wall, % of the line width.'),
   skinAngle: num(45, -180, 180, '°', 'skin', 'Direction of skin lines on even layers; odd layers are turned 90°.'),
+  topSkinPattern: enm(SKIN_PATTERN_IDS, 'lines', 'skin', 'Pattern of the top skin (the skin exposed upward; where skin is exposed both ways, top): lines (joined where their ends meet along the edge, nearest first), monotonic (the same lines, each laid beside lines already printed on one side only, so no seam shows where two fronts of lines meet), or concentric (loops inwards from the edge).'),
+  bottomSkinPattern: enm(SKIN_PATTERN_IDS, 'lines', 'skin', 'Pattern of the bottom skin (the rest of the skin): lines, monotonic or concentric, as topSkinPattern. Skin over air (a bridge) keeps its lines straight across, concentric or not.'),
+
+  // ── ironing ──────────────────────────────────────────────────────────────────
+  ironingEnabled: bool(false, 'skin', "Iron top surfaces: after a surface's skin, the nozzle passes over it again at the same height in lines ironingSpacing apart with a trickle of flow, melting its ridges flat. The pass keeps half a line width from the part's edges; skin over air (a bridge) is not ironed."),
+  ironingType: when(enm(['top', 'topmost', 'all'] as const, 'top', 'skin', "Which surfaces are ironed: every top surface (top), only the object's highest ones (topmost: its last layer), or every top surface and all other solid skin, top and bottom skin inside the part included, the whole layer where it is solid throughout (all, OrcaSlicer's \"all solid\")."), { ironingEnabled: true }, 'several-tops'),
+  ironingFlow: when(num(15, 1, 100, '%', 'skin', 'Flow of the ironing lines, % of a full line as wide as ironingSpacing at the layer height (as PrusaSlicer counts it).'), { ironingEnabled: true }),
+  ironingSpacing: when(num(0.1, 0.05, 1, 'mm', 'skin', 'Distance between ironing lines.'), { ironingEnabled: true }),
+  ironingSpeed: when(num(15, 1, 1000, 'mm/s', 'skin', 'Speed of the ironing lines.'), { ironingEnabled: true }),
+  ironingAngle: when(optNum(-180, 180, '°', 'skin', 'Direction of the ironing lines. Empty (null) = across the skin lines of the layer (turned 90° from them, as Cura irons).'), { ironingEnabled: true }),
 
   // ── infill ───────────────────────────────────────────────────────────────────
   infillDensity: num(20, 0, 100, '%', 'infill', 'Sparse infill density: extruded area over region area.'),
