@@ -27,6 +27,7 @@ const INFILL: Readonly<Record<string, PatternId>> = {
   grid: 'grid', lines: 'lines', zigzag: 'lines', triangles: 'triangles', trihexagon: 'triangles', cubic: 'cubic', cubicsubdiv: 'cubic',
   tetrahedral: 'cubic', quarter_cubic: 'cubic', concentric: 'concentric', gyroid: 'gyroid', lightning: 'lightning', cross: 'grid', cross_3d: 'grid',
 };
+const CURA_SKIN: Readonly<Record<string, Settings['topSkinPattern']>> = { lines: 'lines', zigzag: 'lines', concentric: 'concentric' };
 const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = { zigzag: 'zigzag', lines: 'lines', grid: 'grid' };
 const SEAM: Readonly<Record<string, Settings['seamPosition']>> = { back: 'rear', shortest: 'nearest', random: 'random', sharpest_corner: 'aligned' };
 const FLAVOR: Readonly<Record<string, Settings['gcodeFlavor']>> = {
@@ -247,6 +248,41 @@ export function mapCuraKeys(c: ImportContext): void {
   }
   take('infillAngle', ['infill_angles']);
   take('infillOverlap', ['infill_overlap']);
+
+  // skin patterns: lines and zigzag are lines (monotonic with skin_monotonic), concentric concentric; the top
+  // skin takes the roofing's (Cura's topmost skin layers) unless the profile has no roofing layers
+  const skinPattern = (pattern: string | undefined, monotonic: string | undefined): Settings['topSkinPattern'] | undefined => {
+    const id = CURA_SKIN[pattern ?? 'lines'];
+    return id === 'lines' && bool(monotonic) ? 'monotonic' : id;
+  };
+  const bottomKey = ['top_bottom_pattern', 'skin_monotonic'].find((k) => c.has(k));
+  const base = str('top_bottom_pattern'), monotonic = str('skin_monotonic');
+  if (bottomKey) c.set('bottomSkinPattern', skinPattern(base, monotonic), bottomKey, `pattern "${base}" has no Strata skin equivalent (lines, zigzag, concentric)`);
+  const roofKeys = ['roofing_pattern', 'roofing_monotonic'].filter((k) => c.has(k));
+  const roofing = value('roofing_layer_count') !== 0;
+  if (roofing && roofKeys.length) {
+    const roof = str('roofing_pattern') ?? base;
+    c.set('topSkinPattern', skinPattern(roof, str('roofing_monotonic') ?? monotonic), roofKeys[0]!, `pattern "${roof}" has no Strata skin equivalent (lines, zigzag, concentric)`);
+  } else if (bottomKey) c.set('topSkinPattern', c.settings.bottomSkinPattern, bottomKey);
+  for (const k of roofing ? [] : roofKeys) c.reject(k, 'roofing_layer_count is 0: no layer is roofing');
+  const initial = str('top_bottom_pattern_0');
+  if (initial !== undefined && CURA_SKIN[initial] !== (c.settings.bottomSkinPattern === 'monotonic' ? 'lines' : c.settings.bottomSkinPattern ?? 'lines')) {
+    c.reject('top_bottom_pattern_0', "Strata's bottom skin has one pattern on every layer (bottomSkinPattern, from top_bottom_pattern)");
+  }
+
+  // ironing: its flow is a share of a skin line's in Cura, of a line as wide as the ironing's spacing in Strata
+  const ironing = str('ironing_enabled');
+  if (ironing !== undefined) c.set('ironingEnabled', bool(ironing), 'ironing_enabled', 'not True or False');
+  const highest = str('ironing_only_highest_layer');
+  if (highest !== undefined) c.set('ironingType', bool(highest) === undefined ? undefined : bool(highest) ? 'topmost' : 'top', 'ironing_only_highest_layer', 'not True or False');
+  take('ironingSpacing', ['ironing_line_spacing']);
+  take('ironingSpeed', ['speed_ironing']);
+  const ironingFlow = value('ironing_flow');
+  if (ironingFlow !== undefined) {
+    const skinWidth = value('skin_line_width') ?? c.settings.lineWidth ?? c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number);
+    const spacing = c.settings.ironingSpacing ?? (SCHEMA.ironingSpacing.default as number);
+    c.set('ironingFlow', round((ironingFlow * skinWidth) / spacing, 2), 'ironing_flow');
+  } else if (c.has('ironing_flow')) c.reject('ironing_flow', 'a formula Strata cannot evaluate');
 
   // speeds
   take('perimeterSpeed', ['speed_wall_0']);

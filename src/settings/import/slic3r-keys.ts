@@ -64,6 +64,11 @@ const INFILL: Readonly<Record<string, PatternId>> = {
   supportcubic: 'cubic', honeycomb: 'hexagons', '3dhoneycomb': 'hexagons', gyroid: 'gyroid', concentric: 'concentric',
   archimedeanchords: 'spiral', octagramspiral: 'spiral', lightning: 'lightning',
 };
+const SKIN_PATTERN: Readonly<Record<string, Settings['topSkinPattern']>> = {
+  rectilinear: 'lines', alignedrectilinear: 'lines', 'zig-zag': 'lines', line: 'lines', monotonic: 'monotonic', monotonicline: 'monotonic',
+  monotoniclines: 'monotonic', concentric: 'concentric',
+};
+const IRONING: Readonly<Record<string, Settings['ironingType']>> = { top: 'top', topmost: 'topmost', solid: 'all' };
 const WALL_GENERATOR: Readonly<Record<string, Settings['wallGenerator']>> = { arachne: 'variable', classic: 'classic' };
 const SEAM: Readonly<Record<string, Settings['seamPosition']>> = { aligned: 'aligned', nearest: 'nearest', rear: 'rear', back: 'rear', random: 'random' };
 const FLAVOR: Readonly<Record<string, Settings['gcodeFlavor']>> = {
@@ -95,6 +100,7 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
   walls(c, flavor, nozzle, layerHeight);
   seamsAndSurface(c, layerHeight);
   infill(c);
+  surfaces(c);
   speeds(c);
   temperatures(c);
   cooling(c);
@@ -299,6 +305,45 @@ function speed(raw: string | undefined, base: number | undefined): number | unde
   if (!v || v.value <= 0) return undefined;
   if (!v.percent) return v.value;
   return base === undefined ? undefined : round((base * v.value) / 100, 2);
+}
+
+/**
+ * Skin patterns and ironing. PrusaSlicer's top and bottom fill patterns (OrcaSlicer's top and bottom surface
+ * patterns): rectilinear and its kin are lines, monotonic (and OrcaSlicer's monotonic line) monotonic,
+ * concentric concentric. Ironing: PrusaSlicer's `ironing` turns it on and `ironing_type` says where
+ * (top, topmost, solid: all); OrcaSlicer has the type alone, `no ironing` for off. The flow is a % of a full
+ * line as wide as the ironing spacing in both, as in Strata. OrcaSlicer's `ironing_angle` is a fixed
+ * direction, or -1 for its fill direction, which Strata's default (across the skin lines) stands for.
+ */
+function surfaces(c: ImportContext): void {
+  for (const [side, setting] of [['top', 'topSkinPattern'], ['bottom', 'bottomSkinPattern']] as const) {
+    const p = c.getAny(`${side}_fill_pattern`, `${side}_surface_pattern`);
+    if (!p) continue;
+    const v = first(p.value)?.toLowerCase();
+    c.set(setting, v === undefined ? undefined : SKIN_PATTERN[v], p.key, `pattern "${v}" has no Strata skin equivalent (lines, monotonic, concentric)`);
+  }
+  const on = c.getAny('ironing');
+  if (on) c.set('ironingEnabled', bool(on.value), on.key, 'not 0 or 1');
+  const type = c.getAny('ironing_type');
+  const t = type ? first(type.value)?.toLowerCase() : undefined;
+  if (type && (t === 'no ironing' || t === 'no_ironing')) {
+    if (!on) c.set('ironingEnabled', false, type.key);
+  } else if (type) {
+    const id = t === undefined ? undefined : IRONING[t];
+    c.set('ironingType', id, type.key, `ironing type "${t}" has no Strata equivalent (top, topmost, solid)`);
+    if (!on && id) c.set('ironingEnabled', true, type.key);
+  }
+  const flow = c.getAny('ironing_flowrate', 'ironing_flow');
+  if (flow) c.set('ironingFlow', percent(flow.value), flow.key, 'not a percentage');
+  const spacing = c.getAny('ironing_spacing');
+  if (spacing) c.set('ironingSpacing', num(spacing.value), spacing.key, 'not a distance');
+  const ironingSpeed = c.getAny('ironing_speed');
+  if (ironingSpeed) c.set('ironingSpeed', num(ironingSpeed.value), ironingSpeed.key, 'not a speed');
+  const angle = c.getAny('ironing_angle');
+  const a = angle ? num(angle.value) : undefined;
+  if (angle && a !== -1) {
+    c.set('ironingAngle', a === undefined || a < 0 ? undefined : a > 180 ? a - 360 : a, angle.key, 'not an angle from 0 to 360 (or -1)');
+  }
 }
 
 function speeds(c: ImportContext): void {
