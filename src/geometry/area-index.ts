@@ -442,4 +442,33 @@ export class AreaIndex {
     }
     return false;
   }
+
+  /**
+   * Where the segment from a to b crosses the areas' edges: the parameters t in (0, 1) along it (a + t·(b − a)),
+   * pushed to `out` unsorted, an edge that meets it at an end of the edge counted (it may come twice). Returns
+   * whether an edge touches it at a or b, or runs along its line (the segment may start or end on the boundary).
+   */
+  crossingsAlong(ax: number, ay: number, bx: number, by: number, out: number[]): boolean {
+    if (this.empty) return false;
+    const n = this.#edgesNear({ minX: Math.min(ax, bx), minY: Math.min(ay, by), maxX: Math.max(ax, bx), maxY: Math.max(ay, by) });
+    const e = this.#e;
+    const dx = bx - ax, dy = by - ay;
+    let touch = false;
+    for (let j = 0; j < n; j++) {
+      const k = 4 * nearEdges[j];
+      const cx = e[k], cy = e[k + 1];
+      const ex = e[k + 2] - cx, ey = e[k + 3] - cy;
+      const den = dx * ey - dy * ex;
+      if (den === 0) {
+        if ((cx - ax) * dy - (cy - ay) * dx === 0) touch = true;
+        continue;
+      }
+      const t = ((cx - ax) * ey - (cy - ay) * ex) / den;
+      const u = ((cx - ax) * dy - (cy - ay) * dx) / den;
+      if (u < 0 || u > 1) continue;
+      if (t > 0 && t < 1) out.push(t);
+      else if (t === 0 || t === 1) touch = true;
+    }
+    return touch;
+  }
 }

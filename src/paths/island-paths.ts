@@ -136,8 +136,13 @@ export function islandGroup(island: IslandRegions, ctx: IslandContext): PathGrou
     if (set.paths.length === 0) continue;
     // the outer wall made rough where fuzzy skin is on (fuzzy-skin.ts), its widths with it
     const { paths, widths } = fuzzyWalls(set, cfg, ctx.layer.index);
-    const opts = { wall: set.role === 'wall' ? set.wall : undefined, widths: widths ?? undefined, overAir: set.role === 'wall' ? wallsOverAir : null };
+    const isWall = set.role === 'wall';
+    const opts = { wall: isWall ? set.wall : undefined, widths: widths ?? undefined, overAir: isWall ? wallsOverAir : null, overhangLevels: isWall ? island.overhangLevels : null };
     entries.push(makeEntry(cfg, set.role, set.closed, paths, w, opts));
+  }
+  // extra walls over overhangs: a ring an entry, in the order they were made (the planner keeps it)
+  for (const ring of island.extraWalls ?? []) {
+    entries.push(makeEntry(cfg, 'extra-wall', false, ring.paths, w, { widths: ring.widths ?? undefined, overAir: wallsOverAir, overhangLevels: island.overhangLevels }));
   }
   entries.push(...fillEntries(island, ctx));
   if (island.fills) for (const f of island.fills) entries.push(...fillEntries(f, ctx));

@@ -3,6 +3,7 @@
  * area over air, and every piece is flagged by whether its middle lies inside that area. The planner prints
  * flagged runs their own way (bridge skin, slowed overhang walls).
  */
+import { AreaIndex as EdgeGrid } from '../geometry/area-index.js';
 import { boundsOf, pointInArea } from '../geometry/clip.js';
 import { ringBounds } from '../geometry/contain.js';
 import { hypot, type Bounds, type ExPolygon, type Pt } from '../geometry/types.js';
@@ -10,15 +11,20 @@ import { hypot, type Bounds, type ExPolygon, type Pt } from '../geometry/types.j
 /** Pieces shorter than this (µm) keep their neighbour's flag: no run is shorter than a few micrometres. */
 const MIN_PIECE_UM = 5;
 
-interface AreaIndex {
+export interface AreaIndex {
   areas: readonly ExPolygon[];
   bounds: Bounds[];
   box: Bounds;
+  /** The areas' edges in a grid, for large areas tested against many paths (the levels of overhanging walls). */
+  grid?: EdgeGrid;
 }
 
-export function indexArea(areas: readonly ExPolygon[]): AreaIndex {
+/** @param grid bucket the areas' edges in a grid (point and crossing tests then look at the edges nearby only) */
+export function indexArea(areas: readonly ExPolygon[], grid = false): AreaIndex {
   const bounds = areas.map((a) => boundsOf([a]));
-  return { areas, bounds, box: boundsOf(areas) };
+  const idx: AreaIndex = { areas, bounds, box: boundsOf(areas) };
+  if (grid && areas.length) idx.grid = new EdgeGrid(areas);
+  return idx;
 }
 
 function overlaps(a: Bounds, minX: number, minY: number, maxX: number, maxY: number): boolean {
@@ -26,6 +32,7 @@ function overlaps(a: Bounds, minX: number, minY: number, maxX: number, maxY: num
 }
 
 function inside(p: Pt, idx: AreaIndex): boolean {
+  if (idx.grid) return p.x >= idx.box.minX && p.x <= idx.box.maxX && p.y >= idx.box.minY && p.y <= idx.box.maxY && idx.grid.contains(p.x, p.y);
   for (let k = 0; k < idx.areas.length; k++) {
     const b = idx.bounds[k];
     if (p.x < b.minX || p.x > b.maxX || p.y < b.minY || p.y > b.maxY) continue;
@@ -34,8 +41,12 @@ function inside(p: Pt, idx: AreaIndex): boolean {
   return false;
 }
 
-/** Parameters t in (0, 1) where segment a→b crosses a ring edge of the area. */
-function crossings(a: Pt, b: Pt, idx: AreaIndex, out: number[]): void {
+/**
+ * Parameters t in (0, 1) where segment a→b crosses a ring edge of the area; with a grid, whether an edge also
+ * touches it at an end or runs along it (without, false).
+ */
+function crossings(a: Pt, b: Pt, idx: AreaIndex, out: number[]): boolean {
+  if (idx.grid) return idx.grid.crossingsAlong(a.x, a.y, b.x, b.y, out);
   const minX = Math.min(a.x, b.x), maxX = Math.max(a.x, b.x), minY = Math.min(a.y, b.y), maxY = Math.max(a.y, b.y);
   const dx = b.x - a.x, dy = b.y - a.y;
   for (let k = 0; k < idx.areas.length; k++) {
@@ -55,6 +66,7 @@ function crossings(a: Pt, b: Pt, idx: AreaIndex, out: number[]): void {
       }
     }
   }
+  return false;
 }
 
 export interface FlaggedPath {
@@ -70,24 +82,66 @@ export interface FlaggedPath {
  * lies over air (the common case: the path is returned unchanged by the caller).
  */
 export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex, widths: Float64Array | null = null): FlaggedPath | null {
+  return flagPath(path, closed, [idx], widths);
+}
+
+/**
+ * Split a path where it crosses the boundary of any of `levels`' areas and flag each edge with its level: the
+ * highest k whose area (`levels[k - 1]`) holds the edge, 0 for none (levels of overhang: from level 2 on each
+ * level's area lies within the one before). Pieces of one edge that end up on one level are one edge again.
+ * Null when no part of the path lies in any level's area.
+ */
+export function flagLevels(path: readonly Pt[], closed: boolean, levels: readonly AreaIndex[], widths: Float64Array | null = null): FlaggedPath | null {
+  const f = flagPath(path, closed, levels, widths);
+  return f && joinLevelRuns(f, path);
+}
+
+/**
+ * The level of a point: one area at a time from the first, stopping at the first it is not in after the first
+ * two (level 1's area need not hold the ones above it near the outline's edge; from level 2 on each lies within
+ * the one before), levels with no area passed over.
+ */
+function levelAt(p: Pt, levels: readonly AreaIndex[]): number {
+  let level = 0;
+  for (let k = 0; k < levels.length; k++) {
+    if (levels[k].areas.length === 0) continue;
+    if (inside(p, levels[k])) level = k + 1;
+    else if (k > 0) break;
+  }
+  return level;
+}
+
+function flagPath(path: readonly Pt[], closed: boolean, levels: readonly AreaIndex[], widths: Float64Array | null): FlaggedPath | null {
   const n = path.length;
-  if (n < 2 || idx.areas.length === 0) return null;
+  if (n < 2 || levels.every((idx) => idx.areas.length === 0)) return null;
   // quick rejection: the path's bounds miss the area
   const { minX, minY, maxX, maxY } = ringBounds(path);
-  if (!overlaps(idx.box, minX, minY, maxX, maxY)) return null;
+  if (!levels.some((idx) => idx.areas.length > 0 && overlaps(idx.box, minX, minY, maxX, maxY))) return null;
   const points: Pt[] = [];
   const flags: number[] = [];
   const ts: number[] = [];
   const ws: number[] | null = widths ? [] : null;
   const edges = closed ? n : n - 1;
   let any = false;
+  // With every area in a grid, an edge that no boundary crosses or touches, after one the same, keeps the
+  // level the path had (it cannot change without crossing a boundary): no point test.
+  const carry = levels.every((idx) => idx.grid || idx.areas.length === 0);
+  let clear = false;
   for (let e = 0; e < edges; e++) {
     const a = path[e], b = path[(e + 1) % n];
     points.push(a);
     const wa = widths ? widths[e] : 0, wb = widths ? widths[(e + 1) % n] : 0;
     if (ws) ws.push(wa);
     ts.length = 0;
-    crossings(a, b, idx, ts);
+    let touch = false;
+    for (const idx of levels) if (crossings(a, b, idx, ts)) touch = true;
+    if (carry && clear && !touch && ts.length === 0) {
+      // the whole edge on the level of the piece before
+      const f = flags[flags.length - 1];
+      flags.push(f);
+      continue;
+    }
+    clear = !touch && ts.length === 0;
     ts.sort((p, q) => p - q);
     const len = hypot(b.x - a.x, b.y - a.y);
     let prevT = 0;
@@ -97,7 +151,7 @@ export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex
     for (let c = 0; c < cuts.length; c++) {
       const t = cuts[c];
       const mid = { x: a.x + ((prevT + t) / 2) * (b.x - a.x), y: a.y + ((prevT + t) / 2) * (b.y - a.y) };
-      const f = inside(mid, idx) ? 1 : 0;
+      const f = levelAt(mid, levels);
       if (f) any = true;
       flags.push(f);
       if (t < 1) {
@@ -117,4 +171,26 @@ export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex
   }
   if (!any) return null;
   return { points, flags: Uint8Array.from(flags), widths: ws ? Float64Array.from(ws) : null };
+}
+
+/** Drop the points a split added between two pieces of one edge that took the same level. */
+function joinLevelRuns(f: FlaggedPath, path: readonly Pt[]): FlaggedPath {
+  const { points, flags, widths } = f;
+  if (points.length === path.length) return f;
+  const keep: number[] = [];
+  let original = 0; // the next of the path's own points
+  for (let k = 0; k < points.length; k++) {
+    const own = original < path.length && points[k] === path[original];
+    if (own) original++;
+    // point k ends edge k - 1 and starts edge k (a loop's point 0 is the path's own)
+    if (own || k === 0 || flags[k - 1] !== flags[k]) keep.push(k);
+  }
+  if (keep.length === points.length) return f;
+  const edges = flags.length;
+  const outFlags = keep.filter((k) => k < edges).map((k) => flags[k]);
+  return {
+    points: keep.map((k) => points[k]),
+    flags: Uint8Array.from(outFlags),
+    widths: widths ? Float64Array.from(keep.map((k) => widths[k])) : null,
+  };
 }

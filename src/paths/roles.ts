@@ -28,8 +28,14 @@ interface OverAirRule {
   feature?: FeatureType;
   speed: (cfg: Config) => number;
   flow?: (cfg: Config) => number;
-  /** Part-cooling fan, 0..1. */
-  fan?: (cfg: Config) => number;
+  /** Part-cooling fan, 0..1 (undefined: the layer's). */
+  fan?: (cfg: Config) => number | undefined;
+  /**
+   * Runs partly over air, graded by how much of the line hangs over nothing: the speeds of the runs with a
+   * quarter, half and three quarters of the line width or more over nothing (the fan as `fan`), or null when
+   * the config does not grade them (then only runs wholly over air print their own way).
+   */
+  partial?: (cfg: Config) => readonly [number, number, number] | null;
 }
 
 interface RoleRule {
@@ -53,7 +59,11 @@ const BRIDGE: OverAirRule = {
   flow: (c) => c.bridgeFlow / 100,
   fan: (c) => c.bridgeFanSpeed / 100,
 };
-const OVERHANG_WALL: OverAirRule = { speed: (c) => c.overhangWallSpeed };
+const OVERHANG_WALL: OverAirRule = {
+  speed: (c) => c.overhangWallSpeed,
+  fan: (c) => (c.overhangFanSpeed === null ? undefined : c.overhangFanSpeed / 100),
+  partial: (c) => (c.dynamicOverhangSpeeds ? [c.overhangSpeed25, c.overhangSpeed50, c.overhangSpeed75] : null),
+};
 
 /**
  * Every role, in print order within a group (walls among themselves by the wallOrder setting, then by
@@ -68,6 +78,8 @@ export const ROLES = {
   'support-floor': { feature: 'SUPPORT-INTERFACE', speed: (c) => c.supportInterfaceSpeed, seam: 'nearest' },
   support: { feature: 'SUPPORT', speed: (c) => c.supportSpeed, seam: 'nearest' },
   'support-roof': { feature: 'SUPPORT-INTERFACE', speed: (c) => c.supportInterfaceSpeed, seam: 'nearest' },
+  // extra walls over an overhang inside an island (extraPerimetersOnOverhangs), before the island's walls
+  'extra-wall': { feature: 'WALL-INNER', speed: (c) => c.innerWallSpeed, overAir: OVERHANG_WALL, seam: 'nearest' },
   wall: {
     feature: 'WALL-OUTER',
     innerFeature: 'WALL-INNER',
@@ -119,6 +131,12 @@ export interface EntryStyle {
   normal: ExtrusionStyle;
   /** Runs over air; the same object as `normal` when they print no differently (then nothing is flagged). */
   overAir: ExtrusionStyle;
+  /**
+   * Walls graded by how much of the line hangs over nothing (dynamic overhang speeds): the style of each
+   * over-air level, indexed by the edge's flag (0 `normal`; 1, 2, 3: a quarter, half, three quarters of the line
+   * width or more over nothing; 4: all of it, as `overAir`). Absent: flags are 0 (`normal`) or 1 (`overAir`).
+   */
+  levels?: readonly ExtrusionStyle[];
   seam: 'configured' | 'nearest';
   /** Print order within a group (the role's rank). */
   rank: number;
@@ -145,6 +163,8 @@ function makeStyle(cfg: Config, role: PathRole, wall: number | undefined): Entry
   const speed = (inner && rule.innerSpeed ? rule.innerSpeed : rule.speed)(cfg);
   const normal: ExtrusionStyle = { feature, speed, flow: rule.flow ? rule.flow(cfg) : 1 };
   let overAir = normal;
+  let partial: readonly [number, number, number] | null = null;
+  let levels: ExtrusionStyle[] | null = null;
   const air = rule.overAir;
   if (air) {
     const airSpeed = air.speed(cfg);
@@ -154,11 +174,15 @@ function makeStyle(cfg: Config, role: PathRole, wall: number | undefined): Entry
       speed: air.feature ? airSpeed : Math.min(speed, airSpeed),
       flow: air.flow ? air.flow(cfg) : 1,
     };
-    if (air.fan) a.fan = air.fan(cfg);
+    const fan = air.fan?.(cfg);
+    if (fan !== undefined) a.fan = fan;
     const same = a.feature === normal.feature && a.speed === normal.speed && a.flow === normal.flow && a.fan === undefined;
     if (!same) overAir = a;
+    partial = air.partial?.(cfg) ?? null;
+    if (partial) levels = gradedLevels(normal, overAir, partial, fan);
   }
   const style: EntryStyle = { normal, overAir, seam: rule.seam, rank: RANK[role] };
+  if (levels) style.levels = levels;
   const scarf = rule.scarf ? scarfOf(cfg, wall ?? 0) : undefined;
   if (scarf) style.scarf = scarf;
   return style;
@@ -170,9 +194,33 @@ function scarfOf(cfg: Config, wall: number): ScarfStyle | undefined {
   return { length: cfg.scarfLength, startHeight: cfg.scarfStartHeight / 100, steps: cfg.scarfSteps, conditional: cfg.scarfConditional };
 }
 
+/**
+ * The styles of the graded over-air levels of a wall (EntryStyle.levels): a run is only ever slowed down, and
+ * levels that print alike share one style object (the planner joins runs of one style); null when every level
+ * prints as the wall does.
+ */
+function gradedLevels(normal: ExtrusionStyle, overAir: ExtrusionStyle, speeds: readonly [number, number, number], fan: number | undefined): ExtrusionStyle[] | null {
+  const levels: ExtrusionStyle[] = [normal];
+  for (const s of speeds) {
+    const speed = Math.min(normal.speed, s);
+    const prev = levels[levels.length - 1];
+    if (prev.speed === speed && prev.fan === fan) levels.push(prev);
+    else if (speed === normal.speed && fan === undefined) levels.push(normal);
+    else levels.push(fan === undefined ? { ...normal, speed } : { ...normal, speed, fan });
+  }
+  const last = levels[3];
+  levels.push(last.speed === overAir.speed && last.fan === overAir.fan && last.feature === overAir.feature && last.flow === overAir.flow ? last : overAir);
+  return levels.some((l) => l !== normal) ? levels : null;
+}
+
 /** Whether the parts of an entry's paths over air print any differently (else they are not marked at all). */
 export function overAirMatters(style: EntryStyle): boolean {
-  return style.overAir !== style.normal;
+  return style.overAir !== style.normal || style.levels !== undefined;
+}
+
+/** The style a run prints in by its edges' over-air flag (PathEntry.overAir). */
+export function flagStyle(style: EntryStyle, flag: number): ExtrusionStyle {
+  return style.levels ? style.levels[flag] : flag ? style.overAir : style.normal;
 }
 
 /** Groups of a layer print in this order; islands among themselves nearest-first. */

@@ -32,7 +32,9 @@ export interface PathEntry {
   /**
    * Per path (when present), one flag per edge (edge k runs from point k to k+1, for loops the last back to
    * the first): 1 where the edge lies over nothing on the layer below. Such runs print in the style's
-   * over-air variant (bridge skin, slowed overhang walls).
+   * over-air variant (bridge skin, slowed overhang walls). Walls with graded styles (EntryStyle.levels) carry
+   * the level instead: 1 to 4 for a quarter, half, three quarters or all of the line width over nothing
+   * (roles.ts `flagStyle` gives a flag's style).
    */
   overAir?: (Uint8Array | null)[];
   /** How the entry prints, resolved from the role table where it was made (roles.ts `entryStyle`). */

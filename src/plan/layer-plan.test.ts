@@ -90,3 +90,21 @@ test('a travel from support to support retracts only where it would pass over th
   assert.equal(retracts([a, b], cfg, [inside.area!]), true, 'over the top of the part below, crossing no edge of it');
   assert.equal(retracts([a, b], resolveConfig({ supportEnabled: true, supportLimitRetractions: false })), true, "with the setting off");
 });
+
+test('a wall graded by how much of it hangs over nothing: each level at its own speed, levels that print alike one run, the overhang fan on them', () => {
+  const graded = resolveConfig({ perimeterSpeed: 30, dynamicOverhangSpeeds: true, overhangSpeed25: 24, overhangSpeed50: 18, overhangSpeed75: 18, overhangWallSpeed: 6, overhangFanSpeed: 60 });
+  const line = [0, 10_000, 12_000, 14_000, 16_000, 20_000, 22_000].map((x) => ({ x, y: 5_000 }));
+  const entry: PathEntry = { role: 'wall', wall: 0, closed: false, paths: [line], width: 0.4, overAir: [Uint8Array.from([0, 1, 2, 3, 4, 0])], style: entryStyle(graded, 'wall', 0) };
+  const plan = planLayer({ index: 5, z: 1.2, height: 0.2, sliceZ: 1.1, lineWidth: 0.4, groups: [{ kind: 'island', object: 0, entries: [entry] }] }, graded, { at: { x: 0, y: 5_000 } });
+  const ex = plan.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude');
+  assert.deepEqual(ex.map((s) => [s.points[0].x, s.points[s.points.length - 1].x, s.speed, s.fan]), [
+    [0, 10_000, 30, undefined],
+    [10_000, 12_000, 24, 0.6],
+    [12_000, 16_000, 18, 0.6],
+    [16_000, 20_000, 6, 0.6],
+    [20_000, 22_000, 30, undefined],
+  ]);
+  // the first layer prints every level at the first-layer speed
+  const first = planLayer({ index: 0, z: 0.2, height: 0.2, sliceZ: 0.1, lineWidth: 0.4, groups: [{ kind: 'island', object: 0, entries: [entry] }] }, graded, { at: { x: 0, y: 5_000 } }, 0);
+  assert.deepEqual(first.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude').map((s) => s.speed), [graded.firstLayerSpeed]);
+});

@@ -9,7 +9,7 @@ import { orderNearest } from '../geometry/nearest-order.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
 import { combRoute, makeCombArea, pathLength, type CombArea } from './comb.js';
-import { GROUP_ORDER, type EntryStyle, type ExtrusionStyle } from '../paths/roles.js';
+import { flagStyle, GROUP_ORDER, overAirMatters, type EntryStyle, type ExtrusionStyle } from '../paths/roles.js';
 import { sortEntries } from './print-order.js';
 import { scarfRuns } from './scarf.js';
 import { chooseSeam, rotateLoop } from './seam.js';
@@ -132,6 +132,7 @@ function layerStyle(ctx: Ctx, style: EntryStyle): EntryStyle {
   if (!s) {
     const normal = { ...style.normal, speed: ctx.cfg.firstLayerSpeed };
     ctx.firstStyles.set(style, (s = { ...style, normal, overAir: normal }));
+    delete s.levels;
   }
   return s;
 }
@@ -142,17 +143,20 @@ function layerStyle(ctx: Ctx, style: EntryStyle): EntryStyle {
  */
 function extrudeFlagged(ctx: Ctx, style: EntryStyle, run: Run): void {
   const flags = run.flags;
-  if (!flags || style.overAir === style.normal) return extrude(ctx, style.normal, run);
+  if (!flags || !overAirMatters(style)) return extrude(ctx, style.normal, run);
   const { points, widths, z } = run;
   const n = points.length;
   const edges = run.closed ? n : n - 1;
   let runStart = 0;
+  let runStyle = flagStyle(style, flags[0]);
   for (let e = 1; e <= edges; e++) {
-    if (e < edges && flags[e] === flags[runStart]) continue;
+    // edges whose flags print alike (graded levels that share a style) are one run
+    const next = e < edges ? flagStyle(style, flags[e]) : null;
+    if (next === runStyle) continue;
     const count = e - runStart + 1;
     const part: Pt[] = new Array(count);
     for (let k = 0; k < count; k++) part[k] = points[(runStart + k) % n];
-    extrude(ctx, flags[runStart] ? style.overAir : style.normal, {
+    extrude(ctx, runStyle, {
       points: part,
       closed: false,
       width: run.width,
@@ -161,6 +165,7 @@ function extrudeFlagged(ctx: Ctx, style: EntryStyle, run: Run): void {
       flags: null,
     });
     runStart = e;
+    if (next) runStyle = next;
   }
 }
 

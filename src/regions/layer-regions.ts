@@ -13,6 +13,8 @@ import type { LayerZ } from '../slice/types.js';
 import { bridgeOf } from './bridge-angle.js';
 import { ironingArea, type IroningIsland } from './ironing-area.js';
 import { overhangOf } from './overhang.js';
+import { BelowLevels, overhangLevels } from './overhang-levels.js';
+import { overhangWalls } from './overhang-walls.js';
 import { allSkin, CoverWindows, skinAreas } from './skin-areas.js';
 import { rangeAt, type ObjectSetup, type PrintSetup } from './objects.js';
 import type { IslandRegions, LayerRegions, RegionFill } from './types.js';
@@ -50,7 +52,7 @@ interface Piece {
 
 /** The walls' settings: regions that agree on these share their walls. */
 function wallsKey(cfg: Config): string {
-  return [cfg.walls, cfg.wallGenerator, cfg.minFeatureSize, cfg.minBeadWidth, cfg.maxBeadWidth, cfg.wallTransitionLength, cfg.wallTransitionAngle, cfg.wallDistributionCount].join('/');
+  return [cfg.walls, cfg.wallGenerator, cfg.minFeatureSize, cfg.minBeadWidth, cfg.maxBeadWidth, cfg.wallTransitionLength, cfg.wallTransitionAngle, cfg.wallDistributionCount, cfg.extraPerimetersOnOverhangs].join('/');
 }
 
 /**
@@ -227,8 +229,11 @@ export class RegionsRun {
     return true;
   }
 
-  /** Object k's islands of layer i. */
-  #islands(k: number, i: number, w: number, below: readonly ExPolygon[], belowGrown: readonly ExPolygon[]): IslandRegions[] {
+  /**
+   * Object k's islands of layer i.
+   * @param levelsBelow the layer below as measured for the overhang levels of walls
+   */
+  #islands(k: number, i: number, w: number, below: readonly ExPolygon[], belowGrown: readonly ExPolygon[], levelsBelow: BelowLevels): IslandRegions[] {
     const section = this.#section(k, i);
     const pieces = this.#pieces(k, i, section);
     const configs = this.#setup.configs;
@@ -243,7 +248,11 @@ export class RegionsRun {
       const area = groups.size === 1 ? section : group.length === 1 ? group[0].area! : union(group.flatMap((p) => p.area!));
       const first = group[0].region;
       const irons = group.some((p) => this.#irons(k, i, configs[p.region]));
-      for (const iw of computeWalls(area, configs[first], w)) {
+      const wallCfg = configs[first];
+      for (const iw of computeWalls(area, wallCfg, w)) {
+        // extra walls over the overhangs inside the walls that cannot bridge take their area from skin and infill
+        const extra = i > 0 && wallCfg.extraPerimetersOnOverhangs ? overhangWalls(iw.inner, below, w, wallCfg.walls) : null;
+        const inside = extra ? difference(iw.inner, extra.covered) : iw.inner;
         const fills: RegionFill[] = [];
         // the island's top surface, where a region of it irons
         let iron: IroningIsland | null = null;
@@ -252,7 +261,7 @@ export class RegionsRun {
           iron = { outline: iw.outline, topSurface: above.length ? difference([iw.outline], above) : [iw.outline] };
         }
         for (const p of group) {
-          const inner = group.length === 1 ? iw.inner : intersection(iw.inner, p.area!);
+          const inner = group.length === 1 ? inside : intersection(inside, p.area!);
           if (inner.length || group.length === 1) fills.push(this.#fill(k, i, p.region, inner, below, w, iron, group.length === 1 ? null : p.area));
         }
         const main = fills.shift() ?? this.#fill(k, i, first, [], below, w);
@@ -265,6 +274,11 @@ export class RegionsRun {
           unsupported: i > 0 ? difference([iw.outline], belowGrown) : [],
         };
         if (fills.length) island.fills = fills;
+        if (extra) island.extraWalls = extra.rings;
+        if (i > 0 && wallCfg.dynamicOverhangSpeeds) {
+          const levels = overhangLevels(iw.outline, levelsBelow, w);
+          if (levels) island.overhangLevels = levels;
+        }
         out.push(island);
       }
     }
@@ -299,10 +313,11 @@ export class RegionsRun {
     // a wall is over air where its centreline is more than half a line width out from the layer below
     // (as PrusaSlicer marks overhang perimeters): the parts of the outline beyond that grown section
     const belowGrown = below.length ? offset(below, w / 2) : below;
+    const levelsBelow = new BelowLevels(below, w);
     const islands: IslandRegions[] = [];
     const overhangs: ExPolygon[][] = [];
     for (let k = 0; k < this.#objects.length; k++) {
-      const own = this.#islands(k, i, w, below, belowGrown);
+      const own = this.#islands(k, i, w, below, belowGrown, levelsBelow);
       for (const r of own) islands.push(r);
       overhangs.push(this.#overhang(k, i, own, w / 2));
     }

@@ -23,6 +23,13 @@ export interface WallSet {
   widths: (Float64Array | null)[] | null;
 }
 
+/** One ring of extra walls over an overhang: open lines, with their own widths where they vary (gap fill). */
+export interface ExtraWallRing {
+  paths: Pt[][];
+  /** Per path, the bead width at each point, mm (null: the layer's line width); null for none at all. */
+  widths: (Float64Array | null)[] | null;
+}
+
 /**
  * The skin and infill areas of one region of an island: inside the island's walls, where one config
  * applies (the object's, or a layer range's or modifier's).
@@ -66,6 +73,16 @@ export interface IslandRegions extends RegionFill {
   lostMm2: number;
   /** The part of the outline more than half a line width out from the layer below: walls there are overhangs. */
   unsupported: ExPolygon[];
+  /**
+   * With dynamic overhang speeds (overhang-levels.ts): where a wall's centreline has a quarter, half and three
+   * quarters of the line width or more over nothing (levels 1 to 3; `unsupported` is level 4, all of it).
+   */
+  overhangLevels?: ExPolygon[][];
+  /**
+   * With extra perimeters on overhangs (overhang-walls.ts): lines over the overhangs inside the walls that
+   * cannot bridge, ring by ring in print order (from the anchor outwards).
+   */
+  extraWalls?: ExtraWallRing[];
   /** The skin and infill of the parts of the island inside modifiers whose configs differ from `region`'s. */
   fills?: RegionFill[];
 }
