@@ -229,7 +229,7 @@ async function sent(...flags: string[]): Promise<Received> {
   try {
     const r = await cli('send', SENT, ...flags, host.url);
     assert.equal(r.code, 0, r.err);
-    return host.received[0]!;
+    return host.received.find((r) => r.method === 'POST')!;
   } finally {
     await host.close();
   }

@@ -31,12 +31,12 @@ test('strata send uploads to OctoPrint with the key and prints; the summary is o
     const ok = await cli(['send', GCODE, '--to', 'octoprint', host.url, '--api-key', 'GOOD', '--print']);
     assert.equal(ok.code, 0, ok.err);
     assert.match(ok.err, /^.*part\.gcode: sent to OctoPrint at http:\/\/127\.0\.0\.1:\d+ as part\.gcode \(1 KB\); printing\n$/);
-    assert.equal(host.received[0]!.fields.print, 'true');
+    assert.equal(host.received.filter((r) => r.method === 'POST')[0]!.fields.print, 'true');
     // the key from the environment, and the address before the file
     const env = await cli(['send', host.url, '--to', 'octoprint', GCODE], { STRATA_API_KEY: 'GOOD' });
     assert.equal(env.code, 0, env.err);
     assert.doesNotMatch(env.err, /printing/);
-    assert.equal(host.received[1]!.fields.print, 'false');
+    assert.equal(host.received.filter((r) => r.method === 'POST')[1]!.fields.print, 'false');
     const bad = await cli(['send', GCODE, '--to', 'octoprint', host.url, '--api-key', 'WRONG']);
     assert.equal(bad.code, 1);
     assert.match(bad.err, /^strata: error: OctoPrint at http:\/\/127\.0\.0\.1:\d+ refused the API key \(403 Forbidden\): check --api-key/);

@@ -26,7 +26,8 @@ test('OctoPrint: the file and form fields arrive whole, with the key; progress r
   try {
     const progress: number[] = [];
     const r = await sendGcode(file, { to: 'octoprint', url: host.url, apiKey: 'KEY', print: true, onProgress: ({ sent, total }) => progress.push(sent / total) }, nodeTransport);
-    const got = host.received[0]!;
+    const got = host.received.find((r) => r.method === 'POST')!;
+    assert.equal(host.received[0]!.path, '/api/version', 'the key is tried first with a small request');
     assert.equal(got.method, 'POST');
     assert.equal(got.path, '/api/files/local');
     assert.equal(got.headers['x-api-key'], 'KEY');
@@ -44,9 +45,11 @@ test('Moonraker: /server/files/upload to the gcodes root; a print it did not sta
   const host = await fakeHost(() => ({ status: 201, body: { item: { path: 'sub/part.gcode', root: 'gcodes' }, print_started: false, print_queued: false, action: 'create_file' } }));
   try {
     const r = await sendGcode(file, { to: 'moonraker', url: host.url + '/', print: true }, nodeTransport);
-    assert.equal(host.received[0]!.path, '/server/files/upload');
-    assert.deepEqual(host.received[0]!.fields, { root: 'gcodes', print: 'true' });
-    assert.equal(host.received[0]!.headers['x-api-key'], undefined, 'no key given, none sent');
+    const got = host.received.find((r) => r.method === 'POST')!;
+    assert.equal(host.received[0]!.path, '/server/info');
+    assert.equal(got.path, '/server/files/upload');
+    assert.deepEqual(got.fields, { root: 'gcodes', print: 'true' });
+    assert.equal(got.headers['x-api-key'], undefined, 'no key given, none sent');
     assert.equal(r.name, 'sub/part.gcode');
     assert.equal(r.started, false);
     assert.match(r.notStarted!, /^Moonraker did not start the print: Klipper is not ready/);
@@ -100,11 +103,12 @@ test('refusals: wrong or missing key, full disk, upload limit, wrong address, fi
 });
 
 test('a host that answers before reading the upload (and closes) is understood by its answer', async () => {
-  const host = await fakeHost(() => ({ status: 401, body: { error: { message: 'Invalid API Key' } }, early: true }));
+  // a host that lets the key through the small request but refuses the upload at once (a full disk, say)
+  const host = await fakeHost((r) => (r.method === 'POST' ? { status: 507, body: { error: { message: 'Insufficient Storage' } }, early: true } : { status: 200, body: {} }));
   try {
     const big = { name: 'big.gcode', bytes: new TextEncoder().encode(GCODE.repeat(10)) };
-    assert.match(await failure(sendGcode(big, { to: 'moonraker', url: host.url, apiKey: 'BAD' }, nodeTransport)), /refused the API key \(401 Unauthorized\)/);
-    assert.equal(host.received[0]!.complete, false);
+    assert.match(await failure(sendGcode(big, { to: 'moonraker', url: host.url, apiKey: 'K' }, nodeTransport)), /has no room for the file \(disk full, 507 Insufficient Storage/);
+    assert.equal(host.received.find((r) => r.method === 'POST')!.complete, false, 'answered before the body');
   } finally {
     await host.close();
   }

@@ -2,8 +2,8 @@
  * Sending G-code to a print host: OctoPrint (`POST /api/files/local`) or Moonraker, the API server of
  * Klipper printers that Mainsail and Fluidd use (`POST /server/files/upload`). One upload, with progress, that
  * starts the print when asked; every failure is one line that says what to do: a wrong or missing API key
- * (401/403), a host that cannot be reached, a full disk or an upload limit on the host (507, 413, a 500 that
- * says so), a file that is not G-code (checked before sending).
+ * (401/403; checked first with a small request), a host that cannot be reached, a full disk or an upload
+ * limit on the host (507, 413, a 500 that says so), a file that is not G-code (checked before sending).
  *
  * Facts from the hosts' REST API documentation and their source (for status codes and reply fields).
  */
@@ -91,7 +91,8 @@ export function refusal(to: HostKind, url: string, reply: HttpReply, keyGiven: b
   const msg = hostMessage(reply.body);
   const said = msg ? `: ${msg}` : '';
   switch (true) {
-    case reply.status === 401 || reply.status === 403:
+    // OctoPrint takes a POST whose key it does not know for a browser's, without its CSRF token
+    case reply.status === 401 || reply.status === 403 || (to === 'octoprint' && reply.status === 400 && /CSRF/i.test(msg)):
       if (!keyGiven) return `${host} needs an API key (${status}): give one with ${keyName}${to === 'octoprint' ? " (OctoPrint: Settings › Application Keys, or the user's API key)" : ''}`;
       return `${host} refused the API key (${status}): check ${keyName}${to === 'octoprint' ? " (OctoPrint: Settings › Application Keys, or the user's API key)" : " (Moonraker's is at /access/api_key from a trusted client)"}`;
     case reply.status === 507 || DISK_FULL.test(msg):
@@ -108,6 +109,9 @@ export function refusal(to: HostKind, url: string, reply: HttpReply, keyGiven: b
       return `${host} refused the upload (${status}${said})`;
   }
 }
+
+/** A request that needs the key and changes nothing: OctoPrint's version, Moonraker's server info. */
+const PROBE: Record<HostKind, string> = { octoprint: 'api/version', moonraker: 'server/info' };
 
 /** The upload's request for each host. */
 function uploadRequest(to: HostKind, print: boolean): { path: string; fields: Record<string, string> } {
@@ -163,12 +167,22 @@ export async function sendGcode(file: { name: string; bytes: Uint8Array }, opts:
   const print = opts.print === true;
   const { path, fields } = uploadRequest(to, print);
   const where = base.href.replace(/\/$/, '');
+  const unreachable = (e: unknown) => (e instanceof Unreachable ? new StrataError('WRITE_FAILED', `cannot reach ${HOST_NAMES[to]} at ${where}: ${e.reason}`) : e);
+  // First a small request with the key: a wrong key, a wrong address or a host that cannot be reached is
+  // told before the file is sent (a host that refuses an upload may close the connection before its answer
+  // arrives).
+  let probe: HttpReply;
+  try {
+    probe = await transport.request('GET', new URL(PROBE[to], base).href, headers, undefined, opts.signal);
+  } catch (e) {
+    throw unreachable(e);
+  }
+  if (probe.status === 401 || probe.status === 403 || probe.status === 404) throw new StrataError('WRITE_FAILED', refusal(to, where, probe, !!opts.apiKey, keyName));
   let reply: HttpReply;
   try {
     reply = await transport.upload(new URL(path, base).href, headers, fields, { field: 'file', name, type: 'application/octet-stream', bytes: file.bytes }, opts.onProgress && ((sent, total) => opts.onProgress!({ sent, total })), opts.signal);
   } catch (e) {
-    if (e instanceof Unreachable) throw new StrataError('WRITE_FAILED', `cannot reach ${HOST_NAMES[to]} at ${where}: ${e.reason}`);
-    throw e;
+    throw unreachable(e);
   }
   if (reply.status < 200 || reply.status >= 300) throw new StrataError('WRITE_FAILED', refusal(to, where, reply, !!opts.apiKey, keyName));
   return { host: to, url: where, bytes: file.bytes.length, ...uploaded(to, reply.body, name, print) };

@@ -8,6 +8,8 @@ import { multipartBody, Unreachable, type FormFile, type HttpReply, type Transpo
 const IDLE_MS = 30_000;
 /** Upload pieces, bytes: progress is reported after each. */
 const PIECE = 64 * 1024;
+/** How long an upload waits for the host's "100 Continue" before sending the body anyway (RFC 9110), ms. */
+const CONTINUE_MS = 1000;
 
 /** A network error in words (the code in brackets). */
 export function describeNetworkError(e: NodeJS.ErrnoException): string {
@@ -83,8 +85,21 @@ export const nodeTransport: Transport = {
 
   upload(url, headers, fields, file: FormFile, onProgress, signal) {
     const body = multipartBody(fields, file);
-    const h = { ...headers, 'Content-Type': body.contentType, 'Content-Length': String(body.total) };
+    // "Expect: 100-continue": a host that refuses the upload (a wrong key) answers before the body is sent,
+    // instead of closing the connection while it arrives (which can lose its answer)
+    const h = { ...headers, 'Content-Type': body.contentType, 'Content-Length': String(body.total), Expect: '100-continue' };
     return send(new URL(url), 'POST', h, async (req, stop) => {
+      req.flushHeaders();
+      await new Promise<void>((resolve) => {
+        const timer = setTimeout(resolve, CONTINUE_MS);
+        const go = () => {
+          clearTimeout(timer);
+          resolve();
+        };
+        req.once('continue', go);
+        req.once('response', go);
+        req.once('close', go);
+      });
       let sent = 0;
       const put = async (chunk: Uint8Array) => {
         if (stop()) throw new Error('answered');

@@ -47,7 +47,7 @@ function parseForm(body: Buffer, contentType: string): Pick<Received, 'fields' |
 
 export async function fakeHost(answer: (r: Received) => Answer): Promise<{ url: string; received: Received[]; close: () => Promise<void> }> {
   const received: Received[] = [];
-  const server = createServer((req: IncomingMessage, res: ServerResponse) => {
+  const handle = (req: IncomingMessage, res: ServerResponse, expectsContinue: boolean) => {
     const base = { method: req.method ?? '', path: req.url ?? '', headers: req.headers, fields: {}, complete: false };
     const probe = answer(base);
     const reply = (a: Answer) => {
@@ -61,6 +61,7 @@ export async function fakeHost(answer: (r: Received) => Answer): Promise<{ url: 
       req.destroy();
       return;
     }
+    if (expectsContinue) res.writeContinue();
     const chunks: Buffer[] = [];
     req.on('data', (c: Buffer) => chunks.push(c));
     req.on('end', () => {
@@ -68,7 +69,10 @@ export async function fakeHost(answer: (r: Received) => Answer): Promise<{ url: 
       received.push(r);
       reply(answer(r));
     });
-  });
+  };
+  const server = createServer((req, res) => handle(req, res, false));
+  // a client that asks "Expect: 100-continue" is answered before its body when the answer is early
+  server.on('checkContinue', (req, res) => handle(req, res, true));
   await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
   const { port } = server.address() as AddressInfo;
   return {
