@@ -11,35 +11,25 @@ import assert from 'node:assert/strict';
 import { parseGcode } from '../analysis/gcode-parse.js';
 import { FEATURE_NAMES } from '../analysis/feature-names.js';
 import { Slicer } from '../api/slicer.js';
-import type { Mesh } from '../mesh/types.js';
 import type { SliceOptions } from '../settings/schema.js';
+import { box, join, type Arrays } from './test-meshes.js';
 
-/** Corners of a box, then its 12 triangles facing out (as test-model.ts boxTris). */
-const BOX_FACES = [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7];
-
-/** Boxes [x0, y0, z0, x1, y1, z1], each with its top shifted `lean` mm in +x, as one mesh. */
-function boxes(list: readonly { box: readonly number[]; lean?: number }[]): Mesh {
-  const positions: number[] = [];
-  const indices: number[] = [];
-  for (const { box, lean = 0 } of list) {
-    const [x0, y0, z0, x1, y1, z1] = box;
-    const base = positions.length / 3;
-    for (const [a, b, c] of [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]]) {
-      positions.push((a ? x1 : x0) + (c ? lean : 0), b ? y1 : y0, c ? z1 : z0);
-    }
-    for (const f of BOX_FACES) indices.push(base + f);
-  }
-  return { positions: new Float32Array(positions), indices: new Uint32Array(indices) };
+/** A mesh sheared along +x: each point moved by its height times tan(degrees). */
+function leaning(m: Arrays, degrees: number): Arrays {
+  const positions = m.positions.slice();
+  const k = Math.tan((degrees * Math.PI) / 180);
+  for (let i = 0; i < positions.length; i += 3) positions[i] += positions[i + 2] * k;
+  return { positions, indices: m.indices };
 }
 
 const ANGLES = [35, 50, 60, 70];
 const HEIGHT = 4;
 /** Block k stands on x 40..46, y 40 + 12k .. 48 + 12k and leans in +x at ANGLES[k]. */
-const LEANING = boxes(ANGLES.map((deg, k) => ({ box: [40, 40 + 12 * k, 0, 46, 48 + 12 * k, HEIGHT], lean: HEIGHT * Math.tan((deg * Math.PI) / 180) })));
+const LEANING = join(...ANGLES.map((deg, k) => leaning(box(40, 40 + 12 * k, 0, 46, 48 + 12 * k, HEIGHT), deg)));
 const SPEEDS = { perimeterSpeed: 30, overhangSpeed25: 24, overhangSpeed50: 18, overhangSpeed75: 12, overhangWallSpeed: 6 };
 const COMMON: SliceOptions = { center: false, minLayerTime: 0, threads: 1 };
 
-async function slice(mesh: Mesh, options: SliceOptions): Promise<string> {
+async function slice(mesh: Arrays, options: SliceOptions): Promise<string> {
   const { gcode } = await new Slicer({ ...COMMON, ...options }).slice(mesh);
   return gcode;
 }
@@ -111,7 +101,7 @@ test('overhang fan: the fan goes to overhangFanSpeed on the overhanging wall run
 });
 
 /** A pillar 8 mm long and a slab on it reaching 12 mm further out: its first layer hangs over nothing beyond x 48. */
-const CANTILEVER = boxes([{ box: [40, 40, 0, 48, 46, 6] }, { box: [40, 40, 6, 60, 46, 8] }]);
+const CANTILEVER = join(box(40, 40, 0, 48, 46, 6), box(40, 40, 6, 60, 46, 8));
 
 /** Extrusion length (mm) by feature inside the box [x0, y0, x1, y1] on the layer printed at z, and where the layer's first extrusion is. */
 function layerFeatures(gcode: string, z: number, [x0, y0, x1, y1]: readonly number[]): { inside: Map<string, number>; first: { x: number; y: number } } {
