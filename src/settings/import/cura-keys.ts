@@ -114,6 +114,39 @@ function evaluate(expr: string, lookup: (name: string) => number | undefined): n
   return i === tokens.length && v !== undefined && Number.isFinite(v) ? v : undefined;
 }
 
+/**
+ * Cura's overhanging walls (`wall_overhang_angle`, 90° = off): a wall point whose overhang is steeper than
+ * that angle prints at a share of its speed, the range up to 90° cut into equal steps of angle, one share each
+ * (Cura 5.10's `wall_overhang_speed_factors`, a list; one share before, `wall_overhang_speed_factor`).
+ * CuraEngine measures the angle of the outer wall's centreline against the layer below shrunk by half a
+ * wall: a line with the share f of its width over nothing overhangs at atan(f × width / layer height). Each
+ * of Strata's steps (a quarter, half, three quarters and all of the line over nothing) takes the speed Cura
+ * gives the least overhanging line of that step, as a share of the outer wall's speed.
+ */
+function overhangSpeeds(c: ImportContext, str: (key: string) => string | undefined, value: (key: string) => number | undefined, layerHeight: number): void {
+  const angle = value('wall_overhang_angle');
+  const list = str('wall_overhang_speed_factors');
+  const single = list === undefined ? value('wall_overhang_speed_factor') : undefined;
+  const shares = list !== undefined ? (/^\[([\d.\s,]*)\]$/.exec(list)?.[1] ?? '').split(',').filter((v) => v.trim() !== '').map(Number) : single !== undefined ? [single] : [];
+  if (angle === undefined || angle >= 90) return;
+  const from = c.has('wall_overhang_speed_factors') ? 'wall_overhang_speed_factors' : 'wall_overhang_speed_factor';
+  if (shares.length === 0 || shares.some((v) => !(v > 0))) return c.reject(from, 'not a list of speed factors (%)');
+  const outer = c.settings.perimeterSpeed ?? (SCHEMA.perimeterSpeed.default as number);
+  const width = c.settings.lineWidth ?? c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number);
+  const step = (90 - angle) / shares.length;
+  const speedAt = (share: number) => {
+    const deg = (Math.atan((share * width) / layerHeight) * 180) / Math.PI;
+    const f = deg < angle ? 100 : shares[Math.min(shares.length - 1, Math.floor((deg - angle) / step))]!;
+    return Math.round(outer * f) / 100;
+  };
+  c.set('dynamicOverhangSpeeds', true, 'wall_overhang_angle');
+  const key = `wall_overhang_angle + ${from}`;
+  c.set('overhangSpeed25', speedAt(0.25), key);
+  c.set('overhangSpeed50', speedAt(0.5), key);
+  c.set('overhangSpeed75', speedAt(0.75), key);
+  c.set('overhangWallSpeed', speedAt(1), key);
+}
+
 /** Map the Cura keys of `c` onto Strata settings. */
 export function mapCuraKeys(c: ImportContext): void {
   const resolving = new Set<string>();
@@ -292,6 +325,7 @@ export function mapCuraKeys(c: ImportContext): void {
   take('firstLayerSpeed', ['speed_print_layer_0', 'speed_layer_0']);
   take('travelSpeed', ['speed_travel']);
   take('firstLayerTravelSpeed', ['speed_travel_layer_0']);
+  overhangSpeeds(c, str, value, layerHeight);
 
   // temperatures and cooling
   take('nozzleTemperature', ['material_print_temperature']);

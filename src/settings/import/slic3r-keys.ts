@@ -10,6 +10,13 @@
  * - PrusaSlicer speeds may be percentages: the external perimeter of the perimeter speed, solid infill
  *   of the infill speed, top solid infill of the solid infill speed, the first layer of the perimeter
  *   speed; OrcaSlicer's first-layer travel of the travel speed.
+ * - Overhangs: PrusaSlicer's dynamic overhang speeds are given at 75, 50, 25 and 0 % of the line over the layer
+ *   below (Strata's steps of a quarter, half, three quarters and all of it over nothing), OrcaSlicer's for
+ *   [25, 50), [50, 75) and [75, 100) % over nothing and its bridge speed for walls wholly over nothing; both
+ *   may be % of the outer wall speed, and 0 is the wall's own speed. Strata steps where PrusaSlicer
+ *   interpolates between its points, and does not slow walls with under a quarter over nothing (OrcaSlicer's
+ *   10-25 % speed is reported unless 0). Fan: OrcaSlicer's overhang fan speed, and the highest of
+ *   PrusaSlicer's dynamic fan speeds above the profile's fan (PrusaSlicer only ever raises the fan there).
  * - Top and bottom skin: a layer count and a minimum thickness; Strata takes the thicker of the two.
  * - Bed: the outline's extent; an outline centred on the origin is a centre-origin (delta) bed.
  * - Temperatures, fan and retraction lists hold one value per extruder: the first is taken. OrcaSlicer's
@@ -104,6 +111,7 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
   speeds(c);
   temperatures(c);
   cooling(c);
+  overhangs(c, flavor);
   retraction(c);
   adhesion(c);
   support(c, flavor, nozzle, layerHeight);
@@ -375,6 +383,69 @@ function speeds(c: ImportContext): void {
     const v = num(max.value);
     if (v !== undefined && v > 0) c.set('maxSpeed', v, max.key);
   }
+}
+
+/** Dynamic overhang speeds and fan, and extra perimeters on overhangs. */
+function overhangs(c: ImportContext, flavor: Slic3rFlavor): void {
+  const outer = c.settings.perimeterSpeed ?? (SCHEMA.perimeterSpeed.default as number);
+  // a step's speed: mm/s or % of the outer wall's, 0 the wall's own (no slower than the outer wall)
+  const stepSpeed = (raw: string): number | undefined => {
+    const v = numOrPercent(raw);
+    if (!v || v.value < 0) return undefined;
+    return v.value === 0 ? outer : v.percent ? round((outer * v.value) / 100, 2) : v.value;
+  };
+  const take = (on: boolean, steps: readonly (readonly [string, 'overhangSpeed25' | 'overhangSpeed50' | 'overhangSpeed75' | 'overhangWallSpeed'])[]) => {
+    for (const [key, setting] of steps) {
+      const raw = c.get(key);
+      if (raw !== undefined && on) c.set(setting, stepSpeed(raw), key, 'not a speed');
+    }
+  };
+  const prusa = c.getAny('enable_dynamic_overhang_speeds');
+  if (prusa) {
+    const on = bool(prusa.value);
+    c.set('dynamicOverhangSpeeds', on, prusa.key, 'not 0 or 1');
+    take(on === true, [['overhang_speed_3', 'overhangSpeed25'], ['overhang_speed_2', 'overhangSpeed50'], ['overhang_speed_1', 'overhangSpeed75'], ['overhang_speed_0', 'overhangWallSpeed']]);
+  }
+  const orca = c.getAny('enable_overhang_speed');
+  if (orca) {
+    const on = bool(orca.value);
+    c.set('dynamicOverhangSpeeds', on, orca.key, 'not 0 or 1');
+    take(on === true, [['overhang_2_4_speed', 'overhangSpeed25'], ['overhang_3_4_speed', 'overhangSpeed50'], ['overhang_4_4_speed', 'overhangSpeed75']]);
+    const quarter = c.get('overhang_1_4_speed');
+    if (on && quarter !== undefined && numOrPercent(quarter)?.value !== 0) c.reject('overhang_1_4_speed', 'Strata slows walls from a quarter of the line over nothing (overhangSpeed25)');
+    // OrcaSlicer prints walls wholly over nothing at its bridge speed
+    const bridge = on && flavor === 'orcaslicer' ? c.get('bridge_speed') : undefined;
+    if (bridge !== undefined) c.set('overhangWallSpeed', stepSpeed(bridge), 'bridge_speed', 'not a speed');
+  }
+  // fan: OrcaSlicer's for overhangs and bridges alike
+  const orcaFan = c.getAny('overhang_fan_speed');
+  if (orcaFan) {
+    const on = bool(c.get('enable_overhang_bridge_fan')) ?? true;
+    const v = num(orcaFan.value);
+    if (on) {
+      c.set('overhangFanSpeed', v, orcaFan.key, 'not a fan speed');
+      c.set('bridgeFanSpeed', v, orcaFan.key);
+    }
+    const threshold = first(c.get('overhang_fan_threshold'));
+    // Strata's overhang fan runs from a quarter of the line over nothing with dynamic speeds, else on walls wholly over it
+    const from = (c.settings.dynamicOverhangSpeeds ?? false) ? ['0%', '10%', '25%'] : ['95%'];
+    if (on && threshold !== undefined && !from.includes(threshold)) {
+      c.reject('overhang_fan_threshold', `Strata runs the overhang fan on ${c.settings.dynamicOverhangSpeeds ? 'walls with a quarter of the line or more' : 'walls wholly'} over nothing`);
+    }
+  }
+  // PrusaSlicer raises the fan towards these at 0, 25, 50 and 75 % of the line over the layer below
+  const dynamicFan = c.getAny('enable_dynamic_fan_speeds');
+  const fans = ['overhang_fan_speed_0', 'overhang_fan_speed_1', 'overhang_fan_speed_2', 'overhang_fan_speed_3'].map((k) => c.get(k));
+  if (dynamicFan && bool(dynamicFan.value)) {
+    const values = fans.map(num).filter((v): v is number => v !== undefined);
+    const top = values.length ? Math.max(...values) : undefined;
+    if (top !== undefined && top > (c.settings.fanSpeed ?? 0)) {
+      c.set('overhangFanSpeed', top, 'overhang_fan_speed_0');
+      if (values.some((v) => v !== top)) c.reject('overhang_fan_speed_1', `Strata runs one overhang fan speed (${top} %) on every overhanging wall`);
+    }
+  }
+  const extra = c.getAny('extra_perimeters_on_overhangs');
+  if (extra) c.set('extraPerimetersOnOverhangs', bool(extra.value), extra.key, 'not 0 or 1');
 }
 
 function temperatures(c: ImportContext): void {
