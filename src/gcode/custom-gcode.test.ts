@@ -125,7 +125,7 @@ test('layer templates run at every layer with layer_num and layer_z: before the 
   const all = layers(gcode);
   assert.equal(all.length, 50);
   for (const l of all) {
-    const before = l.lines.filter((x) => x.startsWith(';BEFORE'));
+    const before = l.lines.filter((x) => x.startsWith(';BEFORE '));
     const after = l.lines.filter((x) => x.startsWith(';AFTER'));
     assert.deepEqual(before, [`;BEFORE ${l.index} ${l.z}`]);
     assert.deepEqual(after, [`;AFTER ${l.index} ${l.z} ${l.index === 49 ? 'last' : 'more'}`]);

@@ -24,6 +24,7 @@ import { E_SCALE, POSITION_SCALE, compact, feedrate, mm } from './format.js';
 import type { MoveSink } from '../plan/moves.js';
 import type { ObjectLabels } from './object-labels.js';
 import type { LayerGcode } from './custom-gcode.js';
+import { layerChangeMarker } from './host-metadata.js';
 
 /** The `;TYPE:` marker of each feature, as Cura names them (Cura writes its brim as SKIRT, its raft as SUPPORT-INTERFACE); skin over air is BRIDGE, as OrcaSlicer names it. */
 export const TYPE_MARKERS = {
@@ -159,6 +160,7 @@ export class MoveWriter implements MoveSink {
     out.line(`;LAYER:${position}`);
     out.line(`;Z:${mm(layer.z)}`);
     out.line(`;HEIGHT:${mm(layer.height)}`);
+    for (const l of layerChangeMarker(layer.z)) out.line(l);
     if (o.progress) this.progress(this.elapsed);
     if (o.layerGcode) {
       this.custom(o.layerGcode.before(layer, position, this.extruded));

@@ -18,6 +18,7 @@ import { FLAVORS } from './flavor.js';
 import { templateHeatsNozzle } from './flavor-templates.js';
 import { printCustomGcode } from './custom-gcode.js';
 import { headerLines, type GcodeMeta } from './header.js';
+import { hostTrailerLines } from './host-metadata.js';
 import { MoveWriter } from './move-writer.js';
 import { walkPlanSteps } from '../plan/moves.js';
 import { placeholders, settingValue } from './template.js';
@@ -112,6 +113,8 @@ export function* writeGcodeSteps(
   moves.finish();
 
   for (const l of end) out.line(l);
+  // what print hosts read (Moonraker, for Mainsail and Fluidd), after the G-code as PrusaSlicer writes it
+  for (const l of hostTrailerLines(plan, settings, estimate)) out.line(l);
   out.flush();
 }
 
