@@ -157,6 +157,8 @@ describe('web page', { skip: missing ?? false }, () => {
       sidebar.scrollTo(0, el ? el.getBoundingClientRect().top - sidebar.getBoundingClientRect().top + sidebar.scrollTop - 10 : 0);
       document.querySelectorAll('#messages .msg').forEach((m) => m.remove());
     }, at);
+    // the preview's full drawing, not a slider's draft
+    await page.waitForFunction(() => !document.getElementById('preview-panel')?.dataset.draft);
     await page.waitForTimeout(400);
     await page.screenshot({ path: join(shots, name) });
   }
@@ -223,7 +225,7 @@ describe('web page', { skip: missing ?? false }, () => {
     // the preview has the G-code's layers
     const layers = (expected.toString('utf8').match(/^;LAYER:\d+$/gm) ?? []).length;
     assert.ok(layers > 150, `${layers} layers`);
-    const slider = page.getByRole('slider', { name: 'Layer', exact: true });
+    const slider = page.getByRole('slider', { name: 'Top layer', exact: true });
     await page.waitForFunction(() => !(document.getElementById('preview-panel') as HTMLElement).hidden);
     assert.equal(Number(await slider.getAttribute('max')) + 1, layers);
     assert.equal(await page.locator('#stat-layers').textContent(), String(layers));
@@ -234,18 +236,114 @@ describe('web page', { skip: missing ?? false }, () => {
     const legend = await page.locator('#legend li').allTextContents();
     for (const t of types) assert.ok(legend.some((l) => l.startsWith(t)), `legend shows ${t}: ${legend.join(' | ')}`);
     await page.getByText('Print time').waitFor();
+    await checkPreviewControls(page, layers);
     if (shots) {
       await slider.fill(String(Math.floor(layers * 0.62)));
       await shoot(page, 'preview.png');
       await slider.fill(String(Math.floor(layers * 0.3)));
-      await page.getByRole('radio', { name: 'Single layer', exact: true }).check();
+      await page.getByLabel('One layer', { exact: true }).check();
       await page.getByLabel('Travel moves', { exact: true }).check();
       await page.mouse.move(460, 430);
       for (let i = 0; i < 6; i++) await page.mouse.wheel(0, -300);
       await shoot(page, 'preview-layer.png');
+      await page.getByLabel('Travel moves', { exact: true }).uncheck();
+      await page.getByLabel('Colour by', { exact: true }).selectOption('speed');
+      await slider.fill(String(Math.floor(layers * 0.5)));
+      await page.getByRole('slider', { name: 'Move', exact: true }).fill('140');
+      await page.getByRole('button', { name: 'Frame layer', exact: true }).click();
+      await shoot(page, 'preview-speed.png');
     }
     await page.close();
   });
+
+  /**
+   * The preview's controls on a sliced 3DBenchy: the two layer handles, one layer, the move slider, framing
+   * the layer, colour by numbers with their scale; and the time a step of the layer slider takes while it is
+   * dragged (software WebGL here: measured and printed, not asserted).
+   */
+  async function checkPreviewControls(page: Page, layers: number): Promise<void> {
+    const top = page.getByRole('slider', { name: 'Top layer', exact: true });
+    const bottom = page.getByRole('slider', { name: 'Bottom layer', exact: true });
+    const label = async () => (await page.locator('#layer-label').textContent()) ?? '';
+    await bottom.fill('100');
+    await top.fill('120');
+    assert.match(await label(), new RegExp(`^Layer 121 of ${layers} · Z [\\d.]+ mm \\(from layer 101\\)$`));
+    // the bottom handle cannot pass the top one: it takes the top one with it
+    await bottom.fill('130');
+    assert.equal(await top.inputValue(), '130');
+    await page.getByLabel('One layer', { exact: true }).check();
+    await top.fill('90');
+    assert.equal(await bottom.inputValue(), '90', 'one layer: the handles move together');
+    assert.match(await label(), new RegExp(`^Layer 91 of ${layers} · Z [\\d.]+ mm$`));
+    // through the layer move by move: what the last move shown is, and the tool where it ends
+    const move = page.getByRole('slider', { name: 'Move', exact: true });
+    const moves = Number(await move.getAttribute('max'));
+    assert.ok(moves > 50, `${moves} moves in layer 91`);
+    assert.equal(await move.inputValue(), String(moves), 'the whole layer at first');
+    await move.fill('40');
+    assert.match((await page.locator('#move-label').textContent()) ?? '', new RegExp(`^Move 40 of ${moves}: (travel|[A-Z-]+( \\(\\w+\\))?, [\\d.]+ mm wide, \\d+ mm/s, fan \\d+ %)$`));
+    // framing the layer moves the camera
+    await page.waitForFunction(() => !document.getElementById('preview-panel')!.dataset.draft);
+    const canvas = page.locator('#viewport canvas');
+    const before = await canvas.screenshot();
+    await page.getByRole('button', { name: 'Frame layer', exact: true }).click();
+    await page.waitForTimeout(300);
+    assert.ok(!before.equals(await canvas.screenshot()), 'the view changed');
+    // colour by numbers: a scale with units; by feature: none
+    const colourBy = page.getByLabel('Colour by', { exact: true });
+    for (const [mode, unit] of [['speed', 'mm/s'], ['fan', '%'], ['width', 'mm'], ['layer-time', 's']] as const) {
+      await colourBy.selectOption(mode);
+      const ticks = await page.locator('#scale .scale-ticks span').allTextContents();
+      assert.equal(ticks.length, 3, mode);
+      for (const t of ticks) assert.ok(t.endsWith(unit), `${mode}: ${ticks.join(' | ')}`);
+    }
+    await colourBy.selectOption('feature');
+    assert.equal(await page.locator('#scale').isHidden(), true);
+    await page.getByLabel('One layer', { exact: true }).uncheck();
+    await bottom.fill('0');
+
+    // a step of the layer slider while it is dragged: input events as a drag sends them, each timed until its
+    // frame is drawn (two animation frames, then a pixel read back waits for the drawing)
+    const steps = await page.evaluate(async (n) => {
+      const el = document.getElementById('layer') as HTMLInputElement;
+      const gl = (document.querySelector('#viewport canvas') as HTMLCanvasElement).getContext('webgl2')!;
+      const px = new Uint8Array(4);
+      const frame = () => new Promise<void>((r) => requestAnimationFrame(() => r()));
+      const drawn = async () => {
+        await frame();
+        await frame();
+        gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, px);
+      };
+      el.value = String(n - 1);
+      el.dispatchEvent(new Event('input', { bubbles: true }));
+      await drawn();
+      const ms: number[] = [];
+      let drafts = 0;
+      for (let k = 1; k <= 8; k++) {
+        const t0 = performance.now();
+        el.value = String(Math.round((n - 1) * (1 - k * 0.06)));
+        el.dispatchEvent(new Event('input', { bubbles: true }));
+        await drawn();
+        ms.push(Math.round(performance.now() - t0));
+        if (document.getElementById('preview-panel')!.dataset.draft) drafts++;
+      }
+      // a full drawing of the same layers once the slider rests (a change of colouring redraws them)
+      while (document.getElementById('preview-panel')!.dataset.draft) await new Promise((r) => setTimeout(r, 5));
+      await drawn();
+      const colour = document.getElementById('colour-by') as HTMLSelectElement;
+      const t0 = performance.now();
+      colour.value = 'speed';
+      colour.dispatchEvent(new Event('change'));
+      await drawn();
+      const full = Math.round(performance.now() - t0);
+      colour.value = 'feature';
+      colour.dispatchEvent(new Event('change'));
+      return { ms, drafts, full };
+    }, layers);
+    assert.equal(steps.drafts, 8, 'each step while dragging is a draft');
+    const mean = steps.ms.reduce((a, b) => a + b, 0) / steps.ms.length;
+    console.log(`preview: a step of the layer slider while dragging (3DBenchy, ${layers} layers, software WebGL): ${steps.ms.join(', ')} ms (mean ${Math.round(mean)} ms); the full drawing once it rests: ${steps.full} ms`);
+  }
 
   test('Cancel stops a slice and the page stays usable; Cancel again shows one message, not two', SLOW, async () => {
     const page = await openPage();
@@ -389,8 +487,8 @@ describe('web page', { skip: missing ?? false }, () => {
     assert.match((await page.locator('#result-card').textContent()) ?? '', /on 2 threads/);
     assert.ok(readFileSync(gcode).equals(cliSlice(cube, config, join(work, 'hex-cli.gcode'))), 'custom infill G-code is the CLI\'s');
     if (shots) {
-      await page.getByRole('slider', { name: 'Layer', exact: true }).fill('60');
-      await page.getByRole('radio', { name: 'Single layer', exact: true }).check();
+      await page.getByRole('slider', { name: 'Top layer', exact: true }).fill('60');
+      await page.getByLabel('One layer', { exact: true }).check();
       await page.mouse.move(460, 420);
       for (let i = 0; i < 4; i++) await page.mouse.wheel(0, -300);
       await shoot(page, 'custom-infill.png');
@@ -435,12 +533,53 @@ describe('web page', { skip: missing ?? false }, () => {
     await page.getByRole('alert').filter({ hasText: /bad\.json: unknown setting "layerHieght" \(did you mean "layerHeight"\?\)/ }).waitFor();
     assert.equal(await page.getByLabel('Printer', { exact: true }).inputValue(), 'prusa-mk4');
     await page.close();
-    if (shots) {
-      const narrow = await openPage({ width: 420, height: 900 });
-      await openModel(narrow, benchy);
-      await shoot(narrow, 'narrow.png');
-      await narrow.close();
+  });
+
+  test('a narrow window (400 px): Download beside Slice, the preview\'s controls at its edges, the settings at full height', SLOW, async () => {
+    const page = await openPage({ width: 400, height: 860 });
+    await openModel(page, benchy);
+    await shoot(page, 'narrow.png');
+    await slice(page);
+    await page.waitForFunction(() => !(document.getElementById('preview-panel') as HTMLElement).hidden);
+    // the progress, hidden after slicing, takes no room, and Download stays on Slice's row, inside the window,
+    // at any narrow width
+    for (const width of [320, 360, 390, 480, 600, 800, 400]) {
+      await page.setViewportSize({ width, height: 860 });
+      await page.waitForTimeout(100);
+      const sliceBox = (await page.getByRole('button', { name: 'Slice', exact: true }).boundingBox())!;
+      const downloadBox = (await page.getByRole('button', { name: 'Download G-code', exact: true }).boundingBox())!;
+      assert.ok(Math.abs(sliceBox.y - downloadBox.y) < 2, `${width} px: Slice at y ${sliceBox.y}, Download at y ${downloadBox.y}`);
+      assert.ok(downloadBox.x + downloadBox.width <= width, `${width} px: Download inside the window`);
     }
+    // the preview's controls cover a small part of the 3D view (the legend folded, the sliders at the edges)
+    const covered = await page.evaluate(() => {
+      const stage = document.querySelector('.stage')!.getBoundingClientRect();
+      const boxes = [...Array.from(document.querySelectorAll('#preview-panel > *')), document.querySelector('.view-switch')!].map((e) => e.getBoundingClientRect());
+      // area covered, on a 4 px grid over the stage
+      let hit = 0, all = 0;
+      for (let y = stage.top; y < stage.bottom; y += 4) {
+        for (let x = stage.left; x < stage.right; x += 4) {
+          all++;
+          if (boxes.some((b) => x >= b.left && x < b.right && y >= b.top && y < b.bottom)) hit++;
+        }
+      }
+      return hit / all;
+    });
+    assert.ok(covered < 0.3, `the controls cover ${Math.round(covered * 100)} % of the 3D view`);
+    console.log(`narrow window: the preview's controls cover ${Math.round(covered * 100)} % of the 3D view`);
+    assert.equal(await page.locator('#legend-box').getAttribute('open'), null, 'the legend starts folded');
+    await shoot(page, 'narrow-preview.png');
+    // the page scrolls as a whole: the sidebar is not a strip with a scroll bar of its own
+    const sidebar = await page.evaluate(() => {
+      const el = document.querySelector('.sidebar') as HTMLElement;
+      return { client: el.clientHeight, scroll: el.scrollHeight, page: document.scrollingElement!.scrollHeight };
+    });
+    assert.ok(sidebar.scroll - sidebar.client <= 1, `the sidebar shows all it holds (${sidebar.client} of ${sidebar.scroll} px)`);
+    assert.ok(sidebar.client > 800 && sidebar.page > 860, `the settings get their height (${sidebar.client} px; the page ${sidebar.page} px)`);
+    const settings = page.getByLabel('Infill density', { exact: true });
+    await settings.scrollIntoViewIfNeeded();
+    assert.ok(await settings.isVisible());
+    await page.close();
   });
 
   test('an object dragged on the bed and laid on a face is sliced where and as it stands', SLOW, async () => {
@@ -494,7 +633,7 @@ describe('web page', { skip: missing ?? false }, () => {
     const legend = await page.locator('#legend li').allTextContents();
     for (const t of ['SUPPORT', 'SUPPORT-INTERFACE']) assert.ok(legend.some((l) => new RegExp(`^${t}[\\d.]+ m`).test(l)), `legend shows ${t} with a length: ${legend.join(' | ')}`);
     if (shots) {
-      await page.getByRole('slider', { name: 'Layer', exact: true }).fill('55');
+      await page.getByRole('slider', { name: 'Top layer', exact: true }).fill('55');
       await page.mouse.move(460, 470);
       for (let i = 0; i < 4; i++) await page.mouse.wheel(0, -300);
       await shoot(page, 'tree-support.png');

@@ -2,6 +2,9 @@
  * The toolpath plan as a few flat typed arrays for a 3D preview (the web page draws them with
  * instancing): extrusion segments, travels and retraction points, each sorted by layer with
  * per-layer offsets, so a viewer shows "layers a to b" as an index range and never re-parses G-code.
+ * Each segment also has its speed and fan, each layer its time, to colour by; and every extrusion
+ * segment and travel its move number within its layer (the order the printer makes them), so a viewer
+ * shows a layer move by move as a prefix of each array.
  * Built where the plan is (a worker), the arrays transfer to the page without copying.
  */
 import { UM_PER_MM, type Pt } from '../geometry/types.js';
@@ -27,9 +30,40 @@ export interface PreviewArrays {
   layerRetractions: Uint32Array;
   /** Extruded length per feature (FEATURE_TYPES order), mm. */
   featureLengthMm: Float64Array;
+  /** Each extrusion segment's feed rate, mm/s. */
+  segmentSpeed: Float32Array;
+  /** Each extrusion segment's part-cooling fan, 0..1. */
+  segmentFan: Float32Array;
+  /** Each extrusion segment's move number within its layer (moves: extrusion segments and travels, in order). */
+  segmentMove: Uint32Array;
+  /** Each travel's move number within its layer. */
+  travelMove: Uint32Array;
+  /** Each retraction's move number within its layer: that of the travel it comes before. */
+  retractionMove: Uint32Array;
+  /** Moves per layer. */
+  layerMoves: Uint32Array;
+  /** Each layer's estimated time, s (zeros when no estimate was given). */
+  layerSeconds: Float32Array;
 }
 
 const FEATURE_INDEX: ReadonlyMap<FeatureType, number> = new Map(FEATURE_TYPES.map((f, i) => [f, i]));
+
+/** A growable Uint32Array, filled a value at a time. */
+class Uints {
+  data = new Uint32Array(1024);
+  length = 0;
+  push(v: number): void {
+    if (this.length === this.data.length) {
+      const next = new Uint32Array(this.data.length * 2);
+      next.set(this.data);
+      this.data = next;
+    }
+    this.data[this.length++] = v;
+  }
+  done(): Uint32Array {
+    return this.data.slice(0, this.length);
+  }
+}
 
 /** A growable Float32Array, filled a record at a time. */
 class Floats {
@@ -57,11 +91,18 @@ function put(f: Floats, ...values: number[]): void {
   f.data.set(values, at);
 }
 
-export function planToArrays(plan: PrintPlan): PreviewArrays {
+/** The plan's arrays; `layerSeconds`: the estimate's time per layer (PlanEstimate.layerSeconds), for colouring by it. */
+export function planToArrays(plan: PrintPlan, layerSeconds?: readonly number[]): PreviewArrays {
   const n = plan.layers.length;
   const segs = new Floats();
   const travels = new Floats();
   const retracts = new Floats();
+  const speeds = new Floats();
+  const fans = new Floats();
+  const segmentMove = new Uints();
+  const travelMove = new Uints();
+  const retractionMove = new Uints();
+  const layerMoves = new Uint32Array(n);
   const layerSegments = new Uint32Array(n + 1);
   const layerTravels = new Uint32Array(n + 1);
   const layerRetractions = new Uint32Array(n + 1);
@@ -75,17 +116,25 @@ export function planToArrays(plan: PrintPlan): PreviewArrays {
     layerSegments[li] = segs.length / SEGMENT_STRIDE;
     layerTravels[li] = travels.length / TRAVEL_STRIDE;
     layerRetractions[li] = retracts.length / RETRACTION_STRIDE;
+    let move = 0;
     for (const step of layer.steps) {
       if (step.kind === 'travel') {
         const z = layer.z + (step.retract ? step.zHop : 0);
-        if (step.retract && at) put(retracts, at.x, at.y, at.z, li);
+        if (step.retract && at) {
+          put(retracts, at.x, at.y, at.z, li);
+          retractionMove.push(move);
+        }
         for (const p of step.points) {
           const x = p.x / UM_PER_MM, y = p.y / UM_PER_MM;
-          if (at) put(travels, at.x, at.y, at.z, x, y, z, li);
+          if (at) {
+            put(travels, at.x, at.y, at.z, x, y, z, li);
+            travelMove.push(move++);
+          }
           at = { x, y, z };
         }
         continue;
       }
+      const fan = step.fan ?? layer.fan;
       const f = FEATURE_INDEX.get(step.feature) ?? 0;
       const pts: readonly Pt[] = step.points;
       const count = step.closed ? pts.length : pts.length - 1;
@@ -108,11 +157,15 @@ export function planToArrays(plan: PrintPlan): PreviewArrays {
         d[o + 6] = step.height;
         d[o + 7] = f;
         d[o + 8] = li;
+        put(speeds, step.speed);
+        put(fans, fan);
+        segmentMove.push(move++);
       }
       featureLengthMm[f] += length;
       const last = step.closed ? pts[0] : pts[pts.length - 1];
       if (last) at = { x: last.x / UM_PER_MM, y: last.y / UM_PER_MM, z: layer.z };
     }
+    layerMoves[li] = move;
   }
   layerSegments[n] = segs.length / SEGMENT_STRIDE;
   layerTravels[n] = travels.length / TRAVEL_STRIDE;
@@ -126,12 +179,35 @@ export function planToArrays(plan: PrintPlan): PreviewArrays {
     retractions: retracts.done(),
     layerRetractions,
     featureLengthMm,
+    segmentSpeed: speeds.done(),
+    segmentFan: fans.done(),
+    segmentMove: segmentMove.done(),
+    travelMove: travelMove.done(),
+    retractionMove: retractionMove.done(),
+    layerMoves,
+    layerSeconds: Float32Array.from({ length: n }, (_, i) => layerSeconds?.[i] ?? 0),
   };
 }
 
 /** The arrays' buffers, for `postMessage(arrays, transferList(arrays))`. */
 export function transferList(a: PreviewArrays): ArrayBuffer[] {
-  return [a.layerZ, a.segments, a.layerSegments, a.travels, a.layerTravels, a.retractions, a.layerRetractions, a.featureLengthMm].map(
+  return [
+    a.layerZ,
+    a.segments,
+    a.layerSegments,
+    a.travels,
+    a.layerTravels,
+    a.retractions,
+    a.layerRetractions,
+    a.featureLengthMm,
+    a.segmentSpeed,
+    a.segmentFan,
+    a.segmentMove,
+    a.travelMove,
+    a.retractionMove,
+    a.layerMoves,
+    a.layerSeconds,
+  ].map(
     (t) => t.buffer as ArrayBuffer,
   );
 }

@@ -156,7 +156,11 @@ try {
   toolpaths = new ToolpathView(() => viewer?.render());
   viewer.toolpaths.add(toolpaths.group);
   toolpaths.warmUp(viewer.renderer, viewer.camera);
-  preview = new PreviewPanel(toolpaths);
+  const view = viewer;
+  preview = new PreviewPanel(toolpaths, {
+    draft: (on) => view.setDraft(on),
+    frame: (min, max) => view.frame(new Vector3(...min), new Vector3(...max), 5),
+  });
   viewer.setBed(plate.bed);
   viewer.setMode('model');
 } catch (e) {

@@ -14,6 +14,7 @@ import { SETTING_SCOPE, type ScopeUse } from '../../src/settings/scope.js';
 import { linearBounds, placeObjects, placementAffine } from '../../src/mesh/placement.js';
 import { determinant, transformPoints, type Affine } from '../../src/mesh/transform.js';
 import type { MeshObject, SettingsSource } from '../../src/mesh/types.js';
+import { estimatePlan } from '../../src/plan/estimate.js';
 import { planToArrays, transferList } from '../../src/preview/plan-arrays.js';
 import type { FromWorker, LoadedModel, LoadedProject, MeshArrays, ProjectObject, SliceItem, SliceVolume, ToWorker } from './protocol.js';
 import { drawArrays } from './shapes.js';
@@ -200,7 +201,8 @@ async function handle(msg: ToWorker): Promise<void> {
         onProgress: (p) => post({ type: 'progress', id: msg.id, stage: p.stage, fraction: p.fraction }),
       }, (c) => chunks.push(c));
       const gcode = new TextEncoder().encode(chunks.join('')).buffer as ArrayBuffer;
-      const preview = planToArrays(plan);
+      // the estimate's time per layer, to colour the preview by (the G-code's estimate, made again here)
+      const preview = planToArrays(plan, estimatePlan(plan, slicer.config).layerSeconds);
       const { bounds: _bounds, ...summary } = stats;
       post({ type: 'sliced', id: msg.id, gcode, stats: summary, warnings, preview }, [gcode, ...transferList(preview)]);
       return;

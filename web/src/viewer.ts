@@ -122,6 +122,18 @@ export class Viewer {
     this.#pointer();
   }
 
+  /**
+   * Draft frames, while a slider is dragged: drawn at half the resolution (without a GPU the pixels are
+   * most of a frame's cost), and at the full one again when it rests.
+   */
+  setDraft(on: boolean): void {
+    const full = Math.min(window.devicePixelRatio || 1, 2);
+    const ratio = on ? full / 2 : full;
+    if (this.renderer.getPixelRatio() === ratio) return;
+    this.renderer.setPixelRatio(ratio);
+    this.render();
+  }
+
   /** Draw on the next frame (once, however often asked). */
   render(): void {
     if (this.#pending) return;
