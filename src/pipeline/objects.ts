@@ -4,15 +4,13 @@
  */
 import type { Mesh } from '../mesh/types.js';
 import type { PlanObject } from '../plan/types.js';
+import { convexHull } from '../geometry/convex-hull.js';
+import type { Pt } from '../geometry/types.js';
 
 export interface PlacedObject {
   name: string;
   /** Placed in bed coordinates, mm. */
   mesh: Mesh;
-}
-
-function cross(o: [number, number], a: [number, number], b: [number, number]): number {
-  return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
 }
 
 /** Convex hull of the mesh's used vertices in XY (counter-clockwise, monotone chain), mm rounded to µm. */
@@ -53,28 +51,13 @@ export function footprintHull(mesh: Mesh): [number, number][] {
     }
     return true;
   };
-  const pts: [number, number][] = [];
+  const pts: Pt[] = [];
   for (let v = 0; v < n; v++) {
     if (!used[v]) continue;
     const x = positions[3 * v], y = positions[3 * v + 1];
-    if (!insideOctagon(x, y)) pts.push([Math.round(x * 1000) / 1000, Math.round(y * 1000) / 1000]);
+    if (!insideOctagon(x, y)) pts.push({ x: Math.round(x * 1000) / 1000, y: Math.round(y * 1000) / 1000 });
   }
-  pts.sort((a, b) => a[0] - b[0] || a[1] - b[1]);
-  if (pts.length < 3) return pts;
-  const lower: [number, number][] = [];
-  for (const p of pts) {
-    while (lower.length >= 2 && cross(lower[lower.length - 2], lower[lower.length - 1], p) <= 0) lower.pop();
-    lower.push(p);
-  }
-  const upper: [number, number][] = [];
-  for (let i = pts.length - 1; i >= 0; i--) {
-    const p = pts[i];
-    while (upper.length >= 2 && cross(upper[upper.length - 2], upper[upper.length - 1], p) <= 0) upper.pop();
-    upper.push(p);
-  }
-  lower.pop();
-  upper.pop();
-  return lower.concat(upper);
+  return convexHull(pts).map((p): [number, number] => [p.x, p.y]);
 }
 
 /** The plan's objects, names made safe for G-code (letters, digits, `_.-`) and unique (`_2`, `_3`…). */
