@@ -41,8 +41,9 @@ const MIME: Readonly<Record<string, string>> = {
 };
 
 /**
- * The page's Content-Security-Policy: scripts, workers, styles, images and fetches from this server
- * only (WebAssembly compiled from them), inline style attributes (three.js and the page set some),
+ * The page's Content-Security-Policy: scripts, workers, styles and images from this server only
+ * (WebAssembly compiled from them), fetches from it and from print hosts (OctoPrint, Moonraker: any http or
+ * https address, which the user types), inline style attributes (three.js and the page set some),
  * no plugins, forms or base URL, and no framing.
  */
 const PAGE_CSP = [
@@ -51,7 +52,8 @@ const PAGE_CSP = [
   "worker-src 'self'",
   "style-src 'self' 'unsafe-inline'",
   "img-src 'self' data: blob:",
-  "connect-src 'self'",
+  // "Send to printer": the print host's API, at whatever address the user gives (send-panel.ts)
+  "connect-src 'self' http: https:",
   "object-src 'none'",
   "base-uri 'none'",
   "form-action 'none'",

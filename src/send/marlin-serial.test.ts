@@ -92,6 +92,14 @@ test('a printer that stops answering, reports a fault or restarts ends the print
     else setTimeout(() => host.receive('ok\n'), 0);
   });
   await assert.rejects(host.print('G28\nG1 X1\nG1 X2\n'), /the printer restarted/);
+  // a board that restarts as the port opens: the count is reset again once it has booted
+  let booted = 0;
+  const booting = new MarlinSender(async (data) => {
+    if (data.startsWith('N0 M110') && booted++ === 0) setTimeout(() => booting.receive('start\necho:Marlin 2.1.2\n'), 0);
+    else setTimeout(() => booting.receive('ok\n'), 0);
+  });
+  await booting.print('G28\n');
+  assert.equal(booted, 2);
   const broken = new MarlinSender(() => Promise.reject(new Error('The device has been lost.')));
   await assert.rejects(broken.print('G28\n'), /cannot write to the printer: The device has been lost\./);
 });

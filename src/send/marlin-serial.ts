@@ -45,6 +45,9 @@ export function numberedLine(n: number, command: string): string {
   return `${body}*${cs}`;
 }
 
+/** How long a printer that restarted as the port opened is given to boot, ms. */
+const BOOT_MS = 1500;
+
 /** Errors the printer recovers from by asking for the line again (a `Resend:` follows). */
 const RECOVERABLE = /checksum|line ?number|expected line|format error|no line number|last line/i;
 
@@ -143,7 +146,15 @@ export class MarlinSender {
       return;
     }
     if (/^ok\b/i.test(line)) return this.#ok();
-    if (/^start\b/i.test(line)) return this.#fail('the printer restarted (it sent "start"): the print is stopped');
+    if (/^start\b/i.test(line)) {
+      // many boards restart when the port opens: before the first line is through, start again after it boots
+      if (this.#inFlight === -1) {
+        this.#waiting = false;
+        setTimeout(() => this.#settle && !this.#waiting && this.#send(-1), BOOT_MS);
+        return;
+      }
+      return this.#fail('the printer restarted (it sent "start"): the print is stopped');
+    }
     if (/^(?:Error|!!)/i.test(line) && !RECOVERABLE.test(line)) return this.#fail(`the printer reported: ${line.replace(/^(Error:|!!)\s*/i, '')}`);
     // busy:, echo:, temperatures while heating, wait: the timer was reset above
   }
