@@ -2,7 +2,7 @@
 # The print hosts the end-to-end tests send G-code to (src/e2e/print-hosts.ts), from PyPI, pinned: OctoPrint
 # (with its virtual printer) and Moonraker, one virtualenv each (their dependencies conflict), under
 # $STRATA_PRINT_HOSTS (default ~/.cache/strata/print-hosts). Kept between runs: a venv is made again only
-# when its pinned version changes. Needs python3 (3.9–3.12) with venv, and libsodium (Moonraker's libnacl).
+# when its pinned version changes. Needs python3 with venv (tested: 3.11) and libsodium (Moonraker's libnacl).
 set -euo pipefail
 DIR="${STRATA_PRINT_HOSTS:-$HOME/.cache/strata/print-hosts}"
 PYTHON="${PYTHON:-python3}"

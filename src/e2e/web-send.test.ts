@@ -134,6 +134,21 @@ describe('the page sends to a printer', { skip: missing || false }, () => {
     await page.close();
   });
 
+  test("the page takes the seeds' library's, PrusaSlicer's and Cura's preset names in a settings file", { timeout: 120_000 }, async () => {
+    const page = await browser.context.newPage();
+    await page.goto(url);
+    await page.waitForSelector('html[data-ready="true"]');
+    for (const [printer, filament, id, fid] of [
+      ['Ender3', 'GenericPLA', 'creality-ender-3', 'pla'],
+      ['Original Prusa MK4', 'PrusamentPETG', 'prusa-mk4', 'prusament-petg'],
+      ['creality_cr10s5', 'generic_petg', 'creality-cr-10-s5', 'petg'],
+    ]) {
+      await page.getByLabel('Import settings', { exact: true }).setInputFiles({ name: 'profile.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify({ printer, filament })) });
+      await page.waitForFunction(([p, f]) => (document.getElementById('printer') as HTMLSelectElement).value === p && (document.getElementById('filament') as HTMLSelectElement).value === f, [id, fid]);
+    }
+    await page.close();
+  });
+
   test('over USB (Web Serial): every command once, in order, a garbled line sent again', { timeout: 240_000 }, async () => {
     const { page, gcode } = await slicedPage();
     await page.getByRole('button', { name: 'Send to printer', exact: true }).click();
