@@ -480,6 +480,14 @@ describe('web page', { skip: missing ?? false }, () => {
     await page.getByLabel('Custom infill', { exact: true }).selectOption('shipped:hexagon-grid');
     await page.getByText(/Shader hexagon-grid: 3 parameters/).waitFor();
     assert.ok(requested.includes(info.shaderCompiler.web), `the compiler chunk ${info.shaderCompiler.web} loads for custom infill`);
+    // a refused parameter holds back Slice too, naming it; set back, it slices
+    const angle = page.locator('#infill-param-ui_angle');
+    await angle.fill('');
+    await angle.press('Tab');
+    await page.getByRole('button', { name: 'Slice', exact: true }).click();
+    await page.getByRole('alert').filter({ hasText: /^Not sliced: .*Infill parameter angle: ui_angle must be a number/ }).waitFor();
+    await angle.fill('0');
+    await angle.press('Tab');
     await slice(page);
     const gcode = await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]).then(([d]) => d), 'hex.gcode');
     const config = await saved(Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export', exact: true }).click()]).then(([d]) => d), 'hex.json');

@@ -7,6 +7,7 @@ import type { CustomInfillSpec } from '../../src/pipeline/custom-infill.js';
 import { h } from './dom.js';
 import type { InfillerDescription } from './protocol.js';
 import type { CustomChoice, SettingsStore } from './settings.js';
+import type { InvalidFields } from './settings-panel.js';
 
 export interface ShippedInfiller {
   name: string;
@@ -32,6 +33,8 @@ export class InfillPanel {
     slot: HTMLElement,
     private store: SettingsStore,
     private describe: (spec: CustomInfillSpec) => Promise<InfillerDescription>,
+    /** Where a refused parameter field is told (Slice and Download wait for it). */
+    private invalid?: InvalidFields,
   ) {
     slot.append(
       h('label', { class: 'field', for: 'custom-infill' }, h('span', {}, 'Custom infill (IceSL infiller, replaces the pattern)')),
@@ -149,6 +152,9 @@ export class InfillPanel {
   }
 
   #show(choice: CustomChoice | null, info: InfillerDescription | null): void {
+    // the fields replaced take what was typed into them along
+    for (const old of this.#params.querySelectorAll('input')) this.invalid?.set(old, null);
+    this.#error.hidden = true;
     this.#params.replaceChildren();
     const shipped = choice?.source === 'shipped' ? this.shipped.find((s) => s.name === choice.name) : undefined;
     this.#preview.hidden = !shipped?.preview;
@@ -167,13 +173,18 @@ export class InfillPanel {
           ? h('input', { id, type: 'checkbox', checked: value === true })
           : h('input', { id, type: 'number', step: p.type === 'int' ? '1' : 'any', value: String(value) });
       input.addEventListener('change', () => {
-        const v = p.type === 'bool' ? input.checked : Number(input.value);
+        const v = p.type === 'bool' ? input.checked : input.value.trim() === '' ? NaN : Number(input.value);
         if (typeof v === 'number' && (!Number.isFinite(v) || (p.type === 'int' && !Number.isInteger(v)))) {
-          this.#error.textContent = `${p.name} must be ${p.type === 'int' ? 'a whole number' : 'a number'}`;
+          const why = `${p.name} must be ${p.type === 'int' ? 'a whole number' : 'a number'}`;
+          this.#error.textContent = why;
           this.#error.hidden = false;
+          input.setAttribute('aria-invalid', 'true');
+          this.invalid?.set(input, `Infill parameter ${p.name.replace(/^ui_/, '')}: ${why}`);
           return;
         }
         this.#error.hidden = true;
+        input.removeAttribute('aria-invalid');
+        this.invalid?.set(input, null);
         if (v === p.default) delete choice.params[p.name];
         else choice.params[p.name] = v;
         this.store.changed();
