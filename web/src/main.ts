@@ -20,6 +20,7 @@ import { ToolpathView } from './toolpath.js';
 import { Viewer } from './viewer.js';
 import { boxOf, KIND_INFO, volumeMesh } from './volumes.js';
 import { Cancelled, WorkerClient } from './worker-client.js';
+import { setupSendPanel } from './send-panel.js';
 
 /** Largest model file read, bytes. */
 const MAX_MODEL_BYTES = 512 * 1024 * 1024;
@@ -693,6 +694,7 @@ ui.download.addEventListener('click', () => {
   if (!result || refusedForInvalidField('Not downloaded')) return;
   saveFile(result.name, result.gcode, 'text/x-gcode');
 });
+setupSendPanel({ after: ui.download, current: () => (result && !refusedForInvalidField('Not sent') ? { name: result.name, gcode: result.gcode } : null) });
 
 // the page is ready: tests and people can start
 refreshObjects();
