@@ -21,6 +21,9 @@ export type { PatternId, InfillPattern } from './infill/types.js';
 export type { PrintPlan, LayerPlan, PlanStep, FeatureType } from './plan/types.js';
 export type { Progress } from './pipeline/run.js';
 export { VERSION } from './pipeline/run.js';
+// streaming G-code to a Marlin printer over a serial line (Web Serial in a page, a serial port in Node)
+export { MarlinSender, gcodeCommands, numberedLine, CANCEL_GCODE } from './send/marlin-serial.js';
+export type { MarlinOptions } from './send/marlin-serial.js';
 export { loadCustomInfill } from './pipeline/custom-infill-loader.js';
 export type { CustomInfillSpec, CustomDensity } from './pipeline/custom-infill.js';
 export { FEATURE_TYPES } from './plan/types.js';
