@@ -77,6 +77,21 @@ async function readAll(fh: FileHandle, limit: number, onTooLarge: () => StrataEr
   return joined(chunks, total);
 }
 
+/**
+ * A regular file of known size, read into one buffer of that size in chunks (no joining copy); a
+ * file that shrank while being read gives what it had.
+ */
+async function readSized(fh: FileHandle, size: number): Promise<Uint8Array> {
+  const out = new Uint8Array(size);
+  let total = 0;
+  while (total < size) {
+    const { bytesRead } = await fh.read(out, total, Math.min(4 * CHUNK, size - total), total);
+    if (bytesRead === 0) return out.subarray(0, total);
+    total += bytesRead;
+  }
+  return out;
+}
+
 /** Standard input, in the chunks it arrives in, up to `limit` bytes. */
 async function readStdin(limit: number, onTooLarge: () => StrataError): Promise<Uint8Array> {
   const stdin = process.stdin;
@@ -110,7 +125,7 @@ export async function readInput(path: string, kind: InputKind, what: string): Pr
     const s = await fh.stat();
     if (s.isDirectory()) throw Object.assign(new Error('it is a folder'), { code: 'EISDIR' });
     if (!s.isFile()) return await readAll(fh, limit, onTooLarge);
-    if (s.size <= limit) return await readAll(fh, limit, onTooLarge, 0, s.size);
+    if (s.size <= limit) return await readSized(fh, s.size);
     if (kind === 'config' && /^\.(gcode|gco|g)$/i.test(extname(path))) return await headAndTail(fh, s.size, limit);
     throw onTooLarge();
   } catch (e) {
