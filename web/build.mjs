@@ -22,6 +22,8 @@ const common = {
   logLevel: 'warning',
   // the clipping engine's loader imports node's 'module' only when it runs in node
   external: ['module'],
+  // jpeg-js's encoder (JPEG thumbnails) hands back Buffer.from(bytes): see buffer-shim.mjs
+  inject: [join(root, 'web/buffer-shim.mjs')],
   // the library loads its layer worker as new URL('./layer-worker.js', import.meta.url): keep that name
   entryNames: '[name]',
   chunkNames: '[name]-[hash]',

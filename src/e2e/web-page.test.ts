@@ -203,6 +203,8 @@ describe('web page', { skip: missing ?? false }, () => {
     await setSetting(page, 'Infill density', '15');
     await setSetting(page, 'Wall count', '3');
     await setSetting(page, 'Layer height', '0.25');
+    // a JPEG thumbnail: jpeg-js's encoder in the browser bundle (see web/buffer-shim.mjs)
+    await setSetting(page, 'Thumbnails', '24x24/JPG');
     await shoot(page, 'model.png');
     const longTasks = await slice(page);
     assert.deepEqual(
@@ -217,10 +219,11 @@ describe('web page', { skip: missing ?? false }, () => {
     const [settingsDownload] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Export', exact: true }).click()]);
     assert.equal(settingsDownload.suggestedFilename(), 'strata-settings.json');
     const config = await saved(Promise.resolve(settingsDownload), 'settings.json');
-    assert.deepEqual(JSON.parse(readFileSync(config, 'utf8')), { printer: 'prusa-i3-mk3s', filament: 'pla', infillDensity: 15, wallCount: 3, layerHeight: 0.25 });
+    assert.deepEqual(JSON.parse(readFileSync(config, 'utf8')), { printer: 'prusa-i3-mk3s', filament: 'pla', infillDensity: 15, wallCount: 3, layerHeight: 0.25, thumbnails: '24x24/JPG' });
     const expected = cliSlice(benchy, config, join(work, 'cli.gcode'));
     const got = readFileSync(gcode);
     assert.ok(got.equals(expected), `the page's G-code (${got.length} bytes) is the CLI's (${expected.length} bytes)`);
+    assert.match(expected.toString('utf8'), /^; thumbnail_JPG begin 24x24 \d+$/m, 'a JPEG thumbnail');
 
     // the preview has the G-code's layers
     const layers = (expected.toString('utf8').match(/^;LAYER:\d+$/gm) ?? []).length;
