@@ -5,13 +5,13 @@
  * flagged so the planner slows them / prints them as bridges.
  */
 import { difference, flatten, offset } from '../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon, type Polygon } from '../geometry/types.js';
+import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import { generateInfill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
 import { allSkin } from '../regions/skin-areas.js';
 import { gapLoopWidths, type GapLoop } from '../regions/gap-loops.js';
-import type { IslandRegions, RegionFill } from '../regions/types.js';
+import type { IslandRegions, RegionFill, WallSet } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { LayerZ } from '../slice/types.js';
@@ -126,6 +126,16 @@ function fillEntries(fill: RegionFill, ctx: IslandContext): PathEntry[] {
   return entries;
 }
 
+/** The closed loops of the island's innermost wall, or null when it has no closed wall. */
+function innermostLoops(walls: readonly WallSet[]): Pt[][] | null {
+  let deepest = -1;
+  for (const set of walls) if (set.role === 'wall' && set.closed && set.paths.length > 0 && set.wall > deepest) deepest = set.wall;
+  if (deepest < 0) return null;
+  const loops: Pt[][] = [];
+  for (const set of walls) if (set.role === 'wall' && set.closed && set.wall === deepest) for (const p of set.paths) loops.push(p);
+  return loops;
+}
+
 /** The island's group of entries (unsorted: the planner puts them in print order). */
 export function islandGroup(island: IslandRegions, ctx: IslandContext): PathGroup {
   const cfg = ctx.configs[island.region];
@@ -151,5 +161,7 @@ export function islandGroup(island: IslandRegions, ctx: IslandContext): PathGrou
   const boundary = outer?.paths;
   const group: PathGroup = { kind: 'island', object: island.object, area: island.outline, entries };
   if (boundary) group.boundary = boundary;
+  const inner = innermostLoops(island.walls);
+  if (inner) group.inner = inner;
   return group;
 }

@@ -59,6 +59,11 @@ export interface PathGroup {
   area?: ExPolygon;
   /** The rings travel follows round the area (the outer wall for islands); default: the area's rings. */
   boundary?: Polygon[];
+  /**
+   * The innermost wall's loops (islands): a travel that stays inside them crosses no wall and passes over
+   * nothing but the island's own skin and infill, so it needs no retraction, however long.
+   */
+  inner?: Polygon[];
   /** The area is convex (a lone tree branch): a straight travel between two points in it stays in it. */
   convex?: boolean;
   entries: PathEntry[];

@@ -3,7 +3,8 @@
  * (across a concave part of the outline) or cross a hole is replaced by a walk along the boundary
  * between the points where it would cross. Rings are walked the shorter way round.
  */
-import { hypot, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
+import { pointInRing } from '../geometry/contain.js';
+import { hypot, segmentDistance2, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 
 /** Parametric crossing of segment a→b with ring edge i: t along a→b, u along the edge. */
 interface Crossing {
@@ -154,4 +155,22 @@ export function combRoute(a: Pt, b: Pt, area: CombArea): Pt[] | null {
   }
   way.push(b);
   return way;
+}
+
+/**
+ * Whether `p` is inside the comb area's rings (even-odd over all of them: outer loops and the loops round
+ * holes) or within `tolerance` µm of one (a travel that starts where a loop of the rings ended).
+ */
+export function insideRings(p: Pt, area: CombArea, tolerance: number): boolean {
+  let inside = false;
+  const t2 = tolerance * tolerance;
+  for (const ring of area.rings) {
+    if (p.x < ring.minX - tolerance || p.x > ring.maxX + tolerance || p.y < ring.minY - tolerance || p.y > ring.maxY + tolerance) continue;
+    if (pointInRing(p, ring.pts)) inside = !inside;
+    const pts = ring.pts;
+    for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) {
+      if (segmentDistance2(p.x, p.y, pts[j].x, pts[j].y, pts[i].x, pts[i].y) <= t2) return true;
+    }
+  }
+  return inside;
 }

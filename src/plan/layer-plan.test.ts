@@ -5,10 +5,12 @@ import type { ExPolygon } from '../geometry/types.js';
 import { entryStyle } from '../paths/roles.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import { resolveConfig } from '../settings/resolve.js';
+import type { SliceOptions } from '../settings/schema.js';
 import { planLayer } from './layer-plan.js';
 import type { ExtrudeStep } from './types.js';
 
-const cfg = resolveConfig({ wallOrder: 'inner-first', perimeterSpeed: 30, innerWallSpeed: 50, overhangWallSpeed: 12, bridgeSpeed: 20, bridgeFlow: 90, bridgeFanSpeed: 100, fanSpeed: 40, supportSpeed: 45 });
+const BASE: SliceOptions = { wallOrder: 'inner-first', perimeterSpeed: 30, innerWallSpeed: 50, overhangWallSpeed: 12, bridgeSpeed: 20, bridgeFlow: 90, bridgeFanSpeed: 100, fanSpeed: 40, supportSpeed: 45 };
+const cfg = resolveConfig(BASE);
 const sq = (x: number, y: number, s: number) => rect(x, y, x + s, y + s).outer;
 
 /** A group as written here: its entries' styles come from the role table. */
@@ -107,4 +109,35 @@ test('a wall graded by how much of it hangs over nothing: each level at its own 
   // the first layer prints every level at the first-layer speed
   const first = planLayer({ index: 0, z: 0.2, height: 0.2, sliceZ: 0.1, lineWidth: 0.4, groups: [{ kind: 'island', object: 0, entries: [entry] }] }, graded, { at: { x: 0, y: 5_000 } }, 0);
   assert.deepEqual(first.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude').map((s) => s.speed), [graded.firstLayerSpeed]);
+});
+
+test('a long travel inside the innermost wall does not retract; one that crosses the walls does; retractCrossingWallsOnly off, combingMaxDistance', () => {
+  const inner = sq(600, 600, 18_800);
+  // two infill lines 15 mm apart, both inside the inner wall; a third outside it (in the walls' band, as a thin part's gap fill is)
+  const lines = (extra: boolean): TestGroup => ({
+    ...island,
+    inner: [inner],
+    entries: [
+      { role: 'infill', closed: false, ordered: true, paths: [[{ x: 2_000, y: 2_000 }, { x: 2_000, y: 3_000 }], [{ x: 17_000, y: 17_000 }, { x: 17_000, y: 18_000 }], ...(extra ? [[{ x: 300, y: 10_000 }, { x: 300, y: 11_000 }]] : [])], width: 0.4 },
+    ],
+  });
+  const retracts = (c: typeof cfg, g: TestGroup) => planLayer(layer([g]), c, { at: { x: 2_000, y: 2_000 } }).steps.filter((s) => s.kind === 'travel').map((s) => s.kind === 'travel' && s.retract);
+  // the first travel arrives at the layer (a layer change retracts); the one between the lines stays inside
+  assert.deepEqual(retracts(cfg, lines(false)), [true, false]);
+  assert.deepEqual(retracts(cfg, lines(true)), [true, false, true], 'to the line in the walls\' band: crosses the inner wall');
+  assert.deepEqual(retracts(resolveConfig({ ...BASE, retractCrossingWallsOnly: false }), lines(false)), [true, true], 'off: long travels retract');
+  assert.deepEqual(retracts(resolveConfig({ ...BASE, combingMaxDistance: 10 }), lines(false)), [true, true], 'longer than combingMaxDistance');
+  // without the group's innermost loops: the length rule
+  assert.deepEqual(retracts(cfg, { ...lines(false), inner: undefined }), [true, true]);
+});
+
+test('retractOnLayerChange off: a layer that starts over the island it is above travels in without a retraction', () => {
+  const g: TestGroup = { ...island, inner: [sq(600, 600, 18_800)], entries: [{ role: 'infill', closed: false, ordered: true, paths: [[{ x: 5_000, y: 5_000 }, { x: 5_000, y: 6_000 }]], width: 0.4 }] };
+  const first = (c: typeof cfg, at: { x: number; y: number }) => planLayer(layer([g]), c, { at }).steps.find((s) => s.kind === 'travel');
+  const off = resolveConfig({ ...BASE, retractOnLayerChange: false });
+  assert.equal(first(cfg, { x: 15_000, y: 15_000 })?.kind === 'travel' && first(cfg, { x: 15_000, y: 15_000 })!.retract, true);
+  const inside = first(off, { x: 15_000, y: 15_000 });
+  assert.ok(inside?.kind === 'travel' && !inside.retract, 'from above the island: no retraction');
+  const outside = first(off, { x: 50_000, y: 50_000 });
+  assert.ok(outside?.kind === 'travel' && outside.retract, 'from outside it: the usual retraction');
 });

@@ -5,10 +5,11 @@
  * overhang walls). Travels are combed inside the group, retracted when they leave it or are long.
  */
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
+import { pointInRing } from '../geometry/contain.js';
 import { orderNearest } from '../geometry/nearest-order.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
-import { combRoute, makeCombArea, pathLength, type CombArea } from './comb.js';
+import { combRoute, insideRings, makeCombArea, pathLength, type CombArea } from './comb.js';
 import { flagStyle, GROUP_ORDER, overAirMatters, type EntryStyle, type ExtrusionStyle } from '../paths/roles.js';
 import { sortEntries } from './print-order.js';
 import { scarfRuns } from './scarf.js';
@@ -37,6 +38,8 @@ interface Ctx {
   comb: PathGroup | null;
   /** The comb area of `comb`, once made (undefined: not yet). */
   combArea: CombArea | null | undefined;
+  /** The area inside the innermost wall of `comb` (PathGroup.inner), once made (undefined: not yet). */
+  innerArea: CombArea | null | undefined;
   /** Kind of the group being printed, and of the group the last extrusion belonged to. */
   kind: PathGroup['kind'] | null;
   lastKind: PathGroup['kind'] | null;
@@ -74,6 +77,16 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
     return;
   }
   const minTravelUm = cfg.retractionMinTravel * UM_PER_MM;
+  if (ctx.comb && !forceRetract && ctx.comb.inner && cfg.retractCrossingWallsOnly) {
+    // inside the innermost wall: over the island's own skin and infill, crossing no wall
+    const inner = (ctx.innerArea ??= makeCombArea(ctx.comb.area!, ctx.comb.inner));
+    const route = travelInside(ctx, inner, from, to);
+    if (route) {
+      ctx.steps.push({ kind: 'travel', points: route, retract: false, zHop: 0, speed });
+      ctx.at = to;
+      return;
+    }
+  }
   let points: Pt[] = [to];
   let leaves = true;
   const inside = ctx.comb && !forceRetract ? ctx.comb : null;
@@ -98,6 +111,22 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   }
   ctx.steps.push({ kind: 'travel', points, retract, zHop: retract ? cfg.zHop : 0, speed });
   ctx.at = to;
+}
+
+/**
+ * The route of a travel that stays inside the innermost wall (its ends inside or on it, combed round the
+ * holes in it, or straight when combing is off and the straight line stays inside), no longer than
+ * combingMaxDistance; null when there is none.
+ */
+function travelInside(ctx: Ctx, inner: CombArea, from: Pt, to: Pt): Pt[] | null {
+  // a travel that starts where the innermost wall's loop ended is on it: half a line width of tolerance
+  const tolerance = ctx.layer.lineWidth * UM_PER_MM * 0.5;
+  if (!insideRings(from, inner, tolerance) || !insideRings(to, inner, tolerance)) return null;
+  const route = combRoute(from, to, inner);
+  if (!route || (!ctx.cfg.combing && route.length > 1)) return null;
+  const limit = ctx.cfg.combingMaxDistance * UM_PER_MM;
+  if (limit > 0 && pathLength(from, route) > limit) return null;
+  return route;
 }
 
 function extrude(ctx: Ctx, style: ExtrusionStyle, run: Run): void {
@@ -302,10 +331,17 @@ function comb(group: PathGroup): CombArea | null {
 function printGroup(ctx: Ctx, group: PathGroup): void {
   ctx.comb = null; // arriving from elsewhere: the first travel leaves the previous group
   ctx.combArea = undefined;
+  ctx.innerArea = undefined;
   ctx.kind = group.kind;
   ctx.object = group.object;
   const entries = sortEntries(group.entries, ctx.cfg.wallOrder);
   let combed = false;
+  // without a retraction on the layer change, a layer that starts over the island the nozzle is already
+  // above travels into it as within it (retracting only as such a travel would)
+  if (ctx.layerStart && !ctx.cfg.retractOnLayerChange && group.kind === 'island' && group.area && inArea(ctx.at, group.area)) {
+    ctx.comb = group;
+    combed = true;
+  }
   for (const entry of entries) {
     // walls: once the first wall is printed the nozzle is inside the island, and later travels comb;
     // any other entry starts combed
@@ -323,6 +359,13 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
     }
   }
   ctx.object = undefined;
+}
+
+/** Whether a point is inside an area (its outer ring and none of its holes). */
+function inArea(p: Pt, area: ExPolygon): boolean {
+  if (!pointInRing(p, area.outer)) return false;
+  for (const h of area.holes) if (pointInRing(p, h)) return false;
+  return true;
 }
 
 /** Where a group is entered, for ordering groups nearest-first. */
@@ -349,7 +392,7 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
   const islands: ExPolygon[] = [];
   for (const g of layer.groups) if (g.kind === 'island' && g.area) islands.push(g.area);
   const ctx: Ctx = {
-    cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined,
+    cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined, innerArea: undefined,
     kind: null, lastKind: null, islands, below: state.below ?? [], guard: null, firstStyles: new Map(),
   };
   for (const kind of GROUP_ORDER) {

@@ -244,6 +244,8 @@ export const SCHEMA = {
   retractionSpeed: when(num(45, 1, 200, 'mm/s', 'travel', 'Retraction and prime speed.'), { retractionEnabled: true }),
   retractionExtraPrime: when(num(0, 0, 5, 'mm', 'travel', 'Extra filament pushed after a retraction.'), { retractionEnabled: true }),
   retractionMinTravel: when(num(1.5, 0, 100, 'mm', 'travel', 'Travels shorter than this inside one island do not retract.'), { retractionEnabled: true }),
+  retractCrossingWallsOnly: when(bool(true, 'travel', 'A travel that stays inside the innermost wall (over the island\'s own skin and infill, crossing no wall) does not retract, however long.'), { retractionEnabled: true }),
+  combingMaxDistance: when(num(0, 0, 1000, 'mm', 'travel', 'A travel inside the innermost wall longer than this retracts all the same (0 = no limit).'), { retractionEnabled: true }),
   retractOnLayerChange: when(bool(true, 'travel', 'Retract when moving to the next layer, even for a travel too short to retract otherwise.'), { retractionEnabled: true }, 'thin-walls'),
   zHop: when(num(0, 0, 10, 'mm', 'travel', 'Lift the nozzle by this much during retracted travels (0 = off).'), { retractionEnabled: true }),
 

@@ -352,6 +352,14 @@ export function mapCuraKeys(c: ImportContext): void {
     c.set('retractionExtraPrime', round(primeVolume / (Math.PI * (d / 2) ** 2)), 'retraction_extra_prime_amount');
   }
   take('retractionMinTravel', ['retraction_min_travel']);
+  // combing: 'off' travels straight and retracts by length; every other mode keeps travels inside without retracting
+  const combingMode = str('retraction_combing');
+  if (combingMode !== undefined) {
+    const on = combingMode !== 'off';
+    c.set('combing', on, 'retraction_combing');
+    c.set('retractCrossingWallsOnly', on, 'retraction_combing');
+  }
+  take('combingMaxDistance', ['retraction_combing_max_distance']);
   const layerChange = str('retract_at_layer_change');
   if (layerChange !== undefined) c.set('retractOnLayerChange', bool(layerChange), 'retract_at_layer_change', 'not True or False');
   const hop = str('retraction_hop_enabled');

@@ -64,6 +64,7 @@ nozzle_diameter = 0.4
 perimeter_speed = 45
 perimeters = 3
 retract_before_travel = 1.5
+only_retract_when_crossing_perimeters = 0
 retract_layer_change = 1
 retract_length = 0.8
 retract_lift = 0.4
@@ -115,6 +116,7 @@ test('PrusaSlicer .ini: layer height, widths, walls, skin, infill, speeds, tempe
   assert.equal(s.retractionSpeed, 35);
   assert.equal(s.zHop, 0.4);
   assert.equal(s.retractionMinTravel, 1.5);
+  assert.equal(s.retractCrossingWallsOnly, false);
   assert.equal(s.retractOnLayerChange, true);
   assert.equal(s.buildPlateWidth, 250);
   assert.equal(s.buildPlateLength, 210);
@@ -372,6 +374,8 @@ retraction_speed = 25
 retraction_hop_enabled = True
 retraction_hop = 0.3
 retraction_extra_prime_amount = 0.24
+retraction_combing = noskin
+retraction_combing_max_distance = 30
 cool_fan_speed = 80
 cool_fan_speed_0 = 0
 cool_min_layer_time = 8
@@ -394,6 +398,7 @@ test('Cura .inst.cfg: values, formulas and Cura\'s own fallbacks', () => {
   assert.deepEqual([s.nozzleTemperature, s.firstLayerNozzleTemperature, s.bedTemperature, s.firstLayerBedTemperature], [205, 210, 55, 60]);
   assert.deepEqual([s.retractionEnabled, s.retractionDistance, s.retractionSpeed, s.zHop], [true, 6.5, 25, 0.3]);
   assert.equal(s.retractionExtraPrime, 0.0998, '0.24 mm³ of 1.75 mm filament');
+  assert.deepEqual([s.combing, s.retractCrossingWallsOnly, s.combingMaxDistance], [true, true, 30]);
   assert.deepEqual([s.fanSpeed, s.firstLayerFanSpeed, s.minLayerTime], [80, 0, 8]);
   assert.deepEqual([s.seamPosition, s.adhesionType, s.brimWidth], ['rear', 'brim', 5]);
   assert.equal(s.supportEnabled, false);

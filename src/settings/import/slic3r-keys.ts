@@ -536,6 +536,9 @@ function retraction(c: ImportContext): void {
   if (layerChange) c.set('retractOnLayerChange', bool(layerChange.value), layerChange.key, 'not 0 or 1');
   const lift = pick('filament_z_hop', 'retract_lift', 'z_hop');
   if (lift) c.set('zHop', num(lift.value), lift.key, 'not a length');
+  // PrusaSlicer: no retraction for travels inside the infill that cross no perimeter; OrcaSlicer's is the same idea
+  const crossing = pick('filament_retract_only_when_crossing_perimeters', 'only_retract_when_crossing_perimeters', 'reduce_infill_retraction');
+  if (crossing) c.set('retractCrossingWallsOnly', bool(crossing.value), crossing.key, 'not 0 or 1');
 }
 
 function adhesion(c: ImportContext): void {
