@@ -54,12 +54,14 @@ function buildGrid(ends: Float64Array, ids: Int32Array): Grid {
   return { cell, minX, minY, cols, rows, start, live, items };
 }
 
-/** The nearest live entry found so far by `visit` (squared distance, entry), reset before each search. */
-let foundD = Infinity;
-let found = -1;
+/** The nearest live entry found so far by `visit` (squared distance, entry), reset before each search; one per call of orderNearest. */
+interface Nearest {
+  d: number;
+  entry: number;
+}
 
 /** Look at the live entries of cell (gx, gy) from (x, y), dropping used ones, and keep the nearest (the lowest entry on a tie). */
-function visit(grid: Grid, gx: number, gy: number, x: number, y: number, ends: Float64Array, owner: readonly number[], used: Uint8Array): void {
+function visit(grid: Grid, gx: number, gy: number, x: number, y: number, ends: Float64Array, owner: readonly number[], used: Uint8Array, near: Nearest): void {
   const c = gy * grid.cols + gx;
   const from = grid.start[c], n = grid.live[c];
   if (n === 0) return;
@@ -71,9 +73,9 @@ function visit(grid: Grid, gx: number, gy: number, x: number, y: number, ends: F
     items[kept++] = e;
     const ddx = ends[2 * e] - x, ddy = ends[2 * e + 1] - y;
     const d = ddx * ddx + ddy * ddy;
-    if (d < foundD || (d === foundD && e < found)) {
-      foundD = d;
-      found = e;
+    if (d < near.d || (d === near.d && e < near.entry)) {
+      near.d = d;
+      near.entry = e;
     }
   }
   grid.live[c] = kept - from;
@@ -152,6 +154,7 @@ export function orderNearest(
   const per = new Int32Array(count);
   for (let e = 0; e < n; e++) per[owner[e]]++;
   let liveEntries = n, gridEntries = n;
+  const near: Nearest = { d: Infinity, entry: -1 };
   for (let done = 0; done < count; done++) {
     if (liveEntries * REGRID_SHARE < gridEntries && liveEntries >= SCAN_BELOW) {
       const rest = new Int32Array(liveEntries);
@@ -162,8 +165,8 @@ export function orderNearest(
     }
     const cx = Math.floor((at.x - grid.minX) / grid.cell);
     const cy = Math.floor((at.y - grid.minY) / grid.cell);
-    found = -1;
-    foundD = Infinity;
+    near.entry = -1;
+    near.d = Infinity;
     const x = at.x, y = at.y;
     // rings of cells around (cx, cy), starting at the first ring that touches the grid
     const dxOut = cx < 0 ? -cx : cx >= grid.cols ? cx - grid.cols + 1 : 0;
@@ -172,19 +175,19 @@ export function orderNearest(
     const rMax = Math.max(Math.abs(cx), Math.abs(cx - grid.cols + 1), Math.abs(cy), Math.abs(cy - grid.rows + 1));
     for (let r = r0; r <= rMax; r++) {
       // every point in ring r is at least (r - 1) cells away
-      if (found >= 0 && (r - 1) * grid.cell > Math.sqrt(foundD)) break;
+      if (near.entry >= 0 && (r - 1) * grid.cell > Math.sqrt(near.d)) break;
       const y0 = Math.max(0, cy - r), y1 = Math.min(grid.rows - 1, cy + r);
       const x0 = Math.max(0, cx - r), x1 = Math.min(grid.cols - 1, cx + r);
       for (let gy = y0; gy <= y1; gy++) {
         if (gy === cy - r || gy === cy + r) {
-          for (let gx = x0; gx <= x1; gx++) visit(grid, gx, gy, x, y, ends, owner, used);
+          for (let gx = x0; gx <= x1; gx++) visit(grid, gx, gy, x, y, ends, owner, used, near);
         } else {
-          if (cx - r >= 0 && cx - r < grid.cols) visit(grid, cx - r, gy, x, y, ends, owner, used);
-          if (r > 0 && cx + r >= 0 && cx + r < grid.cols) visit(grid, cx + r, gy, x, y, ends, owner, used);
+          if (cx - r >= 0 && cx - r < grid.cols) visit(grid, cx - r, gy, x, y, ends, owner, used, near);
+          if (r > 0 && cx + r >= 0 && cx + r < grid.cols) visit(grid, cx + r, gy, x, y, ends, owner, used, near);
         }
       }
     }
-    const best = found;
+    const best = near.entry;
     const item = owner[best];
     used[item] = 1;
     liveEntries -= per[item];
