@@ -1,10 +1,20 @@
 /**
+ * Cooling: the part fan of each layer, and the minimum layer time.
+ *
+ * Fan: the first `fanOffLayers` layers of each object run `firstLayerFanSpeed`; from there the fan rises in
+ * even steps to full at layer `fanFullLayer` (PrusaSlicer's full_fan_speed_layer, Cura's
+ * cool_fan_full_layer). Full is `fanSpeed`, raised for a short layer: below `fanBelowLayerTime` seconds
+ * towards `maxFanSpeed`, reached at `minLayerTime` (PrusaSlicer's fan_below_layer_time between min and max fan
+ * speed, Cura's cool_min_layer_time_fan_speed_max). Layers are counted from each object's first: where Z
+ * goes down (sequential printing, the next object) the count starts again.
+ *
  * Minimum layer time: a layer that would print faster than `minLayerTime` has its extrusion speeds
  * scaled down (never below `minPrintSpeed`) so the plastic below has time to cool.
  * The layer time here is the simple length/speed sum; the final estimate is acceleration-aware.
  */
 import { hypot, type Pt } from '../geometry/types.js';
-import type { LayerPlan } from './types.js';
+import type { Config } from '../settings/resolve.js';
+import type { LayerPlan, PrintPlan } from './types.js';
 
 /** Length of the path through `points` (from `from` first, when given), mm. */
 function polyLength(points: readonly Pt[], closed: boolean, from?: Pt): number {
@@ -43,5 +53,40 @@ export function applyMinLayerTime(layer: LayerPlan, minLayerTime: number, minPri
   const factor = extrude / Math.max(minLayerTime - travel, 1e-6);
   for (const s of layer.steps) {
     if (s.kind === 'extrude') s.speed = Math.max(Math.min(s.speed, minPrintSpeed), s.speed * factor);
+  }
+}
+
+/** The fan settings the fan pass reads, fan speeds in %. */
+export type FanSettings = Pick<Config, 'fanSpeed' | 'firstLayerFanSpeed' | 'fanOffLayers' | 'fanFullLayer' | 'fanBelowLayerTime' | 'maxFanSpeed' | 'minLayerTime'>;
+
+/** The fan, 0..1, of layer `k` of its object that lasts `seconds` (before any slowing for minimum layer time). */
+export function layerFan(cfg: FanSettings, k: number, seconds: number): number {
+  if (k < cfg.fanOffLayers) return cfg.firstLayerFanSpeed / 100;
+  let full = cfg.fanSpeed;
+  const below = cfg.fanBelowLayerTime;
+  if (below > 0 && seconds < below && cfg.maxFanSpeed > full) {
+    const span = below - cfg.minLayerTime;
+    const t = span > 0 ? Math.min(1, (below - seconds) / span) : 1;
+    full += (cfg.maxFanSpeed - full) * t;
+  }
+  const off = cfg.fanOffLayers;
+  if (cfg.fanFullLayer > off && k < cfg.fanFullLayer) {
+    const start = cfg.firstLayerFanSpeed;
+    full = start + ((full - start) * (k - off + 1)) / (cfg.fanFullLayer - off + 1);
+  }
+  return Math.round(full * 100) / 10000;
+}
+
+/** Set every layer's fan (the layer's own; bridges and overhangs keep theirs). */
+export function applyLayerFans(plan: PrintPlan, cfg: FanSettings): void {
+  let k = 0;
+  let lastZ = -Infinity;
+  for (const layer of plan.layers) {
+    // Z going down starts the next object's layers (sequential printing)
+    k = layer.z < lastZ ? 0 : k;
+    lastZ = layer.z;
+    const seconds = cfg.fanBelowLayerTime > 0 ? naiveLayerSeconds(layer) : null;
+    layer.fan = layerFan(cfg, k, seconds ? seconds.extrude + seconds.travel : Infinity);
+    k++;
   }
 }

@@ -5,7 +5,7 @@
  */
 import type { Config } from '../settings/resolve.js';
 import { fitPlanArcs } from './arc-fit.js';
-import { applyMinLayerTime } from './cooling.js';
+import { applyLayerFans, applyMinLayerTime } from './cooling.js';
 import type { PrintPlan } from './types.js';
 
 export interface PlanPass {
@@ -13,10 +13,11 @@ export interface PlanPass {
   run(plan: PrintPlan, cfg: Config): void;
 }
 
-/** Minimum layer time: slow short layers down so the plastic below can cool. */
+/** The fan of each layer (by its place in its object and its time), then the minimum layer time: slow short layers down so the plastic below can cool. */
 const cooling: PlanPass = {
   name: 'cooling',
   run(plan, cfg) {
+    applyLayerFans(plan, cfg);
     for (const layer of plan.layers) applyMinLayerTime(layer, cfg.minLayerTime, cfg.minPrintSpeed);
   },
 };

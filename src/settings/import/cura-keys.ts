@@ -337,6 +337,11 @@ export function mapCuraKeys(c: ImportContext): void {
   if (fanOn !== undefined && bool(fanOn) === false) c.set('fanSpeed', 0, 'cool_fan_enabled');
   else take('fanSpeed', ['cool_fan_speed_min', 'cool_fan_speed']);
   take('firstLayerFanSpeed', ['cool_fan_speed_0']);
+  // Cura numbers layers from 1 here: cool_fan_full_layer 2 is the second layer, index 1
+  const fullLayer = value('cool_fan_full_layer');
+  if (fullLayer !== undefined) c.set('fanFullLayer', Math.max(0, Math.round(fullLayer) - 1), 'cool_fan_full_layer');
+  take('maxFanSpeed', ['cool_fan_speed_max']);
+  take('fanBelowLayerTime', ['cool_min_layer_time_fan_speed_max']);
   take('minLayerTime', ['cool_min_layer_time']);
   take('minPrintSpeed', ['cool_min_speed']);
   take('flowRate', ['material_flow']);

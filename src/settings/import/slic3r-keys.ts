@@ -486,7 +486,15 @@ function cooling(c: ImportContext): void {
     const n = num(off.value);
     const fan = c.settings.fanSpeed;
     c.set('firstLayerFanSpeed', n === undefined ? undefined : n >= 1 ? 0 : fan ?? undefined, off.key, 'not a count');
+    if (n !== undefined) c.set('fanOffLayers', Math.max(0, Math.round(n)), off.key);
   }
+  const full = c.getAny('full_fan_speed_layer');
+  if (full) c.set('fanFullLayer', num(full.value), full.key, 'not a layer number');
+  // the fan rises from the min towards the max speed for layers shorter than this
+  const below = c.getAny('fan_below_layer_time', 'fan_cooling_layer_time');
+  if (below) c.set('fanBelowLayerTime', num(below.value), below.key, 'not a time');
+  const maxFan = c.getAny('max_fan_speed', 'fan_max_speed');
+  if (maxFan) c.set('maxFanSpeed', num(maxFan.value), maxFan.key, 'not a fan speed');
   const slow = c.getAny('slowdown_below_layer_time', 'slow_down_layer_time');
   if (slow) c.set('minLayerTime', num(slow.value), slow.key, 'not a time');
   const minSpeed = c.getAny('min_print_speed', 'slow_down_min_speed');
