@@ -120,7 +120,11 @@ export function groupLayers(raw: RawRecords): GroupedLayers {
   };
 }
 
-/** The Z with the largest extrusion length among segments [start, end). */
+/**
+ * The Z with the largest extrusion length among segments [start, end); for a spiral turn (a spiral vase: Z
+ * never falls through the block and no one Z carries half its length) the highest Z, where the turn ends
+ * and which its layer marker declares.
+ */
 function dominantZ(raw: RawRecords, start: number, end: number): number {
   const z = raw.ext.z.data;
   const first = z[start]!;
@@ -143,11 +147,22 @@ function dominantZ(raw: RawRecords, start: number, end: number): number {
   }
   let best = first;
   let bestLen = -1;
+  let total = 0;
   for (const [key, len] of lengthByKey) {
+    total += len;
     if (len > bestLen) {
       bestLen = len;
       best = zByKey.get(key)!;
     }
+  }
+  if (bestLen < total / 2) {
+    let rising = true;
+    let top = first;
+    for (let i = start + 1; i < end && rising; i++) {
+      rising = z[i]! >= z[i - 1]!;
+      if (z[i]! > top) top = z[i]!;
+    }
+    if (rising) return top;
   }
   return best;
 }

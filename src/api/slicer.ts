@@ -11,7 +11,7 @@ import { MiB, prepareModel, prepareModelSteps, type PreparedModel } from './prep
 import type { SettingsSource } from '../mesh/types.js';
 import { settingsFromSource } from '../settings/import/object-settings.js';
 import { Pacer, paced, wait, type Steps } from '../pipeline/pacer.js';
-import { runPipelineSteps, type Progress, type RunResult, type ThinLoss } from '../pipeline/run.js';
+import { runPipelineSteps, type Progress, type RunResult, type ThinLoss, type VaseFlat } from '../pipeline/run.js';
 import { plateOf } from './plate.js';
 import { ConfigTable } from '../settings/scoped.js';
 import type { PrintPlan } from '../plan/types.js';
@@ -330,8 +330,8 @@ export class Slicer {
       threads,
       thinLost: run.thinLost,
     };
-    const thin = thinLossWarning(run.thinLost, cfg);
-    return { plan: run.plan, stats, warnings: thin ? [...model.warnings, thin] : model.warnings };
+    const extra = [thinLossWarning(run.thinLost, cfg), vaseFlatWarning(run.vaseFlat)].filter((w): w is string => w !== null);
+    return { plan: run.plan, stats, warnings: extra.length ? [...model.warnings, ...extra] : model.warnings };
   }
 }
 
@@ -355,6 +355,14 @@ export function thinLossWarning(lost: readonly ThinLoss[], cfg: Config): string 
   const min = ((cfg.minFeatureSize / 100) * cfg.nozzleDiameter).toFixed(2);
   const why = cfg.wallGenerator === 'classic' ? 'thinner than a line' : `thinner than minFeatureSize (${min} mm)`;
   return `${total.toFixed(2)} mm² of the model's sections is too thin to print (${why}) and is left out, on ${layers}`;
+}
+
+/** One line naming the spiral vase layers printed flat (not one wall loop), or null when every one turned. */
+export function vaseFlatWarning(flat: readonly VaseFlat[]): string | null {
+  if (flat.length === 0) return null;
+  const first = flat[0], last = flat[flat.length - 1];
+  const where = flat.length === 1 ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)` : `${flat.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
+  return `spiral vase: ${where} ${flat.length === 1 ? 'is' : 'are'} not one single wall loop (several islands, a hole, or a part too thin for a loop) and ${flat.length === 1 ? 'prints' : 'print'} flat, with a layer change; the spiral starts again above`;
 }
 
 /** An infill image that would take more than inflateBudget to decode is refused before it is decoded. */

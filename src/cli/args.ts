@@ -67,7 +67,15 @@ export const FLAGS: readonly FlagDef[] = [
 ];
 
 const BY_NAME: ReadonlyMap<string, FlagDef> = new Map(FLAGS.flatMap((f) => [[f.name, f] as const, ...(f.short ? [[f.short, f] as const] : [])]));
-export const FLAG_TO_KEY: ReadonlyMap<string, SettingKey> = new Map(SETTING_KEYS.map((k) => [kebab(k), k]));
+/**
+ * Other names a setting's flag answers to, as other slicers call the same thing (`--no-` works for them too
+ * when the setting is on/off): PrusaSlicer's "vase mode", Cura's "spiralize".
+ */
+export const FLAG_ALIASES: Readonly<Record<string, SettingKey>> = {
+  'vase-mode': 'spiralVase',
+  spiralize: 'spiralVase',
+};
+export const FLAG_TO_KEY: ReadonlyMap<string, SettingKey> = new Map([...SETTING_KEYS.map((k) => [kebab(k), k] as const), ...Object.entries(FLAG_ALIASES)]);
 
 /** Every flag the CLI accepts, with dashes: the FLAGS table and every setting's (with --no- for on/off ones). */
 export function allFlags(): string[] {
@@ -75,6 +83,10 @@ export function allFlags(): string[] {
   for (const k of SETTING_KEYS) {
     out.push(`--${kebab(k)}`);
     if (SCHEMA[k].type === 'boolean') out.push(`--no-${kebab(k)}`);
+  }
+  for (const [alias, k] of Object.entries(FLAG_ALIASES)) {
+    out.push(`--${alias}`);
+    if (SCHEMA[k].type === 'boolean') out.push(`--no-${alias}`);
   }
   return out;
 }

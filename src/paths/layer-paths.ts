@@ -73,6 +73,7 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
   let lost = 0;
   for (const island of regions.islands) lost += island.lostMm2;
   if (lost > 0) out.lostMm2 = lost;
+  if (regions.vase) out.vase = true;
   return out;
 }
 

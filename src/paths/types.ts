@@ -74,5 +74,7 @@ export interface LayerPaths extends LayerZ {
   lineWidth: number;
   /** Area of the layer's islands too thin for any wall line (left out), mm²; absent when none. */
   lostMm2?: number;
+  /** A spiral vase layer (LayerRegions.vase): the planner spirals it when it is one wall loop. */
+  vase?: true;
   groups: PathGroup[];
 }

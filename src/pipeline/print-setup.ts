@@ -15,6 +15,7 @@ import { ConfigTable, type ScopedSettings } from '../settings/scoped.js';
 import type { ObjectSetup, PrintSetup } from '../regions/objects.js';
 import type { Config } from '../settings/resolve.js';
 import type { SliceOptions } from '../settings/schema.js';
+import { vaseWarning } from '../settings/vase.js';
 
 /** A volume of a placed object other than its parts. */
 export interface PlacedVolume {
@@ -83,6 +84,11 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
     }
   }
   const warnings: string[] = [];
+  // settings given a value the spiral vase sets aside, wherever they were given
+  const vase = print.spiralVase
+    ? vaseWarning([base, ...objects.flatMap((o) => [o.settings, ...(o.volumes ?? []).map((v) => v.settings), ...(o.layerRanges ?? []).map((r) => r.settings)])], print)
+    : null;
+  if (vase) warnings.push(vase);
   const printed: PlacedObject[] = [];
   const printedIndex = new Map<number, number>();
   const settingsOf: number[] = [];

@@ -13,7 +13,7 @@ import type { InfillParams, PatternId } from '../infill/types.js';
 import { withSharedGroups } from '../paths/layer-paths.js';
 import type { LayerPaths } from '../paths/types.js';
 import { estimatePlanSteps } from '../plan/estimate.js';
-import { planLayer } from '../plan/layer-plan.js';
+import { endSpiral, planLayer, type PlanState } from '../plan/layer-plan.js';
 import { runPlanPasses } from '../plan/passes.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
 import { layerSparse, layerTopSkin } from '../regions/layer-regions.js';
@@ -70,6 +70,14 @@ export interface RunResult {
   layers: number;
   /** Layers with parts too thin for any wall line, which are left out: layer number, Z (mm) and area (mm²). */
   thinLost: ThinLoss[];
+  /** Spiral vase layers above the first that are not one wall loop, printed flat: layer number and Z (mm). */
+  vaseFlat: VaseFlat[];
+}
+
+/** A spiral vase layer printed flat. */
+export interface VaseFlat {
+  layer: number;
+  z: number;
 }
 
 /** Area of one layer left out as too thin to print. */
@@ -261,12 +269,15 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
 
     // Travel planning is sequential (each layer starts where the last one ended), so ranges are
     // planned in order as they arrive, while later ones are still being computed.
-    const state = { at: { x: 0, y: 0 } as Pt };
+    const state: PlanState = { at: { x: 0, y: 0 } as Pt };
     const planned: LayerPlan[] = [];
     const thinLost: ThinLoss[] = [];
+    const vaseFlat: VaseFlat[] = [];
     const plan = (lp: LayerPaths) => {
       if (lp.lostMm2) thinLost.push({ layer: planned.length, z: lp.z, areaMm2: lp.lostMm2 });
-      planned.push(planLayer(lp, cfg, state, planned.length));
+      const layerPlan = planLayer(lp, cfg, state, planned.length);
+      if (lp.vase && lp.index > 0 && !layerPlan.spiral) vaseFlat.push({ layer: planned.length, z: lp.z });
+      planned.push(layerPlan);
     };
     let jobs: RangeJob[] = [];
     if (twoPhase) {
@@ -369,6 +380,8 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
         }
       });
     }
+    // a spiral vase that turns up to the last layer ends with its finishing turn
+    endSpiral(state);
     // the workers' memory and the meshes' slicing structures go back before the G-code is written
     meshes = null;
     if (pool) yield* wait(pool.close());
@@ -384,7 +397,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
     yield* paced(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
-    return { plan: printPlan, estimate, layers: planned.length, thinLost };
+    return { plan: printPlan, estimate, layers: planned.length, thinLost, vaseFlat };
   } finally {
     if (pool) yield* wait(pool.close());
   }

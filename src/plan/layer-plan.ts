@@ -13,6 +13,7 @@ import { combRoute, insideRings, makeCombArea, pathLength, type CombArea } from 
 import { flagStyle, GROUP_ORDER, overAirMatters, type EntryStyle, type ExtrusionStyle } from '../paths/roles.js';
 import { sortEntries } from './print-order.js';
 import { scarfRuns } from './scarf.js';
+import { finishingTurn, openLoopNear, spiralTurn } from './spiral-vase.js';
 import { chooseSeam, rotateLoop } from './seam.js';
 import { PartGuard } from './support-travel.js';
 import type { ExtrudeStep, LayerPlan, PlanStep } from './types.js';
@@ -22,6 +23,13 @@ export interface PlanState {
   at: Pt;
   /** The part's islands on the previous layer (kept for support travels, see support-travel.ts). */
   below?: ExPolygon[];
+  /** The previous layer's Z, mm (absent before the first layer). */
+  z?: number;
+  /**
+   * After a spiral vase turn (spiral-vase.ts): the flat finishing turn that ends the spiral, and the steps of
+   * the turn's layer it goes into, should the next layer not go on turning (endSpiral).
+   */
+  spiralEnd?: { finish: PlanStep[]; into: PlanStep[] };
 }
 
 interface Ctx {
@@ -381,6 +389,49 @@ function hasPaths(group: PathGroup): boolean {
   return group.entries.some((e) => e.paths.length > 0);
 }
 
+/** A spiral vase layer's one wall loop, when its only paths are one island's one closed wall loop. */
+function spiralLoop(layer: LayerPaths): { group: PathGroup; entry: PathEntry } | null {
+  let found: { group: PathGroup; entry: PathEntry } | null = null;
+  for (const group of layer.groups) {
+    for (const entry of group.entries) {
+      if (entry.paths.length === 0) continue;
+      if (found || group.kind !== 'island' || entry.role !== 'wall' || !entry.closed || entry.paths.length !== 1 || entry.paths[0].length < 3) return null;
+      found = { group, entry };
+    }
+  }
+  return found;
+}
+
+/**
+ * Print the layer's one wall loop as a spiral turn (spiral-vase.ts): on from the previous turn's end, or
+ * (a first turn) from where the nozzle is, by the usual travel; then keep the finishing turn that ends the
+ * spiral should the next layer not turn.
+ */
+function printTurn(ctx: Ctx, state: PlanState, group: PathGroup, entry: PathEntry, onFromTurn: boolean): PlanStep[] {
+  ctx.kind = group.kind;
+  ctx.object = group.object;
+  const style = layerStyle(ctx, entry.style);
+  const loop = loopRun(entry, 0, 0);
+  const opened = openLoopNear(loop, ctx.at);
+  // going on from a turn: no travel, so no retraction on the layer change either
+  if (onFromTurn) ctx.layerStart = false;
+  const turn = spiralTurn(opened, onFromTurn ? ctx.at : null, state.z! - ctx.layer.z, !onFromTurn);
+  extrudeFlagged(ctx, style, turn);
+  const finish: PlanStep[] = [];
+  extrudeFlagged({ ...ctx, steps: finish }, style, finishingTurn(opened));
+  ctx.object = undefined;
+  return finish;
+}
+
+/**
+ * End a spiral whose last turn was the previous layer: its flat finishing turn goes after that turn.
+ * Called by planLayer when a layer does not go on turning, and once after the last layer.
+ */
+export function endSpiral(state: PlanState): void {
+  if (state.spiralEnd) state.spiralEnd.into.push(...state.spiralEnd.finish);
+  state.spiralEnd = undefined;
+}
+
 /**
  * Build the plan of one layer, starting from where the nozzle is.
  * @param position the layer's place in the print (0: the first layer, with first-layer speeds, fan and
@@ -395,14 +446,24 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
     cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined, innerArea: undefined,
     kind: null, lastKind: null, islands, below: state.below ?? [], guard: null, firstStyles: new Map(),
   };
-  for (const kind of GROUP_ORDER) {
-    const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
-    // travels into another group are not combed (printGroup starts each group without a comb area)
-    const order = orderNearest(groups.length, (i) => [groupEntry(groups[i])], (i) => groupEntry(groups[i]), ctx.at);
-    for (let k = 0; k < order.length; k++) printGroup(ctx, groups[order[k][0]]);
+  // a spiral vase layer above the model's first, over a layer below it, turns when it is one loop
+  const turn = layer.vase && layer.index > 0 && !first && state.z !== undefined && layer.z > state.z ? spiralLoop(layer) : null;
+  const onFromTurn = !!turn && !!state.spiralEnd;
+  if (!onFromTurn) endSpiral(state);
+  state.spiralEnd = undefined;
+  let finish: PlanStep[] | null = null;
+  if (turn) finish = printTurn(ctx, state, turn.group, turn.entry, onFromTurn);
+  else {
+    for (const kind of GROUP_ORDER) {
+      const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
+      // travels into another group are not combed (printGroup starts each group without a comb area)
+      const order = orderNearest(groups.length, (i) => [groupEntry(groups[i])], (i) => groupEntry(groups[i]), ctx.at);
+      for (let k = 0; k < order.length; k++) printGroup(ctx, groups[order[k][0]]);
+    }
   }
   state.at = ctx.at;
   state.below = islands;
+  state.z = layer.z;
   const plan: LayerPlan = {
     index: position,
     z: layer.z,
@@ -410,6 +471,10 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
     fan: (first ? cfg.firstLayerFanSpeed : cfg.fanSpeed) / 100,
     steps: ctx.steps,
   };
+  if (finish) {
+    plan.spiral = true;
+    state.spiralEnd = { finish, into: plan.steps };
+  }
   if (position === 1) {
     if (cfg.nozzleTemperature !== cfg.firstLayerNozzleTemp) plan.nozzleTemperature = cfg.nozzleTemperature;
     if (cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemp) plan.bedTemperature = cfg.bedTemperature;

@@ -15,7 +15,9 @@
  *   rectangular cross-section model (the same one the planner's widths are computed for). A step with a
  *   width per point gives each segment the mean of its two end widths.
  * - A step with a Z per point moves the nozzle to the layer's Z plus that value along each segment (one
- *   G1 with X, Y and Z); the next step comes back to the layer's Z first.
+ *   G1 with X, Y and Z); the next step comes back to the layer's Z first. On a spiral vase turn
+ *   (`LayerPlan.spiral`) such a step starts at the Z the nozzle is at when its first point's Z is that
+ *   (the previous turn's end): no Z move to the layer's Z comes before it.
  * - XY speeds are capped at `maxSpeed` (and floored at MIN_SPEED_MM_S so a feed rate is never 0).
  * - Zero-length segments are dropped.
  * - A segment with an arc (`step.arcs[i]`) goes around its centre in its direction; its length, and so
@@ -34,6 +36,8 @@ import { hypot } from '../geometry/types.js';
 
 /** Speed of standalone Z moves (layer change, Z hop), mm/s: a rate every common printer's Z axis accepts. */
 export const Z_SPEED_MM_S = 5;
+/** A spiral turn whose first Z is this close to the nozzle's starts there without a Z move, mm. */
+const SPIRAL_SAME_Z_MM = 1e-6;
 /** Slowest feed rate ever written, mm/s: keeps F positive whatever a plan asks. */
 export const MIN_SPEED_MM_S = 0.1;
 
@@ -219,7 +223,9 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
     const points = step.points;
     const n = points.length;
     if (n === 0) continue;
-    moveZ(pos, layerZ, zSpeed, sink);
+    const zs = step.z;
+    // a spiral turn's rising steps start at the Z the nozzle is at (see below)
+    if (!(zs && layer.spiral)) moveZ(pos, layerZ, zSpeed, sink);
     const object = step.object ?? NO_OBJECT;
     if (object !== w.open) {
       if (w.open !== NO_OBJECT) sink.objectEnd(w.open);
@@ -227,8 +233,13 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
       w.open = object;
     }
     travelTo(pos, points[0]!.x, points[0]!.y, travelSpeed, sink);
-    const zs = step.z;
-    if (zs) moveZ(pos, layerZ + zs[0]!, zSpeed, sink);
+    if (zs) {
+      const z0 = layerZ + zs[0]!;
+      // a spiral turn goes on from the previous turn's end: the same Z but for the rounding of the layer's
+      // Z plus the offset back down to the previous one
+      if (layer.spiral && Math.abs(z0 - pos.z) < SPIRAL_SAME_Z_MM) pos.z = z0;
+      else moveZ(pos, z0, zSpeed, sink);
+    }
     sink.extrudeStart(step);
     const speed = capSpeed(step.speed, s.maxSpeed);
     const perMm = filamentPerMm(step, s);

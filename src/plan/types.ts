@@ -76,6 +76,12 @@ export interface LayerPlan {
   nozzleTemperature?: number;
   /** Bed temperature to set at the start of the layer (°C), when it changes. */
   bedTemperature?: number;
+  /**
+   * The layer is one turn of a spiral vase (spiral-vase.ts): its extrusions carry a Z per point rising from
+   * the previous layer's Z to this one's, and the first starts where the nozzle is (in XY, and in Z when
+   * the previous layer was a turn too), so no Z move comes before it.
+   */
+  spiral?: true;
   steps: PlanStep[];
 }
 

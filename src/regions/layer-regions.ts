@@ -234,6 +234,7 @@ export class RegionsRun {
    * @param levelsBelow the layer below as measured for the overhang levels of walls
    */
   #islands(k: number, i: number, w: number, below: readonly ExPolygon[], belowGrown: readonly ExPolygon[], levelsBelow: BelowLevels): IslandRegions[] {
+    if (this.#vase(i)) return this.#vaseIslands(k, i, w, belowGrown, levelsBelow);
     const section = this.#section(k, i);
     const pieces = this.#pieces(k, i, section);
     const configs = this.#setup.configs;
@@ -285,11 +286,51 @@ export class RegionsRun {
     return out;
   }
 
+  /**
+   * Whether layer i is a spiral vase layer: spiralVase on and the layer above the bottom skin's layers
+   * (the print's bottomSkinThickness: the vase's floor).
+   */
+  #vase(i: number): boolean {
+    return this.#cfg.spiralVase && i >= this.#cfg.bottomLayers;
+  }
+
+  /**
+   * Object k's islands of a spiral vase layer: one outer wall round each (laid with the object's own wall
+   * settings, modifiers aside: a vase has no inside for them to change), and nothing inside it.
+   */
+  #vaseIslands(k: number, i: number, w: number, belowGrown: readonly ExPolygon[], levelsBelow: BelowLevels): IslandRegions[] {
+    const o = this.#objects[k];
+    const region = o.setup.regions[rangeAt(o.setup, this.#layers[i].sliceZ)][0];
+    const cfg = this.#setup.configs[region];
+    const oneWall: Config = { ...cfg, walls: 1, extraPerimetersOnOverhangs: false };
+    return computeWalls(this.#section(k, i), oneWall, w).map((iw): IslandRegions => {
+      const island: IslandRegions = {
+        object: k,
+        region,
+        topSkin: [],
+        bottomSkin: [],
+        exposed: [],
+        bridge: [],
+        bridgeAngle: null,
+        sparse: [],
+        outline: iw.outline,
+        walls: iw.walls,
+        lostMm2: iw.lostMm2,
+        unsupported: i > 0 ? difference([iw.outline], belowGrown) : [],
+      };
+      if (i > 0 && cfg.dynamicOverhangSpeeds) {
+        const levels = overhangLevels(iw.outline, levelsBelow, w);
+        if (levels) island.overhangLevels = levels;
+      }
+      return island;
+    });
+  }
+
   /** Object k's overhang on layer i, with its support blockers and enforcers. */
   #overhang(k: number, i: number, islands: readonly IslandRegions[], grownUm: number): ExPolygon[] {
     const o = this.#objects[k];
     const z = this.#layers[i];
-    if (i === 0 || !(o.cfg.supportEnabled || o.enforcers.length)) return [];
+    if (i === 0 || !(o.cfg.supportEnabled || o.enforcers.length) || this.#vase(i)) return [];
     const section = this.#section(k, i);
     const below = this.#section(k, i - 1);
     let over = o.cfg.supportEnabled ? overhangOf(section, below, z.height, o.cfg, false, { any: islands.some((r) => r.unsupported.length > 0), grownUm }) : [];
@@ -322,8 +363,9 @@ export class RegionsRun {
       overhangs.push(this.#overhang(k, i, own, w / 2));
     }
     this.#checkOverlaps(i);
-    if (overhangs.length === 1) return { ...z, islands, overhang: overhangs[0], support: null };
-    return { ...z, islands, overhang: overhangs.flat(), overhangs, support: null };
+    const vase = this.#vase(i) ? { vase: true as const } : {};
+    if (overhangs.length === 1) return { ...z, islands, overhang: overhangs[0], support: null, ...vase };
+    return { ...z, islands, overhang: overhangs.flat(), overhangs, support: null, ...vase };
   }
 
   /** Refuse objects with different settings that share volume on layer i. */

@@ -131,6 +131,11 @@ export interface LayerRegions extends LayerZ {
   supports?: (SupportAreas | null)[];
   /** Set on raft layers (below the model's first layer), which have no islands. */
   raft?: RaftArea;
+  /**
+   * Set on the layers of a spiral vase above its bottom (spiralVase): each island has one outer wall and no
+   * skin, infill, ironing or support; the planner spirals the layer's wall when it is one single loop.
+   */
+  vase?: true;
 }
 
 /**

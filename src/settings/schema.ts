@@ -359,6 +359,9 @@ export const SCHEMA = {
   fuzzySkinThickness: when(num(0.3, 0.01, 2, 'mm', 'walls', 'How far fuzzy skin moves each point in or out of the wall, at most (the texture is twice this deep).'), { fuzzySkin: ['outer', 'all'] }),
   fuzzySkinPointDistance: when(num(0.8, 0.1, 10, 'mm', 'walls', 'Average distance between the points of a fuzzy wall (each gap ¾ to 1¼ of it).'), { fuzzySkin: ['outer', 'all'] }),
 
+  // ── spiral vase ──────────────────────────────────────────────────────────────
+  spiralVase: bool(false, 'walls', "Spiral vase mode: after the bottom layers (bottomSkinThickness, printed as set) every layer is one outer wall whose Z rises steadily round the turn from the layer below's height to its own, so the print is one continuous spiral with no seam, no layer-change travel and no retraction. Above the bottom there is one wall, no infill, no top skin, no support, no ironing and no scarf; settings that ask for those are reported as ignored. The first turn grows its flow from nothing and a last flat turn at the top shrinks it to nothing, so the spiral starts and ends level. A layer that is not one single loop (several islands, a hole) is printed flat, and reported."),
+
   // ── runtime ──────────────────────────────────────────────────────────────────
   threads: int(0, 0, 256, 'count', 'runtime', 'Threads for the per-layer stages (0 = automatic: one per core above two cores, else one). The G-code is the same for any count.'),
 } as const satisfies Record<string, SettingDef>;

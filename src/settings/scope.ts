@@ -34,6 +34,8 @@ const EXCEPTIONS: Partial<Record<SettingKey, Scope>> = {
   infillShaderResolution: 'print',
   // travel between support areas is the planner's
   supportLimitRetractions: 'print',
+  // the planner spirals the whole layer, every object's walls in one turn
+  spiralVase: 'print',
 };
 
 const BY_STAGE: Record<Stage, Scope> = {

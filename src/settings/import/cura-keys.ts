@@ -259,6 +259,9 @@ export function mapCuraKeys(c: ImportContext): void {
     const outside = bool(str('magic_fuzzy_skin_outside_only'));
     c.set('fuzzySkin', bool(fuzzy) === undefined ? undefined : bool(fuzzy) ? (outside ? 'outer' : 'all') : 'off', 'magic_fuzzy_skin_enabled', 'not True or False');
   }
+  // spiralize: Cura's spiral vase mode
+  const spiral = str('magic_spiralize');
+  if (spiral !== undefined) c.set('spiralVase', bool(spiral), 'magic_spiralize', 'not True or False');
   take('fuzzySkinThickness', ['magic_fuzzy_skin_thickness']);
   if (c.has('magic_fuzzy_skin_point_dist')) take('fuzzySkinPointDistance', ['magic_fuzzy_skin_point_dist']);
   else take('fuzzySkinPointDistance', ['magic_fuzzy_skin_point_density'], (perMm) => round(1 / perMm));

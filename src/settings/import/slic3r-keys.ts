@@ -720,6 +720,9 @@ function seamsAndSurface(c: ImportContext, layerHeight: number): void {
   if (angle && c.settings.scarfConditional && num(angle.value) !== 140) {
     c.reject(angle.key, 'a conditional scarf in Strata leaves out seams in corners turning 40° or more (an angle of 140° or less)');
   }
+  // spiral vase: PrusaSlicer's and SuperSlicer's spiral_vase, OrcaSlicer's spiral_mode
+  const vase = c.getAny('spiral_vase', 'spiral_mode');
+  if (vase) c.set('spiralVase', bool(vase.value), vase.key, 'not 0 or 1');
   const fuzzy = c.getAny('fuzzy_skin');
   if (fuzzy) {
     const v = first(fuzzy.value) ?? '';

@@ -40,6 +40,8 @@ export function toSlic3rKeys(settings: Readonly<Record<string, unknown>>, layerH
     out[`${side}_solid_layers`] = String(t > 0 ? Math.max(1, Math.floor(t / lh + 1e-6)) : 0);
     out[`${side}_solid_min_thickness`] = String(t);
   }
+  // written only when on, so a project without the vase is written as before
+  if (s.spiralVase === true) out.spiral_vase = '1';
   if (typeof s.supportEnabled === 'boolean') out.support_material = s.supportEnabled ? '1' : '0';
   return out;
 }
