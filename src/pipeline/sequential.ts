@@ -126,7 +126,7 @@ export function sequenceObjects(objects: readonly SequenceObject[], cfg: Pick<Co
     if (other !== undefined) {
       throw new StrataError(
         'DOES_NOT_FIT',
-        `sequential printing: object "${objects[other].name}" is ${mm(tops[other])} mm tall, taller than extruderClearanceHeight (${mm(height)} mm), and only the last object printed may be (the gantry passes over the objects printed before it); "${objects[last].name}" (${mm(tops[last])} mm) is printed last. Print them separately, or raise extruderClearanceHeight if the gantry is higher`,
+        `sequential printing: object "${objects[other].name}" is ${mm(tops[other])} mm tall, taller than extruderClearanceHeight (${mm(height)} mm): it does not fit under the gantry, which passes over every object printed before the last, and only one object may be printed last ("${objects[last].name}", ${mm(tops[last])} mm). Print them separately, or raise extruderClearanceHeight if the gantry is higher`,
       );
     }
     order.splice(order.indexOf(last), 1);
