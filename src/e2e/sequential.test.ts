@@ -189,6 +189,9 @@ const C = part('C', 144, 90, 12, 4);
 test('three parts print one at a time, each from its first layer to its top, lifting over the finished ones', async () => {
   const { gcode, stats } = await slice([A, B, C], { sequentialPrinting: true, zHop: 0 });
   assert.deepEqual(sequentialProblems(gcode, [A, B, C], [0, 1, 2]), []);
+  // the end template starts above every object (B, 10 mm)
+  const moves = movesOf(gcode);
+  assert.ok(moves[moves.length - 1].z > 10, `the last move is at Z ${moves[moves.length - 1].z}`);
   // layers are numbered on through the print: every part's layers, counted everywhere the same
   const layers = Math.round(6 / 0.2) + Math.round(10 / 0.2) + Math.round(4 / 0.2);
   assert.deepEqual(layerCounts(gcode), { markers: layers, declared: layers, times: layers, trailer: layers });

@@ -11,7 +11,8 @@
  * - The skirt or brim (one group round every object) prints once, with the first object's first layer.
  * - Support belongs to the object whose footprint it lies in (or nearest to).
  * - Between objects: a retracted travel at a safe Z (above everything printed so far, `liftZ`) to the next
- *   object's first point, then down to its first layer (TravelStep.liftTo; moves.ts walks it).
+ *   object's first point, then down to its first layer (TravelStep.liftTo; moves.ts walks it). After the last
+ *   object the nozzle rises to that Z too (the end template's moves then clear every object).
  */
 import { UM_PER_MM, type Pt } from '../geometry/types.js';
 import type { LayerPaths, PathGroup } from '../paths/types.js';
@@ -99,6 +100,9 @@ export function planSequential(input: SequentialInput, cfg: Config): LayerPlan[]
     }
     for (const l of out) if (l.z > printedTop) printedTop = l.z;
   }
+  // at the end, up above every object, so the end template's moves (presenting the print) clear them
+  const last = out[out.length - 1];
+  if (last) last.steps.push({ kind: 'travel', points: [state.at], retract: false, zHop: 0, speed: cfg.travelSpeed, liftTo: input.liftZ(printedTop) });
   return out;
 }
 
