@@ -16,7 +16,10 @@
 import { StrataError } from '../errors.js';
 import type { Config } from '../settings/resolve.js';
 import { footprintHull } from './objects.js';
+import { hullDistance } from '../geometry/hull-distance.js';
 import type { Mesh } from '../mesh/types.js';
+
+export { hullDistance };
 
 /** Clearances are checked to this much (mm): hull vertices are rounded to the µm, and arranged models lie exactly the radius apart. */
 export const CLEARANCE_TOLERANCE_MM = 1e-3;
@@ -36,47 +39,6 @@ export interface Sequence {
   hulls: [number, number][][];
   /** Each object's top, mm. */
   tops: number[];
-}
-
-type P = readonly [number, number];
-
-function segmentPointDistance(p: P, a: P, b: P): number {
-  const dx = b[0] - a[0], dy = b[1] - a[1];
-  const len2 = dx * dx + dy * dy;
-  let t = len2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2 : 0;
-  t = t < 0 ? 0 : t > 1 ? 1 : t;
-  return Math.hypot(p[0] - (a[0] + t * dx), p[1] - (a[1] + t * dy));
-}
-
-/** Whether `p` lies inside or on the convex counter-clockwise polygon (3 vertices or more). */
-function insideConvex(p: P, poly: readonly P[]): boolean {
-  if (poly.length < 3) return false;
-  for (let i = 0; i < poly.length; i++) {
-    const a = poly[i], b = poly[(i + 1) % poly.length];
-    if ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) < 0) return false;
-  }
-  return true;
-}
-
-function segmentsCross(a: P, b: P, c: P, d: P): boolean {
-  const side = (p: P, q: P, r: P) => Math.sign((q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]));
-  return side(a, b, c) * side(a, b, d) < 0 && side(c, d, a) * side(c, d, b) < 0;
-}
-
-/** The distance between two convex polygons (counter-clockwise, mm), 0 when they touch or overlap. */
-export function hullDistance(a: readonly P[], b: readonly P[]): number {
-  if (a.length === 0 || b.length === 0) return Infinity;
-  if (insideConvex(a[0], b) || insideConvex(b[0], a)) return 0;
-  let best = Infinity;
-  for (let i = 0; i < a.length; i++) {
-    const a0 = a[i], a1 = a[(i + 1) % a.length];
-    for (let j = 0; j < b.length; j++) {
-      const b0 = b[j], b1 = b[(j + 1) % b.length];
-      if (segmentsCross(a0, a1, b0, b1)) return 0;
-      best = Math.min(best, segmentPointDistance(a0, b0, b1), segmentPointDistance(b0, a0, a1));
-    }
-  }
-  return best;
 }
 
 /** Highest Z of the vertices the mesh's triangles use, mm. */

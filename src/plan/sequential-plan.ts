@@ -14,6 +14,7 @@
  *   object's first point, then down to its first layer (TravelStep.liftTo; moves.ts walks it). After the last
  *   object the nozzle rises to that Z too (the end template's moves then clear every object).
  */
+import { pointHullDistance } from '../geometry/hull-distance.js';
 import { UM_PER_MM, type Pt } from '../geometry/types.js';
 import type { LayerPaths, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
@@ -34,24 +35,6 @@ export interface SequentialInput {
   liftZ: (printedTop: number) => number;
 }
 
-/** Distance (µm²-free, mm) from a point (µm) to a hull (mm); 0 inside. */
-function distanceToHull(p: Pt, hull: readonly [number, number][]): number {
-  const x = p.x / UM_PER_MM, y = p.y / UM_PER_MM;
-  if (hull.length === 0) return Infinity;
-  let inside = hull.length >= 3;
-  let best = Infinity;
-  for (let i = 0; i < hull.length; i++) {
-    const [ax, ay] = hull[i], [bx, by] = hull[(i + 1) % hull.length];
-    if ((bx - ax) * (y - ay) - (by - ay) * (x - ax) < 0) inside = false;
-    const dx = bx - ax, dy = by - ay;
-    const len2 = dx * dx + dy * dy;
-    let t = len2 > 0 ? ((x - ax) * dx + (y - ay) * dy) / len2 : 0;
-    t = t < 0 ? 0 : t > 1 ? 1 : t;
-    best = Math.min(best, Math.hypot(x - (ax + t * dx), y - (ay + t * dy)));
-  }
-  return inside ? 0 : best;
-}
-
 /** A point of the group's paths (its first), or null when it has none. */
 function firstPoint(group: PathGroup): Pt | null {
   for (const e of group.entries) for (const path of e.paths) if (path.length) return path[0];
@@ -66,7 +49,7 @@ function ownerOf(group: PathGroup, hulls: SequentialInput['hulls']): number {
   if (!p) return SHARED;
   let best = 0, bestD = Infinity;
   for (let k = 0; k < hulls.length; k++) {
-    const d = distanceToHull(p, hulls[k]);
+    const d = pointHullDistance([p.x / UM_PER_MM, p.y / UM_PER_MM], hulls[k]);
     if (d < bestD) (bestD = d), (best = k);
   }
   return best;
