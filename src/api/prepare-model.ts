@@ -72,13 +72,16 @@ export function* prepareModelSteps(input: unknown, given: Config, reconfigure?: 
     prepared.push({ name: m.name, objects });
   }
   const brim = cfg.adhesionType === 'brim' ? cfg.brimWidth : 0;
+  // sequential printing keeps the print head's clearance radius between the models (the brim lies under it)
+  const spacing = cfg.sequentialPrinting ? Math.max(cfg.objectSpacing + 2 * brim, cfg.extruderClearanceRadius) : cfg.objectSpacing + 2 * brim;
   const placed = placeModels(prepared, {
     center: cfg.center,
     bedWidth: cfg.buildPlateWidth,
     bedLength: cfg.buildPlateLength,
     bedHeight: cfg.buildVolumeHeight,
     originAtCenter: cfg.originAtCenter,
-    spacing: cfg.objectSpacing + 2 * brim,
+    spacing,
+    ...(spacing > cfg.objectSpacing + 2 * brim ? { spacingSetting: 'extruderClearanceRadius (sequentialPrinting keeps it between the models)' } : {}),
     margin: adhesionMargin(cfg),
     transform: {
       upAxis: cfg.upAxis,
@@ -89,7 +92,7 @@ export function* prepareModelSteps(input: unknown, given: Config, reconfigure?: 
   if (prepared.length > 1) {
     warnings.unshift(
       cfg.center
-        ? `${prepared.length} models arranged around the bed centre, ${round(cfg.objectSpacing)} mm apart`
+        ? `${prepared.length} models arranged around the bed centre, ${round(cfg.sequentialPrinting ? spacing : cfg.objectSpacing)} mm apart${cfg.sequentialPrinting && spacing > cfg.objectSpacing + 2 * brim ? ' (extruderClearanceRadius, for sequential printing)' : ''}`
         : `${prepared.length} models kept at their own coordinates`,
     );
   }

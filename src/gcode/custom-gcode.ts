@@ -14,7 +14,9 @@
  *   (the layer's moves)
  *
  * move-writer.ts writes them there. The colour change comes before the layer's first move, outside any
- * object's label block, so cancelling an object never skips it. The markers are PrusaSlicer's (its
+ * object's label block, so cancelling an object never skips it. In sequential printing the layers are
+ * numbered on through the whole print (`{layer_num}` keeps rising while `{layer_z}` goes down at each new
+ * object), and each object changes colour or pauses at the given heights. The markers are PrusaSlicer's (its
  * G-code viewer reads them). Every layer gets the layer templates, the first too (as OrcaSlicer; PrusaSlicer
  * skips the first). A pause adds no time to the estimate: the printer waits for the user.
  */
@@ -136,12 +138,22 @@ export function printCustomGcode(plan: PrintPlan, settings: Settings, estimate: 
   const pause = compiled.get('pauseGcode');
   if (!before && !after && !colorChange && !pause) return { start, end, layers: null };
 
-  /** The layers that are the first at or above one of the heights. */
+  /**
+   * The layers that are the first at or above one of the heights, in each run of rising layers: the whole
+   * print, or in sequential printing (where Z goes down at each new object) each object, so every object
+   * changes colour or pauses at that height (as PrusaSlicer does).
+   */
   const firstAtOrAbove = (heights: readonly number[]): Set<number> => {
     const found = new Set<number>();
-    for (const h of heights) {
-      const i = layers.findIndex((l) => l.z >= h - HEIGHT_TOLERANCE_MM);
-      if (i >= 0) found.add(i);
+    for (let start = 0, end = 1; start < layers.length; start = end, end = start + 1) {
+      while (end < layers.length && layers[end].z >= layers[end - 1].z) end++;
+      for (const h of heights) {
+        for (let i = start; i < end; i++) {
+          if (layers[i].z < h - HEIGHT_TOLERANCE_MM) continue;
+          found.add(i);
+          break;
+        }
+      }
     }
     return found;
   };

@@ -54,6 +54,8 @@ export interface PlaceOptions {
   originAtCenter: boolean;
   /** Gap between arranged models, mm (default 6). */
   spacing?: number;
+  /** The setting the gap comes from, for the message when the models do not fit (default objectSpacing). */
+  spacingSetting?: string;
   /** What the first layer adds around the models (a skirt or brim), mm, kept on the bed too. */
   margin?: { mm: number; what: string };
   /** Turned and scaled before placing (default none). */
@@ -163,7 +165,7 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
       if (spots === null || gx1 - gx0 > bedW + FIT_EPS || gy1 - gy0 > bedL + FIT_EPS) {
         throw new StrataError(
           'DOES_NOT_FIT',
-          `the ${turned.length} models do not fit on the ${fmt(w)} × ${fmt(l)} mm bed together, ${fmt(gap)} mm apart${withMargin.replace(' its', ' their')}: slice fewer at once, make them smaller or lower objectSpacing`,
+          `the ${turned.length} models do not fit on the ${fmt(w)} × ${fmt(l)} mm bed together, ${fmt(gap)} mm apart${withMargin.replace(' its', ' their')}: slice fewer at once, make them smaller or lower ${opts.spacingSetting ?? 'objectSpacing'}`,
         );
       }
       const sx = cx - (gx0 + gx1) / 2, sy = cy - (gy0 + gy1) / 2;

@@ -15,6 +15,7 @@ import type { LayerPaths } from '../paths/types.js';
 import { estimatePlanSteps } from '../plan/estimate.js';
 import { endSpiral, planLayer, type PlanState } from '../plan/layer-plan.js';
 import { runPlanPasses } from '../plan/passes.js';
+import { planSequential } from '../plan/sequential-plan.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
 import { layerSparse, layerTopSkin } from '../regions/layer-regions.js';
 import { raftUnder } from '../regions/raft.js';
@@ -33,6 +34,7 @@ import { isTransferable, loadCustomInfill, loadedCustomInfill } from './custom-i
 import { planObjects } from './objects.js';
 import type { PlacedObject, PlateSetup } from './print-setup.js';
 import { Pacer, paced, wait, type Steps } from './pacer.js';
+import { liftZ, sequenceObjects } from './sequential.js';
 
 export type { PlacedObject, PlateSetup } from './print-setup.js';
 
@@ -215,6 +217,8 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
   }
   const layers: LayerZ[] = planLayers(height, cfg.firstLayerHeight, cfg.layerHeight);
   if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
+  // sequential printing: the order, and the print head's clearances checked before anything is sliced
+  const sequence = cfg.sequentialPrinting && objects.length > 1 ? sequenceObjects(objects, cfg) : null;
   const infillParams = objects.map((o, k) => infillParamsFor(setup.configs[setup.objects[k].config], o));
   // N threads: the calling thread and N-1 workers, or for a custom infill N workers and the calling thread
   // only planning (see customInWorkers; split in two ranges at least, so progress is seen)
@@ -273,8 +277,14 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const planned: LayerPlan[] = [];
     const thinLost: ThinLoss[] = [];
     const vaseFlat: VaseFlat[] = [];
+    // sequential printing plans the layers object by object once every layer's paths are made
+    const collected: LayerPaths[] = [];
     const plan = (lp: LayerPaths) => {
-      if (lp.lostMm2) thinLost.push({ layer: planned.length, z: lp.z, areaMm2: lp.lostMm2 });
+      if (lp.lostMm2) thinLost.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.lostMm2 });
+      if (sequence) {
+        collected.push(lp);
+        return;
+      }
       const layerPlan = planLayer(lp, cfg, state, planned.length);
       if (lp.vase && lp.index > 0 && !layerPlan.spiral) vaseFlat.push({ layer: planned.length, z: lp.z });
       planned.push(layerPlan);
@@ -385,6 +395,10 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     // the workers' memory and the meshes' slicing structures go back before the G-code is written
     meshes = null;
     if (pool) yield* wait(pool.close());
+    if (sequence) {
+      planned.push(...planSequential({ paths: collected, order: sequence.order, hulls: sequence.hulls, liftZ: (top) => liftZ(top, cfg.buildVolumeHeight) }, cfg));
+      collected.length = 0;
+    }
     pacer.check();
     report('planning', 0.8);
     const printPlan: PrintPlan = { layers: planned, objects: planObjects(objects), bounds: planBounds(planned) };

@@ -436,9 +436,10 @@ export function endSpiral(state: PlanState): void {
  * Build the plan of one layer, starting from where the nozzle is.
  * @param position the layer's place in the print (0: the first layer, with first-layer speeds, fan and
  *   temperatures; the second sets the normal temperatures)
+ * @param first the layer is printed on the bed as a first layer (first-layer speeds and fan, no retraction
+ *   on the layer change): the print's first, or in sequential printing each object's first
  */
-export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, position = layer.index): LayerPlan {
-  const first = position === 0;
+export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, position = layer.index, first = position === 0): LayerPlan {
   // the part's islands, here and on the layer below (support travels keep off them)
   const islands: ExPolygon[] = [];
   for (const g of layer.groups) if (g.kind === 'island' && g.area) islands.push(g.area);

@@ -11,6 +11,10 @@
  *   down to layer Z, prime `retractionDistance + retractionExtraPrime`. Retractions happen only when the
  *   step asks for one and `retractionEnabled` is on; the Z hop only with a retraction.
  * - Otherwise every layer's first move is preceded by a Z move to the layer's Z.
+ * - A travel with `liftTo` (sequential printing: on to the next object) rises to that Z instead of the
+ *   layer's (+ zHop), travels there, and only then comes down to the layer's Z, which may be lower than
+ *   the layer before's: Z goes down only there. As a layer's last step it stays up (the end of a sequential
+ *   print, so the end template's moves clear every object).
  * - E per mm of path = width × height / (π·(filamentDiameter/2)²) × flow × flowRate/100: the
  *   rectangular cross-section model (the same one the planner's widths are computed for). A step with a
  *   width per point gives each segment the mean of its two end widths.
@@ -214,9 +218,10 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
       const speed = capSpeed(step.speed, s.maxSpeed);
       const retracting = step.retract && s.retractionEnabled;
       if (retracting && retractDistance > 0) sink.retract(retractDistance, s.retractionSpeed);
-      moveZ(pos, retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, zSpeed, sink);
+      const lift = step.liftTo;
+      moveZ(pos, lift !== undefined ? lift : retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, zSpeed, sink);
       for (let k = 0; k < step.points.length; k++) travelTo(pos, step.points[k].x, step.points[k].y, speed, sink);
-      moveZ(pos, layerZ, zSpeed, sink);
+      if (lift === undefined || si < steps.length - 1) moveZ(pos, layerZ, zSpeed, sink);
       if (retracting && primeDistance > 0) sink.prime(primeDistance, s.retractionSpeed);
       continue;
     }

@@ -58,6 +58,12 @@ export interface TravelStep {
   retract: boolean;
   /** Lift Z by this much during the travel, mm (0 = no hop). Only with retract. */
   zHop: number;
+  /**
+   * Travel at this Z instead (mm, absolute), coming down to the layer's Z only at the travel's end: the
+   * move from one object to the next in sequential printing, over the objects printed before. Absent on
+   * every other travel.
+   */
+  liftTo?: number;
   /** Travel speed, mm/s. */
   speed: number;
 }

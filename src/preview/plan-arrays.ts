@@ -119,7 +119,8 @@ export function planToArrays(plan: PrintPlan, layerSeconds?: readonly number[]):
     let move = 0;
     for (const step of layer.steps) {
       if (step.kind === 'travel') {
-        const z = layer.z + (step.retract ? step.zHop : 0);
+        // a travel on to the next object (sequential printing) goes at its lifted Z
+        const z = step.liftTo ?? layer.z + (step.retract ? step.zHop : 0);
         if (step.retract && at) {
           put(retracts, at.x, at.y, at.z, li);
           retractionMove.push(move);

@@ -272,6 +272,15 @@ export const SCHEMA = {
   labelObjects: enm(['auto', 'off', 'comments', 'firmware'] as const, 'auto', 'gcode', "Label each object's moves so a host or the firmware can cancel one mid-print: firmware = Klipper EXCLUDE_OBJECT_DEFINE/START/END, or M486 S/T (Marlin, RepRap) with the comments; comments = only `; printing object NAME` / `; stop printing object NAME` (OctoPrint Cancelobject); auto = firmware for Klipper, comments otherwise."),
   thumbnails: { ...str('', 'gcode', 'Preview images of the plate written into the G-code, as `WxH` or `WxH/FORMAT` (PNG, QOI or JPG) separated by commas, e.g. `32x32,300x300` or `16x16/QOI,313x173/QOI,380x285/PNG`. Empty = none.', 512, THUMBNAIL_LIST), example: '32x32,300x300' },
 
+  // ── sequential printing ──────────────────────────────────────────────────────
+  sequentialPrinting: when(
+    bool(false, 'gcode', "Print the objects one at a time, each to its full height before the next starts (PrusaSlicer's complete objects, Cura's one at a time): between objects the nozzle retracts, rises above everything printed so far, travels to the next object and comes down. Objects go in the order given, the tallest last when it is taller than extruderClearanceHeight. Refused before slicing when two objects' footprints are closer than extruderClearanceRadius, when an object other than the last is taller than extruderClearanceHeight, or with a raft; arranged models are spaced by extruderClearanceRadius. The skirt or brim is printed once, round every object, with the first object's first layer; layers are numbered on through the whole print, so Z goes down at each new object."),
+    null,
+    'several-models',
+  ),
+  extruderClearanceRadius: when(num(45, 0, 300, 'mm', 'gcode', "Sequential printing: radius round the nozzle that the print head (extruder, fan ducts) takes up and that must stay clear of the objects already printed; objects whose footprints come closer than this are refused (PrusaSlicer's extruder_clearance_radius)."), { sequentialPrinting: true }, 'several-models'),
+  extruderClearanceHeight: when(num(20, 0, 2000, 'mm', 'gcode', "Sequential printing: height from the nozzle tip to the lowest part of the gantry (the X axis rods), which passes over the objects already printed; every object but the last must be at most this tall (PrusaSlicer's extruder_clearance_height, Cura's gantry_height)."), { sequentialPrinting: true }, 'several-models'),
+
   // ── arc fitting ──────────────────────────────────────────────────────────────
   arcFitting: bool(false, 'gcode', 'Replace runs of short segments along curves by G2/G3 arcs (the firmware must support arcs: Marlin ARC_SUPPORT, Klipper [gcode_arcs], RepRapFirmware, Prusa and Bambu firmware).'),
   arcTolerance: when(num(0.01, 0.001, 0.2, 'mm', 'gcode', 'Largest distance between an arc and the points of the path it replaces (the middle of each of its segments may be twice as far).'), { arcFitting: true }),

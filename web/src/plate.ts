@@ -4,7 +4,7 @@
  * they stand. An object alone that the user has not moved stands where `strata slice` would put it, and
  * is sliced as read, so the G-code is the CLI's.
  */
-import { arrange, findSpot, footprintsOverlap, type Bed, type PlacedFootprint } from '../../src/mesh/arrange.js';
+import { ARRANGE_GAP_MM, arrange, findSpot, footprintsOverlap, type Bed, type PlacedFootprint } from '../../src/mesh/arrange.js';
 import { IDENTITY_LINEAR, axisRotation, linearBounds, mul3, placementAffine, rotationBetween, type Box, type Placement } from '../../src/mesh/placement.js';
 import type { Config } from '../../src/settings/resolve.js';
 import { mm1 } from './format.js';
@@ -44,10 +44,13 @@ export interface BedShape {
   originAtCenter: boolean;
   /** Whether a lone model is centred (the `center` setting). */
   centre: boolean;
+  /** Gap Arrange and new objects keep between objects, mm: the print head's clearance radius with sequential printing. */
+  gap: number;
 }
 
 export function bedShape(cfg: Config): BedShape {
-  return { width: cfg.buildPlateWidth, depth: cfg.buildPlateLength, height: cfg.buildVolumeHeight, originAtCenter: cfg.originAtCenter, centre: cfg.center };
+  const gap = cfg.sequentialPrinting ? Math.max(ARRANGE_GAP_MM, cfg.extruderClearanceRadius) : ARRANGE_GAP_MM;
+  return { width: cfg.buildPlateWidth, depth: cfg.buildPlateLength, height: cfg.buildVolumeHeight, originAtCenter: cfg.originAtCenter, centre: cfg.center, gap };
 }
 
 export function bedCentre(b: BedShape): [number, number] {
@@ -109,7 +112,7 @@ export class Plate {
     else if (this.items.length === 0) it.center = this.defaultCentre(it);
     else {
       const size = this.#footprint(it);
-      it.center = findSpot(size, this.items.map((o) => this.#footprint(o)), this.#bedRect()) ?? bedCentre(this.bed);
+      it.center = findSpot(size, this.items.map((o) => this.#footprint(o)), this.#bedRect(), this.bed.gap) ?? bedCentre(this.bed);
     }
     this.items.push(it);
     this.selected = it;
@@ -134,7 +137,7 @@ export class Plate {
       it.center = this.isUntransformed(it) ? this.defaultCentre(it) : bedCentre(this.bed);
       return;
     }
-    const centres = arrange(this.items.map((it) => this.#footprint(it)), this.#bedRect());
+    const centres = arrange(this.items.map((it) => this.#footprint(it)), this.#bedRect(), this.bed.gap);
     this.items.forEach((it, i) => (it.center = centres[i]));
   }
 

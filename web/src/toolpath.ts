@@ -180,7 +180,11 @@ export function coarseCopy(a: PreviewArrays, budget = COARSE_BUDGET): Coarse {
   for (let i = 0; i < n; i++) {
     for (let s = a.layerSegments[i]; s < a.layerSegments[i + 1]; s++) if (outside[a.segments[s * SEGMENT_STRIDE + 7]]) perLayer[i]++;
   }
-  const kept = (k: number, i: number) => i % k === k - 1 || i === n - 1;
+  // runs of rising layers: the whole print, or in sequential printing each object (Z goes down between them)
+  const runStart = new Uint32Array(n);
+  for (let i = 1; i < n; i++) runStart[i] = a.layerZ[i] < a.layerZ[i - 1] ? i : runStart[i - 1];
+  const runEnds = (i: number) => i === n - 1 || runStart[i + 1] === i + 1;
+  const kept = (k: number, i: number) => i % k === k - 1 || runEnds(i);
   let k = 1;
   for (;;) {
     let total = 0;
@@ -201,8 +205,8 @@ export function coarseCopy(a: PreviewArrays, budget = COARSE_BUDGET): Coarse {
     const o = source[r] * SEGMENT_STRIDE;
     data.set(a.segments.subarray(o, o + SEGMENT_STRIDE), r * SEGMENT_STRIDE);
     const li = a.segments[o + 8];
-    // down to the top of the layer below the group it stands for
-    const below = li - k >= 0 ? a.layerZ[li - k] : 0;
+    // down to the top of the layer below the group it stands for (the bed when the group starts its object)
+    const below = li - k >= runStart[li] ? a.layerZ[li - k] : 0;
     data[r * SEGMENT_STRIDE + 6] = Math.max(a.segments[o + 6], a.layerZ[li] - below);
   }
   return { data, source: Uint32Array.from(source), offsets, k };

@@ -384,6 +384,21 @@ export function mapCuraKeys(c: ImportContext): void {
   take('skirtDistance', ['skirt_gap']);
   take('brimWidth', ['brim_width']);
   take('raftMargin', ['raft_margin']);
+
+  // one at a time: Cura's gantry height as the clearance height; the print head's outline (with its fans,
+  // round the nozzle) as the radius of the circle round the nozzle that holds it
+  const sequence = str('print_sequence');
+  if (sequence !== undefined) {
+    const on = sequence === 'one_at_a_time' ? true : sequence === 'all_at_once' ? false : undefined;
+    c.set('sequentialPrinting', on, 'print_sequence', `print sequence "${sequence}" has no Strata equivalent (all_at_once, one_at_a_time)`);
+  }
+  take('extruderClearanceHeight', ['gantry_height']);
+  const head = str('machine_head_with_fans_polygon');
+  if (head !== undefined) {
+    const corners = [...head.matchAll(/\[\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\]/g)].map((m) => Math.hypot(Number(m[1]), Number(m[2])));
+    const reach = corners.length >= 3 && corners.every(Number.isFinite) ? round(Math.max(...corners), 2) : undefined;
+    c.set('extruderClearanceRadius', reach, 'machine_head_with_fans_polygon', 'not a list of [x, y] corners');
+  }
   take('raftAirGap', ['raft_airgap']);
 
   // support: Cura's overhang angle is measured from vertical, as Strata's; interface heights become layers

@@ -44,6 +44,11 @@
  *   scarf round the entire loop is reported: Strata's is `scarfLength` long.
  * - Fuzzy skin: `external` is the part's outside (`outer`), `all` holes too; OrcaSlicer's `allwalls` (inner
  *   walls as well) is taken as `all`, whose inner walls stay smooth.
+ * - Sequential printing: PrusaSlicer's and SuperSlicer's `complete_objects`, OrcaSlicer's `print_sequence`
+ *   (`by object`; `by layer` is off); the clearance radius as written; the gantry height from
+ *   `extruder_clearance_height`, or OrcaSlicer's `extruder_clearance_height_to_rod` (nozzle tip to the X
+ *   axis rods; its height to the lid limits the last object too, which Strata does not model, and is left
+ *   unread).
  */
 import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
 import type { Settings } from '../schema.js';
@@ -116,6 +121,7 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
   adhesion(c);
   support(c, flavor, nozzle, layerHeight);
   output(c);
+  sequential(c);
 }
 
 function machine(c: ImportContext, nozzle: number): void {
@@ -593,6 +599,20 @@ function output(c: ImportContext): void {
   } else if (exclude !== undefined) c.set('labelObjects', exclude ? 'firmware' : 'off', 'exclude_object');
   const m73 = c.getAny('remaining_times');
   if (m73) c.set('progressM73', bool(m73.value), m73.key, 'not 0 or 1');
+}
+
+function sequential(c: ImportContext): void {
+  const complete = c.getAny('complete_objects');
+  const sequence = c.getAny('print_sequence');
+  if (complete) c.set('sequentialPrinting', bool(complete.value), complete.key, 'not 0 or 1');
+  else if (sequence) {
+    const v = (first(sequence.value) ?? '').replace(/_/g, ' ');
+    c.set('sequentialPrinting', v === 'by object' ? true : v === 'by layer' ? false : undefined, sequence.key, `print sequence "${v}" has no Strata equivalent (by layer, by object)`);
+  }
+  const radius = c.getAny('extruder_clearance_radius');
+  if (radius) c.set('extruderClearanceRadius', num(radius.value), radius.key, 'not a length');
+  const height = c.getAny('extruder_clearance_height', 'extruder_clearance_height_to_rod');
+  if (height) c.set('extruderClearanceHeight', num(height.value), height.key, 'not a length');
 }
 
 const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = { rectilinear: 'lines', 'rectilinear-grid': 'grid', default: 'zigzag' };
