@@ -30,6 +30,9 @@ const S: EstimateSettings = {
   maxAccelerationE: null,
   travelAcceleration: null,
   retractAcceleration: null,
+  gcodeFlavor: 'marlin',
+  minimumCruiseRatio: 0.5,
+  nozzleDiameter: 0.4,
 };
 
 const pt = (xMm: number, yMm: number): Pt => ({ x: Math.round(xMm * 1000), y: Math.round(yMm * 1000) });

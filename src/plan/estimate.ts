@@ -2,7 +2,15 @@
  * Print time and filament estimate: a pass over the plan (through the same move expansion the G-code
  * writer uses), never over G-code text.
  *
- * Motion model, as firmware planners (Marlin, Klipper) do it:
+ * Klipper flavour: Klipper's own look-ahead planner (klipper-planner.ts), with the printer's limits as
+ * Klipper knows them (`klipperLimits`): one velocity and acceleration limit (Klipper has no per-axis limits
+ * and ignores M201/M203; travels accelerate like prints, as the one `M204 S` written sets both),
+ * square-corner velocity `cornerVelocity`, `minimumCruiseRatio`, max_z_velocity/max_z_accel
+ * (`maxSpeedZ`/`maxAccelerationZ`), max_extrude_only_velocity/accel (`maxSpeedE`/`maxAccelerationE`, else
+ * Klipper's defaults), and the extruder's instantaneous corner velocity (Klipper's default, 1 mm/s). Every
+ * move is one queue as in the firmware: Z moves and layer changes are junctions like any other.
+ *
+ * Marlin and RepRapFirmware flavours, a model of their planners:
  * - Consecutive XY moves form a chain; a retraction, a prime, a Z move or a layer end stops the head
  *   (speed 0) and ends the chain.
  * - Each segment has a nominal speed and a trapezoidal profile with the one `acceleration` of the settings.
@@ -26,6 +34,7 @@
  * flowRate) plus the extra prime after each retraction; weight from `filamentDensity` (g/cm³).
  */
 import { filamentArea, walkPlanSteps, type MoveSettings, type MoveSink } from './moves.js';
+import { extrudeOnlyRatio, KlipperPlanner, type KlipperLimits } from './klipper-planner.js';
 import type { Settings } from '../settings/schema.js';
 import type { PlanEstimate, PrintPlan } from './types.js';
 import { hypot } from '../geometry/types.js';
@@ -36,6 +45,9 @@ export type EstimateSettings = MoveSettings &
     Settings,
     | 'acceleration'
     | 'cornerVelocity'
+    | 'gcodeFlavor'
+    | 'minimumCruiseRatio'
+    | 'nozzleDiameter'
     | 'filamentDensity'
     | 'machineLimits'
     | 'maxSpeedX'
@@ -83,6 +95,119 @@ export function motionLimits(s: EstimateSettings): MotionLimits {
     maxAccelY: or(s.maxAccelerationY, Infinity),
     cornerVelocity: s.cornerVelocity,
   };
+}
+
+/** Klipper's [extruder] instantaneous_corner_velocity default, mm/s. */
+export const KLIPPER_EXTRUDER_CORNER_VELOCITY = 1;
+
+/**
+ * The limits Klipper plans with, from the settings: `maxSpeed` (or the slower of `maxSpeedX`/`maxSpeedY`,
+ * as written in SET_VELOCITY_LIMIT) as max_velocity, `acceleration` as max_accel; Z and extrude-only limits
+ * from the machine limits, else Klipper's defaults (max_velocity and max_accel; for the extruder those
+ * times 4 nozzle² / filament cross-section).
+ */
+export function klipperLimits(s: EstimateSettings): KlipperLimits {
+  const use = s.machineLimits !== 'ignore';
+  const or = (v: number | null, fallback: number) => (use && v !== null ? v : fallback);
+  const axes = [s.maxSpeedX, s.maxSpeedY].filter((v): v is number => v !== null);
+  const maxVelocity = use && axes.length ? Math.min(s.maxSpeed, ...axes) : s.maxSpeed;
+  const ratio = extrudeOnlyRatio(s.nozzleDiameter, s.filamentDiameter);
+  return {
+    maxVelocity,
+    maxAccel: s.acceleration,
+    minCruiseRatio: s.minimumCruiseRatio,
+    squareCornerVelocity: s.cornerVelocity,
+    maxZVelocity: or(s.maxSpeedZ, maxVelocity),
+    maxZAccel: or(s.maxAccelerationZ, s.acceleration),
+    maxExtrudeOnlyVelocity: or(s.maxSpeedE, maxVelocity * ratio),
+    maxExtrudeOnlyAccel: or(s.maxAccelerationE, s.acceleration * ratio),
+    instantCornerVelocity: KLIPPER_EXTRUDER_CORNER_VELOCITY,
+  };
+}
+
+/**
+ * The Klipper flavour's motion timer: the plan's moves, in mm, into Klipper's planner; each layer's moves
+ * timed into that layer. Arcs are split as Klipper's gcode_arcs does (⌊length / resolution⌋ segments).
+ */
+class KlipperTimer implements MoveSink {
+  readonly planner: KlipperPlanner;
+  /** Position: X, Y µm; Z mm (NaN until known). */
+  private px = 0;
+  private py = 0;
+  private pz = NaN;
+  private layers = 0;
+  filament = 0;
+
+  constructor(limits: KlipperLimits) {
+    this.planner = new KlipperPlanner(limits);
+  }
+
+  layerSeconds(): number[] {
+    this.planner.flush();
+    const out = this.planner.seconds.slice(0, this.layers);
+    while (out.length < this.layers) out.push(0);
+    for (let i = 0; i < out.length; i++) out[i] = out[i] || 0;
+    return out;
+  }
+
+  private xy(x: number, y: number, length: number, dz: number, filament: number, speed: number): void {
+    if (!(length > 0)) {
+      // from an unknown position: no time can be given
+      this.planner.flush();
+    } else this.planner.move((x - this.px) / 1000, (y - this.py) / 1000, dz, filament, speed);
+    this.px = x;
+    this.py = y;
+  }
+
+  layerStart(): void {
+    this.planner.tag = this.layers++;
+  }
+  layerEnd(): void {}
+  zMove(z: number, distance: number, speed: number): void {
+    if (distance > 0 && !Number.isNaN(this.pz)) this.planner.move(0, 0, z - this.pz, 0, speed);
+    this.pz = z;
+  }
+  travel(x: number, y: number, length: number, speed: number): void {
+    this.xy(x, y, length, 0, 0, speed);
+  }
+  extrudeStart(): void {}
+  extrude(x: number, y: number, length: number, filament: number, speed: number): void {
+    this.filament += filament;
+    this.xy(x, y, length, 0, filament, speed);
+  }
+  extrudeZ(x: number, y: number, z: number, length: number, filament: number, speed: number): void {
+    this.filament += filament;
+    const dz = Number.isNaN(this.pz) ? 0 : z - this.pz;
+    this.pz = z;
+    this.xy(x, y, length, dz, filament, speed);
+  }
+  arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void {
+    this.filament += filament;
+    const r = hypot(this.px - cx, this.py - cy);
+    const segments = Math.max(1, Math.floor(length / ARC_SEGMENT_MM));
+    if (!(r > 0) || segments === 1) {
+      this.xy(x, y, length, 0, filament, speed);
+      return;
+    }
+    const a0 = Math.atan2(this.py - cy, this.px - cx);
+    const step = ((clockwise ? -1 : 1) * (length * 1000)) / r / segments;
+    const e = filament / segments;
+    for (let k = 1; k < segments; k++) {
+      const a = a0 + step * k;
+      this.xy(cx + r * Math.cos(a), cy + r * Math.sin(a), 1, 0, e, speed);
+    }
+    this.xy(x, y, 1, 0, e, speed);
+  }
+  retract(filament: number, speed: number): void {
+    this.filament -= filament;
+    this.planner.move(0, 0, 0, -filament, speed);
+  }
+  prime(filament: number, speed: number): void {
+    this.filament += filament;
+    this.planner.move(0, 0, 0, filament, speed);
+  }
+  objectStart(): void {}
+  objectEnd(): void {}
 }
 
 /** √2 − 1: the junction-deviation factor that makes a 90° corner's speed equal the corner velocity. */
@@ -314,15 +439,26 @@ export function estimatePlan(plan: PrintPlan, s: EstimateSettings): PlanEstimate
 
 /** `estimatePlan` as steps: yields after each layer. */
 export function* estimatePlanSteps(plan: PrintPlan, s: EstimateSettings): Generator<void, PlanEstimate> {
-  const timer = new MotionTimer(motionLimits(s));
-  yield* walkPlanSteps(plan, s, timer);
+  let layerSeconds: number[];
+  let filament: number;
+  if (s.gcodeFlavor === 'klipper') {
+    const timer = new KlipperTimer(klipperLimits(s));
+    yield* walkPlanSteps(plan, s, timer);
+    layerSeconds = timer.layerSeconds();
+    filament = timer.filament;
+  } else {
+    const timer = new MotionTimer(motionLimits(s));
+    yield* walkPlanSteps(plan, s, timer);
+    layerSeconds = timer.layerSeconds;
+    filament = timer.filament;
+  }
   let printTimeSeconds = 0;
-  for (const t of timer.layerSeconds) printTimeSeconds += t;
-  const volumeCm3 = (timer.filament * filamentArea(s.filamentDiameter)) / 1000;
+  for (const t of layerSeconds) printTimeSeconds += t;
+  const volumeCm3 = (filament * filamentArea(s.filamentDiameter)) / 1000;
   return {
     printTimeSeconds,
-    filamentMm: timer.filament,
+    filamentMm: filament,
     filamentGrams: volumeCm3 * s.filamentDensity,
-    layerSeconds: timer.layerSeconds,
+    layerSeconds,
   };
 }

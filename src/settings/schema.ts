@@ -298,7 +298,8 @@ export const SCHEMA = {
   maxAccelerationX: optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the X axis (M201 X). Empty (null) = no limit.'),
   maxAccelerationY: optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the Y axis (M201 Y). Empty (null) = no limit.'),
   maxAccelerationZ: optNum(1, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the Z axis (M201 Z). Empty (null) = acceleration.'),
-  maxAccelerationE: when(optNum(10, 100000, 'mm/s²', 'machine', 'Firmware acceleration limit of the extruder (M201 E). Empty (null) = no limit.'), { machineLimits: 'write' }),
+  maxAccelerationE: when(optNum(10, 100000, 'mm/s²', 'machine', "Firmware acceleration limit of the extruder (M201 E; Klipper's max_extrude_only_accel, which limits retractions and primes). Empty (null) = no limit (Klipper: its default, acceleration × 4 nozzle² / filament cross-section)."), { machineLimits: ['write', 'estimate'] }),
+  minimumCruiseRatio: when(num(0.5, 0, 0.99, '×', 'machine', "Klipper's minimum_cruise_ratio ([printer] section, default 0.5): the time estimate of the Klipper flavour lowers the top speed of a short move so that at least this part of it is spent cruising. Older Klipper configs give max_accel_to_decel instead: the ratio is 1 − max_accel_to_decel / max_accel."), { gcodeFlavor: 'klipper' }),
   travelAcceleration: optNum(10, 100000, 'mm/s²', 'machine', 'Acceleration of travel moves (M204 T). Empty (null) = acceleration.'),
   retractAcceleration: optNum(10, 100000, 'mm/s²', 'machine', 'Acceleration of retractions and primes (M204 R). Empty (null) = maxAccelerationE, else acceleration.'),
 

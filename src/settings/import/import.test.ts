@@ -274,6 +274,8 @@ close_fan_the_first_x_layers = 1
 slow_down_layer_time = 8
 filament_flow_ratio = 0.98
 default_acceleration = 10000
+accel_to_decel_enable = 1
+accel_to_decel_factor = 35%
 machine_max_speed_x = 500
 machine_max_speed_y = 500
 enable_support = 0
@@ -303,6 +305,7 @@ test('OrcaSlicer .ini: its own key names, bed temperature of the chosen plate, K
   assert.equal(s.arcFitting, true);
   assert.equal(s.thumbnails, '96x96/PNG,300x300/PNG');
   assert.deepEqual([s.fanSpeed, s.firstLayerFanSpeed, s.minLayerTime, s.flowRate, s.acceleration, s.maxSpeed], [100, 0, 8, 98, 10000, 500]);
+  assert.equal(s.minimumCruiseRatio, 0.65, 'ACCEL_TO_DECEL at 35 % of the acceleration: minimum_cruise_ratio 0.65');
   assert.equal(s.ironingEnabled, false, 'no ironing');
   assert.equal(p.settings.supportEnabled, false);
   assert.ok(!p.unused.includes('hot_plate_temp') || true);

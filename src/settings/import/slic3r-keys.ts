@@ -195,6 +195,15 @@ function limits(c: ImportContext): void {
     const map: Record<string, Settings['machineLimits']> = { emit_to_gcode: 'write', time_estimate_only: 'estimate', ignore: 'ignore' };
     c.set('machineLimits', v === undefined ? undefined : map[v], usage.key, 'not emit_to_gcode, time_estimate_only or ignore');
   }
+  // OrcaSlicer's Klipper "accel to decel" (SET_VELOCITY_LIMIT ACCEL_TO_DECEL = acceleration × factor):
+  // Klipper's minimum_cruise_ratio is 1 − factor
+  const a2d = c.getAny('accel_to_decel_enable');
+  const factor = c.getAny('accel_to_decel_factor');
+  if (a2d && bool(a2d.value) && factor) {
+    const f = numOrPercent(first(factor.value));
+    const ratio = f ? 1 - (f.percent ? f.value / 100 : f.value) : undefined;
+    c.set('minimumCruiseRatio', ratio !== undefined && ratio >= 0 && ratio <= 0.99 ? Math.round(ratio * 1000) / 1000 : undefined, factor.key, 'not a factor between 1 % and 100 %');
+  }
   const emit = c.getAny('emit_machine_limits_to_gcode');
   if (emit) c.set('machineLimits', bool(emit.value) ? 'write' : 'estimate', emit.key);
   // print acceleration: the profile's default, else the firmware's extruding limit
