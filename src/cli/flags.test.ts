@@ -86,6 +86,8 @@ const NEEDS = {
   'color-change': { args: ['--color-change-at', '5'], models: [MODEL] },
   pause: { args: ['--pause-at', '5'], models: [MODEL] },
   'template-placeholder': { args: ['--start-gcode', 'G28\nM117 {filamentType}'], models: [MODEL] },
+  // a fan below its maximum, raised for layers shorter than a minute
+  'fan-by-layer-time': { args: ['--fan-speed', '40', '--fan-below-layer-time', '60'], models: [MODEL] },
 } as const satisfies Record<SettingNeed, { args: readonly string[]; models: readonly string[] }>;
 
 const flagValue = (v: unknown) => (typeof v === 'string' ? v : JSON.stringify(v));

@@ -32,7 +32,8 @@ export type SettingNeed =
   | 'several-tops'
   | 'color-change'
   | 'pause'
-  | 'template-placeholder';
+  | 'template-placeholder'
+  | 'fan-by-layer-time';
 
 /** A value `onlyWith` asks another setting for, or a list of values any of which will do. */
 export type OnlyWithValue = string | number | boolean | readonly string[];
@@ -256,8 +257,8 @@ export const SCHEMA = {
   minPrintSpeed: num(10, 1, 1000, 'mm/s', 'cooling', 'Never slow down below this for minimum layer time.'),
   fanOffLayers: int(1, 0, 1000, 'count', 'cooling', 'The first layers of each object printed with firstLayerFanSpeed (0 = none; the first layer has its own fan only when this is at least 1).'),
   fanFullLayer: int(0, 0, 1000, 'count', 'cooling', 'The fan rises evenly from firstLayerFanSpeed after the fanOffLayers to its full speed at this layer (counted from 0); 0 or not above fanOffLayers = full at once.'),
-  fanBelowLayerTime: num(0, 0, 600, 's', 'cooling', 'A layer shorter than this runs the fan above fanSpeed, up to maxFanSpeed for a layer at or below minLayerTime (0 = off).'),
-  maxFanSpeed: num(100, 0, 100, '%', 'cooling', 'The fan for the shortest layers (fanBelowLayerTime).'),
+  fanBelowLayerTime: when(num(0, 0, 600, 's', 'cooling', 'A layer shorter than this runs the fan above fanSpeed, up to maxFanSpeed for a layer at or below minLayerTime (0 = off).'), null, 'fan-by-layer-time'),
+  maxFanSpeed: when(num(100, 0, 100, '%', 'cooling', 'The fan for the shortest layers (fanBelowLayerTime).'), null, 'fan-by-layer-time'),
   nozzleTemperature: num(200, 0, 450, '°C', 'cooling', 'Nozzle temperature from the second layer on.'),
   firstLayerNozzleTemperature: optNum(0, 450, '°C', 'cooling', 'Nozzle temperature on the first layer. Empty (null) = nozzleTemperature.'),
   bedTemperature: num(60, 0, 150, '°C', 'cooling', 'Bed temperature from the second layer on.'),
