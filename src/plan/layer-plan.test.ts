@@ -141,3 +141,25 @@ test('retractOnLayerChange off: a layer that starts over the island it is above 
   const outside = first(off, { x: 50_000, y: 50_000 });
   assert.ok(outside?.kind === 'travel' && outside.retract, 'from outside it: the usual retraction');
 });
+
+test('infill, skin lines and skin gap loops of an island print as one nearest-first tour', () => {
+  const g: TestGroup = {
+    ...island,
+    entries: [
+      { role: 'infill', closed: false, paths: [[{ x: 1_000, y: 1_000 }, { x: 5_000, y: 1_000 }]], width: 0.4 },
+      { role: 'skin', closed: false, paths: [[{ x: 15_000, y: 15_000 }, { x: 18_000, y: 15_000 }]], width: 0.4 },
+      { role: 'skin-gap', closed: true, paths: [sq(5_500, 1_200, 300)], width: 0.4 },
+    ],
+  };
+  const plan = planLayer(layer([g]), cfg, { at: { x: 1_000, y: 1_000 } });
+  const ex = plan.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude');
+  // the gap loop beside the infill's end before the far skin line (by role alone it would come last)
+  assert.deepEqual(ex.map((s) => [s.feature, s.closed]), [['FILL', false], ['SKIN', true], ['SKIN', false]]);
+  let travel = 0;
+  let at = { x: 1_000, y: 1_000 };
+  for (const s of plan.steps) {
+    if (s.kind === 'travel') for (const p of s.points) (travel += Math.hypot(p.x - at.x, p.y - at.y)), (at = p);
+    else at = s.closed ? s.points[0] : s.points[s.points.length - 1];
+  }
+  assert.ok(travel < 20_000, `travel ${travel} µm`);
+});

@@ -350,12 +350,21 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
     ctx.comb = group;
     combed = true;
   }
-  for (const entry of entries) {
+  for (let k = 0; k < entries.length; k++) {
+    const entry = entries[k];
     // walls: once the first wall is printed the nozzle is inside the island, and later travels comb;
     // any other entry starts combed
     if (!combed && entry.role !== 'wall') {
       ctx.comb = group;
       combed = true;
+    }
+    // skin lines and the skin's gap fill loops beside them: one tour, each gap loop printed as the nozzle passes
+    let mixed = k;
+    while (mixed + 1 < entries.length && mixable(entries[mixed + 1])) mixed++;
+    if (mixable(entry) && mixed > k) {
+      printMixed(ctx, entries.slice(k, mixed + 1));
+      k = mixed;
+      continue;
     }
     const style = layerStyle(ctx, entry.style);
     if (entry.ordered) printInOrder(ctx, entry, style);
@@ -369,6 +378,46 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
   ctx.object = undefined;
 }
 
+/** Skin lines in no fixed order, and the skin's gap fill loops (entered anywhere): printed as one tour. */
+function mixable(entry: PathEntry): boolean {
+  return !entry.ordered && (((entry.role === 'skin' || entry.role === 'infill') && !entry.closed) || (entry.role === 'skin-gap' && entry.closed && entry.style.seam === 'nearest'));
+}
+
+/** Vertices of a loop entered anywhere that the ordering considers (evenly spread; all of a small loop). */
+const LOOP_ENTRIES = 16;
+
+/**
+ * Several entries' paths nearest-first as one tour, each with its own entry's style: lines from whichever
+ * end is nearer, loops from their vertex nearest the nozzle.
+ */
+function printMixed(ctx: Ctx, entries: readonly PathEntry[]): void {
+  const items: Array<[number, number]> = [];
+  for (let e = 0; e < entries.length; e++) for (let i = 0; i < entries[e].paths.length; i++) items.push([e, i]);
+  const candidates = (n: number): readonly Pt[] => {
+    const [e, i] = items[n];
+    const path = entries[e].paths[i];
+    if (!entries[e].closed) return [path[0], path[path.length - 1]];
+    return spreadPoints(path, LOOP_ENTRIES);
+  };
+  const order = orderNearest(
+    items.length,
+    candidates,
+    (n, c) => {
+      const [e, i] = items[n];
+      const path = entries[e].paths[i];
+      return entries[e].closed ? candidates(n)[c] : c === 0 ? path[path.length - 1] : path[0];
+    },
+    ctx.at,
+  );
+  for (const [n, c] of order) {
+    const [e, i] = items[n];
+    const entry = entries[e];
+    const style = layerStyle(ctx, entry.style);
+    if (entry.closed) printLoop(ctx, entry, style, i, chooseSeam(entry.paths[i], 'nearest', ctx.at, 0, 0, 0));
+    else extrudeFlagged(ctx, style, lineRun(entry, i, c !== 0));
+  }
+}
+
 /** Whether a point is inside an area (its outer ring and none of its holes). */
 function inArea(p: Pt, area: ExPolygon): boolean {
   if (!pointInRing(p, area.outer)) return false;
@@ -376,7 +425,29 @@ function inArea(p: Pt, area: ExPolygon): boolean {
   return true;
 }
 
-/** Where a group is entered, for ordering groups nearest-first. */
+/**
+ * Where a group is entered, for ordering groups nearest-first: an island at its outer wall's seam (the
+ * walls' seams lie together with an aligned or rear seam), or, where seams go to the nearest point, at
+ * any of some of the outer wall's vertices.
+ */
+function groupEntries(group: PathGroup, cfg: Config, layer: number): readonly Pt[] {
+  const outer = group.boundary?.[0];
+  if (outer && outer.length >= 3) {
+    if (cfg.seamPosition === 'aligned' || cfg.seamPosition === 'rear') return [outer[chooseSeam(outer, cfg.seamPosition, outer[0], cfg.randomSeed, layer, 0)]];
+    if (cfg.seamPosition === 'nearest') return spreadPoints(outer, LOOP_ENTRIES);
+  }
+  return [groupEntry(group)];
+}
+
+/** Up to `most` of a loop's vertices, evenly spread (all of a small loop). */
+function spreadPoints(loop: readonly Pt[], most: number): readonly Pt[] {
+  if (loop.length <= most) return loop;
+  const out: Pt[] = [];
+  for (let k = 0; k < most; k++) out.push(loop[Math.floor((k * loop.length) / most)]);
+  return out;
+}
+
+/** Where a group is entered when nothing better is known: the first point of its outer wall, area or paths. */
 function groupEntry(group: PathGroup): Pt {
   const outer = group.boundary?.[0];
   if (outer && outer.length) return outer[0];
@@ -458,7 +529,8 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
     for (const kind of GROUP_ORDER) {
       const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
       // travels into another group are not combed (printGroup starts each group without a comb area)
-      const order = orderNearest(groups.length, (i) => [groupEntry(groups[i])], (i) => groupEntry(groups[i]), ctx.at);
+      const entries = groups.map((g) => groupEntries(g, cfg, position));
+      const order = orderNearest(groups.length, (i) => entries[i], (i, k) => entries[i][k], ctx.at);
       for (let k = 0; k < order.length; k++) printGroup(ctx, groups[order[k][0]]);
     }
   }

@@ -1,0 +1,44 @@
+/**
+ * The printing modes through Klipper's own host software (klippy's batch mode, klipper.ts): a spiral vase, a
+ * colour change and a pause (PAUSE, printer.cfg's [pause_resume]), and a plate printed one object at a time
+ * are each accepted with no command unknown and no move refused, and Strata's estimate stays within 2 % of
+ * Klipper's planner on them. Skips without klippy, except under CI (.ci/klipper.sh installs it).
+ */
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { Slicer } from '../api/slicer.js';
+import type { SliceOptions } from '../settings/schema.js';
+import { KLIPPER_CONFIG_SETTINGS, runKlipper, skipWithoutKlipper } from './klipper.js';
+import { box } from './test-meshes.js';
+
+const skip = skipWithoutKlipper();
+const PRINTER: SliceOptions = { ...KLIPPER_CONFIG_SETTINGS, maxSpeedE: null, maxAccelerationE: null, threads: 1 };
+
+async function accepted(name: string, input: unknown, options: SliceOptions): Promise<string> {
+  const { gcode, stats } = new Slicer({ ...PRINTER, ...options }).sliceSync(input);
+  const klipper = await runKlipper(gcode, { timeoutMs: 60_000 });
+  assert.deepEqual(klipper.errors, [], `${name}: Klipper reported errors`);
+  assert.ok(klipper.accepted, `${name}: Klipper did not accept the file:\n${klipper.log.slice(-3000)}`);
+  const ratio = stats.printTimeSeconds / klipper.printTimeSeconds;
+  assert.ok(Math.abs(ratio - 1) <= 0.02, `${name}: Strata ${stats.printTimeSeconds.toFixed(1)} s, Klipper ${klipper.printTimeSeconds.toFixed(1)} s`);
+  return gcode;
+}
+
+test('Klipper batch mode accepts a spiral vase (Z rising along every turn)', { skip, timeout: 120_000 }, async () => {
+  const gcode = await accepted('vase', box(0, 0, 0, 20, 20, 8), { spiralVase: true });
+  // moves with Z on them after the bottom layers: the spiral
+  assert.ok((gcode.match(/^G1 X[\d.]+ Y[\d.]+ Z[\d.]+ E/gm) ?? []).length > 500, 'the turns rise as they go');
+});
+
+test('Klipper batch mode accepts a colour change and a pause (PAUSE)', { skip, timeout: 120_000 }, async () => {
+  const gcode = await accepted('colour change', box(0, 0, 0, 15, 15, 6), { colorChangeAt: '2', pauseAt: '4' });
+  assert.equal((gcode.match(/^PAUSE\b/gm) ?? []).length, 2, 'one PAUSE for the colour change, one for the pause');
+});
+
+test('Klipper batch mode accepts a plate printed one object at a time', { skip, timeout: 120_000 }, async () => {
+  const objects = [{ name: 'a', mesh: box(0, 0, 0, 10, 10, 5) }, { name: 'b', mesh: box(0, 0, 0, 8, 8, 4) }];
+  const gcode = await accepted('sequential', objects, { sequentialPrinting: true });
+  // Z goes back down once, to the second object's first layer
+  const zs = [...gcode.matchAll(/^;Z:([\d.]+)$/gm)].map((m) => Number(m[1]));
+  assert.equal(zs.filter((z, i) => i > 0 && z < zs[i - 1]).length, 1);
+});
