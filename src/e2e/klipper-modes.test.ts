@@ -26,8 +26,8 @@ async function accepted(name: string, input: unknown, options: SliceOptions): Pr
 
 test('Klipper batch mode accepts a spiral vase (Z rising along every turn)', { skip, timeout: 120_000 }, async () => {
   const gcode = await accepted('vase', box(0, 0, 0, 20, 20, 8), { spiralVase: true });
-  // moves with Z on them after the bottom layers: the spiral
-  assert.ok((gcode.match(/^G1 X[\d.]+ Y[\d.]+ Z[\d.]+ E/gm) ?? []).length > 500, 'the turns rise as they go');
+  // extrusions that move Z too: the spiral's turns, four sides each, over some 35 layers
+  assert.ok((gcode.match(/^G1 [^;\n]*Z[\d.]+ E/gm) ?? []).length > 100, 'the turns rise as they go');
 });
 
 test('Klipper batch mode accepts a colour change and a pause (PAUSE)', { skip, timeout: 120_000 }, async () => {
