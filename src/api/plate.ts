@@ -27,11 +27,11 @@ export function plateOf(objects: readonly MeshObject[], options: SliceOptions, c
     for (const [k, v] of Object.entries(mapped.settings)) {
       const scope = SETTING_SCOPE[k as SettingKey];
       // another slicer's project may vary what Strata keeps per print (or per object): left to the print
-      if (src.format !== 'strata' && (scope === 'print' || (scope === 'object' && use !== 'object'))) {
-        // (the same value as the print's changes nothing: PrusaSlicer repeats the layer height in every range)
-        if (v !== cfg[k as SettingKey]) outOfScope.add(k);
-      }
-      else settings[k] = v;
+      // (the same value as the print's changes nothing: PrusaSlicer repeats the layer height in every range)
+      const same = v === cfg[k as SettingKey];
+      if (src.format !== 'strata' && (scope === 'print' || (scope === 'layer' && use !== 'layer range') || (scope === 'object' && use !== 'object'))) {
+        if (!same) outOfScope.add(k);
+      } else if (!(src.format !== 'strata' && scope === 'layer' && same)) settings[k] = v;
     }
     return Object.keys(settings).length ? settings : undefined;
   };

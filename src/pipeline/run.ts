@@ -22,7 +22,8 @@ import { objectsSupportPass } from '../regions/support/index.js';
 import type { LayerRegions } from '../regions/types.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { Config } from '../settings/resolve.js';
-import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
+import { prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
+import { planPlateLayers } from '../slice/z-plan.js';
 import type { LayerZ } from '../slice/types.js';
 import { renderThumbnails } from '../thumbnail/index.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
@@ -205,7 +206,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const p = o.mesh.positions;
     for (let i = 2; i < p.length; i += 3) if (p[i] > height) height = p[i];
   }
-  const layers: LayerZ[] = planLayers(height, cfg.firstLayerHeight, cfg.layerHeight);
+  const layers: LayerZ[] = planPlateLayers(height, cfg, objects.map((o) => o.mesh), plate.heightRanges);
   if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
   const infillParams = objects.map((o, k) => infillParamsFor(setup.configs[setup.objects[k].config], o));
   // N threads: the calling thread and N-1 workers, or for a custom infill N workers and the calling thread

@@ -62,3 +62,34 @@ export function planLayers(modelHeight: number, firstLayerHeight: number, layerH
   if (toHalfUm(last.sliceZ) >= topHalf) last.sliceZ = (topHalf - 1) / HALF_UM_PER_MM;
   return layers;
 }
+
+/**
+ * Plan layers of varying height, on the same grid and with the same last-layer rule as `planLayers`:
+ * layer 0 is `firstLayerHeight` thick; each next one is `nextUm(bottomUm, prevUm, index)` µm thick (a whole
+ * number ≥ 1), asked with the Z of its bottom (the top of the layer before) and that layer's height, both µm.
+ * Z is summed in whole µm, so no drift: layer i's z is exactly the sum of the heights up to it.
+ */
+export function planVaryingLayers(modelHeight: number, firstLayerHeight: number, nextUm: (bottomUm: number, prevUm: number, index: number) => number): LayerZ[] {
+  if (!Number.isFinite(firstLayerHeight)) throw new StrataError('BAD_SETTING', 'Layer heights must be finite numbers.');
+  const firstUm = Math.round(firstLayerHeight * 1000);
+  if (firstUm < 1) throw new StrataError('BAD_SETTING', `Layer heights must be at least 0.001 mm (got ${firstLayerHeight}).`);
+  if (!Number.isFinite(modelHeight)) throw new StrataError('BAD_MESH', 'Model height is not a finite number.');
+  const topHalf = toHalfUm(modelHeight);
+  if (topHalf < firstUm) return [];
+  const layers: LayerZ[] = [{ index: 0, z: firstUm / 1000, height: firstUm / 1000, sliceZ: firstUm / 2000 }];
+  let zUm = firstUm, prevUm = firstUm;
+  for (;;) {
+    const i = layers.length;
+    const hUm = nextUm(zUm, prevUm, i);
+    if (!Number.isInteger(hUm) || hUm < 1) throw new Error(`layer ${i} was planned ${hUm} µm thick`);
+    // its slice plane 2·(z + h) − h in half-µm must not lie above the top
+    if (2 * zUm + hUm > topHalf) break;
+    if (i >= MAX_LAYERS) throw new StrataError('LIMIT_EXCEEDED', `The model needs more than ${MAX_LAYERS} layers.`);
+    zUm += hUm;
+    layers.push({ index: i, z: zUm / 1000, height: hUm / 1000, sliceZ: (2 * zUm - hUm) / 2000 });
+    prevUm = hUm;
+  }
+  const last = layers[layers.length - 1];
+  if (toHalfUm(last.sliceZ) >= topHalf) last.sliceZ = (topHalf - 1) / HALF_UM_PER_MM;
+  return layers;
+}

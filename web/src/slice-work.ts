@@ -84,7 +84,7 @@ function projectOf(fileName: string, objects: readonly MeshObject[], print: Sett
     for (const r of mapped.rejected) warnings.push(`object settings: ${r.key} = ${r.value} not taken: ${r.reason}`);
     for (const [k, v] of Object.entries(mapped.settings)) {
       const scope = SETTING_SCOPE[k as SettingKey];
-      if (scope === 'print' || (scope === 'object' && use !== 'object')) outOfScope.add(k);
+      if (scope === 'print' || (scope === 'layer' && use !== 'layer range') || (scope === 'object' && use !== 'object')) outOfScope.add(k);
       else out[k as SettingKey] = v;
     }
     return out;
