@@ -16,13 +16,13 @@ import { estimatePlanSteps } from '../plan/estimate.js';
 import { planLayer } from '../plan/layer-plan.js';
 import { runPlanPasses } from '../plan/passes.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
-import { evenLayers, layerSparse, layerTopSkin } from '../regions/layer-regions.js';
+import { layerSparse, layerTopSkin } from '../regions/layer-regions.js';
 import { raftUnder } from '../regions/raft.js';
 import { objectsSupportPass } from '../regions/support/index.js';
 import type { LayerRegions } from '../regions/types.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { Config } from '../settings/resolve.js';
-import { prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
+import { evenLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
 import { planPlateLayers } from '../slice/z-plan.js';
 import type { LayerZ } from '../slice/types.js';
 import { renderThumbnails } from '../thumbnail/index.js';
@@ -219,7 +219,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
   }
   const layers: LayerZ[] = planPlateLayers(height, cfg, objects.map((o) => o.mesh), plate.heightRanges);
   if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
-  const uneven = !evenLayers(layers);
+  const uneven = !evenLayers(layers, cfg.layerHeight);
   const infillParams = objects.map((o, k) => infillParamsFor(setup.configs[setup.objects[k].config], o));
   // N threads: the calling thread and N-1 workers, or for a custom infill N workers and the calling thread
   // only planning (see customInWorkers; split in two ranges at least, so progress is seen)

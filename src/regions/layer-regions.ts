@@ -8,7 +8,7 @@ import { area, difference, intersection, offset, union } from '../geometry/clip.
 import { StrataError } from '../errors.js';
 import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
-import { SectionStream, toHalfUm, type PreparedMesh } from '../slice/index.js';
+import { evenLayers, SectionStream, toHalfUm, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { bridgeOf } from './bridge-angle.js';
 import { ironingArea, type IroningIsland } from './ironing-area.js';
@@ -19,12 +19,6 @@ import { allSkin, CoverWindows, skinAreas, skinLayerCounts } from './skin-areas.
 import { rangeAt, type ObjectSetup, type PrintSetup } from './objects.js';
 import type { IslandRegions, LayerRegions, RegionFill } from './types.js';
 import { computeWalls } from './wall-generator.js';
-
-/** Whether every layer after the first is as thick as the second (an even plan: skin counts are the config's). */
-export function evenLayers(layers: readonly LayerZ[]): boolean {
-  for (let i = 2; i < layers.length; i++) if (layers[i].height !== layers[1].height) return false;
-  return true;
-}
 
 export function lineWidthUm(cfg: Config, layerIndex: number): number {
   return Math.round((layerIndex === 0 ? cfg.firstLayerLineWidthMm : cfg.lineWidthMm) * UM_PER_MM);
@@ -90,7 +84,7 @@ export class RegionsRun {
     const n = layers.length;
     const objectCfgs = setup.objects.map((o) => setup.configs[o.config]);
     // skin counts its layers by their heights when they are uneven (adaptive, a layer range's own height)
-    const heights = evenLayers(layers) ? null : Int32Array.from(layers, (l) => Math.round(l.height * 1000));
+    const heights = evenLayers(layers, cfg.layerHeight) ? null : Int32Array.from(layers, (l) => Math.round(l.height * 1000));
     const counts = objectCfgs.map((c) => {
       if (!heights) return { top: null, bottom: null, maxTop: c.topLayers, maxBottom: c.bottomLayers };
       const top = skinLayerCounts(heights, c.topSkinThickness ?? c.shellSkinThickness, 1);

@@ -93,3 +93,13 @@ export function planVaryingLayers(modelHeight: number, firstLayerHeight: number,
   if (toHalfUm(last.sliceZ) >= topHalf) last.sliceZ = (topHalf - 1) / HALF_UM_PER_MM;
   return layers;
 }
+
+/**
+ * Whether every layer after the first is `layerHeight` thick (in whole µm, as planned): an even plan, whose
+ * skin and support gap counts are the config's.
+ */
+export function evenLayers(layers: readonly LayerZ[], layerHeight: number): boolean {
+  const um = Math.round(layerHeight * 1000);
+  for (let i = 1; i < layers.length; i++) if (Math.round(layers[i].height * 1000) !== um) return false;
+  return true;
+}

@@ -9,6 +9,7 @@ import { UM_PER_MM, type Bounds, type ExPolygon } from '../../geometry/types.js'
 import type { Config } from '../../settings/resolve.js';
 import type { LayerRegions, SupportAreas } from '../types.js';
 import { sectionOf } from '../types.js';
+import { evenLayers } from '../../slice/layers.js';
 import { AreaIndex } from '../../geometry/area-index.js';
 
 /** Under an overhang, support may come this close to the part, in support line widths ("Z overrides XY"). */
@@ -43,9 +44,7 @@ export class ModelLayers {
   constructor(layers: readonly LayerRegions[], cfg: Config) {
     this.layers = layers;
     this.cfg = cfg;
-    let even = true;
-    for (let i = 2; i < layers.length && even; i++) even = layers[i].height === layers[1].height;
-    if (even) {
+    if (evenLayers(layers, cfg.layerHeight)) {
       this.#gaps = null;
       this.maxTopGap = cfg.supportTopGapLayers;
       return;
