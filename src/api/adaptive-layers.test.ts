@@ -8,6 +8,9 @@ import assert from 'node:assert/strict';
 import { Slicer } from './slicer.js';
 import { StrataError } from '../errors.js';
 import { parseGcode } from '../analysis/gcode-parse.js';
+import { analyzePrint } from '../analysis/checks.js';
+import { analysisProfile } from '../e2e/models.js';
+import { prepareModel } from './prepare-model.js';
 import { sphere } from '../e2e/curved-shapes.js';
 import { box } from '../slice/test-helpers.js';
 
@@ -127,4 +130,29 @@ test('adaptive layer height settings that make no sense are one clear error', ()
   assert.throws(() => new Slicer().addObject(box(0, 0, 0, 5, 5, 5), { name: 'b', settings: { layerHeight: 0.1 } }), /layerHeight is the same for every object at one height/);
   // off, the limits are not checked (they do nothing)
   assert.doesNotThrow(() => new Slicer({ minLayerHeight: 0.25, layerHeight: 0.2 }));
+});
+
+test('the analyser judges adaptive G-code by its layers\' thickness: none off the range or missing; a layer taken out is found', () => {
+  const ball = sphere(8, 64, 32);
+  const slicer = new Slicer({ threads: 1, adaptiveLayerHeight: true, minLayerHeight: 0.08, maxLayerHeight: 0.3 });
+  const { gcode } = slicer.sliceSync(ball);
+  const cfg = slicer.config;
+  const placed = prepareModel(ball, cfg).mesh;
+  const options = { ...analysisProfile(cfg), sampleEvery: 8, supportChecks: false, layerHeightRange: [0.08, 0.3] as [number, number] };
+  const report = analyzePrint(placed, gcode, options);
+  assert.equal(report.summary.zMismatchCount, 0);
+  assert.equal(report.summary.missingLayerCount, 0);
+  assert.equal(report.summary.expectedLayerCount, report.summary.layerCount);
+  assert.ok(report.summary.walls.coverage! > 0.97, `walls ${report.summary.walls.coverage}`);
+  assert.ok(report.summary.skin.top.coverage! > 0.9 && report.summary.skin.bottom.coverage! > 0.9);
+  // judged against the even grid it is all off-grid
+  assert.ok(analyzePrint(placed, gcode, { ...options, layerHeightRange: undefined }).summary.zMismatchCount > 10);
+  // two neighbouring 0.3 mm layers at the equator taken out: a gap of 0.9 mm, two layers missing, the one above too thick
+  const parts = gcode.split(/(?=^;LAYER:)/m);
+  const equator = parts.findIndex((p) => /^;Z:8\.\d+$/m.test(p) && /^;HEIGHT:0\.3$/m.test(p));
+  assert.ok(equator > 0);
+  const broken = [...parts.slice(0, equator), ...parts.slice(equator + 2)].join('');
+  const bad = analyzePrint(placed, broken, options).summary;
+  assert.equal(bad.missingLayerCount, 2);
+  assert.equal(bad.zMismatchCount, 1);
 });
