@@ -156,3 +156,35 @@ test('the analyser judges adaptive G-code by its layers\' thickness: none off th
   assert.equal(bad.missingLayerCount, 2);
   assert.equal(bad.zMismatchCount, 1);
 });
+
+test("a layer height profile (PrusaSlicer's variable layer height) sets the layers' heights, from the library and a PrusaSlicer 3MF", async () => {
+  // 0.2 mm to 4 mm, down to 0.1 at 6 mm, 0.1 to 8 mm, up to 0.3 at 9 mm
+  const profile = [0, 0.2, 4, 0.2, 6, 0.1, 8, 0.1, 9, 0.3, 12, 0.3];
+  const heights = (gcode: string) => layersOf(gcode).map((l) => [Math.round(l.z * 1000), Math.round(l.height * 1000)]);
+  const check = (hz: number[][]) => {
+    for (const [z, h] of hz) {
+      const bottom = z - h;
+      if (bottom < 4000 && z <= 4000) assert.equal(h, 200, `${z}`);
+      else if (bottom >= 6000 && bottom < 8000) assert.equal(h, 100, `${z}`);
+      else if (bottom >= 9000) assert.equal(h, 300, `${z}`);
+      else assert.ok(h >= 100 && h <= 300);
+    }
+    let sum = 0;
+    for (const [z, h] of hz) assert.equal(z, (sum += h));
+  };
+  const lib = new Slicer({ threads: 1 }).addObject(box(0, 0, 0, 10, 10, 12), { layerHeightProfile: profile }).sliceSync().gcode;
+  check(heights(lib));
+  // the same in a PrusaSlicer project
+  const { strToU8, zipSync } = await import('fflate');
+  const v = [[0, 0, 0], [10, 0, 0], [0, 10, 0], [10, 10, 0], [0, 0, 12], [10, 0, 12], [0, 10, 12], [10, 10, 12]];
+  const faces = [[0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4], [2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5]];
+  const files: Record<string, string> = {
+    '_rels/.rels': '<?xml version="1.0" encoding="UTF-8"?><Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="rel0" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>',
+    '3D/3dmodel.model': `<?xml version="1.0" encoding="UTF-8"?><model unit="millimeter" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02"><resources><object id="1" type="model"><mesh><vertices>${v.map(([x, y, z]) => `<vertex x="${x}" y="${y}" z="${z}"/>`).join('')}</vertices><triangles>${faces.map(([a, b, c]) => `<triangle v1="${a}" v2="${b}" v3="${c}"/>`).join('')}</triangles></mesh></object></resources><build><item objectid="1" transform="1 0 0 0 1 0 0 0 1 100 100 0"/></build></model>`,
+    'Metadata/Slic3r_PE_model.config': '<?xml version="1.0" encoding="UTF-8"?><config><object id="1" instances_count="1"><metadata type="object" key="name" value="box"/><volume firstid="0" lastid="11"><metadata type="volume" key="volume_type" value="ModelPart"/></volume></object></config>',
+    'Metadata/Slic3r_PE_layer_heights_profile.txt': `object_id=1|${profile.map((x) => x.toFixed(6)).join(';')}\n`,
+  };
+  const bytes = zipSync(Object.fromEntries(Object.entries(files).map(([k, s]) => [k, strToU8(s)])));
+  const project = await new Slicer({ threads: 1 }).slice(bytes);
+  assert.deepEqual(heights(project.gcode), heights(lib));
+});

@@ -40,6 +40,7 @@ export function plateOf(objects: readonly MeshObject[], options: SliceOptions, c
     const settings = read(o.settings, 'object');
     if (settings) p.settings = settings;
     if (o.volumes?.length) p.volumes = o.volumes.map((v) => ({ kind: v.kind, name: v.name, mesh: v.mesh, settings: read(v.settings, 'modifier') }));
+    if (o.layerHeightProfile) p.layerHeightProfile = o.layerHeightProfile;
     if (o.layerRanges?.length) p.layerRanges = o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: read(r.settings, 'layer range') ?? {} }));
     return p;
   });

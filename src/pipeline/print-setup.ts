@@ -35,6 +35,8 @@ export interface PlacedObject {
   settings?: ScopedSettings;
   /** Settings of the layers whose Z lies in [fromZ, toZ), mm from the bed; a later range wins. */
   layerRanges?: ReadonlyArray<{ fromZ: number; toZ: number; settings: ScopedSettings }>;
+  /** Variable layer height: z0, h0, z1, h1, … mm (mesh/types.ts MeshObject). */
+  layerHeightProfile?: readonly number[];
 }
 
 /** The meshes the setup's indices point into, and the setup. */
@@ -47,6 +49,8 @@ export interface PlateSetup {
   warnings: string[];
   /** Z ranges whose layers have their own height (a layer range's layerHeight), for the plate's Z plan. */
   heightRanges: HeightRange[];
+  /** The layer height profile the plate's Z plan follows (the first object's that has one), or null. */
+  heightProfile: readonly number[] | null;
 }
 
 /** Most (layer ranges + 1) × (modifiers + 1) of one object, each a config to resolve. */
@@ -61,7 +65,7 @@ function boxesOverlap(a: Box, b: Box): boolean {
 
 /** Whether an object has nothing of its own beyond its settings (so merging it with a twin changes nothing). */
 function plain(o: PlacedObject): boolean {
-  return !o.volumes?.length && !o.layerRanges?.length;
+  return !o.volumes?.length && !o.layerRanges?.length && !o.layerHeightProfile;
 }
 
 /**
@@ -143,8 +147,12 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
     };
   });
   const heightRanges = layerHeightRanges(printed, setups, table.configs, print, warnings);
+  // one Z plan: the first object's layer height profile
+  const profiled = printed.filter((o) => o.layerHeightProfile);
+  if (profiled.length > 1) warnings.push(`objects ${profiled.map((o) => `"${o.name}"`).join(', ')} have layer height profiles: the plate has one Z plan, so the first one's ("${profiled[0].name}") holds for every object`);
+  const heightProfile = profiled[0]?.layerHeightProfile ?? null;
   const pairs = overlapPairs.map(([a, b]): [number, number] => [printedIndex.get(a)!, printedIndex.get(b)!]).filter(([a, b]) => a !== b);
-  return { setup: { configs: table.configs, objects: setups, overlapPairs: pairs }, meshes, objects: printed, warnings, heightRanges };
+  return { setup: { configs: table.configs, objects: setups, overlapPairs: pairs }, meshes, objects: printed, warnings, heightRanges, heightProfile };
 }
 
 /**

@@ -217,7 +217,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const p = o.mesh.positions;
     for (let i = 2; i < p.length; i += 3) if (p[i] > height) height = p[i];
   }
-  const layers: LayerZ[] = planPlateLayers(height, cfg, objects.map((o) => o.mesh), plate.heightRanges);
+  const layers: LayerZ[] = planPlateLayers(height, cfg, objects.map((o) => o.mesh), plate.heightRanges, plate.heightProfile);
   if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
   const uneven = !evenLayers(layers, cfg.layerHeight);
   const infillParams = objects.map((o, k) => infillParamsFor(setup.configs[setup.objects[k].config], o));
