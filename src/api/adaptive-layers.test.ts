@@ -11,6 +11,8 @@ import { parseGcode } from '../analysis/gcode-parse.js';
 import { analyzePrint } from '../analysis/checks.js';
 import { analysisProfile } from '../e2e/models.js';
 import { prepareModel } from './prepare-model.js';
+import { estimatePlan } from '../plan/estimate.js';
+import { planToArrays, SEGMENT_STRIDE } from '../preview/plan-arrays.js';
 import { sphere } from '../e2e/curved-shapes.js';
 import { box } from '../slice/test-helpers.js';
 
@@ -187,4 +189,25 @@ test("a layer height profile (PrusaSlicer's variable layer height) sets the laye
   const bytes = zipSync(Object.fromEntries(Object.entries(files).map(([k, s]) => [k, strToU8(s)])));
   const project = await new Slicer({ threads: 1 }).slice(bytes);
   assert.deepEqual(heights(project.gcode), heights(lib));
+});
+
+test('uneven layers downstream: the plan, the preview arrays and the estimate per layer carry each layer\'s own height; minimum layer time holds per layer', async () => {
+  const slicer = new Slicer({ threads: 1, minLayerTime: 8, minPrintSpeed: 1 });
+  slicer.addObject(box(0, 0, 0, 6, 6, 3), { layerRanges: [{ fromZ: 1, toZ: 2, settings: { layerHeight: 0.1 } }] });
+  const { plan } = await slicer.slicePlan();
+  const heights = plan.layers.map((l) => Math.round(l.height * 1000));
+  assert.deepEqual(heights, [...new Array(5).fill(200), ...new Array(10).fill(100), ...new Array(5).fill(200)]);
+  let sum = 0;
+  plan.layers.forEach((l) => assert.equal(Math.round(l.z * 1000), (sum += Math.round(l.height * 1000))));
+  const estimate = estimatePlan(plan, slicer.config);
+  assert.equal(estimate.layerSeconds.length, plan.layers.length);
+  // small layers are slowed to the minimum layer time, thin ones as thick ones
+  for (const [i, t] of estimate.layerSeconds.entries()) assert.ok(t >= 8 - 0.5, `layer ${i}: ${t} s`);
+  const arrays = planToArrays(plan, estimate.layerSeconds);
+  for (let li = 0; li < plan.layers.length; li++) {
+    assert.ok(Math.abs(arrays.layerZ[li] - plan.layers[li].z) < 1e-6);
+    for (let s = arrays.layerSegments[li]; s < arrays.layerSegments[li + 1]; s++) {
+      assert.ok(Math.abs(arrays.segments[s * SEGMENT_STRIDE + 6] - plan.layers[li].height) < 1e-6, `layer ${li}: segment height`);
+    }
+  }
 });
