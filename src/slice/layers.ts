@@ -10,6 +10,9 @@
  * cuts the top outline: a thin top feature that reaches a slice plane gets exactly one layer there —
  * never lost to float noise, never doubled. A feature ending below the last plane (less than half a
  * layer above the previous top) rounds away, as mid-height slicing always does.
+ *
+ * `planVaryingLayers` plans layers of varying height (adaptive layers, a layer range's own height) on the same
+ * grid with the same rule: each layer's Z is the sum of whole-µm heights, so an uneven plan is as exact.
  */
 import { StrataError } from '../errors.js';
 import type { LayerZ } from './types.js';

@@ -1,6 +1,7 @@
 /**
- * The plate's Z plan from the print's settings: even layers (planLayers), or varying ones where adaptive
- * layer height is on or a layer range sets its own layerHeight.
+ * The plate's Z plan from the print's settings: even layers (planLayers), or varying ones (planVaryingLayers)
+ * where adaptive layer height is on, an object has a layer height profile or a layer range sets its own
+ * layerHeight.
  *
  * A layer whose bottom lies in a range [fromZ, toZ) that sets a height is that thick (a later range wins,
  * as for every range setting); elsewhere it is a layer height profile's height (PrusaSlicer's variable layer
@@ -46,8 +47,8 @@ export function planPlateLayers(modelHeight: number, cfg: ZPlanSettings, meshes:
   const fromProfile = profile ? (bottomUm: number) => Math.min(maxUm, Math.max(minUm, Math.round(profileAt(profile, bottomUm / 1000) * 1000))) : null;
   const adaptive = fromProfile ?? (cfg.adaptiveLayerHeight
     ? adaptiveHeights(meshes, {
-        minUm: um(cfg.minLayerHeightMm),
-        maxUm: um(cfg.maxLayerHeightMm),
+        minUm,
+        maxUm,
         cuspUm: cuspFor(cfg.minLayerHeightMm, cfg.maxLayerHeightMm, cfg.adaptiveLayerQuality) * 1000,
         stepUm: Math.max(1, um(cfg.adaptiveLayerStep)),
       })
