@@ -23,7 +23,7 @@ import { placeOnBed, readStl } from './toy-slicer.js';
 const USAGE = `usage: analyze-cli MODEL.stl[.gz] PRINT.gcode [--layer-height 0.2] [--first-layer-height 0.2]
   [--line-width 0.4] [--filament-diameter 1.75] [--wall-thickness MM] [--top-thickness MM] [--bottom-thickness MM]
   [--center auto|none|X,Y] [--model-z-offset MM] [--sample-every N] [--overhang-angle DEG]
-  [--support-gap-layers N] [--support-span MM] [--no-support-checks] [--layers] [--json]`;
+  [--support-gap-layers N] [--support-span MM] [--no-support-checks] [--layer-height-range MIN,MAX] [--layers] [--json]`;
 
 /** Numeric options: flag → AnalyzeOptions key. */
 const NUMERIC: Record<string, keyof AnalyzeOptions> = {
@@ -76,6 +76,12 @@ export function parseArgs(argv: string[]): CliArgs {
         if (!m) throw new StrataError('BAD_SETTING', `--center must be auto, none or X,Y (got ${v})`);
         center = [Number(m[1]), Number(m[2])];
       }
+    } else if (a === '--layer-height-range') {
+      // variable layer height: each layer MIN to MAX mm thick
+      const v = value();
+      const m = /^([\d.]+),([\d.]+)$/.exec(v);
+      if (!m) throw new StrataError('BAD_SETTING', `--layer-height-range must be MIN,MAX in mm (got ${v})`);
+      options['layerHeightRange'] = [Number(m[1]), Number(m[2])];
     } else if (a === '--no-support-checks') options['supportChecks'] = false;
     else if (a === '--layers') layers = true;
     else if (a === '--json') json = true;

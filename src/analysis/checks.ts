@@ -148,12 +148,20 @@ function resolveOptions(o: AnalyzeOptions): ResolvedOptions {
     wallCoverageThreshold: positive('wallCoverageThreshold', o.wallCoverageThreshold ?? 0.95),
     shiftTolerance: positive('shiftTolerance', o.shiftTolerance ?? 0.1),
     modelZOffset: o.modelZOffset === undefined ? null : nonNegative('modelZOffset', o.modelZOffset),
+    layerHeightRange: o.layerHeightRange === undefined ? null : heightRange(o.layerHeightRange),
     supportChecks: o.supportChecks ?? true,
     overhangAngleDeg: angle(o.overhangAngleDeg ?? DEFAULT_OVERHANG_ANGLE_DEG),
     supportGapLayers: nonNegative('supportGapLayers', o.supportGapLayers ?? DEFAULT_SUPPORT_GAP_LAYERS),
     supportSpanMm: positive('supportSpanMm', o.supportSpanMm ?? DEFAULT_SUPPORT_SPAN_MM),
     overhangMinAreaMm2: nonNegative('overhangMinAreaMm2', o.overhangMinAreaMm2 ?? DEFAULT_OVERHANG_MIN_AREA_MM2),
   };
+}
+
+function heightRange(r: unknown): [number, number] {
+  if (!Array.isArray(r) || r.length !== 2 || !r.every((v) => typeof v === 'number' && v > 0 && Number.isFinite(v)) || r[0] > r[1]) {
+    throw new StrataError('BAD_SETTING', `analyzePrint: layerHeightRange must be [min, max] mm with 0 < min <= max (got ${JSON.stringify(r)})`);
+  }
+  return [r[0], r[1]];
 }
 
 function nonNegative(name: string, v: number | undefined): number {

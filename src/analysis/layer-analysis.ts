@@ -19,7 +19,7 @@ import type { Spans } from './spans.js';
 import { countInSpans, erodeSpans, isEmptySpans, spansArea, spansBoolean, spansBounds } from './spans.js';
 import { WeightedHistogram } from './stats.js';
 
-export type ResolvedOptions = Required<Omit<AnalyzeOptions, 'modelZOffset'>> & { modelZOffset: number | null };
+export type ResolvedOptions = Required<Omit<AnalyzeOptions, 'modelZOffset' | 'layerHeightRange'>> & { modelZOffset: number | null; layerHeightRange: [number, number] | null };
 
 /** Material farther than this outside the section is not rasterised (its distance is still measured), mm. */
 const RASTER_CLIP_MARGIN_MM = 5;

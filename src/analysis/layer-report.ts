@@ -42,6 +42,17 @@ export function travelLength(layer: GcodeLayer): number {
 
 export const orNull = (v: number) => (Number.isFinite(v) ? v : null);
 
+/**
+ * With variable layers: whether a part layer's thickness (from the last part layer; the first layer's from
+ * the bed, which must be firstLayerHeight) is within the range.
+ */
+export function thicknessOk(frame: LayerFrame, [min, max]: readonly [number, number], o: ResolvedOptions): boolean {
+  const t = frame.partThickness;
+  if (!Number.isFinite(t)) return true;
+  if (Math.abs(frame.modelZ - t) <= o.zTolerance) return Math.abs(t - o.firstLayerHeight) <= o.zTolerance;
+  return t >= min - o.zTolerance && t <= max + o.zTolerance;
+}
+
 /** Whether a layer's Z is judged against the layer grid: layers with part material, but not the first over a raft. */
 export function onZGrid(frame: LayerFrame): boolean {
   return frame.hasPart && !frame.firstOverRaft;
@@ -55,7 +66,9 @@ export function layerRole(frame: LayerFrame): LayerReport['role'] {
 export function layerReport(
   layer: GcodeLayer, m: LayerMeasure, o: ResolvedOptions, retractions: number, frame: LayerFrame,
 ): LayerReport {
-  const [ez] = gridZ(frame.modelZ, o);
+  // with variable layers a layer's Z is its own; its thickness is judged instead
+  const [ez] = o.layerHeightRange ? [frame.modelZ] : gridZ(frame.modelZ, o);
+  const zOk = !onZGrid(frame) || (o.layerHeightRange ? thicknessOk(frame, o.layerHeightRange, o) : Math.abs(frame.modelZ - ez) <= o.zTolerance);
   const shiftMm = m.shift ? Math.hypot(m.shift.dx, m.shift.dy) : null;
   return {
     index: layer.index,
@@ -64,7 +77,7 @@ export function layerReport(
     role: layerRole(frame),
     thickness: layer.thickness,
     expectedZ: ez,
-    zOk: !onZGrid(frame) || Math.abs(frame.modelZ - ez) <= o.zTolerance,
+    zOk,
     marker: layer.marker,
     sectionZ: m.sectionZ,
     sectionAreaMm2: m.sectionAreaMm2,

@@ -3,7 +3,7 @@ import type { FeatureName } from './feature-names.js';
 import { FEATURE_NAMES } from './feature-names.js';
 import type { ParsedGcode } from './gcode-types.js';
 import type { ResolvedOptions } from './layer-analysis.js';
-import { expectedLayerCount, gridZ, onZGrid, orNull, travelLength } from './layer-report.js';
+import { expectedLayerCount, gridZ, onZGrid, orNull, thicknessOk, travelLength } from './layer-report.js';
 import type { LayerFrame } from './model-z.js';
 import { segmentLength } from './raster.js';
 import type { LayerReport, PrintSummary } from './report-types.js';
@@ -41,10 +41,16 @@ function skinSummary(layers: LayerReport[], pick: (l: LayerReport) => { areaMm2:
   return { areaMm2: area, coverage: area > 0 ? coveredArea / area : null, minCoverage: min, worstLayer: worst };
 }
 
-export function summarize(
-  parsed: ParsedGcode, layers: LayerReport[], o: ResolvedOptions, sections: SectionCache,
-  widths: WeightedHistogram, positives: Float64Array[], samples: number, frames: readonly LayerFrame[],
-): PrintSummary {
+interface GridCheck {
+  zMismatch: number[];
+  zMismatchCount: number;
+  expectedCount: number;
+  missing: number[];
+  missingCount: number;
+}
+
+/** Layer Zs against the even grid (firstLayerHeight, then every layerHeight): off-grid layers, grid Zs not printed. */
+function evenGrid(parsed: ParsedGcode, frames: readonly LayerFrame[], zTop: number, o: ResolvedOptions): GridCheck {
   const zMismatch: number[] = [];
   let zMismatchCount = 0;
   const onGrid = new Set<number>();
@@ -61,7 +67,7 @@ export function summarize(
       onGrid.add(k);
     }
   }
-  const expectedCount = expectedLayerCount(sections.zMax, o);
+  const expectedCount = expectedLayerCount(zTop, o);
   const missing: number[] = [];
   let missingCount = 0;
   for (let k = 0; k < expectedCount; k++) {
@@ -69,6 +75,46 @@ export function summarize(
     missingCount++;
     if (missing.length < MAX_LISTED) missing.push(o.firstLayerHeight + k * o.layerHeight);
   }
+
+  return { zMismatch, zMismatchCount, expectedCount, missing, missingCount };
+}
+
+/**
+ * Layer Zs with variable layer height: part layers thinner or thicker than the range (off-grid), and the
+ * layers left out where two part layers (or the last one and the model's top) are further apart than max.
+ */
+function variableGrid(parsed: ParsedGcode, frames: readonly LayerFrame[], zTop: number, [, max]: readonly [number, number], o: ResolvedOptions): GridCheck {
+  const out: GridCheck = { zMismatch: [], zMismatchCount: 0, expectedCount: 0, missing: [], missingCount: 0 };
+  let last = 0;
+  const skipped = (from: number, gap: number) => {
+    const n = Math.max(0, Math.ceil((gap - o.zTolerance) / max) - 1);
+    for (let k = 1; k <= n; k++) if (out.missing.length < MAX_LISTED) out.missing.push(from + (k * gap) / (n + 1));
+    out.missingCount += n;
+  };
+  for (const l of parsed.layers) {
+    const frame = frames[l.index]!;
+    if (!onZGrid(frame)) continue;
+    out.expectedCount++;
+    if (!thicknessOk(frame, o.layerHeightRange!, o)) {
+      out.zMismatchCount++;
+      if (out.zMismatch.length < MAX_LISTED) out.zMismatch.push(l.index);
+    }
+    if (Number.isFinite(frame.partThickness) && frame.modelZ - last > max + o.zTolerance) skipped(last, frame.modelZ - last);
+    last = frame.modelZ;
+  }
+  // the top: a layer is missing when the model goes on more than half a layer above the last
+  if (zTop - last > max / 2 + o.zTolerance) skipped(last, zTop - last + max / 2);
+  out.expectedCount += out.missingCount;
+  return out;
+}
+
+export function summarize(
+  parsed: ParsedGcode, layers: LayerReport[], o: ResolvedOptions, sections: SectionCache,
+  widths: WeightedHistogram, positives: Float64Array[], samples: number, frames: readonly LayerFrame[],
+): PrintSummary {
+  const { zMismatch, zMismatchCount, expectedCount, missing, missingCount } = o.layerHeightRange
+    ? variableGrid(parsed, frames, sections.zMax, o.layerHeightRange, o)
+    : evenGrid(parsed, frames, sections.zMax, o);
 
   let wallLen = 0, wallCovered = 0;
   let wallMin: number | null = null, wallWorst: number | null = null;

@@ -22,6 +22,13 @@ export interface AnalyzeOptions {
   widthSource?: 'flow' | 'nominal';
   /** Analyse every k-th layer (plus the first and last) with the raster checks; default 1 (all). */
   sampleEvery?: number;
+  /**
+   * Variable layer height (adaptive layers, a layer range's own height): each layer may be any thickness in
+   * [min, max] mm. The Z grid check then judges each part layer's thickness (zMismatch: outside the range by
+   * more than zTolerance) and counts as missing the layers a gap thicker than max leaves out (and a top left
+   * more than half of max above the last layer). Default none: every layer layerHeight above the last.
+   */
+  layerHeightRange?: [number, number];
   /** A layer whose Z is off the expected grid by more than this is reported (mm), default 0.005. */
   zTolerance?: number;
   /**

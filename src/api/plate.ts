@@ -27,11 +27,11 @@ export function plateOf(objects: readonly MeshObject[], options: SliceOptions, c
     for (const [k, v] of Object.entries(mapped.settings)) {
       const scope = SETTING_SCOPE[k as SettingKey];
       // another slicer's project may vary what Strata keeps per print (or per object): left to the print
-      if (src.format !== 'strata' && (scope === 'print' || (scope === 'object' && use !== 'object'))) {
-        // (the same value as the print's changes nothing: PrusaSlicer repeats the layer height in every range)
-        if (v !== cfg[k as SettingKey]) outOfScope.add(k);
-      }
-      else settings[k] = v;
+      // (the same value as the print's changes nothing: PrusaSlicer repeats the layer height in every range)
+      const same = v === cfg[k as SettingKey];
+      if (src.format !== 'strata' && (scope === 'print' || (scope === 'layer' && use !== 'layer range') || (scope === 'object' && use !== 'object'))) {
+        if (!same) outOfScope.add(k);
+      } else if (!(src.format !== 'strata' && scope === 'layer' && same)) settings[k] = v;
     }
     return Object.keys(settings).length ? settings : undefined;
   };
@@ -40,6 +40,7 @@ export function plateOf(objects: readonly MeshObject[], options: SliceOptions, c
     const settings = read(o.settings, 'object');
     if (settings) p.settings = settings;
     if (o.volumes?.length) p.volumes = o.volumes.map((v) => ({ kind: v.kind, name: v.name, mesh: v.mesh, settings: read(v.settings, 'modifier') }));
+    if (o.layerHeightProfile) p.layerHeightProfile = o.layerHeightProfile;
     if (o.layerRanges?.length) p.layerRanges = o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: read(r.settings, 'layer range') ?? {} }));
     return p;
   });

@@ -50,6 +50,8 @@ export interface ObjectOptions {
   settings?: Partial<Settings>;
   volumes?: Array<{ type: 'part' | 'modifier' | 'negative' | 'support-blocker' | 'support-enforcer'; mesh: unknown; name?: string; settings?: Partial<Settings> }>;
   layerRanges?: Array<{ fromZ: number; toZ: number; settings: Partial<Settings> }>;
+  /** Variable layer height: z0, h0, z1, h1, … mm from the object's bottom (PrusaSlicer's layer_height_profile). */
+  layerHeightProfile?: number[];
 }
 
 export interface SliceCallOptions {

@@ -133,3 +133,21 @@ test('a PrusaSlicer project: the support blocker leaves its overhang without sup
   assert.equal(support([61, 61, 72, 69]), 0, 'no support under the blocked shelf');
   assert.ok(support([88, 61, 99, 69]) > 1, 'the other shelf is held');
 });
+
+test("a PrusaSlicer project's layer range with its own layer_height prints that range's layers at that height", async () => {
+  const bytes = prusaProject(
+    [{ box: [0, 0, 0, 40, 20, 10], type: 'ModelPart' }],
+    {},
+    PRINT,
+    '<range min_z="6" max_z="8"><option opt_key="extruder">0</option><option opt_key="layer_height">0.1</option></range>' +
+      '<range min_z="8" max_z="9"><option opt_key="layer_height">0.2</option></range>',
+  );
+  const { gcode, warnings } = await new Slicer({ threads: 1 }).slice(bytes);
+  assert.ok(!warnings.some((w) => /layer_height/.test(w)), warnings.join('\n'));
+  const g = parseGcode(gcode);
+  const thick = g.layers.map((l) => [Math.round(l.z * 1000), Math.round(l.thickness * 1000)]);
+  // 0.2 mm to 6, 20 layers of 0.1 to 8, 0.2 mm again (a range repeating the print's height sets nothing)
+  assert.deepEqual(thick.filter(([z]) => z > 6000 && z <= 8000).map(([, t]) => t), new Array(20).fill(100));
+  assert.ok(thick.filter(([z]) => z <= 6000 || z > 8000).every(([, t]) => t === 200));
+  assert.equal(g.layers.length, 30 + 20 + 10);
+});

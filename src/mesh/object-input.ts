@@ -18,11 +18,11 @@ const KINDS: readonly (VolumeKind | 'part')[] = ['part', 'modifier', 'negative',
 /** Most volumes and layer ranges one object may have. */
 const MAX_VOLUMES = 1000;
 
-/** Whether a value is an object description (a `mesh` with settings, volumes or layer ranges). */
+/** Whether a value is an object description (a `mesh` with settings, volumes, layer ranges or a layer height profile). */
 export function isObjectInput(v: unknown): boolean {
   if (typeof v !== 'object' || v === null || Array.isArray(v) || !('mesh' in v)) return false;
   const o = v as Record<string, unknown>;
-  return 'settings' in o || 'volumes' in o || 'layerRanges' in o;
+  return 'settings' in o || 'volumes' in o || 'layerRanges' in o || 'layerHeightProfile' in o;
 }
 
 const FORMATS: readonly SettingsSource['format'][] = ['strata', 'prusaslicer', 'orcaslicer', 'cura'];
@@ -79,10 +79,21 @@ export function objectFromInput(input: Record<string, unknown>, toObjects: (mesh
     }
     return { fromZ, toZ, settings: settingsOf(r.settings ?? {}, `${label}: layer range ${fromZ}–${toZ} mm`)! };
   });
+  const profile = input.layerHeightProfile;
+  if (profile !== undefined && !isHeightProfile(profile)) {
+    throw new StrataError('BAD_SETTING', `${label}: layerHeightProfile needs numbers z0, h0, z1, h1, … (mm, at least two points, Z from 0 rising, heights above 0)`);
+  }
   const out: MeshObject = { name: name ?? (parts.length === 1 ? parts[0].name : label), mesh: parts.length === 1 ? parts[0].mesh : mergeObjects(parts) };
+  if (profile !== undefined) out.layerHeightProfile = [...(profile as number[])];
   const settings = settingsOf(input.settings, label);
   if (settings) out.settings = settings;
   if (volumes.length) out.volumes = volumes;
   if (layerRanges.length) out.layerRanges = layerRanges;
   return out;
+}
+
+/** Whether `v` is a layer height profile: z0, h0, z1, h1, … with Z from 0 rising and heights above 0. */
+function isHeightProfile(v: unknown): boolean {
+  return Array.isArray(v) && v.length >= 4 && v.length % 2 === 0 &&
+    v.every((x, i) => typeof x === 'number' && Number.isFinite(x) && (i % 2 === 0 ? x >= 0 && (i === 0 || x > v[i - 2]) : x > 0));
 }

@@ -32,6 +32,7 @@ export interface ObjectSpec {
   pieces: PieceSpec[];
   settings?: SettingsSource;
   layerRanges?: LayerRangeSettings[];
+  layerHeightProfile?: number[];
 }
 
 /** An assembled item: an object, or (when it has no printed part) only volumes for another object to take. */
@@ -59,6 +60,7 @@ export function assemble(e: ExpandedItem, spec: ObjectSpec): Assembled {
   if (volumes.length > 0) object.volumes = volumes;
   if (spec.settings !== undefined) object.settings = spec.settings;
   if (spec.layerRanges !== undefined && spec.layerRanges.length > 0) object.layerRanges = spec.layerRanges;
+  if (spec.layerHeightProfile !== undefined) object.layerHeightProfile = spec.layerHeightProfile;
   return { object, volumes: [] };
 }
 

@@ -6,7 +6,9 @@
  *   (the component holding the part's mesh), each with metadata of its own;
  * - layer ranges, `Metadata/Prusa_Slicer_layer_config_ranges.xml` (PrusaSlicer) and `Metadata/layer_config_ranges.xml`
  *   (Orca): `<objects><object id="…"><range min_z="…" max_z="…"><option opt_key="…">value</option>`;
- * - PrusaSlicer's print config `Metadata/Slic3r_PE.config`: `; key = value` lines.
+ * - PrusaSlicer's print config `Metadata/Slic3r_PE.config`: `; key = value` lines;
+ * - variable layer height profiles, `Metadata/Slic3r_PE_layer_heights_profile.txt` (PrusaSlicer) and
+ *   `Metadata/layer_heights_profile.txt` (Orca, Bambu Studio): a line `object_id=N|z;h;z;h;…` per object.
  */
 import { StrataError } from '../errors.js';
 import { printable } from './printable.js';
@@ -19,6 +21,8 @@ export const PRUSA_LAYER_RANGES = 'Metadata/Prusa_Slicer_layer_config_ranges.xml
 export const ORCA_MODEL_CONFIG = 'Metadata/model_settings.config';
 export const ORCA_PROJECT_CONFIG = 'Metadata/project_settings.config';
 export const ORCA_LAYER_RANGES = 'Metadata/layer_config_ranges.xml';
+export const PRUSA_HEIGHT_PROFILE = 'Metadata/Slic3r_PE_layer_heights_profile.txt';
+export const ORCA_HEIGHT_PROFILE = 'Metadata/layer_heights_profile.txt';
 /** Strata's own full copy of a project's settings, beside PrusaSlicer's (threemf-write.ts). */
 export const STRATA_PROJECT = 'Metadata/Strata_project.json';
 /** Most bytes one config part may unpack to. */
@@ -160,6 +164,33 @@ export function parseLayerRanges(bytes: Uint8Array, fileName: string, warnings: 
         );
       }
     }
+  }
+  return out;
+}
+
+/** Most points of one object's layer height profile (each a Z and a height). */
+const MAX_PROFILE_POINTS = 1_000_000;
+
+/**
+ * Variable layer height profiles by object number (1-based, as the file counts them): each the flat list
+ * z0, h0, z1, h1, … (mm from the object's bottom, layer height there), Z rising. A line that is not one is
+ * left out with a warning.
+ */
+export function parseHeightProfiles(text: string, fileName: string, warnings: string[]): Map<number, number[]> {
+  const out = new Map<number, number[]>();
+  for (const line of text.split(/\r?\n/)) {
+    if (line.trim() === '') continue;
+    const m = /^\s*object_id\s*=\s*(\d+)\s*\|(.*)$/.exec(line);
+    const values = m ? m[2].split(';').map((v) => (v.trim() === '' ? NaN : Number(v))) : [];
+    const ok = m !== null && values.length >= 4 && values.length % 2 === 0 && values.length <= 2 * MAX_PROFILE_POINTS &&
+      values.every((v, i) => Number.isFinite(v) && (i % 2 === 0 ? v >= 0 && (i === 0 || v > values[i - 2]) : v > 0));
+    if (!ok) {
+      warnings.push(`3MF ${fileName}: a line that is not a layer height profile (object_id=N|z;h;…, Z rising, heights above 0) is not used`);
+      continue;
+    }
+    const id = Number(m![1]);
+    if (out.has(id)) warnings.push(`3MF ${fileName}: object ${id} has two layer height profiles; the second is not used`);
+    else out.set(id, values);
   }
   return out;
 }

@@ -431,3 +431,14 @@ test('corrupted slicer configs either read or throw a one-line StrataError', () 
     }
   }
 });
+
+test("a PrusaSlicer project's variable layer height profile is the object's layerHeightProfile; a bad line is named and left out", () => {
+  const profile = 'object_id=1|0.000000;0.200000;5.000000;0.100000;10.000000;0.100000;15.000000;0.300000;20.000000;0.300000\nobject_id=2|1;2;3\n';
+  const { objects, warnings } = parse3mfProject(zip({
+    '3D/3dmodel.model': PRUSA_MODEL,
+    'Metadata/Slic3r_PE_model.config': PRUSA_CONFIG,
+    'Metadata/Slic3r_PE_layer_heights_profile.txt': profile,
+  }), 'proj');
+  assert.deepEqual(objects[0].layerHeightProfile, [0, 0.2, 5, 0.1, 10, 0.1, 15, 0.3, 20, 0.3]);
+  assert.deepEqual(warnings, ['3MF Metadata/Slic3r_PE_layer_heights_profile.txt: a line that is not a layer height profile (object_id=N|z;h;…, Z rising, heights above 0) is not used']);
+});

@@ -18,6 +18,9 @@ import {
   parseModelConfig,
   parseSlic3rConfig,
   PRUSA_LAYER_RANGES,
+  PRUSA_HEIGHT_PROFILE,
+  ORCA_HEIGHT_PROFILE,
+  parseHeightProfiles,
   PRUSA_MODEL_CONFIG,
   PRUSA_PRINT_CONFIG,
   STRATA_PROJECT,
@@ -100,7 +103,9 @@ function readProjectData(
     const config = parseModelConfig(prusaModel, PRUSA_MODEL_CONFIG);
     const rangesXml = read(PRUSA_LAYER_RANGES);
     const ranges = rangesXml === undefined ? undefined : parseLayerRanges(rangesXml, PRUSA_LAYER_RANGES, warnings);
-    let planner: Planner = prusaPlanner(build, { format: 'prusaslicer', config, ranges }, warnings);
+    const profileText = text(PRUSA_HEIGHT_PROFILE);
+    const profiles = profileText === undefined ? undefined : parseHeightProfiles(profileText, PRUSA_HEIGHT_PROFILE, warnings);
+    let planner: Planner = prusaPlanner(build, { format: 'prusaslicer', config, ranges, profiles }, warnings);
     const printText = text(PRUSA_PRINT_CONFIG);
     let projectSettings: SettingsSource | undefined = printText === undefined ? undefined : { format: 'prusaslicer', values: parseSlic3rConfig(printText) };
     const strataText = text(STRATA_PROJECT);
@@ -123,7 +128,9 @@ function readProjectData(
     const config = parseModelConfig(orcaModel, ORCA_MODEL_CONFIG);
     const rangesXml = read(ORCA_LAYER_RANGES);
     const ranges = rangesXml === undefined ? undefined : parseLayerRanges(rangesXml, ORCA_LAYER_RANGES, warnings);
-    const planner = orcaPlanner(build, { format: 'orcaslicer', config, ranges }, warnings);
+    const profileText = text(ORCA_HEIGHT_PROFILE);
+    const profiles = profileText === undefined ? undefined : parseHeightProfiles(profileText, ORCA_HEIGHT_PROFILE, warnings);
+    const planner = orcaPlanner(build, { format: 'orcaslicer', config, ranges, profiles }, warnings);
     return { planner, projectSettings: orcaProjectSettings(text(ORCA_PROJECT_CONFIG), warnings), cura: false };
   }
   if (isCuraProject(build)) {

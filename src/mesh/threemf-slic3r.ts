@@ -62,6 +62,8 @@ export interface Slic3rProject {
   format: Slic3rFormat;
   config: ReadonlyMap<number, ConfigObject>;
   ranges?: ReadonlyMap<number, ConfigRange[]>;
+  /** Variable layer height profiles by object number. */
+  profiles?: ReadonlyMap<number, number[]>;
 }
 
 /** What each of an item's triangles is, for a PrusaSlicer project. */
@@ -89,6 +91,8 @@ export function prusaPlanner(build: Build, project: Slic3rProject, warnings: str
     const n = objectNumber.get(object);
     const ranges = layerRanges(n === undefined ? undefined : project.ranges?.get(n), project.format);
     if (ranges !== undefined) spec.layerRanges = ranges;
+    const profile = n === undefined ? undefined : project.profiles?.get(n);
+    if (profile !== undefined) spec.layerHeightProfile = profile;
     return spec;
   };
 }
@@ -149,6 +153,8 @@ export function orcaPlanner(build: Build, project: Slic3rProject, warnings: stri
     if (settings !== undefined) spec.settings = settings;
     const ranges = layerRanges(project.ranges?.get(objectNumber.get(object) ?? 0), project.format);
     if (ranges !== undefined) spec.layerRanges = ranges;
+    const profile = project.profiles?.get(objectNumber.get(object) ?? 0);
+    if (profile !== undefined) spec.layerHeightProfile = profile;
     return spec;
   };
 }

@@ -60,6 +60,11 @@ export interface MeshObject {
   /** The object's own settings (object- and region-scoped ones), over the print's. */
   settings?: SettingsSource;
   layerRanges?: LayerRangeSettings[];
+  /**
+   * Variable layer height (PrusaSlicer's and OrcaSlicer's per-object profile): z0, h0, z1, h1, … in mm from
+   * the object's bottom, Z rising; a layer's height is the profile's at its bottom (linear between points).
+   */
+  layerHeightProfile?: number[];
 }
 
 /** What mesh preparation found: counts and human-readable warnings. */

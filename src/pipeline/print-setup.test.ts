@@ -58,7 +58,10 @@ test('each layer range and modifier resolves once over the object, alike configs
 });
 
 test('settings that cannot vary there are refused, naming the object', () => {
-  assert.throws(() => plate([{ name: 'cup', mesh: box(0, 0, 1, 1), settings: { layerHeight: 0.1 } }]), (e: unknown) => e instanceof StrataError && /object "cup": layerHeight is the same for the whole print/.test(e.message));
+  assert.throws(() => plate([{ name: 'cup', mesh: box(0, 0, 1, 1), settings: { nozzleTemperature: 190 } }]), (e: unknown) => e instanceof StrataError && /object "cup": nozzleTemperature is the same for the whole print/.test(e.message));
+  // the layer height may vary between layer ranges (the plate's Z plan), not between objects
+  assert.throws(() => plate([{ name: 'cup', mesh: box(0, 0, 1, 1), settings: { layerHeight: 0.1 } }]), (e: unknown) => e instanceof StrataError && /object "cup": layerHeight is the same for every object at one height, so it cannot be set for an object; set it for the print or a layer range instead/.test(e.message));
+  assert.doesNotThrow(() => plate([{ name: 'cup', mesh: box(0, 0, 1, 1), layerRanges: [{ fromZ: 0.4, toZ: 0.8, settings: { layerHeight: 0.1 } }] }]));
   assert.throws(
     () => plate([{ name: 'cup', mesh: box(0, 0, 1, 1), volumes: [{ kind: 'modifier', name: 'm', mesh: box(0, 0, 1, 1), settings: { supportEnabled: true } }] }]),
     /modifier "m" of "cup": supportEnabled may vary per object but not inside one/,

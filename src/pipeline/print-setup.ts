@@ -16,6 +16,7 @@ import type { ObjectSetup, PrintSetup } from '../regions/objects.js';
 import type { Config } from '../settings/resolve.js';
 import type { SliceOptions } from '../settings/schema.js';
 import { vaseWarning } from '../settings/vase.js';
+import type { HeightRange } from '../slice/z-plan.js';
 
 /** A volume of a placed object other than its parts. */
 export interface PlacedVolume {
@@ -35,6 +36,8 @@ export interface PlacedObject {
   settings?: ScopedSettings;
   /** Settings of the layers whose Z lies in [fromZ, toZ), mm from the bed; a later range wins. */
   layerRanges?: ReadonlyArray<{ fromZ: number; toZ: number; settings: ScopedSettings }>;
+  /** Variable layer height: z0, h0, z1, h1, … mm (mesh/types.ts MeshObject). */
+  layerHeightProfile?: readonly number[];
 }
 
 /** The meshes the setup's indices point into, and the setup. */
@@ -45,6 +48,10 @@ export interface PlateSetup {
   objects: PlacedObject[];
   /** Notes for the caller (objects merged). */
   warnings: string[];
+  /** Z ranges whose layers have their own height (a layer range's layerHeight), for the plate's Z plan. */
+  heightRanges: HeightRange[];
+  /** The layer height profile the plate's Z plan follows (the first object's that has one), or null. */
+  heightProfile: readonly number[] | null;
 }
 
 /** Most (layer ranges + 1) × (modifiers + 1) of one object, each a config to resolve. */
@@ -59,7 +66,7 @@ function boxesOverlap(a: Box, b: Box): boolean {
 
 /** Whether an object has nothing of its own beyond its settings (so merging it with a twin changes nothing). */
 function plain(o: PlacedObject): boolean {
-  return !o.volumes?.length && !o.layerRanges?.length;
+  return !o.volumes?.length && !o.layerRanges?.length && !o.layerHeightProfile;
 }
 
 /**
@@ -145,6 +152,35 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
       regions,
     };
   });
+  const heightRanges = layerHeightRanges(printed, setups, table.configs, print, warnings);
+  // one Z plan: the first object's layer height profile
+  const profiled = printed.filter((o) => o.layerHeightProfile);
+  if (profiled.length > 1) warnings.push(`objects ${profiled.map((o) => `"${o.name}"`).join(', ')} have layer height profiles: the plate has one Z plan, so the first one's ("${profiled[0].name}") holds for every object`);
+  const heightProfile = profiled[0]?.layerHeightProfile ?? null;
   const pairs = overlapPairs.map(([a, b]): [number, number] => [printedIndex.get(a)!, printedIndex.get(b)!]).filter(([a, b]) => a !== b);
-  return { setup: { configs: table.configs, objects: setups, overlapPairs: pairs }, meshes, objects: printed, warnings };
+  return { setup: { configs: table.configs, objects: setups, overlapPairs: pairs }, meshes, objects: printed, warnings, heightRanges, heightProfile };
+}
+
+/**
+ * The layer ranges that set a layer height. The plate has one Z plan, so a range's height holds for every
+ * object's layers in its Z range: the ranges of all objects in object order (a later one wins where they
+ * overlap), with a warning when more than one object gives them. A range repeating the print's layerHeight
+ * sets nothing unless adaptive layer height is on (there it keeps its range even).
+ */
+function layerHeightRanges(printed: readonly PlacedObject[], setups: readonly ObjectSetup[], configs: readonly Config[], print: Config, warnings: string[]): HeightRange[] {
+  const out: HeightRange[] = [];
+  const givers: string[] = [];
+  printed.forEach((o, k) => {
+    let gives = false;
+    (o.layerRanges ?? []).forEach((r, j) => {
+      if (r.settings.layerHeight === undefined) return;
+      const layerHeight = configs[setups[k].regions[j + 1][0]].layerHeight;
+      if (layerHeight === print.layerHeight && !print.adaptiveLayerHeight) return;
+      out.push({ fromZ: r.fromZ, toZ: r.toZ, layerHeight });
+      gives = true;
+    });
+    if (gives) givers.push(`"${o.name}"`);
+  });
+  if (givers.length > 1) warnings.push(`objects ${givers.join(', ')} set layer heights in layer ranges: the plate has one Z plan, so each range's height holds for every object in its Z range (a later object's range wins where they overlap)`);
+  return out;
 }

@@ -23,7 +23,8 @@ import { objectsSupportPass } from '../regions/support/index.js';
 import type { LayerRegions } from '../regions/types.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { Config } from '../settings/resolve.js';
-import { planLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
+import { evenLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
+import { planPlateLayers } from '../slice/z-plan.js';
 import type { LayerZ } from '../slice/types.js';
 import { renderThumbnails } from '../thumbnail/index.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
@@ -172,11 +173,22 @@ function anySupport(setup: PrintSetup): boolean {
   return setup.objects.some((o) => setup.configs[o.config].supportEnabled || o.enforcers.length > 0);
 }
 
+/**
+ * Whether support under layer i touches it, a top Z gap of no layers (with uneven layers, a gap in mm less
+ * than half the layer's height; layer -1: on any layer).
+ */
+function noTopGap(c: Config, layers: readonly LayerZ[], uneven: boolean, i: number): boolean {
+  if (!uneven) return c.supportTopGapLayers === 0;
+  if (c.supportZGap === null) return false;
+  const half = (h: number) => h / 2 > c.supportZGap! + 1e-9;
+  return i >= 0 ? half(layers[i].height) : layers.some((l) => half(l.height));
+}
+
 /** Whether some object's skin rests on its support with no Z gap (its paths then wait for the support pass). */
-function skinOnSupport(setup: PrintSetup): boolean {
+function skinOnSupport(setup: PrintSetup, layers: readonly LayerZ[], uneven: boolean): boolean {
   return setup.objects.some((o) => {
     const c = setup.configs[o.config];
-    return (c.supportEnabled || o.enforcers.length > 0) && c.supportTopGapLayers === 0;
+    return (c.supportEnabled || o.enforcers.length > 0) && noTopGap(c, layers, uneven, -1);
   });
 }
 
@@ -215,10 +227,11 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const p = o.mesh.positions;
     for (let i = 2; i < p.length; i += 3) if (p[i] > height) height = p[i];
   }
-  const layers: LayerZ[] = planLayers(height, cfg.firstLayerHeight, cfg.layerHeight);
+  const layers: LayerZ[] = planPlateLayers(height, cfg, objects.map((o) => o.mesh), plate.heightRanges, plate.heightProfile);
   if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
   // sequential printing: the order, and the print head's clearances checked before anything is sliced
   const sequence = cfg.sequentialPrinting && objects.length > 1 ? sequenceObjects(objects, cfg) : null;
+  const uneven = !evenLayers(layers, cfg.layerHeight);
   const infillParams = objects.map((o, k) => infillParamsFor(setup.configs[setup.objects[k].config], o));
   // N threads: the calling thread and N-1 workers, or for a custom infill N workers and the calling thread
   // only planning (see customInWorkers; split in two ranges at least, so progress is seen)
@@ -297,7 +310,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       // support (no top Z gap) reads them: then each range makes them with its regions, while both are at
       // hand (coming back to every layer's regions later costs ~10 % more), and only the skirt and
       // support join them after the support pass.
-      const early = !lightning && !skinOnSupport(setup);
+      const early = !lightning && !skinOnSupport(setup, layers, uneven);
       const modelPaths: PathsParams | undefined = early ? { ...common, zOffset: 0, adhesion: false } : undefined;
       // With workers and support, each range keeps its regions where they were made, and the workers make
       // their ranges' model paths while this thread runs the support pass (which they would wait for idle).
@@ -357,9 +370,10 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
           yield;
         }
       } else {
-        const supportOf = (r: LayerRegions | undefined): ExPolygon[] => {
+        // the support of layer i − 1 where it holds layer i with no gap
+        const supportOf = (r: LayerRegions | undefined, i: number): ExPolygon[] => {
           if (!r?.support) return [];
-          const held = (o: number) => setup.configs[setup.objects[o].config].supportTopGapLayers === 0;
+          const held = (o: number) => noTopGap(setup.configs[setup.objects[o].config], layers, uneven, i);
           if (!r.supports) return held(0) ? [...r.support.body, ...r.support.roof] : [];
           return r.supports.flatMap((a, o) => (a && held(o) ? [...a.body, ...a.roof] : []));
         };
@@ -370,7 +384,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
           to,
           ...common,
           regions: regions.slice(from, to),
-          supportBelow: regions.slice(from, to).map((_, k) => supportOf(regions[from + k - 1])),
+          supportBelow: regions.slice(from, to).map((_, k) => supportOf(regions[from + k - 1], from + k)),
           prepared: preparedInfill?.slice(from, to),
         }));
       }

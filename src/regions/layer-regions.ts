@@ -8,14 +8,14 @@ import { area, difference, intersection, offset, union } from '../geometry/clip.
 import { StrataError } from '../errors.js';
 import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
-import { SectionStream, toHalfUm, type PreparedMesh } from '../slice/index.js';
+import { evenLayers, SectionStream, toHalfUm, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { bridgeOf } from './bridge-angle.js';
 import { ironingArea, type IroningIsland } from './ironing-area.js';
 import { overhangOf } from './overhang.js';
 import { BelowLevels, overhangLevels } from './overhang-levels.js';
 import { overhangWalls } from './overhang-walls.js';
-import { allSkin, CoverWindows, skinAreas } from './skin-areas.js';
+import { allSkin, CoverWindows, skinAreas, skinLayerCounts } from './skin-areas.js';
 import { rangeAt, type ObjectSetup, type PrintSetup } from './objects.js';
 import type { IslandRegions, LayerRegions, RegionFill } from './types.js';
 import { computeWalls } from './wall-generator.js';
@@ -39,6 +39,9 @@ interface ObjectSections {
   topPlane?: number;
   top: CoverWindows;
   bottom: CoverWindows;
+  /** With uneven layers, each layer's count of layers above and below that make the skin thickness. */
+  topCounts: Int32Array | null;
+  bottomCounts: Int32Array | null;
 }
 
 /** Below this, mm², two objects' sections are taken not to overlap (touching faces, rounding). */
@@ -80,8 +83,16 @@ export class RegionsRun {
     this.#layers = layers;
     const n = layers.length;
     const objectCfgs = setup.objects.map((o) => setup.configs[o.config]);
-    const maxBottom = Math.max(1, ...objectCfgs.map((c) => c.bottomLayers));
-    const maxTop = Math.max(0, ...objectCfgs.map((c) => c.topLayers));
+    // skin counts its layers by their heights when they are uneven (adaptive, a layer range's own height)
+    const heights = evenLayers(layers, cfg.layerHeight) ? null : Int32Array.from(layers, (l) => Math.round(l.height * 1000));
+    const counts = objectCfgs.map((c) => {
+      if (!heights) return { top: null, bottom: null, maxTop: c.topLayers, maxBottom: c.bottomLayers };
+      const top = skinLayerCounts(heights, c.topSkinThickness ?? c.shellSkinThickness, 1);
+      const bottom = skinLayerCounts(heights, c.bottomSkinThickness ?? c.shellSkinThickness, -1);
+      return { top, bottom, maxTop: top.reduce((a, b) => Math.max(a, b), 0), maxBottom: bottom.reduce((a, b) => Math.max(a, b), 0) };
+    });
+    const maxBottom = Math.max(1, ...counts.map((c) => c.maxBottom));
+    const maxTop = Math.max(0, ...counts.map((c) => c.maxTop));
     this.#keepBelow = maxBottom;
     // ironing finds the top surface from the layer above, and topmost ironing looks up to #reach layers up
     this.#reach = Math.max(1, maxTop);
@@ -107,6 +118,8 @@ export class RegionsRun {
         cut: new Map(),
         top,
         bottom,
+        topCounts: counts[k].top,
+        bottomCounts: counts[k].bottom,
       };
     });
   }
@@ -177,9 +190,11 @@ export class RegionsRun {
   #fill(k: number, i: number, region: number, inner: readonly ExPolygon[], below: readonly ExPolygon[], w: number, iron: IroningIsland | null = null, piece: readonly ExPolygon[] | null = null): RegionFill {
     const o = this.#objects[k];
     const cfg = this.#setup.configs[region];
-    const coveredAbove = inner.length ? o.top.window(i + 1) : [];
-    const coveredBelow = inner.length ? o.bottom.window(i - o.cfg.bottomLayers) : [];
-    const skin = skinAreas(inner, coveredAbove, coveredBelow, o.cfg.topLayers, o.cfg.bottomLayers, w, cfg.topSkinPattern !== cfg.bottomSkinPattern);
+    const topLayers = o.topCounts ? o.topCounts[i] : o.cfg.topLayers;
+    const bottomLayers = o.bottomCounts ? o.bottomCounts[i] : o.cfg.bottomLayers;
+    const coveredAbove = inner.length ? o.top.window(i + 1, topLayers) : [];
+    const coveredBelow = inner.length ? o.bottom.window(i - bottomLayers, bottomLayers) : [];
+    const skin = skinAreas(inner, coveredAbove, coveredBelow, topLayers, bottomLayers, w, cfg.topSkinPattern !== cfg.bottomSkinPattern);
     const skinAll = allSkin(skin);
     const overlapInfill = (cfg.infillOverlap / 100) * w;
     const ironsAll = iron !== null && this.#irons(k, i, cfg) && cfg.ironingType === 'all';

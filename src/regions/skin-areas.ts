@@ -62,11 +62,12 @@ export class CoverWindows {
   readonly #count: number;
   readonly #layers: number;
   readonly #pairs = new Map<number, ExPolygon[]>();
+  /** By window start and count (start · MAX_WINDOW + count). */
   readonly #windows = new Map<number, ExPolygon[]>();
 
   /**
    * @param sectionAt the section of layer i ([] outside the model)
-   * @param count layers per window
+   * @param count layers per window, unless a window is asked for with its own
    * @param layers number of layers of the model (a window reaching past them covers nothing)
    */
   constructor(sectionAt: (i: number) => readonly ExPolygon[], count: number, layers: number) {
@@ -86,11 +87,12 @@ export class CoverWindows {
     return p;
   }
 
-  /** The area covered by material on every layer a .. a+count-1. */
-  window(a: number): ExPolygon[] {
-    const n = this.#count;
+  /** The area covered by material on every layer a .. a+count-1 (count: the constructor's, or a layer's own with uneven layers). */
+  window(a: number, count = this.#count): ExPolygon[] {
+    const n = count;
     if (n <= 0 || a < 0 || a + n > this.#layers) return [];
-    let w = this.#windows.get(a);
+    const key = a * MAX_WINDOW + Math.min(n, MAX_WINDOW - 1);
+    let w = this.#windows.get(key);
     if (w) return w;
     if (n === 1) w = this.#sectionAt(a).slice();
     else {
@@ -99,9 +101,37 @@ export class CoverWindows {
       for (let k = a + 2; k + 1 < a + n && w.length; k += 2) w = intersection(w, this.#pair(k));
       if (n % 2 === 1 && w.length) w = intersection(w, this.#pair(a + n - 2));
     }
-    this.#windows.set(a, w);
+    this.#windows.set(key, w);
     return w;
   }
+}
+
+/** Windows longer than this many layers share a cache key (no skin is that many layers). */
+const MAX_WINDOW = 1 << 16;
+
+/**
+ * How many layers above (`dir` 1) or below (-1) each layer make a skin thickness, with uneven layers: the
+ * fewest neighbours whose heights together reach it (each layer's top skin is then the least stack of
+ * layers from the top that is that thick, however thick each layer is). Where the layers run out, a count
+ * reaching past them (its window covers nothing). With even layers this is ceil(thickness / layerHeight),
+ * as the config's topLayers and bottomLayers.
+ */
+export function skinLayerCounts(heightsUm: ArrayLike<number>, thicknessMm: number, dir: 1 | -1): Int32Array {
+  const n = heightsUm.length;
+  const out = new Int32Array(n);
+  if (thicknessMm <= 0) return out;
+  // as ceil(t / h − 1e-6): a stack within a millionth of a layer of the thickness reaches it
+  const need = thicknessMm * 1000;
+  for (let i = 0; i < n; i++) {
+    let k = 0, sum = 0, reached = false;
+    for (let j = i + dir; j >= 0 && j < n && !reached; j += dir) {
+      k++;
+      sum += heightsUm[j];
+      reached = sum >= need - 1e-6 * heightsUm[j];
+    }
+    out[i] = reached ? k : k + 1;
+  }
+  return out;
 }
 
 /** All skin of a layer as one area. */

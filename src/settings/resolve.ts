@@ -33,6 +33,9 @@ export interface Derived {
   raftBaseLineWidthMm: number;
   raftBaseLineSpacingMm: number;
   raftInterfaceLineSpacingMm: number;
+  /** Adaptive layer height's limits (minLayerHeight, maxLayerHeight resolved), mm. */
+  minLayerHeightMm: number;
+  maxLayerHeightMm: number;
 }
 
 export type Config = Readonly<Settings & Derived>;
@@ -217,6 +220,9 @@ export function resolveConfig(options: SliceOptions = {}): Config {
   if (lineWidthMm < s.nozzleDiameter * 0.6 || lineWidthMm > s.nozzleDiameter * 2.5) {
     throw new StrataError('BAD_SETTING', `lineWidth ${lineWidthMm} mm does not suit a ${s.nozzleDiameter} mm nozzle (allowed ${round3(s.nozzleDiameter * 0.6)} to ${round3(s.nozzleDiameter * 2.5)} mm)`);
   }
+  const minLayerHeightMm = s.minLayerHeight ?? Math.min(s.layerHeight, round3(s.nozzleDiameter * 0.175));
+  const maxLayerHeightMm = s.maxLayerHeight ?? Math.max(s.layerHeight, round3(s.nozzleDiameter * 0.75));
+  if (s.adaptiveLayerHeight) checkAdaptiveLimits(minLayerHeightMm, maxLayerHeightMm, s);
   const walls = s.wallCount ?? Math.max(0, Math.round(s.shellWallThickness / lineWidthMm + 1e-9));
   const layersFor = (t: number) => (t <= 0 ? 0 : Math.max(1, Math.ceil(t / s.layerHeight - 1e-6)));
   const derived: Derived = {
@@ -239,8 +245,20 @@ export function resolveConfig(options: SliceOptions = {}): Config {
     raftBaseLineWidthMm: s.raftBaseLineWidth ?? 2 * s.nozzleDiameter,
     raftBaseLineSpacingMm: s.raftBaseLineSpacing ?? 2 * (s.raftBaseLineWidth ?? 2 * s.nozzleDiameter),
     raftInterfaceLineSpacingMm: s.raftInterfaceLineSpacing ?? 2.5 * lineWidthMm,
+    minLayerHeightMm,
+    maxLayerHeightMm,
   };
   return Object.freeze({ ...s, ...derived });
+}
+
+/** Adaptive layer height's limits must hold layerHeight between them and suit the nozzle: one error naming what is wrong. */
+function checkAdaptiveLimits(min: number, max: number, s: Settings): void {
+  const bad = (why: string): never => {
+    throw new StrataError('BAD_SETTING', `adaptiveLayerHeight: ${why}`);
+  };
+  if (min > max) bad(`minLayerHeight ${min} mm is above maxLayerHeight ${max} mm`);
+  if (s.layerHeight < min || s.layerHeight > max) bad(`layerHeight ${s.layerHeight} mm must lie between minLayerHeight ${min} mm and maxLayerHeight ${max} mm`);
+  if (max > s.nozzleDiameter * 0.85) bad(`maxLayerHeight ${max} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most 85% of it: ${round3(s.nozzleDiameter * 0.85)} mm)`);
 }
 
 /** A gap in mm as whole layers (rounded to the nearest). */

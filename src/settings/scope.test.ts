@@ -24,7 +24,9 @@ function settingsReadIn(folder: string): Map<SettingKey, string> {
 }
 
 test('every setting has a scope', () => {
-  for (const k of SETTING_KEYS) assert.ok(['print', 'object', 'region'].includes(SETTING_SCOPE[k]), k);
+  for (const k of SETTING_KEYS) assert.ok(['print', 'layer', 'object', 'region'].includes(SETTING_SCOPE[k]), k);
+  // one Z plan for the plate: the layer height varies by height only (layer ranges), never per object
+  assert.deepEqual(SETTING_KEYS.filter((k) => SETTING_SCOPE[k] === 'layer'), ['layerHeight']);
   assert.equal(SETTING_SCOPE.nozzleTemperature, 'print');
   assert.equal(SETTING_SCOPE.infillDensity, 'region');
   assert.equal(SETTING_SCOPE.supportEnabled, 'object');
@@ -44,6 +46,9 @@ test('scope misuse is refused naming the key and where it may be set', () => {
   assert.throws(() => checkScope('supportType', 'modifier', 'modifier "m"'), /supportType may vary per object but not inside one/);
   assert.doesNotThrow(() => checkScope('supportType', 'object', 'x'));
   assert.doesNotThrow(() => checkScope('infillPattern', 'layer range', 'x'));
+  assert.doesNotThrow(() => checkScope('layerHeight', 'layer range', 'x'));
+  assert.throws(() => checkScope('layerHeight', 'modifier', 'modifier "m"'), /modifier "m": layerHeight is the same for every object at one height, so it cannot be set for a modifier; set it for the print or a layer range instead/);
+  assert.throws(() => checkScope('firstLayerHeight', 'layer range', 'x'), /firstLayerHeight is the same for the whole print/);
 });
 
 test('configs that resolve the same are one config; the print config is the first', () => {

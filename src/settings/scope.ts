@@ -3,7 +3,9 @@
  * travel, cooling, layer heights: what the planner and the G-code writer read); an `object` setting may
  * differ from object to object (its skin thickness, its support); a `region` setting may differ from
  * object to object, between ranges of an object's layers and inside a modifier volume (walls, skin,
- * infill and their speeds: what the regions and paths stages read per island).
+ * infill and their speeds: what the regions and paths stages read per island). A `layer` setting is the
+ * same for every object at one height but may differ between layer ranges: the layer height, since the
+ * plate has one Z plan (a range's layerHeight sets the plate's layers in its Z range, print-setup.ts).
  *
  * The scope follows from the stage a setting affects (schema.ts), with the exceptions listed here, each for
  * a reason: whoever reads the setting reads it once per print, or once per object.
@@ -11,10 +13,12 @@
 import { StrataError } from '../errors.js';
 import { SCHEMA, SETTING_KEYS, type SettingKey, type Stage } from './schema.js';
 
-export type Scope = 'print' | 'object' | 'region';
+export type Scope = 'print' | 'layer' | 'object' | 'region';
 
 /** Settings of `region` stages that are read once per print or per object, not per island. */
 const EXCEPTIONS: Partial<Record<SettingKey, Scope>> = {
+  // one Z plan for the plate: a layer range may set the height of the plate's layers in its range
+  layerHeight: 'layer',
   // the layer's line width sets its plan (LayerPaths.lineWidth, the skirt, the first layer)
   lineWidth: 'print',
   firstLayerLineWidth: 'print',
@@ -63,7 +67,7 @@ export type ScopeUse = 'object' | 'layer range' | 'modifier';
 
 const ALLOWED: Record<ScopeUse, readonly Scope[]> = {
   object: ['object', 'region'],
-  'layer range': ['region'],
+  'layer range': ['region', 'layer'],
   modifier: ['region'],
 };
 
@@ -74,6 +78,7 @@ const ALLOWED: Record<ScopeUse, readonly Scope[]> = {
 export function checkScope(key: SettingKey, use: ScopeUse, where: string): void {
   const scope = SETTING_SCOPE[key];
   if (ALLOWED[use].includes(scope)) return;
-  const what = scope === 'print' ? 'is the same for the whole print' : 'may vary per object but not inside one';
-  throw new StrataError('BAD_SETTING', `${where}: ${key} ${what}, so it cannot be set for ${use === 'object' ? 'an' : 'a'} ${use}; set it for the ${scope === 'print' ? 'print' : 'object'} instead`);
+  const what = scope === 'print' ? 'is the same for the whole print' : scope === 'layer' ? 'is the same for every object at one height' : 'may vary per object but not inside one';
+  const instead = scope === 'print' ? 'the print' : scope === 'layer' ? 'the print or a layer range' : 'the object';
+  throw new StrataError('BAD_SETTING', `${where}: ${key} ${what}, so it cannot be set for ${use === 'object' ? 'an' : 'a'} ${use}; set it for ${instead} instead`);
 }

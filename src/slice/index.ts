@@ -1,6 +1,6 @@
 /** Slicing: the layer plan and mesh cross-sections. */
 export type { LayerSection, LayerZ } from './types.js';
-export { planLayers, toHalfUm, HALF_UM_PER_MM, MAX_LAYERS } from './layers.js';
+export { evenLayers, planLayers, planVaryingLayers, toHalfUm, HALF_UM_PER_MM, MAX_LAYERS } from './layers.js';
 export { sliceMesh, slicePrepared, SectionStream, DEFAULT_MAX_GAP_MM, DEFAULT_MIN_AREA_UM2 } from './slice-mesh.js';
 export type { SliceOptions } from './slice-mesh.js';
 export { prepareMesh, sweepLayers, PlaneSweep } from './intersect.js';

@@ -10,6 +10,9 @@
  * cuts the top outline: a thin top feature that reaches a slice plane gets exactly one layer there —
  * never lost to float noise, never doubled. A feature ending below the last plane (less than half a
  * layer above the previous top) rounds away, as mid-height slicing always does.
+ *
+ * `planVaryingLayers` plans layers of varying height (adaptive layers, a layer range's own height) on the same
+ * grid with the same rule: each layer's Z is the sum of whole-µm heights, so an uneven plan is as exact.
  */
 import { StrataError } from '../errors.js';
 import type { LayerZ } from './types.js';
@@ -61,4 +64,45 @@ export function planLayers(modelHeight: number, firstLayerHeight: number, layerH
   const last = layers[count - 1];
   if (toHalfUm(last.sliceZ) >= topHalf) last.sliceZ = (topHalf - 1) / HALF_UM_PER_MM;
   return layers;
+}
+
+/**
+ * Plan layers of varying height, on the same grid and with the same last-layer rule as `planLayers`:
+ * layer 0 is `firstLayerHeight` thick; each next one is `nextUm(bottomUm, prevUm, index)` µm thick (a whole
+ * number ≥ 1), asked with the Z of its bottom (the top of the layer before) and that layer's height, both µm.
+ * Z is summed in whole µm, so no drift: layer i's z is exactly the sum of the heights up to it.
+ */
+export function planVaryingLayers(modelHeight: number, firstLayerHeight: number, nextUm: (bottomUm: number, prevUm: number, index: number) => number): LayerZ[] {
+  if (!Number.isFinite(firstLayerHeight)) throw new StrataError('BAD_SETTING', 'Layer heights must be finite numbers.');
+  const firstUm = Math.round(firstLayerHeight * 1000);
+  if (firstUm < 1) throw new StrataError('BAD_SETTING', `Layer heights must be at least 0.001 mm (got ${firstLayerHeight}).`);
+  if (!Number.isFinite(modelHeight)) throw new StrataError('BAD_MESH', 'Model height is not a finite number.');
+  const topHalf = toHalfUm(modelHeight);
+  if (topHalf < firstUm) return [];
+  const layers: LayerZ[] = [{ index: 0, z: firstUm / 1000, height: firstUm / 1000, sliceZ: firstUm / 2000 }];
+  let zUm = firstUm, prevUm = firstUm;
+  for (;;) {
+    const i = layers.length;
+    const hUm = nextUm(zUm, prevUm, i);
+    if (!Number.isInteger(hUm) || hUm < 1) throw new Error(`layer ${i} was planned ${hUm} µm thick`);
+    // its slice plane 2·(z + h) − h in half-µm must not lie above the top
+    if (2 * zUm + hUm > topHalf) break;
+    if (i >= MAX_LAYERS) throw new StrataError('LIMIT_EXCEEDED', `The model needs more than ${MAX_LAYERS} layers.`);
+    zUm += hUm;
+    layers.push({ index: i, z: zUm / 1000, height: hUm / 1000, sliceZ: (2 * zUm - hUm) / 2000 });
+    prevUm = hUm;
+  }
+  const last = layers[layers.length - 1];
+  if (toHalfUm(last.sliceZ) >= topHalf) last.sliceZ = (topHalf - 1) / HALF_UM_PER_MM;
+  return layers;
+}
+
+/**
+ * Whether every layer after the first is `layerHeight` thick (in whole µm, as planned): an even plan, whose
+ * skin and support gap counts are the config's.
+ */
+export function evenLayers(layers: readonly LayerZ[], layerHeight: number): boolean {
+  const um = Math.round(layerHeight * 1000);
+  for (let i = 1; i < layers.length; i++) if (Math.round(layers[i].height * 1000) !== um) return false;
+  return true;
 }

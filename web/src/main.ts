@@ -439,6 +439,7 @@ async function openProject(fileName: string, p: LoadedProject): Promise<void> {
   for (const o of p.objects) {
     const it = plate.add(fileName, null, o.model, 'own', o.name);
     it.settings = { ...o.settings };
+    if (o.layerHeightProfile) it.layerHeightProfile = o.layerHeightProfile;
     objectPanel.adopt(
       it,
       o.volumes.map((v) => ({ kind: v.kind, name: v.name, shape: 'mesh' as const, ...boxOf(v.mesh), source: v.mesh, settings: { ...v.settings } })),

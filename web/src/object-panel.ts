@@ -19,8 +19,10 @@ import type { Overrides, SettingsStore } from './settings.js';
 import { boxOf, KIND_INFO, SHAPE_LABELS, VOLUME_KINDS, type PlateRange, type PlateVolume, type VolumeKind, type VolumeShape } from './volumes.js';
 
 /** Settings an object may have of its own, and those a modifier or a layer range may. */
-const OBJECT_KEYS = SETTING_KEYS.filter((k) => SETTING_SCOPE[k] !== 'print');
+const OBJECT_KEYS = SETTING_KEYS.filter((k) => SETTING_SCOPE[k] === 'object' || SETTING_SCOPE[k] === 'region');
 const REGION_KEYS = SETTING_KEYS.filter((k) => SETTING_SCOPE[k] === 'region');
+/** A layer range may also set what is the same for every object at one height (the layer height). */
+const RANGE_KEYS = SETTING_KEYS.filter((k) => SETTING_SCOPE[k] === 'region' || SETTING_SCOPE[k] === 'layer');
 
 /** Largest volume mesh file read, bytes. */
 const MAX_VOLUME_BYTES = 128 * 1024 * 1024;
@@ -296,7 +298,7 @@ export class ObjectPanel {
       return `object "${it.name}" layers ${part.fromZ}–${part.toZ} mm`;
     };
     return {
-      keys: part ? REGION_KEYS : OBJECT_KEYS,
+      keys: !part ? OBJECT_KEYS : 'kind' in part ? REGION_KEYS : RANGE_KEYS,
       isSet: (key) => key in own,
       values: () => {
         let print;

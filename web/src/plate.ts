@@ -24,6 +24,8 @@ export interface PlateItem {
   settings: Overrides;
   volumes: PlateVolume[];
   layerRanges: PlateRange[];
+  /** A project's variable layer height profile (z0, h0, z1, h1, … mm from the object's bottom). */
+  layerHeightProfile?: number[];
   /** Turns from "rotate 90°" and "lay on face", row-major 3×3. */
   rotation: number[];
   /** Turn about Z, degrees, applied after `rotation`. */
@@ -229,6 +231,7 @@ export class Plate {
         return out;
       }),
       layerRanges: it.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { ...r.settings } })),
+      ...(it.layerHeightProfile ? { layerHeightProfile: it.layerHeightProfile } : {}),
     }));
   }
 

@@ -33,6 +33,8 @@ export interface SliceItem {
   settings: Partial<Record<SettingKey, unknown>>;
   volumes: SliceVolume[];
   layerRanges: Array<{ fromZ: number; toZ: number; settings: Partial<Record<SettingKey, unknown>> }>;
+  /** Variable layer height from a project (z0, h0, z1, h1, … mm). */
+  layerHeightProfile?: number[];
 }
 
 export type ToWorker =
@@ -66,6 +68,8 @@ export interface ProjectObject {
   settings: Partial<Record<SettingKey, unknown>>;
   volumes: Array<{ kind: VolumeKind; name: string; mesh: MeshArrays; settings: Partial<Record<SettingKey, unknown>> }>;
   layerRanges: Array<{ fromZ: number; toZ: number; settings: Partial<Record<SettingKey, unknown>> }>;
+  /** PrusaSlicer's or OrcaSlicer's variable layer height profile of the object (z0, h0, z1, h1, … mm). */
+  layerHeightProfile?: number[];
 }
 
 /** A 3MF with a slicer's project data: its objects one by one, and the print's settings it holds. */

@@ -42,7 +42,7 @@ function describe(e: unknown): string {
 function load(fileName: string, bytes: ArrayBuffer, asMesh: boolean): { model: LoadedModel | null; project: LoadedProject | null } {
   const file = loadModelFile(new Uint8Array(bytes), fileName);
   if (file.objects.length === 0) throw new StrataError('EMPTY_MODEL', `${fileName} holds no mesh`);
-  const isProject = file.projectSettings !== undefined || file.objects.some((o) => o.volumes?.length || o.settings || o.layerRanges?.length);
+  const isProject = file.projectSettings !== undefined || file.objects.some((o) => o.volumes?.length || o.settings || o.layerRanges?.length || o.layerHeightProfile);
   if (asMesh || !isProject) {
     const model = modelOf(fileName, file.objects);
     model.warnings.unshift(...file.warnings);
@@ -84,7 +84,7 @@ function projectOf(fileName: string, objects: readonly MeshObject[], print: Sett
     for (const r of mapped.rejected) warnings.push(`object settings: ${r.key} = ${r.value} not taken: ${r.reason}`);
     for (const [k, v] of Object.entries(mapped.settings)) {
       const scope = SETTING_SCOPE[k as SettingKey];
-      if (scope === 'print' || (scope === 'object' && use !== 'object')) outOfScope.add(k);
+      if (scope === 'print' || (scope === 'layer' && use !== 'layer range') || (scope === 'object' && use !== 'object')) outOfScope.add(k);
       else out[k as SettingKey] = v;
     }
     return out;
@@ -95,6 +95,7 @@ function projectOf(fileName: string, objects: readonly MeshObject[], print: Sett
     settings: read(o.settings, 'object'),
     volumes: (o.volumes ?? []).map((v) => ({ kind: v.kind, name: v.name, mesh: { positions: v.mesh.positions, indices: v.mesh.indices }, settings: v.kind === 'modifier' ? read(v.settings, 'modifier') : {} })),
     layerRanges: (o.layerRanges ?? []).map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: read(r.settings, 'layer range') })),
+    ...(o.layerHeightProfile ? { layerHeightProfile: [...o.layerHeightProfile] } : {}),
   }));
   if (ignored.size) warnings.push(`object settings not used by Strata, ignored: ${[...ignored].sort().join(', ')}`);
   if (outOfScope.size) warnings.push(`object settings that Strata keeps the same for the whole print (or object), left to the print: ${[...outOfScope].sort().join(', ')}`);
@@ -127,7 +128,7 @@ function projectBuffers(p: LoadedProject): ArrayBuffer[] {
 function sliceInput(items: readonly SliceItem[]): { input: unknown[]; placed: boolean } {
   let placed = false;
   const input = items.map((it): unknown => {
-    const own = it.volumes.length > 0 || it.layerRanges.length > 0 || Object.keys(it.settings).length > 0;
+    const own = it.volumes.length > 0 || it.layerRanges.length > 0 || Object.keys(it.settings).length > 0 || !!it.layerHeightProfile;
     if (!it.placement && it.bytes) {
       if (!own) return { name: it.fileName, objects: loadModelBytes(new Uint8Array(it.bytes), it.fileName) };
       return describeObject(it, new Uint8Array(it.bytes), it.volumes);
@@ -149,6 +150,7 @@ function describeObject(it: SliceItem, mesh: unknown, volumes: readonly SliceVol
   if (Object.keys(it.settings).length) out.settings = it.settings;
   if (volumes.length) out.volumes = volumes.map((v) => (v.settings && Object.keys(v.settings).length ? v : { type: v.type, name: v.name, mesh: v.mesh }));
   if (it.layerRanges.length) out.layerRanges = it.layerRanges;
+  if (it.layerHeightProfile) out.layerHeightProfile = it.layerHeightProfile;
   return out;
 }
 

@@ -9,6 +9,7 @@ import { UM_PER_MM, type Bounds, type ExPolygon } from '../../geometry/types.js'
 import type { Config } from '../../settings/resolve.js';
 import type { LayerRegions, SupportAreas } from '../types.js';
 import { sectionOf } from '../types.js';
+import { evenLayers } from '../../slice/layers.js';
 import { AreaIndex } from '../../geometry/area-index.js';
 
 /** Under an overhang, support may come this close to the part, in support line widths ("Z overrides XY"). */
@@ -29,9 +30,67 @@ export class ModelLayers {
   /** gapOverhang(), made on first use. */
   #gapOver: ExPolygon[] | null = null;
 
+  /**
+   * With uneven layers (adaptive, a layer range's own height), the Z gaps in layers, per layer: the top gap
+   * above support layer j, the layer support under overhang layer m reaches up to, the bottom gap below
+   * support layer j. Null with even layers: the config's counts.
+   */
+  readonly #gaps: { top: Int32Array; topOf: Int32Array; bottom: Int32Array } | null;
+  /** overhangLayersOver by support layer, made on first use (uneven layers). */
+  #over: number[][] | null = null;
+  /** The most layers of a top Z gap anywhere. */
+  readonly maxTopGap: number;
+
   constructor(layers: readonly LayerRegions[], cfg: Config) {
     this.layers = layers;
     this.cfg = cfg;
+    if (evenLayers(layers, cfg.layerHeight)) {
+      this.#gaps = null;
+      this.maxTopGap = cfg.supportTopGapLayers;
+      return;
+    }
+    // a gap given in mm is as many layers as fit (a layer counts when its middle lies within it); none given is one layer
+    const heights = Int32Array.from(layers, (l) => Math.round(l.height * 1000));
+    const topMm = cfg.supportZGap, bottomMm = cfg.supportBottomZGap ?? cfg.supportZGap;
+    const n = layers.length;
+    const top = new Int32Array(n), topOf = new Int32Array(n), bottom = new Int32Array(n);
+    for (let j = 0; j < n; j++) {
+      top[j] = topMm === null ? 1 : gapLayers(heights, j, topMm, 1);
+      topOf[j] = j - 1 - (topMm === null ? 1 : gapLayers(heights, j, topMm, -1));
+      bottom[j] = bottomMm === null ? 1 : gapLayers(heights, j, bottomMm, -1);
+    }
+    this.#gaps = { top, topOf, bottom };
+    this.maxTopGap = top.reduce((a, b) => Math.max(a, b), 0);
+  }
+
+  /** Layers of the top Z gap over support layer j (between its top and the part). */
+  topGap(j: number): number {
+    return this.#gaps ? this.#gaps.top[Math.max(0, Math.min(j, this.#gaps.top.length - 1))] : this.cfg.supportTopGapLayers;
+  }
+
+  /** The layer support under the overhang of layer m reaches up to, below its top Z gap (negative: none fits). */
+  supportTop(m: number): number {
+    return this.#gaps && m >= 0 && m < this.#gaps.topOf.length ? this.#gaps.topOf[m] : m - 1 - this.cfg.supportTopGapLayers;
+  }
+
+  /**
+   * The overhang layers whose support reaches up to layer j (supportTop(m) = j), lowest first: with even
+   * layers m = j + 1 + topGap, with uneven ones none, one or several.
+   */
+  overhangLayersOver(j: number): number[] {
+    if (!this.#gaps) return [j + 1 + this.cfg.supportTopGapLayers];
+    if (!this.#over) {
+      this.#over = this.layers.map((): number[] => []);
+      this.#gaps.topOf.forEach((t, m) => {
+        if (t >= 0) this.#over![t].push(m);
+      });
+    }
+    return j >= 0 && j < this.#over.length ? this.#over[j] : [];
+  }
+
+  /** Layers of the bottom Z gap under support layer j (between the part below and the support). */
+  bottomGap(j: number): number {
+    return this.#gaps ? this.#gaps.bottom[Math.max(0, Math.min(j, this.#gaps.bottom.length - 1))] : this.cfg.supportBottomGapLayers;
   }
 
   get count(): number {
@@ -115,7 +174,7 @@ export class ModelLayers {
   gapOverhang(): ExPolygon[] {
     if (!this.#gapOver) {
       this.#gapOver = [];
-      for (let m = 1; m <= this.cfg.supportTopGapLayers; m++) for (const p of this.overhang(m)) this.#gapOver.push(p);
+      for (let m = 1; m < this.count && this.supportTop(m) < 0; m++) for (const p of this.overhang(m)) this.#gapOver.push(p);
     }
     return this.#gapOver;
   }
@@ -154,10 +213,10 @@ export class ModelLayers {
   split(j: number, s: readonly ExPolygon[]): SupportAreas {
     const cfg = this.cfg;
     if (s.length === 0) return { body: [], roof: [], floor: [] };
-    const top = cfg.supportTopGapLayers;
+    const top = this.topGap(j);
     const roofAbove = cfg.supportInterfaceLayers > 0 ? this.sectionsBetween(j, 1, top + cfg.supportInterfaceLayers) : [];
     const roof = roofAbove.length ? intersection(s, roofAbove) : [];
-    const bottom = cfg.supportBottomGapLayers;
+    const bottom = this.bottomGap(j);
     const floorBelow = cfg.supportFloorLayerCount > 0 && cfg.supportPlacement === 'everywhere' ? this.sectionsBetween(j, -(bottom + cfg.supportFloorLayerCount), -(bottom + 1)) : [];
     let floor = floorBelow.length ? intersection(s, floorBelow) : [];
     if (roof.length && floor.length) floor = difference(floor, roof);
@@ -165,6 +224,23 @@ export class ModelLayers {
     const body = dense.length ? difference(s, dense) : s.slice();
     return { body, roof, floor };
   }
+}
+
+/**
+ * How many layers from layer j (not counted) up (`dir` 1) or down (-1) a Z gap of `gapMm` takes: those whose
+ * middle lies within it (with even layers, gap / height rounded, halves up, as the config's counts).
+ */
+function gapLayers(heightsUm: Int32Array, j: number, gapMm: number, dir: 1 | -1): number {
+  const gap = gapMm * 1000 + 1e-6;
+  let k = 0, below = 0;
+  for (let i = j + dir; i >= 0 && i < heightsUm.length; i += dir) {
+    if (below + heightsUm[i] / 2 > gap) return k;
+    below += heightsUm[i];
+    k++;
+  }
+  // past the model's layers: as many more as the last one's height would fit
+  const h = heightsUm[dir > 0 ? heightsUm.length - 1 : 0] || 1;
+  return k + Math.max(0, Math.floor((gap - below) / h + 0.5));
 }
 
 /**

@@ -110,3 +110,24 @@ test('the overhang of the second layer (a part whose first layer is smaller) get
     for (let j = 1; j < 20; j++) assert.equal(layers[j].support, null, `${supportType}: nothing above the first layer (layer ${j})`);
   }
 });
+
+test('with uneven layers the Z gaps are in mm: 0.3 mm over 0.1 mm layers is three layers, under 0.3 mm ones one', () => {
+  // layers of 0.3 mm up to layer 29, then 0.1 mm ones; the table top from layer 40 (a gap of 0.2 mm would round to 2 layers of 0.2)
+  const heightOf = (j: number) => (j === 0 ? 0.2 : j < 30 ? 0.3 : 0.1);
+  for (const supportType of ['normal', 'tree'] as const) {
+    const cfg = resolveConfig({ supportEnabled: true, supportType, supportZGap: 0.3, supportBottomZGap: 0.3, supportInterfaceLayers: 2 });
+    assert.equal(cfg.supportTopGapLayers, 2, 'the config counts layers of layerHeight');
+    const layers = layersOf(50, table, cfg, heightOf);
+    drain(supportPass(layers, cfg));
+    for (const j of [37, 38, 39]) assert.equal(layers[j].support, null, `${supportType}: layer ${j} in the 0.3 mm top gap`);
+    assert.ok(area(all(layers[36])) > 0, `${supportType}: support right under the gap`);
+    assert.ok(area(layers[36].support!.roof) > 0, `${supportType}: roof`);
+  }
+  // a ledge on a post over 0.3 mm layers: a 0.3 mm gap is one layer
+  const ledge = (j: number) => (j < 10 ? [post] : j < 14 ? [top] : []);
+  const cfg = resolveConfig({ supportEnabled: true, supportZGap: 0.3 });
+  const layers = layersOf(14, ledge, cfg, (j) => (j === 0 ? 0.2 : 0.3));
+  drain(supportPass(layers, cfg));
+  assert.equal(layers[9].support, null);
+  assert.ok(area(all(layers[8])) > 0);
+});

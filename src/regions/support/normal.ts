@@ -21,14 +21,14 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
   const n = model.count;
   const out: SupportAreas[] = new Array(n);
   const w = model.widthUm;
-  const top = cfg.supportTopGapLayers;
-  const bottom = cfg.supportBottomGapLayers;
   const xy = cfg.supportXYGap * UM_PER_MM;
   const join = (SUPPORT_JOIN_MM * UM_PER_MM) / 2;
   let carried: ExPolygon[] = [];
   for (let j = n - 1; j >= 0; j--) {
     // the first layer also holds the overhang within the top Z gap over it, with no gap (there is no room for one)
-    const rawFresh = j > 0 ? model.overhang(j + 1 + top) : [...model.gapOverhang(), ...model.overhang(1 + top)];
+    // (with uneven layers, the overhang of every layer whose top Z gap ends at j: none, one or several)
+    const over = model.overhangLayersOver(j);
+    const rawFresh = j > 0 ? (over.length === 1 ? model.overhang(over[0]) : over.flatMap((m) => model.overhang(m))) : [...model.gapOverhang(), ...over.flatMap((m) => model.overhang(m))];
     const fresh = rawFresh.length && EXPAND_WIDTHS > 0 ? offset(rawFresh, EXPAND_WIDTHS * w) : rawFresh;
     // merging columns closer than the join distance also unions the fresh overhang into them
     let s = fresh.length ? closing(carried.length ? [...carried, ...fresh] : fresh, join) : carried;
@@ -43,6 +43,7 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
     }
     carried = s;
     let printed = s;
+    const bottom = model.bottomGap(j);
     if (printed.length && cfg.supportPlacement === 'everywhere' && bottom > 0) {
       // the bottom Z gap: no support in the layers right above the part
       const under = model.sectionsBetween(j, -bottom, -1);
@@ -52,7 +53,7 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
     carried = printed;
     printed = printable(printed, w);
     out[j] = { ...model.split(j, printed), whole: printed };
-    model.release(j + top + Math.max(cfg.supportInterfaceLayers, 1) + 1);
+    model.release(j + model.maxTopGap + Math.max(cfg.supportInterfaceLayers, 1) + 1);
     yield;
   }
   return out;

@@ -9,11 +9,14 @@ const island = (outline: ExPolygon): IslandRegions => ({
 });
 
 /** `sectionAt(j)` for layers 0..count-1, heights from the config, overhangs found as the regions stage does. */
-export function layersOf(count: number, sectionAt: (j: number) => ExPolygon[], cfg: Config): LayerRegions[] {
+export function layersOf(count: number, sectionAt: (j: number) => ExPolygon[], cfg: Config, heightOf?: (j: number) => number): LayerRegions[] {
   const out: LayerRegions[] = [];
+  let zUm = 0;
   for (let j = 0; j < count; j++) {
-    const h = j === 0 ? cfg.firstLayerHeight : cfg.layerHeight;
-    const z = cfg.firstLayerHeight + j * cfg.layerHeight;
+    // (with `heightOf`, uneven layers: each its own height, Z their sum in whole µm)
+    const h = heightOf ? heightOf(j) : j === 0 ? cfg.firstLayerHeight : cfg.layerHeight;
+    zUm += Math.round(h * 1000);
+    const z = heightOf ? zUm / 1000 : cfg.firstLayerHeight + j * cfg.layerHeight;
     const s = sectionAt(j);
     out.push({ index: j, z, height: h, sliceZ: z - h / 2, islands: s.map(island), overhang: overhangOf(s, j > 0 ? sectionAt(j - 1) : [], h, cfg, j === 0), support: null });
   }

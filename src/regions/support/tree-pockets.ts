@@ -54,18 +54,17 @@ export function* findPockets(src: PocketModel, overhangs: readonly ExPolygon[][]
   for (let j = 0; j < n; j++) columns.push([]);
   // with no roof the tips hold the part themselves, touching it: a column's sparse lines would not
   if (model.cfg.supportPlacement !== 'everywhere' || model.cfg.supportInterfaceLayers === 0) return { overhangs: overhangs.slice(), columns };
-  const gap = model.cfg.supportTopGapLayers;
   const kept: ExPolygon[][] = [];
   for (let m = 0; m < n; m++) {
     const over = overhangs[m];
-    if (over.length === 0 || m - 1 - gap < 0) {
+    if (over.length === 0 || model.supportTop(m) < 0) {
       kept.push(over);
       continue;
     }
     const rest: ExPolygon[] = [];
     for (const piece of over) {
       const column = pocketColumn(src, piece, m);
-      if (column) addColumn(columns, column, m - 1 - gap);
+      if (column) addColumn(columns, column, model.supportTop(m));
       else rest.push(piece);
     }
     kept.push(rest.length === over.length ? over : rest);
@@ -86,8 +85,7 @@ export function pocketColumn(src: PocketModel, piece: ExPolygon, m: number): ExP
   const { model, collision } = src;
   const cfg = model.cfg;
   const w = model.widthUm;
-  const bottom = cfg.supportBottomGapLayers;
-  const top = m - 1 - cfg.supportTopGapLayers;
+  const top = model.supportTop(m);
   const tipLayer = top - cfg.supportInterfaceLayers;
   const box = boundsOf([piece]);
   const roomless = tipLayer >= 0 && !hasRoom(src, piece, tipLayer);
@@ -96,7 +94,7 @@ export function pocketColumn(src: PocketModel, piece: ExPolygon, m: number): ExP
   let lowest = top;
   if (roomless) lowest = 0;
   else while (lowest > 0 && zTop - model.layers[lowest - 1].z * UM_PER_MM <= POCKET_MAX_MM * UM_PER_MM) lowest--;
-  if (!roomless && !partNear(model, box, top, lowest - 1 - bottom)) return null;
+  if (!roomless && !partNear(model, box, top, lowest - 1 - model.bottomGap(lowest))) return null;
   let s: ExPolygon[] = offset([piece], EXPAND_WIDTHS * w);
   if (!roomless && survives(src, s, top, lowest)) return null;
   const out: ExPolygon[][] = [];
@@ -104,6 +102,7 @@ export function pocketColumn(src: PocketModel, piece: ExPolygon, m: number): ExP
     const blocked = collision(j);
     if (blocked.length) s = difference(s, blocked);
     // the bottom Z gap: no support in the layers right above the part
+    const bottom = model.bottomGap(j);
     const under = bottom > 0 && s.length ? model.sectionsBetween(j, -bottom, -1) : [];
     if (under.length) s = difference(s, under);
     if (s.length === 0) return out.map((a) => printable(a, w));
@@ -122,26 +121,25 @@ const SURVIVOR_SAMPLES = 16;
  * and the booleans need not be run to know it.
  */
 function survives(src: PocketModel, column: readonly ExPolygon[], top: number, lowest: number): boolean {
-  const { model } = src;
-  const bottom = model.cfg.supportBottomGapLayers;
-  for (const a of column) if (cornerSurvives(src, a.outer, top, lowest, bottom)) return true;
+  for (const a of column) if (cornerSurvives(src, a.outer, top, lowest)) return true;
   return false;
 }
 
 /** Whether a corner or an edge's midpoint of `ring` survives (see survives). */
-function cornerSurvives(src: PocketModel, ring: readonly Pt[], top: number, lowest: number, bottom: number): boolean {
+function cornerSurvives(src: PocketModel, ring: readonly Pt[], top: number, lowest: number): boolean {
   const step = Math.max(1, Math.floor(ring.length / SURVIVOR_SAMPLES));
   for (let i = 0; i < ring.length; i += step) {
     const a = ring[i], b = ring[(i + 1) % ring.length];
-    if (pointSurvives(src, a.x, a.y, top, lowest, bottom) || pointSurvives(src, (a.x + b.x) / 2, (a.y + b.y) / 2, top, lowest, bottom)) return true;
+    if (pointSurvives(src, a.x, a.y, top, lowest) || pointSurvives(src, (a.x + b.x) / 2, (a.y + b.y) / 2, top, lowest)) return true;
   }
   return false;
 }
 
-function pointSurvives(src: PocketModel, x: number, y: number, top: number, lowest: number, bottom: number): boolean {
+function pointSurvives(src: PocketModel, x: number, y: number, top: number, lowest: number): boolean {
   const { model } = src;
   for (let j = top; j >= lowest; j--) {
     if (src.collisionIndex(j).contains(x, y)) return false;
+    const bottom = model.bottomGap(j);
     for (let k = Math.max(0, j - bottom); k < j; k++) if (model.sectionIndex(k).contains(x, y)) return false;
   }
   return true;

@@ -78,7 +78,6 @@ export function* treeSupport(model: ModelLayers): Generator<void, SupportAreas[]
 export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
   const cfg = model.cfg;
   const n = model.count;
-  const top = cfg.supportTopGapLayers;
   const roofLayers = cfg.supportInterfaceLayers;
   const rules = treeRules(model);
   const vol = new TreeVolumes(model, rules.radii, rules.step);
@@ -87,14 +86,18 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
 
   // the overhang each layer must hold; its tips start under the top gap and the roof
   const all: ExPolygon[][] = [];
-  let highest = -1;
+  // the highest layer support reaches up to (under the top Z gap of the highest overhang)
+  let highest = -1, highestTop = -Infinity;
   for (let m = 0; m < n; m++) {
     all.push(model.overhang(m));
-    if (all[m].length) highest = m;
+    if (all[m].length) {
+      highest = m;
+      highestTop = Math.max(highestTop, model.supportTop(m));
+    }
   }
   if (highest < 0) return { nodes, overhangs: all, pockets: all.map(() => []), vol, rules };
-  const tipTop = highest - top - roofLayers - 1;
-  const roofTop = Math.min(n - 1, highest - 1 - top);
+  const tipTop = highestTop - roofLayers;
+  const roofTop = Math.min(n - 1, highestTop);
   yield* vol.build(Math.max(roofTop, tipTop), tipTop);
   const spacing = cfg.supportTreeTipSpacingMm * UM_PER_MM;
   const { overhangs, columns: pockets } = yield* findPockets({ model, collision: (j) => vol.collision(j), collisionIndex: (j) => vol.partIndex(j), avoidance: (j) => vol.avoidance(j), tipRUm: rules.tipR }, all);
@@ -102,8 +105,7 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
   for (let j = tipTop; j >= 0; j--) {
     const { lower, stuck } = j < tipTop ? yield* descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
     for (const i of stuck) kill(nodes, j + 1, i);
-    const m = j + top + roofLayers + 1;
-    if (m < n && overhangs[m].length) yield* addTips(lower, overhangs[m], j, spacing, vol, rules);
+    for (const m of model.overhangLayersOver(j + roofLayers)) if (m < n && overhangs[m].length) yield* addTips(lower, overhangs[m], j, spacing, vol, rules);
     nodes[j] = lower;
     vol.release(j);
     yield;
@@ -116,9 +118,7 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
   const cfg = model.cfg;
   const n = model.count;
   const { nodes, overhangs, pockets, vol, rules } = plan;
-  const top = cfg.supportTopGapLayers;
   const roofLayers = cfg.supportInterfaceLayers;
-  const bottom = cfg.supportBottomGapLayers;
   const everywhere = cfg.supportPlacement === 'everywhere';
   const spacing = cfg.supportTreeTipSpacingMm * UM_PER_MM;
   const out: SupportAreas[] = [];
@@ -130,7 +130,9 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     const discs = discsOf(nodes[j], rules);
     const roofWanted: ExPolygon[] = [];
     // the first layer also holds the overhang within the top Z gap over it, with no gap (ModelLayers.gapOverhang)
-    for (let m = j === 0 ? 1 : j + 1 + top; m <= j + top + roofLayers && m < n; m++) for (const p of overhangs[m]) roofWanted.push(p);
+    // (the overhang layers whose support reaches up to layers j .. j + roofLayers − 1)
+    if (j === 0) for (let m = 1; m < n && model.supportTop(m) < 0; m++) for (const p of overhangs[m]) roofWanted.push(p);
+    for (let t = j; t < j + roofLayers; t++) for (const m of model.overhangLayersOver(t)) if (m < n) for (const p of overhangs[m]) roofWanted.push(p);
     if (discs.length === 0 && roofWanted.length === 0) {
       below = [];
       out[j] = pocketAreas(model, j, pockets[j], []) ?? out[j];
@@ -145,6 +147,7 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     const steps = roofWanted.length ? offset(union(roofWanted), -open) : [];
     const roof = steps.length ? cutAway(offset(steps, open + ROOF_GROW_WIDTHS * w), collision) : [];
     // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
+    const bottom = model.bottomGap(j);
     const base = j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
     const gapIndex = () => model.indexBetween(j, -bottom, -1);
@@ -208,12 +211,13 @@ function nearOrFar(model: ModelLayers, nearby: readonly number[], s: readonly Ex
 function* splitNear(model: ModelLayers, j: number, s: ExPolygon[], circles: readonly (RegularPolygon | null)[]): Generator<void, SupportAreas> {
   const cfg = model.cfg;
   const nearby: number[] = [];
-  for (let k = j + 1; k <= j + cfg.supportTopGapLayers + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
+  const top = model.topGap(j), bottom = model.bottomGap(j);
+  for (let k = j + 1; k <= j + top + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
   // floors only where support may stand on the part (model.split makes none in 'buildPlate' placement)
   if (cfg.supportPlacement === 'everywhere') {
-    for (let k = j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount; k < j - cfg.supportBottomGapLayers; k++) if (model.section(k).length) nearby.push(k);
+    for (let k = j - bottom - cfg.supportFloorLayerCount; k < j - bottom; k++) if (model.section(k).length) nearby.push(k);
   }
-  model.releaseBelow(j - cfg.supportBottomGapLayers - cfg.supportFloorLayerCount);
+  model.releaseBelow(j - bottom - cfg.supportFloorLayerCount);
   if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
   const { near, far } = nearOrFar(model, nearby, s, circles);
   // islands apart split apart: a few at a time

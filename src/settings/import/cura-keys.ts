@@ -225,6 +225,19 @@ export function mapCuraKeys(c: ImportContext): void {
   take('layerHeight', ['layer_height']);
   take('firstLayerHeight', ['layer_height_0']);
   const layerHeight = c.settings.layerHeight ?? (SCHEMA.layerHeight.default as number);
+  // adaptive layers: up to `variation` thinner or thicker than the layer height, changing by at most the step
+  const adaptive = str('adaptive_layer_height_enabled');
+  if (adaptive !== undefined) c.set('adaptiveLayerHeight', bool(adaptive), 'adaptive_layer_height_enabled', 'not true or false');
+  const variation = value('adaptive_layer_height_variation');
+  if (variation !== undefined) {
+    c.set('minLayerHeight', round(Math.max(0.02, layerHeight - variation)), 'adaptive_layer_height_variation layer_height');
+    // (within what the nozzle allows: Cura does not cap it)
+    const nozzle = c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number);
+    c.set('maxLayerHeight', round(Math.min(layerHeight + variation, 0.85 * nozzle)), 'adaptive_layer_height_variation layer_height');
+  }
+  take('adaptiveLayerStep', ['adaptive_layer_height_variation_step']);
+  // Cura's threshold is the horizontal distance between layer edges it aims for: no Strata equivalent
+  if (c.has('adaptive_layer_height_threshold')) c.reject('adaptive_layer_height_threshold', "Cura's target distance between layer edges has no Strata equivalent (adaptiveLayerQuality sets the stair-step depth)");
   take('lineWidth', ['line_width', 'wall_line_width', 'wall_line_width_0']);
   const factor = value('initial_layer_line_width_factor');
   if (factor !== undefined) {

@@ -108,6 +108,7 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
     c.set('firstLayerHeight', v && round(v.percent ? (layerHeight * v.value) / 100 : v.value), fl.key, 'not a height');
   }
   const firstLayerHeight = c.settings.firstLayerHeight ?? layerHeight;
+  adaptiveLayers(c);
   widths(c, flavor, nozzle, layerHeight, firstLayerHeight);
   walls(c, flavor, nozzle, layerHeight);
   seamsAndSurface(c, layerHeight);
@@ -122,6 +123,23 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
   support(c, flavor, nozzle, layerHeight);
   output(c);
   sequential(c);
+}
+
+/**
+ * Variable layer height: OrcaSlicer's `adaptive_layer_height` switch, and the printer's (first extruder's)
+ * limits, `min_layer_height` and `max_layer_height` (0: none given, Strata's default, as PrusaSlicer's 75 % of
+ * the nozzle). PrusaSlicer's own variable heights are a per-object profile (the 3MF's layer height profile).
+ */
+function adaptiveLayers(c: ImportContext): void {
+  const on = c.get('adaptive_layer_height');
+  if (on !== undefined) c.set('adaptiveLayerHeight', bool(on), 'adaptive_layer_height', 'not a yes/no');
+  for (const [key, setting] of [['min_layer_height', 'minLayerHeight'], ['max_layer_height', 'maxLayerHeight']] as const) {
+    const raw = c.get(key);
+    if (raw === undefined) continue;
+    const v = num(raw);
+    if (v === 0) continue;
+    c.set(setting, v, key, 'not a height');
+  }
 }
 
 function machine(c: ImportContext, nozzle: number): void {
