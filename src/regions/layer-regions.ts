@@ -10,7 +10,7 @@ import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
 import { SectionStream, toHalfUm, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
-import { bridgeOf } from './bridge-angle.js';
+import { anchoredBridge, bridgeOf } from './bridge-angle.js';
 import { ironingArea, type IroningIsland } from './ironing-area.js';
 import { overhangOf } from './overhang.js';
 import { BelowLevels, overhangLevels } from './overhang-levels.js';
@@ -180,12 +180,22 @@ export class RegionsRun {
     const coveredAbove = inner.length ? o.top.window(i + 1) : [];
     const coveredBelow = inner.length ? o.bottom.window(i - o.cfg.bottomLayers) : [];
     const skin = skinAreas(inner, coveredAbove, coveredBelow, o.cfg.topLayers, o.cfg.bottomLayers, w, cfg.topSkinPattern !== cfg.bottomSkinPattern);
+    const bridge = i > 0 ? bridgeOf(skin.bottom, below, w) : null;
+    // a bridge with two anchors is grown onto them (bridgeAnchor): that area is bottom skin, printed as bridge
+    let bridgeFill: RegionFill['bridgeFill'];
+    if (bridge && bridge.area.length && bridge.lines != null) {
+      const anchored = anchoredBridge(bridge.area, inner, Math.round(cfg.bridgeAnchor * UM_PER_MM));
+      if (anchored.length) {
+        bridgeFill = { area: anchored, angle: bridge.lines };
+        skin.bottom = union(skin.bottom, anchored);
+        if (skin.top.length) skin.top = difference(skin.top, anchored);
+      }
+    }
     const skinAll = allSkin(skin);
     const overlapInfill = (cfg.infillOverlap / 100) * w;
     const ironsAll = iron !== null && this.#irons(k, i, cfg) && cfg.ironingType === 'all';
     const rest = cfg.infillDensity > 0 || ironsAll ? (skinAll.length ? difference(inner, skinAll) : inner) : [];
     const sparse = cfg.infillDensity > 0 ? offset(rest, -(w / 2 - overlapInfill)) : [];
-    const bridge = i > 0 ? bridgeOf(skin.bottom, below, w) : null;
     const fill: RegionFill = {
       region,
       topSkin: skin.top,
@@ -195,6 +205,7 @@ export class RegionsRun {
       bridgeAngle: bridge && bridge.mostly ? bridge.angle : null,
       sparse,
     };
+    if (bridgeFill) fill.bridgeFill = bridgeFill;
     if (skin.both) fill.topAndBottom = skin.both;
     if (iron && this.#irons(k, i, cfg)) {
       // solid throughout: no sparse area left, or sparse infill as good as solid (OrcaSlicer: over 95 %)
