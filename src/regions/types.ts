@@ -142,6 +142,11 @@ export interface LayerRegions extends LayerZ {
    * skin, infill, ironing or support; the planner spirals the layer's wall when it is one single loop.
    */
   vase?: true;
+  /**
+   * On the first layer, where an object's bottom was open or too thin to print and the first layer took the
+   * section of the layer above as well: the area that added, mm².
+   */
+  firstLayerFilledMm2?: number;
 }
 
 /**
