@@ -332,7 +332,7 @@ export class Slicer {
       threads,
       thinLost: run.thinLost,
     };
-    const extra = [thinLossWarning(run.thinLost, cfg), vaseFlatWarning(run.vaseFlat)].filter((w): w is string => w !== null);
+    const extra = [thinLossWarning(run.thinLost, cfg), vaseFlatWarning(run.vaseFlat), firstLayerWarning(run.firstLayerFilledMm2, cfg)].filter((w): w is string => w !== null);
     return { plan: run.plan, stats, warnings: extra.length ? [...model.warnings, ...extra] : model.warnings };
   }
 }
@@ -357,6 +357,12 @@ export function thinLossWarning(lost: readonly ThinLoss[], cfg: Config): string 
   const min = ((cfg.minFeatureSize / 100) * cfg.nozzleDiameter).toFixed(2);
   const why = cfg.wallGenerator === 'classic' ? 'thinner than a line' : `thinner than minFeatureSize (${min} mm)`;
   return `${total.toFixed(2)} mm² of the model's sections is too thin to print (${why}) and is left out, on ${layers}`;
+}
+
+/** One line saying the first layer was repaired under an open or pointed bottom, or null when it was not. */
+export function firstLayerWarning(filledMm2: number, cfg: Config): string | null {
+  if (!(filledMm2 > 0)) return null;
+  return `the model's bottom is open or too thin to print at the first layer (Z ${cfg.firstLayerHeight} mm): the first layer takes the section of the layer above as well (${filledMm2.toFixed(1)} mm² added), so the print starts on the bed`;
 }
 
 /** One line naming the spiral vase layers printed flat (not one wall loop), or null when every one turned. */

@@ -4,7 +4,7 @@
  * fill, sparse infill from the pattern, and ironing over the top surfaces. Walls over air and skin over air are
  * flagged so the planner slows them / prints them as bridges.
  */
-import { difference, flatten, offset } from '../geometry/clip.js';
+import { area, difference, flatten, offset, opening } from '../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import { generateInfill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
@@ -16,6 +16,8 @@ import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { makeEntry } from './entry.js';
+import { solidFill } from '../infill/solid-fill.js';
+import { overAirMatters } from './roles.js';
 import { ironingEntry } from './ironing-paths.js';
 import { skinFills } from './skin-fill.js';
 import { fuzzyWalls } from './fuzzy-skin.js';
@@ -41,11 +43,22 @@ interface FillContext extends IslandContext {
   cfg: Config;
 }
 
-/** The skin of one region of an island, as skin-wall, skin and skin-gap entries. */
-function skinEntries(island: RegionFill, ctx: FillContext, bridgeArea: readonly ExPolygon[]): PathEntry[] {
+/**
+ * The skin of one region of an island, as skin-wall, skin and skin-gap entries, and its bridge lines.
+ * @param bridgeFill the anchored bridge, printed as its own lines (and taken out of the rest of the skin), or null
+ */
+function skinEntries(island: RegionFill, ctx: FillContext, bridgeArea: readonly ExPolygon[], bridgeFill: RegionFill['bridgeFill'] | null): PathEntry[] {
   const { cfg, widthUm: w, layer } = ctx;
-  const skinAll = allSkin({ top: island.topSkin, bottom: island.bottomSkin, exposed: island.exposed });
-  if (skinAll.length === 0 && island.exposed.length === 0) return [];
+  let skinAll = allSkin({ top: island.topSkin, bottom: island.bottomSkin, exposed: island.exposed });
+  let exposed = island.exposed;
+  const out: PathEntry[] = [];
+  if (bridgeFill) {
+    out.push(...bridgeEntries(bridgeFill, ctx));
+    // the rest of the skin, less the bridge; whatever of it is narrower than a line is the bridge's (merged into it)
+    skinAll = opening(difference(skinAll, bridgeFill.area), w / 2);
+    exposed = difference(exposed, offset(bridgeFill.area, w / 2));
+  }
+  if (skinAll.length === 0 && exposed.length === 0) return out;
   const overlapSkin = (cfg.skinOverlap / 100) * w;
   let skinWalls: Polygon[] = [];
   let fillArea: ExPolygon[];
@@ -66,8 +79,7 @@ function skinEntries(island: RegionFill, ctx: FillContext, bridgeArea: readonly 
   const fills = fillArea.length ? skinFills(island, cfg, fillArea, skinAngleOf(island, cfg, layer.index), w, ctx.params.origin) : [];
   const lines = fills.length === 1 ? fills[0].lines : fills.flatMap((f) => f.lines);
   const loops = fills.flatMap((f) => f.loops);
-  const gaps = skinGapFill(island.exposed, loops.length ? skinWalls.concat(loops) : skinWalls, lines, w);
-  const out: PathEntry[] = [];
+  const gaps = skinGapFill(exposed, loops.length ? skinWalls.concat(loops) : skinWalls, lines, w);
   const air = bridgeArea.length ? bridgeArea : null;
   if (skinWalls.length) out.push(makeEntry(cfg, 'skin-wall', true, skinWalls, w / UM_PER_MM, { overAir: air }));
   for (const f of fills) {
@@ -80,6 +92,71 @@ function skinEntries(island: RegionFill, ctx: FillContext, bridgeArea: readonly 
   }
   if (gaps.length) out.push(gapEntry(cfg, 'skin-gap', gaps));
   return out;
+}
+
+/** Bridge lines this close to their area's edge, µm, are laid just inside it. */
+const BRIDGE_EDGE_UM = 5;
+/** A bridge's lines turn by up to this much, degrees, to run parallel to a long side of their piece. */
+const BRIDGE_SNAP_DEG = 5;
+
+/**
+ * The direction of a bridge piece's lines: the bridge's, or the direction of the piece's longest side within
+ * BRIDGE_SNAP_DEG of it, so that lines beside a straight wall run along it and are not cut into pieces by it.
+ */
+function pieceAngle(piece: ExPolygon, angle: number, minLengthUm: number): number {
+  let best = angle, bestLength = minLengthUm;
+  const ring = piece.outer;
+  for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
+    const dx = ring[i].x - ring[j].x, dy = ring[i].y - ring[j].y;
+    const length = Math.hypot(dx, dy);
+    if (length <= bestLength) continue;
+    const dir = (Math.atan2(dy, dx) * 180) / Math.PI;
+    const turn = ((((dir - angle) % 180) + 270) % 180) - 90;
+    if (Math.abs(turn) <= BRIDGE_SNAP_DEG) {
+      best = angle + turn;
+      bestLength = length;
+    }
+  }
+  return best;
+}
+
+/**
+ * The bridge lines of a region: straight lines in the bridge direction across each piece of the anchored bridge,
+ * spread evenly from one side of the piece to the other at most bridgeSpacing apart (so no strip is left between
+ * the last line and the walls), each a round bead of the nozzle's diameter at bridgeFlow (the entry's width is
+ * that bead's cross-section over the layer height), every run printed as bridge.
+ */
+function bridgeEntries(bridge: NonNullable<RegionFill['bridgeFill']>, ctx: FillContext): PathEntry[] {
+  const { cfg, widthUm: w, layer } = ctx;
+  const spacing = Math.round((cfg.bridgeSpacing ?? cfg.nozzleDiameter + 0.05) * UM_PER_MM);
+  const overlap = (cfg.skinOverlap / 100) * w;
+  // the beads' centres: half a bead in from the area's edge, as far into the walls as skin reaches
+  const centres = offset(bridge.area, -(Math.max(spacing, w) / 2 - overlap));
+  const lines: Pt[][] = [];
+  for (const piece of centres) {
+    const angle = pieceAngle(piece, bridge.angle, 4 * spacing);
+    const a = (angle * Math.PI) / 180;
+    const c = Math.cos(a), sn = Math.sin(a);
+    let lo = Infinity, hi = -Infinity;
+    for (const p of piece.outer) {
+      const v = -p.x * sn + p.y * c;
+      if (v < lo) lo = v;
+      if (v > hi) hi = v;
+    }
+    const width = hi - lo - 2 * BRIDGE_EDGE_UM;
+    // n lines from one side to the other, at most `spacing` apart (one line down the middle of a narrow piece)
+    const n = width > 0 ? Math.ceil(width / spacing) + 1 : 1;
+    const step = n > 1 ? width / (n - 1) : spacing;
+    const first = n > 1 ? lo + BRIDGE_EDGE_UM : (lo + hi) / 2;
+    const origin = { x: -first * sn, y: first * c };
+    for (const l of solidFill([piece], angle, step, origin)) lines.push(l);
+  }
+  if (lines.length === 0) return [];
+  // E follows width × layer height × flow: the width that gives the round bead's cross-section at this height
+  const bead = (Math.PI / 4) * cfg.nozzleDiameter * cfg.nozzleDiameter;
+  const e = makeEntry(cfg, 'skin', false, lines, bead / layer.height);
+  if (overAirMatters(e.style)) e.overAir = lines.map((l) => new Uint8Array(l.length - 1).fill(1));
+  return [e];
 }
 
 /** Direction of a region's skin lines on a layer: across its bridge where it has one, else by the skin angle. */
@@ -120,7 +197,9 @@ function fillEntries(fill: RegionFill, ctx: IslandContext): PathEntry[] {
   const entries = infillEntries(fill, fctx);
   // skin resting on support right below it (no Z gap) is not a bridge; over a Z gap it is, as over air
   const bridgeArea = fill.bridge.length && ctx.supportBelow.length ? difference(fill.bridge, ctx.supportBelow) : fill.bridge;
-  entries.push(...skinEntries(fill, fctx, bridgeArea));
+  // the anchored bridge prints as bridge lines unless support holds part of it up
+  const held = ctx.supportBelow.length > 0 && fill.bridgeFill !== undefined && area(bridgeArea) < area(fill.bridge) - 1;
+  entries.push(...skinEntries(fill, fctx, bridgeArea, held ? null : (fill.bridgeFill ?? null)));
   const iron = ironingEntry(fill, cfg, skinAngleOf(fill, cfg, ctx.layer.index), fctx.params.origin);
   if (iron) entries.push(iron);
   return entries;

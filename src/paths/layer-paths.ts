@@ -74,6 +74,7 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
   for (const island of regions.islands) lost += island.lostMm2;
   if (lost > 0) out.lostMm2 = lost;
   if (regions.vase) out.vase = true;
+  if (regions.firstLayerFilledMm2) out.firstLayerFilledMm2 = regions.firstLayerFilledMm2;
   return out;
 }
 

@@ -76,5 +76,7 @@ export interface LayerPaths extends LayerZ {
   lostMm2?: number;
   /** A spiral vase layer (LayerRegions.vase): the planner spirals it when it is one wall loop. */
   vase?: true;
+  /** The first layer's area added under an open or pointed bottom (LayerRegions.firstLayerFilledMm2), mm². */
+  firstLayerFilledMm2?: number;
   groups: PathGroup[];
 }

@@ -75,6 +75,8 @@ export interface RunResult {
   thinLost: ThinLoss[];
   /** Spiral vase layers above the first that are not one wall loop, printed flat: layer number and Z (mm). */
   vaseFlat: VaseFlat[];
+  /** Area the first layer took from the layer above under an open or pointed bottom, mm² (0: none). */
+  firstLayerFilledMm2: number;
 }
 
 /** A spiral vase layer printed flat. */
@@ -292,7 +294,9 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const vaseFlat: VaseFlat[] = [];
     // sequential printing plans the layers object by object once every layer's paths are made
     const collected: LayerPaths[] = [];
+    let firstLayerFilledMm2 = 0;
     const plan = (lp: LayerPaths) => {
+      if (lp.firstLayerFilledMm2) firstLayerFilledMm2 += lp.firstLayerFilledMm2;
       if (lp.lostMm2) thinLost.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.lostMm2 });
       if (sequence) {
         collected.push(lp);
@@ -425,7 +429,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
     yield* paced(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
-    return { plan: printPlan, estimate, layers: planned.length, thinLost, vaseFlat };
+    return { plan: printPlan, estimate, layers: planned.length, thinLost, vaseFlat, firstLayerFilledMm2 };
   } finally {
     if (pool) yield* wait(pool.close());
   }

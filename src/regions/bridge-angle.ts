@@ -34,6 +34,8 @@ export interface Bridge {
   angle: number | null;
   /** Whether most of the skin is bridge (then all of the island's skin may take the bridge direction). */
   mostly: boolean;
+  /** The direction of the bridge's lines whether or not it is most of the skin (null: no two anchors). */
+  lines?: number | null;
 }
 
 /**
@@ -47,7 +49,21 @@ export function bridgeOf(bottom: readonly ExPolygon[], below: readonly ExPolygon
   if (raw.length === 0) return { area: [], angle: null, mostly: false };
   const over = opening(raw, (MIN_BRIDGE_WIDTHS * lineWidthUm) / 2);
   const mostly = area(raw) >= BRIDGE_SHARE * area(bottom);
-  return { area: over, angle: mostly ? anchorAngle(raw, below, lineWidthUm) : null, mostly };
+  const lines = over.length ? anchorAngle(raw, below, lineWidthUm) : null;
+  return { area: over, angle: mostly ? lines : null, mostly, lines };
+}
+
+/**
+ * The area a bridge's lines cover: the bridge grown by `anchorUm` into the region's area inside its walls (onto
+ * what the layer below holds up, and over any air next to it), so that every line starts and ends that far onto
+ * support, as PrusaSlicer's bridge anchors and Cura's bridge skin support do. The growth stops at the walls: a
+ * bridge between walls resting on thin pillars ends at the innermost wall, which lies on them.
+ * @param inner the region's area inside its walls, µm
+ */
+export function anchoredBridge(bridge: readonly ExPolygon[], inner: readonly ExPolygon[], anchorUm: number): ExPolygon[] {
+  if (bridge.length === 0 || inner.length === 0) return [];
+  if (anchorUm <= 0) return intersection(bridge, inner);
+  return intersection(offset(bridge, anchorUm), inner);
 }
 
 function anchorAngle(unsupported: readonly ExPolygon[], below: readonly ExPolygon[], lineWidthUm: number): number | null {

@@ -10,7 +10,7 @@ import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
 import { evenLayers, SectionStream, toHalfUm, type PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
-import { bridgeOf } from './bridge-angle.js';
+import { anchoredBridge, bridgeOf } from './bridge-angle.js';
 import { ironingArea, type IroningIsland } from './ironing-area.js';
 import { overhangOf } from './overhang.js';
 import { BelowLevels, overhangLevels } from './overhang-levels.js';
@@ -42,7 +42,16 @@ interface ObjectSections {
   /** With uneven layers, each layer's count of layers above and below that make the skin thickness. */
   topCounts: Int32Array | null;
   bottomCounts: Int32Array | null;
+  /** The first layer's section, once asked for (#firstSection). */
+  first?: { section: ExPolygon[]; addedMm2: number };
 }
+
+/**
+ * A first layer with less section than this share of the layer above's is taken to be an open or pointed bottom
+ * and takes the layer above's section as well (RegionsRun#firstSection). The bunny's is 0.1 %; Spot's rounded
+ * hooves (8 %: 1.1 of 13.4 mm²) and a sphere's (a third) are bottoms that meet the bed, and stay as they are.
+ */
+const FIRST_LAYER_SHARE = 0.05;
 
 /** Below this, mm², two objects' sections are taken not to overlap (touching faces, rounding). */
 const OVERLAP_MIN_MM2 = 0.05;
@@ -98,7 +107,8 @@ export class RegionsRun {
     this.#reach = Math.max(1, maxTop);
     const ironing = setup.configs.some((c) => c.ironingEnabled);
     this.#lo = Math.max(0, from - maxBottom);
-    this.#hi = Math.min(n, to + (ironing ? this.#reach : maxTop));
+    // the first layer reads the second's section (#firstSection)
+    this.#hi = Math.min(n, Math.max(to + (ironing ? this.#reach : maxTop), this.#lo === 0 ? 2 : 0));
     const run = layers.slice(this.#lo, this.#hi);
     const tolerance = Math.round(cfg.meshTolerance * UM_PER_MM);
     const stream = (m: number) => new SectionStream(meshes[m], run, tolerance);
@@ -136,10 +146,35 @@ export class RegionsRun {
     return streams.length > 1 ? union(all) : all;
   }
 
-  /** Object k's section of layer i: its parts less its negative volumes. */
+  /** Object k's section of layer i: its parts less its negative volumes (the first layer repaired: #firstSection). */
   #section(k: number, i: number): ExPolygon[] {
     if (!this.#inRun(i)) return [];
     const o = this.#objects[k];
+    if (i === 0) return (o.first ??= this.#firstSection(k)).section;
+    return this.#cutSection(o, i);
+  }
+
+  /**
+   * Object k's section of the first layer. Where the model's bottom is open (holes in the mesh there) or comes to
+   * the bed in a point or a thin rim, its section halfway up the first layer has little or nothing of what the
+   * model has just above: the first printed layer would be the second one, 0.2 mm over the bed. There (less
+   * than FIRST_LAYER_SHARE of the section of the layer above) the first layer takes the union of both sections,
+   * as Cura unites the sections through its first layer's thickness, and the area added is reported. Sinking the
+   * model into the bed (as PrusaSlicer may) would cut away a layer of the model everywhere; this adds under it
+   * only what the open bottom lacks, and leaves a model with a proper bottom exactly as it was.
+   */
+  #firstSection(k: number): { section: ExPolygon[]; addedMm2: number } {
+    const o = this.#objects[k];
+    const own = this.#cutSection(o, 0);
+    if (!this.#inRun(1)) return { section: own, addedMm2: 0 };
+    const above = this.#cutSection(o, 1);
+    const aboveArea = above.length ? area(above) : 0;
+    if (aboveArea === 0 || area(own) >= FIRST_LAYER_SHARE * aboveArea) return { section: own, addedMm2: 0 };
+    const section = own.length ? union(own, above) : above;
+    return { section, addedMm2: (area(section) - area(own)) / (UM_PER_MM * UM_PER_MM) };
+  }
+
+  #cutSection(o: ObjectSections, i: number): ExPolygon[] {
     const parts = o.parts.at(i - this.#lo).islands;
     if (o.negatives.length === 0 || parts.length === 0) return parts;
     let s = o.cut.get(i);
@@ -195,12 +230,22 @@ export class RegionsRun {
     const coveredAbove = inner.length ? o.top.window(i + 1, topLayers) : [];
     const coveredBelow = inner.length ? o.bottom.window(i - bottomLayers, bottomLayers) : [];
     const skin = skinAreas(inner, coveredAbove, coveredBelow, topLayers, bottomLayers, w, cfg.topSkinPattern !== cfg.bottomSkinPattern);
+    const bridge = i > 0 ? bridgeOf(skin.bottom, below, w) : null;
+    // a bridge with two anchors is grown onto them (bridgeAnchor): that area is bottom skin, printed as bridge
+    let bridgeFill: RegionFill['bridgeFill'];
+    if (bridge && bridge.area.length && bridge.lines != null) {
+      const anchored = anchoredBridge(bridge.area, inner, Math.round(cfg.bridgeAnchor * UM_PER_MM));
+      if (anchored.length) {
+        bridgeFill = { area: anchored, angle: bridge.lines };
+        skin.bottom = union(skin.bottom, anchored);
+        if (skin.top.length) skin.top = difference(skin.top, anchored);
+      }
+    }
     const skinAll = allSkin(skin);
     const overlapInfill = (cfg.infillOverlap / 100) * w;
     const ironsAll = iron !== null && this.#irons(k, i, cfg) && cfg.ironingType === 'all';
     const rest = cfg.infillDensity > 0 || ironsAll ? (skinAll.length ? difference(inner, skinAll) : inner) : [];
     const sparse = cfg.infillDensity > 0 ? offset(rest, -(w / 2 - overlapInfill)) : [];
-    const bridge = i > 0 ? bridgeOf(skin.bottom, below, w) : null;
     const fill: RegionFill = {
       region,
       topSkin: skin.top,
@@ -210,6 +255,7 @@ export class RegionsRun {
       bridgeAngle: bridge && bridge.mostly ? bridge.angle : null,
       sparse,
     };
+    if (bridgeFill) fill.bridgeFill = bridgeFill;
     if (skin.both) fill.topAndBottom = skin.both;
     if (iron && this.#irons(k, i, cfg)) {
       // solid throughout: no sparse area left, or sparse infill as good as solid (OrcaSlicer: over 95 %)
@@ -379,8 +425,11 @@ export class RegionsRun {
     }
     this.#checkOverlaps(i);
     const vase = this.#vase(i) ? { vase: true as const } : {};
-    if (overhangs.length === 1) return { ...z, islands, overhang: overhangs[0], support: null, ...vase };
-    return { ...z, islands, overhang: overhangs.flat(), overhangs, support: null, ...vase };
+    let filled = 0;
+    if (i === 0) for (const o of this.#objects) filled += o.first?.addedMm2 ?? 0;
+    const repaired = filled > 0 ? { firstLayerFilledMm2: filled } : {};
+    if (overhangs.length === 1) return { ...z, islands, overhang: overhangs[0], support: null, ...vase, ...repaired };
+    return { ...z, islands, overhang: overhangs.flat(), overhangs, support: null, ...vase, ...repaired };
   }
 
   /** Refuse objects with different settings that share volume on layer i. */

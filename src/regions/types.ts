@@ -50,6 +50,12 @@ export interface RegionFill {
   /** Centreline area of the sparse infill. */
   sparse: ExPolygon[];
   /**
+   * The bridge as its lines print (bridge-angle.ts, anchoredBridge): `bridge` grown by bridgeAnchor into the
+   * region's area held by the layer below, and the direction of its lines, support to support. Absent where the
+   * bridge has no two anchors (a cantilever: its skin keeps the skin's lines, flagged over air).
+   */
+  bridgeFill?: { area: ExPolygon[]; angle: number };
+  /**
    * The part of `bottomSkin` exposed above too: printed in the top skin's pattern (set only where the top
    * and bottom skin patterns differ).
    */
@@ -136,6 +142,11 @@ export interface LayerRegions extends LayerZ {
    * skin, infill, ironing or support; the planner spirals the layer's wall when it is one single loop.
    */
   vase?: true;
+  /**
+   * On the first layer, where an object's bottom was open or too thin to print and the first layer took the
+   * section of the layer above as well: the area that added, mm².
+   */
+  firstLayerFilledMm2?: number;
 }
 
 /**

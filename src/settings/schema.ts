@@ -355,7 +355,9 @@ export const SCHEMA = {
 
   // ── bridges and overhangs ────────────────────────────────────────────────────
   bridgeSpeed: when(num(25, 1, 1000, 'mm/s', 'skin', 'Speed of skin printed over air (bridges).'), null, 'overhangs'),
-  bridgeFlow: when(num(100, 10, 200, '%', 'skin', 'Flow of bridge lines, % of normal.'), null, 'overhangs'),
+  bridgeFlow: when(num(100, 10, 200, '%', 'skin', "Flow of bridge lines: % of a round bead one nozzle diameter across (PrusaSlicer's bridge flow ratio with thick bridges), which sags into the gap below the layer as a strand does; skin-wall and other skin runs over air that are not bridge lines (over a cantilever) print at this % of their normal flow."), null, 'overhangs'),
+  bridgeSpacing: when(optNum(0.1, 5, 'mm', 'skin', "Distance between bridge lines. Empty (null) = nozzleDiameter + 0.05 mm (PrusaSlicer's spacing of its round bridge beads). Lines are spread evenly over each bridge, never further apart than this, so none is left narrower beside the walls."), null, 'overhangs'),
+  bridgeAnchor: when(num(2, 0, 20, 'mm', 'skin', "How far bridges reach onto the part held by the layer below, mm: the bridge is grown by this much into the solid and sparse area round it, and its lines run across the gap in the bridge direction and end that far onto support on both sides (PrusaSlicer's bridge anchoring, Cura's bridge skin support). 0 = bridge lines stop where the air ends."), null, 'overhangs'),
   bridgeFanSpeed: when(num(100, 0, 100, '%', 'cooling', 'Part-cooling fan while printing bridges.'), null, 'overhangs'),
   overhangWallSpeed: when(num(15, 1, 1000, 'mm/s', 'walls', 'Speed of walls where they hang over nothing on the layer below.'), null, 'overhangs'),
   dynamicOverhangSpeeds: when(bool(false, 'walls', "Slow walls down by how much of the line hangs over nothing on the layer below, in four steps: a quarter of the line width or more (overhangSpeed25), half (overhangSpeed50), three quarters (overhangSpeed75) and all of it (overhangWallSpeed), as PrusaSlicer's dynamic overhang speeds and OrcaSlicer's overhang speeds. Off: only walls wholly over nothing are slowed."), null, 'overhangs'),

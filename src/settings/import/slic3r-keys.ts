@@ -363,6 +363,12 @@ function surfaces(c: ImportContext): void {
     const v = first(p.value)?.toLowerCase();
     c.set(setting, v === undefined ? undefined : SKIN_PATTERN[v], p.key, `pattern "${v}" has no Strata skin equivalent (lines, monotonic, concentric)`);
   }
+  // PrusaSlicer's bridge_flow_ratio, OrcaSlicer's bridge_flow: a ratio (1 = 100 %) of the same round bridge bead
+  const bridgeFlow = c.getAny('bridge_flow_ratio', 'bridge_flow');
+  if (bridgeFlow) {
+    const p = numOrPercent(first(bridgeFlow.value));
+    c.set('bridgeFlow', p === undefined ? undefined : p.percent ? p.value : p.value * 100, bridgeFlow.key, 'not a ratio');
+  }
   const on = c.getAny('ironing');
   if (on) c.set('ironingEnabled', bool(on.value), on.key, 'not 0 or 1');
   const type = c.getAny('ironing_type');
