@@ -3,7 +3,8 @@
  *
  * Understood: G0/G1 (X Y Z E F), G2/G3 arcs (I J or R, split into short chords), G90/G91, M82/M83 (E is relative
  * under G91 or M83, as in Marlin, Klipper and Repetier), G92 (axes and E), G28 (homed axes to 0), G20/G21,
- * G10/G11 firmware retraction (G10 with P or L is a tool offset and ignored), `N` line numbers and `*` checksums,
+ * G10/G11 firmware retraction (G10 with P or L is a tool offset and ignored), retractions spread over several
+ * moves (wipes: XY with negative E) counted once, `N` line numbers and `*` checksums,
  * `;` and `( )` comments. Markers: `;LAYER:n` (Cura), `;LAYER_CHANGE` (PrusaSlicer, Orca), `; CHANGE_LAYER`
  * (Bambu), `;TYPE:name` and `; FEATURE: name` (mapped to canonical features), `;HEIGHT:h` (PrusaSlicer, Strata:
  * the layer's height).
@@ -459,9 +460,18 @@ class GcodeParserState implements GcodeParser {
     this.raw.pushExtrusion(this.x, this.y, tx, ty, tz, de, this.f, this.feature, this.block);
   }
 
+  /**
+   * Negative E. Moves that go on retracting with nothing extruded or primed in between (a retraction
+   * spread along a wipe, as PrusaSlicer, OrcaSlicer and Strata write it) are one retraction.
+   */
   private retract(amount: number): void {
+    const continuing = this.pending > BALANCE_TOLERANCE_MM;
     this.retracted += amount;
     this.pending += amount;
+    if (continuing) {
+      this.raw.extendRetraction(amount);
+      return;
+    }
     this.retractions++;
     this.raw.pushRetraction(RetractionKind.Retract, amount, this.lineNo, this.block);
   }

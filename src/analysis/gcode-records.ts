@@ -86,6 +86,12 @@ export class RawRecords {
     t.block.push(block);
   }
 
+  /** More filament for the last retraction record (a retraction spread over several moves: a wipe). */
+  extendRetraction(amount: number): void {
+    const a = this.retraction.amount;
+    if (a.length > 0) a.data[a.length - 1] += amount;
+  }
+
   pushRetraction(kind: number, amount: number, line: number, block: number): void {
     const r = this.retraction;
     r.kind.push(kind);

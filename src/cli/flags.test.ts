@@ -166,7 +166,7 @@ test('every setting flag changes the G-code (or is refused by the slice it limit
   for (const key of SETTING_KEYS) {
     const def: SettingDef = SCHEMA[key];
     const context: string[] = [];
-    for (const [k, v] of Object.entries(def.onlyWith ?? {})) context.push(...setting(k, Array.isArray(v) ? v[0] : v));
+    for (const [k, v] of Object.entries(def.onlyWith ?? {})) context.push(...setting(k, Array.isArray(v) ? v[0] : typeof v === 'object' ? (v as { example: number }).example : v));
     const need = def.needs ? NEEDS[def.needs] : { args: [], models: [MODEL] };
     context.push(...need.args);
     const base = await baseline(context, need.models);

@@ -1,6 +1,6 @@
 /** `strata infillers`, `strata presets` and `strata settings`: what is available, as text or JSON. */
 import { listPresets } from '../settings/presets/index.js';
-import { SCHEMA, SETTING_KEYS, type SettingDef } from '../settings/schema.js';
+import { SCHEMA, SETTING_KEYS, type OnlyWithValue, type SettingDef } from '../settings/schema.js';
 import { SETTING_SCOPE } from '../settings/scope.js';
 import { listInfillers } from '../shader/node-folder.js';
 import { kebab, type ParsedArgs } from './args.js';
@@ -38,6 +38,13 @@ export function cmdPresets(args: ParsedArgs, write: Write): void {
   for (const f of filaments) write(`  ${f.id.padEnd(w)}  ${f.name}\n`);
 }
 
+/** One condition of `onlyWith` as the settings list prints it: `key=value`, `key=a|b`, `key>0`. */
+function onlyWithText(key: string, v: OnlyWithValue): string {
+  if (Array.isArray(v)) return `${key}=${v.join('|')}`;
+  if (typeof v === 'object') return `${key}>${(v as { above: number }).above}`;
+  return `${key}=${String(v)}`;
+}
+
 export function cmdSettings(args: ParsedArgs, write: Write): void {
   if (args.flags.json === true) {
     write(JSON.stringify(Object.fromEntries(SETTING_KEYS.map((k) => [k, { flag: `--${kebab(k)}`, scope: SETTING_SCOPE[k], ...SCHEMA[k] }])), null, 2) + '\n');
@@ -48,7 +55,7 @@ export function cmdSettings(args: ParsedArgs, write: Write): void {
     const range =
       d.type === 'number' || d.type === 'integer' ? ` [${d.min}–${d.max}]` : d.type === 'enum' ? ` {${d.values.join('|')}}` : d.type === 'boolean' ? ' (--no-' + kebab(key) + ')' : '';
     const def = d.type === 'string' ? '(template)' : JSON.stringify(d.default);
-    const only = d.onlyWith ? `  (only with ${Object.entries(d.onlyWith).map(([k, v]) => `${kebab(k)}=${Array.isArray(v) ? v.join('|') : String(v)}`).join(', ')})` : '';
+    const only = d.onlyWith ? `  (only with ${Object.entries(d.onlyWith).map(([k, v]) => onlyWithText(kebab(k), v)).join(', ')})` : '';
     write(`--${kebab(key)} ${d.unit ? `(${d.unit}) ` : ''}default ${def}${range}${only}  [${SETTING_SCOPE[key]}]\n    ${d.description}\n`);
   }
 }

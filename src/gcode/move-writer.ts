@@ -308,6 +308,21 @@ export class MoveWriter implements MoveSink {
     this.out.endLine();
   }
 
+  /** A wipe: G1 to (x, y) retracting `filament` on the way (no E with firmware retraction, whose wipe retracts nothing). */
+  wipe(x: number, y: number, _length: number, filament: number, speed: number): void {
+    const ux = Math.round(x);
+    const uy = Math.round(y);
+    if (ux === this.x && uy === this.y) {
+      this.eTotal -= filament; // shorter than a micrometre: carried into the next E written
+      return;
+    }
+    this.out.text('G1');
+    this.feed(speed);
+    this.xy(ux, uy);
+    if (filament > 0) this.e(-filament);
+    this.out.endLine();
+  }
+
   prime(filament: number, speed: number): void {
     if (this.o.firmwareRetraction) {
       this.out.line('G11');

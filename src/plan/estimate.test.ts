@@ -33,6 +33,11 @@ const S: EstimateSettings = {
   gcodeFlavor: 'marlin',
   minimumCruiseRatio: 0.5,
   nozzleDiameter: 0.4,
+  zHopSpeed: null,
+  wipeDistance: 0,
+  retractBeforeWipe: 0,
+  coastingVolume: 0,
+  coastingMinVolume: 0.8,
 };
 
 const pt = (xMm: number, yMm: number): Pt => ({ x: Math.round(xMm * 1000), y: Math.round(yMm * 1000) });

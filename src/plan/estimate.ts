@@ -30,6 +30,10 @@
  *   primes are capped at `maxSpeedE` and accelerate at `retractAcceleration` (else `maxAccelerationE`).
  * Heating, homing and the start/end G-code are not estimated.
  *
+ * Wipes (moves.ts) are travels in the chain (Marlin model: their speed cut so that the retraction on the
+ * way stays within `maxSpeedE`; Klipper: moves with negative E, limited as Klipper limits them); coasted
+ * ends are travels at the extrusion's speed.
+ *
  * Filament: Σ E of the extrusions (width × height × length over the filament cross-section × flow ×
  * flowRate) plus the extra prime after each retraction; weight from `filamentDensity` (g/cm³).
  */
@@ -205,6 +209,10 @@ class KlipperTimer implements MoveSink {
   prime(filament: number, speed: number): void {
     this.filament += filament;
     this.planner.move(0, 0, 0, filament, speed);
+  }
+  wipe(x: number, y: number, length: number, filament: number, speed: number): void {
+    this.filament -= filament;
+    this.xy(x, y, length, 0, -filament, speed);
   }
   objectStart(): void {}
   objectEnd(): void {}
@@ -423,6 +431,12 @@ class MotionTimer implements MoveSink {
   prime(filament: number, speed: number): void {
     this.filament += filament;
     this.pointToPoint(filament, Math.min(speed, this.limits.maxSpeedE), this.limits.retractAccel);
+  }
+  wipe(x: number, y: number, length: number, filament: number, speed: number): void {
+    this.filament -= filament;
+    // a travel whose E (the retraction on the way) may not outrun the extruder's feed-rate limit
+    const limit = filament > 0 && length > 0 ? (this.limits.maxSpeedE * length) / filament : Infinity;
+    this.push(x, y, length, speed < limit ? speed : limit, this.limits.travelAccel);
   }
   objectStart(): void {}
   objectEnd(): void {}

@@ -16,6 +16,7 @@ import { scarfRuns } from './scarf.js';
 import { finishingTurn, openLoopNear, spiralTurn } from './spiral-vase.js';
 import { chooseSeam, rotateLoop } from './seam.js';
 import { PartGuard } from './support-travel.js';
+import { printedIsland, RetractionWindow, routeOverIslands, type PrintedIsland } from './travel-rules.js';
 import type { ExtrudeStep, LayerPlan, PlanStep } from './types.js';
 
 export interface PlanState {
@@ -30,6 +31,8 @@ export interface PlanState {
    * the turn's layer it goes into, should the next layer not go on turning (endSpiral).
    */
   spiralEnd?: { finish: PlanStep[]; into: PlanStep[] };
+  /** The retractions counted for retractionCountMax (travel-rules.ts), from layer to layer; made when first needed. */
+  retractions?: RetractionWindow;
 }
 
 interface Ctx {
@@ -58,6 +61,13 @@ interface Ctx {
   object?: number;
   /** On the first layer: each entry style as the first layer prints it (every run at the first-layer speed). */
   firstStyles: Map<EntryStyle, EntryStyle>;
+  /** The islands printed so far on this layer (zHopOnlyOverParts). */
+  printed: PrintedIsland[];
+  /** The area of the group being printed, and of the group of the last extrusion (the one a travel leaves). */
+  groupArea: ExPolygon | null;
+  leaving: ExPolygon | null;
+  /** With retractionCountMax: the retractions counted and the filament extruded. */
+  window: RetractionWindow | null;
 }
 
 /** One path as the planner prints it: its points and the channels that go with them. */
@@ -81,7 +91,10 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   const speed = ctx.first ? cfg.firstLayerTravelSpeed : cfg.travelSpeed;
   if (from.x === to.x && from.y === to.y) {
     // a layer that starts where the last one ended still retracts on the layer change when asked
-    if (forceRetract && cfg.retractionEnabled && cfg.retractionDistance > 0) ctx.steps.push({ kind: 'travel', points: [to], retract: true, zHop: cfg.zHop, speed });
+    if (forceRetract && cfg.retractionEnabled && cfg.retractionDistance > 0) {
+      ctx.window?.add();
+      ctx.steps.push({ kind: 'travel', points: [to], retract: true, zHop: cfg.zHopOnlyOverParts ? 0 : cfg.zHop, speed });
+    }
     return;
   }
   const minTravelUm = cfg.retractionMinTravel * UM_PER_MM;
@@ -117,8 +130,28 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
   if (retract && !forceRetract && cfg.supportLimitRetractions && ctx.kind === 'support' && ctx.lastKind === 'support' && points.length === 1) {
     retract = !(ctx.guard ??= new PartGuard([ctx.islands, ctx.below])).clear(from, to);
   }
-  ctx.steps.push({ kind: 'travel', points, retract, zHop: retract ? cfg.zHop : 0, speed });
+  // retractionCountMax: a travel that stays inside skips the retraction once the window is full
+  if (retract && !forceRetract && !leaves && ctx.window?.full()) retract = false;
+  if (retract) ctx.window?.add();
+  let zHop = retract ? cfg.zHop : 0;
+  if (zHop > 0 && cfg.zHopOnlyOverParts && !routeOverIslands(from, points, ctx.printed, ctx.leaving)) zHop = 0;
+  ctx.steps.push({ kind: 'travel', points, retract, zHop, speed });
   ctx.at = to;
+}
+
+/** Filament of a run as the moves extrude it (mm; rectangular cross-section, moves.ts), for retractionCountMax. */
+function runFilament(ctx: Ctx, run: Run, flow: number): number {
+  const { points, widths } = run;
+  const n = points.length;
+  const edges = run.closed ? n : n - 1;
+  let sum = 0;
+  for (let i = 0; i < edges; i++) {
+    const j = i + 1 === n ? 0 : i + 1;
+    const length = Math.hypot(points[j].x - points[i].x, points[j].y - points[i].y) / UM_PER_MM;
+    sum += length * (widths ? (widths[i]! + widths[j]!) / 2 : run.width);
+  }
+  const r = ctx.cfg.filamentDiameter / 2;
+  return (sum * ctx.layer.height * flow * (ctx.cfg.flowRate / 100)) / (Math.PI * r * r);
 }
 
 /**
@@ -158,6 +191,8 @@ function extrude(ctx: Ctx, style: ExtrusionStyle, run: Run): void {
     fan: style.fan,
   };
   ctx.steps.push(step);
+  if (ctx.window) ctx.window.extruded += runFilament(ctx, run, style.flow);
+  ctx.leaving = ctx.groupArea;
   ctx.lastKind = ctx.kind;
   ctx.at = run.closed ? points[0] : points[points.length - 1];
 }
@@ -342,6 +377,7 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
   ctx.innerArea = undefined;
   ctx.kind = group.kind;
   ctx.object = group.object;
+  ctx.groupArea = group.area ?? null;
   const entries = sortEntries(group.entries, ctx.cfg.wallOrder);
   let combed = false;
   // without a retraction on the layer change, a layer that starts over the island the nozzle is already
@@ -375,6 +411,7 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
       combed = true;
     }
   }
+  if (ctx.cfg.zHopOnlyOverParts && group.kind === 'island' && group.area) ctx.printed.push(printedIsland(group.area));
   ctx.object = undefined;
 }
 
@@ -517,6 +554,8 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
   const ctx: Ctx = {
     cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined, innerArea: undefined,
     kind: null, lastKind: null, islands, below: state.below ?? [], guard: null, firstStyles: new Map(),
+    printed: [], groupArea: null, leaving: null,
+    window: cfg.retractionCountMax > 0 ? (state.retractions ??= new RetractionWindow(cfg.retractionCountMax, cfg.retractionExtrusionWindow ?? cfg.retractionDistance)) : null,
   };
   // a spiral vase layer above the model's first, over a layer below it, turns when it is one loop
   const turn = layer.vase && layer.index > 0 && !first && state.z !== undefined && layer.z > state.z ? spiralLoop(layer) : null;

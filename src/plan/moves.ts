@@ -32,7 +32,22 @@
  *   retract/prime pairs and never a layer change. Every object is ended before its layer ends.
  * - Firmware retraction: the prime is the same length as the retraction (the firmware's own lengths are
  *   used; no extra prime can be asked for).
- * - Standalone Z moves go at Z_SPEED_MM_S, or `maxSpeedZ` when that is slower.
+ * - Standalone Z moves go at Z_SPEED_MM_S, or `maxSpeedZ` when that is slower; a z-hop's rise and
+ *   descent at `zHopSpeed` when set (capped at `maxSpeedZ`). The hop is a Z move of its own, before
+ *   the XY travel (no ramp).
+ * - Wipe (`wipeDistance` > 0): a retracting travel that comes right after an extrusion first retracts
+ *   `retractBeforeWipe` % of the retraction on the spot, then moves back along the path the nozzle has
+ *   just followed (that extrusion, and its coasted end) for up to `wipeDistance`, retracting the rest
+ *   on the way in proportion to the length moved (`wipe` moves: XY with negative E); what a shorter path
+ *   leaves of it is retracted on the spot at the wipe's end. Then the lift and the travel, from the
+ *   wipe's end. Wipe speed: 80 % of the travel speed, slower when the retraction would otherwise run
+ *   faster than `retractionSpeed`. With firmware retraction the wipe moves carry no E and come before
+ *   the G10.
+ * - Coasting (`coastingVolume` > 0): an extrusion right before a retracting travel (the next step, or the
+ *   next layer's first) ends with a plain move over its last coastingVolume / (width × height) mm (the
+ *   end width where widths vary), at the extrusion's speed: `travel` moves, so the coasted part ends
+ *   exactly where the extrusion ended and the travel starts. Not on steps with a Z per point, with less
+ *   volume than `coastingMinVolume` (length × width × height), or shorter than twice the coasted length.
  */
 import type { ExtrudeStep, LayerPlan, PrintPlan } from './types.js';
 import type { Settings } from '../settings/schema.js';
@@ -59,7 +74,17 @@ export type MoveSettings = Pick<
   | 'firstLayerTravelSpeed'
   | 'firmwareRetraction'
   | 'maxSpeedZ'
+  | 'zHopSpeed'
+  | 'wipeDistance'
+  | 'retractBeforeWipe'
+  | 'coastingVolume'
+  | 'coastingMinVolume'
 >;
+
+/** Share of the travel speed a wipe moves at (PrusaSlicer's and OrcaSlicer's default). */
+export const WIPE_SPEED_FACTOR = 0.8;
+/** Longest chord a wipe or a coasted move follows an arc by, mm. */
+const ARC_CHORD_MM = 0.5;
 
 /**
  * Receives the moves of a plan. Positions are µm (bed space), Z and lengths mm, speeds mm/s (already
@@ -79,6 +104,11 @@ export interface MoveSink {
   /** An extrusion along a circular arc around (cx, cy) µm to (x, y); `length` is the arc's, mm. */
   arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void;
   retract(filament: number, speed: number): void;
+  /**
+   * A wipe move to (x, y) µm, `length` mm, retracting `filament` mm on the way (0 with firmware
+   * retraction: a plain move).
+   */
+  wipe(x: number, y: number, length: number, filament: number, speed: number): void;
   prime(filament: number, speed: number): void;
   /** The moves of object `index` (into `PrintPlan.objects`) begin. */
   objectStart(index: number): void;
@@ -171,26 +201,42 @@ export function walkPlan(plan: PrintPlan, s: MoveSettings, sink: MoveSink): void
 
 /** What the walk carries from layer to layer. */
 interface Walk {
+  plan: PrintPlan;
   s: MoveSettings;
   sink: MoveSink;
   retractDistance: number;
   primeDistance: number;
   zSpeed: number;
+  /** Speed of a z-hop's Z moves. */
+  hopSpeed: number;
   pos: Position;
   /** The object whose moves are open. */
   open: number;
+  /** Wipe on (wipeDistance > 0 with retraction). */
+  wipe: boolean;
+  /**
+   * With wipe: the XY points (µm, x and y interleaved) the nozzle went through in the last extrude step,
+   * its coasted end included, up to where it is; emptied by any other move.
+   */
+  behind: number[];
 }
 
 /** `walkPlan` as steps: yields after each layer, so a caller can pause between layers. */
 export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink): Generator<void, void> {
+  const zSpeed = s.maxSpeedZ !== null && s.maxSpeedZ < Z_SPEED_MM_S ? s.maxSpeedZ : Z_SPEED_MM_S;
+  const retractDistance = s.retractionEnabled ? s.retractionDistance : 0;
   const w: Walk = {
+    plan,
     s,
     sink,
-    retractDistance: s.retractionEnabled ? s.retractionDistance : 0,
+    retractDistance,
     primeDistance: !s.retractionEnabled ? 0 : s.firmwareRetraction ? s.retractionDistance : s.retractionDistance + s.retractionExtraPrime,
-    zSpeed: s.maxSpeedZ !== null && s.maxSpeedZ < Z_SPEED_MM_S ? s.maxSpeedZ : Z_SPEED_MM_S,
+    zSpeed,
+    hopSpeed: s.zHopSpeed === null ? zSpeed : s.maxSpeedZ !== null && s.maxSpeedZ < s.zHopSpeed ? s.maxSpeedZ : s.zHopSpeed,
     pos: { x: 0, y: 0, z: NaN, known: false },
     open: NO_OBJECT,
+    wipe: retractDistance > 0 && s.wipeDistance > 0,
+    behind: [],
   };
   for (let li = 0; li < plan.layers.length; li++) {
     walkLayer(w, plan.layers[li]!, li);
@@ -198,14 +244,101 @@ export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink)
   }
 }
 
+/** Whether the step after step `si` of layer `li` (the next layer's first, after a layer's last) is a retracting travel. */
+function retractsNext(w: Walk, li: number, si: number): boolean {
+  const steps = w.plan.layers[li]!.steps;
+  const next = si + 1 < steps.length ? steps[si + 1] : w.plan.layers[li + 1]?.steps[0];
+  return next !== undefined && next.kind === 'travel' && next.retract;
+}
+
+/** Point (µm) at `distance` mm along the arc from (x, y) around (cx, cy) in its direction. */
+function alongArc(x: number, y: number, cx: number, cy: number, clockwise: boolean, distance: number): [number, number] {
+  const r = hypot(x - cx, y - cy);
+  const a = Math.atan2(y - cy, x - cx) + ((clockwise ? -1 : 1) * distance * 1000) / r;
+  return [cx + r * Math.cos(a), cy + r * Math.sin(a)];
+}
+
+/** Points (µm) every ARC_CHORD_MM or less along an arc of `length` mm from (x, y), after the start, up to (ex, ey) exactly. */
+function arcChords(x: number, y: number, ex: number, ey: number, cx: number, cy: number, clockwise: boolean, length: number): number[] {
+  const pieces = Math.max(1, Math.ceil(length / ARC_CHORD_MM));
+  const out: number[] = [];
+  for (let k = 1; k < pieces; k++) out.push(...alongArc(x, y, cx, cy, clockwise, (length * k) / pieces));
+  out.push(ex, ey);
+  return out;
+}
+
+/**
+ * The coasted length of an extrude step (mm, from its end), or 0 when it is not coasted: see the module
+ * comment. `n` points, `last` segments.
+ */
+function coastLength(s: MoveSettings, step: ExtrudeStep, n: number, last: number): number {
+  if (step.z) return 0;
+  const width = step.widths ? step.widths[step.closed ? 0 : n - 1]! : step.width;
+  const coast = s.coastingVolume / (width * step.height);
+  if (!(coast > 0)) return 0;
+  const points = step.points;
+  let total = 0;
+  let p = points[0]!;
+  for (let i = 1; i <= last; i++) {
+    const q = points[i === n ? 0 : i]!;
+    const arc = step.arcs?.[i];
+    total += arc ? arcLengthMm(p.x, p.y, q.x, q.y, arc.cx, arc.cy, arc.clockwise) : hypot(q.x - p.x, q.y - p.y) / 1000;
+    p = q;
+  }
+  if (total < 2 * coast || total * width * step.height < s.coastingMinVolume) return 0;
+  return coast;
+}
+
+/**
+ * Retract for a travel with a wipe (see the module comment): back along `w.behind` from the nozzle,
+ * retracting on the way; `travelSpeed` the travel's (capped).
+ */
+function wipeRetract(w: Walk, travelSpeed: number): void {
+  const { s, sink, pos, behind } = w;
+  const total = w.retractDistance;
+  const firmware = s.firmwareRetraction;
+  const before = firmware ? 0 : (total * s.retractBeforeWipe) / 100;
+  const during = firmware ? 0 : total - before;
+  const distance = s.wipeDistance;
+  let speed = WIPE_SPEED_FACTOR * travelSpeed;
+  if (during > 0 && (s.retractionSpeed * distance) / during < speed) speed = (s.retractionSpeed * distance) / during;
+  speed = capSpeed(speed, s.maxSpeed);
+  if (before > 0) sink.retract(before, s.retractionSpeed);
+  let left = distance;
+  let retracted = 0;
+  let x = pos.x;
+  let y = pos.y;
+  for (let k = behind.length - 4; k >= 0 && left > 0; k -= 2) {
+    const dx = behind[k]! - x;
+    const dy = behind[k + 1]! - y;
+    const length = Math.sqrt(dx * dx + dy * dy) / 1000;
+    if (length === 0) continue;
+    const part = length < left ? length : left;
+    const f = part / length;
+    const tx = part === length ? behind[k]! : x + dx * f;
+    const ty = part === length ? behind[k + 1]! : y + dy * f;
+    left -= part;
+    const e = left > 0 ? (during * part) / distance : during - retracted;
+    sink.wipe(tx, ty, part, e, speed);
+    retracted += e;
+    x = tx;
+    y = ty;
+  }
+  pos.x = x;
+  pos.y = y;
+  if (firmware) sink.retract(total, s.retractionSpeed);
+  else if (during - retracted > 0) sink.retract(during - retracted, s.retractionSpeed);
+}
+
 /**
  * The moves of one layer. A plain function, called once a layer, which the engine optimises early: the loop
  * of a generator's own body runs unoptimised to its end.
  */
 function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
-  const { s, sink, pos, retractDistance, primeDistance, zSpeed } = w;
+  const { s, sink, pos, retractDistance, primeDistance, zSpeed, hopSpeed, behind } = w;
   const layerZ = layer.z;
   const travelSpeed = capSpeed(li === 0 ? s.firstLayerTravelSpeed : s.travelSpeed, s.maxSpeed);
+  const coasting = retractDistance > 0 && s.coastingVolume > 0;
   sink.layerStart(layer, li);
   const steps = layer.steps;
   for (let si = 0; si < steps.length; si++) {
@@ -217,17 +350,24 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
       }
       const speed = capSpeed(step.speed, s.maxSpeed);
       const retracting = step.retract && s.retractionEnabled;
-      if (retracting && retractDistance > 0) sink.retract(retractDistance, s.retractionSpeed);
+      if (retracting && retractDistance > 0) {
+        const n = behind.length;
+        if (w.wipe && n >= 4 && behind[n - 2] === pos.x && behind[n - 1] === pos.y) wipeRetract(w, speed);
+        else sink.retract(retractDistance, s.retractionSpeed);
+      }
+      behind.length = 0;
       const lift = step.liftTo;
-      moveZ(pos, lift !== undefined ? lift : retracting && step.zHop > 0 ? layerZ + step.zHop : layerZ, zSpeed, sink);
+      const hop = lift === undefined && retracting && step.zHop > 0;
+      moveZ(pos, lift !== undefined ? lift : hop ? layerZ + step.zHop : layerZ, hop ? hopSpeed : zSpeed, sink);
       for (let k = 0; k < step.points.length; k++) travelTo(pos, step.points[k].x, step.points[k].y, speed, sink);
-      if (lift === undefined || si < steps.length - 1) moveZ(pos, layerZ, zSpeed, sink);
+      if (lift === undefined || si < steps.length - 1) moveZ(pos, layerZ, hop ? hopSpeed : zSpeed, sink);
       if (retracting && primeDistance > 0) sink.prime(primeDistance, s.retractionSpeed);
       continue;
     }
     const points = step.points;
     const n = points.length;
     if (n === 0) continue;
+    behind.length = 0;
     const zs = step.z;
     // a spiral turn's rising steps start at the Z the nozzle is at (see below)
     if (!(zs && layer.spiral)) moveZ(pos, layerZ, zSpeed, sink);
@@ -250,6 +390,14 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
     const perMm = filamentPerMm(step, s);
     const arcs = step.arcs;
     const last = step.closed ? n : n - 1;
+    const record = w.wipe;
+    if (record) behind.push(pos.x, pos.y);
+    // coasting: the step is extruded up to `coastFrom` mm along it, then moved along without extrusion
+    const coast = coasting && retractsNext(w, li, si) ? coastLength(s, step, n, last) : 0;
+    if (coast > 0) {
+      walkCoasted(w, step, perMm, speed, last, coast);
+      continue;
+    }
     let x = pos.x;
     let y = pos.y;
     for (let i = 1; i <= last; i++) {
@@ -266,12 +414,14 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
         y = p.y;
         pos.z = z;
         sink.extrudeZ(x, y, z, length, segmentFilament(step, s, perMm, i - 1, k, length), speed);
+        if (record) behind.push(x, y);
         continue;
       }
       if (dx === 0 && dy === 0) continue;
       const arc = arcs?.[i];
       if (arc) {
         const length = arcLengthMm(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise);
+        if (record) behind.push(...arcChords(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise, length));
         x = p.x;
         y = p.y;
         sink.arc(x, y, arc.cx, arc.cy, arc.clockwise, length, segmentFilament(step, s, perMm, i - 1, k, length), speed);
@@ -281,6 +431,7 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
       x = p.x;
       y = p.y;
       sink.extrude(x, y, length, segmentFilament(step, s, perMm, i - 1, k, length), speed);
+      if (record) behind.push(x, y);
     }
     pos.x = x;
     pos.y = y;
@@ -290,4 +441,88 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
     w.open = NO_OBJECT;
   }
   sink.layerEnd(layer, li);
+}
+
+/**
+ * The segments of a flat extrude step (no Z per point) whose last `coast` mm are coasted: extruded up to
+ * there (the segment it falls in split, with its share of the filament), then `travel` moves at the
+ * step's speed to its end (arcs followed by chords of at most ARC_CHORD_MM).
+ */
+function walkCoasted(w: Walk, step: ExtrudeStep, perMm: number, speed: number, last: number, coast: number): void {
+  const { s, sink, pos, behind } = w;
+  const record = w.wipe;
+  const points = step.points;
+  const n = points.length;
+  const arcs = step.arcs;
+  let total = 0;
+  for (let i = 1, p = points[0]!; i <= last; i++) {
+    const q = points[i === n ? 0 : i]!;
+    const arc = arcs?.[i];
+    total += arc ? arcLengthMm(p.x, p.y, q.x, q.y, arc.cx, arc.cy, arc.clockwise) : hypot(q.x - p.x, q.y - p.y) / 1000;
+    p = q;
+  }
+  const coastFrom = total - coast;
+  let done = 0;
+  let x = pos.x;
+  let y = pos.y;
+  const coastTo = (tx: number, ty: number, length: number) => {
+    sink.travel(tx, ty, length, speed);
+    if (record) behind.push(tx, ty);
+    x = tx;
+    y = ty;
+  };
+  for (let i = 1; i <= last; i++) {
+    const k = i === n ? 0 : i;
+    const p = points[k]!;
+    const dx = p.x - x;
+    const dy = p.y - y;
+    if (dx === 0 && dy === 0) continue;
+    const arc = arcs?.[i];
+    const length = arc ? arcLengthMm(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise) : Math.sqrt(dx * dx + dy * dy) / 1000;
+    const filament = segmentFilament(step, s, perMm, i - 1, k, length);
+    const start = done;
+    done += length;
+    if (done <= coastFrom) {
+      // extruded whole
+      if (arc) {
+        if (record) behind.push(...arcChords(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise, length));
+        sink.arc(p.x, p.y, arc.cx, arc.cy, arc.clockwise, length, filament, speed);
+      } else {
+        sink.extrude(p.x, p.y, length, filament, speed);
+        if (record) behind.push(p.x, p.y);
+      }
+      x = p.x;
+      y = p.y;
+      continue;
+    }
+    // the part before coastFrom is extruded, the rest coasted
+    const extruded = start < coastFrom ? coastFrom - start : 0;
+    const f = extruded / length;
+    if (arc) {
+      const x0 = x;
+      const y0 = y;
+      if (extruded > 0) {
+        const [mx, my] = alongArc(x0, y0, arc.cx, arc.cy, arc.clockwise, extruded);
+        if (record) behind.push(...arcChords(x0, y0, mx, my, arc.cx, arc.cy, arc.clockwise, extruded));
+        sink.arc(mx, my, arc.cx, arc.cy, arc.clockwise, extruded, filament * f, speed);
+        x = mx;
+        y = my;
+      }
+      const rest = length - extruded;
+      const chords = arcChords(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise, rest);
+      for (let c = 0; c < chords.length; c += 2) coastTo(chords[c]!, chords[c + 1]!, hypot(chords[c]! - x, chords[c + 1]! - y) / 1000);
+      continue;
+    }
+    if (extruded > 0) {
+      const mx = x + dx * f;
+      const my = y + dy * f;
+      sink.extrude(mx, my, extruded, filament * f, speed);
+      if (record) behind.push(mx, my);
+      x = mx;
+      y = my;
+    }
+    coastTo(p.x, p.y, length - extruded);
+  }
+  pos.x = x;
+  pos.y = y;
 }

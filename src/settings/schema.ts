@@ -6,7 +6,7 @@
  */
 import { PATTERN_IDS, SKIN_PATTERN_IDS } from '../infill/types.js';
 
-export type Unit = 'mm' | 'mm²' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '×' | 'MiB' | '';
+export type Unit = 'mm' | 'mm²' | 'mm³' | 'mm/s' | 'mm/s²' | '°C' | '%' | 's' | 'g/cm³' | '°' | 'count' | '×' | 'MiB' | '';
 /** The stage a setting affects. `runtime` settings change how a slice runs, never the G-code it makes. */
 export type Stage = 'machine' | 'mesh' | 'slice' | 'walls' | 'skin' | 'infill' | 'support' | 'adhesion' | 'travel' | 'cooling' | 'gcode' | 'runtime';
 
@@ -35,8 +35,12 @@ export type SettingNeed =
   | 'template-placeholder'
   | 'fan-by-layer-time';
 
-/** A value `onlyWith` asks another setting for, or a list of values any of which will do. */
-export type OnlyWithValue = string | number | boolean | readonly string[];
+/**
+ * A value `onlyWith` asks another setting for, or a list of values any of which will do, or (a number
+ * setting whose 0 means off) any value above `above`; `example` is one such value, for UIs and the
+ * every-flag test.
+ */
+export type OnlyWithValue = string | number | boolean | readonly string[] | { readonly above: number; readonly example: number };
 
 interface Base {
   unit: Unit;
@@ -254,6 +258,38 @@ export const SCHEMA = {
   combingMaxDistance: when(num(0, 0, 1000, 'mm', 'travel', 'A travel inside the innermost wall longer than this retracts all the same (0 = no limit).'), { retractionEnabled: true }),
   retractOnLayerChange: when(bool(true, 'travel', 'Retract when moving to the next layer, even for a travel too short to retract otherwise.'), { retractionEnabled: true }, 'thin-walls'),
   zHop: when(num(0, 0, 10, 'mm', 'travel', 'Lift the nozzle by this much during retracted travels (0 = off).'), { retractionEnabled: true }),
+  zHopSpeed: when(
+    optNum(0.1, 500, 'mm/s', 'travel', "Speed of the Z moves of a z-hop (the lift and the way back down): Cura's Z hop speed. Capped at maxSpeedZ when that is set. Empty (null) = the speed of other Z moves, 5 mm/s (or maxSpeedZ when slower)."),
+    { retractionEnabled: true, zHop: { above: 0, example: 0.4 } },
+  ),
+  zHopOnlyOverParts: when(
+    bool(false, 'travel', "Lift (zHop) only for a travel whose straight line passes over an island of this layer printed before, other than the ones it starts and ends in (Cura's z hop only over printed parts); other retracted travels stay at the layer's height."),
+    { retractionEnabled: true, zHop: { above: 0, example: 0.4 } },
+  ),
+  wipeDistance: when(
+    num(0, 0, 20, 'mm', 'travel', "On each retraction, move the nozzle back along the path it has just printed (so over the part) for this distance, retracting on the way: what retractBeforeWipe leaves of the retraction happens during the wipe, spread along it, and any the path was too short for after it (PrusaSlicer's and OrcaSlicer's wipe). The wipe moves at 80 % of the travel speed, slower where the retraction would otherwise go faster than retractionSpeed. With firmwareRetraction the wipe is a plain move before the G10. 0 = off."),
+    { retractionEnabled: true },
+  ),
+  retractBeforeWipe: when(
+    num(0, 0, 100, '%', 'travel', 'Share of the retraction made on the spot before the wipe starts; the rest happens during the wipe.'),
+    { retractionEnabled: true, wipeDistance: { above: 0, example: 2 } },
+  ),
+  coastingVolume: when(
+    num(0, 0, 5, 'mm³', 'travel', "Before a retracted travel, print the end of the extrusion before it as a plain move (no extrusion) of this volume, so the pressure left in the nozzle lays it instead (Cura's coasting): a length of coastingVolume / (line width × layer height). Only on paths with at least coastingMinVolume, at least twice as long as the coasted length and without a Z per point (scarf, spiral turns). 0 = off."),
+    { retractionEnabled: true },
+  ),
+  coastingMinVolume: when(
+    num(0.8, 0, 100, 'mm³', 'travel', 'Paths with less volume than this are not coasted (they have not built up the pressure that coasting relies on).'),
+    { retractionEnabled: true, coastingVolume: { above: 0, example: 0.1 } },
+  ),
+  retractionCountMax: when(
+    int(0, 0, 1000, 'count', 'travel', "At most this many retractions within any retractionExtrusionWindow of extruded filament (Cura's maximum retraction count): further travels that stay inside the island travel unretracted; travels that leave it, and layer changes, always retract. 0 = no limit."),
+    { retractionEnabled: true },
+  ),
+  retractionExtrusionWindow: when(
+    optNum(0, 100, 'mm', 'travel', 'The length of extruded filament over which retractionCountMax counts. Empty (null) = retractionDistance (so one piece of filament is not ground by more than that many retractions).'),
+    { retractionEnabled: true, retractionCountMax: { above: 0, example: 1 } },
+  ),
 
   // ── cooling and temperature ──────────────────────────────────────────────────
   fanSpeed: num(100, 0, 100, '%', 'cooling', 'Part-cooling fan from the second layer on.'),

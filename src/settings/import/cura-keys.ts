@@ -386,6 +386,20 @@ export function mapCuraKeys(c: ImportContext): void {
   const hop = str('retraction_hop_enabled');
   if (hop !== undefined && bool(hop) === false) c.set('zHop', 0, 'retraction_hop_enabled');
   else if (hop !== undefined || c.has('retraction_hop')) take('zHop', ['retraction_hop']);
+  take('zHopSpeed', ['speed_z_hop']);
+  const hopOver = str('retraction_hop_only_when_collides');
+  if (hopOver !== undefined) c.set('zHopOnlyOverParts', bool(hopOver), 'retraction_hop_only_when_collides', 'not True or False');
+  // Cura's count 0 means no retraction but the forced ones; Strata's 0 means no limit
+  const countMax = value('retraction_count_max');
+  if (countMax === 0) c.reject('retraction_count_max', 'Cura retracts only where it must with 0; Strata has no such setting (its 0 is no limit)');
+  else if (countMax !== undefined) c.set('retractionCountMax', Math.round(countMax), 'retraction_count_max');
+  else if (c.has('retraction_count_max')) c.reject('retraction_count_max', 'a formula Strata cannot evaluate');
+  take('retractionExtrusionWindow', ['retraction_extrusion_window']);
+  // coasting: off unless coasting_enable
+  const coasting = str('coasting_enable');
+  if (coasting !== undefined && bool(coasting) === false) c.set('coastingVolume', 0, 'coasting_enable');
+  else if (coasting !== undefined) take('coastingVolume', ['coasting_volume']);
+  take('coastingMinVolume', ['coasting_min_volume']);
 
   // adhesion
   const adhesion = str('adhesion_type');

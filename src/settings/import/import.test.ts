@@ -155,12 +155,14 @@ test('PrusaSlicer .ini: layer height, widths, walls, skin, infill, speeds, tempe
   );
   assert.equal(s.endGcode, 'G1 E-1 F2100\nM104 S0\nM140 S0\nM84');
   // what maps onto nothing is listed, once
-  for (const k of ['wipe', 'bridge_speed', 'infill_extrusion_width']) assert.ok(p.unused.includes(k), k);
+  for (const k of ['bridge_speed', 'infill_extrusion_width']) assert.ok(p.unused.includes(k), k);
+  // wipe = 1: as long as the 0.8 mm retraction takes at 35 mm/s, at 80 % of the 180 mm/s travel speed
+  assert.equal(s.wipeDistance, 3.29);
   assert.equal(s.ironingEnabled, false);
   assert.equal(p.settings.supportEnabled, false);
   assert.equal(p.rejected.length, 0, JSON.stringify(p.rejected));
   assert.equal(p.warnings.length, 1);
-  assert.match(p.warnings[0]!, /^printer\.ini: \d+ settings with no Strata equivalent, not used: .*\bwipe\b/);
+  assert.match(p.warnings[0]!, /^printer\.ini: \d+ settings with no Strata equivalent, not used: .*\bbridge_speed\b/);
   // and it resolves into a working configuration
   const cfg = resolveConfig({ printer: 'prusa-mk4', ...s });
   assert.equal(cfg.walls, 3);
@@ -537,7 +539,7 @@ test('strata slice --config reads a PrusaSlicer .ini and warns once about the re
   const r = spawnSync(process.execPath, [CLI, 'slice', CUBE, '--printer', 'prusa-mk4', '--config', ini, '-o', out, '--threads', '1'], { encoding: 'utf8' });
   assert.equal(r.status, 0, r.stderr);
   assert.equal((r.stderr.match(/warning:/g) ?? []).length, 1, r.stderr);
-  assert.match(r.stderr, /printer\.ini: \d+ settings with no Strata equivalent, not used: .*wipe/);
+  assert.match(r.stderr, /printer\.ini: \d+ settings with no Strata equivalent, not used: .*bridge_speed/);
   const g = readFileSync(out, 'utf8');
   assert.match(g, /^;Layer height: 0\.15$/m);
   assert.match(g, /^M109 S220$/m, 'the imported start G-code heats to the first-layer temperature');

@@ -49,6 +49,9 @@
  *   `extruder_clearance_height`, or OrcaSlicer's `extruder_clearance_height_to_rod` (nozzle tip to the X
  *   axis rods; its height to the lid limits the last object too, which Strata does not model, and is left
  *   unread).
+ * - Wipe: see `wipe` below. PrusaSlicer's `retract_lift_above`/`retract_lift_below` (a Z range for the
+ *   lift), its travel ramping and OrcaSlicer's `z_hop_types` (slope, spiral) have no Strata equivalent
+ *   and are left unread.
  */
 import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
 import type { Settings } from '../schema.js';
@@ -586,6 +589,31 @@ function retraction(c: ImportContext): void {
   // PrusaSlicer: no retraction for travels inside the infill that cross no perimeter; OrcaSlicer's is the same idea
   const crossing = pick('filament_retract_only_when_crossing_perimeters', 'only_retract_when_crossing_perimeters', 'reduce_infill_retraction');
   if (crossing) c.set('retractCrossingWallsOnly', bool(crossing.value), crossing.key, 'not 0 or 1');
+  wipe(c, pick);
+}
+
+/**
+ * Wipe: PrusaSlicer's `wipe` has no length of its own: the nozzle wipes for as long as the part of the
+ * retraction left after `retract_before_wipe` takes at `retract_speed`, at 80 % of `travel_speed`
+ * (its GCode Wipe); that length becomes wipeDistance. OrcaSlicer's (and its filament override's)
+ * `wipe_distance` is the length itself.
+ */
+function wipe(c: ImportContext, pick: (filament: string, ...printer: string[]) => { key: string; value: string } | undefined): void {
+  const on = pick('filament_wipe', 'wipe');
+  const before = pick('filament_retract_before_wipe', 'retract_before_wipe');
+  const beforePercent = before ? percent(first(before.value)) : 0;
+  if (before) c.set('retractBeforeWipe', beforePercent, before.key, 'not a percentage');
+  if (!on) return;
+  const enabled = bool(on.value);
+  if (enabled === undefined) return c.reject(on.key, 'not 0 or 1');
+  if (!enabled) return c.set('wipeDistance', 0, on.key);
+  const distance = pick('filament_wipe_distance', 'wipe_distance');
+  if (distance) return c.set('wipeDistance', num(distance.value), distance.key, 'not a length');
+  const length = c.settings.retractionDistance ?? (SCHEMA.retractionDistance.default as number);
+  const speed = c.settings.retractionSpeed ?? (SCHEMA.retractionSpeed.default as number);
+  const travel = c.settings.travelSpeed ?? (SCHEMA.travelSpeed.default as number);
+  const share = 1 - Math.min(100, Math.max(0, beforePercent ?? 0)) / 100;
+  c.set('wipeDistance', Math.min(20, round((length * share * travel * 0.8) / speed, 2)), on.key);
 }
 
 function adhesion(c: ImportContext): void {
