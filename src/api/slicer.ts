@@ -101,10 +101,8 @@ type Accessors = { [K in SettingKey as `set${Capitalize<K>}`]: (value: Settings[
   [K in SettingKey as `get${Capitalize<K>}`]: () => Settings[K];
 };
 
-// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
 export interface Slicer extends Accessors {}
 
-// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
 export class Slicer {
   #options: SliceOptions;
   #config: Config;

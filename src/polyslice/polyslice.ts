@@ -85,10 +85,8 @@ function filamentOptions(f: Filament | null): SliceOptions {
   return out;
 }
 
-// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
 export interface Polyslice extends Accessors {}
 
-// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
 export class Polyslice {
   /** The G-code of the last slice ('' before the first). */
   gcode = '';

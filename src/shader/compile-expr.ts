@@ -13,7 +13,7 @@ import { arith, bitNot, compare, equality, logicalNot, logicalXor, negate, requi
 import { callBuiltin, isBuiltinName, isUnavailable } from './builtins.js';
 
 // The parser's node types are loose; compile code reads fields through this alias.
-// eslint-disable-next-line @typescript-eslint/no-explicit-any
+// biome-ignore lint/suspicious/noExplicitAny: the GLSL parser's AST nodes are untyped
 type Node = any;
 
 const MAX_EXPR_DEPTH = 1000;

@@ -9,7 +9,7 @@ import { Buf, newFnCtx, short } from './compiler-context.js';
 import { nodeLine, typeSpecifierType } from './compile-expr.js';
 import { compileStatement } from './compile-stmt.js';
 
-// eslint-disable-next-line @typescript-eslint/no-explicit-any
+// biome-ignore lint/suspicious/noExplicitAny: the GLSL parser's AST nodes are untyped
 type Node = any;
 
 export function qualifiers(node: Node): string[] {

@@ -14,7 +14,7 @@ import type { UiParamDecl } from './preprocess.js';
 import { TABLE_KEYS } from './math-table.js';
 import { lit } from './values.js';
 
-// eslint-disable-next-line @typescript-eslint/no-explicit-any
+// biome-ignore lint/suspicious/noExplicitAny: the GLSL parser's AST nodes are untyped
 type Node = any;
 
 export type UniformKind = 'pass' | 'param' | 'other';

@@ -11,7 +11,7 @@ import { callArgs, compileCondition, compileDiscarded, compileExpr, compileIniti
 import { convert, lit } from './values.js';
 import { implicitlyConvertible } from './glsl-types.js';
 
-// eslint-disable-next-line @typescript-eslint/no-explicit-any
+// biome-ignore lint/suspicious/noExplicitAny: the GLSL parser's AST nodes are untyped
 type Node = any;
 
 /** Largest number of array elements one shader may allocate. */
