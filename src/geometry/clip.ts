@@ -3,28 +3,16 @@
  * Clipper2, in integer micrometres. Nothing else in Strata imports the clipping library. The engine is
  * Clipper2 compiled to WebAssembly (clipper2-wasm, see clipper-wasm.ts): on 3DBenchy a slice took 0.79 ×
  * the wall time of the same library in TypeScript (clipper2-ts, clipper-ts.ts), which stays as the reference
- * engine the tests hold the WebAssembly one against (`useClipEngine`); it is loaded only then.
+ * engine the tests hold the WebAssembly one against (`clipOperations` over it); nothing in the product loads it.
  */
 import type { Bounds, ExPolygon, Polygon, Polyline, Pt } from './types.js';
 import { rawMiterOffset } from './miter-offset.js';
-import { ringBounds, ringInside } from './contain.js';
+import { pointInRing, ringBounds, ringInside } from './contain.js';
 import { islandsApart, islandsIfSimple, MAX_RINGS } from './simple-rings.js';
 import * as wasmEngine from './clipper-wasm.js';
 
-/** The engine's operations, as both engine modules export them. */
-type Engine = Pick<typeof wasmEngine, 'booleanAreas' | 'unionDroppingCollinear' | 'inflateAreas' | 'strokeAreas' | 'clipOpen' | 'simplifyClosed'>;
-let engine: Engine = wasmEngine;
-
-/** The reference engine's module, named through a variable so that bundlers leave it out of what ships. */
-const REFERENCE_ENGINE = './clipper-ts.js';
-
-/**
- * Which engine clips: for tests and measurements on the compiled modules (`dist/`), not part of the API; the
- * TypeScript one loads on first use and is not in the bundles.
- */
-export async function useClipEngine(kind: 'wasm' | 'ts'): Promise<void> {
-  engine = kind === 'wasm' ? wasmEngine : ((await import(REFERENCE_ENGINE)) as Engine);
-}
+/** A clipping engine's operations, as both engine modules (clipper-wasm.ts, clipper-ts.ts) export them. */
+export type ClipEngine = Pick<typeof wasmEngine, 'booleanAreas' | 'unionDroppingCollinear' | 'inflateAreas' | 'strokeAreas' | 'clipOpen' | 'simplifyClosed'>;
 
 export type Join = 'miter' | 'round' | 'square';
 
@@ -42,41 +30,158 @@ export function flatten(areas: readonly ExPolygon[]): Polygon[] {
   return out;
 }
 
-function run(op: wasmEngine.Op, subject: readonly Polygon[], clip: readonly Polygon[], rule: wasmEngine.Rule): ExPolygon[] {
-  return engine.booleanAreas(op, subject, clip, rule);
+/** The clipping operations, over one engine. */
+export interface ClipOperations {
+  unionRings(rings: readonly Polygon[]): ExPolygon[];
+  evenOddAreas(rings: readonly Polygon[]): ExPolygon[];
+  union(a: readonly ExPolygon[], b?: readonly ExPolygon[]): ExPolygon[];
+  difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[];
+  intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[];
+  offset(areas: readonly ExPolygon[], deltaUm: number, join?: Join): ExPolygon[];
+  strokeArea(lines: readonly Polyline[], loops: readonly Polygon[], widthUm: number, join?: 'round' | 'miter'): ExPolygon[];
+  clipLines(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[];
+  clipLinesOutside(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[];
+  simplifyRings(rings: readonly Polygon[], toleranceUm: number): Polygon[];
+  simplifyAreas(areas: readonly ExPolygon[], toleranceUm: number): ExPolygon[];
 }
 
+/**
+ * The operations over one engine. The slicer's are over the WebAssembly engine (the functions this module
+ * exports); the tests make a second set over the TypeScript reference engine and hold the two together.
+ */
+export function clipOperations(engine: ClipEngine): ClipOperations {
+  function run(op: wasmEngine.Op, subject: readonly Polygon[], clip: readonly Polygon[], rule: wasmEngine.Rule): ExPolygon[] {
+    return engine.booleanAreas(op, subject, clip, rule);
+  }
+
+  /** Union of rings with the non-zero rule (overlapping islands merge). */
+  function unionRings(rings: readonly Polygon[]): ExPolygon[] {
+    return run('union', rings, [], 'nonzero');
+  }
+
+  /** Union of rings with the even-odd rule: nested rings alternate solid/hole (raw slice loops). */
+  function evenOddAreas(rings: readonly Polygon[]): ExPolygon[] {
+    return run('union', rings, [], 'evenodd');
+  }
+
+  function union(a: readonly ExPolygon[], b: readonly ExPolygon[] = []): ExPolygon[] {
+    return run('union', flatten(a), flatten(b), 'nonzero');
+  }
+
+  function difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
+    if (a.length === 0) return [];
+    if (b.length === 0) return a.slice();
+    // islands of a strictly inside b leave nothing; islands of b clear of a's bounds cut nothing
+    const kept = a.filter((island) => !ringInside(island.outer, b));
+    if (kept.length === 0) return [];
+    return run('difference', flatten(kept), flatten(touching(b, boundsOf(kept))), 'nonzero');
+  }
+
+  function intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
+    if (a.length === 0 || b.length === 0) return [];
+    // islands of either side clear of the other side's bounds add nothing to the result
+    const aIn = touching(a, boundsOf(b));
+    if (aIn.length === 0) return [];
+    const bIn = touching(b, boundsOf(aIn));
+    if (bIn.length === 0) return [];
+    return run('intersection', flatten(aIn), flatten(bIn), 'nonzero');
+  }
+
+
+
+  /** Grow (delta > 0) or shrink (delta < 0) areas by delta µm. */
+  function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join = 'miter'): ExPolygon[] {
+    if (areas.length === 0) return [];
+    if (deltaUm === 0) return areas.slice();
+    const rings = flatten(areas);
+    const raw = join === 'miter' && Math.abs(deltaUm) >= 1 ? rawMiterOffset(rings, deltaUm, MITER_LIMIT) : null;
+    if (!raw) return engine.inflateAreas(rings, deltaUm, join, 'polygon', MITER_LIMIT, ARC_TOLERANCE_UM);
+    const unite = (rings: Pt[][]) => engine.unionDroppingCollinear(rings, 'positive');
+    if (raw.loops) return unite(raw.rings);
+    // most offsets of a layer's islands stay simple: then they need no union; many islands are taken apart
+    if (raw.rings.length > MAX_RINGS && areas.length > 1) return islandsApart(raw.rings, areas, unite);
+    // else the union that resolves overlaps of the raw offset, as the general offsetter finishes
+    return islandsIfSimple(raw.rings, areas) ?? unite(raw.rings);
+  }
+
+  /**
+   * What beads `widthUm` wide leave on the layer: the area swept along open polylines and closed loops, µm. With
+   * 'round' joins and ends it is the bead's footprint (arcs within ARC_TOLERANCE_UM); 'miter' joins and square ends
+   * are much cheaper and add a little at corners and ends (up to (1 - π/4)·(width/2)² each).
+   */
+  function strokeArea(
+    lines: readonly Polyline[], loops: readonly Polygon[], widthUm: number, join: 'round' | 'miter' = 'round',
+  ): ExPolygon[] {
+    if ((lines.length === 0 && loops.length === 0) || !(widthUm > 0)) return [];
+    return engine.strokeAreas(lines, loops, widthUm / 2, join, join === 'round' ? 'round' : 'square', MITER_LIMIT, ARC_TOLERANCE_UM);
+  }
+
+
+
+  /** Clip open polylines to areas: the parts inside. */
+  function clipLines(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
+    if (lines.length === 0 || areas.length === 0) return [];
+    return engine.clipOpen('intersection', lines, flatten(areas));
+  }
+
+  /** Clip open polylines to areas: the parts outside. */
+  function clipLinesOutside(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
+    if (lines.length === 0) return [];
+    if (areas.length === 0) return lines.slice();
+    return engine.clipOpen('difference', lines, flatten(areas));
+  }
+
+  /** Simplify rings: drop vertices closer than toleranceUm to the line through their neighbours. */
+  function simplifyRings(rings: readonly Polygon[], toleranceUm: number): Polygon[] {
+    return engine.simplifyClosed(rings, toleranceUm).filter((r) => r.length >= 3);
+  }
+
+  /** Simplify islands ring by ring; an island whose outer ring falls below three points is dropped, as are such holes. */
+  function simplifyAreas(areas: readonly ExPolygon[], toleranceUm: number): ExPolygon[] {
+    const s = engine.simplifyClosed(flatten(areas), toleranceUm);
+    const res: ExPolygon[] = [];
+    let k = 0;
+    for (const a of areas) {
+      const outer = s[k++];
+      const holes = s.slice(k, k + a.holes.length).filter((h) => h.length >= 3);
+      k += a.holes.length;
+      if (outer.length >= 3) res.push({ outer, holes });
+    }
+    return res;
+  }
+
+  return { unionRings, evenOddAreas, union, difference, intersection, offset, strokeArea, clipLines, clipLinesOutside, simplifyRings, simplifyAreas };
+}
+
+const ops = clipOperations(wasmEngine);
 /** Union of rings with the non-zero rule (overlapping islands merge). */
-export function unionRings(rings: readonly Polygon[]): ExPolygon[] {
-  return run('union', rings, [], 'nonzero');
-}
-
+export const unionRings = ops.unionRings;
 /** Union of rings with the even-odd rule: nested rings alternate solid/hole (raw slice loops). */
-export function evenOddAreas(rings: readonly Polygon[]): ExPolygon[] {
-  return run('union', rings, [], 'evenodd');
+export const evenOddAreas = ops.evenOddAreas;
+export const union = ops.union;
+export const difference = ops.difference;
+export const intersection = ops.intersection;
+/** Grow (delta > 0) or shrink (delta < 0) areas by delta µm. */
+export const offset = ops.offset;
+/** What beads `widthUm` wide leave on the layer (see clipOperations). */
+export const strokeArea = ops.strokeArea;
+/** Clip open polylines to areas: the parts inside. */
+export const clipLines = ops.clipLines;
+/** Clip open polylines to areas: the parts outside. */
+export const clipLinesOutside = ops.clipLinesOutside;
+/** Simplify rings: drop vertices closer than toleranceUm to the line through their neighbours. */
+export const simplifyRings = ops.simplifyRings;
+/** Simplify islands ring by ring. */
+export const simplifyAreas = ops.simplifyAreas;
+
+/** Open-then-close (shrink then grow): removes features narrower than 2·radius µm. */
+export function opening(areas: readonly ExPolygon[], radiusUm: number): ExPolygon[] {
+  return offset(offset(areas, -radiusUm), radiusUm);
 }
 
-export function union(a: readonly ExPolygon[], b: readonly ExPolygon[] = []): ExPolygon[] {
-  return run('union', flatten(a), flatten(b), 'nonzero');
-}
-
-export function difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
-  if (a.length === 0) return [];
-  if (b.length === 0) return a.slice();
-  // islands of a strictly inside b leave nothing; islands of b clear of a's bounds cut nothing
-  const kept = a.filter((island) => !ringInside(island.outer, b));
-  if (kept.length === 0) return [];
-  return run('difference', flatten(kept), flatten(touching(b, boundsOf(kept))), 'nonzero');
-}
-
-export function intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
-  if (a.length === 0 || b.length === 0) return [];
-  // islands of either side clear of the other side's bounds add nothing to the result
-  const aIn = touching(a, boundsOf(b));
-  if (aIn.length === 0) return [];
-  const bIn = touching(b, boundsOf(aIn));
-  if (bIn.length === 0) return [];
-  return run('intersection', flatten(aIn), flatten(bIn), 'nonzero');
+/** Close-then-open (grow then shrink): fills gaps and notches narrower than 2·radius µm, joining nearby areas. */
+export function closing(areas: readonly ExPolygon[], radiusUm: number): ExPolygon[] {
+  return offset(offset(areas, radiusUm), -radiusUm);
 }
 
 /** The islands whose outer ring's bounds overlap `box` (all of them, as the same array, when none is clear of it). */
@@ -93,56 +198,6 @@ function touching(areas: readonly ExPolygon[], box: Bounds): readonly ExPolygon[
 function ringTouches(ring: readonly Pt[], box: Bounds): boolean {
   const { minX, minY, maxX, maxY } = ringBounds(ring);
   return minX <= box.maxX && maxX >= box.minX && minY <= box.maxY && maxY >= box.minY;
-}
-
-/** Grow (delta > 0) or shrink (delta < 0) areas by delta µm. */
-export function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join = 'miter'): ExPolygon[] {
-  if (areas.length === 0) return [];
-  if (deltaUm === 0) return areas.slice();
-  const rings = flatten(areas);
-  const raw = join === 'miter' && Math.abs(deltaUm) >= 1 ? rawMiterOffset(rings, deltaUm, MITER_LIMIT) : null;
-  if (!raw) return engine.inflateAreas(rings, deltaUm, join, 'polygon', MITER_LIMIT, ARC_TOLERANCE_UM);
-  const unite = (rings: Pt[][]) => engine.unionDroppingCollinear(rings, 'positive');
-  if (raw.loops) return unite(raw.rings);
-  // most offsets of a layer's islands stay simple: then they need no union; many islands are taken apart
-  if (raw.rings.length > MAX_RINGS && areas.length > 1) return islandsApart(raw.rings, areas, unite);
-  // else the union that resolves overlaps of the raw offset, as the general offsetter finishes
-  return islandsIfSimple(raw.rings, areas) ?? unite(raw.rings);
-}
-
-/**
- * What beads `widthUm` wide leave on the layer: the area swept along open polylines and closed loops, µm. With
- * 'round' joins and ends it is the bead's footprint (arcs within ARC_TOLERANCE_UM); 'miter' joins and square ends
- * are much cheaper and add a little at corners and ends (up to (1 - π/4)·(width/2)² each).
- */
-export function strokeArea(
-  lines: readonly Polyline[], loops: readonly Polygon[], widthUm: number, join: 'round' | 'miter' = 'round',
-): ExPolygon[] {
-  if ((lines.length === 0 && loops.length === 0) || !(widthUm > 0)) return [];
-  return engine.strokeAreas(lines, loops, widthUm / 2, join, join === 'round' ? 'round' : 'square', MITER_LIMIT, ARC_TOLERANCE_UM);
-}
-
-/** Open-then-close (shrink then grow): removes features narrower than 2·radius µm. */
-export function opening(areas: readonly ExPolygon[], radiusUm: number): ExPolygon[] {
-  return offset(offset(areas, -radiusUm), radiusUm);
-}
-
-/** Close-then-open (grow then shrink): fills gaps and notches narrower than 2·radius µm, joining nearby areas. */
-export function closing(areas: readonly ExPolygon[], radiusUm: number): ExPolygon[] {
-  return offset(offset(areas, radiusUm), -radiusUm);
-}
-
-/** Clip open polylines to areas: the parts inside. */
-export function clipLines(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
-  if (lines.length === 0 || areas.length === 0) return [];
-  return engine.clipOpen('intersection', lines, flatten(areas));
-}
-
-/** Clip open polylines to areas: the parts outside. */
-export function clipLinesOutside(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
-  if (lines.length === 0) return [];
-  if (areas.length === 0) return lines.slice();
-  return engine.clipOpen('difference', lines, flatten(areas));
 }
 
 /** Signed area of a ring in µm² (positive = counter-clockwise). */
@@ -163,25 +218,6 @@ export function area(areas: readonly ExPolygon[]): number {
   return a;
 }
 
-/** Simplify rings: drop vertices closer than toleranceUm to the line through their neighbours. */
-export function simplifyRings(rings: readonly Polygon[], toleranceUm: number): Polygon[] {
-  return engine.simplifyClosed(rings, toleranceUm).filter((r) => r.length >= 3);
-}
-
-/** Simplify islands ring by ring; an island whose outer ring falls below three points is dropped, as are such holes. */
-export function simplifyAreas(areas: readonly ExPolygon[], toleranceUm: number): ExPolygon[] {
-  const s = engine.simplifyClosed(flatten(areas), toleranceUm);
-  const res: ExPolygon[] = [];
-  let k = 0;
-  for (const a of areas) {
-    const outer = s[k++];
-    const holes = s.slice(k, k + a.holes.length).filter((h) => h.length >= 3);
-    k += a.holes.length;
-    if (outer.length >= 3) res.push({ outer, holes });
-  }
-  return res;
-}
-
 export function boundsOf(areas: readonly ExPolygon[]): Bounds {
   let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
   for (const a of areas) {
@@ -195,19 +231,8 @@ export function boundsOf(areas: readonly ExPolygon[]): Bounds {
   return { minX, minY, maxX, maxY };
 }
 
-/** Whether a point lies inside a ring (even-odd; on-edge counts as inside). */
-export function pointInRing(p: Pt, ring: readonly Pt[]): boolean {
-  let inside = false;
-  const n = ring.length;
-  for (let i = 0, j = n - 1; i < n; j = i++) {
-    const a = ring[i], b = ring[j];
-    if ((a.y > p.y) !== (b.y > p.y)) {
-      const x = a.x + ((p.y - a.y) * (b.x - a.x)) / (b.y - a.y);
-      if (p.x < x) inside = !inside;
-    }
-  }
-  return inside;
-}
+/** Whether a point lies inside a ring (even-odd; contain.ts). */
+export { pointInRing };
 
 /** Whether a point lies inside an island (inside the outer ring and in no hole). */
 export function pointInArea(p: Pt, a: ExPolygon): boolean {

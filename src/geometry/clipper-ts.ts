@@ -1,6 +1,6 @@
 /**
  * The reference clipping engine: the same Clipper2 in TypeScript (clipper2-ts), behind the same functions as
- * clipper-wasm.ts. Nothing loads it in a slice; `useClipEngine('ts')` in clip.ts does, for the tests that hold
+ * clipper-wasm.ts. Nothing loads it in a slice; the tests make clip.ts's operations over it (`clipOperations`) and hold
  * the WebAssembly engine to it.
  */
 import { Clipper, Clipper64, ClipperOffset, ClipType, EndType, FillRule, JoinType, PolyTree64 } from 'clipper2-ts';

@@ -4,7 +4,9 @@
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { area, clipLines, clipLinesOutside, difference, intersection, offset, simplifyAreas, useClipEngine, strokeArea, union } from './clip.js';
+import * as wasmEngine from './clipper-wasm.js';
+import * as tsEngine from './clipper-ts.js';
+import { area, clipOperations, difference, intersection, offset, union, type ClipOperations } from './clip.js';
 import type { ExPolygon, Polyline, Pt } from './types.js';
 
 /** A deterministic pseudo-random generator (so a failure can be replayed). */
@@ -23,15 +25,12 @@ function star(cx: number, cy: number, r: number, n: number, rand: () => number):
   return { outer, holes: [] };
 }
 
-async function both<T>(f: () => T): Promise<{ ts: T; wasm: T }> {
-  await useClipEngine('ts');
-  try {
-    const ts = f();
-    await useClipEngine('wasm');
-    return { ts, wasm: f() };
-  } finally {
-    await useClipEngine('wasm');
-  }
+/** The facade's operations over each engine. */
+const TS = clipOperations(tsEngine);
+const WASM = clipOperations(wasmEngine);
+
+function both<T>(f: (ops: ClipOperations) => T): { ts: T; wasm: T } {
+  return { ts: f(TS), wasm: f(WASM) };
 }
 
 const length = (lines: readonly Polyline[]) => lines.reduce((t, l) => t + l.slice(1).reduce((s, p, i) => s + Math.hypot(p.x - l[i].x, p.y - l[i].y), 0), 0);
@@ -43,20 +42,20 @@ test('booleans, offsets, strokes, line clipping and simplification agree between
     const b = [star(55_000, 60_000, 18_000, 31, rand)];
     const lines: Polyline[] = [];
     for (let k = 0; k < 10; k++) lines.push([{ x: 20_000, y: 30_000 + k * 4000 }, { x: 90_000, y: 35_000 + k * 4000 }]);
-    const cases: Array<[string, () => number, number]> = [
+    const cases: Array<[string, (o: ClipOperations) => number, number]> = [
       // the rings cross themselves: intersection points round to whole µm in their own ways
-      ['union', () => area(union(a, b)), 1e-4],
-      ['difference', () => area(difference(a, b)), 1e-4],
-      ['intersection', () => area(intersection(a, b)), 1e-4],
-      ['offset -800 miter', () => area(offset(a, -800)), 1e-4],
-      ['offset +1200 round', () => area(offset(a, 1200, 'round')), 1e-6],
-      ['stroke', () => area(strokeArea(lines, [b[0].outer], 400)), 1e-3],
-      ['clip lines', () => length(clipLines(lines, a)), 5],
-      ['clip lines outside', () => length(clipLinesOutside(lines, a)), 5],
-      ['simplify', () => area(simplifyAreas(a, 50)), 1e-6],
+      ['union', (o) => area(o.union(a, b)), 1e-4],
+      ['difference', (o) => area(o.difference(a, b)), 1e-4],
+      ['intersection', (o) => area(o.intersection(a, b)), 1e-4],
+      ['offset -800 miter', (o) => area(o.offset(a, -800)), 1e-4],
+      ['offset +1200 round', (o) => area(o.offset(a, 1200, 'round')), 1e-6],
+      ['stroke', (o) => area(o.strokeArea(lines, [b[0].outer], 400)), 1e-3],
+      ['clip lines', (o) => length(o.clipLines(lines, a)), 5],
+      ['clip lines outside', (o) => length(o.clipLinesOutside(lines, a)), 5],
+      ['simplify', (o) => area(o.simplifyAreas(a, 50)), 1e-6],
     ];
     for (const [name, f, rel] of cases) {
-      const { ts, wasm } = await both(f);
+      const { ts, wasm } = both(f);
       // rel ≥ 1: an absolute tolerance (µm); else relative
       const tol = rel >= 1 ? rel : rel * Math.abs(ts);
       assert.ok(Math.abs(ts - wasm) <= tol, `${name} (round ${round}): TypeScript ${ts}, WebAssembly ${wasm}`);
@@ -70,7 +69,6 @@ test('results are read straight from the engine memory (the layouts checked at l
 });
 
 test('the engine gives its results in whole micrometres, its crossing points too', async () => {
-  await useClipEngine('wasm');
   const rand = rng(7);
   let points = 0;
   for (let t = 0; t < 50; t++) {
