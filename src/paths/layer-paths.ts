@@ -74,6 +74,7 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
   for (const island of regions.islands) lost += island.lostMm2;
   if (lost > 0) out.lostMm2 = lost;
   if (regions.vase) out.vase = true;
+  if (regions.vaseDroppedMm2) out.vaseDroppedMm2 = regions.vaseDroppedMm2;
   return out;
 }
 

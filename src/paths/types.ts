@@ -76,5 +76,7 @@ export interface LayerPaths extends LayerZ {
   lostMm2?: number;
   /** A spiral vase layer (LayerRegions.vase): the planner spirals it when it is one wall loop. */
   vase?: true;
+  /** LayerRegions.vaseDroppedMm2: specks beside a spiral vase layer's main island left out, mm². */
+  vaseDroppedMm2?: number;
   groups: PathGroup[];
 }

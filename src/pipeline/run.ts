@@ -74,6 +74,8 @@ export interface RunResult {
   thinLost: ThinLoss[];
   /** Spiral vase layers above the first that are not one wall loop, printed flat: layer number and Z (mm). */
   vaseFlat: VaseFlat[];
+  /** Spiral vase layers with specks beside their main island left out (vaseOutline): layer, Z (mm), area (mm²). */
+  vaseSpecks: ThinLoss[];
 }
 
 /** A spiral vase layer printed flat. */
@@ -277,10 +279,12 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const planned: LayerPlan[] = [];
     const thinLost: ThinLoss[] = [];
     const vaseFlat: VaseFlat[] = [];
+    const vaseSpecks: ThinLoss[] = [];
     // sequential printing plans the layers object by object once every layer's paths are made
     const collected: LayerPaths[] = [];
     const plan = (lp: LayerPaths) => {
       if (lp.lostMm2) thinLost.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.lostMm2 });
+      if (lp.vaseDroppedMm2) vaseSpecks.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.vaseDroppedMm2 });
       if (sequence) {
         collected.push(lp);
         return;
@@ -411,7 +415,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
     yield* paced(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
-    return { plan: printPlan, estimate, layers: planned.length, thinLost, vaseFlat };
+    return { plan: printPlan, estimate, layers: planned.length, thinLost, vaseFlat, vaseSpecks };
   } finally {
     if (pool) yield* wait(pool.close());
   }

@@ -136,6 +136,8 @@ export interface LayerRegions extends LayerZ {
    * skin, infill, ironing or support; the planner spirals the layer's wall when it is one single loop.
    */
   vase?: true;
+  /** On a spiral vase layer: the area of the specks beside its main island dropped (vaseOutline), mm². */
+  vaseDroppedMm2?: number;
 }
 
 /**
