@@ -14,8 +14,8 @@
  * as the firmware has them when the print starts (`marlinLimits`): the settings' machine limits (unless
  * `machineLimits` is `ignore`), then the M201/M203/M204/M205 (RepRap: M566) with literal values in the start
  * G-code, then the ones Strata writes after it (`machineLimits` = `write`; else the `M204 P T` of an
- * `acceleration` set away from its default). Junctions by classic jerk when `jerkX`/`jerkY` (or the start
- * G-code's M205 X/Y) give one, else by junction deviation: `junctionDeviation` (M205 J), else the one
+ * `acceleration` set away from its default). Junctions by classic jerk when any of `jerkX`–`jerkE` (or the
+ * start G-code's M205 X/Y/Z/E) is given, else by junction deviation: `junctionDeviation` (M205 J), else the one
  * that takes a 90° corner at `cornerVelocity` at the print acceleration, cornerVelocity² (√2 − 1) / a.
  * Retractions, primes, Z moves and layer changes are blocks like any other, as the firmware sees them.
  * Arcs are timed as the firmware runs them: chords of ARC_SEGMENT_MM (Marlin's MM_PER_ARC_SEGMENT and
@@ -139,8 +139,11 @@ export function marlinLimits(s: EstimateSettings): MarlinLimits {
     jx = s.jerkX ?? s.jerkY ?? s.cornerVelocity;
     jy = s.jerkY ?? s.jerkX ?? s.cornerVelocity;
   } else if (s.acceleration !== SCHEMA.acceleration.default) print = travel = s.acceleration;
+  // any jerk given says the firmware has classic jerk: X/Y default to cornerVelocity, Z/E to Marlin's
   const jerk: MarlinLimits['jerk'] =
-    jx !== null && jy !== null ? [jx, jy, jz ?? MARLIN_DEFAULT_JERK_Z, je ?? MARLIN_DEFAULT_JERK_E] : null;
+    jx !== null || jy !== null || jz !== null || je !== null
+      ? [jx ?? jy ?? s.cornerVelocity, jy ?? jx ?? s.cornerVelocity, jz ?? MARLIN_DEFAULT_JERK_Z, je ?? MARLIN_DEFAULT_JERK_E]
+      : null;
   return {
     maxFeedrate: [feed[0], feed[1], feed[2], feed[3]],
     maxAccel: [maxAccel[0], maxAccel[1], maxAccel[2], maxAccel[3]],

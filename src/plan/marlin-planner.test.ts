@@ -120,6 +120,8 @@ test('limits: junction deviation from cornerVelocity, or given; classic jerk whe
   assert.equal(marlinLimits({ ...SETTINGS, junctionDeviation: 0.013 }).junctionDeviation, 0.013);
   assert.deepEqual(marlinLimits({ ...SETTINGS, jerkX: 8 }).jerk, [8, 8, 0.3, 5]);
   assert.deepEqual(marlinLimits({ ...SETTINGS, jerkX: 8, jerkY: 9, jerkZ: 0.4, jerkE: 2.5 }).jerk, [8, 9, 0.4, 2.5]);
+  // any jerk given means classic jerk: X and Y from cornerVelocity when not given
+  assert.deepEqual(marlinLimits({ ...SETTINGS, jerkE: 2.5 }).jerk, [8, 8, 0.3, 2.5]);
   assert.equal(marlinLimits({ ...SETTINGS, jerkX: 8, machineLimits: 'ignore' }).jerk, null);
   assert.deepEqual(marlinLimits({ ...SETTINGS, machineLimits: 'ignore' }).maxFeedrate, [Infinity, Infinity, Infinity, Infinity]);
 });
