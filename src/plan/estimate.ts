@@ -136,8 +136,15 @@ export function marlinLimits(s: EstimateSettings): MarlinLimits {
     print = s.acceleration;
     travel = s.travelAcceleration ?? s.acceleration;
     if (!reprap) retract = s.retractAcceleration ?? s.maxAccelerationE ?? s.acceleration;
-    jx = s.jerkX ?? s.jerkY ?? s.cornerVelocity;
-    jy = s.jerkY ?? s.jerkX ?? s.cornerVelocity;
+    // M205 X Y carries cornerVelocity when no jerk is set, which a junction-deviation Marlin does not take:
+    // the jerk and junction deviation written count only where they are set
+    if (s.jerkX !== null || s.jerkY !== null) {
+      jx = s.jerkX ?? s.jerkY;
+      jy = s.jerkY ?? s.jerkX;
+    }
+    if (s.jerkZ !== null) jz = s.jerkZ;
+    if (s.jerkE !== null) je = s.jerkE;
+    if (!reprap && s.junctionDeviation !== null) jd = s.junctionDeviation;
   } else if (s.acceleration !== SCHEMA.acceleration.default) print = travel = s.acceleration;
   // any jerk given says the firmware has classic jerk: X/Y default to cornerVelocity, Z/E to Marlin's
   const jerk: MarlinLimits['jerk'] =

@@ -143,6 +143,9 @@ test('limits: the start G-code\'s M201/M203/M204/M205, then what Strata writes a
   const w = marlinLimits({ ...SETTINGS, startGcode: start, machineLimits: 'write', maxAccelerationX: 3000 });
   assert.deepEqual(w.maxAccel, [3000, 1000, 200, 5000]);
   assert.deepEqual(w.jerk, [8, 8, 0.4, 4.5]);
+  assert.deepEqual(marlinLimits({ ...SETTINGS, startGcode: start, machineLimits: 'write', jerkX: 10 }).jerk, [10, 10, 0.4, 4.5]);
+  // written with no jerk set (M205 X Y = cornerVelocity): still junction deviation
+  assert.equal(marlinLimits({ ...SETTINGS, machineLimits: 'write' }).jerk, null);
   // M205 J: junction deviation; RepRap: M203 and M566 in mm/min
   assert.equal(marlinLimits({ ...SETTINGS, startGcode: 'M205 J0.02' }).junctionDeviation, 0.02);
   const rrf = marlinLimits({ ...SETTINGS, gcodeFlavor: 'reprap', startGcode: 'M203 X12000\nM566 X600 Y600' });
