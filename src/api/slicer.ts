@@ -12,6 +12,7 @@ import type { SettingsSource } from '../mesh/types.js';
 import { settingsFromSource } from '../settings/import/object-settings.js';
 import { Pacer, paced, wait, type Steps } from '../pipeline/pacer.js';
 import { runPipelineSteps, type Progress, type RunResult, type ThinLoss, type VaseFlat } from '../pipeline/run.js';
+import { VASE_SPECK_MM2 } from '../regions/layer-regions.js';
 import { plateOf } from './plate.js';
 import { ConfigTable } from '../settings/scoped.js';
 import type { PrintPlan } from '../plan/types.js';
@@ -330,7 +331,7 @@ export class Slicer {
       threads,
       thinLost: run.thinLost,
     };
-    const extra = [thinLossWarning(run.thinLost, cfg), vaseFlatWarning(run.vaseFlat), firstLayerWarning(run.firstLayerFilledMm2, cfg)].filter((w): w is string => w !== null);
+    const extra = [thinLossWarning(run.thinLost, cfg), vaseFlatWarning(run.vaseFlat), vaseSpeckWarning(run.vaseSpecks), firstLayerWarning(run.firstLayerFilledMm2, cfg)].filter((w): w is string => w !== null);
     return { plan: run.plan, stats, warnings: extra.length ? [...model.warnings, ...extra] : model.warnings };
   }
 }
@@ -369,6 +370,16 @@ export function vaseFlatWarning(flat: readonly VaseFlat[]): string | null {
   const first = flat[0], last = flat[flat.length - 1];
   const where = flat.length === 1 ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)` : `${flat.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
   return `spiral vase: ${where} ${flat.length === 1 ? 'is' : 'are'} not one single wall loop (several islands, a hole, or a part too thin for a loop) and ${flat.length === 1 ? 'prints' : 'print'} flat, with a layer change; the spiral starts again above`;
+}
+
+/** One line naming the spiral vase layers whose specks beside the main island were left out, or null. */
+export function vaseSpeckWarning(specks: readonly ThinLoss[]): string | null {
+  if (specks.length === 0) return null;
+  let total = 0;
+  for (const s of specks) total += s.areaMm2;
+  const first = specks[0], last = specks[specks.length - 1];
+  const where = specks.length === 1 ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)` : `${specks.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
+  return `spiral vase: ${total.toFixed(2)} mm² of islands smaller than ${VASE_SPECK_MM2} mm² beside the main one ${specks.length === 1 ? 'is' : 'are'} left out on ${where}`;
 }
 
 /** An infill image that would take more than inflateBudget to decode is refused before it is decoded. */

@@ -14,6 +14,7 @@ import { parseArgs } from '../cli/args.js';
 import type { Mesh } from '../mesh/types.js';
 import type { ExtrudeStep, PrintPlan } from '../plan/types.js';
 import type { SliceOptions } from '../settings/schema.js';
+import { box } from './test-meshes.js';
 
 /** A solid cylinder of radius r standing on the bed, h tall, n sides, centred at (cx, cy). Closed, facing outwards. */
 function cylinder(r: number, h: number, n = 96, cx = 0, cy = 0): Mesh {
@@ -48,6 +49,32 @@ function tube(R: number, r: number, h: number, n = 96): Mesh {
     indices.push(i0[j], i0[i], i1[i], i0[j], i1[i], i1[j]);
     indices.push(o1[i], o1[j], i1[j], o1[i], i1[j], i1[i]);
     indices.push(o0[j], o0[i], i0[i], o0[j], i0[i], i0[j]);
+  }
+  return { positions: new Float32Array(positions), indices: new Uint32Array(indices) };
+}
+
+/**
+ * A cup modelled hollow: an outer cylinder of radius R, h tall, with a round hole of radius r from its solid
+ * floor (z = base) to the top, so every layer above the floor is a ring (an island with a hole). Closed,
+ * facing outwards (the hole's wall faces the axis).
+ */
+function cup(R: number, r: number, base: number, h: number, n = 96): Mesh {
+  const positions: number[] = [0, 0, 0, 0, 0, base];
+  const ring = (radius: number, z: number) =>
+    Array.from({ length: n }, (_, i) => {
+      const a = (2 * Math.PI * i) / n;
+      positions.push(radius * Math.cos(a), radius * Math.sin(a), z);
+      return positions.length / 3 - 1;
+    });
+  const o0 = ring(R, 0), o1 = ring(R, h), f = ring(r, base), i1 = ring(r, h);
+  const indices: number[] = [];
+  for (let i = 0; i < n; i++) {
+    const j = (i + 1) % n;
+    indices.push(o0[i], o0[j], o1[j], o0[i], o1[j], o1[i]); // outside
+    indices.push(f[j], f[i], i1[i], f[j], i1[i], i1[j]); // the hole's wall
+    indices.push(o1[i], o1[j], i1[j], o1[i], i1[j], i1[i]); // the rim
+    indices.push(0, o0[j], o0[i]); // underneath
+    indices.push(1, f[i], f[j]); // the floor inside
   }
   return { positions: new Float32Array(positions), indices: new Uint32Array(indices) };
 }
@@ -210,7 +237,10 @@ test('spiral vase: settings it sets aside are reported, defaults are not', async
       for (const st of l.steps) if (st.kind === 'extrude') for (let k = 1; k < st.points.length; k++) length += Math.hypot(st.points[k].x - st.points[k - 1].x, st.points[k].y - st.points[k - 1].y);
       return { spiral: l.spiral, steps: l.steps.map((st) => (st.kind === 'extrude' ? st.feature : 'travel')).join(), mm: Math.round(length / 100) / 10 };
     });
-  assert.deepEqual(turns(plan), turns(plain.plan));
+  // the same turns, their lengths to a tenth of a millimetre (a turn starts where the bottom's last path ended)
+  const mine = turns(plan), theirs = turns(plain.plan);
+  assert.deepEqual(mine.map(({ spiral, steps }) => ({ spiral, steps })), theirs.map(({ spiral, steps }) => ({ spiral, steps })));
+  for (let k = 0; k < mine.length; k++) assert.ok(Math.abs(mine[k].mm - theirs[k].mm) <= 0.15, `turn ${k}: ${mine[k].mm} against ${theirs[k].mm} mm`);
   // one wall and settings the vase uses as they are: nothing to report
   const quiet = await slice(VASE, { spiralVase: true, wallCount: 1, infillDensity: 0, zHop: 0 });
   assert.deepEqual(quiet.warnings, []);
@@ -230,11 +260,10 @@ test('spiral vase: layers that are not one loop (two islands, a hole) print flat
   const two = await slice(join(cylinder(8, 3, 64, -12, 0), cylinder(8, 3, 64, 12, 0)), { spiralVase: true });
   assert.ok(two.plan.layers.every((l) => !l.spiral));
   assert.ok(two.warnings.some((w) => /^spiral vase: 11 layers between 4 and 14 .* print flat/.test(w)), two.warnings.join('\n'));
-  // a tube: a hole on every layer
+  // a tube, a hole on every layer: the hole is dropped above the bottom, and the outside spirals
   const hollow = await slice(tube(12, 8, 3), { spiralVase: true });
-  assert.ok(hollow.plan.layers.every((l) => !l.spiral));
-  assert.ok(hollow.warnings.some((w) => w.includes('not one single wall loop')));
-  // the flat layers have one wall round each loop and nothing else
+  assert.ok(hollow.plan.layers.every((l, i) => !!l.spiral === i >= BOTTOM));
+  assert.deepEqual(hollow.warnings, []);
   for (const l of hollow.plan.layers.slice(BOTTOM)) assert.ok(l.steps.every((s) => s.kind === 'travel' || s.feature === 'WALL-OUTER'));
 
   // no bottom: the first layer is one flat loop, the spiral starts on the second
@@ -268,4 +297,72 @@ test('spiral vase flags: --spiral-vase, --vase-mode and --spiralize, and their -
     assert.equal(parseArgs(['slice', 'm.stl', flag.replace('--', '--no-')]).settings.spiralVase, false);
   }
   assert.equal(parseArgs(['slice', 'm.stl', '--vase-mode=false']).settings.spiralVase, false);
+});
+
+test('spiral vase: a cup modelled hollow spirals on its outside like a solid cylinder, its hole dropped', async () => {
+  const R = 15, r = 13.5, H = 6;
+  const { plan, gcode, warnings } = await slice(cup(R, r, 1.2, H), { spiralVase: true });
+  assert.deepEqual(warnings, [], 'the hole is not reported: it is dropped, as Cura drops it');
+  const layers = plan.layers;
+  assert.equal(layers.length, 30);
+  // the bottom layers print as set (the floor and walls round the hole where there is one); above, turns
+  for (const [i, layer] of layers.entries()) assert.equal(!!layer.spiral, i >= BOTTOM, `layer ${i} spirals only above the bottom`);
+  // the turns are the solid cylinder's: the same features and lengths, turn by turn
+  const solid = await slice(cylinder(R, H), { spiralVase: true });
+  const turnLengths = (p: PrintPlan) =>
+    p.layers.slice(BOTTOM + 1).map((l) => {
+      let length = 0;
+      for (const st of l.steps) if (st.kind === 'extrude') for (let k = 1; k < st.points.length; k++) length += Math.hypot(st.points[k].x - st.points[k - 1].x, st.points[k].y - st.points[k - 1].y);
+      return Math.round(length / 100) / 10;
+    });
+  assert.deepEqual(turnLengths(plan), turnLengths(solid.plan));
+
+  // the G-code after the bottom: one outer wall, Z never falls, no travel, no retraction, and every point on
+  // the outer surface (half a line inside radius R), none near the hole (radius r)
+  const blocks = layerBlocks(gcode);
+  // the axis: the middle of the turns' extent
+  const xy: Array<[number, number]> = [];
+  for (const b of blocks.slice(BOTTOM + 1)) for (const line of b) if (/^G1\s/.test(line) && word(line, 'X') !== undefined && word(line, 'Y') !== undefined) xy.push([word(line, 'X')!, word(line, 'Y')!]);
+  const xs = xy.map((p) => p[0]), ys = xy.map((p) => p[1]);
+  const centre = { x: (Math.min(...xs) + Math.max(...xs)) / 2, y: (Math.min(...ys) + Math.max(...ys)) / 2 };
+  let lastZ = -Infinity, points = 0;
+  for (let i = BOTTOM + 1; i < blocks.length; i++) {
+    for (const line of blocks[i]) {
+      assert.ok(!/^G0\b/.test(line), `layer ${i}: no travel or Z move (${line})`);
+      assert.ok(!/^G1[^;]*\sE-/.test(line) && !/^G1 F\d+ E[\d.]+$/.test(line) && !/^G1[0-1]\b/.test(line), `layer ${i}: no retraction or prime (${line})`);
+      if (/^;TYPE:/.test(line)) assert.equal(line, ';TYPE:WALL-OUTER');
+      if (!/^G1\s/.test(line)) continue;
+      const x = word(line, 'X'), y = word(line, 'Y'), z = word(line, 'Z');
+      if (x !== undefined && y !== undefined) {
+        const d = Math.hypot(x - centre.x, y - centre.y);
+        assert.ok(Math.abs(d - (R - 0.2)) < 0.06, `layer ${i}: the wall follows the outer surface (${d.toFixed(3)} mm from the axis)`);
+        points++;
+      }
+      if (z === undefined) {
+        assert.equal(i, blocks.length - 1, `layer ${i}: a spiral G1 has Z (${line})`);
+        continue;
+      }
+      assert.ok(z >= lastZ, `Z never falls: ${z} after ${lastZ}`);
+      lastZ = z;
+    }
+  }
+  assert.ok(points > 25 * 90, `a point every side of every turn (${points})`);
+  assert.equal(lastZ, H, 'the spiral ends at the top');
+  const parsed = parseGcode(gcode);
+  assert.equal(parsed.layers.length, 30);
+  for (const l of parsed.layers.slice(BOTTOM + 1)) assert.ok(Math.abs(l.thickness - 0.2) < 1e-4, `layer ${l.index} is one layer height thick`);
+});
+
+test('spiral vase: specks beside the main island are dropped with a warning; a second island of size keeps the layer flat', async () => {
+  // a pin 0.8 mm square (0.64 mm²) beside the vase, as tall as it
+  const pin = box(20, -0.4, 0, 20.8, 0.4, 6);
+  const specks = await slice(join(VASE, pin), { spiralVase: true });
+  assert.ok(specks.plan.layers.every((l, i) => !!l.spiral === i >= BOTTOM), 'the vase spirals, the pin left out');
+  const w = specks.warnings.filter((m) => m.startsWith('spiral vase:'));
+  assert.equal(w.length, 1, specks.warnings.join('\n'));
+  assert.match(w[0], /^spiral vase: [\d.]+ mm² of islands smaller than 1 mm² beside the main one are left out on 26 layers between 4 and 29/);
+  // a 2 mm square post is an island of its own: those layers print flat, as before
+  const post = await slice(join(VASE, box(20, -1, 0, 22, 1, 6)), { spiralVase: true });
+  assert.ok(post.plan.layers.every((l) => !l.spiral));
+  assert.ok(post.warnings.some((m) => m.includes('not one single wall loop')));
 });

@@ -56,6 +56,11 @@ export type LimitSettings = Pick<
   Settings,
   | 'acceleration'
   | 'cornerVelocity'
+  | 'jerkX'
+  | 'jerkY'
+  | 'jerkZ'
+  | 'jerkE'
+  | 'junctionDeviation'
   | 'maxSpeed'
   | 'maxSpeedX'
   | 'maxSpeedY'
@@ -77,14 +82,27 @@ function axisLimits(code: string, values: Record<'X' | 'Y' | 'Z' | 'E', number |
   return words.length ? [`${code} ${words.join(' ')}`] : [];
 }
 
-function m20xLimits(s: LimitSettings, feedScale: number, jerk: (v: number) => string, retractWord: boolean): string[] {
+/**
+ * The jerk words (X, Y: jerkX/jerkY, else cornerVelocity; Z, E when given), scaled, and J (junction
+ * deviation, Marlin's M205 only) when given.
+ */
+function jerkWords(s: LimitSettings, scale: number, digits: number, withJ: boolean): string {
+  const jx = s.jerkX ?? s.jerkY ?? s.cornerVelocity, jy = s.jerkY ?? s.jerkX ?? s.cornerVelocity;
+  let out = `X${compact(jx * scale, digits)} Y${compact(jy * scale, digits)}`;
+  if (s.jerkZ !== null) out += ` Z${compact(s.jerkZ * scale, digits)}`;
+  if (s.jerkE !== null) out += ` E${compact(s.jerkE * scale, digits)}`;
+  if (withJ && s.junctionDeviation !== null) out += ` J${compact(s.junctionDeviation, 3)}`;
+  return out;
+}
+
+function m20xLimits(s: LimitSettings, feedScale: number, jerk: (s: LimitSettings) => string, retractWord: boolean): string[] {
   const travel = s.travelAcceleration ?? s.acceleration;
   const retract = s.retractAcceleration ?? s.maxAccelerationE ?? s.acceleration;
   return [
     ...axisLimits('M201', { X: s.maxAccelerationX, Y: s.maxAccelerationY, Z: s.maxAccelerationZ, E: s.maxAccelerationE }),
     ...axisLimits('M203', { X: s.maxSpeedX, Y: s.maxSpeedY, Z: s.maxSpeedZ, E: s.maxSpeedE }, feedScale),
     `M204 P${accel(s.acceleration)}${retractWord ? ` R${accel(retract)}` : ''} T${accel(travel)}`,
-    jerk(s.cornerVelocity),
+    jerk(s),
   ];
 }
 
@@ -104,7 +122,7 @@ const MARLIN: FlavorCommands = {
   fan: fan255,
   acceleration: (a) => `M204 P${accel(a)} T${accel(a)}`,
   pressureAdvance: (k) => `M900 K${compact(k, 4)}`,
-  machineLimits: (s) => m20xLimits(s, 1, (j) => `M205 X${compact(j, 2)} Y${compact(j, 2)}`, true),
+  machineLimits: (s) => m20xLimits(s, 1, (l) => `M205 ${jerkWords(l, 1, 2, true)}`, true),
   colorChange: 'M600',
   pause: 'M601',
 };
@@ -132,7 +150,7 @@ const REPRAP: FlavorCommands = {
   fan: (fraction) => `M106 S${compact(Math.min(1, Math.max(0, fraction)), 3)}`,
   acceleration: (a) => `M204 P${accel(a)} T${accel(a)}`,
   pressureAdvance: (k) => `M572 D0 S${compact(k, 4)}`,
-  machineLimits: (s) => m20xLimits(s, 60, (j) => `M566 X${compact(j * 60, 0)} Y${compact(j * 60, 0)}`, false),
+  machineLimits: (s) => m20xLimits(s, 60, (l) => `M566 ${jerkWords(l, 60, 0, false)}`, false),
   colorChange: 'M600',
   pause: 'M226',
 };

@@ -61,6 +61,8 @@ const FALLBACKS: Readonly<Record<string, readonly string[]>> = {
   bottomSkinThickness: ['shellSkinThickness'],
   travelAcceleration: ['acceleration'],
   retractAcceleration: ['maxAccelerationE', 'acceleration'],
+  jerkX: ['jerkY', 'cornerVelocity'],
+  jerkY: ['jerkX', 'cornerVelocity'],
 };
 
 const has = (o: object, key: string) => Object.prototype.hasOwnProperty.call(o, key);
@@ -153,8 +155,8 @@ const ALIASES: Readonly<Record<string, Variable>> = {
   machine_max_feedrate_y: perExtruder('maxSpeedY'),
   machine_max_feedrate_z: perExtruder('maxSpeedZ'),
   machine_max_feedrate_e: perExtruder('maxSpeedE'),
-  machine_max_jerk_x: perExtruder('cornerVelocity'),
-  machine_max_jerk_y: perExtruder('cornerVelocity'),
+  machine_max_jerk_x: perExtruder('jerkX'),
+  machine_max_jerk_y: perExtruder('jerkY'),
   total_layer_count: of('layerCount'),
   layer_num: of('layerIndex'),
   layer_z: of('layerZ'),

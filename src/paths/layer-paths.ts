@@ -75,6 +75,7 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
   if (lost > 0) out.lostMm2 = lost;
   if (regions.vase) out.vase = true;
   if (regions.firstLayerFilledMm2) out.firstLayerFilledMm2 = regions.firstLayerFilledMm2;
+  if (regions.vaseDroppedMm2) out.vaseDroppedMm2 = regions.vaseDroppedMm2;
   return out;
 }
 

@@ -78,5 +78,7 @@ export interface LayerPaths extends LayerZ {
   vase?: true;
   /** The first layer's area added under an open or pointed bottom (LayerRegions.firstLayerFilledMm2), mm². */
   firstLayerFilledMm2?: number;
+  /** LayerRegions.vaseDroppedMm2: specks beside a spiral vase layer's main island left out, mm². */
+  vaseDroppedMm2?: number;
   groups: PathGroup[];
 }

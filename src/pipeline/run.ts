@@ -77,6 +77,8 @@ export interface RunResult {
   vaseFlat: VaseFlat[];
   /** Area the first layer took from the layer above under an open or pointed bottom, mm² (0: none). */
   firstLayerFilledMm2: number;
+  /** Spiral vase layers with specks beside their main island left out (vaseOutline): layer, Z (mm), area (mm²). */
+  vaseSpecks: ThinLoss[];
 }
 
 /** A spiral vase layer printed flat. */
@@ -292,12 +294,14 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const planned: LayerPlan[] = [];
     const thinLost: ThinLoss[] = [];
     const vaseFlat: VaseFlat[] = [];
+    const vaseSpecks: ThinLoss[] = [];
     // sequential printing plans the layers object by object once every layer's paths are made
     const collected: LayerPaths[] = [];
     let firstLayerFilledMm2 = 0;
     const plan = (lp: LayerPaths) => {
       if (lp.firstLayerFilledMm2) firstLayerFilledMm2 += lp.firstLayerFilledMm2;
       if (lp.lostMm2) thinLost.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.lostMm2 });
+      if (lp.vaseDroppedMm2) vaseSpecks.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.vaseDroppedMm2 });
       if (sequence) {
         collected.push(lp);
         return;
@@ -429,7 +433,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
     yield* paced(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
     report('writing', 1);
-    return { plan: printPlan, estimate, layers: planned.length, thinLost, vaseFlat, firstLayerFilledMm2 };
+    return { plan: printPlan, estimate, layers: planned.length, thinLost, vaseFlat, vaseSpecks, firstLayerFilledMm2 };
   } finally {
     if (pool) yield* wait(pool.close());
   }

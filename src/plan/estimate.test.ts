@@ -3,6 +3,7 @@ import assert from 'node:assert/strict';
 import type { Pt } from '../geometry/types.js';
 import { Z_SPEED_MM_S } from './moves.js';
 import { estimatePlan, pointToPointSeconds, segmentSeconds, type EstimateSettings } from './estimate.js';
+import { MINIMUM_PLANNER_SPEED, trapezoidSeconds } from './marlin-planner.js';
 import type { ExtrudeStep, LayerPlan, PlanStep, PrintPlan, TravelStep } from './types.js';
 
 const S: EstimateSettings = {
@@ -38,6 +39,12 @@ const S: EstimateSettings = {
   retractBeforeWipe: 0,
   coastingVolume: 0,
   coastingMinVolume: 0.8,
+  jerkX: null,
+  jerkY: null,
+  jerkZ: null,
+  jerkE: null,
+  junctionDeviation: null,
+  startGcode: '',
 };
 
 const pt = (xMm: number, yMm: number): Pt => ({ x: Math.round(xMm * 1000), y: Math.round(yMm * 1000) });
@@ -61,15 +68,21 @@ const close = (actual: number, expected: number, tolerance: number, what: string
 const trapezoid = (L: number, v: number, v0: number, v1: number, a: number): number =>
   L / v + (v - v0) ** 2 / (2 * a * v) + (v - v1) ** 2 / (2 * a * v);
 
-test('a long straight move takes L/v + v/a', () => {
+
+/** Marlin's planner starts and ends every chain at its minimum planner speed. */
+const m = MINIMUM_PLANNER_SPEED;
+
+test('a long straight move takes L/v + v/a (from and to Marlin\'s minimum planner speed)', () => {
   const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(100, 0)], 50)])), S);
-  close(e.printTimeSeconds, 100 / 50 + 50 / 500, 1e-9, 'straight');
+  close(e.printTimeSeconds, trapezoid(100, 50, m, m, 500), 1e-9, 'straight');
+  close(e.printTimeSeconds, 100 / 50 + 50 / 500, 1e-3, 'about L/v + v/a');
   assert.deepEqual(e.layerSeconds.length, 1);
 });
 
 test('a short move that never reaches its speed takes 2·√(L/a)', () => {
   const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(1, 0)], 50)])), S);
-  close(e.printTimeSeconds, 2 * Math.sqrt(1 / 500), 1e-9, 'triangle');
+  const peak = Math.sqrt(500 * 1 + m * m);
+  close(e.printTimeSeconds, (2 * peak - 2 * m) / 500, 1e-9, 'triangle');
   close(pointToPointSeconds(1, 50, 500), 2 * Math.sqrt(1 / 500), 1e-12, 'p2p');
 });
 
@@ -77,16 +90,32 @@ test('collinear pieces cost the same as one straight move (no slow-down at strai
   const pts: Pt[] = [];
   for (let i = 0; i <= 200; i++) pts.push(pt(i * 0.5, 0));
   const e = estimatePlan(plan(layer(0, [line(pts, 50)])), S);
-  close(e.printTimeSeconds, 100 / 50 + 50 / 500, 1e-6, 'split straight');
+  close(e.printTimeSeconds, trapezoid(100, 50, m, m, 500), 1e-6, 'split straight');
 });
 
-test('a 90° corner is taken at cornerVelocity', () => {
+test('a 90° corner is taken at cornerVelocity (the junction deviation it maps to)', () => {
   const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(100, 0), pt(100, 100)], 50)])), S);
-  const expected = trapezoid(100, 50, 0, 8, 500) + trapezoid(100, 50, 8, 0, 500);
+  // Marlin's junction vectors carry E when the extruder moves: k mm of filament a mm opens the corner a little
+  const k = (0.4 * 0.2) / (Math.PI * 0.875 ** 2);
+  const cos = -(k * k) / (1 + k * k);
+  const sinHalf = Math.sqrt(0.5 * (1 - cos));
+  const jd = (8 * 8 * (Math.SQRT2 - 1)) / 500;
+  const vc = Math.sqrt((500 * jd * sinHalf) / (1 - sinHalf));
+  assert.ok(vc > 8 && vc < 8.01);
+  const expected = trapezoid(100, 50, m, vc, 500) + trapezoid(100, 50, vc, m, 500);
   close(e.printTimeSeconds, expected, 1e-9, 'corner');
-  // A full reversal stops the head.
+  // a travel (no E): exactly cornerVelocity
+  const t = estimatePlan(plan(layer(0, [move([pt(0, 0)], false), move([pt(100, 0), pt(100, 100)], false, 0, 50)])), S);
+  close(t.printTimeSeconds, trapezoid(100, 50, m, 8, 500) + trapezoid(100, 50, 8, m, 500), 1e-9, 'travel corner');
+  // A reversal all but stops the head (E going on both ways keeps it from being an exact one in Marlin:
+  // cos θ = (1 − k²) / (1 + k²), under a mm/s); a travel's is exact: it stops
   const back = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(100, 0), pt(0, 0)], 50)])), S);
-  close(back.printTimeSeconds, 2 * (100 / 50 + 50 / 500), 1e-9, 'reversal');
+  const sinBack = Math.sqrt(0.5 * (1 - (1 - k * k) / (1 + k * k)));
+  const vr = Math.sqrt((500 * jd * sinBack) / (1 - sinBack));
+  assert.ok(vr < 1);
+  close(back.printTimeSeconds, trapezoid(100, 50, m, vr, 500) + trapezoid(100, 50, vr, m, 500), 1e-9, 'reversal');
+  const travelBack = estimatePlan(plan(layer(0, [move([pt(0, 0)], false), move([pt(100, 0), pt(0, 0)], false, 0, 50)])), S);
+  close(travelBack.printTimeSeconds, 2 * trapezoid(100, 50, m, m, 500), 1e-9, 'travel reversal');
 });
 
 test('a zig-zag of short segments is slower than the straight line of the same length', () => {
@@ -110,30 +139,33 @@ test('a finely divided circle runs near its centripetal speed √(a·r)', () => 
 
 test('speeds are capped at maxSpeed', () => {
   const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(200, 0)], 1000)])), { ...S, maxSpeed: 100 });
-  close(e.printTimeSeconds, 200 / 100 + 100 / 500, 1e-9, 'capped');
+  close(e.printTimeSeconds, trapezoid(200, 100, m, m, 500), 1e-9, 'capped');
 });
 
-test('retraction, Z hop and prime are timed as point-to-point moves', () => {
+test('retraction, Z hop and prime are blocks like any other: 90° junctions at min(cornerVelocity, both speeds)', () => {
   const s = { ...S, retractionExtraPrime: 0.5 };
   const p = plan(layer(0, [move([pt(0, 0)], false), move([pt(30, 0)], true, 0.4)]));
   const e = estimatePlan(p, s);
+  // E then Z then X then Z then E: every junction 90°, so min(8, the two blocks' speeds) = 5 (Z's speed)
+  const z = Z_SPEED_MM_S;
   const expected =
-    pointToPointSeconds(5, 45, 500) + // retract
-    2 * pointToPointSeconds(0.4, Z_SPEED_MM_S, 500) + // lift and lower
-    pointToPointSeconds(30, 150, 500) + // the travel at its own speed
-    pointToPointSeconds(5.5, 45, 500); // prime with the extra
+    trapezoidSeconds(5, m, 45, z, 500) + // retract
+    2 * (0.4 / z) + // lift and lower, cruising at 5 mm/s throughout
+    trapezoidSeconds(30, z, 150, z, 500) + // the travel at its own speed
+    trapezoidSeconds(5.5, z, 45, m, 500); // prime with the extra
   close(e.printTimeSeconds, expected, 1e-9, 'retracted travel');
   close(e.filamentMm, 0.5, 1e-12, 'extra prime is filament used');
   const off = estimatePlan(p, { ...s, retractionEnabled: false });
-  close(off.printTimeSeconds, pointToPointSeconds(30, 150, 500), 1e-9, 'no retraction');
+  close(off.printTimeSeconds, trapezoidSeconds(30, m, 150, m, 500), 1e-9, 'no retraction (and so no Z hop)');
 });
 
-test('per-layer seconds add up; a layer change costs a Z move', () => {
+test('per-layer seconds add up; a layer change is a Z block between the layers', () => {
   const p = plan(layer(0, [line([pt(0, 0), pt(100, 0)], 50)]), layer(1, [line([pt(100, 0), pt(0, 0)], 50)]));
   const e = estimatePlan(p, S);
   assert.equal(e.layerSeconds.length, 2);
-  close(e.layerSeconds[0]!, 2.1, 1e-9, 'layer 0');
-  close(e.layerSeconds[1]!, 2.1 + pointToPointSeconds(0.2, Z_SPEED_MM_S, 500), 1e-9, 'layer 1');
+  const z = Z_SPEED_MM_S;
+  close(e.layerSeconds[0]!, trapezoid(100, 50, m, z, 500), 1e-9, 'layer 0');
+  close(e.layerSeconds[1]!, 0.2 / z + trapezoid(100, 50, z, m, 500), 1e-9, 'layer 1');
   close(e.printTimeSeconds, e.layerSeconds[0]! + e.layerSeconds[1]!, 1e-12, 'total');
 });
 
@@ -155,25 +187,24 @@ test('segmentSeconds handles triangles between unequal entry and exit speeds', (
 test('machine limits: per-axis speed and acceleration caps, travel and retract acceleration, and "ignore"', () => {
   const long = plan(layer(0, [line([pt(0, 0), pt(100, 0)], 100)]));
   const capped = estimatePlan(long, { ...S, maxSpeedX: 50 });
-  close(capped.printTimeSeconds, 100 / 50 + 50 / 500, 1e-9, 'X capped at 50 mm/s');
-  close(estimatePlan(long, { ...S, maxSpeedX: 50, machineLimits: 'ignore' }).printTimeSeconds, 100 / 100 + 100 / 500, 1e-9, 'ignored');
-  close(estimatePlan(long, { ...S, maxSpeedY: 50 }).printTimeSeconds, 100 / 100 + 100 / 500, 1e-9, 'a Y limit does not slow an X move');
+  close(capped.printTimeSeconds, trapezoid(100, 50, m, m, 500), 1e-9, 'X capped at 50 mm/s');
+  close(estimatePlan(long, { ...S, maxSpeedX: 50, machineLimits: 'ignore' }).printTimeSeconds, trapezoid(100, 100, m, m, 500), 1e-9, 'ignored');
+  close(estimatePlan(long, { ...S, maxSpeedY: 50 }).printTimeSeconds, trapezoid(100, 100, m, m, 500), 1e-9, 'a Y limit does not slow an X move');
   // a 45° move may go 50/cos 45° when each axis is limited to 50
   const diagonal = plan(layer(0, [line([pt(0, 0), pt(100, 100)], 200)]));
   const v = 50 / Math.SQRT1_2;
-  close(estimatePlan(diagonal, { ...S, maxSpeedX: 50, maxSpeedY: 50 }).printTimeSeconds, (100 * Math.SQRT2) / v + v / 500, 1e-9, 'diagonal');
+  close(estimatePlan(diagonal, { ...S, maxSpeedX: 50, maxSpeedY: 50 }).printTimeSeconds, trapezoid(100 * Math.SQRT2, v, m, m, 500), 1e-9, 'diagonal');
   // per-axis acceleration: X at 250 mm/s² halves the acceleration of an X move
-  close(estimatePlan(long, { ...S, maxAccelerationX: 250 }).printTimeSeconds, 100 / 100 + 100 / 250, 1e-9, 'X acceleration');
+  close(estimatePlan(long, { ...S, maxAccelerationX: 250 }).printTimeSeconds, trapezoid(100, 100, m, m, 250), 1e-9, 'X acceleration');
   // travels accelerate at travelAcceleration
   const hop = plan(layer(0, [move([pt(0, 0)], false), move([pt(100, 0)], false, 0, 100)]));
-  const base = estimatePlan(hop, S).printTimeSeconds;
-  const fast = estimatePlan(hop, { ...S, travelAcceleration: 5000 }).printTimeSeconds;
-  close(base - fast, 100 / 500 - 100 / 5000, 1e-9, 'travel acceleration');
-  // retractions are capped at maxSpeedE and use retractAcceleration
+  close(estimatePlan(hop, { ...S, travelAcceleration: 5000 }).printTimeSeconds, trapezoid(100, 100, m, m, 5000), 1e-9, 'travel acceleration');
+  // retractions are capped at maxSpeedE and use retractAcceleration; the 90° junctions E→X→E at the junction
+  // deviation's speed with each entering block's acceleration: 8 mm/s into the travel (500), 8√2 into the prime (1000)
   const retract = plan(layer(0, [move([pt(0, 0)], false), move([pt(10, 0)], true)]));
-  const r0 = estimatePlan(retract, S).printTimeSeconds;
   const r1 = estimatePlan(retract, { ...S, maxSpeedE: 20, retractAcceleration: 1000 }).printTimeSeconds;
-  close(r1 - r0, 2 * (pointToPointSeconds(5, 20, 1000) - pointToPointSeconds(5, 45, 500)), 1e-9, 'retract and prime');
+  const v2 = 8 * Math.SQRT2;
+  close(r1, trapezoidSeconds(5, m, 20, 8, 1000) + trapezoidSeconds(10, 8, 150, v2, 500) + trapezoidSeconds(5, v2, 20, m, 1000), 1e-9, 'retract and prime');
 });
 
 test('an arc is timed like the firmware runs it: 1 mm chords, taken at the circle\'s own speed', () => {

@@ -10,24 +10,16 @@
  * Klipper's defaults), and the extruder's instantaneous corner velocity (Klipper's default, 1 mm/s). Every
  * move is one queue as in the firmware: Z moves and layer changes are junctions like any other.
  *
- * Marlin and RepRapFirmware flavours, a model of their planners:
- * - Consecutive XY moves form a chain; a retraction, a prime, a Z move or a layer end stops the head
- *   (speed 0) and ends the chain.
- * - Each segment has a nominal speed and a trapezoidal profile with the one `acceleration` of the settings.
- * - The speed at a junction between two segments is limited by both nominal speeds, by the corner angle
- *   through the junction-deviation rule calibrated so that a 90° corner allows exactly `cornerVelocity`
- *   (Klipper's square-corner velocity; a full reversal stops), and by the centripetal speed of an arc
- *   tangent to both segments within half of the shorter one (so many short segments around a curve are
- *   taken at the speed of that curve).
- * - A backward pass limits every junction so the head can still brake to the next one; a forward pass
- *   limits it to what the head can reach from the previous one. Then each segment's time is summed.
- * - Retractions, primes and Z moves: point-to-point trapezoids from rest at their own speeds.
- * - Arcs are timed as the firmware runs them: chords of ARC_SEGMENT_MM (Marlin's MM_PER_ARC_SEGMENT and
- *   Klipper's arc resolution both default to 1 mm).
- * - Machine limits (unless `machineLimits` is `ignore`): travels accelerate at `travelAcceleration`;
- *   a move's speed and acceleration are cut so that neither axis exceeds its own limit (`maxSpeedX/Y`,
- *   `maxAccelerationX/Y`), as Marlin's planner does; Z moves use `maxAccelerationZ`; retractions and
- *   primes are capped at `maxSpeedE` and accelerate at `retractAcceleration` (else `maxAccelerationE`).
+ * Marlin and RepRapFirmware flavours: Marlin 2's look-ahead planner (marlin-planner.ts), with the limits
+ * as the firmware has them when the print starts (`marlinLimits`): the settings' machine limits (unless
+ * `machineLimits` is `ignore`), then the M201/M203/M204/M205 (RepRap: M566) with literal values in the start
+ * G-code, then the ones Strata writes after it (`machineLimits` = `write`; else the `M204 P T` of an
+ * `acceleration` set away from its default). Junctions by classic jerk when any of `jerkX`–`jerkE` (or the
+ * start G-code's M205 X/Y/Z/E) is given, else by junction deviation: `junctionDeviation` (M205 J), else the one
+ * that takes a 90° corner at `cornerVelocity` at the print acceleration, cornerVelocity² (√2 − 1) / a.
+ * Retractions, primes, Z moves and layer changes are blocks like any other, as the firmware sees them.
+ * Arcs are timed as the firmware runs them: chords of ARC_SEGMENT_MM (Marlin's MM_PER_ARC_SEGMENT and
+ * Klipper's arc resolution both default to 1 mm).
  * Heating, homing and the start/end G-code are not estimated.
  *
  * Wipes (moves.ts) are travels in the chain (Marlin model: their speed cut so that the retraction on the
@@ -39,7 +31,8 @@
  */
 import { filamentArea, walkPlanSteps, type MoveSettings, type MoveSink } from './moves.js';
 import { extrudeOnlyRatio, KlipperPlanner, type KlipperLimits } from './klipper-planner.js';
-import type { Settings } from '../settings/schema.js';
+import { MarlinPlanner, type MarlinLimits } from './marlin-planner.js';
+import { SCHEMA, type Settings } from '../settings/schema.js';
 import type { PlanEstimate, PrintPlan } from './types.js';
 import { hypot } from '../geometry/types.js';
 
@@ -63,41 +56,113 @@ export type EstimateSettings = MoveSettings &
     | 'maxAccelerationE'
     | 'travelAcceleration'
     | 'retractAcceleration'
+    | 'maxSpeedZ'
+    | 'jerkX'
+    | 'jerkY'
+    | 'jerkZ'
+    | 'jerkE'
+    | 'junctionDeviation'
+    | 'startGcode'
   >;
 
 /** Chord length firmware splits arcs into, mm (Marlin MM_PER_ARC_SEGMENT, Klipper gcode_arcs resolution). */
 export const ARC_SEGMENT_MM = 1;
 
-/** The limits the motion timer applies, resolved once from the settings (Infinity = none). */
-export interface MotionLimits {
-  printAccel: number;
-  travelAccel: number;
-  zAccel: number;
-  retractAccel: number;
-  maxSpeedX: number;
-  maxSpeedY: number;
-  maxSpeedE: number;
-  maxAccelX: number;
-  maxAccelY: number;
-  cornerVelocity: number;
+/** Marlin's defaults for the jerk of Z and E (DEFAULT_ZJERK, DEFAULT_EJERK), mm/s, when only X/Y are given. */
+export const MARLIN_DEFAULT_JERK_Z = 0.3;
+export const MARLIN_DEFAULT_JERK_E = 5;
+
+/** The machine-limit M-codes with literal values in a start G-code template (placeholders are skipped). */
+export interface StartLimits {
+  M201: Partial<Record<'X' | 'Y' | 'Z' | 'E', number>>;
+  M203: Partial<Record<'X' | 'Y' | 'Z' | 'E', number>>;
+  M204: Partial<Record<'S' | 'P' | 'R' | 'T', number>>;
+  M205: Partial<Record<'X' | 'Y' | 'Z' | 'E' | 'J', number>>;
+  M566: Partial<Record<'X' | 'Y' | 'Z' | 'E', number>>;
 }
 
-/** The limits the estimate uses for these settings. */
-export function motionLimits(s: EstimateSettings): MotionLimits {
-  const a = s.acceleration;
+/** The M201/M203/M204/M205/M566 words of a start G-code, the last of each word winning. */
+export function startGcodeLimits(gcode: string): StartLimits {
+  const out: StartLimits = { M201: {}, M203: {}, M204: {}, M205: {}, M566: {} };
+  for (const raw of gcode.split('\n')) {
+    const line = raw.replace(/;.*$/, '').trim().toUpperCase();
+    const m = /^M(201|203|204|205|566)(\s.*)?$/.exec(line);
+    if (!m) continue;
+    const into = out[`M${m[1]}` as keyof StartLimits] as Record<string, number>;
+    for (const word of (m[2] ?? '').trim().split(/\s+/)) {
+      const w = /^([A-Z])(-?\d*\.?\d+)$/.exec(word);
+      if (w) into[w[1]] = Number(w[2]);
+    }
+  }
+  return out;
+}
+
+/** The limits Marlin (and RepRapFirmware, timed with Marlin's planner) plans with, from the settings. */
+export function marlinLimits(s: EstimateSettings): MarlinLimits {
   const use = s.machineLimits !== 'ignore';
   const or = (v: number | null, fallback: number) => (use && v !== null ? v : fallback);
+  const feed = [or(s.maxSpeedX, Infinity), or(s.maxSpeedY, Infinity), or(s.maxSpeedZ, Infinity), or(s.maxSpeedE, Infinity)];
+  const maxAccel = [or(s.maxAccelerationX, Infinity), or(s.maxAccelerationY, Infinity), or(s.maxAccelerationZ, Infinity), or(s.maxAccelerationE, Infinity)];
+  let print = s.acceleration;
+  let travel = or(s.travelAcceleration, print);
+  let retract = or(s.retractAcceleration, or(s.maxAccelerationE, print));
+  let jx = use ? (s.jerkX ?? s.jerkY) : null;
+  let jy = use ? (s.jerkY ?? s.jerkX) : null;
+  let jz = use ? s.jerkZ : null;
+  let je = use ? s.jerkE : null;
+  let jd = use ? s.junctionDeviation : null;
+  // the start G-code's literal limits
+  const g = startGcodeLimits(s.startGcode);
+  const reprap = s.gcodeFlavor === 'reprap';
+  const axes = ['X', 'Y', 'Z', 'E'] as const;
+  axes.forEach((a, i) => {
+    if (g.M201[a] !== undefined) maxAccel[i] = g.M201[a]!;
+    if (g.M203[a] !== undefined) feed[i] = g.M203[a]! / (reprap ? 60 : 1);
+  });
+  if (g.M204.S !== undefined) print = travel = g.M204.S;
+  if (g.M204.P !== undefined) print = g.M204.P;
+  if (g.M204.T !== undefined) travel = g.M204.T;
+  if (g.M204.R !== undefined) retract = g.M204.R;
+  const jerkWords = reprap ? g.M566 : g.M205;
+  const scale = reprap ? 1 / 60 : 1;
+  if (jerkWords.X !== undefined) jx = jerkWords.X * scale;
+  if (jerkWords.Y !== undefined) jy = jerkWords.Y * scale;
+  if (jerkWords.Z !== undefined) jz = jerkWords.Z * scale;
+  if (jerkWords.E !== undefined) je = jerkWords.E * scale;
+  if (!reprap && g.M205.J !== undefined) jd = g.M205.J;
+  // what Strata writes after the start G-code (gcode/flavor.ts)
+  if (s.machineLimits === 'write') {
+    const set = (v: number | null, i: number, into: number[]) => {
+      if (v !== null) into[i] = v;
+    };
+    [s.maxAccelerationX, s.maxAccelerationY, s.maxAccelerationZ, s.maxAccelerationE].forEach((v, i) => set(v, i, maxAccel));
+    [s.maxSpeedX, s.maxSpeedY, s.maxSpeedZ, s.maxSpeedE].forEach((v, i) => set(v, i, feed));
+    print = s.acceleration;
+    travel = s.travelAcceleration ?? s.acceleration;
+    if (!reprap) retract = s.retractAcceleration ?? s.maxAccelerationE ?? s.acceleration;
+    // M205 X Y carries cornerVelocity when no jerk is set, which a junction-deviation Marlin does not take:
+    // the jerk and junction deviation written count only where they are set
+    if (s.jerkX !== null || s.jerkY !== null) {
+      jx = s.jerkX ?? s.jerkY;
+      jy = s.jerkY ?? s.jerkX;
+    }
+    if (s.jerkZ !== null) jz = s.jerkZ;
+    if (s.jerkE !== null) je = s.jerkE;
+    if (!reprap && s.junctionDeviation !== null) jd = s.junctionDeviation;
+  } else if (s.acceleration !== SCHEMA.acceleration.default) print = travel = s.acceleration;
+  // any jerk given says the firmware has classic jerk: X/Y default to cornerVelocity, Z/E to Marlin's
+  const jerk: MarlinLimits['jerk'] =
+    jx !== null || jy !== null || jz !== null || je !== null
+      ? [jx ?? jy ?? s.cornerVelocity, jy ?? jx ?? s.cornerVelocity, jz ?? MARLIN_DEFAULT_JERK_Z, je ?? MARLIN_DEFAULT_JERK_E]
+      : null;
   return {
-    printAccel: a,
-    travelAccel: or(s.travelAcceleration, a),
-    zAccel: or(s.maxAccelerationZ, a),
-    retractAccel: or(s.retractAcceleration, or(s.maxAccelerationE, a)),
-    maxSpeedX: or(s.maxSpeedX, Infinity),
-    maxSpeedY: or(s.maxSpeedY, Infinity),
-    maxSpeedE: or(s.maxSpeedE, Infinity),
-    maxAccelX: or(s.maxAccelerationX, Infinity),
-    maxAccelY: or(s.maxAccelerationY, Infinity),
-    cornerVelocity: s.cornerVelocity,
+    maxFeedrate: [feed[0], feed[1], feed[2], feed[3]],
+    maxAccel: [maxAccel[0], maxAccel[1], maxAccel[2], maxAccel[3]],
+    printAccel: print,
+    travelAccel: travel,
+    retractAccel: retract,
+    jerk,
+    junctionDeviation: jd ?? (s.cornerVelocity * s.cornerVelocity * (Math.SQRT2 - 1)) / print,
   };
 }
 
@@ -218,11 +283,6 @@ class KlipperTimer implements MoveSink {
   objectEnd(): void {}
 }
 
-/** √2 − 1: the junction-deviation factor that makes a 90° corner's speed equal the corner velocity. */
-const JUNCTION_FACTOR = Math.SQRT2 - 1;
-/** cos of the angle above which two segments count as a full reversal (the head must stop). */
-const REVERSAL_COS = 0.999999;
-
 /**
  * Time of one trapezoidal segment of `length` mm: enter at speed v0, cruise at most at vc, leave at v1
  * (mm/s). Assumes v0 and v1 are reachable from each other within `length` (the lookahead guarantees it).
@@ -245,198 +305,92 @@ export function pointToPointSeconds(distance: number, speed: number, accel: numb
 }
 
 /**
- * Squared speed allowed through the junction from direction (ux0,uy0) (segment length len0) into
- * direction (ux1,uy1) (length len1), from the corner angle alone (nominal speeds not applied).
+ * The Marlin and RepRap flavours' motion timer: the plan's moves, in mm, into Marlin's planner; each
+ * layer's moves timed into that layer. Arcs are split into chords of ARC_SEGMENT_MM.
  */
-export function junctionSpeed2(
-  ux0: number,
-  uy0: number,
-  len0: number,
-  ux1: number,
-  uy1: number,
-  len1: number,
-  accel: number,
-  cornerVelocity: number,
-): number {
-  // theta: angle between the reversed incoming direction and the outgoing one (π = straight on).
-  const cosTheta = -(ux0 * ux1 + uy0 * uy1);
-  if (cosTheta > REVERSAL_COS) return 0;
-  const sinHalf = Math.sqrt(0.5 * (1 - cosTheta));
-  const cosHalf = Math.sqrt(Math.max(0, 0.5 * (1 + cosTheta)));
-  if (cosHalf < 1e-9) return Infinity;
-  const deviation = cornerVelocity * cornerVelocity * JUNCTION_FACTOR * (sinHalf / (1 - sinHalf));
-  const arc = accel * 0.5 * Math.min(len0, len1) * (sinHalf / cosHalf);
-  return deviation < arc ? deviation : arc;
-}
-
-/**
- * The motion timer: a MoveSink that collects chains of XY segments (growable typed arrays, owned by
- * one estimate call), runs the lookahead passes when the head stops and adds up the time per layer.
- * A class with fields rather than closures, so the per-segment doubles are updated in place.
- */
-class MotionTimer implements MoveSink {
-  private length = new Float64Array(1024);
-  private cruise = new Float64Array(1024);
-  private accel = new Float64Array(1024);
-  private entryMax2 = new Float64Array(1024);
-  private count = 0;
-  /** Last XY position (µm) and unit direction of the last chained segment. */
+class MarlinTimer implements MoveSink {
+  readonly planner: MarlinPlanner;
+  /** Position: X, Y µm; Z mm (NaN until known). */
   private px = 0;
   private py = 0;
-  private ux = 0;
-  private uy = 0;
-  private layerTime = 0;
-  readonly layerSeconds: number[] = [];
+  private pz = NaN;
+  private layers = 0;
   filament = 0;
 
-  constructor(private readonly limits: MotionLimits) {}
-
-  /** Run the backward and forward passes over the chain (which starts and ends at rest), add its time, empty it. */
-  private stop(): void {
-    const n = this.count;
-    if (n === 0) return;
-    const { length, cruise, entryMax2, accel } = this;
-    // Backward: every entry must allow braking to the next one.
-    let next2 = 0;
-    for (let i = n - 1; i >= 0; i--) {
-      const reachable = next2 + 2 * accel[i]! * length[i]!;
-      const e = entryMax2[i]! < reachable ? entryMax2[i]! : reachable;
-      entryMax2[i] = e;
-      next2 = e;
-    }
-    // Forward: every exit is limited by what the head reaches from the entry; sum the trapezoids.
-    let seconds = 0;
-    let entry2 = 0;
-    let v0 = 0;
-    for (let i = 0; i < n; i++) {
-      const len = length[i]!;
-      const a = accel[i]!;
-      const nextMax2 = i + 1 < n ? entryMax2[i + 1]! : 0;
-      const reachable = entry2 + 2 * a * len;
-      const exit2 = nextMax2 < reachable ? nextMax2 : reachable;
-      const v1 = Math.sqrt(exit2);
-      seconds += segmentSeconds(len, v0, cruise[i]!, v1, a);
-      entry2 = exit2;
-      v0 = v1;
-    }
-    this.count = 0;
-    this.layerTime += seconds;
+  constructor(limits: MarlinLimits) {
+    this.planner = new MarlinPlanner(limits);
   }
 
-  private grow(): void {
-    const size = this.length.length * 2;
-    const grown = (old: Float64Array) => {
-      const a = new Float64Array(size);
-      a.set(old);
-      return a;
-    };
-    this.length = grown(this.length);
-    this.cruise = grown(this.cruise);
-    this.accel = grown(this.accel);
-    this.entryMax2 = grown(this.entryMax2);
+  layerSeconds(): number[] {
+    this.planner.flush();
+    const out = this.planner.seconds.slice(0, this.layers);
+    while (out.length < this.layers) out.push(0);
+    for (let i = 0; i < out.length; i++) out[i] = out[i] || 0;
+    return out;
   }
 
-  private push(x: number, y: number, length: number, speed: number, baseAccel: number): void {
-    if (!(length > 0)) {
-      // From an unknown position: no time can be given; the chain restarts here.
-      this.stop();
-      this.px = x;
-      this.py = y;
-      return;
-    }
-    const nx = (x - this.px) / (1000 * length);
-    const ny = (y - this.py) / (1000 * length);
-    // Per-axis limits: neither axis may exceed its own speed or acceleration.
-    const L = this.limits;
-    const ax = nx < 0 ? -nx : nx;
-    const ay = ny < 0 ? -ny : ny;
-    let v = speed;
-    let a = baseAccel;
-    if (ax > 1e-9) {
-      if (L.maxSpeedX / ax < v) v = L.maxSpeedX / ax;
-      if (L.maxAccelX / ax < a) a = L.maxAccelX / ax;
-    }
-    if (ay > 1e-9) {
-      if (L.maxSpeedY / ay < v) v = L.maxSpeedY / ay;
-      if (L.maxAccelY / ay < a) a = L.maxAccelY / ay;
-    }
-    const i = this.count;
-    let entry2 = 0;
-    if (i > 0) {
-      const junctionAccel = a < this.accel[i - 1]! ? a : this.accel[i - 1]!;
-      entry2 = junctionSpeed2(this.ux, this.uy, this.length[i - 1]!, nx, ny, length, junctionAccel, L.cornerVelocity);
-      const slower = v < this.cruise[i - 1]! ? v : this.cruise[i - 1]!;
-      if (slower * slower < entry2) entry2 = slower * slower;
-    }
-    if (i === this.length.length) this.grow();
-    this.length[i] = length;
-    this.cruise[i] = v;
-    this.accel[i] = a;
-    this.entryMax2[i] = entry2;
-    this.count = i + 1;
+  private xy(x: number, y: number, length: number, dz: number, filament: number, speed: number): void {
+    // from an unknown position no time can be given: the head is taken to start there at rest
+    if (!(length > 0)) this.planner.flush();
+    else this.planner.move((x - this.px) / 1000, (y - this.py) / 1000, dz, filament, speed);
     this.px = x;
     this.py = y;
-    this.ux = nx;
-    this.uy = ny;
-  }
-
-  private pointToPoint(distance: number, speed: number, accel: number): void {
-    this.stop();
-    this.layerTime += pointToPointSeconds(distance, speed, accel);
   }
 
   layerStart(): void {
-    this.layerTime = 0;
+    this.planner.tag = this.layers++;
   }
-  layerEnd(): void {
-    this.stop();
-    this.layerSeconds.push(this.layerTime);
-  }
-  zMove(_z: number, distance: number, speed: number): void {
-    this.pointToPoint(distance, speed, this.limits.zAccel);
+  layerEnd(): void {}
+  zMove(z: number, distance: number, speed: number): void {
+    if (distance > 0 && !Number.isNaN(this.pz)) this.planner.move(0, 0, z - this.pz, 0, speed);
+    this.pz = z;
   }
   travel(x: number, y: number, length: number, speed: number): void {
-    this.push(x, y, length, speed, this.limits.travelAccel);
+    this.xy(x, y, length, 0, 0, speed);
   }
   extrudeStart(): void {}
   extrude(x: number, y: number, length: number, filament: number, speed: number): void {
     this.filament += filament;
-    this.push(x, y, length, speed, this.limits.printAccel);
+    this.xy(x, y, length, 0, filament, speed);
   }
-  extrudeZ(x: number, y: number, _z: number, length: number, filament: number, speed: number): void {
-    // the XY chain carries on: a rising nozzle is timed along the segment's whole length
-    this.extrude(x, y, length, filament, speed);
+  extrudeZ(x: number, y: number, z: number, length: number, filament: number, speed: number): void {
+    this.filament += filament;
+    const dz = Number.isNaN(this.pz) ? 0 : z - this.pz;
+    this.pz = z;
+    this.xy(x, y, length, dz, filament, speed);
   }
   arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void {
     this.filament += filament;
     const r = hypot(this.px - cx, this.py - cy);
     const pieces = Math.max(1, Math.ceil(length / ARC_SEGMENT_MM));
     if (!(r > 0) || pieces === 1) {
-      this.push(x, y, length, speed, this.limits.printAccel);
+      this.xy(x, y, length, 0, filament, speed);
       return;
     }
     const a0 = Math.atan2(this.py - cy, this.px - cx);
     const step = ((clockwise ? -1 : 1) * (length * 1000)) / r / pieces;
-    const chord = (2 * r * Math.sin(Math.abs(step) / 2)) / 1000;
+    const e = filament / pieces;
     for (let k = 1; k < pieces; k++) {
       const a = a0 + step * k;
-      this.push(cx + r * Math.cos(a), cy + r * Math.sin(a), chord, speed, this.limits.printAccel);
+      this.xy(cx + r * Math.cos(a), cy + r * Math.sin(a), 1, 0, e, speed);
     }
-    this.push(x, y, hypot(x - this.px, y - this.py) / 1000, speed, this.limits.printAccel);
+    this.xy(x, y, 1, 0, e, speed);
   }
   retract(filament: number, speed: number): void {
     this.filament -= filament;
-    this.pointToPoint(filament, Math.min(speed, this.limits.maxSpeedE), this.limits.retractAccel);
+    this.planner.move(0, 0, 0, -filament, speed);
   }
   prime(filament: number, speed: number): void {
     this.filament += filament;
-    this.pointToPoint(filament, Math.min(speed, this.limits.maxSpeedE), this.limits.retractAccel);
+    this.planner.move(0, 0, 0, filament, speed);
   }
   wipe(x: number, y: number, length: number, filament: number, speed: number): void {
     this.filament -= filament;
-    // a travel whose E (the retraction on the way) may not outrun the extruder's feed-rate limit
-    const limit = filament > 0 && length > 0 ? (this.limits.maxSpeedE * length) / filament : Infinity;
-    this.push(x, y, length, speed < limit ? speed : limit, this.limits.travelAccel);
+    // a move with E (the retraction on the way): the planner holds E to the extruder's limits
+    if (!(length > 0)) this.planner.move(0, 0, 0, -filament, speed);
+    else this.planner.move((x - this.px) / 1000, (y - this.py) / 1000, 0, -filament, speed);
+    this.px = x;
+    this.py = y;
   }
   objectStart(): void {}
   objectEnd(): void {}
@@ -461,9 +415,9 @@ export function* estimatePlanSteps(plan: PrintPlan, s: EstimateSettings): Genera
     layerSeconds = timer.layerSeconds();
     filament = timer.filament;
   } else {
-    const timer = new MotionTimer(motionLimits(s));
+    const timer = new MarlinTimer(marlinLimits(s));
     yield* walkPlanSteps(plan, s, timer);
-    layerSeconds = timer.layerSeconds;
+    layerSeconds = timer.layerSeconds();
     filament = timer.filament;
   }
   let printTimeSeconds = 0;

@@ -190,8 +190,10 @@ test('wipe and coasting: the G-code parses back balanced (Marlin and Klipper, ab
       near(parsed.e.retracted - parsed.balance.trailingMm, 5, 2e-5);
       near(parsed.e.primed, 5, 2e-5);
       const plain = estimatePlan(p, settings({ gcodeFlavor, extruderMode, zHop: 0.4 }));
-      assert.ok(est.printTimeSeconds > plain.printTimeSeconds, 'the wipe takes time');
-      assert.ok(est.printTimeSeconds < plain.printTimeSeconds + 1, 'a little');
+      // the wipe is timed: more or less than the plain retraction (Marlin's planner runs the wipe on from the
+      // extrusion through a junction, where a retraction on the spot stops the head first)
+      assert.ok(Math.abs(est.printTimeSeconds - plain.printTimeSeconds) > 0.005, `the wipe is timed (${est.printTimeSeconds} against ${plain.printTimeSeconds} s)`);
+      assert.ok(Math.abs(est.printTimeSeconds - plain.printTimeSeconds) < 1, 'a little');
       near(plain.filamentMm - est.filamentMm, 0.04 / (Math.PI * 0.875 * 0.875), 1e-9);
     }
   }

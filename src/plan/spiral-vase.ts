@@ -15,10 +15,11 @@
  *   the missing wedge, its flow shrinking from 1 to 0, so the rim is level with no step or blob.
  *
  * The flow rides on the per-point widths (filament follows the width), as scarf seams' does.
- * What spirals: a layer whose only paths are one island's one closed wall loop. A layer of several islands
- * (two objects, a vase that splits in two), one with a hole, or one with open wall lines (a thin tip) is
- * printed flat, and the turn after it starts a new spiral (PrusaSlicer, too, spirals single-island layers
- * only, and prints the others as they are).
+ * What spirals: a layer whose only paths are one island's one closed wall loop. The regions stage has
+ * already dropped holes and specks beside the main island (vaseOutline in layer-regions.ts: a cup modelled
+ * hollow spirals on its outside). A layer still of several islands (two objects, a vase that splits in two)
+ * or with open wall lines (a thin tip) is printed flat, and the turn after it starts a new spiral
+ * (PrusaSlicer, too, spirals single-island layers only, and prints the others as they are).
  */
 import { hypot, type Pt } from '../geometry/types.js';
 

@@ -4,7 +4,7 @@
  * area, the outline over nothing (overhanging walls) and, with support on, the overhang that needs support.
  * Pure over plain data: the same result inline or in a worker, however the layers are split into runs.
  */
-import { area, difference, intersection, offset, union } from '../geometry/clip.js';
+import { area, difference, intersection, offset, union, unionRings } from '../geometry/clip.js';
 import { StrataError } from '../errors.js';
 import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
@@ -60,6 +60,36 @@ const OVERLAP_MIN_MM2 = 0.05;
 interface Piece {
   region: number;
   area: ExPolygon[] | null;
+}
+
+/**
+ * Below this, mm², an island of a spiral vase layer other than its largest is a speck (a sliver where faces
+ * nearly touch, the tip of a spike, a stray shell) and is dropped, with a warning, rather than making the
+ * layer print flat: a 1.1 mm round rod. A larger second island (two objects, a vase that splits) is kept,
+ * and the layer prints flat as before.
+ */
+export const VASE_SPECK_MM2 = 1;
+
+/**
+ * What a spiral vase layer prints of a section: the outer boundary of each island, holes dropped (as
+ * Cura's spiralize: a cup modelled hollow spirals on its outside like a solid one; an island inside a hole
+ * is inside the boundary, so it goes too), and, beside the largest island, those smaller than VASE_SPECK_MM2,
+ * whose area (mm²) is `droppedMm2`.
+ */
+export function vaseOutline(section: readonly ExPolygon[]): { kept: ExPolygon[]; droppedMm2: number } {
+  if (section.length === 0) return { kept: [], droppedMm2: 0 };
+  const solid = section.every((e) => e.holes.length === 0) ? section.slice() : unionRings(section.map((e) => e.outer));
+  if (solid.length === 1) return { kept: solid, droppedMm2: 0 };
+  const areas = solid.map((e) => area([e]) / 1e6);
+  let largest = 0;
+  for (let k = 1; k < areas.length; k++) if (areas[k] > areas[largest]) largest = k;
+  const kept: ExPolygon[] = [];
+  let droppedMm2 = 0;
+  for (let k = 0; k < solid.length; k++) {
+    if (k === largest || areas[k] >= VASE_SPECK_MM2) kept.push(solid[k]);
+    else droppedMm2 += areas[k];
+  }
+  return { kept, droppedMm2 };
 }
 
 /** The walls' settings: regions that agree on these share their walls. */
@@ -295,7 +325,6 @@ export class RegionsRun {
    * @param levelsBelow the layer below as measured for the overhang levels of walls
    */
   #islands(k: number, i: number, w: number, below: readonly ExPolygon[], belowGrown: readonly ExPolygon[], levelsBelow: BelowLevels): IslandRegions[] {
-    if (this.#vase(i)) return this.#vaseIslands(k, i, w, belowGrown, levelsBelow);
     const section = this.#section(k, i);
     const pieces = this.#pieces(k, i, section);
     const configs = this.#setup.configs;
@@ -356,15 +385,17 @@ export class RegionsRun {
   }
 
   /**
-   * Object k's islands of a spiral vase layer: one outer wall round each (laid with the object's own wall
-   * settings, modifiers aside: a vase has no inside for them to change), and nothing inside it.
+   * Object k's islands of a spiral vase layer: the outer boundary of its section (vaseOutline: holes dropped,
+   * specks beside the main island dropped), one outer wall round each island left (laid with the object's own
+   * wall settings, modifiers aside: a vase has no inside for them to change), and nothing inside it.
    */
-  #vaseIslands(k: number, i: number, w: number, belowGrown: readonly ExPolygon[], levelsBelow: BelowLevels): IslandRegions[] {
+  #vaseIslands(k: number, i: number, w: number, belowGrown: readonly ExPolygon[], levelsBelow: BelowLevels): { islands: IslandRegions[]; droppedMm2: number } {
     const o = this.#objects[k];
     const region = o.setup.regions[rangeAt(o.setup, this.#layers[i].sliceZ)][0];
     const cfg = this.#setup.configs[region];
     const oneWall: Config = { ...cfg, walls: 1, extraPerimetersOnOverhangs: false };
-    return computeWalls(this.#section(k, i), oneWall, w).map((iw): IslandRegions => {
+    const { kept, droppedMm2 } = vaseOutline(this.#section(k, i));
+    const islands = computeWalls(kept, oneWall, w).map((iw): IslandRegions => {
       const island: IslandRegions = {
         object: k,
         region,
@@ -385,6 +416,7 @@ export class RegionsRun {
       }
       return island;
     });
+    return { islands, droppedMm2 };
   }
 
   /** Object k's overhang on layer i, with its support blockers and enforcers. */
@@ -418,13 +450,19 @@ export class RegionsRun {
     const levelsBelow = new BelowLevels(below, w);
     const islands: IslandRegions[] = [];
     const overhangs: ExPolygon[][] = [];
+    let droppedMm2 = 0;
     for (let k = 0; k < this.#objects.length; k++) {
-      const own = this.#islands(k, i, w, below, belowGrown, levelsBelow);
+      let own: IslandRegions[];
+      if (this.#vase(i)) {
+        const v = this.#vaseIslands(k, i, w, belowGrown, levelsBelow);
+        own = v.islands;
+        droppedMm2 += v.droppedMm2;
+      } else own = this.#islands(k, i, w, below, belowGrown, levelsBelow);
       for (const r of own) islands.push(r);
       overhangs.push(this.#overhang(k, i, own, w / 2));
     }
     this.#checkOverlaps(i);
-    const vase = this.#vase(i) ? { vase: true as const } : {};
+    const vase = this.#vase(i) ? (droppedMm2 > 0 ? { vase: true as const, vaseDroppedMm2: droppedMm2 } : { vase: true as const }) : {};
     let filled = 0;
     if (i === 0) for (const o of this.#objects) filled += o.first?.addedMm2 ?? 0;
     const repaired = filled > 0 ? { firstLayerFilledMm2: filled } : {};

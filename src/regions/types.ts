@@ -147,6 +147,8 @@ export interface LayerRegions extends LayerZ {
    * section of the layer above as well: the area that added, mm².
    */
   firstLayerFilledMm2?: number;
+  /** On a spiral vase layer: the area of the specks beside its main island dropped (vaseOutline), mm². */
+  vaseDroppedMm2?: number;
 }
 
 /**

@@ -344,6 +344,11 @@ export const SCHEMA = {
   minimumCruiseRatio: when(num(0.5, 0, 0.99, '×', 'machine', "Klipper's minimum_cruise_ratio ([printer] section, default 0.5): the time estimate of the Klipper flavour lowers the top speed of a short move so that at least this part of it is spent cruising. Older Klipper configs give max_accel_to_decel instead: the ratio is 1 − max_accel_to_decel / max_accel."), { gcodeFlavor: 'klipper' }),
   travelAcceleration: optNum(10, 100000, 'mm/s²', 'machine', 'Acceleration of travel moves (M204 T). Empty (null) = acceleration.'),
   retractAcceleration: optNum(10, 100000, 'mm/s²', 'machine', 'Acceleration of retractions and primes (M204 R). Empty (null) = maxAccelerationE, else acceleration.'),
+  jerkX: optNum(0.01, 100, 'mm/s', 'machine', "Marlin's classic jerk of the X axis (M205 X; PrusaSlicer machine_max_jerk_x, Cura machine_max_jerk_xy): given any of jerkX–jerkE, the Marlin and RepRap time estimate takes junctions as classic-jerk firmware does, else by junction deviation (junctionDeviation). Empty (null) = jerkY, else cornerVelocity (when another jerk is given)."),
+  jerkY: optNum(0.01, 100, 'mm/s', 'machine', "Marlin's classic jerk of the Y axis (M205 Y; machine_max_jerk_y, Cura machine_max_jerk_xy). Empty (null) = jerkX, else cornerVelocity (when another jerk is given)."),
+  jerkZ: optNum(0.01, 100, 'mm/s', 'machine', "Marlin's classic jerk of the Z axis (M205 Z; machine_max_jerk_z; given, the estimate uses classic jerk). Empty (null) = Marlin's default, 0.3."),
+  jerkE: optNum(0.01, 100, 'mm/s', 'machine', "Marlin's classic jerk of the extruder (M205 E; machine_max_jerk_e; given, the estimate uses classic jerk). Empty (null) = Marlin's default, 5."),
+  junctionDeviation: optNum(0.001, 1, 'mm', 'machine', "Marlin's junction deviation (M205 J, junction_deviation_mm) for the Marlin and RepRap time estimate when no jerk is given. Empty (null) = from cornerVelocity: cornerVelocity² × (√2 − 1) / acceleration, so a 90° corner is taken at cornerVelocity (as Klipper's square-corner velocity)."),
 
   // ── adhesion ─────────────────────────────────────────────────────────────────
   adhesionType: enm(['skirt', 'brim', 'raft', 'none'] as const, 'skirt', 'adhesion', 'First-layer helper: a skirt around the print, a brim attached to it, a raft under it, or none.'),

@@ -217,6 +217,10 @@ export function mapCuraKeys(c: ImportContext): void {
   take('maxAccelerationZ', ['machine_max_acceleration_z']);
   take('maxAccelerationE', ['machine_max_acceleration_e']);
   take('cornerVelocity', ['machine_max_jerk_xy']);
+  take('jerkX', ['machine_max_jerk_xy']);
+  take('jerkY', ['machine_max_jerk_xy']);
+  take('jerkZ', ['machine_max_jerk_z']);
+  take('jerkE', ['machine_max_jerk_e']);
   const accelOn = str('acceleration_enabled');
   if (accelOn !== undefined ? bool(accelOn) : c.has('acceleration_print')) take('acceleration', ['acceleration_print']);
   else take('acceleration', ['machine_acceleration']);

@@ -145,6 +145,8 @@ test('PrusaSlicer .ini: layer height, widths, walls, skin, infill, speeds, tempe
   assert.equal(s.travelAcceleration, 1500);
   assert.equal(s.retractAcceleration, 1250);
   assert.equal(s.cornerVelocity, 8);
+  assert.equal(s.jerkX, 8, 'machine_max_jerk_x: classic jerk for the Marlin estimate');
+  assert.equal(s.jerkY, undefined, 'not in the profile');
   assert.equal(s.adhesionType, 'skirt');
   assert.equal(s.skirtLoops, 1);
   assert.equal(s.skirtDistance, 2);

@@ -209,7 +209,11 @@ function limits(c: ImportContext): void {
   if (sx !== undefined && sx !== null && sy !== undefined && sy !== null) c.set('maxSpeed', Math.min(sx, sy), 'machine_max_feedrate_x');
   const jerk = c.getAny('machine_max_jerk_x');
   if (jerk) c.set('cornerVelocity', num(jerk.value), jerk.key, 'not a number');
-  c.get('machine_max_jerk_y');
+  // and Marlin's classic jerk itself, per axis, for the Marlin estimate (a Prusa firmware's junctions)
+  for (const [key, setting] of [['machine_max_jerk_x', 'jerkX'], ['machine_max_jerk_y', 'jerkY'], ['machine_max_jerk_z', 'jerkZ'], ['machine_max_jerk_e', 'jerkE']] as const) {
+    const v = c.getAny(key);
+    if (v) c.set(setting, num(v.value), v.key, 'not a number');
+  }
   const usage = c.getAny('machine_limits_usage');
   if (usage) {
     const v = first(usage.value);
