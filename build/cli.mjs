@@ -22,7 +22,9 @@ await build({
   entryNames: '[name]',
   chunkNames: 'chunk-[hash]',
   // bundled CommonJS dependencies call require: give them node's
-  banner: { js: "import { createRequire as __strataRequire } from 'node:module'; const require = __strataRequire(import.meta.url);" },
+  banner: {
+    js: "import { createRequire as __strataRequire } from 'node:module'; const require = __strataRequire(import.meta.url);",
+  },
   legalComments: 'eof',
   logLevel: 'warning',
 });

@@ -14,8 +14,26 @@ export { importProfile } from './settings/import/index.js';
 export type { ImportedProfile, ProfileFormat } from './settings/import/index.js';
 export type { Config } from './settings/resolve.js';
 export { listPresets, findPrinter, findFilament, PRINTER_PRESETS, FILAMENT_PRESETS } from './settings/presets/index.js';
-export { parseStl, parseObj, parse3mf, fromThree, fromArrays, toMeshObjects, loadModelBytes, prepareMesh } from './mesh/index.js';
-export type { Mesh, MeshObject, MeshReport, RawMeshArrays, MeshVolume, VolumeKind, SettingsSource, LayerRangeSettings } from './mesh/types.js';
+export {
+  parseStl,
+  parseObj,
+  parse3mf,
+  fromThree,
+  fromArrays,
+  toMeshObjects,
+  loadModelBytes,
+  prepareMesh,
+} from './mesh/index.js';
+export type {
+  Mesh,
+  MeshObject,
+  MeshReport,
+  RawMeshArrays,
+  MeshVolume,
+  VolumeKind,
+  SettingsSource,
+  LayerRangeSettings,
+} from './mesh/types.js';
 export { PATTERN_IDS } from './infill/types.js';
 export type { PatternId, InfillPattern } from './infill/types.js';
 export type { PrintPlan, LayerPlan, PlanStep, FeatureType } from './plan/types.js';

@@ -86,7 +86,8 @@ function loadSize(meta, file, seen = new Set()) {
   if (seen.has(file)) return 0;
   seen.add(file);
   let total = gzipSync(readFileSync(at(file))).length;
-  for (const imp of meta.outputs[file]?.imports ?? []) if (imp.kind === 'import-statement') total += loadSize(meta, imp.path, seen);
+  for (const imp of meta.outputs[file]?.imports ?? [])
+    if (imp.kind === 'import-statement') total += loadSize(meta, imp.path, seen);
   return total;
 }
 
@@ -94,7 +95,9 @@ const kb = (n) => `${(n / 1024).toFixed(1)} KB`;
 
 /** The output file holding the shader compiler (loaded only for custom infill). */
 function compilerChunk(meta) {
-  return Object.entries(meta.outputs).find(([f, o]) => f.endsWith('.js') && Object.keys(o.inputs).some((i) => i.includes('src/shader/compile-program')))?.[0];
+  return Object.entries(meta.outputs).find(
+    ([f, o]) => f.endsWith('.js') && Object.keys(o.inputs).some((i) => i.includes('src/shader/compile-program')),
+  )?.[0];
 }
 
 const lib = await libraryBuild();
@@ -114,5 +117,7 @@ for (const [name, meta, dir, entries] of [
 writeFileSync(at('dist/web/build-info.json'), JSON.stringify(info, null, 1) + '\n');
 if (!quiet) {
   const sizes = Object.entries(info.gzippedBytes).map(([f, n]) => `${f} ${kb(n)}`);
-  process.stdout.write(`web build, gzipped (entries with the chunks they load at once): ${sizes.join('; ')}; shader compiler chunks load on demand\n`);
+  process.stdout.write(
+    `web build, gzipped (entries with the chunks they load at once): ${sizes.join('; ')}; shader compiler chunks load on demand\n`,
+  );
 }

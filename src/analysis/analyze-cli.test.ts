@@ -32,21 +32,29 @@ test('the developer command centres the model on the print and reports support',
   const placed = mergeMeshes(boxMesh(50, 50, 0, 60, 70, 4), boxMesh(40, 50, 4, 70, 70, 6));
   const o = { layerHeight: 0.2, firstLayerHeight: 0.2, lineWidth: 0.4, filamentDiameter: 1.75, infillSpacing: 4 };
   const support = (i: number, _z: number, h: number) =>
-    i <= 18 ? [[40, 50, 49.4, 70], [60.6, 50, 70, 70]].flatMap((r) =>
-      rectLines(r as [number, number, number, number], 0.4, h, 0.4, 1.75, 'SUPPORT')) : [];
+    i <= 18
+      ? [
+          [40, 50, 49.4, 70],
+          [60.6, 50, 70, 70],
+        ].flatMap((r) => rectLines(r as [number, number, number, number], 0.4, h, 0.4, 1.75, 'SUPPORT'))
+      : [];
   const dir = mkdtempSync(join(tmpdir(), 'analyze-cli-'));
   try {
     writeFileSync(join(dir, 't.stl'), asciiStl(file));
     writeFileSync(join(dir, 't.gcode'), toyGcode(placed, { ...o, skinLayers: 4, extra: support }));
-    const text = spawnSync(process.execPath, [CLI, join(dir, 't.stl'), join(dir, 't.gcode'), '--layers'],
-      { encoding: 'utf8' });
+    const text = spawnSync(process.execPath, [CLI, join(dir, 't.stl'), join(dir, 't.gcode'), '--layers'], {
+      encoding: 'utf8',
+    });
     assert.equal(text.status, 0, text.stderr);
     assert.match(text.stdout, /walls: outline coverage 100\.0 %/);
     assert.match(text.stdout, /support: overhang \(50° from vertical\) 3\d\d\.\d mm², supported (9[5-9]|100)\.\d %/);
     assert.match(text.stdout, /top Z gap: median 0\.20 mm \(1 layer\)/);
     assert.match(text.stdout, /^20 4\.200 part: /m, 'per-layer support lines');
-    const json = spawnSync(process.execPath, [CLI, join(dir, 't.stl'), join(dir, 't.gcode'), '--json',
-      '--overhang-angle', '60'], { encoding: 'utf8' });
+    const json = spawnSync(
+      process.execPath,
+      [CLI, join(dir, 't.stl'), join(dir, 't.gcode'), '--json', '--overhang-angle', '60'],
+      { encoding: 'utf8' },
+    );
     assert.equal(json.status, 0, json.stderr);
     const summary = JSON.parse(json.stdout).summary;
     assert.equal(summary.support.overhangAngleDeg, 60);

@@ -95,7 +95,10 @@ export function parseArgs(argv: string[]): CliArgs {
 
 /** Centre of the XY extents of the part's extrusions, null without any. */
 export function partCentre(parsed: ParsedGcode): [number, number] | null {
-  let xmin = Infinity, xmax = -Infinity, ymin = Infinity, ymax = -Infinity;
+  let xmin = Infinity,
+    xmax = -Infinity,
+    ymin = Infinity,
+    ymax = -Infinity;
   for (const layer of parsed.layers) {
     const t = layer.extrusions;
     for (let i = 0; i < t.count; i++) {

@@ -23,8 +23,10 @@ function main(): void {
   const big = gcode.repeat(Math.max(1, Math.ceil(30e6 / gcode.length)));
   t = performance.now();
   const parsed = parseGcode(big);
-  console.log(`parse ${(big.length / 1e6).toFixed(1)} MB: ${(performance.now() - t).toFixed(0)} ms, ` +
-    `${parsed.layers.length} layers`);
+  console.log(
+    `parse ${(big.length / 1e6).toFixed(1)} MB: ${(performance.now() - t).toFixed(0)} ms, ` +
+      `${parsed.layers.length} layers`,
+  );
 
   t = performance.now();
   const report = analyzePrint(mesh, gcode, OPTS);

@@ -18,8 +18,15 @@ type Markers = 'cura' | 'prusa' | 'none';
 function boxGcode(extra: Partial<BoxPrintOptions> = {}, relativeE = false, markers: Markers = 'cura') {
   const writer = new GcodeWriter({ lineWidth: 0.4, filamentDiameter: 1.75, relativeE, markers });
   writeBoxPrint({
-    size: SIZE, origin: ORIGIN, layerHeight: 0.2, lineWidth: 0.4, walls: 2, skinLayers: 4, infillSpacing: 4,
-    writer, ...extra,
+    size: SIZE,
+    origin: ORIGIN,
+    layerHeight: 0.2,
+    lineWidth: 0.4,
+    walls: 2,
+    skinLayers: 4,
+    infillSpacing: 4,
+    writer,
+    ...extra,
   });
   return writer;
 }
@@ -116,7 +123,10 @@ test('layer Z errors, missing layers and sampling', () => {
   assert.deepEqual(report.summary.zMismatchLayers, [5]);
   assert.equal(report.summary.missingLayerCount, 1);
   near(report.summary.missingLayerZ[0]!, 1.2, 1e-9);
-  assert.deepEqual(report.layers.map((l) => l.index), [0, 5, 10, 15, 20, 25, 29]);
+  assert.deepEqual(
+    report.layers.map((l) => l.index),
+    [0, 5, 10, 15, 20, 25, 29],
+  );
   assert.equal(report.layers[1]!.zOk, false);
   assert.equal(report.layerZ.length, 30);
   // Drop layer 12 entirely: every later layer stays on the grid, one grid Z is missing.

@@ -8,9 +8,7 @@ import { StrataError } from '../errors.js';
 import { parseGcode } from './gcode-parse.js';
 import type { ParsedGcode } from './gcode-types.js';
 import type { LayerContext, ResolvedOptions } from './layer-analysis.js';
-import {
-  effectiveThickness, measureLayer, partThickness, skinMarginLayers, widthHistogram,
-} from './layer-analysis.js';
+import { effectiveThickness, measureLayer, partThickness, skinMarginLayers, widthHistogram } from './layer-analysis.js';
 import { modelZFrames } from './model-z.js';
 import { layerReport } from './layer-report.js';
 import { collectWarnings, summarize } from './print-summary.js';
@@ -62,22 +60,23 @@ export function analyzeParsed(mesh: Mesh, parsed: ParsedGcode, options: AnalyzeO
     widths,
     frames,
   };
-  const support = opts.supportChecks && bounds
-    ? new SupportAnalysis(parsed.layers, modelZ, sections, bounds, {
-      layerHeight: opts.layerHeight,
-      lineWidth: opts.lineWidth,
-      wallThickness: opts.wallThickness,
-      overhangAngleDeg: opts.overhangAngleDeg,
-      supportGapLayers: opts.supportGapLayers,
-      supportSpanMm: opts.supportSpanMm,
-      overhangMinAreaMm2: opts.overhangMinAreaMm2,
-      cell,
-      filamentArea: ctx.filamentArea,
-      widthSource: opts.widthSource,
-      partHeight: (f) => partThickness(f, opts),
-      supportHeight: (f) => effectiveThickness(f.supportThickness, f.raft && f.modelZ <= 0, opts),
-    })
-    : null;
+  const support =
+    opts.supportChecks && bounds
+      ? new SupportAnalysis(parsed.layers, modelZ, sections, bounds, {
+          layerHeight: opts.layerHeight,
+          lineWidth: opts.lineWidth,
+          wallThickness: opts.wallThickness,
+          overhangAngleDeg: opts.overhangAngleDeg,
+          supportGapLayers: opts.supportGapLayers,
+          supportSpanMm: opts.supportSpanMm,
+          overhangMinAreaMm2: opts.overhangMinAreaMm2,
+          cell,
+          filamentArea: ctx.filamentArea,
+          widthSource: opts.widthSource,
+          partHeight: (f) => partThickness(f, opts),
+          supportHeight: (f) => effectiveThickness(f.supportThickness, f.raft && f.modelZ <= 0, opts),
+        })
+      : null;
 
   const retractionsByLayer = new Uint32Array(parsed.layers.length);
   for (let k = 0; k < parsed.retractions.count; k++) {
@@ -158,8 +157,16 @@ function resolveOptions(o: AnalyzeOptions): ResolvedOptions {
 }
 
 function heightRange(r: unknown): [number, number] {
-  if (!Array.isArray(r) || r.length !== 2 || !r.every((v) => typeof v === 'number' && v > 0 && Number.isFinite(v)) || r[0] > r[1]) {
-    throw new StrataError('BAD_SETTING', `analyzePrint: layerHeightRange must be [min, max] mm with 0 < min <= max (got ${JSON.stringify(r)})`);
+  if (
+    !Array.isArray(r) ||
+    r.length !== 2 ||
+    !r.every((v) => typeof v === 'number' && v > 0 && Number.isFinite(v)) ||
+    r[0] > r[1]
+  ) {
+    throw new StrataError(
+      'BAD_SETTING',
+      `analyzePrint: layerHeightRange must be [min, max] mm with 0 < min <= max (got ${JSON.stringify(r)})`,
+    );
   }
   return [r[0], r[1]];
 }
@@ -181,7 +188,10 @@ function angle(v: number): number {
 /** [xmin, ymin, xmax, ymax] of the mesh's vertices, null without vertices. */
 function meshBoundsXY(mesh: Mesh): [number, number, number, number] | null {
   const p = mesh.positions;
-  let xmin = Infinity, xmax = -Infinity, ymin = Infinity, ymax = -Infinity;
+  let xmin = Infinity,
+    xmax = -Infinity,
+    ymin = Infinity,
+    ymax = -Infinity;
   for (let k = 0; k < p.length; k += 3) {
     xmin = Math.min(xmin, p[k]!);
     xmax = Math.max(xmax, p[k]!);

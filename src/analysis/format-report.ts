@@ -37,7 +37,8 @@ export function formatReport(report: PrintReport): string {
       `over ${s.infill.layersMeasured} layers, ${s.infill.regionAreaMm2.toFixed(0)} mm²`,
   );
   lines.push(
-    `shift: max ${mm(s.shift.maxMm)}` + (s.shift.worstLayer !== null ? ` (layer ${s.shift.worstLayer})` : '') +
+    `shift: max ${mm(s.shift.maxMm)}` +
+      (s.shift.worstLayer !== null ? ` (layer ${s.shift.worstLayer})` : '') +
       `; shifted layers: ${list(s.shift.shiftedLayers)}`,
   );
   const e = s.e;
@@ -52,8 +53,10 @@ export function formatReport(report: PrintReport): string {
   const features = Object.entries(s.featureLengthMm)
     .map(([k, v]) => `${k} ${(v / 1000).toFixed(2)} m`)
     .join(', ');
-  lines.push(`lengths: ${features || 'none'}; travel ${(s.travelLengthMm / 1000).toFixed(2)} m` +
-    (s.preambleExtrusionMm > 0 ? `; preamble extrusion ${s.preambleExtrusionMm.toFixed(1)} mm` : ''));
+  lines.push(
+    `lengths: ${features || 'none'}; travel ${(s.travelLengthMm / 1000).toFixed(2)} m` +
+      (s.preambleExtrusionMm > 0 ? `; preamble extrusion ${s.preambleExtrusionMm.toFixed(1)} mm` : ''),
+  );
   const z = s.modelZ;
   if (z.source !== 'none' || z.raftLayerCount > 0) {
     lines.push(
@@ -77,8 +80,10 @@ function gap(g: GapStats): string {
     .filter((x) => x !== '')
     .join(', ');
   const layers = (n: number | null) => `${n} layer${n === 1 ? '' : 's'}`;
-  return `median ${mm(g.medianMm, 2)} (${layers(g.medianLayers)}), low ${mm(g.minMm, 2)} (${layers(g.minLayers)}) ` +
-    `over ${mm2(g.areaMm2)}; by layers ${shares}`;
+  return (
+    `median ${mm(g.medianMm, 2)} (${layers(g.medianLayers)}), low ${mm(g.minMm, 2)} (${layers(g.minLayers)}) ` +
+    `over ${mm2(g.areaMm2)}; by layers ${shares}`
+  );
 }
 
 /** The support section of the report. */
@@ -92,18 +97,22 @@ export function formatSupport(u: SupportSummary): string[] {
   const v = u.volume;
   return [
     `support: overhang (${u.overhangAngleDeg}° from vertical) ${mm2(u.overhangAreaMm2)}, supported ` +
-      `${pct(u.overhangSupported)}` + (worstOverhang ? `; most unsupported at layers ${worstOverhang}` : ''),
+      `${pct(u.overhangSupported)}` +
+      (worstOverhang ? `; most unsupported at layers ${worstOverhang}` : ''),
     `  model over nothing: ${pct(u.overNothing)} of ${mm2(u.partAreaMm2)} part extrusion (${mm2(u.overNothingMm2)})` +
       (worstNothing ? `; worst layers ${worstNothing}` : ''),
     `  support inside the part: ${mm2(u.insideAreaMm2)}` +
       (u.insideWorstLayer !== null ? ` (worst layer ${u.insideWorstLayer}: ${mm2(u.insideWorstMm2)})` : '') +
       ` of ${mm2(u.supportAreaMm2)} support on ${u.supportLayers} layers`,
     `  top Z gap: ${gap(u.topGap)}`,
-    ...(u.topGapOverFirstLayer.areaMm2 > 0 ? [`  top Z gap under the second layer (no room for one over the first): ${gap(u.topGapOverFirstLayer)}`] : []),
+    ...(u.topGapOverFirstLayer.areaMm2 > 0
+      ? [`  top Z gap under the second layer (no room for one over the first): ${gap(u.topGapOverFirstLayer)}`]
+      : []),
     `  bottom Z gap: ${gap(u.bottomGap)}`,
     `  volume: support ${v.supportMm3.toFixed(0)} mm³ + interface ${v.interfaceMm3.toFixed(0)} mm³ = ` +
       `${pct(v.supportShare)} of the model's ${v.modelMm3.toFixed(0)} mm³; raft ${v.raftMm3.toFixed(0)} mm³` +
-      (v.raftMm3 > 0 ? ` (${pct(v.raftShare)})` : '') + `; part extruded ${v.partMm3.toFixed(0)} mm³`,
+      (v.raftMm3 > 0 ? ` (${pct(v.raftShare)})` : '') +
+      `; part extruded ${v.partMm3.toFixed(0)} mm³`,
   ];
 }
 

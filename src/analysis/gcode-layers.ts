@@ -254,7 +254,11 @@ function extentsOf(layers: GcodeLayer[]): GcodeExtents | null {
     const t = layer.extrusions;
     for (let i = 0; i < t.count; i++) {
       any = true;
-      const xa = t.x0[i]!, xb = t.x1[i]!, ya = t.y0[i]!, yb = t.y1[i]!, z = t.z[i]!;
+      const xa = t.x0[i]!,
+        xb = t.x1[i]!,
+        ya = t.y0[i]!,
+        yb = t.y1[i]!,
+        z = t.z[i]!;
       if (xa < min[0]) min[0] = xa;
       if (xb < min[0]) min[0] = xb;
       if (xa > max[0]) max[0] = xa;

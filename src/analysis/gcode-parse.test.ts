@@ -10,7 +10,9 @@ const near = (a: number, b: number, tol: number, what = '') =>
 function squareLayers(relativeE: boolean): string {
   const g = new GcodeWriter({ lineWidth: 0.4, filamentDiameter: 1.75, relativeE, markers: 'cura' });
   for (let l = 0; l < 3; l++) {
-    g.layer(l, 0.2 * (l + 1), 0.2).type('WALL-OUTER').rect(10, 10, 30, 30);
+    g.layer(l, 0.2 * (l + 1), 0.2)
+      .type('WALL-OUTER')
+      .rect(10, 10, 30, 30);
     g.retract(0.8).travel(12, 12).prime(0.8).type('FILL').line(28, 28);
   }
   g.retract(2);
@@ -52,7 +54,16 @@ test('unbalanced retraction is detected', () => {
 test('firmware retraction G10/G11 and tool-offset G10 are told apart', () => {
   const text = [
     'G10 P0 S200 ; RRF tool temperature, not a retraction',
-    ';LAYER:0', 'G1 Z0.2', 'G1 X10 Y0 E1', 'G10', 'G0 X20', 'G11', 'G1 X30 E2', 'G10', 'G0 X0', 'G1 X5 E3',
+    ';LAYER:0',
+    'G1 Z0.2',
+    'G1 X10 Y0 E1',
+    'G10',
+    'G0 X20',
+    'G11',
+    'G1 X30 E2',
+    'G10',
+    'G0 X0',
+    'G1 X5 E3',
   ].join('\n');
   const p = parseGcode(text);
   assert.equal(p.balance.firmwareRetractions, 2);
@@ -93,9 +104,24 @@ test('PrusaSlicer, Orca and Cura type names map to canonical features', () => {
   assert.equal(featureCodeOf('Mystery'), -1);
 
   const text = [
-    'M83', ';TYPE:Custom', 'G1 Z0.2', 'G1 X60 E9 ; intro line', ';LAYER_CHANGE', ';Z:0.2', ';TYPE:Skirt/Brim',
-    'G1 X70 Y0 E1', ';TYPE:External perimeter', 'G1 X70 Y10 E1', ';TYPE:Perimeter', 'G1 X60 Y10 E1',
-    ';TYPE:Solid infill', 'G1 X60 Y5 E1', ';TYPE:Internal infill', 'G1 X65 Y5 E1', ';TYPE:Mystery', 'G1 X66 E1',
+    'M83',
+    ';TYPE:Custom',
+    'G1 Z0.2',
+    'G1 X60 E9 ; intro line',
+    ';LAYER_CHANGE',
+    ';Z:0.2',
+    ';TYPE:Skirt/Brim',
+    'G1 X70 Y0 E1',
+    ';TYPE:External perimeter',
+    'G1 X70 Y10 E1',
+    ';TYPE:Perimeter',
+    'G1 X60 Y10 E1',
+    ';TYPE:Solid infill',
+    'G1 X60 Y5 E1',
+    ';TYPE:Internal infill',
+    'G1 X65 Y5 E1',
+    ';TYPE:Mystery',
+    'G1 X66 E1',
   ].join('\n');
   const p = parseGcode(text);
   assert.equal(p.layers.length, 1);
@@ -108,12 +134,23 @@ test('PrusaSlicer, Orca and Cura type names map to canonical features', () => {
 
 test('layers without markers come from distinct extrusion Z, and z-hops do not make layers', () => {
   const text = [
-    'G1 Z0.3 F600', 'G1 X10 E1', 'G1 Z0.9', 'G0 X20', 'G1 Z0.3', 'G1 X30 E2', // hop between extrusions
-    'G1 Z0.5', 'G1 X0 E3', 'G1 Z0.3', 'G1 X5 E4', // back down (a second object at the first height)
+    'G1 Z0.3 F600',
+    'G1 X10 E1',
+    'G1 Z0.9',
+    'G0 X20',
+    'G1 Z0.3',
+    'G1 X30 E2', // hop between extrusions
+    'G1 Z0.5',
+    'G1 X0 E3',
+    'G1 Z0.3',
+    'G1 X5 E4', // back down (a second object at the first height)
   ].join('\n');
   const p = parseGcode(text);
   assert.equal(p.hasLayerMarkers, false);
-  assert.deepEqual(p.layers.map((l) => l.z), [0.3, 0.5]);
+  assert.deepEqual(
+    p.layers.map((l) => l.z),
+    [0.3, 0.5],
+  );
   assert.equal(p.layers[0]!.extrusions.count, 3);
   near(p.layers[0]!.thickness, 0.3, 1e-9);
   near(p.layers[1]!.thickness, 0.2, 1e-9);
@@ -146,8 +183,17 @@ test('G2/G3 arcs become chords along the arc', () => {
 
 test('G91, G92, line numbers, checksums, inches and comments', () => {
   const text = [
-    'N1 G21*12', 'G1 Z0.2 ; first layer', 'G92 X100 Y100 ; shift logical origin', 'G1 X110 Y100 E1',
-    'G91', 'G1 X0 Y10 E1', 'G90', 'G20', 'G1 (comment) Y4.72440945 E0.11811024', 'G21', 'g1 x105 y110 e4',
+    'N1 G21*12',
+    'G1 Z0.2 ; first layer',
+    'G92 X100 Y100 ; shift logical origin',
+    'G1 X110 Y100 E1',
+    'G91',
+    'G1 X0 Y10 E1',
+    'G90',
+    'G20',
+    'G1 (comment) Y4.72440945 E0.11811024',
+    'G21',
+    'g1 x105 y110 e4',
     'G1 X.5 Y-1.25 E5',
   ].join('\n');
   const p = parseGcode(text);

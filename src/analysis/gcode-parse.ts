@@ -62,11 +62,25 @@ const LOWER_CASE_BIT = 0x20;
 
 /** Bit of a word letter in the `has` mask. */
 const W = (letter: string) => 1 << (letter.charCodeAt(0) - LOWER_A);
-const W_E = W('e'), W_F = W('f'), W_I = W('i'), W_J = W('j'), W_L = W('l'), W_P = W('p'), W_R = W('r');
-const W_X = W('x'), W_Y = W('y'), W_Z = W('z');
+const W_E = W('e'),
+  W_F = W('f'),
+  W_I = W('i'),
+  W_J = W('j'),
+  W_L = W('l'),
+  W_P = W('p'),
+  W_R = W('r');
+const W_X = W('x'),
+  W_Y = W('y'),
+  W_Z = W('z');
 const IDX = (letter: string) => letter.charCodeAt(0) - LOWER_A;
-const I_E = IDX('e'), I_F = IDX('f'), I_I = IDX('i'), I_J = IDX('j'), I_R = IDX('r');
-const I_X = IDX('x'), I_Y = IDX('y'), I_Z = IDX('z');
+const I_E = IDX('e'),
+  I_F = IDX('f'),
+  I_I = IDX('i'),
+  I_J = IDX('j'),
+  I_R = IDX('r');
+const I_X = IDX('x'),
+  I_Y = IDX('y'),
+  I_Z = IDX('z');
 
 class GcodeParserState implements GcodeParser {
   private readonly raw = new RawRecords();

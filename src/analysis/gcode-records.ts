@@ -61,7 +61,15 @@ export class RawRecords {
   }
 
   pushExtrusion(
-    x0: number, y0: number, x1: number, y1: number, z: number, e: number, f: number, feature: number, block: number,
+    x0: number,
+    y0: number,
+    x1: number,
+    y1: number,
+    z: number,
+    e: number,
+    f: number,
+    feature: number,
+    block: number,
   ): void {
     const t = this.ext;
     t.x0.push(x0);

@@ -18,9 +18,7 @@ export interface Grid {
  * The smallest window holding [xmin, xmax] × [ymin, ymax] grown by `margin` mm on every side, with a column count
  * that is a multiple of 4 so that bitmap rows can be read four cells at a time.
  */
-export function gridAround(
-  xmin: number, ymin: number, xmax: number, ymax: number, cell: number, margin: number,
-): Grid {
+export function gridAround(xmin: number, ymin: number, xmax: number, ymax: number, cell: number, margin: number): Grid {
   const i0 = Math.floor((xmin - margin) / cell);
   const j0 = Math.floor((ymin - margin) / cell);
   const i1 = Math.ceil((xmax + margin) / cell);

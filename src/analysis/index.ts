@@ -13,7 +13,14 @@ export { meshVolume } from './support-volume.js';
 export { createGcodeParser, parseGcode } from './gcode-parse.js';
 export type { GcodeParser } from './gcode-parse.js';
 export type {
-  ETotals, ExtrusionTable, GcodeExtents, GcodeLayer, ParsedGcode, RetractionBalance, RetractionTable, TravelTable,
+  ETotals,
+  ExtrusionTable,
+  GcodeExtents,
+  GcodeLayer,
+  ParsedGcode,
+  RetractionBalance,
+  RetractionTable,
+  TravelTable,
 } from './gcode-types.js';
 export { RetractionKind } from './gcode-types.js';
 export { FEATURE_NAMES, Feature, featureCodeOf, isPartFeature, isSupportFeature } from './feature-names.js';

@@ -13,7 +13,13 @@ import { newBitmap } from './grid.js';
 import { dilateBitmap, stampCapsule, volumeWidth } from './raster.js';
 import type { Spans } from './spans.js';
 import {
-  bitmapToSpans, erodeSpans, isEmptySpans, spansArea, spansBoolean, spansContain, spansToBitmap,
+  bitmapToSpans,
+  erodeSpans,
+  isEmptySpans,
+  spansArea,
+  spansBoolean,
+  spansContain,
+  spansToBitmap,
 } from './spans.js';
 
 /** Infill regions smaller than this (mm²) give no density. */
@@ -39,7 +45,12 @@ export interface InfillMetrics {
 
 /** `skin`: the model's skin near this layer; `beadWidths`: bead widths of the table's segments. */
 export function measureInfill(
-  t: ExtrusionTable, grid: Grid, beadWidths: Float32Array, section: Spans, skin: Spans, o: InfillOptions,
+  t: ExtrusionTable,
+  grid: Grid,
+  beadWidths: Float32Array,
+  section: Spans,
+  skin: Spans,
+  o: InfillOptions,
 ): InfillMetrics {
   let region = erodeSpans(section, o.wallThickness + o.lineWidth);
   if (!isEmptySpans(skin)) region = spansBoolean(region, skin, 'subtract');
@@ -64,8 +75,10 @@ export function measureInfill(
   for (let i = 0; i < t.count; i++) {
     const f = t.feature[i]!;
     if (o.typed ? f !== Feature.Fill : !isPartFeature(f)) continue;
-    const ax = t.x0[i]!, ay = t.y0[i]!;
-    const dx = t.x1[i]! - ax, dy = t.y1[i]! - ay;
+    const ax = t.x0[i]!,
+      ay = t.y0[i]!;
+    const dx = t.x1[i]! - ax,
+      dy = t.y1[i]! - ay;
     const len = Math.hypot(dx, dy);
     const n = Math.max(1, Math.ceil(len / step));
     let inside = 0;

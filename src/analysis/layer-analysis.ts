@@ -19,7 +19,10 @@ import type { Spans } from './spans.js';
 import { countInSpans, erodeSpans, isEmptySpans, spansArea, spansBoolean, spansBounds } from './spans.js';
 import { WeightedHistogram } from './stats.js';
 
-export type ResolvedOptions = Required<Omit<AnalyzeOptions, 'modelZOffset' | 'layerHeightRange'>> & { modelZOffset: number | null; layerHeightRange: [number, number] | null };
+export type ResolvedOptions = Required<Omit<AnalyzeOptions, 'modelZOffset' | 'layerHeightRange'>> & {
+  modelZOffset: number | null;
+  layerHeightRange: [number, number] | null;
+};
 
 /** Material farther than this outside the section is not rasterised (its distance is still measured), mm. */
 const RASTER_CLIP_MARGIN_MM = 5;
@@ -205,7 +208,11 @@ export function measureLayer(layer: GcodeLayer, ctx: LayerContext): LayerMeasure
 }
 
 function layerGrid(
-  bounds: [number, number, number, number], t: ExtrusionTable, partIds: Uint32Array, cell: number, lineWidth: number,
+  bounds: [number, number, number, number],
+  t: ExtrusionTable,
+  partIds: Uint32Array,
+  cell: number,
+  lineWidth: number,
 ): Grid {
   let [xmin, ymin, xmax, ymax] = bounds;
   for (const i of partIds) {

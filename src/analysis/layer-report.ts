@@ -64,11 +64,17 @@ export function layerRole(frame: LayerFrame): LayerReport['role'] {
 }
 
 export function layerReport(
-  layer: GcodeLayer, m: LayerMeasure, o: ResolvedOptions, retractions: number, frame: LayerFrame,
+  layer: GcodeLayer,
+  m: LayerMeasure,
+  o: ResolvedOptions,
+  retractions: number,
+  frame: LayerFrame,
 ): LayerReport {
   // with variable layers a layer's Z is its own; its thickness is judged instead
   const [ez] = o.layerHeightRange ? [frame.modelZ] : gridZ(frame.modelZ, o);
-  const zOk = !onZGrid(frame) || (o.layerHeightRange ? thicknessOk(frame, o.layerHeightRange, o) : Math.abs(frame.modelZ - ez) <= o.zTolerance);
+  const zOk =
+    !onZGrid(frame) ||
+    (o.layerHeightRange ? thicknessOk(frame, o.layerHeightRange, o) : Math.abs(frame.modelZ - ez) <= o.zTolerance);
   const shiftMm = m.shift ? Math.hypot(m.shift.dx, m.shift.dy) : null;
   return {
     index: layer.index,

@@ -119,14 +119,18 @@ export function modelZFrames(layers: readonly GcodeLayer[], o: ModelZOptions): M
     }
     frames.push(frame);
   }
-  const raftGapMm = raftLayerCount > 0 && firstModelLayer !== null && raftTop > -Infinity
-    ? Math.max(0, layers[firstModelLayer]!.z - o.firstLayerHeight - raftTop)
-    : null;
+  const raftGapMm =
+    raftLayerCount > 0 && firstModelLayer !== null && raftTop > -Infinity
+      ? Math.max(0, layers[firstModelLayer]!.z - o.firstLayerHeight - raftTop)
+      : null;
   return { offsetMm: offset, source, firstModelLayer, raftLayerCount, raftGapMm, frames };
 }
 
 function detectOffset(
-  layers: readonly GcodeLayer[], hasPart: boolean[], hasSupport: boolean[], o: ModelZOptions,
+  layers: readonly GcodeLayer[],
+  hasPart: boolean[],
+  hasSupport: boolean[],
+  o: ModelZOptions,
 ): number {
   const p0 = hasPart.indexOf(true);
   if (p0 <= 0) return 0;

@@ -12,7 +12,8 @@ function rect(cols: number, rows: number, ...boxes: [number, number, number, num
 }
 
 test('squared distances equal a brute-force search', () => {
-  const cols = 37, rows = 23;
+  const cols = 37,
+    rows = 23;
   const b = new Uint8Array(cols * rows);
   let seed = 7;
   for (let k = 0; k < b.length; k++) {
@@ -24,7 +25,8 @@ test('squared distances equal a brute-force search', () => {
     let best = Infinity;
     for (let q = 0; q < b.length; q++) {
       if (b[q] === 0) continue;
-      const di = (k % cols) - (q % cols), dj = Math.floor(k / cols) - Math.floor(q / cols);
+      const di = (k % cols) - (q % cols),
+        dj = Math.floor(k / cols) - Math.floor(q / cols);
       best = Math.min(best, di * di + dj * dj);
     }
     assert.equal(d[k], best, `cell ${k}`);

@@ -92,7 +92,12 @@ function discOffsets(r: number): [number, number][] {
  * of the disc around it is set; beyond the window cells count as `outside`.
  */
 function byOffsets(
-  bitmap: Uint8Array, cols: number, rows: number, r: number, all: boolean, outside: 0 | 1,
+  bitmap: Uint8Array,
+  cols: number,
+  rows: number,
+  r: number,
+  all: boolean,
+  outside: 0 | 1,
 ): Uint8Array {
   const offsets = discOffsets(r);
   const n = Math.floor(r);
@@ -104,9 +109,12 @@ function byOffsets(
       const inner = i >= n && j >= n && i < cols - n && j < rows - n;
       let hit = all;
       for (const [di, dj] of offsets) {
-        const v = inner || (i + di >= 0 && j + dj >= 0 && i + di < cols && j + dj < rows)
-          ? (bitmap[k + dj * cols + di] !== 0 ? 1 : 0)
-          : outside;
+        const v =
+          inner || (i + di >= 0 && j + dj >= 0 && i + di < cols && j + dj < rows)
+            ? bitmap[k + dj * cols + di] !== 0
+              ? 1
+              : 0
+            : outside;
         if (all ? v === 0 : v === 1) {
           hit = !all;
           break;
@@ -161,7 +169,10 @@ export function close(bitmap: Uint8Array, cols: number, rows: number, r: number)
  * whether cell k is in the one grown by `grow` cells. Two distance transforms serve every amount.
  */
 export function grownClosings(
-  bitmap: Uint8Array, cols: number, rows: number, r: number,
+  bitmap: Uint8Array,
+  cols: number,
+  rows: number,
+  r: number,
 ): (k: number, grow: number) => boolean {
   const grown = dilate(bitmap, cols, rows, r);
   const d = squaredDistance(grown, cols, rows, 0);

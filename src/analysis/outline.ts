@@ -43,7 +43,10 @@ export interface OutlineMetrics {
 const MIN_FIT_SAMPLES = 8;
 
 export function outlineMetrics(
-  section: SectionSegments, inside: WindingIndex, extrusions: SegmentIndex, o: OutlineOptions,
+  section: SectionSegments,
+  inside: WindingIndex,
+  extrusions: SegmentIndex,
+  o: OutlineOptions,
 ): OutlineMetrics {
   let length = 0;
   let thin = 0;
@@ -54,8 +57,10 @@ export function outlineMetrics(
   const wt: number[] = [];
   for (let i = 0; i < section.count; i++) {
     if (section.synthetic[i] !== 0) continue;
-    const ax = section.x0[i]!, ay = section.y0[i]!;
-    const dx = section.x1[i]! - ax, dy = section.y1[i]! - ay;
+    const ax = section.x0[i]!,
+      ay = section.y0[i]!;
+    const dx = section.x1[i]! - ax,
+      dy = section.y1[i]! - ay;
     const len = Math.hypot(dx, dy);
     if (len <= 0) continue;
     const n = Math.max(1, Math.ceil(len / o.step));
@@ -94,13 +99,20 @@ export function outlineMetrics(
 
 /** Weighted least squares for s ≈ b0 + b1·nx + b2·ny; with `prev`, samples off it by more than `outlier` drop. */
 function fitShift(
-  nx: number[], ny: number[], s: number[], w: number[], prev: [number, number, number] | null, outlier: number,
+  nx: number[],
+  ny: number[],
+  s: number[],
+  w: number[],
+  prev: [number, number, number] | null,
+  outlier: number,
 ): [number, number, number] | null {
   const m = new Float64Array(9);
   const v = new Float64Array(3);
   let used = 0;
   for (let k = 0; k < s.length; k++) {
-    const a0 = 1, a1 = nx[k]!, a2 = ny[k]!;
+    const a0 = 1,
+      a1 = nx[k]!,
+      a2 = ny[k]!;
     if (prev && Math.abs(s[k]! - (prev[0] + prev[1] * a1 + prev[2] * a2)) > outlier) continue;
     const wk = w[k]!;
     const row = [a0, a1, a2];
@@ -119,7 +131,15 @@ function fitShift(
 }
 
 function solve3(m: Float64Array, v: Float64Array): [number, number, number] | null {
-  const a = m[0]!, b = m[1]!, c = m[2]!, d = m[3]!, e = m[4]!, f = m[5]!, g = m[6]!, h = m[7]!, i = m[8]!;
+  const a = m[0]!,
+    b = m[1]!,
+    c = m[2]!,
+    d = m[3]!,
+    e = m[4]!,
+    f = m[5]!,
+    g = m[6]!,
+    h = m[7]!,
+    i = m[8]!;
   const det = a * (e * i - f * h) - b * (d * i - f * g) + c * (d * h - e * g);
   if (Math.abs(det) < 1e-18) return null;
   const x = (v[0]! * (e * i - f * h) - b * (v[1]! * i - f * v[2]!) + c * (v[1]! * h - e * v[2]!)) / det;

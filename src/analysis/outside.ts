@@ -27,8 +27,15 @@ export interface OutsideMetrics {
  * material inside either reading is inside. `inside` indexes section.segments.
  */
 export function measureOutside(
-  t: ExtrusionTable, partIds: Uint32Array, section: CachedSection, inside: WindingIndex, grid: Grid,
-  material: Uint8Array, materialCells: number, tolerance: number, step: number,
+  t: ExtrusionTable,
+  partIds: Uint32Array,
+  section: CachedSection,
+  inside: WindingIndex,
+  grid: Grid,
+  material: Uint8Array,
+  materialCells: number,
+  tolerance: number,
+  step: number,
 ): OutsideMetrics {
   const cell = grid.cell;
   const main = section.segments;
@@ -45,8 +52,10 @@ export function measureOutside(
   const positives: number[] = [];
   let samples = 0;
   for (const i of partIds) {
-    const ax = t.x0[i]!, ay = t.y0[i]!;
-    const dx = t.x1[i]! - ax, dy = t.y1[i]! - ay;
+    const ax = t.x0[i]!,
+      ay = t.y0[i]!;
+    const dx = t.x1[i]! - ax,
+      dy = t.y1[i]! - ay;
     const n = Math.max(1, Math.ceil(Math.hypot(dx, dy) / step));
     samples += n + 1;
     for (let k = 0; k <= n; k++) {

@@ -20,7 +20,12 @@ const DISC_SEARCH_LIMIT = 4;
  * cheaper.
  */
 export function overNothingCandidates(
-  rasters: LayerRasters, here: LayerRaster, below: number[], previous: Spans, reachMm: number, wallThickness: number,
+  rasters: LayerRasters,
+  here: LayerRaster,
+  below: number[],
+  previous: Spans,
+  reachMm: number,
+  wallThickness: number,
 ): number[] {
   const out: number[] = [];
   const b = here.partBounds;

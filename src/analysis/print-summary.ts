@@ -21,8 +21,11 @@ const FLOW_RATIO_RANGE: [number, number] = [0.5, 2];
  * Skin summary: coverage weighted by surface area over all layers; the worst layer among those whose surface is
  * at least minArea (slivers of a fraction of a mm² that no slicer fills would otherwise always be the worst).
  */
-function skinSummary(layers: LayerReport[], pick: (l: LayerReport) => { areaMm2: number; coverage: number | null },
-  minArea: number) {
+function skinSummary(
+  layers: LayerReport[],
+  pick: (l: LayerReport) => { areaMm2: number; coverage: number | null },
+  minArea: number,
+) {
   let area = 0;
   let coveredArea = 0;
   let min: number | null = null;
@@ -83,7 +86,13 @@ function evenGrid(parsed: ParsedGcode, frames: readonly LayerFrame[], zTop: numb
  * Layer Zs with variable layer height: part layers thinner or thicker than the range (off-grid), and the
  * layers left out where two part layers (or the last one and the model's top) are further apart than max.
  */
-function variableGrid(parsed: ParsedGcode, frames: readonly LayerFrame[], zTop: number, [, max]: readonly [number, number], o: ResolvedOptions): GridCheck {
+function variableGrid(
+  parsed: ParsedGcode,
+  frames: readonly LayerFrame[],
+  zTop: number,
+  [, max]: readonly [number, number],
+  o: ResolvedOptions,
+): GridCheck {
   const out: GridCheck = { zMismatch: [], zMismatchCount: 0, expectedCount: 0, missing: [], missingCount: 0 };
   let last = 0;
   const skipped = (from: number, gap: number) => {
@@ -99,7 +108,8 @@ function variableGrid(parsed: ParsedGcode, frames: readonly LayerFrame[], zTop: 
       out.zMismatchCount++;
       if (out.zMismatch.length < MAX_LISTED) out.zMismatch.push(l.index);
     }
-    if (Number.isFinite(frame.partThickness) && frame.modelZ - last > max + o.zTolerance) skipped(last, frame.modelZ - last);
+    if (Number.isFinite(frame.partThickness) && frame.modelZ - last > max + o.zTolerance)
+      skipped(last, frame.modelZ - last);
     last = frame.modelZ;
   }
   // the top: a layer is missing when the model goes on more than half a layer above the last
@@ -109,23 +119,36 @@ function variableGrid(parsed: ParsedGcode, frames: readonly LayerFrame[], zTop: 
 }
 
 export function summarize(
-  parsed: ParsedGcode, layers: LayerReport[], o: ResolvedOptions, sections: SectionCache,
-  widths: WeightedHistogram, positives: Float64Array[], samples: number, frames: readonly LayerFrame[],
+  parsed: ParsedGcode,
+  layers: LayerReport[],
+  o: ResolvedOptions,
+  sections: SectionCache,
+  widths: WeightedHistogram,
+  positives: Float64Array[],
+  samples: number,
+  frames: readonly LayerFrame[],
 ): PrintSummary {
   const { zMismatch, zMismatchCount, expectedCount, missing, missingCount } = o.layerHeightRange
     ? variableGrid(parsed, frames, sections.zMax, o.layerHeightRange, o)
     : evenGrid(parsed, frames, sections.zMax, o);
 
-  let wallLen = 0, wallCovered = 0;
-  let wallMin: number | null = null, wallWorst: number | null = null;
+  let wallLen = 0,
+    wallCovered = 0;
+  let wallMin: number | null = null,
+    wallWorst: number | null = null;
   const wallsBelow: number[] = [];
-  let outMax = 0, outArea = 0;
+  let outMax = 0,
+    outArea = 0;
   let outWorst: number | null = null;
   const emptyLayers: number[] = [];
   let emptyMaterial = 0;
-  let infillArea = 0, infillCovered = 0, infillLayers = 0;
-  let infillMin: number | null = null, infillMax: number | null = null;
-  let shiftMax: number | null = null, shiftWorst: number | null = null;
+  let infillArea = 0,
+    infillCovered = 0,
+    infillLayers = 0;
+  let infillMin: number | null = null,
+    infillMax: number | null = null;
+  let shiftMax: number | null = null,
+    shiftWorst: number | null = null;
   const shifted: number[] = [];
   for (const l of layers) {
     const partLength = partMaterialLength(l);
@@ -253,7 +276,10 @@ function partMaterialLength(l: LayerReport): number {
 }
 
 export function collectWarnings(
-  parsed: ParsedGcode, s: PrintSummary, sections: SectionCache, o: ResolvedOptions,
+  parsed: ParsedGcode,
+  s: PrintSummary,
+  sections: SectionCache,
+  o: ResolvedOptions,
 ): string[] {
   const w: string[] = [];
   if (parsed.layers.length === 0) w.push('the G-code extrudes nothing');

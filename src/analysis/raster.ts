@@ -41,7 +41,15 @@ export function segmentLength(t: ExtrusionTable, i: number): number {
  * into those cells instead (bitmaps of flag bits).
  */
 export function stampCapsule(
-  bitmap: Uint8Array, grid: Grid, ax: number, ay: number, bx: number, by: number, r: number, value = 1, or = false,
+  bitmap: Uint8Array,
+  grid: Grid,
+  ax: number,
+  ay: number,
+  bx: number,
+  by: number,
+  r: number,
+  value = 1,
+  or = false,
 ): void {
   const c = grid.cell;
   const dx = bx - ax;
@@ -125,8 +133,14 @@ export function dilateBitmap(bitmap: Uint8Array, grid: Grid, r: number): Uint8Ar
       const k = base + i;
       if (bitmap[k] === 0) continue;
       const boundary =
-        i === 0 || bitmap[k - 1] === 0 || i === cols - 1 || bitmap[k + 1] === 0 ||
-        j === 0 || bitmap[k - cols] === 0 || j === rows - 1 || bitmap[k + cols] === 0;
+        i === 0 ||
+        bitmap[k - 1] === 0 ||
+        i === cols - 1 ||
+        bitmap[k + 1] === 0 ||
+        j === 0 ||
+        bitmap[k - cols] === 0 ||
+        j === rows - 1 ||
+        bitmap[k + cols] === 0;
       if (!boundary) continue;
       const b = bRow + Math.floor(i / block);
       if (stamped[b] !== 0) continue;
@@ -144,7 +158,10 @@ export function dilateBitmap(bitmap: Uint8Array, grid: Grid, r: number): Uint8Ar
  * `select` picks segment ids; all segments when omitted.
  */
 export function rasterizeExtrusions(
-  table: ExtrusionTable, grid: Grid, widths: Float32Array | number, select?: (i: number) => boolean,
+  table: ExtrusionTable,
+  grid: Grid,
+  widths: Float32Array | number,
+  select?: (i: number) => boolean,
 ): Uint8Array {
   const bitmap = newBitmap(grid);
   for (let i = 0; i < table.count; i++) {

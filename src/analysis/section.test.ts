@@ -47,7 +47,10 @@ test('an open mesh is closed, not leaked along scanlines', () => {
   const open = dropTriangles(box, (t) => t === 10 || t === 11);
   const s = meshSection(open, 1);
   assert.equal(s.gapsClosed, 1);
-  assert.equal(s.synthetic.reduce((a, b) => a + b, 0), 1);
+  assert.equal(
+    s.synthetic.reduce((a, b) => a + b, 0),
+    1,
+  );
   const grid = gridAround(0, 0, 10, 5, 0.05, 3);
   near(countSet(rasterizeSection(s, grid)) * 0.0025, 50, 0.5, 'closed area');
   // Two separate boxes, each missing a face, stay two regions.
@@ -91,6 +94,9 @@ function mergeMeshes(a: { positions: Float32Array; indices: Uint32Array }, b: ty
   const offset = a.positions.length / 3;
   const indices = new Uint32Array(a.indices.length + b.indices.length);
   indices.set(a.indices);
-  indices.set(b.indices.map((i) => i + offset), a.indices.length);
+  indices.set(
+    b.indices.map((i) => i + offset),
+    a.indices.length,
+  );
   return { positions, indices };
 }

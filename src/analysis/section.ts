@@ -252,11 +252,20 @@ function cutTriangle(mesh: Mesh, t: number, z: number, out: SegmentCollector): v
   let l: number, b: number, c: number, loneUp: boolean;
   if (aUp === bUp) {
     if (aUp === cUp) return;
-    l = ic; b = ia; c = ib; loneUp = cUp;
+    l = ic;
+    b = ia;
+    c = ib;
+    loneUp = cUp;
   } else if (aUp === cUp) {
-    l = ib; b = ic; c = ia; loneUp = bUp;
+    l = ib;
+    b = ic;
+    c = ia;
+    loneUp = bUp;
   } else {
-    l = ia; b = ib; c = ic; loneUp = aUp;
+    l = ia;
+    b = ib;
+    c = ic;
+    loneUp = aUp;
   }
   const pbx = edgeX(p, l, b, z, loneUp);
   const pby = edgeY(p, l, b, z, loneUp);

@@ -35,7 +35,10 @@ export class SegmentIndex {
     bucketMm: number,
   ) {
     const n = ids ? ids.length : count;
-    let xmin = Infinity, ymin = Infinity, xmax = -Infinity, ymax = -Infinity;
+    let xmin = Infinity,
+      ymin = Infinity,
+      xmax = -Infinity,
+      ymax = -Infinity;
     for (let k = 0; k < n; k++) {
       const i = ids ? ids[k]! : k;
       xmin = Math.min(xmin, x0[i]!, x1[i]!);
@@ -65,7 +68,10 @@ export class SegmentIndex {
 
   /** Visits the buckets along segment i (samples every half bucket), counting or filling. */
   private walk(i: number, counts: Uint32Array | null, fill: Uint32Array | null): void {
-    const ax = this.x0[i]!, ay = this.y0[i]!, bx = this.x1[i]!, by = this.y1[i]!;
+    const ax = this.x0[i]!,
+      ay = this.y0[i]!,
+      bx = this.x1[i]!,
+      by = this.y1[i]!;
     const len = Math.hypot(bx - ax, by - ay);
     const steps = Math.max(1, Math.ceil(len / (this.bucket / 2)));
     let last = -1;
@@ -101,8 +107,10 @@ export class SegmentIndex {
         const q = y * this.cols + x;
         for (let k = this.start[q]!; k < this.start[q + 1]!; k++) {
           const i = this.list[k]!;
-          const ax = this.x0[i]!, ay = this.y0[i]!;
-          const dx = this.x1[i]! - ax, dy = this.y1[i]! - ay;
+          const ax = this.x0[i]!,
+            ay = this.y0[i]!;
+          const dx = this.x1[i]! - ax,
+            dy = this.y1[i]! - ay;
           const l2 = dx * dx + dy * dy;
           let t = l2 > 0 ? ((px - ax) * dx + (py - ay) * dy) / l2 : 0;
           t = t < 0 ? 0 : t > 1 ? 1 : t;
@@ -138,7 +146,8 @@ export class WindingIndex {
     count: number,
     private readonly band: number,
   ) {
-    let ymin = Infinity, ymax = -Infinity;
+    let ymin = Infinity,
+      ymax = -Infinity;
     for (let i = 0; i < count; i++) {
       ymin = Math.min(ymin, y0[i]!, y1[i]!);
       ymax = Math.max(ymax, y0[i]!, y1[i]!);
@@ -178,7 +187,8 @@ export class WindingIndex {
     let w = 0;
     for (let k = this.start[q]!; k < this.start[q + 1]!; k++) {
       const i = this.list[k]!;
-      const ya = this.y0[i]!, yb = this.y1[i]!;
+      const ya = this.y0[i]!,
+        yb = this.y1[i]!;
       const up = ya <= py && py < yb;
       const down = yb <= py && py < ya;
       if (!up && !down) continue;

@@ -350,7 +350,13 @@ function shrinkRow(s: Spans, r: number, h: number, out: RowScratch): void {
 }
 
 function unionRows(
-  xa: Float64Array, a0: number, a1: number, xb: Float64Array, b0: number, b1: number, out: RowScratch,
+  xa: Float64Array,
+  a0: number,
+  a1: number,
+  xb: Float64Array,
+  b0: number,
+  b1: number,
+  out: RowScratch,
 ): void {
   for (let q = a0; q < a1; q++) out.push(xa[2 * q]!, xa[2 * q + 1]!);
   for (let q = b0; q < b1; q++) out.push(xb[2 * q]!, xb[2 * q + 1]!);
@@ -358,7 +364,13 @@ function unionRows(
 }
 
 function intersectRows(
-  xa: Float64Array, a0: number, a1: number, xb: Float64Array, b0: number, b1: number, out: RowScratch,
+  xa: Float64Array,
+  a0: number,
+  a1: number,
+  xb: Float64Array,
+  b0: number,
+  b1: number,
+  out: RowScratch,
 ): void {
   let p = a0;
   let q = b0;
@@ -384,7 +396,13 @@ function intersectRows2(x: RowScratch, y: RowScratch, out: RowScratch): void {
 }
 
 function subtractRows(
-  xa: Float64Array, a0: number, a1: number, xb: Float64Array, b0: number, b1: number, out: RowScratch,
+  xa: Float64Array,
+  a0: number,
+  a1: number,
+  xb: Float64Array,
+  b0: number,
+  b1: number,
+  out: RowScratch,
 ): void {
   let q = b0;
   for (let p = a0; p < a1; p++) {

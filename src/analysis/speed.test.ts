@@ -12,8 +12,14 @@ const OPTS = { layerHeight: 0.2, firstLayerHeight: 0.2, lineWidth: 0.4, filament
 test('30 MB of G-code parses in about a second', () => {
   const writer = new GcodeWriter({ lineWidth: 0.4, filamentDiameter: 1.75, relativeE: true, markers: 'cura' });
   writeBoxPrint({
-    size: [40, 40, 10], origin: [90, 90], layerHeight: 0.2, lineWidth: 0.4, walls: 2, skinLayers: 4,
-    infillSpacing: 2, writer,
+    size: [40, 40, 10],
+    origin: [90, 90],
+    layerHeight: 0.2,
+    lineWidth: 0.4,
+    walls: 2,
+    skinLayers: 4,
+    infillSpacing: 2,
+    writer,
   });
   const one = writer.text();
   const text = one.repeat(Math.ceil(30e6 / one.length));

@@ -30,7 +30,10 @@ export function windowIn(g: Grid, b: [number, number, number, number], margin: n
 
 /** Bounds [xmin, ymin, xmax, ymax] (mm) of a window and of cells of grid `g` (full-grid indices). */
 export function cellBounds(g: Grid, win: Grid | null, cells: number[]): [number, number, number, number] {
-  let i0 = Infinity, j0 = Infinity, i1 = -Infinity, j1 = -Infinity;
+  let i0 = Infinity,
+    j0 = Infinity,
+    i1 = -Infinity,
+    j1 = -Infinity;
   if (win) {
     i0 = win.i0;
     j0 = win.j0;

@@ -25,7 +25,10 @@ export class GapMeter {
   private readonly mm: WeightedHistogram;
   private readonly byLayers = new Float64Array(GAP_SCAN_LAYERS + 2);
 
-  constructor(private readonly layerHeight: number, private readonly cellArea: number) {
+  constructor(
+    private readonly layerHeight: number,
+    private readonly cellArea: number,
+  ) {
     this.mm = new WeightedHistogram((GAP_SCAN_LAYERS + 1) * layerHeight, GAP_BIN_MM);
   }
 
@@ -63,7 +66,12 @@ function scanLimit(zBottom: number, layerHeight: number): number {
  * `zBottom`.
  */
 export function measureTopGap(
-  meter: GapMeter, layers: readonly GcodeLayer[], rasters: LayerRasters, l: number, zBottom: number, cells: number[],
+  meter: GapMeter,
+  layers: readonly GcodeLayer[],
+  rasters: LayerRasters,
+  l: number,
+  zBottom: number,
+  cells: number[],
   layerHeight: number,
 ): void {
   const limit = scanLimit(zBottom, layerHeight);
@@ -88,8 +96,14 @@ export function measureTopGap(
  * counting as places where the layer above starts on the part.
  */
 export function measureBottomGap(
-  meter: GapMeter, layers: readonly GcodeLayer[], frames: readonly LayerFrame[], rasters: LayerRasters, l: number,
-  zBottom: number, layerHeight: number, nearCells: number,
+  meter: GapMeter,
+  layers: readonly GcodeLayer[],
+  frames: readonly LayerFrame[],
+  rasters: LayerRasters,
+  l: number,
+  zBottom: number,
+  layerHeight: number,
+  nearCells: number,
 ): void {
   const b = rasters.get(l).supportBounds;
   if (l === 0 || !b) return;
@@ -134,10 +148,12 @@ export function measureBottomGap(
 /** Whether cell q, or one within `near` cells of it along its row or column, has any of `mask`. */
 function heldNear(bits: Uint8Array, q: number, cols: number, rows: number, near: number, mask: number): boolean {
   if ((bits[q]! & mask) !== 0) return true;
-  const i = q % cols, j = (q - i) / cols;
+  const i = q % cols,
+    j = (q - i) / cols;
   for (let d = 1; d <= near; d++) {
     if ((i >= d && (bits[q - d]! & mask) !== 0) || (i + d < cols && (bits[q + d]! & mask) !== 0)) return true;
-    if ((j >= d && (bits[q - d * cols]! & mask) !== 0) || (j + d < rows && (bits[q + d * cols]! & mask) !== 0)) return true;
+    if ((j >= d && (bits[q - d * cols]! & mask) !== 0) || (j + d < rows && (bits[q + d * cols]! & mask) !== 0))
+      return true;
   }
   return false;
 }

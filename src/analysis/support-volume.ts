@@ -11,10 +11,18 @@ export function meshVolume(mesh: Mesh): number {
   const idx = mesh.indices;
   let six = 0;
   for (let t = 0; t < idx.length; t += 3) {
-    const a = 3 * idx[t]!, b = 3 * idx[t + 1]!, c = 3 * idx[t + 2]!;
-    const ax = p[a]!, ay = p[a + 1]!, az = p[a + 2]!;
-    const bx = p[b]!, by = p[b + 1]!, bz = p[b + 2]!;
-    const cx = p[c]!, cy = p[c + 1]!, cz = p[c + 2]!;
+    const a = 3 * idx[t]!,
+      b = 3 * idx[t + 1]!,
+      c = 3 * idx[t + 2]!;
+    const ax = p[a]!,
+      ay = p[a + 1]!,
+      az = p[a + 2]!;
+    const bx = p[b]!,
+      by = p[b + 1]!,
+      bz = p[b + 2]!;
+    const cx = p[c]!,
+      cy = p[c + 1]!,
+      cz = p[c + 2]!;
     six += ax * (by * cz - bz * cy) - ay * (bx * cz - bz * cx) + az * (bx * cy - by * cx);
   }
   return Math.abs(six) / 6;
@@ -22,7 +30,10 @@ export function meshVolume(mesh: Mesh): number {
 
 /** Filament volume of every layer's support body, interface, raft and part material. */
 export function supportVolumes(
-  layers: readonly GcodeLayer[], frames: readonly LayerFrame[], filamentArea: number, modelMm3: number,
+  layers: readonly GcodeLayer[],
+  frames: readonly LayerFrame[],
+  filamentArea: number,
+  modelMm3: number,
 ): SupportSummary['volume'] {
   const sums = new Float64Array(5);
   for (const layer of layers) {

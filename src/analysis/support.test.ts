@@ -15,7 +15,12 @@ const H = 0.2;
 const FIL = 1.75;
 const OPTS: AnalyzeOptions = { layerHeight: H, firstLayerHeight: H, lineWidth: LW, filamentDiameter: FIL };
 const TOY: ToyOptions = {
-  layerHeight: H, firstLayerHeight: H, lineWidth: LW, filamentDiameter: FIL, infillSpacing: 4, skinLayers: 4,
+  layerHeight: H,
+  firstLayerHeight: H,
+  lineWidth: LW,
+  filamentDiameter: FIL,
+  infillSpacing: 4,
+  skinLayers: 4,
 };
 
 // A T: a 10 × 20 mm column up to z = 4 under a 30 × 20 mm plate up to z = 6. Its arms (two 10 × 20 mm) start on
@@ -25,7 +30,10 @@ const ARM_LAYER = 20;
 /** The arms' area beyond the threshold's allowance (50°: 0.24 mm from the column). */
 const OVERHANG_MM2 = 2 * (10 - H * Math.tan((50 * Math.PI) / 180)) * 20;
 /** Under each arm, 0.6 mm (the XY gap) off the column. */
-const SUPPORT_RECTS: [number, number, number, number][] = [[40, 50, 49.4, 70], [60.6, 50, 70, 70]];
+const SUPPORT_RECTS: [number, number, number, number][] = [
+  [40, 50, 49.4, 70],
+  [60.6, 50, 70, 70],
+];
 
 /** Support under the arms up to layer ARM_LAYER - 1 - gap: lines 2 mm apart, the top two layers dense interface. */
 function supportUnderArms(gap: number, rects = SUPPORT_RECTS) {
@@ -106,7 +114,10 @@ test('the top Z gap is measured in layers, and support farther down than support
 });
 
 test('support under half of each arm supports about half of the overhang', () => {
-  const half: [number, number, number, number][] = [[40, 60, 49.4, 70], [60.6, 60, 70, 70]];
+  const half: [number, number, number, number][] = [
+    [40, 60, 49.4, 70],
+    [60.6, 60, 70, 70],
+  ];
   const u = tPrint(supportUnderArms(1, half)).summary.support!;
   within(u.overhangSupported, 0.45, 0.58, 'half supported');
 });
@@ -123,8 +134,10 @@ test('support inside the part is measured by area, and a bead touching the wall 
   // its width: neither counts.
   const touching = (i: number, _z: number, h: number) =>
     i >= 5 && i <= 9
-      ? [...rectLines([49.6, 51, 50, 69], LW, h, LW, FIL, 'SUPPORT', true),
-        ...rectLines([59.9, 51, 60.3, 69], LW, h, LW, FIL, 'SUPPORT-INTERFACE', true)]
+      ? [
+          ...rectLines([49.6, 51, 50, 69], LW, h, LW, FIL, 'SUPPORT', true),
+          ...rectLines([59.9, 51, 60.3, 69], LW, h, LW, FIL, 'SUPPORT-INTERFACE', true),
+        ]
       : [];
   const edge = tPrint(touching).summary.support!;
   assert.ok(edge.supportAreaMm2 > 5 * 2 * 18 * 0.4 * 0.9, `support area ${edge.supportAreaMm2}`);
@@ -154,7 +167,10 @@ test('a raft raises the model: its offset is found and every check lines up with
     assert.equal(s.modelZ.raftLayerCount, 3);
     assert.equal(s.modelZ.firstModelLayer, 3);
     within(s.modelZ.raftGapMm, 0.2 - 1e-6, 0.2 + 1e-6, 'air gap');
-    assert.deepEqual(r.layers.slice(0, 4).map((l) => l.role), ['raft', 'raft', 'raft', 'part']);
+    assert.deepEqual(
+      r.layers.slice(0, 4).map((l) => l.role),
+      ['raft', 'raft', 'raft', 'part'],
+    );
     within(r.layers[3]!.modelZ, H - 1e-6, H + 1e-6, 'first model layer Z');
     // The part's checks read as without the raft.
     assert.equal(s.zMismatchCount, 0);
@@ -177,7 +193,11 @@ test('a raft raises the model: its offset is found and every check lines up with
 });
 
 // A T standing on a slab: the slab 30 × 20 mm up to z = 2 under the column and the arms.
-const T_ON_SLAB = mergeMeshes(boxMesh(40, 50, 0, 70, 70, 2), boxMesh(50, 50, 2, 60, 70, 4), boxMesh(40, 50, 4, 70, 70, 6));
+const T_ON_SLAB = mergeMeshes(
+  boxMesh(40, 50, 0, 70, 70, 2),
+  boxMesh(50, 50, 2, 60, 70, 4),
+  boxMesh(40, 50, 4, 70, 70, 6),
+);
 
 /**
  * Support standing on the slab (its top layer 9), one layer above it: a floor of two dense layers whose lines cross,
@@ -198,7 +218,11 @@ test('support standing on the part one layer above it has a one-layer bottom gap
     { z: 0.7, h: 0.2, lines: rectLines(slab, LW, 0.2, LW, FIL, 'SUPPORT-INTERFACE') },
   ];
   for (const raft of [false, true]) {
-    const gcode = toyGcode(T_ON_SLAB, { ...TOY, extra: supportOnSlab, ...(raft ? { prelude: raftUnder, zOffset: RAFT_OFFSET } : {}) });
+    const gcode = toyGcode(T_ON_SLAB, {
+      ...TOY,
+      extra: supportOnSlab,
+      ...(raft ? { prelude: raftUnder, zOffset: RAFT_OFFSET } : {}),
+    });
     const u = analyzePrint(T_ON_SLAB, gcode, OPTS).summary.support!;
     const what = raft ? 'over a raft' : 'on the bed';
     within(u.overhangSupported, 0.95, 1, `supported, ${what}`);

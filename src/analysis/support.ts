@@ -135,7 +135,12 @@ export class SupportAnalysis {
     const layer = this.layers[l]!;
     const here = this.rasters.get(l);
     const out: LayerSupport = {
-      overhangAreaMm2: 0, overhangSupportedMm2: 0, partAreaMm2: 0, overNothingMm2: 0, supportAreaMm2: 0, insideMm2: 0,
+      overhangAreaMm2: 0,
+      overhangSupportedMm2: 0,
+      partAreaMm2: 0,
+      overNothingMm2: 0,
+      supportAreaMm2: 0,
+      insideMm2: 0,
     };
 
     if (here.supportCells > 0) {
@@ -151,7 +156,16 @@ export class SupportAnalysis {
         this.insideWorst = l;
       }
       const zSupport = layer.z - o.supportHeight(frame);
-      measureBottomGap(this.bottomGaps, this.layers, this.z.frames, this.rasters, l, zSupport, o.layerHeight, Math.ceil(o.lineWidth / this.rasters.grid.cell));
+      measureBottomGap(
+        this.bottomGaps,
+        this.layers,
+        this.z.frames,
+        this.rasters,
+        l,
+        zSupport,
+        o.layerHeight,
+        Math.ceil(o.lineWidth / this.rasters.grid.cell),
+      );
     }
     if (!frame.hasPart) {
       this.release(l);
@@ -218,7 +232,15 @@ export class SupportAnalysis {
         for (const q of cells) if (within(inWindow(this.grid, win, q), cellGrow)) hit++;
         out.overhangSupportedMm2 = hit * c2;
         const second = this.z.firstModelLayer !== null && l === this.z.firstModelLayer + 1;
-        measureTopGap(second ? this.secondLayerGaps : this.topGaps, this.layers, this.rasters, l, zBottom, cells, o.layerHeight);
+        measureTopGap(
+          second ? this.secondLayerGaps : this.topGaps,
+          this.layers,
+          this.rasters,
+          l,
+          zBottom,
+          cells,
+          o.layerHeight,
+        );
       }
       let missing = 0;
       for (const q of candidates) if (!within(inWindow(this.grid, win, q), reachGrow)) missing++;
@@ -230,13 +252,23 @@ export class SupportAnalysis {
     this.overNothingArea += out.overNothingMm2;
     const unsupported = out.overhangAreaMm2 - out.overhangSupportedMm2;
     if (unsupported > 0) {
-      pushWorst(this.worstOverhang, { layer: l, z: layer.z, areaMm2: out.overhangAreaMm2, unsupportedMm2: unsupported },
-        (w) => w.unsupportedMm2);
+      pushWorst(
+        this.worstOverhang,
+        { layer: l, z: layer.z, areaMm2: out.overhangAreaMm2, unsupportedMm2: unsupported },
+        (w) => w.unsupportedMm2,
+      );
     }
     if (out.overNothingMm2 > 0) {
-      pushWorst(this.worstNothing, {
-        layer: l, z: layer.z, areaMm2: out.overNothingMm2, fraction: out.overNothingMm2 / out.partAreaMm2,
-      }, (w) => w.areaMm2);
+      pushWorst(
+        this.worstNothing,
+        {
+          layer: l,
+          z: layer.z,
+          areaMm2: out.overNothingMm2,
+          fraction: out.overNothingMm2 / out.partAreaMm2,
+        },
+        (w) => w.areaMm2,
+      );
     }
     this.release(l);
     return out;
@@ -296,7 +328,6 @@ export class SupportAnalysis {
     for (const key of this.spansByZ.keys()) if (key / 1e5 < zModel) this.spansByZ.delete(key);
   }
 }
-
 
 function round6(z: number): number {
   return Math.round(z * 1e6) / 1e6;

@@ -23,8 +23,13 @@ export function mergeMeshes(...meshes: Mesh[]): Mesh {
  * line width inside the rectangle.
  */
 export function rectLines(
-  rect: [number, number, number, number], spacing: number, h: number, lineWidth: number, filamentDiameter: number,
-  type: string, alongY = false,
+  rect: [number, number, number, number],
+  spacing: number,
+  h: number,
+  lineWidth: number,
+  filamentDiameter: number,
+  type: string,
+  alongY = false,
 ): string[] {
   const [x0, y0, x1, y1] = rect;
   const area = filamentArea(filamentDiameter);
@@ -42,8 +47,30 @@ export function rectLines(
 /** A closed box with outward-facing triangles. */
 export function boxMesh(x0: number, y0: number, z0: number, x1: number, y1: number, z1: number): Mesh {
   const positions = new Float32Array([
-    x0, y0, z0, x1, y0, z0, x1, y1, z0, x0, y1, z0, // 0..3 bottom: 000 100 110 010
-    x0, y0, z1, x1, y0, z1, x1, y1, z1, x0, y1, z1, // 4..7 top:    001 101 111 011
+    x0,
+    y0,
+    z0,
+    x1,
+    y0,
+    z0,
+    x1,
+    y1,
+    z0,
+    x0,
+    y1,
+    z0, // 0..3 bottom: 000 100 110 010
+    x0,
+    y0,
+    z1,
+    x1,
+    y0,
+    z1,
+    x1,
+    y1,
+    z1,
+    x0,
+    y1,
+    z1, // 4..7 top:    001 101 111 011
   ]);
   // Quads counter-clockwise as seen from outside.
   const quads = [
@@ -204,7 +231,10 @@ export function writeBoxPrint(o: BoxPrintOptions): void {
       }
     }
     const inner = o.walls * w;
-    const ix0 = x0 + inner, iy0 = y0 + inner, ix1 = x0 + sx - inner, iy1 = y0 + sy - inner;
+    const ix0 = x0 + inner,
+      iy0 = y0 + inner,
+      ix1 = x0 + sx - inner,
+      iy1 = y0 + sy - inner;
     const solid = l < o.skinLayers || l >= layers - o.skinLayers;
     if (solid) {
       if (o.skipSkinOn?.includes(l)) continue;

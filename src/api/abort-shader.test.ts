@@ -12,13 +12,17 @@ import { loadCustomInfill } from '../exports.js';
 import { StrataError } from '../errors.js';
 import { HEAVY_SHADER } from '../shader/test-heavy-shader.js';
 
-const CUBE = new Uint8Array(readFileSync(fileURLToPath(new URL('../../examples/calibration-cube.stl', import.meta.url))));
+const CUBE = new Uint8Array(
+  readFileSync(fileURLToPath(new URL('../../examples/calibration-cube.stl', import.meta.url))),
+);
 
 /** Longest from abort to the rejection, ms (asked: 100; a loaded test machine takes more). */
 const ABORT_MS = 1000;
 
 for (const threads of [1, 2]) {
-  test(`an abort during a heavy custom shader's layer stops the slice at once (${threads} thread${threads > 1 ? 's' : ''})`, { timeout: 120_000 }, async () => {
+  test(`an abort during a heavy custom shader's layer stops the slice at once (${threads} thread${threads > 1 ? 's' : ''})`, {
+    timeout: 120_000,
+  }, async () => {
     await loadCustomInfill();
     const ac = new AbortController();
     let sliced = false;
@@ -34,13 +38,21 @@ for (const threads of [1, 2]) {
     await assert.rejects(slice, (e: unknown) => e instanceof StrataError && e.code === 'CANCELLED');
     const ms = performance.now() - t0;
     assert.ok(ms < ABORT_MS, `rejected ${Math.round(ms)} ms after the abort`);
-    console.log(`abort to rejection with a heavy shader, ${threads} thread${threads > 1 ? 's' : ''}: ${Math.round(ms)} ms`);
+    console.log(
+      `abort to rejection with a heavy shader, ${threads} thread${threads > 1 ? 's' : ''}: ${Math.round(ms)} ms`,
+    );
   });
 }
 
 test('a custom infill gives the same G-code in workers (slice) as on the calling thread (sliceSync)', async () => {
   await loadCustomInfill();
-  const options = { threads: 1, customInfill: { name: 'hexagon', shader: 'vec4 cellular(vec3 p) { return vec4(floor(p.x / 3.0), floor(p.y / 3.0), 0.0, 1.0); }' } };
+  const options = {
+    threads: 1,
+    customInfill: {
+      name: 'hexagon',
+      shader: 'vec4 cellular(vec3 p) { return vec4(floor(p.x / 3.0), floor(p.y / 3.0), 0.0, 1.0); }',
+    },
+  };
   const inWorkers = (await new Slicer(options).slice(CUBE)).gcode;
   const inline = new Slicer(options).sliceSync(CUBE).gcode;
   assert.ok(inWorkers === inline, 'the same G-code');

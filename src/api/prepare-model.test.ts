@@ -11,41 +11,78 @@ import { Slicer } from './slicer.js';
 /** A closed axis-aligned box (outward-facing triangles). */
 function box(x0: number, y0: number, z0: number, sx: number, sy: number, sz: number): Mesh {
   const v: number[] = [];
-  for (const [x, y, z] of [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]]) v.push(x0 + x * sx, y0 + y * sy, z0 + z * sz);
-  const f = [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7];
+  for (const [x, y, z] of [
+    [0, 0, 0],
+    [1, 0, 0],
+    [1, 1, 0],
+    [0, 1, 0],
+    [0, 0, 1],
+    [1, 0, 1],
+    [1, 1, 1],
+    [0, 1, 1],
+  ])
+    v.push(x0 + x * sx, y0 + y * sy, z0 + z * sz);
+  const f = [
+    0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7,
+  ];
   return { positions: new Float32Array(v), indices: new Uint32Array(f) };
 }
 
 const prep = (input: unknown, opts: SliceOptions = {}) => prepareModel(input, resolveConfig(opts));
 
 function empty(input: unknown, re: RegExp): void {
-  assert.throws(() => prep(input), (e: unknown) => e instanceof StrataError && e.code === 'EMPTY_MODEL' && re.test(e.message) && !e.message.includes('\n'));
+  assert.throws(
+    () => prep(input),
+    (e: unknown) =>
+      e instanceof StrataError && e.code === 'EMPTY_MODEL' && re.test(e.message) && !e.message.includes('\n'),
+  );
 }
 
 test('several models: separate placed objects with unique names, and the merged mesh of them all', () => {
   const cube = { name: 'cube', mesh: box(0, 0, 0, 20, 20, 20) };
   const p = prep([cube, cube, { name: 'cube (2)', mesh: box(0, 0, 0, 5, 5, 5) }]);
-  assert.deepEqual(p.objects.map((o) => o.name), ['cube', 'cube (2)', 'cube (2) (2)']);
+  assert.deepEqual(
+    p.objects.map((o) => o.name),
+    ['cube', 'cube (2)', 'cube (2) (2)'],
+  );
   assert.equal(p.mesh.indices.length, 3 * 36);
   const boxes = p.objects.map((o) => positionBounds(o.mesh.positions));
   // no two overlap, all on the bed, all on z = 0
   for (let i = 0; i < boxes.length; i++) {
     assert.equal(boxes[i].min[2], 0);
     for (let j = i + 1; j < boxes.length; j++) {
-      const a = boxes[i], b = boxes[j];
-      const apart = a.max[0] + 6 - 1e-3 <= b.min[0] || b.max[0] + 6 - 1e-3 <= a.min[0] || a.max[1] + 6 - 1e-3 <= b.min[1] || b.max[1] + 6 - 1e-3 <= a.min[1];
+      const a = boxes[i],
+        b = boxes[j];
+      const apart =
+        a.max[0] + 6 - 1e-3 <= b.min[0] ||
+        b.max[0] + 6 - 1e-3 <= a.min[0] ||
+        a.max[1] + 6 - 1e-3 <= b.min[1] ||
+        b.max[1] + 6 - 1e-3 <= a.min[1];
       assert.ok(apart, `objects ${i} and ${j} are 6 mm apart`);
     }
   }
   assert.match(p.warnings[0], /^3 models arranged around the bed centre, 6 mm apart$/);
   // a brim widens the gap by its width on each side
-  const brim = prep([cube, cube], { adhesionType: 'brim', brimWidth: 5 }).objects.map((o) => positionBounds(o.mesh.positions));
-  const gap = Math.max(brim[1].min[0] - brim[0].max[0], brim[0].min[0] - brim[1].max[0], brim[1].min[1] - brim[0].max[1], brim[0].min[1] - brim[1].max[1]);
+  const brim = prep([cube, cube], { adhesionType: 'brim', brimWidth: 5 }).objects.map((o) =>
+    positionBounds(o.mesh.positions),
+  );
+  const gap = Math.max(
+    brim[1].min[0] - brim[0].max[0],
+    brim[0].min[0] - brim[1].max[0],
+    brim[1].min[1] - brim[0].max[1],
+    brim[0].min[1] - brim[1].max[1],
+  );
   assert.ok(Math.abs(gap - 16) < 1e-3, `gap ${gap}`);
 });
 
 test('one model of several objects keeps them where they are relative to each other', () => {
-  const p = prep({ name: 'pair', objects: [{ name: 'a', mesh: box(0, 0, 0, 10, 10, 10) }, { name: 'b', mesh: box(12, 0, 0, 10, 10, 10) }] });
+  const p = prep({
+    name: 'pair',
+    objects: [
+      { name: 'a', mesh: box(0, 0, 0, 10, 10, 10) },
+      { name: 'b', mesh: box(12, 0, 0, 10, 10, 10) },
+    ],
+  });
   const [a, b] = p.objects.map((o) => positionBounds(o.mesh.positions));
   assert.equal(b.min[0] - a.min[0], 12);
   assert.equal(p.warnings.length, 0);
@@ -65,23 +102,38 @@ test('scale, per-axis scale and rotation reach the placed objects', () => {
 });
 
 test('nothing to print is an error naming the cause', () => {
-  const flat = { positions: new Float32Array([0, 0, 0, 20, 0, 0, 20, 0, 10, 0, 0, 10]), indices: new Uint32Array([0, 1, 2, 0, 2, 3]) };
+  const flat = {
+    positions: new Float32Array([0, 0, 0, 20, 0, 0, 20, 0, 10, 0, 0, 10]),
+    indices: new Uint32Array([0, 1, 2, 0, 2, 3]),
+  };
   empty(flat, /^nothing to print: the model is flat: its 2 triangles lie in one plane/);
-  const line = { positions: new Float32Array([0, 0, 0, 5, 0, 0, 10, 0, 0, 0, 0, 3, 0, 0, 6, 0, 0, 9]), indices: new Uint32Array([0, 1, 2, 3, 4, 5]) };
+  const line = {
+    positions: new Float32Array([0, 0, 0, 5, 0, 0, 10, 0, 0, 0, 0, 3, 0, 0, 6, 0, 0, 9]),
+    indices: new Uint32Array([0, 1, 2, 3, 4, 5]),
+  };
   empty(line, /^nothing to print: the model has only triangles of zero area/);
   // a closed surface with both sides out: a tetrahedron's faces, each also reversed
   const t = [0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3];
-  const both = { positions: new Float32Array([0, 0, 0, 10, 0, 0, 0, 10, 0, 0, 0, 10]), indices: new Uint32Array([...t, 0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2]) };
+  const both = {
+    positions: new Float32Array([0, 0, 0, 10, 0, 0, 0, 10, 0, 0, 0, 10]),
+    indices: new Uint32Array([...t, 0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2]),
+  };
   empty(both, /^nothing to print: the model encloses no volume/);
   // with several models, the one at fault is named
-  assert.throws(() => prep([box(0, 0, 0, 10, 10, 10), { name: 'wall', mesh: flat }]), /: nothing to print: wall is flat/);
+  assert.throws(
+    () => prep([box(0, 0, 0, 10, 10, 10), { name: 'wall', mesh: flat }]),
+    /: nothing to print: wall is flat/,
+  );
   assert.doesNotThrow(() => prep(box(0, 0, 0, 10, 10, 10)));
 });
 
 test('a closed model thinner than a line slices to an error, not to G-code that prints nothing', async () => {
   await assert.rejects(
     new Slicer({ threads: 1 }).slice(box(0, 0, 0, 20, 0.01, 10)),
-    (e: unknown) => e instanceof StrataError && e.code === 'EMPTY_MODEL' && /^nothing to print: .*thinner than the line width/.test(e.message),
+    (e: unknown) =>
+      e instanceof StrataError &&
+      e.code === 'EMPTY_MODEL' &&
+      /^nothing to print: .*thinner than the line width/.test(e.message),
   );
 });
 
@@ -91,7 +143,11 @@ function threeMesh(name: string, b: Mesh, extra: Record<string, unknown> = {}) {
     isObject3D: true,
     isMesh: true,
     name,
-    geometry: { isBufferGeometry: true, attributes: { position: { array: b.positions, itemSize: 3, count: b.positions.length / 3 } }, index: { array: b.indices } },
+    geometry: {
+      isBufferGeometry: true,
+      attributes: { position: { array: b.positions, itemSize: 3, count: b.positions.length / 3 } },
+      index: { array: b.indices },
+    },
     children: [],
     ...extra,
   };
@@ -102,10 +158,16 @@ test('three.js: invisible meshes are skipped; a Y-up scene is warned about, and 
     isObject3D: true,
     isScene: true,
     up: { x: 0, y: 1, z: 0 },
-    children: [threeMesh('tower', box(0, 0, 0, 10, 30, 10)), threeMesh('hidden', box(50, 0, 0, 10, 10, 10), { visible: false })],
+    children: [
+      threeMesh('tower', box(0, 0, 0, 10, 30, 10)),
+      threeMesh('hidden', box(50, 0, 0, 10, 10, 10), { visible: false }),
+    ],
   };
   const p = prep(scene);
-  assert.deepEqual(p.objects.map((o) => o.name), ['tower']);
+  assert.deepEqual(
+    p.objects.map((o) => o.name),
+    ['tower'],
+  );
   assert.match(p.warnings.join('\n'), /up axis is \+Y .* pass upAxis: 'y'/);
   const { min, max } = positionBounds(p.mesh.positions);
   assert.equal(Math.round(max[2] - min[2]), 10, 'sliced Z-up: lying on its side');
@@ -116,5 +178,8 @@ test('three.js: invisible meshes are skipped; a Y-up scene is warned about, and 
   // a scene that says it is Z-up gets no warning
   assert.doesNotMatch(prep({ ...scene, up: { x: 0, y: 0, z: 1 } }).warnings.join('\n'), /up axis/);
   // only hidden meshes: an error that says so
-  empty({ isObject3D: true, children: [threeMesh('h', box(0, 0, 0, 1, 1, 1), { visible: false })] }, /no visible meshes .*1 hidden object is skipped/);
+  empty(
+    { isObject3D: true, children: [threeMesh('h', box(0, 0, 0, 1, 1, 1), { visible: false })] },
+    /no visible meshes .*1 hidden object is skipped/,
+  );
 });

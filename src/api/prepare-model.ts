@@ -45,7 +45,11 @@ export function prepareModel(input: unknown, cfg: Config): PreparedModel {
 }
 
 /** `prepareModel` as steps: yields after reading and after each object's preparation, so a caller can pause. */
-export function* prepareModelSteps(input: unknown, given: Config, reconfigure?: ProjectConfig): Generator<void, PreparedModel> {
+export function* prepareModelSteps(
+  input: unknown,
+  given: Config,
+  reconfigure?: ProjectConfig,
+): Generator<void, PreparedModel> {
   const loaded = toModels(input, { maxInflatedBytes: given.inflateBudget * MiB, upAxis: given.upAxis });
   // a project's print settings go under the caller's own before the models are placed
   const project = loaded.projectSettings && reconfigure ? reconfigure(loaded.projectSettings) : null;
@@ -67,13 +71,18 @@ export function* prepareModelSteps(input: unknown, given: Config, reconfigure?: 
       if (mesh.indices.length > 0) objects.push(withVolumesPrepared({ ...o, mesh }, warnings));
       yield;
     }
-    const why = objects.length === 0 ? 'has no printable triangles' : nothingToPrint(mergeObjects(objects), combineReports(reports.slice(-m.objects.length)));
+    const why =
+      objects.length === 0
+        ? 'has no printable triangles'
+        : nothingToPrint(mergeObjects(objects), combineReports(reports.slice(-m.objects.length)));
     if (why !== undefined) throw new StrataError('EMPTY_MODEL', `nothing to print: ${m.name} ${why}`);
     prepared.push({ name: m.name, objects });
   }
   const brim = cfg.adhesionType === 'brim' ? cfg.brimWidth : 0;
   // sequential printing keeps the print head's clearance radius between the models (the brim lies under it)
-  const spacing = cfg.sequentialPrinting ? Math.max(cfg.objectSpacing + 2 * brim, cfg.extruderClearanceRadius) : cfg.objectSpacing + 2 * brim;
+  const spacing = cfg.sequentialPrinting
+    ? Math.max(cfg.objectSpacing + 2 * brim, cfg.extruderClearanceRadius)
+    : cfg.objectSpacing + 2 * brim;
   const placed = placeModels(prepared, {
     center: cfg.center,
     bedWidth: cfg.buildPlateWidth,
@@ -81,7 +90,9 @@ export function* prepareModelSteps(input: unknown, given: Config, reconfigure?: 
     bedHeight: cfg.buildVolumeHeight,
     originAtCenter: cfg.originAtCenter,
     spacing,
-    ...(spacing > cfg.objectSpacing + 2 * brim ? { spacingSetting: 'extruderClearanceRadius (sequentialPrinting keeps it between the models)' } : {}),
+    ...(spacing > cfg.objectSpacing + 2 * brim
+      ? { spacingSetting: 'extruderClearanceRadius (sequentialPrinting keeps it between the models)' }
+      : {}),
     margin: adhesionMargin(cfg),
     transform: {
       upAxis: cfg.upAxis,

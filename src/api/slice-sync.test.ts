@@ -17,14 +17,31 @@ function tee(): { positions: Float32Array; indices: Uint32Array } {
   const f: number[] = [];
   for (const [x0, y0, z0, sx, sy, sz] of boxes) {
     const o = v.length / 3;
-    for (const [x, y, z] of [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]]) v.push(x0! + x! * sx!, y0! + y! * sy!, z0! + z! * sz!);
-    for (const i of [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7]) f.push(o + i);
+    for (const [x, y, z] of [
+      [0, 0, 0],
+      [1, 0, 0],
+      [1, 1, 0],
+      [0, 1, 0],
+      [0, 0, 1],
+      [1, 0, 1],
+      [1, 1, 1],
+      [0, 1, 1],
+    ])
+      v.push(x0! + x! * sx!, y0! + y! * sy!, z0! + z! * sz!);
+    for (const i of [
+      0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7,
+    ])
+      f.push(o + i);
   }
   return { positions: new Float32Array(v), indices: new Uint32Array(f) };
 }
 
 test('sliceSync returns at once (no promise) the G-code slice() gives, for any thread count asked', async () => {
-  for (const options of [{}, { threads: 4, infillPattern: 'gyroid' as const }, { adhesionType: 'raft' as const, infillPattern: 'lightning' as const }]) {
+  for (const options of [
+    {},
+    { threads: 4, infillPattern: 'gyroid' as const },
+    { adhesionType: 'raft' as const, infillPattern: 'lightning' as const },
+  ]) {
     const slicer = new Slicer(options);
     const sync = slicer.sliceSync(cube);
     assert.equal(typeof sync.gcode, 'string');
@@ -56,11 +73,17 @@ test('sliceSync: a custom infill shader needs its compiler loaded (the Node entr
 test('sliceSync: an aborted signal stops it with CANCELLED; bad input throws as slice() rejects', async () => {
   const ac = new AbortController();
   ac.abort(new Error('stop'));
-  assert.throws(() => new Slicer().sliceSync(cube, { signal: ac.signal }), (e) => e instanceof StrataError && e.code === 'CANCELLED');
+  assert.throws(
+    () => new Slicer().sliceSync(cube, { signal: ac.signal }),
+    (e) => e instanceof StrataError && e.code === 'CANCELLED',
+  );
   const bad = new Uint8Array([1, 2, 3]);
   let asyncError: unknown;
   await new Slicer().slice(bad).catch((e) => (asyncError = e));
-  assert.throws(() => new Slicer().sliceSync(bad), (e) => e instanceof StrataError && e.message === (asyncError as Error).message);
+  assert.throws(
+    () => new Slicer().sliceSync(bad),
+    (e) => e instanceof StrataError && e.message === (asyncError as Error).message,
+  );
 });
 
 test('sliceSync reports progress up to 1', () => {

@@ -22,7 +22,12 @@ for (const call of ['slice', 'sliceToSink', 'slicePlan'] as const) {
       freed = ref.deref() === undefined;
     };
     const s = new Slicer({ threads: 1 });
-    const done = call === 'slice' ? s.slice(bytes, { onProgress }) : call === 'sliceToSink' ? s.sliceToSink(bytes, () => {}, { onProgress }) : s.slicePlan(bytes, { onProgress });
+    const done =
+      call === 'slice'
+        ? s.slice(bytes, { onProgress })
+        : call === 'sliceToSink'
+          ? s.sliceToSink(bytes, () => {}, { onProgress })
+          : s.slicePlan(bytes, { onProgress });
     bytes = undefined;
     const r = await done;
     assert.equal(r.stats.layers, 100);

@@ -49,7 +49,12 @@ export { prepareModel, type PreparedModel } from './prepare-model.js';
 export interface ObjectOptions {
   name?: string;
   settings?: Partial<Settings>;
-  volumes?: Array<{ type: 'part' | 'modifier' | 'negative' | 'support-blocker' | 'support-enforcer'; mesh: unknown; name?: string; settings?: Partial<Settings> }>;
+  volumes?: Array<{
+    type: 'part' | 'modifier' | 'negative' | 'support-blocker' | 'support-enforcer';
+    mesh: unknown;
+    name?: string;
+    settings?: Partial<Settings>;
+  }>;
   layerRanges?: Array<{ fromZ: number; toZ: number; settings: Partial<Settings> }>;
   /** Variable layer height: z0, h0, z1, h1, … mm from the object's bottom (PrusaSlicer's layer_height_profile). */
   layerHeightProfile?: number[];
@@ -70,7 +75,16 @@ async function coreCount(): Promise<number> {
 }
 
 /** The placement settings of objects saved as placed (a project's objects are not turned or scaled again). */
-const PLACED = { upAxis: 'z', rotateX: 0, rotateY: 0, rotateZ: 0, scale: 1, scaleX: null, scaleY: null, scaleZ: null } as const;
+const PLACED = {
+  upAxis: 'z',
+  rotateX: 0,
+  rotateY: 0,
+  rotateZ: 0,
+  scale: 1,
+  scaleX: null,
+  scaleY: null,
+  scaleZ: null,
+} as const;
 
 /** Settings of how a slice runs, which a project file does not choose for the machine it is opened on. */
 const RUNTIME_KEYS: ReadonlySet<string> = new Set(['threads', 'inflateBudget']);
@@ -190,9 +204,17 @@ export class Slicer {
     const own = { settings: object.settings, use: 'object' as const, where: `object "${name}"` };
     table.resolve([own]);
     for (const v of object.volumes ?? []) {
-      if (v.settings) table.resolve([own, { settings: v.settings, use: 'modifier', where: `${v.type} "${v.name ?? ''}" of "${name}"` }]);
+      if (v.settings)
+        table.resolve([
+          own,
+          { settings: v.settings, use: 'modifier', where: `${v.type} "${v.name ?? ''}" of "${name}"` },
+        ]);
     }
-    for (const r of object.layerRanges ?? []) table.resolve([own, { settings: r.settings, use: 'layer range', where: `object "${name}" layers ${r.fromZ}–${r.toZ} mm` }]);
+    for (const r of object.layerRanges ?? [])
+      table.resolve([
+        own,
+        { settings: r.settings, use: 'layer range', where: `object "${name}" layers ${r.fromZ}–${r.toZ} mm` },
+      ]);
     this.#objects.push({ ...object, name, mesh, settings: object.settings ?? {} });
     return this;
   }
@@ -204,11 +226,19 @@ export class Slicer {
   #projectConfig(project: SettingsSource): { config: Config; options: SliceOptions; warnings: string[] } {
     const mapped = settingsFromSource(project);
     const warnings: string[] = [];
-    const own: Record<string, unknown> = Object.fromEntries(Object.entries(mapped.settings).filter(([k]) => !RUNTIME_KEYS.has(k)));
+    const own: Record<string, unknown> = Object.fromEntries(
+      Object.entries(mapped.settings).filter(([k]) => !RUNTIME_KEYS.has(k)),
+    );
     // Strata's own projects name their presets too
-    for (const k of ['printer', 'filament'] as const) if (project.format === 'strata' && typeof project.values[k] === 'string') own[k] = project.values[k];
-    const unknown = mapped.ignored.filter((k) => !(project.format === 'strata' && (k === 'printer' || k === 'filament')));
-    if (unknown.length) warnings.push(`${unknown.length} of the project's print settings have no Strata equivalent and are ignored${unknown.length <= 8 ? ` (${unknown.join(', ')})` : ''}`);
+    for (const k of ['printer', 'filament'] as const)
+      if (project.format === 'strata' && typeof project.values[k] === 'string') own[k] = project.values[k];
+    const unknown = mapped.ignored.filter(
+      (k) => !(project.format === 'strata' && (k === 'printer' || k === 'filament')),
+    );
+    if (unknown.length)
+      warnings.push(
+        `${unknown.length} of the project's print settings have no Strata equivalent and are ignored${unknown.length <= 8 ? ` (${unknown.join(', ')})` : ''}`,
+      );
     for (const r of mapped.rejected) warnings.push(`the project's ${r.key} = ${r.value} is not taken: ${r.reason}`);
     const options: SliceOptions = { ...own, ...('center' in this.#options ? {} : { center: false }), ...this.#options };
     try {
@@ -234,8 +264,14 @@ export class Slicer {
     // the objects are saved as placed: turned, scaled and stood up already
     Object.assign(print, PLACED);
     // loaded when first used: a slice that saves no project does not load the writer
-    const [{ writeProject3mf }, { toSlic3rKeys }] = await Promise.all([import('../mesh/threemf-write.js'), import('../settings/import/to-slic3r.js')]);
-    return writeProject3mf(model.objects, { printSettings: print, slic3rPrintSettings: toSlic3rKeys(print, this.#config.layerHeight) });
+    const [{ writeProject3mf }, { toSlic3rKeys }] = await Promise.all([
+      import('../mesh/threemf-write.js'),
+      import('../settings/import/to-slic3r.js'),
+    ]);
+    return writeProject3mf(model.objects, {
+      printSettings: print,
+      slic3rPrintSettings: toSlic3rKeys(print, this.#config.layerHeight),
+    });
   }
 
   /** Take every object added with `addObject` off the plate. */
@@ -252,7 +288,12 @@ export class Slicer {
    */
   sliceSync(input?: unknown, opts: Omit<SliceCallOptions, 'signal'> & { signal?: AbortSignal } = {}): SliceResult {
     const chunks: string[] = [];
-    const steps = this.#sliceSteps({ input: input === undefined && this.#objects.length ? this.#objects : input }, opts, (c) => chunks.push(c), true);
+    const steps = this.#sliceSteps(
+      { input: input === undefined && this.#objects.length ? this.#objects : input },
+      opts,
+      (c) => chunks.push(c),
+      true,
+    );
     const { stats, warnings } = new Pacer(opts.signal).driveSync(steps);
     return { gcode: chunks.join(''), stats, warnings };
   }
@@ -262,24 +303,48 @@ export class Slicer {
   // once the model is read (a file's bytes are not kept while the G-code is made)
   slice(input?: unknown, opts: SliceCallOptions = {}): Promise<SliceResult> {
     const chunks: string[] = [];
-    return this.sliceToSink(input, (c) => chunks.push(c), opts).then(({ stats, warnings }) => ({ gcode: chunks.join(''), stats, warnings }));
+    return this.sliceToSink(input, (c) => chunks.push(c), opts).then(({ stats, warnings }) => ({
+      gcode: chunks.join(''),
+      stats,
+      warnings,
+    }));
   }
 
   /** Slice and stream the G-code to `sink` in chunks. */
-  sliceToSink(input: unknown, sink: (chunk: string) => void, opts: SliceCallOptions = {}): Promise<{ stats: SliceStats; warnings: string[] }> {
+  sliceToSink(
+    input: unknown,
+    sink: (chunk: string) => void,
+    opts: SliceCallOptions = {},
+  ): Promise<{ stats: SliceStats; warnings: string[] }> {
     return this.slicePlan(input, opts, sink).then(({ stats, warnings }) => ({ stats, warnings }));
   }
 
   /** Slice and return the structured toolpath plan (layers of typed paths) as well as the stats. */
-  slicePlan(input?: unknown, opts: SliceCallOptions = {}, sink: (chunk: string) => void = () => {}): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
+  slicePlan(
+    input?: unknown,
+    opts: SliceCallOptions = {},
+    sink: (chunk: string) => void = () => {},
+  ): Promise<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     // the input travels in a box the slice empties once the model is read (an async function's own
     // parameters stay alive until it returns)
     const pacer = new Pacer(opts.signal);
-    return pacer.drive(this.#sliceSteps({ input: input === undefined && this.#objects.length ? this.#objects : input }, opts, sink, false));
+    return pacer.drive(
+      this.#sliceSteps(
+        { input: input === undefined && this.#objects.length ? this.#objects : input },
+        opts,
+        sink,
+        false,
+      ),
+    );
   }
 
   /** The slice as paced steps; `sync`: on this thread only (one thread, nothing to wait for). */
-  *#sliceSteps(given: { input: unknown }, opts: SliceCallOptions, sink: (chunk: string) => void, sync: boolean): Steps<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
+  *#sliceSteps(
+    given: { input: unknown },
+    opts: SliceCallOptions,
+    sink: (chunk: string) => void,
+    sync: boolean,
+  ): Steps<{ plan: PrintPlan; stats: SliceStats; warnings: string[] }> {
     const t0 = performance.now();
     const cfg = this.#config;
     // refuse what would fail only after slicing: templates the flavour cannot run, an image over budget
@@ -287,14 +352,19 @@ export class Slicer {
     if (this.#custom) checkImageBudget(this.#custom, cfg);
     // the shader compiler loads on first use (the pipeline compiles the infiller and reports its errors)
     if (this.#custom && !loadedCustomInfill()) {
-      if (sync) throw new StrataError('BAD_SETTING', 'a custom infill in a synchronous slice needs the shader compiler loaded first: await loadCustomInfill(), or use slice()');
+      if (sync)
+        throw new StrataError(
+          'BAD_SETTING',
+          'a custom infill in a synchronous slice needs the shader compiler loaded first: await loadCustomInfill(), or use slice()',
+        );
       yield* wait(loadCustomInfill());
     }
     // Workers start loading now, while the model is read and placed, if they will be needed (a custom
     // density given as a JS function cannot travel to a worker).
     const auto = sync ? 1 : yield* wait(autoThreads());
     const wanted = sync ? 1 : cfg.threads > 0 ? cfg.threads : inputBytes(given.input) >= EARLY_START_BYTES ? auto : 1;
-    const started = wanted > 1 && (!this.#custom || isTransferable(this.#custom)) ? startWorkers(wanted - 1) : undefined;
+    const started =
+      wanted > 1 && (!this.#custom || isTransferable(this.#custom)) ? startWorkers(wanted - 1) : undefined;
     let run: RunResult;
     let model: PreparedModel;
     let threads: number;
@@ -308,12 +378,26 @@ export class Slicer {
       const small = model.mesh.indices.length / 3 / 1000 + layersEstimate / 50 < SMALL_JOB;
       threads = sync ? 1 : cfg.threads > 0 ? cfg.threads : small ? 1 : auto;
       const warnings = [...model.warnings];
-      const plate = plateOf(model.objects, model.project?.options ?? this.#options, model.config, warnings, model.project?.settings);
+      const plate = plateOf(
+        model.objects,
+        model.project?.options ?? this.#options,
+        model.config,
+        warnings,
+        model.project?.settings,
+      );
       model = { ...model, warnings };
       run = yield* runPipelineSteps(
         plate,
         // a custom infill's layers in workers, so that an abort never waits for a shader's layer
-        { threads, sink, onProgress: opts.onProgress, signal: opts.signal, custom: this.#custom, started, customInWorkers: !sync },
+        {
+          threads,
+          sink,
+          onProgress: opts.onProgress,
+          signal: opts.signal,
+          custom: this.#custom,
+          started,
+          customInWorkers: !sync,
+        },
         new Pacer(opts.signal),
       );
     } catch (e) {
@@ -331,7 +415,12 @@ export class Slicer {
       threads,
       thinLost: run.thinLost,
     };
-    const extra = [thinLossWarning(run.thinLost, cfg), vaseFlatWarning(run.vaseFlat), vaseSpeckWarning(run.vaseSpecks), firstLayerWarning(run.firstLayerFilledMm2, cfg)].filter((w): w is string => w !== null);
+    const extra = [
+      thinLossWarning(run.thinLost, cfg),
+      vaseFlatWarning(run.vaseFlat),
+      vaseSpeckWarning(run.vaseSpecks),
+      firstLayerWarning(run.firstLayerFilledMm2, cfg),
+    ].filter((w): w is string => w !== null);
     return { plan: run.plan, stats, warnings: extra.length ? [...model.warnings, ...extra] : model.warnings };
   }
 }
@@ -345,14 +434,19 @@ const THIN_LOSS_WARN_TOTAL_MM2 = 0.5;
 
 /** One line saying what was too thin to print, where and how much, or null when it is only specks. */
 export function thinLossWarning(lost: readonly ThinLoss[], cfg: Config): string | null {
-  let total = 0, most = 0;
+  let total = 0,
+    most = 0;
   for (const l of lost) {
     total += l.areaMm2;
     if (l.areaMm2 > most) most = l.areaMm2;
   }
   if (lost.length === 0 || (most < THIN_LOSS_WARN_LAYER_MM2 && total < THIN_LOSS_WARN_TOTAL_MM2)) return null;
-  const first = lost[0], last = lost[lost.length - 1];
-  const layers = lost.length === 1 ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)` : `${lost.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
+  const first = lost[0],
+    last = lost[lost.length - 1];
+  const layers =
+    lost.length === 1
+      ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)`
+      : `${lost.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
   const min = ((cfg.minFeatureSize / 100) * cfg.nozzleDiameter).toFixed(2);
   const why = cfg.wallGenerator === 'classic' ? 'thinner than a line' : `thinner than minFeatureSize (${min} mm)`;
   return `${total.toFixed(2)} mm² of the model's sections is too thin to print (${why}) and is left out, on ${layers}`;
@@ -367,8 +461,12 @@ export function firstLayerWarning(filledMm2: number, cfg: Config): string | null
 /** One line naming the spiral vase layers printed flat (not one wall loop), or null when every one turned. */
 export function vaseFlatWarning(flat: readonly VaseFlat[]): string | null {
   if (flat.length === 0) return null;
-  const first = flat[0], last = flat[flat.length - 1];
-  const where = flat.length === 1 ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)` : `${flat.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
+  const first = flat[0],
+    last = flat[flat.length - 1];
+  const where =
+    flat.length === 1
+      ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)`
+      : `${flat.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
   return `spiral vase: ${where} ${flat.length === 1 ? 'is' : 'are'} not one single wall loop (several islands, a hole, or a part too thin for a loop) and ${flat.length === 1 ? 'prints' : 'print'} flat, with a layer change; the spiral starts again above`;
 }
 
@@ -377,8 +475,12 @@ export function vaseSpeckWarning(specks: readonly ThinLoss[]): string | null {
   if (specks.length === 0) return null;
   let total = 0;
   for (const s of specks) total += s.areaMm2;
-  const first = specks[0], last = specks[specks.length - 1];
-  const where = specks.length === 1 ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)` : `${specks.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
+  const first = specks[0],
+    last = specks[specks.length - 1];
+  const where =
+    specks.length === 1
+      ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)`
+      : `${specks.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
   return `spiral vase: ${total.toFixed(2)} mm² of islands smaller than ${VASE_SPECK_MM2} mm² beside the main one ${specks.length === 1 ? 'is' : 'are'} left out on ${where}`;
 }
 

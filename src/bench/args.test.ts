@@ -6,16 +6,52 @@ test('defaults: one plain run gives the issue table (5 counted runs after a warm
   const o = parseBenchArgs([]);
   assert.deepEqual(o, defaultBenchOptions());
   assert.deepEqual(o, {
-    models: [], threads: null, repeat: 5, warmup: 1, json: false, timeoutSeconds: 600, modelsDir: null, strataCli: null,
-    peers: true, prusa: true, patterns: true, support: true, walls: true, threadScaling: true, big: true, keep: false, help: false,
+    models: [],
+    threads: null,
+    repeat: 5,
+    warmup: 1,
+    json: false,
+    timeoutSeconds: 600,
+    modelsDir: null,
+    strataCli: null,
+    peers: true,
+    prusa: true,
+    patterns: true,
+    support: true,
+    walls: true,
+    threadScaling: true,
+    big: true,
+    keep: false,
+    help: false,
   });
 });
 
 test('every flag, in both --flag value and --flag=value forms', () => {
   const o = parseBenchArgs([
-    '--models', 'benchy,cube', '--only=spot', '--models', ' bunny , ', '--threads', '2', '--repeat=7', '--warmup', '0', '--json',
-    '--timeout', '30.5', '--models-dir', '/m', '--strata-cli=/s.js', '--no-peers', '--no-prusa', '--no-patterns', '--no-support',
-    '--no-walls', '--no-thread-scaling', '--no-big', '--keep',
+    '--models',
+    'benchy,cube',
+    '--only=spot',
+    '--models',
+    ' bunny , ',
+    '--threads',
+    '2',
+    '--repeat=7',
+    '--warmup',
+    '0',
+    '--json',
+    '--timeout',
+    '30.5',
+    '--models-dir',
+    '/m',
+    '--strata-cli=/s.js',
+    '--no-peers',
+    '--no-prusa',
+    '--no-patterns',
+    '--no-support',
+    '--no-walls',
+    '--no-thread-scaling',
+    '--no-big',
+    '--keep',
   ]);
   assert.deepEqual(o.models, ['benchy', 'cube', 'spot', 'bunny']);
   assert.equal(o.threads, 2);
@@ -59,12 +95,23 @@ test('bad arguments name the flag', () => {
     [['--frobnicate'], /unknown argument "--frobnicate"; allowed: .*--no-big/],
     [['--json=yes'], /--json takes no value/],
   ] as const) {
-    assert.throws(() => parseBenchArgs(argv), (e: unknown) => e instanceof BenchArgsError && re.test(e.message), argv.join(' '));
+    assert.throws(
+      () => parseBenchArgs(argv),
+      (e: unknown) => e instanceof BenchArgsError && re.test(e.message),
+      argv.join(' '),
+    );
   }
 });
 
 test('selectModels: exact name or stem first, then substring', () => {
-  const names = ['3DBenchy.3mf', '3DBenchy.stl.gz', 'CalibrationCube.stl', 'HollowCalibrationCube.stl', 'spot.stl', '3DBenchy-x4.stl'];
+  const names = [
+    '3DBenchy.3mf',
+    '3DBenchy.stl.gz',
+    'CalibrationCube.stl',
+    'HollowCalibrationCube.stl',
+    'spot.stl',
+    '3DBenchy-x4.stl',
+  ];
   assert.deepEqual(selectModels(names, []), names);
   assert.deepEqual(selectModels(names, ['3dbenchy']), ['3DBenchy.3mf', '3DBenchy.stl.gz']);
   assert.deepEqual(selectModels(names, ['3DBenchy-x4']), ['3DBenchy-x4.stl']);

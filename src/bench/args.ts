@@ -78,11 +78,31 @@ export class BenchArgsError extends Error {
   override name = 'BenchArgsError';
 }
 
-const VALUE_FLAGS = ['--models', '--only', '--threads', '--repeat', '--warmup', '--timeout', '--models-dir', '--strata-cli'] as const;
+const VALUE_FLAGS = [
+  '--models',
+  '--only',
+  '--threads',
+  '--repeat',
+  '--warmup',
+  '--timeout',
+  '--models-dir',
+  '--strata-cli',
+] as const;
 type ValueFlag = (typeof VALUE_FLAGS)[number];
 const isValueFlag = (s: string): s is ValueFlag => (VALUE_FLAGS as readonly string[]).includes(s);
 
-const SWITCHES = ['--json', '--no-peers', '--no-prusa', '--no-patterns', '--no-support', '--no-walls', '--no-thread-scaling', '--no-big', '--keep', '--help'] as const;
+const SWITCHES = [
+  '--json',
+  '--no-peers',
+  '--no-prusa',
+  '--no-patterns',
+  '--no-support',
+  '--no-walls',
+  '--no-thread-scaling',
+  '--no-big',
+  '--keep',
+  '--help',
+] as const;
 
 function wholeNumber(flag: string, raw: string, min: number, max: number): number {
   const n = Number(raw);
@@ -94,7 +114,8 @@ function wholeNumber(flag: string, raw: string, min: number, max: number): numbe
 
 function positiveNumber(flag: string, raw: string): number {
   const n = Number(raw);
-  if (raw.trim() === '' || !Number.isFinite(n) || n <= 0) throw new BenchArgsError(`${flag} needs a positive number, got "${raw}"`);
+  if (raw.trim() === '' || !Number.isFinite(n) || n <= 0)
+    throw new BenchArgsError(`${flag} needs a positive number, got "${raw}"`);
   return n;
 }
 
@@ -139,7 +160,10 @@ export function parseBenchArgs(argv: readonly string[]): BenchOptions {
       switch (arg) {
         case '--models':
         case '--only': {
-          const names = value.split(',').map((s) => s.trim()).filter((s) => s !== '');
+          const names = value
+            .split(',')
+            .map((s) => s.trim())
+            .filter((s) => s !== '');
           if (names.length === 0) throw new BenchArgsError(`${arg} needs at least one model name`);
           options.models.push(...names);
           break;
@@ -199,7 +223,9 @@ export function parseBenchArgs(argv: readonly string[]): BenchOptions {
         options.help = true;
         break;
       default:
-        throw new BenchArgsError(`unknown argument "${arg}"; allowed: ${[...VALUE_FLAGS, ...SWITCHES, '-h'].join(', ')}`);
+        throw new BenchArgsError(
+          `unknown argument "${arg}"; allowed: ${[...VALUE_FLAGS, ...SWITCHES, '-h'].join(', ')}`,
+        );
     }
   }
   return options;

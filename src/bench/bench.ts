@@ -20,8 +20,23 @@ import { selectModels } from './args.js';
 import { runInterleaved, type Job } from './interleave.js';
 import { blockLoad, busyThreshold, loadMark, loadWarnings, startLoadWarning, type BlockLoad } from './load.js';
 import { detectMemoryMethod, measureCommand, type MemoryMethod } from './measure.js';
-import { BIG_MODEL, bigModelSource, defaultModelsDir, listModelFiles, prepareModels, type BenchModel } from './models.js';
-import { curaCommand, findCuraDefinitions, findOnPath, PEER_EXECUTABLES, peerReads, peerVersion, prusaCommand } from './peers.js';
+import {
+  BIG_MODEL,
+  bigModelSource,
+  defaultModelsDir,
+  listModelFiles,
+  prepareModels,
+  type BenchModel,
+} from './models.js';
+import {
+  curaCommand,
+  findCuraDefinitions,
+  findOnPath,
+  PEER_EXECUTABLES,
+  peerReads,
+  peerVersion,
+  prusaCommand,
+} from './peers.js';
 import { readSelfTimes } from './proc.js';
 import type { BenchReport, ModelRow, PatternRow, SlicerStats, SupportRow, ThreadScaling, WallsRow } from './report.js';
 import { notRun, pairedRatio, relativeToGrid, supportRow, triangleScaling, wallsRow } from './report.js';
@@ -41,7 +56,14 @@ export interface BenchContext {
 }
 
 /** Models the support section runs on, when selected. */
-export const SUPPORT_MODELS = Object.freeze(['SupportTest.stl', 'Overhang.stl', 'spot.stl', '3DBenchy.stl', 'BridgeTest.stl', 'HollowCalibrationCube.stl']);
+export const SUPPORT_MODELS = Object.freeze([
+  'SupportTest.stl',
+  'Overhang.stl',
+  'spot.stl',
+  '3DBenchy.stl',
+  'BridgeTest.stl',
+  'HollowCalibrationCube.stl',
+]);
 
 /**
  * The support section also runs this model scaled (X and Y twice, the same layers): four times the overhang
@@ -97,7 +119,9 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   const available = availableModels(listModelFiles(modelsDir), options.big);
   const names = selectModels(available, options.models);
   if (names.length === 0) {
-    throw new Error(`no model matches --models ${options.models.join(',')}; models in ${modelsDir}: ${available.join(', ') || 'none'}`);
+    throw new Error(
+      `no model matches --models ${options.models.join(',')}; models in ${modelsDir}: ${available.join(', ') || 'none'}`,
+    );
   }
   if (names.includes(BIG_MODEL)) ctx.log(`making ${BIG_MODEL} (3DBenchy, subdivided once) …`);
   const models = prepareModels(modelsDir, names, ctx.workDir);
@@ -117,7 +141,10 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   const curaDefs = curaExe ? findCuraDefinitions(env) : null;
   const prusaExe = options.peers && options.prusa ? findOnPath(PEER_EXECUTABLES.prusa, env) : null;
   const notes: string[] = [];
-  if (curaExe && !curaDefs) notes.push(`CuraEngine found at ${curaExe} but no fdmprinter.def.json (install Debian's \`cura\` package or set CURA_FDMPRINTER)`);
+  if (curaExe && !curaDefs)
+    notes.push(
+      `CuraEngine found at ${curaExe} but no fdmprinter.def.json (install Debian's \`cura\` package or set CURA_FDMPRINTER)`,
+    );
   const peers: BenchReport['peers'] = {
     cura: curaExe && curaDefs ? { path: curaExe, version: peerVersion('cura', curaExe), definitions: curaDefs } : null,
     prusa: prusaExe ? { path: prusaExe, version: peerVersion('prusa', prusaExe) } : null,
@@ -129,12 +156,21 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   if (startWarning) ctx.log(`WARNING: ${startWarning}`);
 
   const blocks: BlockLoad[] = [];
-  const block = async <K extends string>(label: string, jobs: Record<K, Job | SlicerStats>): Promise<Record<K, SlicerStats>> => {
+  const block = async <K extends string>(
+    label: string,
+    jobs: Record<K, Job | SlicerStats>,
+  ): Promise<Record<K, SlicerStats>> => {
     const mark = loadMark();
     const result = await runInterleaved(jobs, {
       repeat: options.repeat,
       warmup: options.warmup,
-      measure: (job) => measureCommand(job.command, job.args, { method: memoryMethod, timeoutMs, env, ...(ctx.signal ? { signal: ctx.signal } : {}) }),
+      measure: (job) =>
+        measureCommand(job.command, job.args, {
+          method: memoryMethod,
+          timeoutMs,
+          env,
+          ...(ctx.signal ? { signal: ctx.signal } : {}),
+        }),
       log: ctx.log,
       ...(ctx.signal ? { signal: ctx.signal } : {}),
     });
@@ -147,14 +183,18 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   const strataJob = (model: BenchModel, tag: string, extra: readonly string[]): Job | SlicerStats => {
     if (!strataBuilt) return notRun('missing', 'strata CLI not built');
     // without --threads, Strata picks its own default (what a user gets)
-    const threads = options.threads !== null && !extra.includes('--threads') ? ['--threads', String(options.threads)] : [];
+    const threads =
+      options.threads !== null && !extra.includes('--threads') ? ['--threads', String(options.threads)] : [];
     const args = [strataPath, 'slice', model.path, '-o', gcodePath(model, tag), ...threads, ...extra];
     return { label: ['Strata', ...extra].join(' '), command: process.execPath, args };
   };
   const curaJob = (model: BenchModel): Job | SlicerStats => {
     if (!curaExe || !curaDefs) return notRun('missing');
     if (!peerReads('cura', model.path)) return notRun('unsupported', 'CuraEngine reads STL only');
-    return { label: 'CuraEngine', ...curaCommand(curaExe, curaDefs, model.path, gcodePath(model, 'cura'), curaThreads) };
+    return {
+      label: 'CuraEngine',
+      ...curaCommand(curaExe, curaDefs, model.path, gcodePath(model, 'cura'), curaThreads),
+    };
   };
   const prusaJob = (model: BenchModel): Job | SlicerStats => {
     if (!prusaExe) return notRun('missing');
@@ -167,7 +207,11 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   for (const [index, model] of models.entries()) {
     if (aborted()) break;
     ctx.log(`[${index + 1}/${models.length}] ${model.name}`);
-    const r = await block(model.name, { strata: strataJob(model, 'strata', []), cura: curaJob(model), prusa: prusaJob(model) });
+    const r = await block(model.name, {
+      strata: strataJob(model, 'strata', []),
+      cura: curaJob(model),
+      prusa: prusaJob(model),
+    });
     rows.push({
       model: model.name,
       triangles: model.triangles,
@@ -188,7 +232,10 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   if (options.threadScaling && !aborted()) {
     if (benchy) {
       ctx.log(`threads on ${benchy.name}`);
-      const r = await block(`${benchy.name} threads`, { one: strataJob(benchy, 'threads-1', ['--threads', '1']), two: strataJob(benchy, 'threads-2', ['--threads', '2']) });
+      const r = await block(`${benchy.name} threads`, {
+        one: strataJob(benchy, 'threads-1', ['--threads', '1']),
+        two: strataJob(benchy, 'threads-2', ['--threads', '2']),
+      });
       const defaultRow = rows.find((row) => row.model === benchy.name);
       const allOk = r.one.status === 'ok' && r.two.status === 'ok' && defaultRow?.strata.status === 'ok';
       const hashes = allOk ? ['threads-1', 'threads-2', 'strata'].map((tag) => fileHash(gcodePath(benchy, tag))) : [];
@@ -208,7 +255,9 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   if (options.patterns && !aborted()) {
     if (benchy) {
       ctx.log(`infill patterns on ${benchy.name}`);
-      const jobs = Object.fromEntries(PATTERN_IDS.map((p) => [p, strataJob(benchy, `infill-${p}`, ['--infill-pattern', p])])) as Record<string, Job | SlicerStats>;
+      const jobs = Object.fromEntries(
+        PATTERN_IDS.map((p) => [p, strataJob(benchy, `infill-${p}`, ['--infill-pattern', p])]),
+      ) as Record<string, Job | SlicerStats>;
       const results = await block(`${benchy.name} patterns`, jobs);
       patterns = relativeToGrid(PATTERN_IDS.map((pattern) => ({ pattern, strata: results[pattern]! })));
     } else needsBenchy('infill-pattern section');
@@ -218,12 +267,21 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   const support: SupportRow[] = [];
   if (options.support && strataBuilt) {
     const supportModels = models.filter((m) => SUPPORT_MODELS.includes(m.name));
-    if (supportModels.length === 0) notes.push(`support section skipped: none of ${SUPPORT_MODELS.join(', ')} is among the selected models`);
+    if (supportModels.length === 0)
+      notes.push(`support section skipped: none of ${SUPPORT_MODELS.join(', ')} is among the selected models`);
     // each model as it is, and the one whose support outweighs the part most scaled up as well
     const cases = supportModels.flatMap((model) => {
       const plain = { model, name: model.name, extra: [] as string[], tag: '' };
       if (model.name !== SUPPORT_SCALED.model) return [plain];
-      return [plain, { model, name: `${model.name} --scale ${SUPPORT_SCALED.scale}`, extra: ['--scale', SUPPORT_SCALED.scale], tag: '-scaled' }];
+      return [
+        plain,
+        {
+          model,
+          name: `${model.name} --scale ${SUPPORT_SCALED.scale}`,
+          extra: ['--scale', SUPPORT_SCALED.scale],
+          tag: '-scaled',
+        },
+      ];
     });
     for (const { model, name, extra, tag } of cases) {
       if (aborted()) break;
@@ -241,7 +299,8 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
   const walls: WallsRow[] = [];
   if (options.walls && strataBuilt) {
     const picked = wallsModels(models);
-    if (picked.length === 0) notes.push(`walls section skipped: none of ${WALLS_MODELS.join(', ')} is among the selected models`);
+    if (picked.length === 0)
+      notes.push(`walls section skipped: none of ${WALLS_MODELS.join(', ')} is among the selected models`);
     for (const model of picked) {
       if (aborted()) break;
       ctx.log(`walls on ${model.name}`);
@@ -250,7 +309,9 @@ export async function runBench(options: BenchOptions, ctx: BenchContext): Promis
         variable: strataJob(model, 'walls-variable', ['--wall-generator', 'variable']),
         classic: strataJob(model, 'walls-classic', ['--wall-generator', 'classic']),
       });
-      walls.push(wallsRow(model.name, r.variable, r.classic, rows.find((row) => row.model === model.name)?.cura ?? null));
+      walls.push(
+        wallsRow(model.name, r.variable, r.classic, rows.find((row) => row.model === model.name)?.cura ?? null),
+      );
     }
   }
 

@@ -10,13 +10,23 @@ test('interleaveOrder: warm-up rounds first, then A B C A B C …', () => {
     order.map((r) => `${r.round}${r.key}${r.counted ? '' : '*'}`),
     ['1a*', '1b*', '1c*', '2a', '2b', '2c', '3a', '3b', '3c'],
   );
-  assert.deepEqual(interleaveOrder(['x'], 3, 0).map((r) => r.counted), [true, true, true]);
+  assert.deepEqual(
+    interleaveOrder(['x'], 3, 0).map((r) => r.counted),
+    [true, true, true],
+  );
   assert.deepEqual(interleaveOrder([], 5, 1), []);
 });
 
 const job = (label: string): Job => ({ label, command: 'slicer', args: [label] });
 const measurement = (wallSeconds: number, exitCode = 0): Measurement => ({
-  exitCode, signal: null, timedOut: false, spawnError: null, wallSeconds, cpuSeconds: wallSeconds * 2, peakMiB: 50, stderrTail: exitCode === 0 ? '' : 'boom\n',
+  exitCode,
+  signal: null,
+  timedOut: false,
+  spawnError: null,
+  wallSeconds,
+  cpuSeconds: wallSeconds * 2,
+  peakMiB: 50,
+  stderrTail: exitCode === 0 ? '' : 'boom\n',
 });
 
 test('runInterleaved: runs in interleaved order, leaves the warm-up out of the figures, keeps round order', async () => {
@@ -35,8 +45,15 @@ test('runInterleaved: runs in interleaved order, leaves the warm-up out of the f
     },
   );
   assert.deepEqual(calls, ['S', 'C', 'S', 'C', 'S', 'C', 'S', 'C']);
-  assert.deepEqual(result.strata.runs.map((r) => r.wallSeconds), [3, 5, 7], 'warm-up (t = 1) not counted');
-  assert.deepEqual(result.cura.runs.map((r) => r.wallSeconds), [104, 106, 108]);
+  assert.deepEqual(
+    result.strata.runs.map((r) => r.wallSeconds),
+    [3, 5, 7],
+    'warm-up (t = 1) not counted',
+  );
+  assert.deepEqual(
+    result.cura.runs.map((r) => r.wallSeconds),
+    [104, 106, 108],
+  );
   assert.equal(result.strata.wallSeconds, 5);
   assert.equal(result.strata.cpuSeconds, 10);
   assert.equal(result.prusa.status, 'missing', 'a non-job is passed through');
@@ -63,7 +80,10 @@ test('runInterleaved: a failing job is dropped from later rounds and reported fa
 });
 
 test('runInterleaved: a failure in the warm-up counts as a failure', async () => {
-  const result = await runInterleaved({ a: job('A') }, { repeat: 2, warmup: 1, measure: async () => measurement(1, 3) });
+  const result = await runInterleaved(
+    { a: job('A') },
+    { repeat: 2, warmup: 1, measure: async () => measurement(1, 3) },
+  );
   assert.equal(result.a.status, 'failed');
 });
 

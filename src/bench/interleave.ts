@@ -47,7 +47,10 @@ const failed = (m: Measurement) => m.spawnError !== null || m.timedOut || m.exit
  * warm-up round) is dropped from the later rounds and reported failed; an entry that is already a SlicerStats
  * (missing, unsupported) is passed through. Aborting stops before the next run.
  */
-export async function runInterleaved<K extends string>(jobs: Record<K, Job | SlicerStats>, options: InterleaveOptions): Promise<Record<K, SlicerStats>> {
+export async function runInterleaved<K extends string>(
+  jobs: Record<K, Job | SlicerStats>,
+  options: InterleaveOptions,
+): Promise<Record<K, SlicerStats>> {
   const keys = (Object.keys(jobs) as K[]).filter((k) => isJob(jobs[k]));
   const runs = new Map<K, Measurement[]>(keys.map((k) => [k, []]));
   const dropped = new Set<K>();
@@ -59,7 +62,9 @@ export async function runInterleaved<K extends string>(jobs: Record<K, Job | Sli
     const bad = failed(m);
     if (step.counted || bad) runs.get(step.key)!.push(m);
     if (bad) dropped.add(step.key);
-    const what = step.counted ? `run ${step.round - options.warmup}/${options.repeat}` : `warm-up ${step.round}/${options.warmup}`;
+    const what = step.counted
+      ? `run ${step.round - options.warmup}/${options.repeat}`
+      : `warm-up ${step.round}/${options.warmup}`;
     const cpu = m.cpuSeconds === null ? '' : `, ${m.cpuSeconds.toFixed(2)} s CPU`;
     const peak = m.peakMiB === null ? '' : `, ${m.peakMiB.toFixed(0)} MiB`;
     options.log?.(`  ${job.label} ${what}: ${m.wallSeconds.toFixed(2)} s wall${cpu}${peak}${bad ? ' (failed)' : ''}`);

@@ -1,6 +1,15 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { busyThreshold, foreignShare, loadWarnings, overallForeignShare, startLoadWarning, type BlockLoad, type LoadMark, type LoadReport } from './load.js';
+import {
+  busyThreshold,
+  foreignShare,
+  loadWarnings,
+  overallForeignShare,
+  startLoadWarning,
+  type BlockLoad,
+  type LoadMark,
+  type LoadReport,
+} from './load.js';
 
 const mark = (atMs: number, busy: number, own: number): LoadMark => ({
   at: atMs,
@@ -27,7 +36,12 @@ test('foreignShare: machine busy ticks minus our own, over time × cores', () =>
   assert.equal(foreignShare(mark(0, 0, 0), mark(0, 10, 0), 2, 100), null, 'no time elapsed');
 });
 
-const block = (label: string, foreignShare: number | null, loadAverage = 1.5, seconds = 10): BlockLoad => ({ label, seconds, loadAverage, foreignShare });
+const block = (label: string, foreignShare: number | null, loadAverage = 1.5, seconds = 10): BlockLoad => ({
+  label,
+  seconds,
+  loadAverage,
+  foreignShare,
+});
 const report = (before: number, blocks: BlockLoad[]): LoadReport => ({ cpus: 2, busyAbove: 0.7, before, blocks });
 
 test('loadWarnings: quiet machine, busy start, disturbed blocks, no /proc', () => {
@@ -38,7 +52,10 @@ test('loadWarnings: quiet machine, busy start, disturbed blocks, no /proc', () =
   assert.match(busyStart[0]!, /load average 2\.50 before the start/);
   const disturbed = loadWarnings(report(0.1, [block('cube', 0.05), block('spot', 0.4), block('bunny', 0.2)]));
   assert.equal(disturbed.length, 1);
-  assert.match(disturbed[0]!, /other processes used more than 10 % of the CPU while measuring \(spot 40 %, bunny 20 %; worst spot\)/);
+  assert.match(
+    disturbed[0]!,
+    /other processes used more than 10 % of the CPU while measuring \(spot 40 %, bunny 20 %; worst spot\)/,
+  );
   assert.doesNotMatch(disturbed[0]!, /cube/);
   // without /proc, the load average decides: above cores + threshold
   assert.deepEqual(loadWarnings(report(0.1, [block('a', null, 2.6)])), []);
@@ -46,6 +63,8 @@ test('loadWarnings: quiet machine, busy start, disturbed blocks, no /proc', () =
 });
 
 test('overallForeignShare weights blocks by their time', () => {
-  assert.ok(Math.abs(overallForeignShare([block('a', 0.1, 1, 30), block('b', 0.5, 1, 10), block('c', null)])! - 0.2) < 1e-12);
+  assert.ok(
+    Math.abs(overallForeignShare([block('a', 0.1, 1, 30), block('b', 0.5, 1, 10), block('c', null)])! - 0.2) < 1e-12,
+  );
   assert.equal(overallForeignShare([block('a', null)]), null);
 });

@@ -68,14 +68,20 @@ export function foreignShare(from: LoadMark, to: LoadMark, cpus: number, hz: num
 /** Closes a block begun at `from`. */
 export function blockLoad(label: string, from: LoadMark, cpus: number): BlockLoad {
   const to = loadMark();
-  return { label, seconds: (to.at - from.at) / 1000, loadAverage: loadavg()[0]!, foreignShare: foreignShare(from, to, cpus, clockTicksPerSecond()) };
+  return {
+    label,
+    seconds: (to.at - from.at) / 1000,
+    loadAverage: loadavg()[0]!,
+    foreignShare: foreignShare(from, to, cpus, clockTicksPerSecond()),
+  };
 }
 
 export function busyThreshold(cpus: number): number {
   return IDLE_LOAD_PER_CORE * Math.max(1, cpus);
 }
 
-const WHY = "CuraEngine spreads its work over every core, so a loaded machine slows it more than Strata and the ratios flatter Strata: measure again on an idle machine";
+const WHY =
+  'CuraEngine spreads its work over every core, so a loaded machine slows it more than Strata and the ratios flatter Strata: measure again on an idle machine';
 
 /** The warning for the load average before the start, or null when the machine was quiet. */
 export function startLoadWarning(before: number, cpus: number): string | null {
@@ -93,13 +99,17 @@ export function loadWarnings(load: LoadReport): string[] {
   if (busy.length > 0) {
     const worst = busy.reduce((a, b) => (b.foreignShare! > a.foreignShare! ? b : a));
     const names = busy.map((b) => `${b.label} ${(b.foreignShare! * 100).toFixed(0)} %`).join(', ');
-    out.push(`other processes used more than ${(FOREIGN_CPU_MAX_SHARE * 100).toFixed(0)} % of the CPU while measuring (${names}; worst ${worst.label}): those figures are disturbed${start ? '' : `; ${WHY}`}`);
+    out.push(
+      `other processes used more than ${(FOREIGN_CPU_MAX_SHARE * 100).toFixed(0)} % of the CPU while measuring (${names}; worst ${worst.label}): those figures are disturbed${start ? '' : `; ${WHY}`}`,
+    );
   }
   // Without /proc, fall back on the load average: above what our own slicer (at most one per core) explains.
   const blind = load.blocks.filter((b) => b.foreignShare === null && b.loadAverage > load.cpus + load.busyAbove);
   if (blind.length > 0) {
     const worst = Math.max(...blind.map((b) => b.loadAverage));
-    out.push(`the load average rose to ${worst.toFixed(2)} during the run, more than our own slicer explains on ${load.cpus} cores (${blind.map((b) => b.label).join(', ')})`);
+    out.push(
+      `the load average rose to ${worst.toFixed(2)} during the run, more than our own slicer explains on ${load.cpus} cores (${blind.map((b) => b.label).join(', ')})`,
+    );
   }
   return out;
 }

@@ -1,6 +1,13 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { detectMemoryMethod, failureReason, measureCommand, parseGnuTimeOutput, parseVmHwm, type MemoryMethod } from './measure.js';
+import {
+  detectMemoryMethod,
+  failureReason,
+  measureCommand,
+  parseGnuTimeOutput,
+  parseVmHwm,
+  type MemoryMethod,
+} from './measure.js';
 
 test('parseGnuTimeOutput: last line is KiB, earlier status lines ignored', () => {
   assert.equal(parseGnuTimeOutput('61440\n'), 60);
@@ -14,11 +21,14 @@ test('parseVmHwm reads the kernel high-water mark', () => {
   assert.equal(parseVmHwm('Name:\tzombie\nState:\tZ\n'), null);
 });
 
-const methods: MemoryMethod[] = [...new Set<MemoryMethod>([detectMemoryMethod(), 'proc-poll'])].filter((m) => m !== 'proc-poll' || process.platform === 'linux');
+const methods: MemoryMethod[] = [...new Set<MemoryMethod>([detectMemoryMethod(), 'proc-poll'])].filter(
+  (m) => m !== 'proc-poll' || process.platform === 'linux',
+);
 
 for (const method of methods) {
   test(`measureCommand (${method}): wall time and a peak that sees a 64 MiB allocation`, async () => {
-    const script = 'const b = Buffer.alloc(64 * 1024 * 1024, 1); setTimeout(() => process.exit(b[0] === 1 ? 0 : 1), 60);';
+    const script =
+      'const b = Buffer.alloc(64 * 1024 * 1024, 1); setTimeout(() => process.exit(b[0] === 1 ? 0 : 1), 60);';
     const m = await measureCommand(process.execPath, ['-e', script], { method, timeoutMs: 20_000 });
     assert.equal(failureReason(m), '');
     assert.equal(m.exitCode, 0);
@@ -28,9 +38,12 @@ for (const method of methods) {
 }
 
 /** A node script that spends `ms` of its own CPU time (by its own clock, so the machine's load does not matter). */
-const burn = (ms: number) => `const t0 = process.cpuUsage(); for (;;) { const u = process.cpuUsage(t0); if (u.user + u.system >= ${ms * 1000}) break; }`;
+const burn = (ms: number) =>
+  `const t0 = process.cpuUsage(); for (;;) { const u = process.cpuUsage(t0); if (u.user + u.system >= ${ms * 1000}) break; }`;
 
-test('measureCommand: CPU time from the kernel covers the process, its threads and its waited-for children', { skip: process.platform !== 'linux' && 'CPU accounting reads /proc' }, async () => {
+test('measureCommand: CPU time from the kernel covers the process, its threads and its waited-for children', {
+  skip: process.platform !== 'linux' && 'CPU accounting reads /proc',
+}, async () => {
   // main thread 200 ms, two worker threads 200 ms each, a child process 200 ms: at least 0.8 s in all. One at a
   // time: process.cpuUsage in a worker counts the whole process, so two burning at once would each stop early
   const script = `
@@ -48,18 +61,30 @@ test('measureCommand: CPU time from the kernel covers the process, its threads a
   assert.equal(failureReason(m), '');
   assert.ok(m.cpuSeconds !== null && m.cpuSeconds >= 0.78, `cpu ${m.cpuSeconds}`);
   // and a child that sleeps uses next to none
-  const idle = await measureCommand(process.execPath, ['-e', 'setTimeout(() => {}, 300)'], { method: 'none', timeoutMs: 60_000 });
-  assert.ok(idle.cpuSeconds !== null && idle.cpuSeconds < 0.25 && idle.cpuSeconds < m.cpuSeconds / 3, `idle cpu ${idle.cpuSeconds}`);
+  const idle = await measureCommand(process.execPath, ['-e', 'setTimeout(() => {}, 300)'], {
+    method: 'none',
+    timeoutMs: 60_000,
+  });
+  assert.ok(
+    idle.cpuSeconds !== null && idle.cpuSeconds < 0.25 && idle.cpuSeconds < m.cpuSeconds / 3,
+    `idle cpu ${idle.cpuSeconds}`,
+  );
 });
 
 test('measureCommand reports a failing command with its last stderr line', async () => {
-  const m = await measureCommand(process.execPath, ['-e', 'console.error("bad model"); process.exit(3)'], { method: detectMemoryMethod(), timeoutMs: 20_000 });
+  const m = await measureCommand(process.execPath, ['-e', 'console.error("bad model"); process.exit(3)'], {
+    method: detectMemoryMethod(),
+    timeoutMs: 20_000,
+  });
   assert.equal(m.exitCode, 3);
   assert.equal(failureReason(m), 'exit code 3: bad model');
 });
 
 test('measureCommand kills a command that runs past its timeout', async () => {
-  const m = await measureCommand(process.execPath, ['-e', 'setTimeout(() => {}, 60000)'], { method: detectMemoryMethod(), timeoutMs: 300 });
+  const m = await measureCommand(process.execPath, ['-e', 'setTimeout(() => {}, 60000)'], {
+    method: detectMemoryMethod(),
+    timeoutMs: 300,
+  });
   assert.equal(m.timedOut, true);
   assert.ok(m.wallSeconds < 10);
   assert.match(failureReason(m), /^timed out/);

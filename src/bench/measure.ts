@@ -80,7 +80,10 @@ export function detectMemoryMethod(): MemoryMethod {
  * "Command exited with non-zero status 1" may come before it). Returns MiB, or null when unreadable.
  */
 export function parseGnuTimeOutput(text: string): number | null {
-  const lines = text.split('\n').map((l) => l.trim()).filter((l) => l !== '');
+  const lines = text
+    .split('\n')
+    .map((l) => l.trim())
+    .filter((l) => l !== '');
   const last = lines[lines.length - 1];
   if (last === undefined || !/^\d+$/.test(last)) return null;
   return Number(last) / 1024;
@@ -101,7 +104,11 @@ function readVmHwm(pid: number): number | null {
 }
 
 /** Runs `command args`, never rejects: failures come back in the Measurement. */
-export function measureCommand(command: string, args: readonly string[], options: MeasureOptions): Promise<Measurement> {
+export function measureCommand(
+  command: string,
+  args: readonly string[],
+  options: MeasureOptions,
+): Promise<Measurement> {
   const timeFile = options.method === 'gnu-time' ? join(tmpdir(), `strata-bench-time-${randomUUID()}`) : null;
   const [file, argv] = timeFile ? [GNU_TIME, ['-f', '%M', '-o', timeFile, command, ...args]] : [command, [...args]];
 
@@ -154,7 +161,10 @@ export function measureCommand(command: string, args: readonly string[], options
       const wallSeconds = (performance.now() - start) / 1000;
       // the child has been reaped by now ('close' comes after 'exit'), so its times are in our cutime/cstime
       const after = readSelfTimes();
-      const cpuSeconds = before && after && child.pid !== undefined ? (after.cutime + after.cstime - before.cutime - before.cstime) / hz : null;
+      const cpuSeconds =
+        before && after && child.pid !== undefined
+          ? (after.cutime + after.cstime - before.cutime - before.cstime) / hz
+          : null;
       clearTimeout(timer);
       if (poller) clearInterval(poller);
       options.signal?.removeEventListener('abort', onAbort);

@@ -94,11 +94,20 @@ export function prepareModels(dir: string, names: readonly string[], workDir: st
   return names.map((file) => {
     if (file === BIG_MODEL && !existsSync(join(dir, file))) {
       const source = bigModelSource(listModelFiles(dir));
-      if (!source) throw new Error(`${BIG_MODEL} is made from ${BIG_MODEL_SOURCES.join(' or ')}, and ${dir} has neither`);
-      const big = subdivideBinaryStl(readModel(dir, source), `${source.replace(/\.gz$/i, '')} after one round of midpoint subdivision`);
+      if (!source)
+        throw new Error(`${BIG_MODEL} is made from ${BIG_MODEL_SOURCES.join(' or ')}, and ${dir} has neither`);
+      const big = subdivideBinaryStl(
+        readModel(dir, source),
+        `${source.replace(/\.gz$/i, '')} after one round of midpoint subdivision`,
+      );
       const path = join(workDir, BIG_MODEL);
       writeFileSync(path, big);
-      return { name: BIG_MODEL, path, triangles: countTriangles(BIG_MODEL, big), madeFrom: `${source.replace(/\.gz$/i, '')}, each triangle split into 4 at its edge midpoints` };
+      return {
+        name: BIG_MODEL,
+        path,
+        triangles: countTriangles(BIG_MODEL, big),
+        madeFrom: `${source.replace(/\.gz$/i, '')}, each triangle split into 4 at its edge midpoints`,
+      };
     }
     const bytes: Uint8Array = readFileSync(join(dir, file));
     if (file.toLowerCase().endsWith('.gz')) {

@@ -6,7 +6,13 @@ import { join } from 'node:path';
 import { curaCommand, findOnPath, peerReads, prusaCommand } from './peers.js';
 
 test('CuraEngine command: threads, definitions, global then extruder settings, model, output', () => {
-  const { command, args } = curaCommand('/usr/bin/CuraEngine', '/defs/fdmprinter.def.json', '/m/cube.stl', '/o/cube.gcode', 2);
+  const { command, args } = curaCommand(
+    '/usr/bin/CuraEngine',
+    '/defs/fdmprinter.def.json',
+    '/m/cube.stl',
+    '/o/cube.gcode',
+    2,
+  );
   assert.equal(command, '/usr/bin/CuraEngine');
   assert.deepEqual(args.slice(0, 4), ['slice', '-m2', '-j', '/defs/fdmprinter.def.json']);
   assert.deepEqual(args.slice(-4), ['-l', '/m/cube.stl', '-o', '/o/cube.gcode']);
@@ -14,7 +20,15 @@ test('CuraEngine command: threads, definitions, global then extruder settings, m
   const e0 = args.indexOf('-e0');
   assert.ok(e0 > 0);
   const global = settings(0, e0);
-  for (const s of ['layer_height=0.2', 'wall_line_count=2', 'top_bottom_thickness=0.8', 'infill_sparse_density=20', 'infill_pattern=grid', 'machine_nozzle_size=0.4', 'machine_width=220']) {
+  for (const s of [
+    'layer_height=0.2',
+    'wall_line_count=2',
+    'top_bottom_thickness=0.8',
+    'infill_sparse_density=20',
+    'infill_pattern=grid',
+    'machine_nozzle_size=0.4',
+    'machine_width=220',
+  ]) {
     assert.ok(global.includes(s), s);
   }
   assert.ok(settings(e0, args.length).includes('material_diameter=1.75'), 'extruder train gets 1.75 mm filament too');

@@ -16,7 +16,9 @@ test('parseMachineTicks: busy is user + nice + system + irq + softirq + steal; g
   assert.equal(parseMachineTicks('intr 1 2\n'), null);
 });
 
-test('on Linux the readers work and the counters only grow', { skip: process.platform !== 'linux' && 'not Linux' }, () => {
+test('on Linux the readers work and the counters only grow', {
+  skip: process.platform !== 'linux' && 'not Linux',
+}, () => {
   const a = readSelfTimes();
   const m = readMachineTicks();
   assert.ok(a && m);

@@ -32,7 +32,10 @@ export function parseProcStat(text: string): ProcTimes | null {
   const close = text.lastIndexOf(')');
   if (close < 0) return null;
   // after ")" come field 3 (state) onwards; utime is field 14 → index 11
-  const f = text.slice(close + 1).trim().split(/\s+/);
+  const f = text
+    .slice(close + 1)
+    .trim()
+    .split(/\s+/);
   const nums = [f[11], f[12], f[13], f[14]].map((s) => (s !== undefined && /^\d+$/.test(s) ? Number(s) : NaN));
   if (nums.some((n) => !Number.isFinite(n))) return null;
   const [utime, stime, cutime, cstime] = nums as [number, number, number, number];

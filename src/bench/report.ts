@@ -6,7 +6,15 @@ import type { LoadReport } from './load.js';
 import { FOREIGN_CPU_MAX_SHARE, overallForeignShare } from './load.js';
 import type { MemoryMethod, Measurement } from './measure.js';
 import { failureReason } from './measure.js';
-import { formatMiB, formatRatio, formatSeconds, formatTriangles, markdownTable, median, medianOfRatios } from './stats.js';
+import {
+  formatMiB,
+  formatRatio,
+  formatSeconds,
+  formatTriangles,
+  markdownTable,
+  median,
+  medianOfRatios,
+} from './stats.js';
 import type { TargetRow } from './targets.js';
 
 /**
@@ -150,9 +158,21 @@ export function notRun(status: Exclude<RunStatus, 'ok' | 'failed' | 'timeout'>, 
 
 /** Folds the measurements of repeated runs into medians; the first failure decides a failed status. */
 export function summarize(runs: readonly Measurement[]): SlicerStats {
-  const figures: RunFigures[] = runs.map((r) => ({ wallSeconds: r.wallSeconds, cpuSeconds: r.cpuSeconds, peakMiB: r.peakMiB }));
+  const figures: RunFigures[] = runs.map((r) => ({
+    wallSeconds: r.wallSeconds,
+    cpuSeconds: r.cpuSeconds,
+    peakMiB: r.peakMiB,
+  }));
   const bad = runs.find((r) => failureReason(r) !== '');
-  if (bad) return { status: bad.timedOut ? 'timeout' : 'failed', wallSeconds: null, cpuSeconds: null, peakMiB: null, runs: figures, message: failureReason(bad) };
+  if (bad)
+    return {
+      status: bad.timedOut ? 'timeout' : 'failed',
+      wallSeconds: null,
+      cpuSeconds: null,
+      peakMiB: null,
+      runs: figures,
+      message: failureReason(bad),
+    };
   if (runs.length === 0) return notRun('skipped');
   const all = (xs: (number | null)[]) => (xs.every((x) => x !== null) ? median(xs as number[]) : null);
   return {
@@ -204,7 +224,12 @@ export function ratioOfMedians(a: SlicerStats, b: SlicerStats, figure: 'wallSeco
 }
 
 /** A walls row from the two interleaved runs and CuraEngine's figures on the model (null: none). */
-export function wallsRow(model: string, variable: SlicerStats, classic: SlicerStats, cura: SlicerStats | null): WallsRow {
+export function wallsRow(
+  model: string,
+  variable: SlicerStats,
+  classic: SlicerStats,
+  cura: SlicerStats | null,
+): WallsRow {
   return {
     model,
     variable,
@@ -223,7 +248,12 @@ export function triangleScaling(models: readonly ModelRow[], small: string, big:
   const b = models.find((m) => m.model === big);
   const side = (m: ModelRow | undefined) =>
     m && m.triangles && m.strata.status === 'ok' && m.strata.wallSeconds !== null
-      ? { model: m.model, triangles: m.triangles, wallSeconds: m.strata.wallSeconds, microsPerTriangle: (m.strata.wallSeconds * 1e6) / m.triangles }
+      ? {
+          model: m.model,
+          triangles: m.triangles,
+          wallSeconds: m.strata.wallSeconds,
+          microsPerTriangle: (m.strata.wallSeconds * 1e6) / m.triangles,
+        }
       : null;
   const a = side(s);
   const c = side(b);
@@ -281,7 +311,8 @@ function failureNotes(report: BenchReport): string[] {
     add('Strata --threads 1', t.model, t.one);
     add('Strata --threads 2', t.model, t.two);
   }
-  for (const row of report.patterns) add(`Strata --infill-pattern ${row.pattern}`, report.patternModel ?? '', row.strata);
+  for (const row of report.patterns)
+    add(`Strata --infill-pattern ${row.pattern}`, report.patternModel ?? '', row.strata);
   for (const row of report.support) {
     add('Strata (no support)', row.model, row.none);
     add('Strata --support-type normal', row.model, row.normal);
@@ -301,25 +332,42 @@ function header(report: BenchReport): string[] {
   if (report.warnings.length > 0) out.push('');
   const m = report.machine;
   const rounds = `${report.repeat} counted run${report.repeat === 1 ? '' : 's'} per slicer${report.warmup > 0 ? ` after ${report.warmup} warm-up round${report.warmup === 1 ? '' : 's'}` : ', no warm-up'}`;
-  out.push(`Strata benchmark, ${report.startedAt}: ${rounds}, interleaved (A B C A B C …); figures are medians, ratios medians of the per-round ratios.`);
+  out.push(
+    `Strata benchmark, ${report.startedAt}: ${rounds}, interleaved (A B C A B C …); figures are medians, ratios medians of the per-round ratios.`,
+  );
   out.push(`- machine: ${m.cpus} × ${m.cpuModel}, node ${m.node}, ${m.platform}`);
   const l = report.load;
   const foreign = overallForeignShare(l.blocks);
-  const worst = l.blocks.filter((b) => b.foreignShare !== null).reduce<(typeof l.blocks)[number] | null>((a, b) => (a === null || b.foreignShare! > a.foreignShare! ? b : a), null);
+  const worst = l.blocks
+    .filter((b) => b.foreignShare !== null)
+    .reduce<(typeof l.blocks)[number] | null>(
+      (a, b) => (a === null || b.foreignShare! > a.foreignShare! ? b : a),
+      null,
+    );
   const during =
     foreign === null
       ? `load average up to ${Math.max(0, ...l.blocks.map((b) => b.loadAverage)).toFixed(2)} during the runs (our own slicers included)`
       : `other processes took ${(foreign * 100).toFixed(0)} % of the CPU during the runs${worst ? ` (most: ${(worst.foreignShare! * 100).toFixed(0)} % during ${worst.label})` : ''}, flagged above ${(FOREIGN_CPU_MAX_SHARE * 100).toFixed(0)} %`;
-  out.push(`- load: 1-minute load average ${l.before.toFixed(2)} before the start (${l.before > l.busyAbove ? 'BUSY' : 'idle'}: busy above ${l.busyAbove.toFixed(2)} on ${l.cpus} cores); ${during}`);
+  out.push(
+    `- load: 1-minute load average ${l.before.toFixed(2)} before the start (${l.before > l.busyAbove ? 'BUSY' : 'idle'}: busy above ${l.busyAbove.toFixed(2)} on ${l.cpus} cores); ${during}`,
+  );
   out.push(
     report.strataCli.built
       ? `- Strata: node ${report.strataCli.path} slice, default settings, ${report.threads === null ? 'default threads' : `--threads ${report.threads}`}`
       : `- Strata: not built: ${report.strataCli.path} is missing (run \`npm run build\`); Strata columns are empty`,
   );
   const cura = report.peers.cura;
-  out.push(cura ? `- CuraEngine: ${cura.path} (${cura.version ?? 'version unknown'}), -m${report.curaThreads}, ${cura.definitions}, the common profile` : '- CuraEngine: not run (not on PATH, no fdmprinter.def.json, or --no-peers)');
+  out.push(
+    cura
+      ? `- CuraEngine: ${cura.path} (${cura.version ?? 'version unknown'}), -m${report.curaThreads}, ${cura.definitions}, the common profile`
+      : '- CuraEngine: not run (not on PATH, no fdmprinter.def.json, or --no-peers)',
+  );
   const prusa = report.peers.prusa;
-  out.push(prusa ? `- PrusaSlicer: ${prusa.path} (${prusa.version ?? 'version unknown'}), the common profile` : '- PrusaSlicer: not run (not on PATH, --no-prusa or --no-peers)');
+  out.push(
+    prusa
+      ? `- PrusaSlicer: ${prusa.path} (${prusa.version ?? 'version unknown'}), the common profile`
+      : '- PrusaSlicer: not run (not on PATH, --no-prusa or --no-peers)',
+  );
   out.push(
     `- wall = spawn to exit (Strata's includes node's start); ${report.cpuMeasured ? "CPU = user + system of the process and all its threads and waited-for children, from the kernel's accounting (/proc/self/stat cutime + cstime around each run, to 10 ms)" : 'CPU not measurable on this platform'}; ${MEMORY_METHOD_TEXT[report.memoryMethod]}`,
   );
@@ -333,7 +381,14 @@ export function renderReport(report: BenchReport): string {
   out.push('', '### Models (wall / CPU / peak)', '');
   out.push(
     markdownTable(
-      ['model', 'Strata wall / CPU / peak', 'CuraEngine wall / CPU / peak', 'wall ratio', 'CPU ratio', 'PrusaSlicer wall'],
+      [
+        'model',
+        'Strata wall / CPU / peak',
+        'CuraEngine wall / CPU / peak',
+        'wall ratio',
+        'CPU ratio',
+        'PrusaSlicer wall',
+      ],
       report.models.map((r) => [
         `${r.model} (${formatTriangles(r.triangles)})`,
         report.strataCli.built || r.strata.status !== 'missing' ? figuresCell(r.strata) : 'not built',
@@ -366,7 +421,10 @@ export function renderReport(report: BenchReport): string {
         ],
       ),
     );
-    out.push('', `G-code of 1 thread, 2 threads and the default: ${t.gcodeIdentical === null ? 'not compared (a run failed)' : t.gcodeIdentical ? 'byte-identical' : 'DIFFERENT'}.`);
+    out.push(
+      '',
+      `G-code of 1 thread, 2 threads and the default: ${t.gcodeIdentical === null ? 'not compared (a run failed)' : t.gcodeIdentical ? 'byte-identical' : 'DIFFERENT'}.`,
+    );
   }
 
   if (report.patternModel !== null && report.patterns.length > 0) {
@@ -374,7 +432,12 @@ export function renderReport(report: BenchReport): string {
     out.push(
       markdownTable(
         ['pattern', 'Strata wall / CPU / peak', 'wall vs grid', 'CPU vs grid'],
-        report.patterns.map((r) => [r.pattern, figuresCell(r.strata), formatRatio(r.relativeToGrid), formatRatio(r.cpuRelativeToGrid)]),
+        report.patterns.map((r) => [
+          r.pattern,
+          figuresCell(r.strata),
+          formatRatio(r.relativeToGrid),
+          formatRatio(r.cpuRelativeToGrid),
+        ]),
       ),
     );
   }
@@ -399,16 +462,31 @@ export function renderReport(report: BenchReport): string {
   if (report.walls.length > 0) {
     // CuraEngine's columns only when it ran on one of these models (not with --no-peers or without CuraEngine)
     const withCura = report.walls.some((r) => r.cura !== null && r.cura.status !== 'missing');
-    out.push('', `### Walls (--wall-generator variable against classic${withCura ? ', and against CuraEngine' : ''}; wall / CPU)`, '');
+    out.push(
+      '',
+      `### Walls (--wall-generator variable against classic${withCura ? ', and against CuraEngine' : ''}; wall / CPU)`,
+      '',
+    );
     out.push(
       markdownTable(
-        ['model', 'variable', 'classic', 'variable vs classic', ...(withCura ? ['CuraEngine', 'variable vs CuraEngine'] : [])],
+        [
+          'model',
+          'variable',
+          'classic',
+          'variable vs classic',
+          ...(withCura ? ['CuraEngine', 'variable vs CuraEngine'] : []),
+        ],
         report.walls.map((r) => [
           r.model,
           wallCpuCell(r.variable),
           wallCpuCell(r.classic),
           `${formatRatio(r.wallRatio)} / ${formatRatio(r.cpuRatio)}`,
-          ...(withCura ? [r.cura ? wallCpuCell(r.cura) : 'not run', `${formatRatio(r.curaWallRatio)} / ${formatRatio(r.curaCpuRatio)}`] : []),
+          ...(withCura
+            ? [
+                r.cura ? wallCpuCell(r.cura) : 'not run',
+                `${formatRatio(r.curaWallRatio)} / ${formatRatio(r.curaCpuRatio)}`,
+              ]
+            : []),
         ]),
       ),
     );
@@ -423,14 +501,22 @@ export function renderReport(report: BenchReport): string {
     out.push(
       markdownTable(
         ['figure', 'target', 'measured', ''],
-        report.targets.map((r) => [r.figure, r.target, r.measured, r.verdict === 'pass' ? '✓' : r.verdict === 'fail' ? '✗' : '–']),
+        report.targets.map((r) => [
+          r.figure,
+          r.target,
+          r.measured,
+          r.verdict === 'pass' ? '✓' : r.verdict === 'fail' ? '✗' : '–',
+        ]),
         ['left', 'left', 'left', 'left'],
       ),
     );
     const pass = report.targets.filter((r) => r.verdict === 'pass').length;
     const fail = report.targets.filter((r) => r.verdict === 'fail').length;
     const open = report.targets.length - pass - fail;
-    out.push('', `${pass} of ${report.targets.length} targets met, ${fail} missed${open > 0 ? `, ${open} not measured` : ''}${report.warnings.length > 0 ? ' (on a busy machine: see the warning above)' : ''}.`);
+    out.push(
+      '',
+      `${pass} of ${report.targets.length} targets met, ${fail} missed${open > 0 ? `, ${open} not measured` : ''}${report.warnings.length > 0 ? ' (on a busy machine: see the warning above)' : ''}.`,
+    );
   }
 
   const notes = [...report.notes, ...failureNotes(report)];

@@ -1,6 +1,14 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { formatMiB, formatRatio, formatSeconds, formatTriangles, markdownTable, median, medianOfRatios } from './stats.js';
+import {
+  formatMiB,
+  formatRatio,
+  formatSeconds,
+  formatTriangles,
+  markdownTable,
+  median,
+  medianOfRatios,
+} from './stats.js';
 
 test('median of odd and even counts, unsorted input, empty list', () => {
   assert.equal(median([3, 1, 2]), 2);
@@ -26,10 +34,23 @@ test('medianOfRatios pairs run i with run i, not median with median', () => {
 });
 
 test('markdownTable: header, alignment row, padded cells, escaped pipes', () => {
-  const text = markdownTable(['model', 'time'], [['cube', '0.10 s'], ['a|b', '12.34 s']]);
-  assert.equal(text, ['| model |    time |', '|:------|--------:|', '| cube  |  0.10 s |', '| a\\|b  | 12.34 s |'].join('\n'));
+  const text = markdownTable(
+    ['model', 'time'],
+    [
+      ['cube', '0.10 s'],
+      ['a|b', '12.34 s'],
+    ],
+  );
+  assert.equal(
+    text,
+    ['| model |    time |', '|:------|--------:|', '| cube  |  0.10 s |', '| a\\|b  | 12.34 s |'].join('\n'),
+  );
   const left = markdownTable(['a', 'b'], [['×', 'yy']], ['left', 'left']);
-  assert.equal(left, ['| a   | b   |', '|:----|:----|', '| ×   | yy  |'].join('\n'), 'width counts characters, not UTF-16 units or bytes');
+  assert.equal(
+    left,
+    ['| a   | b   |', '|:----|:----|', '| ×   | yy  |'].join('\n'),
+    'width counts characters, not UTF-16 units or bytes',
+  );
 });
 
 test('number formatting', () => {

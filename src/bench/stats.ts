@@ -33,7 +33,11 @@ export type Align = 'left' | 'right';
  * too. `align` gives each column's alignment (default: first column left, the others right). Pipes in cells
  * are escaped.
  */
-export function markdownTable(header: readonly string[], rows: readonly (readonly string[])[], align?: readonly Align[]): string {
+export function markdownTable(
+  header: readonly string[],
+  rows: readonly (readonly string[])[],
+  align?: readonly Align[],
+): string {
   const esc = (s: string) => s.replace(/\|/g, '\\|');
   const head = header.map(esc);
   const body = rows.map((r) => head.map((_, c) => esc(r[c] ?? '')));

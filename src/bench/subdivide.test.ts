@@ -19,7 +19,8 @@ function corners(bytes: Uint8Array): Float32Array {
   const n = binaryStlTriangles(bytes)!;
   const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
   const out = new Float32Array(9 * n);
-  for (let t = 0; t < n; t++) for (let k = 0; k < 9; k++) out[9 * t + k] = dv.getFloat32(84 + 50 * t + 12 + 4 * k, true);
+  for (let t = 0; t < n; t++)
+    for (let k = 0; k < 9; k++) out[9 * t + k] = dv.getFloat32(84 + 50 * t + 12 + 4 * k, true);
   return out;
 }
 
@@ -67,12 +68,14 @@ function openEdges(p: Float32Array): number {
 }
 
 // A closed tetrahedron with awkward float32 coordinates (midpoints need rounding).
-const TETRA = stl([
-  [0.1, 0.2, 0.3, 10.7, 0.1, 0.3, 0.3, 9.9, 0.2],
-  [0.1, 0.2, 0.3, 0.3, 9.9, 0.2, 3.3, 3.1, 7.77],
-  [0.1, 0.2, 0.3, 3.3, 3.1, 7.77, 10.7, 0.1, 0.3],
-  [10.7, 0.1, 0.3, 3.3, 3.1, 7.77, 0.3, 9.9, 0.2],
-].map(([ax, ay, az, bx, by, bz, cx, cy, cz]) => [ax!, ay!, az!, cx!, cy!, cz!, bx!, by!, bz!]));
+const TETRA = stl(
+  [
+    [0.1, 0.2, 0.3, 10.7, 0.1, 0.3, 0.3, 9.9, 0.2],
+    [0.1, 0.2, 0.3, 0.3, 9.9, 0.2, 3.3, 3.1, 7.77],
+    [0.1, 0.2, 0.3, 3.3, 3.1, 7.77, 10.7, 0.1, 0.3],
+    [10.7, 0.1, 0.3, 3.3, 3.1, 7.77, 0.3, 9.9, 0.2],
+  ].map(([ax, ay, az, bx, by, bz, cx, cy, cz]) => [ax!, ay!, az!, cx!, cy!, cz!, bx!, by!, bz!]),
+);
 
 test('subdivision: 4× the triangles, same bounds and volume, watertight stays watertight (tetrahedron)', () => {
   const src = corners(TETRA);

@@ -37,7 +37,12 @@ export function subdivideBinaryStl(bytes: Uint8Array, header = 'midpoint subdivi
 
   const v = new Float32Array(18); // a, b, c, ab, bc, ca (x, y, z each)
   const normal = new Float32Array(3);
-  const A = 0, B = 3, C = 6, AB = 9, BC = 12, CA = 15;
+  const A = 0,
+    B = 3,
+    C = 6,
+    AB = 9,
+    BC = 12,
+    CA = 15;
   const mid = (p: number, q: number, into: number) => {
     for (let k = 0; k < 3; k++) v[into + k] = (v[p + k]! + v[q + k]!) / 2; // float64 mean, stored as float32
   };

@@ -43,30 +43,95 @@ export const FLAGS: readonly FlagDef[] = [
   { name: 'filament', value: 'NAME', commands: SLICING, help: 'filament preset' },
   { name: 'config', value: 'FILE.json', repeat: true, commands: SLICING, help: 'settings from a JSON object' },
   { name: 'set', value: 'KEY=VALUE', repeat: true, commands: SLICING, help: 'any setting by its key' },
-  { name: 'rotate', value: 'Z|X,Y,Z', commands: SLICING, help: 'turn each model (degrees): about Z, or about X, Y and Z' },
+  {
+    name: 'rotate',
+    value: 'Z|X,Y,Z',
+    commands: SLICING,
+    help: 'turn each model (degrees): about Z, or about X, Y and Z',
+  },
   { name: 'infill-shader', value: 'FILE', commands: SLICING, help: 'custom infill from a GLSL cellular() shader' },
   { name: 'infill-image', value: 'FILE', commands: SLICING, help: 'custom infill from a cells.png image' },
   { name: 'infill-param', value: 'NAME=VALUE', repeat: true, commands: SLICING, help: "a shader's ui_ parameter" },
   { name: 'infill-density-shader', value: 'FILE', commands: SLICING, help: 'density() from a shader' },
   { name: 'infill-density-layers', value: 'A,B,…', commands: SLICING, help: 'density() per layer' },
-  { name: 'infillers', value: 'DIR', repeat: true, commands: [...SLICING, 'infillers'], help: 'another infiller folder' },
-  { name: 'object', value: 'KEY=VALUE,…', repeat: true, ofModel: true, commands: SLICING, help: 'settings of the model file before it only (object- and region-scoped ones)' },
-  { name: 'modifier', value: 'FILE[:KEY=VALUE,…]', repeat: true, ofModel: true, commands: SLICING, help: 'a mesh that changes the settings of the model before it inside it (not printed)' },
-  { name: 'negative', value: 'FILE', repeat: true, ofModel: true, commands: SLICING, help: 'a mesh cut out of the model before it' },
-  { name: 'support-blocker', value: 'FILE', repeat: true, ofModel: true, commands: SLICING, help: 'no support for the model before it inside this mesh' },
-  { name: 'support-enforcer', value: 'FILE', repeat: true, ofModel: true, commands: SLICING, help: 'support under every overhang of the model before it inside this mesh' },
-  { name: 'layer-range', value: 'FROM-TO:KEY=VALUE,…', repeat: true, ofModel: true, commands: SLICING, help: 'settings of the model before it from Z FROM to TO mm' },
-  { name: 'save-project', value: 'FILE.3mf', commands: ['slice'], help: 'also write the plate as a project 3MF (objects, volumes, settings)' },
+  {
+    name: 'infillers',
+    value: 'DIR',
+    repeat: true,
+    commands: [...SLICING, 'infillers'],
+    help: 'another infiller folder',
+  },
+  {
+    name: 'object',
+    value: 'KEY=VALUE,…',
+    repeat: true,
+    ofModel: true,
+    commands: SLICING,
+    help: 'settings of the model file before it only (object- and region-scoped ones)',
+  },
+  {
+    name: 'modifier',
+    value: 'FILE[:KEY=VALUE,…]',
+    repeat: true,
+    ofModel: true,
+    commands: SLICING,
+    help: 'a mesh that changes the settings of the model before it inside it (not printed)',
+  },
+  {
+    name: 'negative',
+    value: 'FILE',
+    repeat: true,
+    ofModel: true,
+    commands: SLICING,
+    help: 'a mesh cut out of the model before it',
+  },
+  {
+    name: 'support-blocker',
+    value: 'FILE',
+    repeat: true,
+    ofModel: true,
+    commands: SLICING,
+    help: 'no support for the model before it inside this mesh',
+  },
+  {
+    name: 'support-enforcer',
+    value: 'FILE',
+    repeat: true,
+    ofModel: true,
+    commands: SLICING,
+    help: 'support under every overhang of the model before it inside this mesh',
+  },
+  {
+    name: 'layer-range',
+    value: 'FROM-TO:KEY=VALUE,…',
+    repeat: true,
+    ofModel: true,
+    commands: SLICING,
+    help: 'settings of the model before it from Z FROM to TO mm',
+  },
+  {
+    name: 'save-project',
+    value: 'FILE.3mf',
+    commands: ['slice'],
+    help: 'also write the plate as a project 3MF (objects, volumes, settings)',
+  },
   { name: 'layer', value: 'N', commands: ['preview'], help: 'the layer to draw' },
   { name: 'width', value: 'PX', commands: ['preview'], help: 'picture width' },
   { name: 'travel', value: '', commands: ['preview'], help: 'draw travels too' },
   { name: 'json', value: '', commands: ['info', 'presets', 'settings'], help: 'print JSON' },
-  { name: 'to', value: 'octoprint|moonraker', commands: ['send'], help: 'the print host: its software (then its address)' },
+  {
+    name: 'to',
+    value: 'octoprint|moonraker',
+    commands: ['send'],
+    help: 'the print host: its software (then its address)',
+  },
   { name: 'api-key', value: 'KEY', commands: ['send'], help: "the host's API key (or STRATA_API_KEY)" },
   { name: 'print', value: '', commands: ['send'], help: 'start printing the file once it is uploaded' },
 ];
 
-const BY_NAME: ReadonlyMap<string, FlagDef> = new Map(FLAGS.flatMap((f) => [[f.name, f] as const, ...(f.short ? [[f.short, f] as const] : [])]));
+const BY_NAME: ReadonlyMap<string, FlagDef> = new Map(
+  FLAGS.flatMap((f) => [[f.name, f] as const, ...(f.short ? [[f.short, f] as const] : [])]),
+);
 /**
  * Other names a setting's flag answers to, as other slicers call the same thing (`--no-` works for them too
  * when the setting is on/off): PrusaSlicer's "vase mode", Cura's "spiralize".
@@ -75,7 +140,10 @@ export const FLAG_ALIASES: Readonly<Record<string, SettingKey>> = {
   'vase-mode': 'spiralVase',
   spiralize: 'spiralVase',
 };
-export const FLAG_TO_KEY: ReadonlyMap<string, SettingKey> = new Map([...SETTING_KEYS.map((k) => [kebab(k), k] as const), ...Object.entries(FLAG_ALIASES)]);
+export const FLAG_TO_KEY: ReadonlyMap<string, SettingKey> = new Map([
+  ...SETTING_KEYS.map((k) => [kebab(k), k] as const),
+  ...Object.entries(FLAG_ALIASES),
+]);
 
 /** Every flag the CLI accepts, with dashes: the FLAGS table and every setting's (with --no- for on/off ones). */
 export function allFlags(): string[] {
@@ -186,7 +254,10 @@ export function parseArgs(argv: readonly string[]): ParsedArgs {
     }
     const known = [...FLAG_TO_KEY.keys(), ...FLAGS.map((f) => f.name)];
     const s = suggest(negated ?? name, known);
-    throw new StrataError('UNKNOWN_SETTING', `unknown option ${a}${s ? ` (did you mean --${s}?)` : ''}; see strata --help`);
+    throw new StrataError(
+      'UNKNOWN_SETTING',
+      `unknown option ${a}${s ? ` (did you mean --${s}?)` : ''}; see strata --help`,
+    );
   }
   return out;
 }
@@ -197,9 +268,15 @@ export function checkFlagsFor(args: ParsedArgs): void {
   for (const name of Object.keys(args.flags)) {
     const def = BY_NAME.get(name)!;
     if (def.commands.length === 0 || def.commands.includes(command)) continue;
-    throw new StrataError('BAD_SETTING', `--${name} does not apply to strata ${args.command} (it is for strata ${def.commands.join(', ')})`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `--${name} does not apply to strata ${args.command} (it is for strata ${def.commands.join(', ')})`,
+    );
   }
   if (args.settingFlags.length > 0 && !SLICING.includes(command)) {
-    throw new StrataError('BAD_SETTING', `${args.settingFlags[0]} is a slicing setting; strata ${args.command} does not take settings (strata slice and preview do)`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `${args.settingFlags[0]} is a slicing setting; strata ${args.command} does not take settings (strata slice and preview do)`,
+    );
   }
 }

@@ -13,7 +13,11 @@
  */
 import { getHeapSpaceStatistics, setFlagsFromString } from 'node:v8';
 
-export const ENGINE_FLAGS = ['--max-inlined-bytecode-size-cumulative=100', '--no-turbo-loop-peeling', '--interrupt-budget=200000'] as const;
+export const ENGINE_FLAGS = [
+  '--max-inlined-bytecode-size-cumulative=100',
+  '--no-turbo-loop-peeling',
+  '--interrupt-budget=200000',
+] as const;
 
 /**
  * V8's young generation (both semi-spaces) grows no further once it is this large, MiB. By default it

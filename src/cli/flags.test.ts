@@ -59,7 +59,10 @@ async function cli(...args: string[]): Promise<Run> {
 
 let outputs = 0;
 /** Slice with these extra arguments; the G-code, or the one-line error. */
-async function slice(extra: readonly string[], models: readonly string[] = [MODEL]): Promise<{ gcode?: string; error?: string }> {
+async function slice(
+  extra: readonly string[],
+  models: readonly string[] = [MODEL],
+): Promise<{ gcode?: string; error?: string }> {
   const file = join(DIR, `o${outputs++}.gcode`);
   const r = await cli('slice', ...models, '-o', file, '-q', '--threads', '1', ...extra);
   if (r.code !== 0) {
@@ -116,8 +119,22 @@ function candidates(key: SettingKey, def: SettingDef, current: unknown): unknown
       const integer = def.type === 'integer';
       // a derived (empty) value: start from what it stands for ("Empty (null) = nozzleDiameter")
       const from = /Empty \(null\) = (\w+)/.exec(def.description)?.[1];
-      const base = typeof current === 'number' ? current : from && typeof DEFAULTS[from as SettingKey] === 'number' ? (DEFAULTS[from as SettingKey] as number) : def.min + 1;
-      const raw = [...(base === 0 ? [2, 1] : []), base * 1.5, base * 0.5, base + (def.max - def.min) / 10, base === 0 ? 1 : base * 3, def.min, def.max, (def.min + def.max) / 2];
+      const base =
+        typeof current === 'number'
+          ? current
+          : from && typeof DEFAULTS[from as SettingKey] === 'number'
+            ? (DEFAULTS[from as SettingKey] as number)
+            : def.min + 1;
+      const raw = [
+        ...(base === 0 ? [2, 1] : []),
+        base * 1.5,
+        base * 0.5,
+        base + (def.max - def.min) / 10,
+        base === 0 ? 1 : base * 3,
+        def.min,
+        def.max,
+        (def.min + def.max) / 2,
+      ];
       const out: number[] = [];
       for (const v of raw) {
         const c = round(Math.min(def.max, Math.max(def.min, v)), integer);
@@ -134,7 +151,12 @@ function outOfRange(def: SettingDef): string[] {
   switch (def.type) {
     case 'number':
     case 'integer':
-      return [String(def.max + Math.max(1, def.max)), String(def.min - Math.max(1, Math.abs(def.min))), 'lots', ...(def.type === 'integer' ? [String(def.min + 0.5)] : [])];
+      return [
+        String(def.max + Math.max(1, def.max)),
+        String(def.min - Math.max(1, Math.abs(def.min))),
+        'lots',
+        ...(def.type === 'integer' ? [String(def.min + 0.5)] : []),
+      ];
     case 'enum':
       return ['no-such-choice'];
     case 'boolean':
@@ -161,12 +183,17 @@ function baseline(args: readonly string[], models: readonly string[]): Promise<s
   return b;
 }
 
-test('every setting flag changes the G-code (or is refused by the slice it limits); runtime settings change nothing', { timeout: 600_000 }, async () => {
+test('every setting flag changes the G-code (or is refused by the slice it limits); runtime settings change nothing', {
+  timeout: 600_000,
+}, async () => {
   const problems: string[] = [];
   for (const key of SETTING_KEYS) {
     const def: SettingDef = SCHEMA[key];
     const context: string[] = [];
-    for (const [k, v] of Object.entries(def.onlyWith ?? {})) context.push(...setting(k, Array.isArray(v) ? v[0] : typeof v === 'object' ? (v as { example: number }).example : v));
+    for (const [k, v] of Object.entries(def.onlyWith ?? {}))
+      context.push(
+        ...setting(k, Array.isArray(v) ? v[0] : typeof v === 'object' ? (v as { example: number }).example : v),
+      );
     const need = def.needs ? NEEDS[def.needs] : { args: [], models: [MODEL] };
     context.push(...need.args);
     const base = await baseline(context, need.models);
@@ -192,11 +219,16 @@ test('every setting flag changes the G-code (or is refused by the slice it limit
     }
     // an 'auto' default stands for one of the other values, which may then give the same G-code
     if (def.type === 'enum' && current === 'auto' && same.length === 1) same.length = 0;
-    if (def.type === 'enum' && same.length) problems.push(`${key}: ${same.map(flagValue).join(', ')} gave the same G-code as ${flagValue(current)}`);
-    if (!changed && !limited) problems.push(`${key}: no value changed the G-code (tried ${candidates(key, def, current).map(flagValue).join(', ')})`);
+    if (def.type === 'enum' && same.length)
+      problems.push(`${key}: ${same.map(flagValue).join(', ')} gave the same G-code as ${flagValue(current)}`);
+    if (!changed && !limited)
+      problems.push(
+        `${key}: no value changed the G-code (tried ${candidates(key, def, current).map(flagValue).join(', ')})`,
+      );
     for (const bad of outOfRange(def)) {
       const r = await cli('slice', MODEL, '-o', join(DIR, 'never.gcode'), '-q', `--${kebab(key)}`, bad);
-      if (r.code !== 1 || !/^strata: error: [^\n]+\n$/.test(r.err)) problems.push(`${key}=${bad.slice(0, 20)} was not refused (${r.code}: ${r.err.slice(0, 80)})`);
+      if (r.code !== 1 || !/^strata: error: [^\n]+\n$/.test(r.err))
+        problems.push(`${key}=${bad.slice(0, 20)} was not refused (${r.code}: ${r.err.slice(0, 80)})`);
     }
   }
   assert.deepEqual(problems, []);
@@ -209,7 +241,10 @@ const CONFIG = join(DIR, 'profile.json');
 writeFileSync(CONFIG, JSON.stringify({ layerHeight: 0.25 }));
 const EXTRA_INFILLERS = join(DIR, 'more-infillers');
 mkdirSync(join(EXTRA_INFILLERS, 'my-stripes'), { recursive: true });
-writeFileSync(join(EXTRA_INFILLERS, 'my-stripes', 'shader.glsl'), 'vec4 cellular(vec3 world) { return vec4(mod(floor(world.x / 2.0), 2.0), 0.0, 0.0, 1.0); }\n');
+writeFileSync(
+  join(EXTRA_INFILLERS, 'my-stripes', 'shader.glsl'),
+  'vec4 cellular(vec3 world) { return vec4(mod(floor(world.x / 2.0), 2.0), 0.0, 0.0, 1.0); }\n',
+);
 const DENSITY = join(DIR, 'density.glsl');
 writeFileSync(DENSITY, 'float density(vec3 world) { return world.z > 5.0 ? 40.0 : 10.0; }\n');
 
@@ -280,9 +315,12 @@ const PROOFS: Record<string, (command: Command) => Promise<void>> = {
   rotate: (c) => differs(c, ['--rotate', '30']).then(() => differs(c, ['--rotate', '90,0,0'])),
   'infill-shader': (c) => differs(c, ['--infill-shader', join(INFILLERS, 'checker', 'shader.glsl')]),
   'infill-image': (c) => differs(c, ['--infill-image', join(INFILLERS, 'example-image', 'cells.png')]),
-  'infill-param': (c) => differs(c, ['--infill-pattern', 'checker', '--infill-param', 'angle=30'], ['--infill-pattern', 'checker']),
-  'infill-density-shader': (c) => differs(c, ['--infill-pattern', 'checker', '--infill-density-shader', DENSITY], ['--infill-pattern', 'checker']),
-  'infill-density-layers': (c) => differs(c, ['--infill-pattern', 'checker', '--infill-density-layers', '10,40'], ['--infill-pattern', 'checker']),
+  'infill-param': (c) =>
+    differs(c, ['--infill-pattern', 'checker', '--infill-param', 'angle=30'], ['--infill-pattern', 'checker']),
+  'infill-density-shader': (c) =>
+    differs(c, ['--infill-pattern', 'checker', '--infill-density-shader', DENSITY], ['--infill-pattern', 'checker']),
+  'infill-density-layers': (c) =>
+    differs(c, ['--infill-pattern', 'checker', '--infill-density-layers', '10,40'], ['--infill-pattern', 'checker']),
   infillers: async (c) => {
     if (c === 'infillers') {
       const r = await cli('infillers', '--infillers', EXTRA_INFILLERS);
@@ -297,16 +335,35 @@ const PROOFS: Record<string, (command: Command) => Promise<void>> = {
   object: (c) => differs(c, ['--object', 'infill-density=60,wall-count=3']),
   modifier: (c) => differs(c, ['--modifier', `${CORNER}:infill-density=90,wallCount=1`]),
   negative: (c) => differs(c, ['--negative', CORNER]),
-  'support-blocker': (c) => differs(c, [OVERHANGS, '--support-enabled', '--support-blocker', EVERYTHING], [OVERHANGS, '--support-enabled']),
+  'support-blocker': (c) =>
+    differs(c, [OVERHANGS, '--support-enabled', '--support-blocker', EVERYTHING], [OVERHANGS, '--support-enabled']),
   'support-enforcer': (c) => differs(c, [OVERHANGS, '--support-enforcer', EVERYTHING], [OVERHANGS]),
   'layer-range': (c) => differs(c, ['--layer-range', '2-6:infill-density=100']),
   'save-project': async () => {
     const project = fresh('3mf');
-    const r = await cli(...BASE_ARGS.slice, '--object', 'infill-density=60', '--modifier', `${CORNER}:infill-density=90`, '--save-project', project, '-o', fresh('gcode'));
+    const r = await cli(
+      ...BASE_ARGS.slice,
+      '--object',
+      'infill-density=60',
+      '--modifier',
+      `${CORNER}:infill-density=90`,
+      '--save-project',
+      project,
+      '-o',
+      fresh('gcode'),
+    );
     assert.equal(r.code, 0, r.err);
     // the project slices to the same G-code as the command line it was saved from
     const again = await produce(['slice', project, '-q', '--threads', '1', '-o', fresh('gcode')]);
-    const first = await produce([...BASE_ARGS.slice, '--object', 'infill-density=60', '--modifier', `${CORNER}:infill-density=90`, '-o', fresh('gcode')]);
+    const first = await produce([
+      ...BASE_ARGS.slice,
+      '--object',
+      'infill-density=60',
+      '--modifier',
+      `${CORNER}:infill-density=90`,
+      '-o',
+      fresh('gcode'),
+    ]);
     assert.equal(again.code, 0, again.err);
     assert.ok(again.file && again.file === first.file, 'the saved project slices as the command line did');
   },
@@ -355,7 +412,9 @@ async function differs(c: Command, extra: string[], base: string[] = []): Promis
 /** A value for a flag on a command it does not apply to (it must be refused before the value matters). */
 const SOME_VALUE: Record<string, string> = { layer: '1', width: '300', set: 'wallCount=3', rotate: '10' };
 
-test('every other flag acts on each command it belongs to and is refused by the others', { timeout: 600_000 }, async () => {
+test('every other flag acts on each command it belongs to and is refused by the others', {
+  timeout: 600_000,
+}, async () => {
   for (const f of FLAGS) {
     const proof = PROOFS[f.name];
     assert.ok(proof, `--${f.name} has a proof in this test`);

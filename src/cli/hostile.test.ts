@@ -7,7 +7,16 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { spawn, spawnSync, type ChildProcess } from 'node:child_process';
-import { chmodSync, mkdtempSync, readdirSync, readFileSync, readlinkSync, statSync, utimesSync, writeFileSync } from 'node:fs';
+import {
+  chmodSync,
+  mkdtempSync,
+  readdirSync,
+  readFileSync,
+  readlinkSync,
+  statSync,
+  utimesSync,
+  writeFileSync,
+} from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
@@ -19,7 +28,8 @@ import { HEAVY_SHADER } from '../shader/test-heavy-shader.js';
 const CLI = fileURLToPath(new URL('./main.js', import.meta.url));
 const CUBE = fileURLToPath(new URL('../../examples/calibration-cube.stl', import.meta.url));
 const tmp = () => mkdtempSync(join(tmpdir(), 'strata-hostile-'));
-const run = (args: string[], timeout = 30_000) => spawnSync(process.execPath, [CLI, ...args], { encoding: 'utf8', timeout });
+const run = (args: string[], timeout = 30_000) =>
+  spawnSync(process.execPath, [CLI, ...args], { encoding: 'utf8', timeout });
 const linux = process.platform === 'linux' ? false : 'needs /dev/zero and mkfifo';
 
 function oneLineError(r: { status: number | null; stderr: string }, re: RegExp, what: string): void {
@@ -28,21 +38,52 @@ function oneLineError(r: { status: number | null; stderr: string }, re: RegExp, 
   assert.equal(r.stderr.trim().split('\n').length, 1, `${what}: one line: ${r.stderr}`);
 }
 
-test('an input that never ends stops at its limit, naming the limit and the file', { skip: linux, timeout: 120_000 }, () => {
+test('an input that never ends stops at its limit, naming the limit and the file', {
+  skip: linux,
+  timeout: 120_000,
+}, () => {
   const dir = tmp();
   // before: the whole of /dev/zero was read into memory (9.4 GB in 25 s); the timeout ends such a run
-  oneLineError(run(['slice', CUBE, '--config', '/dev/zero', '-o', join(dir, 'a.gcode')], 20_000), /^strata: error: cannot read \/dev\/zero: the config file is larger than the 16 MiB allowed\n$/, '--config /dev/zero');
-  oneLineError(run(['slice', '/dev/zero', '-o', join(dir, 'b.gcode')], 60_000), /^strata: error: cannot read \/dev\/zero: the model is larger than the 954 MiB allowed \(a binary STL of 20 million triangles\)\n$/, 'model /dev/zero');
-  oneLineError(run(['slice', CUBE, '--infill-shader', '/dev/zero', '-o', join(dir, 'c.gcode')], 20_000), /cannot read \/dev\/zero: the infill shader is larger than the 1 MiB allowed/, '--infill-shader /dev/zero');
-  oneLineError(run(['slice', CUBE, '--infill-image', '/dev/urandom', '-o', join(dir, 'd.gcode')], 20_000), /cannot read \/dev\/urandom: the infill image is larger than the 64 MiB allowed/, '--infill-image /dev/urandom');
+  oneLineError(
+    run(['slice', CUBE, '--config', '/dev/zero', '-o', join(dir, 'a.gcode')], 20_000),
+    /^strata: error: cannot read \/dev\/zero: the config file is larger than the 16 MiB allowed\n$/,
+    '--config /dev/zero',
+  );
+  oneLineError(
+    run(['slice', '/dev/zero', '-o', join(dir, 'b.gcode')], 60_000),
+    /^strata: error: cannot read \/dev\/zero: the model is larger than the 954 MiB allowed \(a binary STL of 20 million triangles\)\n$/,
+    'model /dev/zero',
+  );
+  oneLineError(
+    run(['slice', CUBE, '--infill-shader', '/dev/zero', '-o', join(dir, 'c.gcode')], 20_000),
+    /cannot read \/dev\/zero: the infill shader is larger than the 1 MiB allowed/,
+    '--infill-shader /dev/zero',
+  );
+  oneLineError(
+    run(['slice', CUBE, '--infill-image', '/dev/urandom', '-o', join(dir, 'd.gcode')], 20_000),
+    /cannot read \/dev\/urandom: the infill image is larger than the 64 MiB allowed/,
+    '--infill-image /dev/urandom',
+  );
   oneLineError(run(['info', '/dev/zero'], 60_000), /cannot read \/dev\/zero: the model is larger/, 'info /dev/zero');
   // a regular file over the limit is refused from its size, before it is read
   const big = join(dir, 'big.json');
   writeFileSync(big, Buffer.alloc(17 * 1024 * 1024, 0x20));
-  oneLineError(run(['slice', CUBE, '--config', big, '-o', join(dir, 'e.gcode')]), /cannot read .*big\.json: the config file is larger than the 16 MiB allowed/, 'a 17 MiB config');
+  oneLineError(
+    run(['slice', CUBE, '--config', big, '-o', join(dir, 'e.gcode')]),
+    /cannot read .*big\.json: the config file is larger than the 16 MiB allowed/,
+    'a 17 MiB config',
+  );
   // standard input is held to the same limits
-  const r = spawnSync(process.execPath, [CLI, 'slice', CUBE, '--config', '-', '-o', join(dir, 'f.gcode')], { input: Buffer.alloc(17 * 1024 * 1024, 0x20), encoding: 'utf8', timeout: 20_000 });
-  oneLineError(r, /cannot read standard input: the config file is larger than the 16 MiB allowed/, '--config - with 17 MiB');
+  const r = spawnSync(process.execPath, [CLI, 'slice', CUBE, '--config', '-', '-o', join(dir, 'f.gcode')], {
+    input: Buffer.alloc(17 * 1024 * 1024, 0x20),
+    encoding: 'utf8',
+    timeout: 20_000,
+  });
+  oneLineError(
+    r,
+    /cannot read standard input: the config file is larger than the 16 MiB allowed/,
+    '--config - with 17 MiB',
+  );
   assert.deepEqual(readdirSync(dir), ['big.json'], 'nothing written');
 });
 
@@ -50,7 +91,10 @@ test('a large G-code file as a config: its head and tail are read, where slicers
   const dir = tmp();
   const gcode = join(dir, 'old.gcode');
   const filler = 'G1 X10 Y10 E0.1\n'.repeat((18 * 1024 * 1024) / 16);
-  writeFileSync(gcode, `; generated by PrusaSlicer 2.7.1 on 2024-01-01\n${filler}; prusaslicer_config = begin\n; layer_height = 0.25\n; prusaslicer_config = end\n`);
+  writeFileSync(
+    gcode,
+    `; generated by PrusaSlicer 2.7.1 on 2024-01-01\n${filler}; prusaslicer_config = begin\n; layer_height = 0.25\n; prusaslicer_config = end\n`,
+  );
   const out = join(dir, 'o.gcode');
   const r = run(['slice', CUBE, '--config', gcode, '-o', out, '-q']);
   assert.equal(r.status, 0, r.stderr);
@@ -58,10 +102,18 @@ test('a large G-code file as a config: its head and tail are read, where slicers
 });
 
 /** Start the CLI, wait until it is busy (reading, computing), send `signal`; resolves with its exit status (128 + n after a signal) and the delay. */
-async function signalWhileReading(child: ChildProcess, signal: NodeJS.Signals, ready: () => boolean | Promise<boolean>): Promise<{ status: number | null; ms: number; stderr: string }> {
+async function signalWhileReading(
+  child: ChildProcess,
+  signal: NodeJS.Signals,
+  ready: () => boolean | Promise<boolean>,
+): Promise<{ status: number | null; ms: number; stderr: string }> {
   let stderr = '';
   child.stderr?.on('data', (d) => (stderr += d));
-  const closed = new Promise<number | null>((resolve) => child.on('close', (code, sig) => resolve(code ?? (sig === 'SIGINT' ? 130 : sig === 'SIGTERM' ? 143 : sig ? 200 : null))));
+  const closed = new Promise<number | null>((resolve) =>
+    child.on('close', (code, sig) =>
+      resolve(code ?? (sig === 'SIGINT' ? 130 : sig === 'SIGTERM' ? 143 : sig ? 200 : null)),
+    ),
+  );
   for (let i = 0; i < 400 && !(await ready()); i++) await new Promise((r) => setTimeout(r, 25));
   // give the process time to settle into its read
   await new Promise((r) => setTimeout(r, 300));
@@ -91,11 +143,16 @@ function hasOpen(pid: number | undefined, path: string): boolean {
 /** Most time from a signal to the end of the process, ms (the issue asks for 100; a loaded test machine gets more). */
 const SIGNAL_MS = 1500;
 
-test('SIGTERM and SIGINT end a run blocked reading a pipe or a FIFO at once', { skip: linux, timeout: 120_000 }, async () => {
+test('SIGTERM and SIGINT end a run blocked reading a pipe or a FIFO at once', {
+  skip: linux,
+  timeout: 120_000,
+}, async () => {
   const figures: string[] = [];
   for (const signal of ['SIGTERM', 'SIGINT'] as const) {
     // a model on standard input that never comes (the writer keeps the pipe open)
-    const child = spawn(process.execPath, [CLI, 'slice', '-', '-o', join(tmp(), 'x.gcode')], { stdio: ['pipe', 'ignore', 'pipe'] });
+    const child = spawn(process.execPath, [CLI, 'slice', '-', '-o', join(tmp(), 'x.gcode')], {
+      stdio: ['pipe', 'ignore', 'pipe'],
+    });
     const started = Date.now();
     const r = await signalWhileReading(child, signal, () => Date.now() - started > 700);
     child.stdin?.destroy();
@@ -109,7 +166,9 @@ test('SIGTERM and SIGINT end a run blocked reading a pipe or a FIFO at once', { 
   assert.equal(spawnSync('mkfifo', [fifo]).status, 0);
   const writer = spawn('sh', ['-c', `exec 3>"${fifo}"; sleep 60`], { stdio: 'ignore' });
   try {
-    const child = spawn(process.execPath, [CLI, 'slice', CUBE, '--config', fifo, '-o', join(dir, 'x.gcode')], { stdio: ['ignore', 'ignore', 'pipe'] });
+    const child = spawn(process.execPath, [CLI, 'slice', CUBE, '--config', fifo, '-o', join(dir, 'x.gcode')], {
+      stdio: ['ignore', 'ignore', 'pipe'],
+    });
     const r = await signalWhileReading(child, 'SIGTERM', () => hasOpen(child.pid, fifo));
     assert.equal(r.status, 143, r.stderr);
     assert.ok(r.ms < SIGNAL_MS, `--config FIFO ended ${Math.round(r.ms)} ms after SIGTERM`);
@@ -120,11 +179,18 @@ test('SIGTERM and SIGINT end a run blocked reading a pipe or a FIFO at once', { 
   console.log(`signal to exit while reading: ${figures.join(', ')}`);
 });
 
-test('Ctrl-C at a terminal ends `strata slice -` waiting for its model', { skip: linux || (spawnSync('script', ['--version']).status !== 0 && 'no script(1) for a terminal'), timeout: 60_000 }, async () => {
+test('Ctrl-C at a terminal ends `strata slice -` waiting for its model', {
+  skip: linux || (spawnSync('script', ['--version']).status !== 0 && 'no script(1) for a terminal'),
+  timeout: 60_000,
+}, async () => {
   // script(1) runs the command on a new terminal and exits with its status; a ^C written to that
   // terminal is the terminal's Ctrl-C (SIGINT to the command)
   const dir = tmp();
-  const child = spawn('script', ['-qfec', `exec "${process.execPath}" "${CLI}" slice - -o "${join(dir, 'x.gcode')}"`, '/dev/null'], { stdio: ['pipe', 'ignore', 'ignore'] });
+  const child = spawn(
+    'script',
+    ['-qfec', `exec "${process.execPath}" "${CLI}" slice - -o "${join(dir, 'x.gcode')}"`, '/dev/null'],
+    { stdio: ['pipe', 'ignore', 'ignore'] },
+  );
   const closed = new Promise<number | null>((resolve) => child.on('close', (code) => resolve(code)));
   await new Promise((r) => setTimeout(r, 1500));
   const t0 = performance.now();
@@ -145,7 +211,13 @@ test('a write-protected G-code file is not replaced (as cp without -f)', () => {
   writeFileSync(out, 'PROTECTED\n');
   chmodSync(out, 0o444);
   const r = run(['slice', CUBE, '-o', out, '--threads', '1']);
-  oneLineError(r, new RegExp(`^strata: error: cannot write ${out.replace(/[.*+?^$|()[\]{}\\]/g, '\\$&')}: the file is write-protected \\(make it writable, or choose another -o\\)\\n$`), '0444 output');
+  oneLineError(
+    r,
+    new RegExp(
+      `^strata: error: cannot write ${out.replace(/[.*+?^$|()[\]{}\\]/g, '\\$&')}: the file is write-protected \\(make it writable, or choose another -o\\)\\n$`,
+    ),
+    '0444 output',
+  );
   assert.equal(readFileSync(out, 'utf8'), 'PROTECTED\n');
   assert.equal(statSync(out).mode & 0o777, 0o444);
   assert.deepEqual(readdirSync(dir), ['keep.gcode'], 'no temporary file');
@@ -155,11 +227,19 @@ test('a write-protected G-code file is not replaced (as cp without -f)', () => {
   assert.match(readFileSync(out, 'utf8'), /^;FLAVOR:Marlin/m);
 });
 
-test("a killed run's temporary file is removed by a later run once stale; a live or recent one is kept", { skip: linux, timeout: 120_000 }, async () => {
+test("a killed run's temporary file is removed by a later run once stale; a live or recent one is kept", {
+  skip: linux,
+  timeout: 120_000,
+}, async () => {
   const dir = tmp();
   const out = join(dir, 'out.gcode');
-  const child = spawn(process.execPath, [CLI, 'slice', CUBE, '-o', out, '--threads', '1', '--layer-height', '0.08', '-q'], { stdio: 'ignore' });
-  for (let i = 0; i < 800 && !readdirSync(dir).some((f) => f.endsWith('.tmp')); i++) await new Promise((r) => setTimeout(r, 10));
+  const child = spawn(
+    process.execPath,
+    [CLI, 'slice', CUBE, '-o', out, '--threads', '1', '--layer-height', '0.08', '-q'],
+    { stdio: 'ignore' },
+  );
+  for (let i = 0; i < 800 && !readdirSync(dir).some((f) => f.endsWith('.tmp')); i++)
+    await new Promise((r) => setTimeout(r, 10));
   child.kill('SIGKILL');
   await new Promise((r) => child.on('close', r));
   const left = readdirSync(dir).filter((f) => f.endsWith('.tmp'));
@@ -174,29 +254,73 @@ test("a killed run's temporary file is removed by a later run once stale; a live
   for (const f of [join(dir, left[0]), live, other]) utimesSync(f, old, old);
   const r = run(['slice', CUBE, '-o', out, '--threads', '1', '-q']);
   assert.equal(r.status, 0, r.stderr);
-  assert.deepEqual(readdirSync(dir).sort(), ['.other.gcode.' + child.pid + '.abcdefgh.tmp', `.out.gcode.${child.pid}.recent1.tmp`, `.out.gcode.${process.pid}.alive123.tmp`, 'out.gcode'].sort());
+  assert.deepEqual(
+    readdirSync(dir).sort(),
+    [
+      '.other.gcode.' + child.pid + '.abcdefgh.tmp',
+      `.out.gcode.${child.pid}.recent1.tmp`,
+      `.out.gcode.${process.pid}.alive123.tmp`,
+      'out.gcode',
+    ].sort(),
+  );
 });
 
 test('a config\'s "__proto__" key is refused, in the CLI as in the library; numbers are decimal', () => {
   const dir = tmp();
   const cfg = join(dir, 'p.json');
   writeFileSync(cfg, '{"__proto__": {"layerHeight": 0.3}, "wallCount": 3}');
-  oneLineError(run(['slice', CUBE, '--config', cfg, '-o', join(dir, 'x.gcode')]), /^strata: error: .*p\.json: unknown setting "__proto__"/, '__proto__ with a setting');
+  oneLineError(
+    run(['slice', CUBE, '--config', cfg, '-o', join(dir, 'x.gcode')]),
+    /^strata: error: .*p\.json: unknown setting "__proto__"/,
+    '__proto__ with a setting',
+  );
   writeFileSync(cfg, '{"__proto__": {"layerHeight": 0.3}}');
-  oneLineError(run(['slice', CUBE, '--config', cfg, '-o', join(dir, 'x.gcode')]), /unknown setting "__proto__"/, '__proto__ alone');
-  assert.throws(() => importProfile('{"__proto__": {}}', 'p.json'), (e: unknown) => e instanceof StrataError && /unknown setting "__proto__"/.test(e.message));
+  oneLineError(
+    run(['slice', CUBE, '--config', cfg, '-o', join(dir, 'x.gcode')]),
+    /unknown setting "__proto__"/,
+    '__proto__ alone',
+  );
+  assert.throws(
+    () => importProfile('{"__proto__": {}}', 'p.json'),
+    (e: unknown) => e instanceof StrataError && /unknown setting "__proto__"/.test(e.message),
+  );
   assert.throws(() => new Slicer(JSON.parse('{"__proto__": {"layerHeight": 0.3}}')), StrataError);
-  for (const args of [['--set', 'infillDensity=0x14'], ['--infill-density', '0x14'], ['--infill-density', '0b10100'], ['--infill-density', '0o24'], ['--scale', '0x2'], ['--rotate', '0x10'], ['--layer-height', 'Infinity']]) {
+  for (const args of [
+    ['--set', 'infillDensity=0x14'],
+    ['--infill-density', '0x14'],
+    ['--infill-density', '0b10100'],
+    ['--infill-density', '0o24'],
+    ['--scale', '0x2'],
+    ['--rotate', '0x10'],
+    ['--layer-height', 'Infinity'],
+  ]) {
     oneLineError(run(['slice', CUBE, ...args, '-o', join(dir, 'x.gcode')]), /^strata: error: /, args.join(' '));
   }
   assert.deepEqual(readdirSync(dir), ['p.json']);
   const out = join(dir, 'ok.gcode');
-  const r = run(['slice', CUBE, '--set', 'infillDensity=2e1', '--wall-count', '+3', '--layer-height', '.25', '-o', out, '-q', '--threads', '1']);
+  const r = run([
+    'slice',
+    CUBE,
+    '--set',
+    'infillDensity=2e1',
+    '--wall-count',
+    '+3',
+    '--layer-height',
+    '.25',
+    '-o',
+    out,
+    '-q',
+    '--threads',
+    '1',
+  ]);
   assert.equal(r.status, 0, r.stderr);
   assert.match(readFileSync(out, 'utf8'), /^;Layer height: 0\.25$/m);
 });
 
-test("Ctrl-C or SIGTERM during a heavy custom shader's layer ends the run at once, leaving no temporary file", { skip: linux, timeout: 120_000 }, async () => {
+test("Ctrl-C or SIGTERM during a heavy custom shader's layer ends the run at once, leaving no temporary file", {
+  skip: linux,
+  timeout: 120_000,
+}, async () => {
   const dir = tmp();
   const shader = join(dir, 'heavy.glsl');
   writeFileSync(shader, HEAVY_SHADER);
@@ -204,7 +328,11 @@ test("Ctrl-C or SIGTERM during a heavy custom shader's layer ends the run at onc
   for (const signal of ['SIGINT', 'SIGTERM'] as const) {
     const out = join(dir, 'out.gcode');
     // before: the signal waited for the layer (up to ~30 s, when the shader's step budget ran out)
-    const child = spawn(process.execPath, [CLI, 'slice', CUBE, '--infill-shader', shader, '--threads', '1', '-o', out], { stdio: ['ignore', 'ignore', 'pipe'] });
+    const child = spawn(
+      process.execPath,
+      [CLI, 'slice', CUBE, '--infill-shader', shader, '--threads', '1', '-o', out],
+      { stdio: ['ignore', 'ignore', 'pipe'] },
+    );
     const started = Date.now();
     const r = await signalWhileReading(child, signal, () => Date.now() - started > 2500);
     assert.equal(r.status, signal === 'SIGINT' ? 130 : 143, r.stderr);

@@ -12,7 +12,13 @@ const MiB = 1024 * 1024;
 export interface ModelInfo {
   file: string;
   /** Each object: its triangles, and what a project gives it (volumes by kind and name, settings, layer ranges). */
-  objects: Array<{ name: string; triangles: number; volumes?: Array<{ kind: string; name: string; triangles: number; settings?: Record<string, unknown> }>; settings?: Record<string, unknown>; layerRanges?: Array<{ fromZ: number; toZ: number; settings: Record<string, unknown> }> }>;
+  objects: Array<{
+    name: string;
+    triangles: number;
+    volumes?: Array<{ kind: string; name: string; triangles: number; settings?: Record<string, unknown> }>;
+    settings?: Record<string, unknown>;
+    layerRanges?: Array<{ fromZ: number; toZ: number; settings: Record<string, unknown> }>;
+  }>;
   /** A project's print settings, as the file gives them (its slicer's keys). */
   projectSettings?: { format: string; count: number };
   triangles: number;
@@ -53,11 +59,31 @@ export function modelInfo(file: string, bytes: Uint8Array, maxInflatedBytes: num
     objects: objects.map((o, i) => ({
       name: o.name,
       triangles: reports[i].triangles,
-      ...(o.volumes?.length ? { volumes: o.volumes.map((v) => ({ kind: v.kind, name: v.name, triangles: v.mesh.indices.length / 3, ...(v.settings ? { settings: { ...v.settings.values } } : {}) })) } : {}),
+      ...(o.volumes?.length
+        ? {
+            volumes: o.volumes.map((v) => ({
+              kind: v.kind,
+              name: v.name,
+              triangles: v.mesh.indices.length / 3,
+              ...(v.settings ? { settings: { ...v.settings.values } } : {}),
+            })),
+          }
+        : {}),
       ...(o.settings ? { settings: { ...o.settings.values } } : {}),
-      ...(o.layerRanges?.length ? { layerRanges: o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { ...r.settings.values } })) } : {}),
+      ...(o.layerRanges?.length
+        ? {
+            layerRanges: o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { ...r.settings.values } })),
+          }
+        : {}),
     })),
-    ...(loaded.projectSettings ? { projectSettings: { format: loaded.projectSettings.format, count: Object.keys(loaded.projectSettings.values).length } } : {}),
+    ...(loaded.projectSettings
+      ? {
+          projectSettings: {
+            format: loaded.projectSettings.format,
+            count: Object.keys(loaded.projectSettings.values).length,
+          },
+        }
+      : {}),
     triangles: sum((r) => r.triangles),
     vertices: sum((r) => r.vertices),
     degenerateRemoved: sum((r) => r.degenerateRemoved),
@@ -68,7 +94,10 @@ export function modelInfo(file: string, bytes: Uint8Array, maxInflatedBytes: num
     openEdges,
     nonManifoldEdges,
     watertight: openEdges === 0 && nonManifoldEdges === 0,
-    warnings: [...loaded.warnings, ...reports.flatMap((r, i) => r.warnings.map((w) => (several ? `${objects[i].name}: ${w}` : w)))],
+    warnings: [
+      ...loaded.warnings,
+      ...reports.flatMap((r, i) => r.warnings.map((w) => (several ? `${objects[i].name}: ${w}` : w))),
+    ],
   };
 }
 
@@ -84,10 +113,20 @@ function text(info: ModelInfo): string {
     `  open edges:         ${info.openEdges}`,
     `  non-manifold edges: ${info.nonManifoldEdges}`,
     `  watertight:         ${info.watertight ? 'yes' : 'no'}`,
-    ...(info.projectSettings ? [`  project:            ${info.projectSettings.count} print settings (${info.projectSettings.format})`] : []),
+    ...(info.projectSettings
+      ? [`  project:            ${info.projectSettings.count} print settings (${info.projectSettings.format})`]
+      : []),
     ...info.objects.flatMap((o) => {
-      const own = (s?: Record<string, unknown>) => (s && Object.keys(s).length ? ` (${Object.entries(s).map(([k, v]) => `${k}=${String(v)}`).join(', ')})` : '');
-      const lines = [...(o.volumes ?? []).map((v) => `    ${v.kind} "${v.name}": ${v.triangles} triangles${own(v.settings)}`), ...(o.layerRanges ?? []).map((r) => `    layers ${r.fromZ}–${r.toZ} mm${own(r.settings)}`)];
+      const own = (s?: Record<string, unknown>) =>
+        s && Object.keys(s).length
+          ? ` (${Object.entries(s)
+              .map(([k, v]) => `${k}=${String(v)}`)
+              .join(', ')})`
+          : '';
+      const lines = [
+        ...(o.volumes ?? []).map((v) => `    ${v.kind} "${v.name}": ${v.triangles} triangles${own(v.settings)}`),
+        ...(o.layerRanges ?? []).map((r) => `    layers ${r.fromZ}–${r.toZ} mm${own(r.settings)}`),
+      ];
       return o.settings || lines.length ? [`  object "${o.name}"${own(o.settings)}`, ...lines] : [];
     }),
   ].join('\n');
@@ -97,7 +136,8 @@ export async function cmdInfo(args: ParsedArgs, write: (s: string) => void): Pro
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'info needs a model file');
   const input = new InputReader();
   const infos: ModelInfo[] = [];
-  for (const p of args.positional) infos.push(modelInfo(p, await input.bytes(p, 'model', 'model'), Number(SCHEMA.inflateBudget.default) * MiB));
+  for (const p of args.positional)
+    infos.push(modelInfo(p, await input.bytes(p, 'model', 'model'), Number(SCHEMA.inflateBudget.default) * MiB));
   if (args.flags.json === true) write(JSON.stringify(infos, null, 2) + '\n');
   else for (const i of infos) write(text(i) + '\n');
 }

@@ -36,7 +36,9 @@ export class InputReader {
 
   /** One file's objects (and a project's print settings), within the config's unpack budget. */
   async #file(path: string, what: string, cfg: Config): Promise<LoadedFile> {
-    return loadModelFile(await this.bytes(path, what, 'model'), path === '-' ? undefined : basename(path), { maxInflatedBytes: cfg.inflateBudget * MiB });
+    return loadModelFile(await this.bytes(path, what, 'model'), path === '-' ? undefined : basename(path), {
+      maxInflatedBytes: cfg.inflateBudget * MiB,
+    });
   }
 
   async #objects(path: string, what: string, cfg: Config): Promise<MeshObject[]> {
@@ -48,9 +50,17 @@ export class InputReader {
    * `--support-blocker`, `--support-enforcer`, `--layer-range`) give every object of that file its
    * settings and volumes.
    */
-  async models(paths: readonly string[], cfg: Config, modelFlags: ParsedArgs['modelFlags'] = []): Promise<ModelInput[]> {
+  async models(
+    paths: readonly string[],
+    cfg: Config,
+    modelFlags: ParsedArgs['modelFlags'] = [],
+  ): Promise<ModelInput[]> {
     const early = modelFlags.find((f) => f.model < 0);
-    if (early) throw new StrataError('BAD_SETTING', `--${early.flag} belongs to a model: give it after the model file it applies to`);
+    if (early)
+      throw new StrataError(
+        'BAD_SETTING',
+        `--${early.flag} belongs to a model: give it after the model file it applies to`,
+      );
     const models: ModelInput[] = [];
     for (const [k, p] of paths.entries()) {
       const name = p === '-' ? 'standard input' : basename(p);
@@ -74,19 +84,38 @@ export class InputReader {
       if (flag === 'object') Object.assign(own, parseSettingList(value, `--object ${value}`));
       else if (flag === 'layer-range') {
         const m = /^\s*([0-9.]+)\s*-\s*([0-9.]+)\s*:(.*)$/.exec(value);
-        const fromZ = parseDecimal(m?.[1] ?? ''), toZ = parseDecimal(m?.[2] ?? '');
+        const fromZ = parseDecimal(m?.[1] ?? ''),
+          toZ = parseDecimal(m?.[2] ?? '');
         if (!m || !Number.isFinite(fromZ) || !Number.isFinite(toZ) || !(toZ > fromZ)) {
-          throw new StrataError('BAD_SETTING', `--layer-range expects FROM-TO:KEY=VALUE,… (mm from the bed, FROM < TO), got "${value}"`);
+          throw new StrataError(
+            'BAD_SETTING',
+            `--layer-range expects FROM-TO:KEY=VALUE,… (mm from the bed, FROM < TO), got "${value}"`,
+          );
         }
-        out.layerRanges!.push({ fromZ, toZ, settings: { format: 'strata', values: parseSettingList(m[3], `--layer-range ${value}`) } });
+        out.layerRanges!.push({
+          fromZ,
+          toZ,
+          settings: { format: 'strata', values: parseSettingList(m[3], `--layer-range ${value}`) },
+        });
       } else {
         const colon = flag === 'modifier' ? value.lastIndexOf(':') : -1;
         // a Windows drive letter (C:\…) is not a settings list
         const split = colon > 1 && /=/.test(value.slice(colon + 1));
         const path = split ? value.slice(0, colon) : value;
-        const kind = flag === 'modifier' ? 'modifier' : flag === 'negative' ? 'negative' : flag === 'support-blocker' ? 'support-blocker' : 'support-enforcer';
+        const kind =
+          flag === 'modifier'
+            ? 'modifier'
+            : flag === 'negative'
+              ? 'negative'
+              : flag === 'support-blocker'
+                ? 'support-blocker'
+                : 'support-enforcer';
         const volume: MeshVolume = { kind, name: basename(path), mesh: await volumeMesh(path, `--${flag} mesh`) };
-        if (split) volume.settings = { format: 'strata', values: parseSettingList(value.slice(colon + 1), `--${flag} ${value}`) };
+        if (split)
+          volume.settings = {
+            format: 'strata',
+            values: parseSettingList(value.slice(colon + 1), `--${flag} ${value}`),
+          };
         out.volumes!.push(volume);
       }
     }
@@ -109,13 +138,20 @@ export function infillerDirs(args: ParsedArgs): string[] {
 }
 
 /** A custom infiller named by --infill-shader, --infill-image, or an --infill-pattern that is not built in. */
-async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>, input: InputReader): Promise<CustomInfillSpec | undefined> {
+async function customInfillFrom(
+  args: ParsedArgs,
+  opts: Record<string, unknown>,
+  input: InputReader,
+): Promise<CustomInfillSpec | undefined> {
   let spec: CustomInfillSpec | undefined;
   const shader = args.flags['infill-shader'];
   const image = args.flags['infill-image'];
-  if (typeof shader === 'string' && typeof image === 'string') throw new StrataError('BAD_SETTING', '--infill-shader and --infill-image exclude each other');
-  if (typeof shader === 'string') spec = { name: basename(shader), shader: await input.text(shader, 'infill shader', 'shader') };
-  else if (typeof image === 'string') spec = { name: basename(image), image: await input.bytes(image, 'infill image', 'image') };
+  if (typeof shader === 'string' && typeof image === 'string')
+    throw new StrataError('BAD_SETTING', '--infill-shader and --infill-image exclude each other');
+  if (typeof shader === 'string')
+    spec = { name: basename(shader), shader: await input.text(shader, 'infill shader', 'shader') };
+  else if (typeof image === 'string')
+    spec = { name: basename(image), image: await input.bytes(image, 'infill image', 'image') };
   else if (typeof opts.infillPattern === 'string' && !(PATTERN_IDS as readonly string[]).includes(opts.infillPattern)) {
     const name = opts.infillPattern;
     for (const dir of infillerDirs(args)) {
@@ -128,7 +164,10 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
       }
     }
     if (!spec) {
-      throw new StrataError('BAD_SETTING', `infillPattern "${name}" is neither a built-in pattern (${PATTERN_IDS.join(', ')}) nor an infiller folder (see strata infillers)`);
+      throw new StrataError(
+        'BAD_SETTING',
+        `infillPattern "${name}" is neither a built-in pattern (${PATTERN_IDS.join(', ')}) nor an infiller folder (see strata infillers)`,
+      );
     }
     delete opts.infillPattern;
   }
@@ -137,7 +176,10 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
   const densityLayers = args.flags['infill-density-layers'];
   if (!spec) {
     if (assignments.length || densityShader || densityLayers) {
-      throw new StrataError('BAD_SETTING', '--infill-param and --infill-density-shader/-layers need a custom infiller (--infill-shader, --infill-image or an infiller --infill-pattern)');
+      throw new StrataError(
+        'BAD_SETTING',
+        '--infill-param and --infill-density-shader/-layers need a custom infiller (--infill-shader, --infill-image or an infiller --infill-pattern)',
+      );
     }
     return undefined;
   }
@@ -145,10 +187,18 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
     const { loadInfiller, parseInfillParams } = await import('../shader/index.js');
     spec.params = parseInfillParams(loadInfiller(spec).params, assignments);
   }
-  if (typeof densityShader === 'string') spec.density = { shader: await input.text(densityShader, 'density shader', 'shader'), fileName: basename(densityShader) };
+  if (typeof densityShader === 'string')
+    spec.density = {
+      shader: await input.text(densityShader, 'density shader', 'shader'),
+      fileName: basename(densityShader),
+    };
   else if (typeof densityLayers === 'string') {
     const list = densityLayers.split(',').map(parseDecimal);
-    if (!list.length || list.some((v) => !Number.isFinite(v) || v < 0 || v > 100)) throw new StrataError('BAD_SETTING', '--infill-density-layers expects comma-separated percentages 0-100, one per layer');
+    if (!list.length || list.some((v) => !Number.isFinite(v) || v < 0 || v > 100))
+      throw new StrataError(
+        'BAD_SETTING',
+        '--infill-density-layers expects comma-separated percentages 0-100, one per layer',
+      );
     spec.density = list;
   }
   return spec;
@@ -158,7 +208,11 @@ async function customInfillFrom(args: ParsedArgs, opts: Record<string, unknown>,
  * The slicer options the command line asks for: configs, presets, settings and a custom infiller.
  * `warn` hears what an imported profile leaves out.
  */
-export async function optionsFrom(args: ParsedArgs, input: InputReader, warn: (w: string) => void): Promise<SliceOptions & { customInfill?: CustomInfillSpec }> {
+export async function optionsFrom(
+  args: ParsedArgs,
+  input: InputReader,
+  warn: (w: string) => void,
+): Promise<SliceOptions & { customInfill?: CustomInfillSpec }> {
   // no prototype: a config's "__proto__" key stays a key, refused by the slicer as the library refuses it
   const opts: Record<string, unknown> = Object.create(null) as Record<string, unknown>;
   const configs = typeof args.flags.config === 'string' ? args.flags.config.split('\n') : [];
@@ -180,7 +234,11 @@ export function parseSettingList(text: string, where: string): Record<string, un
   for (const part of text.split(',')) {
     if (part.trim() === '') continue;
     const eq = part.indexOf('=');
-    if (eq <= 0) throw new StrataError('BAD_SETTING', `${where}: expected KEY=VALUE pairs separated by commas, got "${part.trim()}"`);
+    if (eq <= 0)
+      throw new StrataError(
+        'BAD_SETTING',
+        `${where}: expected KEY=VALUE pairs separated by commas, got "${part.trim()}"`,
+      );
     const raw = part.slice(0, eq).trim();
     const key = FLAG_TO_KEY.get(raw) ?? checkKey(raw, 'setting');
     out[key] = parseSettingText(key, part.slice(eq + 1));

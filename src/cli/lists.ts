@@ -20,7 +20,8 @@ export async function cmdInfillers(args: ParsedArgs, write: Write): Promise<void
         continue;
       }
       write(`  ${inf.name}  ${inf.kind}${inf.numPasses && inf.numPasses > 1 ? `, ${inf.numPasses} passes` : ''}\n`);
-      for (const p of inf.params ?? []) write(`      --infill-param ${p.name}=${p.default}  (${p.type})${p.tooltip ? '  ' + p.tooltip : ''}\n`);
+      for (const p of inf.params ?? [])
+        write(`      --infill-param ${p.name}=${p.default}  (${p.type})${p.tooltip ? '  ' + p.tooltip : ''}\n`);
     }
   }
 }
@@ -47,15 +48,35 @@ function onlyWithText(key: string, v: OnlyWithValue): string {
 
 export function cmdSettings(args: ParsedArgs, write: Write): void {
   if (args.flags.json === true) {
-    write(JSON.stringify(Object.fromEntries(SETTING_KEYS.map((k) => [k, { flag: `--${kebab(k)}`, scope: SETTING_SCOPE[k], ...SCHEMA[k] }])), null, 2) + '\n');
+    write(
+      JSON.stringify(
+        Object.fromEntries(
+          SETTING_KEYS.map((k) => [k, { flag: `--${kebab(k)}`, scope: SETTING_SCOPE[k], ...SCHEMA[k] }]),
+        ),
+        null,
+        2,
+      ) + '\n',
+    );
     return;
   }
   for (const key of SETTING_KEYS) {
     const d: SettingDef = SCHEMA[key];
     const range =
-      d.type === 'number' || d.type === 'integer' ? ` [${d.min}–${d.max}]` : d.type === 'enum' ? ` {${d.values.join('|')}}` : d.type === 'boolean' ? ' (--no-' + kebab(key) + ')' : '';
+      d.type === 'number' || d.type === 'integer'
+        ? ` [${d.min}–${d.max}]`
+        : d.type === 'enum'
+          ? ` {${d.values.join('|')}}`
+          : d.type === 'boolean'
+            ? ' (--no-' + kebab(key) + ')'
+            : '';
     const def = d.type === 'string' ? '(template)' : JSON.stringify(d.default);
-    const only = d.onlyWith ? `  (only with ${Object.entries(d.onlyWith).map(([k, v]) => onlyWithText(kebab(k), v)).join(', ')})` : '';
-    write(`--${kebab(key)} ${d.unit ? `(${d.unit}) ` : ''}default ${def}${range}${only}  [${SETTING_SCOPE[key]}]\n    ${d.description}\n`);
+    const only = d.onlyWith
+      ? `  (only with ${Object.entries(d.onlyWith)
+          .map(([k, v]) => onlyWithText(kebab(k), v))
+          .join(', ')})`
+      : '';
+    write(
+      `--${kebab(key)} ${d.unit ? `(${d.unit}) ` : ''}default ${def}${range}${only}  [${SETTING_SCOPE[key]}]\n    ${d.description}\n`,
+    );
   }
 }

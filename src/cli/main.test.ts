@@ -70,10 +70,14 @@ test('--config, --set and a model on standard input', () => {
   const cfg = join(dir, 'profile.json');
   writeFileSync(cfg, JSON.stringify({ printer: 'prusa-mk4', layerHeight: 0.25, infillDensity: 10 }));
   const out = join(dir, 'o.gcode');
-  const r = spawnSync(process.execPath, [CLI, 'slice', '-', '-o', out, '--config', cfg, '--set', 'wallCount=3', '--threads', '1'], {
-    input: readFileSync(CUBE),
-    encoding: 'utf8',
-  });
+  const r = spawnSync(
+    process.execPath,
+    [CLI, 'slice', '-', '-o', out, '--config', cfg, '--set', 'wallCount=3', '--threads', '1'],
+    {
+      input: readFileSync(CUBE),
+      encoding: 'utf8',
+    },
+  );
   assert.equal(r.status, 0, r.stderr);
   assert.match(r.stderr, /80 layers/);
   const g = readFileSync(out, 'utf8');
@@ -86,21 +90,34 @@ test('--config, --set and a model on standard input', () => {
 });
 
 /** The CLI users run: package.json's bin (the bundle in dist/bin). */
-const BIN = fileURLToPath(new URL(`../../${(JSON.parse(readFileSync(fileURLToPath(new URL('../../package.json', import.meta.url)), 'utf8')) as { bin: { strata: string } }).bin.strata}`, import.meta.url));
+const BIN = fileURLToPath(
+  new URL(
+    `../../${(JSON.parse(readFileSync(fileURLToPath(new URL('../../package.json', import.meta.url)), 'utf8')) as { bin: { strata: string } }).bin.strata}`,
+    import.meta.url,
+  ),
+);
 
-test('the shipped CLI (package.json bin) is executable, so `npx strata` runs it', { skip: process.platform === 'win32' && 'no exec bit on Windows' }, () => {
+test('the shipped CLI (package.json bin) is executable, so `npx strata` runs it', {
+  skip: process.platform === 'win32' && 'no exec bit on Windows',
+}, () => {
   assert.ok((statSync(BIN).mode & 0o111) !== 0, `${BIN} has no execute permission`);
   assert.ok((statSync(CLI).mode & 0o111) !== 0, `${CLI} has no execute permission`);
 });
 
-test('the bundled CLI is the same program: same G-code (one and two threads, a custom infiller), same errors', { timeout: 120_000 }, () => {
+test('the bundled CLI is the same program: same G-code (one and two threads, a custom infiller), same errors', {
+  timeout: 120_000,
+}, () => {
   const dir = mkdtempSync(join(tmpdir(), 'strata-bin-'));
   const both = (...args: string[]) => {
     const a = spawnSync(process.execPath, [BIN, ...args, '-o', join(dir, 'bin.gcode')], { encoding: 'utf8' });
     const b = spawnSync(process.execPath, [CLI, ...args, '-o', join(dir, 'cli.gcode')], { encoding: 'utf8' });
     assert.equal(a.status, b.status, `${args.join(' ')}: exit ${a.status} against ${b.status} (${a.stderr})`);
     assert.equal(a.stderr, b.stderr);
-    if (a.status === 0) assert.ok(readFileSync(join(dir, 'bin.gcode')).equals(readFileSync(join(dir, 'cli.gcode'))), `${args.join(' ')}: G-code differs`);
+    if (a.status === 0)
+      assert.ok(
+        readFileSync(join(dir, 'bin.gcode')).equals(readFileSync(join(dir, 'cli.gcode'))),
+        `${args.join(' ')}: G-code differs`,
+      );
   };
   both('slice', CUBE, '-q');
   both('slice', CUBE, '-q', '--threads', '2', '--support-enabled', '--support-type', 'tree');
@@ -115,8 +132,26 @@ const tmp = () => mkdtempSync(join(tmpdir(), 'strata-'));
 
 /** A closed 20 × 0.01 × 10 mm box: a wall far thinner than a line. */
 const THIN_BOX = [
-  'v 0 0 0', 'v 20 0 0', 'v 20 0.01 0', 'v 0 0.01 0', 'v 0 0 10', 'v 20 0 10', 'v 20 0.01 10', 'v 0 0.01 10',
-  'f 1 3 2', 'f 1 4 3', 'f 5 6 7', 'f 5 7 8', 'f 1 2 6', 'f 1 6 5', 'f 2 3 7', 'f 2 7 6', 'f 3 4 8', 'f 3 8 7', 'f 4 1 5', 'f 4 5 8',
+  'v 0 0 0',
+  'v 20 0 0',
+  'v 20 0.01 0',
+  'v 0 0.01 0',
+  'v 0 0 10',
+  'v 20 0 10',
+  'v 20 0.01 10',
+  'v 0 0.01 10',
+  'f 1 3 2',
+  'f 1 4 3',
+  'f 5 6 7',
+  'f 5 7 8',
+  'f 1 2 6',
+  'f 1 6 5',
+  'f 2 3 7',
+  'f 2 7 6',
+  'f 3 4 8',
+  'f 3 8 7',
+  'f 4 1 5',
+  'f 4 5 8',
 ].join('\n');
 
 test('a slice that fails after the output is opened leaves the old file and no temporary file', () => {
@@ -142,11 +177,17 @@ test('a flat model is "nothing to print", naming the cause; nothing is written',
   assert.deepEqual(readdirSync(dir), ['wall.obj']);
 });
 
-test('a file too large for the process limit (EFBIG): one line, non-zero, old file kept', { skip: process.platform === 'win32' && 'no ulimit' }, () => {
+test('a file too large for the process limit (EFBIG): one line, non-zero, old file kept', {
+  skip: process.platform === 'win32' && 'no ulimit',
+}, () => {
   const dir = tmp();
   const out = join(dir, 'out.gcode');
   writeFileSync(out, 'OLD\n');
-  const r = spawnSync('bash', ['-c', `ulimit -f 64; exec "${process.execPath}" "${CLI}" slice "${CUBE}" -o "${out}" --threads 1`], { encoding: 'utf8' });
+  const r = spawnSync(
+    'bash',
+    ['-c', `ulimit -f 64; exec "${process.execPath}" "${CLI}" slice "${CUBE}" -o "${out}" --threads 1`],
+    { encoding: 'utf8' },
+  );
   assert.equal(r.status, 1, r.stderr);
   assert.equal(r.stderr, `strata: error: cannot write ${out}: file too large\n`);
   assert.equal(readFileSync(out, 'utf8'), 'OLD\n');
@@ -154,17 +195,37 @@ test('a file too large for the process limit (EFBIG): one line, non-zero, old fi
 });
 
 test('Ctrl-C or a kill while slicing: the old file stays, no temporary file is left, the status says which signal', async () => {
-  for (const [signal, status] of [['SIGINT', 130], ['SIGTERM', 143]] as const) {
+  for (const [signal, status] of [
+    ['SIGINT', 130],
+    ['SIGTERM', 143],
+  ] as const) {
     const dir = tmp();
     const out = join(dir, 'out.gcode');
     writeFileSync(out, 'OLD\n');
-    const child = spawn(process.execPath, [CLI, 'slice', CUBE, '-o', out, '--threads', '1', '--layer-height', '0.1', '-q']);
+    const child = spawn(process.execPath, [
+      CLI,
+      'slice',
+      CUBE,
+      '-o',
+      out,
+      '--threads',
+      '1',
+      '--layer-height',
+      '0.1',
+      '-q',
+    ]);
     let stderr = '';
     child.stderr.on('data', (d) => (stderr += d));
-    const done = new Promise<number | null>((resolve) => child.on('close', (code, sig) => resolve(code ?? (sig ? 128 + (sig === 'SIGINT' ? 2 : 15) : null))));
+    const done = new Promise<number | null>((resolve) =>
+      child.on('close', (code, sig) => resolve(code ?? (sig ? 128 + (sig === 'SIGINT' ? 2 : 15) : null))),
+    );
     // wait until the temporary file exists, i.e. the slice is writing
-    for (let i = 0; i < 600 && !readdirSync(dir).some((f) => f.endsWith('.tmp')); i++) await new Promise((r) => setTimeout(r, 10));
-    assert.ok(readdirSync(dir).some((f) => f.endsWith('.tmp')), 'the slice started writing');
+    for (let i = 0; i < 600 && !readdirSync(dir).some((f) => f.endsWith('.tmp')); i++)
+      await new Promise((r) => setTimeout(r, 10));
+    assert.ok(
+      readdirSync(dir).some((f) => f.endsWith('.tmp')),
+      'the slice started writing',
+    );
     child.kill(signal);
     assert.equal(await done, status, stderr);
     assert.equal(readFileSync(out, 'utf8'), 'OLD\n');
@@ -192,7 +253,10 @@ test('a flag that does not apply to the command is refused, not ignored', () => 
   for (const [args, re] of [
     [['slice', CUBE, '--json'], /--json does not apply to strata slice/],
     [['slice', CUBE, '--layer', '3'], /--layer does not apply to strata slice \(it is for strata preview\)/],
-    [['info', CUBE, '--layer-height', '0.3'], /--layer-height is a slicing setting; strata info does not take settings/],
+    [
+      ['info', CUBE, '--layer-height', '0.3'],
+      /--layer-height is a slicing setting; strata info does not take settings/,
+    ],
     [['info', CUBE, '-o', 'x.txt'], /--output does not apply to strata info/],
     [['presets', '--travel'], /--travel does not apply to strata presets/],
     [['slice', CUBE, '--scale', '1,2'], /--scale expects a number or 3 numbers/],
@@ -208,10 +272,18 @@ test('a flag that does not apply to the command is refused, not ignored', () => 
 test('info --json: one JSON document with every file', () => {
   const r = run('info', CUBE, CUBE, '--json');
   assert.equal(r.status, 0, r.stderr);
-  const infos = JSON.parse(r.stdout) as Array<{ triangles: number; watertight: boolean; size: number[]; objects: unknown[] }>;
+  const infos = JSON.parse(r.stdout) as Array<{
+    triangles: number;
+    watertight: boolean;
+    size: number[];
+    objects: unknown[];
+  }>;
   assert.equal(infos.length, 2);
   assert.equal(infos[0].triangles, 136);
   assert.equal(infos[0].watertight, true);
-  assert.deepEqual(infos[0].size.map((v) => Math.round(v)), [20, 20, 20]);
+  assert.deepEqual(
+    infos[0].size.map((v) => Math.round(v)),
+    [20, 20, 20],
+  );
   assert.equal(infos[0].objects.length, 1);
 });

@@ -75,7 +75,10 @@ export async function main(argv: readonly string[], io: Io = processIo): Promise
       return 0;
     }
     if (!(COMMANDS as readonly string[]).includes(args.command)) {
-      throw new StrataError('BAD_SETTING', `unknown command "${args.command}" (commands: ${COMMANDS.join(', ')}, serve)`);
+      throw new StrataError(
+        'BAD_SETTING',
+        `unknown command "${args.command}" (commands: ${COMMANDS.join(', ')}, serve)`,
+      );
     }
     checkFlagsFor(args);
     // each command's modules load when it runs (a slice does not load the listings, the server or the shader compiler)

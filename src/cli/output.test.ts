@@ -1,6 +1,15 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { linkSync, mkdtempSync, readdirSync, readFileSync, statSync, symlinkSync, writeFileSync, chmodSync } from 'node:fs';
+import {
+  linkSync,
+  mkdtempSync,
+  readdirSync,
+  readFileSync,
+  statSync,
+  symlinkSync,
+  writeFileSync,
+  chmodSync,
+} from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { StrataError } from '../errors.js';
@@ -72,7 +81,10 @@ test('write errors are one line naming the path and the reason', () => {
     const e = Object.assign(new Error(`${code}: something, write`), { code });
     assert.equal(reasonOf(e), text);
     const w = writeFailed('x.gcode', e);
-    assert.ok(w instanceof StrataError && w.code === 'WRITE_FAILED' && w.message === `cannot write x.gcode: ${text}`, String(w));
+    assert.ok(
+      w instanceof StrataError && w.code === 'WRITE_FAILED' && w.message === `cannot write x.gcode: ${text}`,
+      String(w),
+    );
   }
   assert.ok(writeFailed('-', Object.assign(new Error('EPIPE'), { code: 'EPIPE' })) instanceof PipeClosed);
 });
@@ -82,13 +94,19 @@ test('an output that is one of the inputs is refused: same path, hard link, symb
   const model = join(d, 'm.stl');
   writeFileSync(model, 'solid x\nendsolid x\n');
   const inputs = [{ path: model, what: 'model' }];
-  refused(() => refuseInputAsOutput(model, inputs, false), /^the output .*m\.stl is the model .*m\.stl: writing there would destroy it; choose another -o$/);
+  refused(
+    () => refuseInputAsOutput(model, inputs, false),
+    /^the output .*m\.stl is the model .*m\.stl: writing there would destroy it; choose another -o$/,
+  );
   refused(() => refuseInputAsOutput(join(d, '.', 'm.stl'), inputs, false), /is the model/);
   linkSync(model, join(d, 'hard.gcode'));
   refused(() => refuseInputAsOutput(join(d, 'hard.gcode'), inputs, false), /the same file through a link/);
   symlinkSync('m.stl', join(d, 'soft.gcode'));
   refused(() => refuseInputAsOutput(join(d, 'soft.gcode'), inputs, false), /the same file through a link/);
-  refused(() => refuseInputAsOutput(model, inputs, true), /^the default output .* is the model .* itself: .*name the output with -o$/);
+  refused(
+    () => refuseInputAsOutput(model, inputs, true),
+    /^the default output .* is the model .* itself: .*name the output with -o$/,
+  );
   refused(() => refuseInputAsOutput(model, [{ path: model, what: 'config file' }], false), /is the config file/);
   // other files, stdout and stdin are fine
   assert.doesNotThrow(() => refuseInputAsOutput(join(d, 'other.gcode'), inputs, false));

@@ -7,7 +7,21 @@
  * file is not replaced (as `cp` without `-f` would not), and temporary files a killed run left beside
  * the target are removed by the next run that writes it.
  */
-import { accessSync, chmodSync, closeSync, constants, fsyncSync, lstatSync, openSync, readdirSync, realpathSync, renameSync, statSync, unlinkSync, writeSync } from 'node:fs';
+import {
+  accessSync,
+  chmodSync,
+  closeSync,
+  constants,
+  fsyncSync,
+  lstatSync,
+  openSync,
+  readdirSync,
+  realpathSync,
+  renameSync,
+  statSync,
+  unlinkSync,
+  writeSync,
+} from 'node:fs';
 import { basename, dirname, join, resolve } from 'node:path';
 import { StrataError } from '../errors.js';
 
@@ -101,7 +115,8 @@ export function refuseInputAsOutput(out: string, inputs: readonly NamedInput[], 
   const target = identity(out);
   for (const input of inputs) {
     if (input.path === '-') continue;
-    const same = resolve(input.path) === resolve(out) || (target !== undefined && sameFile(target, identity(input.path)));
+    const same =
+      resolve(input.path) === resolve(out) || (target !== undefined && sameFile(target, identity(input.path)));
     if (!same) continue;
     const how = resolve(input.path) === resolve(out) ? '' : ' (the same file through a link)';
     throw new StrataError(
@@ -179,7 +194,11 @@ function refuseProtected(path: string, target: string, mode: number): void {
       writable = false;
     }
   }
-  if (!writable) throw new StrataError('WRITE_FAILED', `cannot write ${path}: the file is write-protected (make it writable, or choose another -o)`);
+  if (!writable)
+    throw new StrataError(
+      'WRITE_FAILED',
+      `cannot write ${path}: the file is write-protected (make it writable, or choose another -o)`,
+    );
 }
 
 class AtomicFile implements Output {

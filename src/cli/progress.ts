@@ -14,7 +14,9 @@ export function progressBar(stream: NodeJS.WriteStream, width = 30): ProgressBar
       if (pct === last) return;
       last = pct;
       const filled = Math.round((pct / 100) * width);
-      stream.write(`\r[${'#'.repeat(filled)}${'.'.repeat(width - filled)}] ${String(pct).padStart(3)}% ${label.padEnd(10)}`);
+      stream.write(
+        `\r[${'#'.repeat(filled)}${'.'.repeat(width - filled)}] ${String(pct).padStart(3)}% ${label.padEnd(10)}`,
+      );
     },
     done() {
       if (finished) return;

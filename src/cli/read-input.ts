@@ -20,7 +20,10 @@ export type InputKind = 'model' | 'config' | 'shader' | 'image';
 /** Largest input of each kind, bytes, and how the limit is put in words. */
 export const INPUT_LIMITS: Readonly<Record<InputKind, { bytes: number; why?: string }>> = {
   // a binary STL of the most triangles a model may have: 84 bytes of header and count, 50 a triangle
-  model: { bytes: 84 + 50 * MAX_MODEL_TRIANGLES, why: `a binary STL of ${MAX_MODEL_TRIANGLES / 1e6} million triangles` },
+  model: {
+    bytes: 84 + 50 * MAX_MODEL_TRIANGLES,
+    why: `a binary STL of ${MAX_MODEL_TRIANGLES / 1e6} million triangles`,
+  },
   config: { bytes: 16 * MiB },
   // (the shader compiler takes a quarter of this in characters; IceSL's shaders are a few kB)
   shader: { bytes: 1 * MiB },
@@ -37,14 +40,25 @@ function sizeText(bytes: number): string {
 function tooLarge(path: string, what: string, kind: InputKind): StrataError {
   const { bytes, why } = INPUT_LIMITS[kind];
   const name = path === '-' ? 'standard input' : path;
-  return new StrataError('LIMIT_EXCEEDED', `cannot read ${name}: the ${what} is larger than the ${sizeText(bytes)} allowed${why ? ` (${why})` : ''}`);
+  return new StrataError(
+    'LIMIT_EXCEEDED',
+    `cannot read ${name}: the ${what} is larger than the ${sizeText(bytes)} allowed${why ? ` (${why})` : ''}`,
+  );
 }
 
 function unreadable(path: string, e: unknown): StrataError {
   if (e instanceof StrataError) return e;
   const code = (e as NodeJS.ErrnoException).code;
   const why =
-    code === 'ENOENT' ? 'no such file' : code === 'EISDIR' ? 'it is a folder' : code === 'EACCES' ? 'permission denied' : code === 'ENXIO' ? 'no such device' : (e as Error).message;
+    code === 'ENOENT'
+      ? 'no such file'
+      : code === 'EISDIR'
+        ? 'it is a folder'
+        : code === 'EACCES'
+          ? 'permission denied'
+          : code === 'ENXIO'
+            ? 'no such device'
+            : (e as Error).message;
   return new StrataError('BAD_FILE', `cannot read ${path === '-' ? 'standard input' : path}: ${why}`);
 }
 
@@ -61,7 +75,13 @@ function joined(chunks: Uint8Array[], total: number): Uint8Array {
 }
 
 /** Read a handle from `position` (or from where it stands, for devices and pipes) until its end, or refuse past `limit`. */
-async function readAll(fh: FileHandle, limit: number, onTooLarge: () => StrataError, position: number | null = null, upTo = Infinity): Promise<Uint8Array> {
+async function readAll(
+  fh: FileHandle,
+  limit: number,
+  onTooLarge: () => StrataError,
+  position: number | null = null,
+  upTo = Infinity,
+): Promise<Uint8Array> {
   const chunks: Uint8Array[] = [];
   let total = 0;
   for (;;) {
@@ -139,7 +159,13 @@ export async function readInput(path: string, kind: InputKind, what: string): Pr
 async function headAndTail(fh: FileHandle, size: number, limit: number): Promise<Uint8Array> {
   const head = await readAll(fh, limit, () => new StrataError('LIMIT_EXCEEDED', 'unreachable'), 0, GCODE_HEAD);
   const tailBytes = limit - GCODE_HEAD;
-  const tail = await readAll(fh, limit, () => new StrataError('LIMIT_EXCEEDED', 'unreachable'), size - tailBytes, tailBytes);
+  const tail = await readAll(
+    fh,
+    limit,
+    () => new StrataError('LIMIT_EXCEEDED', 'unreachable'),
+    size - tailBytes,
+    tailBytes,
+  );
   const headEnd = head.lastIndexOf(0x0a) + 1;
   const tailStart = tail.indexOf(0x0a) + 1;
   return joined([head.subarray(0, headEnd), tail.subarray(tailStart)], headEnd + tail.length - tailStart);

@@ -18,14 +18,21 @@ function isFile(path: string): boolean {
 }
 
 function size(bytes: number): string {
-  return bytes >= 1024 * 1024 ? `${(bytes / 1024 / 1024).toFixed(1)} MB` : `${Math.max(1, Math.round(bytes / 1024))} KB`;
+  return bytes >= 1024 * 1024
+    ? `${(bytes / 1024 / 1024).toFixed(1)} MB`
+    : `${Math.max(1, Math.round(bytes / 1024))} KB`;
 }
 
 export async function cmdSend(args: ParsedArgs, io: Io): Promise<void> {
   const usage = 'usage: strata send FILE.gcode --to octoprint|moonraker URL [--api-key KEY] [--print]';
-  if (typeof args.flags.to !== 'string') throw new StrataError('BAD_SETTING', `send needs --to octoprint or --to moonraker, then the host's address (${usage})`);
+  if (typeof args.flags.to !== 'string')
+    throw new StrataError(
+      'BAD_SETTING',
+      `send needs --to octoprint or --to moonraker, then the host's address (${usage})`,
+    );
   const to = checkHostKind(args.flags.to.toLowerCase());
-  if (args.positional.length !== 2) throw new StrataError('BAD_SETTING', `send takes a G-code file and the host's address (${usage})`);
+  if (args.positional.length !== 2)
+    throw new StrataError('BAD_SETTING', `send takes a G-code file and the host's address (${usage})`);
   // the file is the one that is a file (or named like G-code); the other is the address, in either order
   const [a, b] = args.positional as [string, string];
   const fileFirst = isFile(a) || (!isFile(b) && GCODE_EXTENSIONS.some((e) => a.toLowerCase().endsWith(e)));
@@ -35,9 +42,13 @@ export async function cmdSend(args: ParsedArgs, io: Io): Promise<void> {
     bytes = readFileSync(file);
   } catch (e) {
     const code = (e as NodeJS.ErrnoException).code;
-    throw new StrataError('BAD_FILE', `cannot read ${file}: ${code === 'ENOENT' ? 'no such file' : code === 'EISDIR' ? 'it is a folder' : (e as Error).message}`);
+    throw new StrataError(
+      'BAD_FILE',
+      `cannot read ${file}: ${code === 'ENOENT' ? 'no such file' : code === 'EISDIR' ? 'it is a folder' : (e as Error).message}`,
+    );
   }
-  const apiKey = typeof args.flags['api-key'] === 'string' ? args.flags['api-key'] : process.env.STRATA_API_KEY || undefined;
+  const apiKey =
+    typeof args.flags['api-key'] === 'string' ? args.flags['api-key'] : process.env.STRATA_API_KEY || undefined;
   const print = args.flags.print === true;
   const bar = io.errIsTTY ? progressBar(process.stderr) : null;
   let result;
@@ -56,6 +67,7 @@ export async function cmdSend(args: ParsedArgs, io: Io): Promise<void> {
   }
   const host = to === 'octoprint' ? 'OctoPrint' : 'Moonraker';
   const what = `${file}: sent to ${host} at ${result.url} as ${result.name} (${size(result.bytes)})`;
-  if (print && !result.started) throw new StrataError('WRITE_FAILED', `${what}, but not printing: ${result.notStarted}`);
+  if (print && !result.started)
+    throw new StrataError('WRITE_FAILED', `${what}, but not printing: ${result.notStarted}`);
   io.err(`${what}${result.started ? '; printing' : ''}\n`);
 }

@@ -11,7 +11,12 @@ import { hostName, matchesEtag, parseServeArgs, resolveUnder, startServer } from
 
 const cli = fileURLToPath(new URL('./main.js', import.meta.url));
 
-function get(url: string, path: string, method = 'GET', headers: Record<string, string> = {}): Promise<{ status: number; headers: Record<string, string | string[] | undefined>; body: string }> {
+function get(
+  url: string,
+  path: string,
+  method = 'GET',
+  headers: Record<string, string> = {},
+): Promise<{ status: number; headers: Record<string, string | string[] | undefined>; body: string }> {
   return new Promise((resolve, reject) => {
     const u = new URL(url);
     const req = request({ host: u.hostname, port: u.port, path, method, headers }, (res) => {
@@ -41,7 +46,10 @@ test('serves the built page on 127.0.0.1: the page, its scripts as JavaScript, c
       assert.match(String(r.headers['content-type']), /^text\/javascript/, script);
     }
     const infillers = JSON.parse((await get(url, '/infillers/index.json')).body) as { name: string }[];
-    assert.ok(infillers.some((i) => i.name === 'voronoi-foam'), 'the shipped infillers are listed');
+    assert.ok(
+      infillers.some((i) => i.name === 'voronoi-foam'),
+      'the shipped infillers are listed',
+    );
     assert.equal((await get(url, '/no-such-file.js')).status, 404);
     assert.equal((await get(url, '/../../package.json')).status, 400);
     assert.equal((await get(url, '/%2e%2e/%2e%2e/package.json')).status, 400);
@@ -109,10 +117,18 @@ test('the page is sent with a Content-Security-Policy and is never framed; eval 
     assert.equal(page.headers['x-frame-options'], 'DENY');
     for (const worker of ['/slice-worker.js', '/layer-worker.js']) {
       const w = await get(url, worker);
-      assert.match(String(w.headers['content-security-policy']), /script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'/, `${worker}: custom infill shaders are compiled to JavaScript there`);
+      assert.match(
+        String(w.headers['content-security-policy']),
+        /script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'/,
+        `${worker}: custom infill shaders are compiled to JavaScript there`,
+      );
     }
     assert.doesNotMatch(String((await get(url, '/app.js')).headers['content-security-policy']), /'unsafe-eval'/);
-    assert.match(String((await get(url, '/nothing-here')).headers['content-security-policy']), /default-src 'self'/, 'errors too');
+    assert.match(
+      String((await get(url, '/nothing-here')).headers['content-security-policy']),
+      /default-src 'self'/,
+      'errors too',
+    );
   } finally {
     server.close();
   }
@@ -122,10 +138,24 @@ test('only requests addressed to this machine by name are answered (DNS rebindin
   const { server, url } = await startServer({ port: 0 });
   const port = new URL(url).port;
   try {
-    for (const host of [`127.0.0.1:${port}`, `localhost:${port}`, `LOCALHOST:${port}`, `[::1]:${port}`, 'localhost', `localhost.:${port}`]) {
+    for (const host of [
+      `127.0.0.1:${port}`,
+      `localhost:${port}`,
+      `LOCALHOST:${port}`,
+      `[::1]:${port}`,
+      'localhost',
+      `localhost.:${port}`,
+    ]) {
       assert.equal((await get(url, '/', 'GET', { Host: host })).status, 200, host);
     }
-    for (const host of [`attacker.example:${port}`, 'attacker.example', `127.0.0.1.attacker.example:${port}`, `localhost.attacker.example`, `192.168.1.5:${port}`, 'a b']) {
+    for (const host of [
+      `attacker.example:${port}`,
+      'attacker.example',
+      `127.0.0.1.attacker.example:${port}`,
+      `localhost.attacker.example`,
+      `192.168.1.5:${port}`,
+      'a b',
+    ]) {
       const r = await get(url, '/', 'GET', { Host: host });
       assert.equal(r.status, 403, `Host: ${JSON.stringify(host)}`);
       assert.doesNotMatch(r.body, /<title>/, 'no page for another name');
@@ -153,7 +183,11 @@ test('ETags: a reload revalidates and gets 304 without the body; a changed file 
     assert.equal(again.status, 304);
     assert.equal(again.body, '');
     assert.equal(again.headers.etag, etag);
-    assert.equal((await get(url, '/app.js', 'GET', { 'If-None-Match': `"other", W/${etag}` })).status, 304, 'a list, a weak tag');
+    assert.equal(
+      (await get(url, '/app.js', 'GET', { 'If-None-Match': `"other", W/${etag}` })).status,
+      304,
+      'a list, a weak tag',
+    );
     assert.equal((await get(url, '/app.js', 'GET', { 'If-None-Match': '"other"' })).status, 200);
     writeFileSync(join(root, 'app.js'), 'y'.repeat(100_001));
     const changed = await get(url, '/app.js', 'GET', { 'If-None-Match': etag });

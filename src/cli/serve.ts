@@ -61,7 +61,10 @@ const PAGE_CSP = [
 ].join('; ');
 
 /** The workers' policy: the same, and eval, which custom infill needs (IceSL shaders are compiled to JavaScript). */
-const WORKER_CSP = PAGE_CSP.replace("script-src 'self' 'wasm-unsafe-eval'", "script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'");
+const WORKER_CSP = PAGE_CSP.replace(
+  "script-src 'self' 'wasm-unsafe-eval'",
+  "script-src 'self' 'wasm-unsafe-eval' 'unsafe-eval'",
+);
 
 /** The scripts that start a worker (the policy a worker runs under is its script's). */
 const WORKER_SCRIPTS = new Set(['slice-worker.js', 'layer-worker.js']);
@@ -132,7 +135,10 @@ export async function startServer(opts: ServeOptions): Promise<{ server: Server;
   try {
     if (!(await stat(join(root, 'index.html'))).isFile()) throw new Error('not a file');
   } catch {
-    throw new StrataError('BAD_FILE', `the web page is not built (${join(root, 'index.html')} is missing): run npm run build`);
+    throw new StrataError(
+      'BAD_FILE',
+      `the web page is not built (${join(root, 'index.html')} is missing): run npm run build`,
+    );
   }
   const hosts = allowedHosts(HOST);
   const server = createServer((req, res) => {
@@ -160,7 +166,14 @@ export async function startServer(opts: ServeOptions): Promise<{ server: Server;
   });
   await new Promise<void>((resolve, reject) => {
     server.once('error', (e: NodeJS.ErrnoException) =>
-      reject(new StrataError('BAD_SETTING', e.code === 'EADDRINUSE' ? `port ${opts.port} is in use: choose another with --port N` : `cannot listen on ${HOST}:${opts.port}: ${e.message}`)),
+      reject(
+        new StrataError(
+          'BAD_SETTING',
+          e.code === 'EADDRINUSE'
+            ? `port ${opts.port} is in use: choose another with --port N`
+            : `cannot listen on ${HOST}:${opts.port}: ${e.message}`,
+        ),
+      ),
     );
     server.listen(opts.port, HOST, () => resolve());
   });
@@ -207,7 +220,10 @@ export function parseServeArgs(argv: readonly string[]): ServeOptions {
     const text = m[1] ?? argv[++i];
     const n = parseDecimal(text ?? '');
     if (text === undefined || text === '' || !Number.isInteger(n) || n < 0 || n > 65535) {
-      throw new StrataError('BAD_SETTING', `--port must be a whole number from 0 to 65535, got ${text === undefined ? 'nothing' : JSON.stringify(text)}`);
+      throw new StrataError(
+        'BAD_SETTING',
+        `--port must be a whole number from 0 to 65535, got ${text === undefined ? 'nothing' : JSON.stringify(text)}`,
+      );
     }
     port = n;
   }

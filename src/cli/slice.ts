@@ -15,7 +15,9 @@ import { openOutput, refuseInputAsOutput, type Output } from './output.js';
 import { progressBar } from './progress.js';
 
 function formatDuration(s: number): string {
-  const h = Math.floor(s / 3600), m = Math.floor((s % 3600) / 60), sec = Math.round(s % 60);
+  const h = Math.floor(s / 3600),
+    m = Math.floor((s % 3600) / 60),
+    sec = Math.round(s % 60);
   return h ? `${h}h ${m}m` : m ? `${m}m ${sec}s` : `${sec}s`;
 }
 
@@ -36,7 +38,8 @@ async function writing<T>(out: Output, body: (o: Output) => Promise<T> | T): Pro
 }
 
 export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
-  if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'slice needs at least one model file (see strata --help)');
+  if (args.positional.length === 0)
+    throw new StrataError('BAD_FILE', 'slice needs at least one model file (see strata --help)');
   const input = new InputReader();
   const quiet = args.flags.quiet === true;
   const slicer = await newSlicer(await optionsFrom(args, input, (w) => quiet || io.err(`strata: warning: ${w}\n`)));
@@ -60,7 +63,9 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
     const { stats, warnings } = await writing(openOutput(outPath), (out) => {
       const handed = models;
       models = undefined;
-      return slicer.sliceToSink(handed, (chunk) => out.write(chunk), { onProgress: bar ? (p) => bar.update(p.fraction, p.stage) : undefined });
+      return slicer.sliceToSink(handed, (chunk) => out.write(chunk), {
+        onProgress: bar ? (p) => bar.update(p.fraction, p.stage) : undefined,
+      });
     });
     bar?.done();
     if (!quiet) {
@@ -80,18 +85,22 @@ export async function cmdSlice(args: ParsedArgs, io: Io): Promise<void> {
 export async function cmdPreview(args: ParsedArgs, io: Io): Promise<void> {
   if (args.positional.length === 0) throw new StrataError('BAD_FILE', 'preview needs a model file');
   const input = new InputReader();
-  const slicer = await newSlicer(await optionsFrom(args, input, (w) => args.flags.quiet === true || io.err(`strata: warning: ${w}\n`)));
+  const slicer = await newSlicer(
+    await optionsFrom(args, input, (w) => args.flags.quiet === true || io.err(`strata: warning: ${w}\n`)),
+  );
   const models = await input.models(args.positional, slicer.config, args.modelFlags);
   const outPath = typeof args.flags.output === 'string' ? args.flags.output : '-';
   refuseInputAsOutput(outPath, input.read, false);
   const width = typeof args.flags.width === 'string' ? parseDecimal(args.flags.width) : 800;
-  if (!Number.isFinite(width) || width < 50 || width > 20000) throw new StrataError('BAD_SETTING', '--width must be 50 to 20000 pixels');
+  if (!Number.isFinite(width) || width < 50 || width > 20000)
+    throw new StrataError('BAD_SETTING', '--width must be 50 to 20000 pixels');
   const uncap = capYoungGeneration();
   const { plan } = await slicer.slicePlan(models).finally(uncap);
   const n = plan.layers.length;
   const layerText = typeof args.flags.layer === 'string' ? args.flags.layer : String(Math.floor(n / 2));
   const index = parseDecimal(layerText);
-  if (!Number.isInteger(index) || index < 0 || index >= n) throw new StrataError('BAD_SETTING', `--layer must be a layer number from 0 to ${n - 1}`);
+  if (!Number.isInteger(index) || index < 0 || index >= n)
+    throw new StrataError('BAD_SETTING', `--layer must be a layer number from 0 to ${n - 1}`);
   const cfg = slicer.config;
   const title = `layer ${index} of ${n} at Z ${plan.layers[index].z} mm, ${findPrinter(cfg.printerId)?.name ?? cfg.printerId}, ${findFilament(cfg.filamentId)?.name ?? cfg.filamentId}`;
   const svg = layerToSvg(plan.layers[index], { travel: args.flags.travel === true, widthPx: width, title });

@@ -20,7 +20,8 @@ export function blockWithHole(
   const outer: Array<[number, number]> = [];
   for (let i = 0; i < segments; i++) {
     const a = (2 * Math.PI * i) / segments;
-    const c = Math.cos(a), s = Math.sin(a);
+    const c = Math.cos(a),
+      s = Math.sin(a);
     // the same direction on a square: corners fall on multiples of 45° when segments is a multiple of 8
     const k = side / 2 / Math.max(Math.abs(c), Math.abs(s));
     const r = squareHole ? (k * radius * 2) / side : radius;
@@ -28,11 +29,14 @@ export function blockWithHole(
     outer.push([at[0] + k * c, at[1] + k * s]);
   }
   const tris: number[][] = [];
-  const quad = (a: number[], b: number[], c: number[], d: number[]) => tris.push([...a, ...b, ...c], [...a, ...c, ...d]);
+  const quad = (a: number[], b: number[], c: number[], d: number[]) =>
+    tris.push([...a, ...b, ...c], [...a, ...c, ...d]);
   for (let i = 0; i < segments; i++) {
     const j = (i + 1) % segments;
-    const [ix, iy] = inner[i], [jx, jy] = inner[j];
-    const [ox, oy] = outer[i], [px, py] = outer[j];
+    const [ix, iy] = inner[i],
+      [jx, jy] = inner[j];
+    const [ox, oy] = outer[i],
+      [px, py] = outer[j];
     quad([ox, oy, 0], [ix, iy, 0], [jx, jy, 0], [px, py, 0]); // bottom, facing down
     quad([ox, oy, height], [px, py, height], [jx, jy, height], [ix, iy, height]); // top
     quad([ox, oy, 0], [px, py, 0], [px, py, height], [ox, oy, height]); // outside
@@ -48,8 +52,19 @@ export function blockWithHole(
 type Tri = number[];
 
 function boxTris(x0: number, y0: number, z0: number, x1: number, y1: number, z1: number): Tri[] {
-  const v = [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]].map(([a, b, c]) => [a ? x1 : x0, b ? y1 : y0, c ? z1 : z0]);
-  const f = [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7];
+  const v = [
+    [0, 0, 0],
+    [1, 0, 0],
+    [1, 1, 0],
+    [0, 1, 0],
+    [0, 0, 1],
+    [1, 0, 1],
+    [1, 1, 1],
+    [0, 1, 1],
+  ].map(([a, b, c]) => [a ? x1 : x0, b ? y1 : y0, c ? z1 : z0]);
+  const f = [
+    0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7,
+  ];
   const out: Tri[] = [];
   for (let t = 0; t < f.length; t += 3) out.push([...v[f[t]], ...v[f[t + 1]], ...v[f[t + 2]]]);
   return out;
@@ -58,8 +73,12 @@ function boxTris(x0: number, y0: number, z0: number, x1: number, y1: number, z1:
 /** A prism under a ledge: its underside slopes at 45° from (x, z0) out to (x − (z1 − z0), z1). */
 function slopeTris(x: number, y0: number, y1: number, z0: number, z1: number): Tri[] {
   const d = z1 - z0;
-  const A = [x, y0, z0], B = [x, y0, z1], C = [x - d, y0, z1];
-  const A2 = [x, y1, z0], B2 = [x, y1, z1], C2 = [x - d, y1, z1];
+  const A = [x, y0, z0],
+    B = [x, y0, z1],
+    C = [x - d, y0, z1];
+  const A2 = [x, y1, z0],
+    B2 = [x, y1, z1],
+    C2 = [x - d, y1, z1];
   return [
     [...A, ...B, ...C],
     [...A2, ...C2, ...B2],
@@ -107,10 +126,33 @@ export function thinFeatures(): Uint8Array {
     tris.push(...boxTris(x, 0, 0, x + t, 8, 3));
     x += t + 3;
   }
-  const bulge: [number, number][] = [[x, 0], [x + 1, 0], [x + 1, 3], [x + 1.2, 3], [x + 1.2, 5], [x + 1, 5], [x + 1, 8], [x, 8], [x, 5], [x - 0.2, 5], [x - 0.2, 3], [x, 3]];
+  const bulge: [number, number][] = [
+    [x, 0],
+    [x + 1, 0],
+    [x + 1, 3],
+    [x + 1.2, 3],
+    [x + 1.2, 5],
+    [x + 1, 5],
+    [x + 1, 8],
+    [x, 8],
+    [x, 5],
+    [x - 0.2, 5],
+    [x - 0.2, 3],
+    [x, 3],
+  ];
   tris.push(...starPrism(bulge, [x + 0.5, 4], 3));
   x += 4;
-  tris.push(...starPrism([[x, 0], [x + 2, 0], [x + 1, 10]], [x + 1, 3], 3));
+  tris.push(
+    ...starPrism(
+      [
+        [x, 0],
+        [x + 2, 0],
+        [x + 1, 10],
+      ],
+      [x + 1, 3],
+      3,
+    ),
+  );
   return binaryStl(tris);
 }
 
@@ -119,7 +161,8 @@ function starPrism(ring: readonly [number, number][], centre: [number, number], 
   const out: Tri[] = [];
   const n = ring.length;
   for (let i = 0; i < n; i++) {
-    const [ax, ay] = ring[i], [bx, by] = ring[(i + 1) % n];
+    const [ax, ay] = ring[i],
+      [bx, by] = ring[(i + 1) % n];
     out.push([centre[0], centre[1], 0, bx, by, 0, ax, ay, 0]); // bottom, facing down
     out.push([centre[0], centre[1], height, ax, ay, height, bx, by, height]); // top
     out.push([ax, ay, 0, bx, by, 0, bx, by, height], [ax, ay, 0, bx, by, height, ax, ay, height]); // side

@@ -94,7 +94,8 @@ function revolved(profile: readonly [number, number][], sides = 64): Mesh {
     }
     return row;
   });
-  const c0 = g.vertex(0, 0, profile[0][1]), c1 = g.vertex(0, 0, profile[profile.length - 1][1]);
+  const c0 = g.vertex(0, 0, profile[0][1]),
+    c1 = g.vertex(0, 0, profile[profile.length - 1][1]);
   const last = rows[rows.length - 1];
   for (let i = 0; i < sides; i++) {
     const n = (i + 1) % sides;
@@ -110,7 +111,12 @@ function revolved(profile: readonly [number, number][], sides = 64): Mesh {
  * high in all.
  */
 export function mushroom(): Mesh {
-  return revolved([[4, 0], [4, 12], [15, 15], [15, 17]]);
+  return revolved([
+    [4, 0],
+    [4, 12],
+    [15, 15],
+    [15, 17],
+  ]);
 }
 
 /**
@@ -120,7 +126,9 @@ export function mushroom(): Mesh {
 export function leaningFins(): Mesh {
   const g = new MeshBuilder();
   [55, 60, 65, 70].forEach((deg, k) => {
-    const x = 30 * k, h = 8, s = h * Math.tan((deg * Math.PI) / 180);
+    const x = 30 * k,
+      h = 8,
+      s = h * Math.tan((deg * Math.PI) / 180);
     const b = [g.vertex(x, 0, 0), g.vertex(x + 4, 0, 0), g.vertex(x + 4, 8, 0), g.vertex(x, 8, 0)];
     const t = [g.vertex(x + s, 0, h), g.vertex(x + 4 + s, 0, h), g.vertex(x + 4 + s, 8, h), g.vertex(x + s, 8, h)];
     g.quad(b[0], b[3], b[2], b[1]); // bottom
@@ -143,18 +151,23 @@ export function leaningFins(): Mesh {
 export function arch(halfWidth = 12, height = 14, radius = 10, depth = 10, steps = 48): Mesh {
   const g = new MeshBuilder();
   const corner = Math.atan2(height, halfWidth);
-  const angles = [...new Set([...Array.from({ length: steps + 1 }, (_, i) => (Math.PI * i) / steps), corner, Math.PI - corner])].sort((p, q) => p - q);
+  const angles = [
+    ...new Set([...Array.from({ length: steps + 1 }, (_, i) => (Math.PI * i) / steps), corner, Math.PI - corner]),
+  ].sort((p, q) => p - q);
   // where the ray at angle t from the opening's centre leaves the block (its sides x = ±halfWidth, its top z = height)
   const exit = (t: number): [number, number] => {
-    const c = Math.cos(t), s = Math.sin(t);
+    const c = Math.cos(t),
+      s = Math.sin(t);
     const k = Math.min(Math.abs(c) > 1e-12 ? halfWidth / Math.abs(c) : Infinity, s > 1e-12 ? height / s : Infinity);
     return [c * k, s * k];
   };
   // per ray, the opening's point and the outside's, at the front (y = 0) and the back (y = depth)
-  const inner: [number, number][] = [], outer: [number, number][] = [];
+  const inner: [number, number][] = [],
+    outer: [number, number][] = [];
   for (const t of angles) {
     const [ox, oz] = exit(t);
-    const ix = radius * Math.cos(t), iz = radius * Math.sin(t);
+    const ix = radius * Math.cos(t),
+      iz = radius * Math.sin(t);
     inner.push([g.vertex(ix, 0, iz), g.vertex(ix, depth, iz)]);
     outer.push([g.vertex(ox, 0, oz), g.vertex(ox, depth, oz)]);
   }

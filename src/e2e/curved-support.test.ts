@@ -29,7 +29,9 @@ const volumes = new Map<string, number>();
 
 for (const [name, make] of SHAPES) {
   for (const supportType of ['normal', 'tree'] as const) {
-    test(`${name}, ${supportType} support: overhangs held, nothing over air, none inside the part, one-layer Z gap`, { timeout: 300_000 }, async () => {
+    test(`${name}, ${supportType} support: overhangs held, nothing over air, none inside the part, one-layer Z gap`, {
+      timeout: 300_000,
+    }, async () => {
       const { report, gcode, warnings } = await sliceAndAnalyzeInput(make(), { supportEnabled: true, supportType });
       assert.deepEqual(warnings, [], 'the mesh is closed and faces outwards');
       assert.match(gcode, /;TYPE:SUPPORT\n/);
@@ -40,11 +42,16 @@ for (const [name, make] of SHAPES) {
   }
 }
 
-test('without support the curved overhangs are not held (the measure discriminates)', { timeout: 300_000 }, async () => {
+test('without support the curved overhangs are not held (the measure discriminates)', {
+  timeout: 300_000,
+}, async () => {
   for (const [name, make, heldWithout] of SHAPES) {
     const { report } = await sliceAndAnalyzeInput(make(), { supportEnabled: false });
     const sup = report.summary.support!;
-    assert.ok(sup.overhangSupported !== null && sup.overhangSupported < heldWithout, `${name}: overhang supported ${sup.overhangSupported}`);
+    assert.ok(
+      sup.overhangSupported !== null && sup.overhangSupported < heldWithout,
+      `${name}: overhang supported ${sup.overhangSupported}`,
+    );
   }
 });
 
@@ -54,19 +61,33 @@ test('under every shape (the mushroom tall under a wide cap, the sphere and the 
     const tree = volumes.get(`${name} tree`);
     const normal = volumes.get(`${name} normal`);
     assert.ok(tree !== undefined && normal !== undefined, `${name}: both support runs passed`);
-    assert.ok(tree > 0.1 * normal && tree <= 0.75 * normal, `${name}: tree ${tree.toFixed(0)} mm³, normal ${normal.toFixed(0)} mm³`);
+    assert.ok(
+      tree > 0.1 * normal && tree <= 0.75 * normal,
+      `${name}: tree ${tree.toFixed(0)} mm³, normal ${normal.toFixed(0)} mm³`,
+    );
   }
 });
 
-test('a torus whose only overhang is its second layer (23 mm, tube 5.7 mm, 24 sides round the tube, as PrusaSlicer\'s gallery torus): both kinds hold it from the first layer, with no Z gap, where there is no room for one', { timeout: 300_000 }, async () => {
+test("a torus whose only overhang is its second layer (23 mm, tube 5.7 mm, 24 sides round the tube, as PrusaSlicer's gallery torus): both kinds hold it from the first layer, with no Z gap, where there is no room for one", {
+  timeout: 300_000,
+}, async () => {
   const low = () => torus(11.44, 2.83, 64, 24);
   const without = (await sliceAndAnalyzeInput(low(), { supportEnabled: false })).report.summary.support!;
-  assert.ok(without.overhangAreaMm2 > 20 && without.overhangSupported !== null && without.overhangSupported < 0.2, `without support: ${without.overhangSupported} of ${without.overhangAreaMm2} mm² held`);
+  assert.ok(
+    without.overhangAreaMm2 > 20 && without.overhangSupported !== null && without.overhangSupported < 0.2,
+    `without support: ${without.overhangSupported} of ${without.overhangAreaMm2} mm² held`,
+  );
   for (const supportType of ['normal', 'tree'] as const) {
     const { report } = await sliceAndAnalyzeInput(low(), { supportEnabled: true, supportType });
     const sup = report.summary.support!;
-    assert.ok(sup.overhangSupported !== null && sup.overhangSupported >= 0.95, `${supportType}: overhang supported ${sup.overhangSupported}`);
-    assert.ok(sup.overNothing !== null && sup.overNothing <= 0.003, `${supportType}: model over nothing ${sup.overNothing}`);
+    assert.ok(
+      sup.overhangSupported !== null && sup.overhangSupported >= 0.95,
+      `${supportType}: overhang supported ${sup.overhangSupported}`,
+    );
+    assert.ok(
+      sup.overNothing !== null && sup.overNothing <= 0.003,
+      `${supportType}: model over nothing ${sup.overNothing}`,
+    );
     assert.ok(sup.insideAreaMm2 <= 1, `${supportType}: support inside the part ${sup.insideAreaMm2} mm²`);
     // every overhang is the second layer's: its support is on the first layer, right under it
     assert.equal(sup.topGap.areaMm2, 0, `${supportType}: no overhang above the second layer`);

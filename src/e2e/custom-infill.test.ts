@@ -27,23 +27,45 @@ test('a shader infiller replaces the pattern, its ui_ parameter changes the path
   const base = { infillDensity: 20, adhesionType: 'none' as const };
   const a = await new Slicer({ ...base, threads: 1, customInfill: { name: 'stripes', shader: STRIPES } }).slice(cube);
   const b = await new Slicer({ ...base, threads: 2, customInfill: { name: 'stripes', shader: STRIPES } }).slice(cube);
-  const c = await new Slicer({ ...base, threads: 1, customInfill: { name: 'stripes', shader: STRIPES, params: { spacing: 1.5 } } }).slice(cube);
+  const c = await new Slicer({
+    ...base,
+    threads: 1,
+    customInfill: { name: 'stripes', shader: STRIPES, params: { spacing: 1.5 } },
+  }).slice(cube);
   assert.ok(a.gcode === b.gcode, 'identical for 1 and 2 threads');
-  const la = fillLength(a.gcode), lc = fillLength(c.gcode);
+  const la = fillLength(a.gcode),
+    lc = fillLength(c.gcode);
   assert.ok(la > 100, `fill printed: ${la} mm`);
   assert.ok(lc > 1.6 * la, `half the spacing, about twice the lines: ${la} → ${lc}`);
 });
 
 test('a broken shader is a clear error at construction', () => {
   assert.throws(
-    () => new Slicer({ customInfill: { name: 'bad', shader: 'vec4 cellular(vec3 w) { return vec4(undefinedThing); }' } }),
+    () =>
+      new Slicer({ customInfill: { name: 'bad', shader: 'vec4 cellular(vec3 w) { return vec4(undefinedThing); }' } }),
     (e: unknown) => e instanceof StrataError && /bad|line/.test(e.message),
   );
 });
 
 test('CLI: a shipped infiller by name, with a parameter', () => {
   const out = root + 'dist/e2e/hexagon.gcode';
-  const r = spawnSync(process.execPath, [root + 'dist/cli/main.js', 'slice', root + 'examples/calibration-cube.stl', '--infill-pattern', 'hexagon-grid', '--infill-param', 'side=3', '-o', out, '--threads', '1'], { encoding: 'utf8' });
+  const r = spawnSync(
+    process.execPath,
+    [
+      root + 'dist/cli/main.js',
+      'slice',
+      root + 'examples/calibration-cube.stl',
+      '--infill-pattern',
+      'hexagon-grid',
+      '--infill-param',
+      'side=3',
+      '-o',
+      out,
+      '--threads',
+      '1',
+    ],
+    { encoding: 'utf8' },
+  );
   assert.equal(r.status, 0, r.stderr);
   assert.ok(fillLength(readFileSync(out, 'utf8')) > 100);
 });
@@ -51,8 +73,17 @@ test('CLI: a shipped infiller by name, with a parameter', () => {
 test('density() from a JS field, a per-layer list and a density shader changes the paths', async () => {
   const VORONOI = readFileSync(root + 'infillers/voronoi-foam/shader.glsl', 'utf8');
   const run = async (density: unknown, threads = 2) =>
-    fillLength((await new Slicer({ threads, adhesionType: 'none', customInfill: { name: 'foam', shader: VORONOI, density: density as never } }).slice(cube)).gcode);
-  const sparse = await run(10), dense = await run(40);
+    fillLength(
+      (
+        await new Slicer({
+          threads,
+          adhesionType: 'none',
+          customInfill: { name: 'foam', shader: VORONOI, density: density as never },
+        }).slice(cube)
+      ).gcode,
+    );
+  const sparse = await run(10),
+    dense = await run(40);
   assert.ok(dense > 1.5 * sparse, `40 % prints more than 10 %: ${sparse} → ${dense}`);
   // a JS field runs on the calling thread (functions cannot travel to workers) and still works
   const field = await run((x: number) => (x < 110 ? 10 : 40));

@@ -25,7 +25,10 @@ for (const [name, options] of [
   ['SupportTest.stl', { supportEnabled: true, supportType: 'tree', adhesionType: 'raft' }],
   ['spot.stl', { supportEnabled: true, supportPlacement: 'buildPlate', infillPattern: 'lightning' }],
 ] as const) {
-  test(`${name} ${JSON.stringify(options)}: identical G-code on 1, 2 and 3 threads`, { skip, timeout: 300_000 }, async () => {
+  test(`${name} ${JSON.stringify(options)}: identical G-code on 1, 2 and 3 threads`, {
+    skip,
+    timeout: 300_000,
+  }, async () => {
     const bytes = readModel(name);
     const one = await new Slicer({ threads: 1, ...options }).slice(bytes);
     const two = await new Slicer({ threads: 2, ...options }).slice(bytes);
@@ -52,5 +55,8 @@ test('absolute and relative E give the same filament total', { skip, timeout: 12
   assert.equal(er.mode, 'relative');
   assert.ok(Math.abs(ea.net - er.net) < 1e-3 * ea.net, `net E ${ea.net} vs ${er.net}`);
   const printed = ea.net + ea.balance.trailingMm;
-  assert.ok(Math.abs(printed - a.stats.filamentMm) < 0.005 * printed, `stats filament ${a.stats.filamentMm} vs parsed ${printed}`);
+  assert.ok(
+    Math.abs(printed - a.stats.filamentMm) < 0.005 * printed,
+    `stats filament ${a.stats.filamentMm} vs parsed ${printed}`,
+  );
 });

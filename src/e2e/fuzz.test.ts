@@ -70,7 +70,9 @@ function mutateBytes(r: Rng, src: Uint8Array): Uint8Array {
       return b.subarray(0, r.int(b.length));
     case 2: {
       // copy a run over another place
-      const from = r.int(b.length), to = r.int(b.length), n = r.int(Math.min(64, b.length - Math.max(from, to)));
+      const from = r.int(b.length),
+        to = r.int(b.length),
+        n = r.int(Math.min(64, b.length - Math.max(from, to)));
       b.copyWithin(to, from, from + n);
       return b;
     }
@@ -91,7 +93,21 @@ function mutateBytes(r: Rng, src: Uint8Array): Uint8Array {
   }
 }
 
-const ODD_NUMBERS = ['0', '-0', '1e30', '-1e30', 'NaN', 'inf', '1e-30', '99999999999', '-3.5', '4294967296', '0x10', '', '1.5.5'];
+const ODD_NUMBERS = [
+  '0',
+  '-0',
+  '1e30',
+  '-1e30',
+  'NaN',
+  'inf',
+  '1e-30',
+  '99999999999',
+  '-3.5',
+  '4294967296',
+  '0x10',
+  '',
+  '1.5.5',
+];
 
 function mutateText(r: Rng, src: string): string {
   const lines = src.split('\n');
@@ -118,7 +134,11 @@ function mutateText(r: Rng, src: string): string {
       return src.slice(0, r.int(src.length));
     default: {
       const at = r.int(src.length);
-      return src.slice(0, at) + r.pick(['{', '}', '(', ';', '#', '\0', 'for(;;){', '/*', '"', '<', '>', '&', '\uFFFD']) + src.slice(at);
+      return (
+        src.slice(0, at) +
+        r.pick(['{', '}', '(', ';', '#', '\0', 'for(;;){', '/*', '"', '<', '>', '&', '\uFFFD']) +
+        src.slice(at)
+      );
     }
   }
 }
@@ -130,18 +150,26 @@ function stlTriangles(b: Uint8Array): number[][] {
   const dv = new DataView(b.buffer, b.byteOffset, b.byteLength);
   const n = dv.getUint32(80, true);
   const out: number[][] = [];
-  for (let t = 0; t < n; t++) out.push(Array.from({ length: 9 }, (_, k) => dv.getFloat32(84 + 50 * t + 12 + 4 * k, true)));
+  for (let t = 0; t < n; t++)
+    out.push(Array.from({ length: 9 }, (_, k) => dv.getFloat32(84 + 50 * t + 12 + 4 * k, true)));
   return out;
 }
 
 function objText(tris: number[][]): string {
-  const v = tris.map((t) => `v ${t[0]} ${t[1]} ${t[2]}\nv ${t[3]} ${t[4]} ${t[5]}\nv ${t[6]} ${t[7]} ${t[8]}`).join('\n');
+  const v = tris
+    .map((t) => `v ${t[0]} ${t[1]} ${t[2]}\nv ${t[3]} ${t[4]} ${t[5]}\nv ${t[6]} ${t[7]} ${t[8]}`)
+    .join('\n');
   const f = tris.map((_, i) => `f ${3 * i + 1} ${3 * i + 2} ${3 * i + 3}`).join('\n');
   return `o cube\n${v}\n${f}\n`;
 }
 
 function modelXml(tris: number[][]): string {
-  const v = tris.map((t) => `<vertex x="${t[0]}" y="${t[1]}" z="${t[2]}"/><vertex x="${t[3]}" y="${t[4]}" z="${t[5]}"/><vertex x="${t[6]}" y="${t[7]}" z="${t[8]}"/>`).join('\n');
+  const v = tris
+    .map(
+      (t) =>
+        `<vertex x="${t[0]}" y="${t[1]}" z="${t[2]}"/><vertex x="${t[3]}" y="${t[4]}" z="${t[5]}"/><vertex x="${t[6]}" y="${t[7]}" z="${t[8]}"/>`,
+    )
+    .join('\n');
   const f = tris.map((_, i) => `<triangle v1="${3 * i}" v2="${3 * i + 1}" v3="${3 * i + 2}"/>`).join('\n');
   return `<?xml version="1.0"?>\n<model unit="millimeter" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02"><resources>\n<object id="1" name="cube"><mesh><vertices>\n${v}\n</vertices><triangles>\n${f}\n</triangles></mesh></object>\n</resources><build><item objectid="1" transform="1 0 0 0 1 0 0 0 1 5 5 0"/></build></model>\n`;
 }
@@ -176,8 +204,16 @@ function checkGcode(gcode: string, cfg: ReturnType<typeof resolveConfig>, layers
         const v = Number(p.slice(1));
         assert.ok(Number.isFinite(v), `${what}: line ${n + 1} "${lines[n]}"`);
         if (!inLayers) continue;
-        if (p[0] === 'X') assert.ok(v >= x0 - 1e-3 && v <= x0 + cfg.buildPlateWidth + 1e-3, `${what}: X off the bed at line ${n + 1}: ${lines[n]}`);
-        if (p[0] === 'Y') assert.ok(v >= y0 - 1e-3 && v <= y0 + cfg.buildPlateLength + 1e-3, `${what}: Y off the bed at line ${n + 1}: ${lines[n]}`);
+        if (p[0] === 'X')
+          assert.ok(
+            v >= x0 - 1e-3 && v <= x0 + cfg.buildPlateWidth + 1e-3,
+            `${what}: X off the bed at line ${n + 1}: ${lines[n]}`,
+          );
+        if (p[0] === 'Y')
+          assert.ok(
+            v >= y0 - 1e-3 && v <= y0 + cfg.buildPlateLength + 1e-3,
+            `${what}: Y off the bed at line ${n + 1}: ${lines[n]}`,
+          );
       }
     }
   }
@@ -192,7 +228,11 @@ let maxRssSeen = 0;
 const outcomes = { gcode: 0, refused: 0 };
 
 /** One case: valid G-code, or one StrataError. */
-async function attempt(what: string, options: SliceOptions & { customInfill?: unknown }, input: unknown): Promise<void> {
+async function attempt(
+  what: string,
+  options: SliceOptions & { customInfill?: unknown },
+  input: unknown,
+): Promise<void> {
   let slicer: Slicer;
   try {
     slicer = new Slicer(options as SliceOptions);
@@ -201,7 +241,10 @@ async function attempt(what: string, options: SliceOptions & { customInfill?: un
     outcomes.gcode++;
   } catch (e) {
     if (e instanceof assert.AssertionError) throw e;
-    assert.ok(e instanceof StrataError, `${what}: threw ${e instanceof Error ? `${e.name}: ${e.message}\n${e.stack}` : String(e)}`);
+    assert.ok(
+      e instanceof StrataError,
+      `${what}: threw ${e instanceof Error ? `${e.name}: ${e.message}\n${e.stack}` : String(e)}`,
+    );
     assert.ok(e.message.length > 0 && !e.message.includes('\n'), `${what}: one line: ${e.message}`);
     outcomes.refused++;
   }
@@ -209,7 +252,13 @@ async function attempt(what: string, options: SliceOptions & { customInfill?: un
 }
 
 /** Settings that keep every case small (a mutated vertex far away is refused, not sliced for minutes). */
-const SMALL: SliceOptions = { threads: 1, layerHeight: 0.3, buildVolumeHeight: 40, adhesionType: 'none', infillDensity: 15 };
+const SMALL: SliceOptions = {
+  threads: 1,
+  layerHeight: 0.3,
+  buildVolumeHeight: 40,
+  adhesionType: 'none',
+  infillDensity: 15,
+};
 
 test('mutated STL, OBJ and 3MF models: valid G-code or one StrataError', { skip, timeout: 600_000 }, async () => {
   const r = new Rng(SEED);
@@ -221,16 +270,22 @@ test('mutated STL, OBJ and 3MF models: valid G-code or one StrataError', { skip,
   for (let i = 0; i < count(30); i++) await attempt(`binary STL #${i} (seed ${SEED})`, SMALL, mutateBytes(r, cube));
   for (let i = 0; i < count(12); i++) await attempt(`ASCII STL #${i}`, SMALL, strToU8(mutateText(r, ascii)));
   for (let i = 0; i < count(12); i++) await attempt(`OBJ #${i}`, SMALL, strToU8(mutateText(r, obj)));
-  for (let i = 0; i < count(10); i++) await attempt(`3MF XML #${i}`, SMALL, zipSync({ '3D/3dmodel.model': strToU8(mutateText(r, xml)) }));
+  for (let i = 0; i < count(10); i++)
+    await attempt(`3MF XML #${i}`, SMALL, zipSync({ '3D/3dmodel.model': strToU8(mutateText(r, xml)) }));
   const zipped = zipSync({ '3D/3dmodel.model': strToU8(xml) });
   for (let i = 0; i < count(10); i++) await attempt(`3MF bytes #${i}`, SMALL, mutateBytes(r, zipped));
   assert.ok(outcomes.gcode > 0 && outcomes.refused > 0, `both outcomes seen: ${JSON.stringify(outcomes)}`);
 });
 
-test('mutated infill images and shaders: a working infiller or one StrataError', { skip, timeout: 600_000 }, async () => {
+test('mutated infill images and shaders: a working infiller or one StrataError', {
+  skip,
+  timeout: 600_000,
+}, async () => {
   const r = new Rng(SEED + 1);
   const png = new Uint8Array(readFileSync(ROOT + 'infillers/example-image/cells.png'));
-  const shaders = ['checker', 'hexagon-grid', 'tpms-gyroid', 'tpms-schwarz-p', 'voronoi-foam'].map((n) => readFileSync(`${ROOT}infillers/${n}/shader.glsl`, 'utf8'));
+  const shaders = ['checker', 'hexagon-grid', 'tpms-gyroid', 'tpms-schwarz-p', 'voronoi-foam'].map((n) =>
+    readFileSync(`${ROOT}infillers/${n}/shader.glsl`, 'utf8'),
+  );
   const pin = blockWithHole(6, 2.4, 1.5, 16);
   const opts = { ...SMALL, layerHeight: 0.3 };
   let sliced = 0;
@@ -240,7 +295,10 @@ test('mutated infill images and shaders: a working infiller or one StrataError',
       new Slicer({ ...opts, customInfill: spec } as SliceOptions);
     } catch (e) {
       ok = false;
-      assert.ok(e instanceof StrataError && !e.message.includes('\n'), `${what}: ${e instanceof Error ? e.stack : String(e)}`);
+      assert.ok(
+        e instanceof StrataError && !e.message.includes('\n'),
+        `${what}: ${e instanceof Error ? e.stack : String(e)}`,
+      );
     }
     // slice a few that load, on a small part
     if (ok && sliced < count(6)) {
@@ -249,7 +307,8 @@ test('mutated infill images and shaders: a working infiller or one StrataError',
     }
   };
   for (let i = 0; i < count(40); i++) await tryInfill(`cells.png #${i}`, { name: 'fuzz', image: mutateBytes(r, png) });
-  for (let i = 0; i < count(40); i++) await tryInfill(`shader #${i}`, { name: 'fuzz', shader: mutateText(r, r.pick(shaders)) });
+  for (let i = 0; i < count(40); i++)
+    await tryInfill(`shader #${i}`, { name: 'fuzz', shader: mutateText(r, r.pick(shaders)) });
   assert.ok(sliced > 0);
 });
 
@@ -258,7 +317,12 @@ function randomValue(r: Rng, def: SettingDef, outside: boolean): unknown {
   switch (def.type) {
     case 'number':
     case 'integer': {
-      if (outside) return r.pick([def.max + 1 + r.float() * def.max, def.min - 1 - r.float() * 10, NaN, Infinity, '12', null].filter((v) => v !== null || !def.nullable));
+      if (outside)
+        return r.pick(
+          [def.max + 1 + r.float() * def.max, def.min - 1 - r.float() * 10, NaN, Infinity, '12', null].filter(
+            (v) => v !== null || !def.nullable,
+          ),
+        );
       if (def.nullable && r.chance(0.3)) return null;
       const v = def.min + (def.max - def.min) * r.float() ** 3;
       return def.type === 'integer' ? Math.round(v) : v;
@@ -268,7 +332,9 @@ function randomValue(r: Rng, def: SettingDef, outside: boolean): unknown {
     case 'enum':
       return outside ? 'no-such-choice' : r.pick(def.values);
     case 'string':
-      return outside ? 'x'.repeat(def.maxLength + 1) : r.pick(['G28', 'G28\nG1 Z5 F600', '; nothing', 'M117 {layerCount} layers']);
+      return outside
+        ? 'x'.repeat(def.maxLength + 1)
+        : r.pick(['G28', 'G28\nG1 Z5 F600', '; nothing', 'M117 {layerCount} layers']);
   }
 }
 
@@ -276,7 +342,13 @@ test('random settings in and out of range: valid G-code or one StrataError', { s
   const r = new Rng(SEED + 2);
   const part = blockWithHole(8, 3, 2, 24);
   // the settings that size the work stay modest, so a case takes well under a second
-  const bounded = new Set<SettingKey>(['threads', 'layerHeight', 'firstLayerHeight', 'buildVolumeHeight', 'inflateBudget']);
+  const bounded = new Set<SettingKey>([
+    'threads',
+    'layerHeight',
+    'firstLayerHeight',
+    'buildVolumeHeight',
+    'inflateBudget',
+  ]);
   const keys = SETTING_KEYS.filter((k) => !bounded.has(k));
   for (let i = 0; i < count(40); i++) {
     const outside = r.chance(0.3);
@@ -288,7 +360,11 @@ test('random settings in and out of range: valid G-code or one StrataError', { s
     if (r.chance(0.2)) opts.printer = r.pick(['prusa-mk4', 'voron-2.4-350', 'flsun-q5', 'no-such-printer']);
     const what = `settings #${i} ${JSON.stringify(opts).slice(0, 300)}`;
     if (outside) {
-      assert.throws(() => new Slicer(opts as SliceOptions), (e: unknown) => e instanceof StrataError && !e.message.includes('\n'), what);
+      assert.throws(
+        () => new Slicer(opts as SliceOptions),
+        (e: unknown) => e instanceof StrataError && !e.message.includes('\n'),
+        what,
+      );
       continue;
     }
     await attempt(what, opts, part);
@@ -318,7 +394,9 @@ function runCli(args: string[], r: Rng, stdin?: Uint8Array): Promise<CliOutcome>
   const dir = mkdtempSync(join(tmpdir(), 'strata-fuzz-cli-'));
   const timeFile = join(dir, 'rss');
   const timed = existsSync('/usr/bin/time');
-  const [cmd, argv] = timed ? ['/usr/bin/time', ['-o', timeFile, '-f', '%M', process.execPath, CLI, ...args]] : [process.execPath, [CLI, ...args]];
+  const [cmd, argv] = timed
+    ? ['/usr/bin/time', ['-o', timeFile, '-f', '%M', process.execPath, CLI, ...args]]
+    : [process.execPath, [CLI, ...args]];
   const t0 = performance.now();
   const child = spawn(cmd, argv, { stdio: ['pipe', 'ignore', 'pipe'] });
   let stderr = '';
@@ -334,7 +412,10 @@ function runCli(args: string[], r: Rng, stdin?: Uint8Array): Promise<CliOutcome>
   void (async () => {
     for (const [i, p] of pieces.entries()) {
       if (delays[i]) await new Promise((res) => setTimeout(res, delays[i]));
-      if (child.stdin.destroyed || !child.stdin.write(p)) await new Promise((res) => (child.stdin.destroyed ? res(null) : child.stdin.once('drain', res).once('close', res)));
+      if (child.stdin.destroyed || !child.stdin.write(p))
+        await new Promise((res) =>
+          child.stdin.destroyed ? res(null) : child.stdin.once('drain', res).once('close', res),
+        );
     }
     child.stdin.end();
   })();
@@ -343,14 +424,18 @@ function runCli(args: string[], r: Rng, stdin?: Uint8Array): Promise<CliOutcome>
     child.on('close', (status) => {
       clearTimeout(killer);
       const ms = performance.now() - t0;
-      const rss = timed && existsSync(timeFile) ? Number(readFileSync(timeFile, 'utf8').trim().split('\n').at(-1)) : NaN;
+      const rss =
+        timed && existsSync(timeFile) ? Number(readFileSync(timeFile, 'utf8').trim().split('\n').at(-1)) : NaN;
       rmSync(dir, { recursive: true, force: true });
       resolve({ status, stderr, peakMiB: Number.isFinite(rss) ? rss / 1024 : null, ms });
     });
   });
 }
 
-test('devices and streams as models, configs, shaders and images: G-code or one line, within the limits', { skip: process.platform !== 'linux' && 'needs Linux devices', timeout: 900_000 }, async () => {
+test('devices and streams as models, configs, shaders and images: G-code or one line, within the limits', {
+  skip: process.platform !== 'linux' && 'needs Linux devices',
+  timeout: 900_000,
+}, async () => {
   const r = new Rng(SEED + 3);
   const work = mkdtempSync(join(tmpdir(), 'strata-fuzz-dev-'));
   const fifo = join(work, 'fifo');
@@ -395,8 +480,13 @@ test('devices and streams as models, configs, shaders and images: G-code or one 
         assert.match(out.stderr, /^strata: error: [^\n]+\n$/, `${what}: one line`);
         seen.refused++;
       } else seen.gcode++;
-      if (out.peakMiB !== null) assert.ok(out.peakMiB < kind.limitMiB + 450, `${what}: peak ${Math.round(out.peakMiB)} MiB`);
-      assert.deepEqual(readdirSync(work).filter((f) => f.endsWith('.tmp')), [], `${what}: no temporary file left`);
+      if (out.peakMiB !== null)
+        assert.ok(out.peakMiB < kind.limitMiB + 450, `${what}: peak ${Math.round(out.peakMiB)} MiB`);
+      assert.deepEqual(
+        readdirSync(work).filter((f) => f.endsWith('.tmp')),
+        [],
+        `${what}: no temporary file left`,
+      );
       rmSync(join(work, 'out.gcode'), { force: true });
     }
   }

@@ -29,10 +29,18 @@ const CASES: Array<[string, string[], SliceOptions]> = [
   ['SupportTest support', ['SupportTest.stl'], { supportEnabled: true }],
   ['SupportTest tree raft', ['SupportTest.stl'], { supportEnabled: true, supportType: 'tree', adhesionType: 'raft' }],
   ['BridgeTest', ['BridgeTest.stl'], {}],
-  ['spot lightning support', ['spot.stl'], { supportEnabled: true, supportPlacement: 'buildPlate', infillPattern: 'lightning' }],
+  [
+    'spot lightning support',
+    ['spot.stl'],
+    { supportEnabled: true, supportPlacement: 'buildPlate', infillPattern: 'lightning' },
+  ],
   ['stanford-bunny klipper arcs', ['stanford-bunny.stl'], { gcodeFlavor: 'klipper', arcFitting: true }],
   ['3DBenchy', ['3DBenchy.stl.gz'], {}],
-  ['3DBenchy gyroid brim classic walls', ['3DBenchy.stl.gz'], { infillPattern: 'gyroid', adhesionType: 'brim', wallGenerator: 'classic' }],
+  [
+    '3DBenchy gyroid brim classic walls',
+    ['3DBenchy.stl.gz'],
+    { infillPattern: 'gyroid', adhesionType: 'brim', wallGenerator: 'classic' },
+  ],
   ['two objects', ['BridgeTest.stl', 'CalibrationCube.stl'], { supportEnabled: true, labelObjects: 'firmware' }],
 ];
 
@@ -54,5 +62,9 @@ test('the G-code of the shared models is what the hashes hold', { skip, timeout:
     return;
   }
   const changed = CASES.map(([name]) => name).filter((name) => held[name] !== now[name]);
-  assert.deepEqual(changed, [], `G-code changed for: ${changed.join(', ')} (if on purpose: STRATA_UPDATE_HASHES=1 node --test dist/e2e/gcode-hashes.test.js)`);
+  assert.deepEqual(
+    changed,
+    [],
+    `G-code changed for: ${changed.join(', ')} (if on purpose: STRATA_UPDATE_HASHES=1 node --test dist/e2e/gcode-hashes.test.js)`,
+  );
 });

@@ -30,21 +30,48 @@ async function check(model: string, options: Record<string, unknown> = {}): Prom
   assert.deepEqual(klipper.errors, [], `${model}: Klipper reported errors`);
   assert.ok(klipper.accepted, `${model}: Klipper did not accept the file:\n${klipper.log.slice(-3000)}`);
   const strata = lastElapsed(gcode);
-  assert.ok(Math.abs(strata - stats.printTimeSeconds) < 1, `${model}: the G-code's time ${strata} s is the estimate's ${stats.printTimeSeconds} s`);
+  assert.ok(
+    Math.abs(strata - stats.printTimeSeconds) < 1,
+    `${model}: the G-code's time ${strata} s is the estimate's ${stats.printTimeSeconds} s`,
+  );
   const ratio = strata / klipper.printTimeSeconds;
-  assert.ok(Math.abs(ratio - 1) <= 0.02, `${model}: Strata ${strata.toFixed(1)} s, Klipper ${klipper.printTimeSeconds.toFixed(1)} s (${((ratio - 1) * 100).toFixed(2)} %)`);
+  assert.ok(
+    Math.abs(ratio - 1) <= 0.02,
+    `${model}: Strata ${strata.toFixed(1)} s, Klipper ${klipper.printTimeSeconds.toFixed(1)} s (${((ratio - 1) * 100).toFixed(2)} %)`,
+  );
 }
 
-test('Klipper batch mode: the calibration cube is accepted and its estimate within 2 % of Klipper', { skip, timeout: 120_000 }, async () => {
+test('Klipper batch mode: the calibration cube is accepted and its estimate within 2 % of Klipper', {
+  skip,
+  timeout: 120_000,
+}, async () => {
   await check('CalibrationCube.stl');
 });
 
-test('Klipper batch mode: the overhang test with arcs (G2/G3) and firmware retraction (G10/G11) is accepted and its estimate within 2 %', { skip, timeout: 120_000 }, async () => {
+test('Klipper batch mode: the overhang test with arcs (G2/G3) and firmware retraction (G10/G11) is accepted and its estimate within 2 %', {
+  skip,
+  timeout: 120_000,
+}, async () => {
   // printer.cfg's [firmware_retraction]: 0.8 mm at 35 mm/s
-  await check('Overhang.stl', { arcFitting: true, firmwareRetraction: true, retractionDistance: 0.8, retractionSpeed: 35 });
+  await check('Overhang.stl', {
+    arcFitting: true,
+    firmwareRetraction: true,
+    retractionDistance: 0.8,
+    retractionSpeed: 35,
+  });
 });
 
-test('Klipper batch mode: a print with its limits written (SET_VELOCITY_LIMIT) is accepted and its estimate within 2 %', { skip, timeout: 120_000 }, async () => {
+test('Klipper batch mode: a print with its limits written (SET_VELOCITY_LIMIT) is accepted and its estimate within 2 %', {
+  skip,
+  timeout: 120_000,
+}, async () => {
   // klippy 0.12.0.dev283 keeps printer.cfg's max_accel_to_decel (1500) under a lower ACCEL: 2000 × (1 − 0.25)
-  await check('HollowCalibrationCube.stl', { machineLimits: 'write', maxSpeedX: 200, maxSpeedY: 200, acceleration: 2000, cornerVelocity: 8, minimumCruiseRatio: 0.25 });
+  await check('HollowCalibrationCube.stl', {
+    machineLimits: 'write',
+    maxSpeedX: 200,
+    maxSpeedY: 200,
+    acceleration: 2000,
+    cornerVelocity: 8,
+    minimumCruiseRatio: 0.25,
+  });
 });

@@ -20,7 +20,10 @@ async function accepted(name: string, input: unknown, options: SliceOptions): Pr
   assert.deepEqual(klipper.errors, [], `${name}: Klipper reported errors`);
   assert.ok(klipper.accepted, `${name}: Klipper did not accept the file:\n${klipper.log.slice(-3000)}`);
   const ratio = stats.printTimeSeconds / klipper.printTimeSeconds;
-  assert.ok(Math.abs(ratio - 1) <= 0.02, `${name}: Strata ${stats.printTimeSeconds.toFixed(1)} s, Klipper ${klipper.printTimeSeconds.toFixed(1)} s`);
+  assert.ok(
+    Math.abs(ratio - 1) <= 0.02,
+    `${name}: Strata ${stats.printTimeSeconds.toFixed(1)} s, Klipper ${klipper.printTimeSeconds.toFixed(1)} s`,
+  );
   return gcode;
 }
 
@@ -36,7 +39,10 @@ test('Klipper batch mode accepts a colour change and a pause (PAUSE)', { skip, t
 });
 
 test('Klipper batch mode accepts a plate printed one object at a time', { skip, timeout: 120_000 }, async () => {
-  const objects = [{ name: 'a', mesh: box(0, 0, 0, 10, 10, 5) }, { name: 'b', mesh: box(0, 0, 0, 8, 8, 4) }];
+  const objects = [
+    { name: 'a', mesh: box(0, 0, 0, 10, 10, 5) },
+    { name: 'b', mesh: box(0, 0, 0, 8, 8, 4) },
+  ];
   const gcode = await accepted('sequential', objects, { sequentialPrinting: true });
   // Z goes back down once, to the second object's first layer
   const zs = [...gcode.matchAll(/^;Z:([\d.]+)$/gm)].map((m) => Number(m[1]));

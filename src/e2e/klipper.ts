@@ -88,12 +88,25 @@ export function markGcode(gcode: string): string {
 }
 
 /** Run klippy's batch mode on `gcode` (text). `config`: a printer.cfg path (default klipper/printer.cfg). */
-export async function runKlipper(gcode: string, options: { config?: string; timeoutMs?: number } = {}): Promise<KlipperResult> {
+export async function runKlipper(
+  gcode: string,
+  options: { config?: string; timeoutMs?: number } = {},
+): Promise<KlipperResult> {
   const dir = mkdtempSync(join(tmpdir(), 'strata-klipper-'));
   try {
     const input = join(dir, 'in.gcode');
     writeFileSync(input, markGcode(gcode));
-    const args = ['-m', 'klippy.klippy', options.config ?? KLIPPER_CONFIG, '-i', input, '-o', join(dir, 'out.serial'), '-d', KLIPPER_DICT];
+    const args = [
+      '-m',
+      'klippy.klippy',
+      options.config ?? KLIPPER_CONFIG,
+      '-i',
+      input,
+      '-o',
+      join(dir, 'out.serial'),
+      '-d',
+      KLIPPER_DICT,
+    ];
     const child = spawn(KLIPPER_PYTHON, args, { cwd: KLIPPER_SRC, stdio: ['ignore', 'ignore', 'pipe'] });
     let stderr = '';
     child.stderr!.on('data', (d) => (stderr = (stderr + d).slice(-1_000_000)));
@@ -117,9 +130,16 @@ export function parseKlipperLog(log: string, code: number | null): KlipperResult
     if (mark) marks.push(Number(mark[1]));
     else if (/Unknown command/.test(line)) errors.push(line.replace(/^.*?Unknown command/, 'Unknown command'));
     // a refused command: logged as a warning (its detail lines follow without a level)
-    else if (/^(?:WARNING|ERROR):root:/.test(line) || /^!! /.test(line)) errors.push(line.replace(/^(?:WARNING|ERROR):root:|^!! /, ''));
+    else if (/^(?:WARNING|ERROR):root:/.test(line) || /^!! /.test(line))
+      errors.push(line.replace(/^(?:WARNING|ERROR):root:|^!! /, ''));
   }
   const totalSeconds = marks.length >= 2 ? marks[marks.length - 1]! - marks[0]! : NaN;
   const printTimeSeconds = marks.length >= 4 ? marks[2]! - marks[1]! : totalSeconds;
-  return { accepted: code === 0 && errors.length === 0 && marks.length >= 2, errors, printTimeSeconds, totalSeconds, log };
+  return {
+    accepted: code === 0 && errors.length === 0 && marks.length >= 2,
+    errors,
+    printTimeSeconds,
+    totalSeconds,
+    log,
+  };
 }

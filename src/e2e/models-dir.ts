@@ -28,7 +28,10 @@ export function inCi(): boolean {
  */
 export function skipWithoutModels(): string | false {
   if (modelsAvailable()) return false;
-  if (inCi()) throw new Error(`the shared models are missing (${MODELS_DIR}): under CI the end-to-end tests fail rather than skip`);
+  if (inCi())
+    throw new Error(
+      `the shared models are missing (${MODELS_DIR}): under CI the end-to-end tests fail rather than skip`,
+    );
   return `shared models not found in ${MODELS_DIR}`;
 }
 

@@ -40,14 +40,18 @@ export interface SlicedModel {
  * options (for example the support checks' overhangAngleDeg or supportGapLayers, or a modelZOffset).
  */
 export async function sliceAndAnalyze(
-  name: string, options: SliceOptions = {}, analyze: Partial<AnalyzeOptions> = {},
+  name: string,
+  options: SliceOptions = {},
+  analyze: Partial<AnalyzeOptions> = {},
 ): Promise<SlicedModel> {
   return sliceAndAnalyzeInput(readModel(name), options, analyze);
 }
 
 /** `sliceAndAnalyze` of any input the library reads (file bytes, raw typed arrays). */
 export async function sliceAndAnalyzeInput(
-  input: unknown, options: SliceOptions = {}, analyze: Partial<AnalyzeOptions> = {},
+  input: unknown,
+  options: SliceOptions = {},
+  analyze: Partial<AnalyzeOptions> = {},
 ): Promise<SlicedModel> {
   const slicer = new Slicer({ threads: 1, ...options });
   const { gcode, stats, warnings } = await slicer.slice(input);

@@ -21,7 +21,11 @@ interface PackFile {
 
 function packedFiles(): string[] {
   const npm = process.platform === 'win32' ? 'npm.cmd' : 'npm';
-  const r = spawnSync(npm, ['pack', '--dry-run', '--json', '--ignore-scripts'], { cwd: ROOT, encoding: 'utf8', shell: process.platform === 'win32' });
+  const r = spawnSync(npm, ['pack', '--dry-run', '--json', '--ignore-scripts'], {
+    cwd: ROOT,
+    encoding: 'utf8',
+    shell: process.platform === 'win32',
+  });
   assert.equal(r.status, 0, r.stderr);
   const [report] = JSON.parse(r.stdout) as Array<{ files: PackFile[] }>;
   return report.files.map((f) => f.path.replace(/\\/g, '/')).sort();
@@ -30,7 +34,9 @@ function packedFiles(): string[] {
 /** Relative module specifiers a .js or .d.ts file refers to (imports, re-exports, dynamic imports, worker URLs). */
 function references(file: string): string[] {
   // comments may quote a specifier without using it
-  const text = readFileSync(join(ROOT, file), 'utf8').replace(/\/\*[\s\S]*?\*\//g, '').replace(/^\s*\/\/.*$/gm, '');
+  const text = readFileSync(join(ROOT, file), 'utf8')
+    .replace(/\/\*[\s\S]*?\*\//g, '')
+    .replace(/^\s*\/\/.*$/gm, '');
   const out: string[] = [];
   const patterns = [
     // import/export … from "./x.js", also minified (import{a}from"./x.js"), and side-effect imports
@@ -40,7 +46,8 @@ function references(file: string): string[] {
     // the clipping engine's loader finds its WebAssembly beside itself
     /\bnew URL\(\s*['"]([\w.-]+\.wasm)['"]\s*,\s*import\.meta\.url\s*\)/g,
   ];
-  for (const re of patterns) for (const m of text.matchAll(re)) out.push(normalize(join(dirname(file), m[1])).replace(/\\/g, '/'));
+  for (const re of patterns)
+    for (const m of text.matchAll(re)) out.push(normalize(join(dirname(file), m[1])).replace(/\\/g, '/'));
   return out;
 }
 
@@ -53,16 +60,25 @@ test('npm pack ships the library, CLI, worker, types, infillers and examples, an
     bin: Record<string, string>;
     exports: unknown;
   };
-  const leaves = (v: unknown): string[] => (typeof v === 'string' ? [v] : v && typeof v === 'object' ? Object.values(v).flatMap(leaves) : []);
+  const leaves = (v: unknown): string[] =>
+    typeof v === 'string' ? [v] : v && typeof v === 'object' ? Object.values(v).flatMap(leaves) : [];
 
   // nothing a user never calls
-  const unwanted = files.filter((f) => /\.test\.|\.map$|(^|\/)(e2e|analysis|bench|tools|fixtures?)\/|\.gcode$|(^|\/)test-|(^|\/)bench\./.test(f));
+  const unwanted = files.filter((f) =>
+    /\.test\.|\.map$|(^|\/)(e2e|analysis|bench|tools|fixtures?)\/|\.gcode$|(^|\/)test-|(^|\/)bench\./.test(f),
+  );
   assert.deepEqual(unwanted, [], 'tests, fixtures, maps, G-code and developer tools are not published');
 
   // what users do use
   const strip = (p: string) => p.replace(/^\.\//, '');
   const roots = [pkg.main, pkg.types, ...Object.values(pkg.bin), ...leaves(pkg.exports)].map(strip);
-  for (const f of [...roots, 'package.json', 'README.md', 'dist/workers/layer-worker.js', 'examples/calibration-cube.stl']) {
+  for (const f of [
+    ...roots,
+    'package.json',
+    'README.md',
+    'dist/workers/layer-worker.js',
+    'examples/calibration-cube.stl',
+  ]) {
     assert.ok(shipped.has(f), `${f} is published`);
   }
   const infillers = files.filter((f) => /^infillers\/[^/]+\/(shader\.glsl|cells\.png)$/.test(f));
@@ -90,5 +106,9 @@ test('npm pack ships the library, CLI, worker, types, infillers and examples, an
   }
   assert.deepEqual(missing, [], 'every module an entry point reaches is published');
   const stray = files.filter((f) => f.startsWith('dist/') && !f.startsWith('dist/web/') && !reached.has(f));
-  assert.deepEqual(stray, [], 'published but used by nothing (a developer tool, or a stale file from an old build: rm -rf dist && npm run build)');
+  assert.deepEqual(
+    stray,
+    [],
+    'published but used by nothing (a developer tool, or a stale file from an old build: rm -rf dist && npm run build)',
+  );
 });

@@ -11,7 +11,16 @@ import { Slicer } from '../api/slicer.js';
 import { StrataError } from '../errors.js';
 import { VERSION } from '../pipeline/run.js';
 import { sendToPrinter } from '../send/node.js';
-import { getBytes, getJson, MOONRAKER_PYTHON, OCTOPRINT, OCTOPRINT_KEY, skipWithout, startMoonraker, startOctoPrint } from './print-hosts.js';
+import {
+  getBytes,
+  getJson,
+  MOONRAKER_PYTHON,
+  OCTOPRINT,
+  OCTOPRINT_KEY,
+  skipWithout,
+  startMoonraker,
+  startOctoPrint,
+} from './print-hosts.js';
 
 const CUBE = readFileSync(new URL('../../examples/calibration-cube.stl', import.meta.url));
 
@@ -32,29 +41,59 @@ async function failure(p: Promise<unknown>): Promise<string> {
   assert.fail('it succeeded');
 }
 
-test('OctoPrint: the upload is in its file list byte for byte; a wrong key is one line; the virtual printer prints it to its end', { skip: skipWithout(OCTOPRINT, 'OctoPrint'), timeout: 300_000 }, async () => {
+test('OctoPrint: the upload is in its file list byte for byte; a wrong key is one line; the virtual printer prints it to its end', {
+  skip: skipWithout(OCTOPRINT, 'OctoPrint'),
+  timeout: 300_000,
+}, async () => {
   const { gcode, stats } = sliceSmall();
   const host = await startOctoPrint(215);
   const key = { 'X-Api-Key': OCTOPRINT_KEY };
   try {
     const bytes = new TextEncoder().encode(gcode);
     let lastSent = 0;
-    const r = await sendToPrinter(bytes, { to: 'octoprint', url: host.url, apiKey: OCTOPRINT_KEY, name: 'cube.gcode', onProgress: ({ sent }) => (lastSent = sent) });
+    const r = await sendToPrinter(bytes, {
+      to: 'octoprint',
+      url: host.url,
+      apiKey: OCTOPRINT_KEY,
+      name: 'cube.gcode',
+      onProgress: ({ sent }) => (lastSent = sent),
+    });
     assert.deepEqual({ name: r.name, started: r.started }, { name: 'cube.gcode', started: false });
     assert.ok(lastSent > bytes.length, 'progress up to the whole form');
-    const list = (await getJson(`${host.url}/api/files/local?recursive=true`, key)) as { files: Array<{ name: string; size: number }> };
+    const list = (await getJson(`${host.url}/api/files/local?recursive=true`, key)) as {
+      files: Array<{ name: string; size: number }>;
+    };
     assert.equal(list.files.find((f) => f.name === 'cube.gcode')?.size, bytes.length);
-    assert.ok(same(await getBytes(`${host.url}/downloads/files/local/cube.gcode`, key), bytes), 'the host has the file byte for byte');
+    assert.ok(
+      same(await getBytes(`${host.url}/downloads/files/local/cube.gcode`, key), bytes),
+      'the host has the file byte for byte',
+    );
 
-    assert.match(await failure(sendToPrinter(bytes, { to: 'octoprint', url: host.url, apiKey: 'WRONG', name: 'cube.gcode' })), /^OctoPrint at http:\/\/127\.0\.0\.1:\d+ refused the API key \(403[^)]*\): check apiKey/);
-    assert.match(await failure(sendToPrinter(bytes, { to: 'octoprint', url: host.url, name: 'cube.gcode' })), /needs an API key \(403/);
+    assert.match(
+      await failure(sendToPrinter(bytes, { to: 'octoprint', url: host.url, apiKey: 'WRONG', name: 'cube.gcode' })),
+      /^OctoPrint at http:\/\/127\.0\.0\.1:\d+ refused the API key \(403[^)]*\): check apiKey/,
+    );
+    assert.match(
+      await failure(sendToPrinter(bytes, { to: 'octoprint', url: host.url, name: 'cube.gcode' })),
+      /needs an API key \(403/,
+    );
     // not connected to a printer: uploaded, and says it did not print
-    const idle = await sendToPrinter(bytes, { to: 'octoprint', url: host.url, apiKey: OCTOPRINT_KEY, name: 'cube.gcode', print: true });
+    const idle = await sendToPrinter(bytes, {
+      to: 'octoprint',
+      url: host.url,
+      apiKey: OCTOPRINT_KEY,
+      name: 'cube.gcode',
+      print: true,
+    });
     assert.equal(idle.started, false);
     assert.match(idle.notStarted!, /not connected/);
 
     // connect the virtual printer, send with print: it runs to its end
-    const connect = await fetch(`${host.url}/api/connection`, { method: 'POST', headers: { ...key, 'Content-Type': 'application/json' }, body: JSON.stringify({ command: 'connect', port: 'VIRTUAL', baudrate: 115200 }) });
+    const connect = await fetch(`${host.url}/api/connection`, {
+      method: 'POST',
+      headers: { ...key, 'Content-Type': 'application/json' },
+      body: JSON.stringify({ command: 'connect', port: 'VIRTUAL', baudrate: 115200 }),
+    });
     assert.equal(connect.status, 204);
     for (let i = 0; ; i++) {
       const c = (await getJson(`${host.url}/api/connection`, key)) as { current: { state: string } };
@@ -62,7 +101,13 @@ test('OctoPrint: the upload is in its file list byte for byte; a wrong key is on
       assert.ok(i < 120, `the virtual printer connects (${c.current.state})`);
       await new Promise((res) => setTimeout(res, 250));
     }
-    const printing = await sendToPrinter(bytes, { to: 'octoprint', url: host.url, apiKey: OCTOPRINT_KEY, name: 'cube.gcode', print: true });
+    const printing = await sendToPrinter(bytes, {
+      to: 'octoprint',
+      url: host.url,
+      apiKey: OCTOPRINT_KEY,
+      name: 'cube.gcode',
+      print: true,
+    });
     assert.equal(printing.started, true);
     let job: { state: string; progress: { completion: number | null } } = { state: '', progress: { completion: null } };
     const deadline = Date.now() + 240_000;
@@ -71,12 +116,20 @@ test('OctoPrint: the upload is in its file list byte for byte; a wrong key is on
       job = (await getJson(`${host.url}/api/job`, key)) as typeof job;
       if (job.state.startsWith('Printing')) seenPrinting = true;
       if (seenPrinting && job.state === 'Operational') break;
-      assert.ok(Date.now() < deadline, `the print ends (${job.state}, ${job.progress.completion} %)\n${host.log().slice(-2000)}`);
+      assert.ok(
+        Date.now() < deadline,
+        `the print ends (${job.state}, ${job.progress.completion} %)\n${host.log().slice(-2000)}`,
+      );
       await new Promise((res) => setTimeout(res, 500));
     }
     type FileInfo = {
       prints?: { last?: { success: boolean } };
-      gcodeAnalysis?: { dimensions: { height: number }; filament: { tool0: { length: number } }; estimatedPrintTime: number; printingArea: { minX: number; maxX: number; minY: number; maxY: number } };
+      gcodeAnalysis?: {
+        dimensions: { height: number };
+        filament: { tool0: { length: number } };
+        estimatedPrintTime: number;
+        printingArea: { minX: number; maxX: number; minY: number; maxY: number };
+      };
     };
     // OctoPrint analyses an uploaded file in the background, and not while it prints
     let info: FileInfo = {};
@@ -89,16 +142,30 @@ test('OctoPrint: the upload is in its file list byte for byte; a wrong key is on
     assert.equal(info.prints?.last?.success, true, 'printed to its end');
     // OctoPrint's own analysis of the file agrees with the slice (its printing area and filament include the start G-code's prime line)
     const a = info.gcodeAnalysis!;
-    assert.ok(Math.abs(a.dimensions.height - stats.bounds.maxZ) < 0.01, `height ${a.dimensions.height} vs ${stats.bounds.maxZ}`);
-    assert.ok(a.filament.tool0.length >= stats.filamentMm - 0.5 && a.filament.tool0.length <= stats.filamentMm + 40, `filament ${a.filament.tool0.length} vs ${stats.filamentMm} mm`);
-    assert.ok(a.printingArea.minX <= stats.bounds.minX && a.printingArea.maxX >= stats.bounds.maxX && a.printingArea.minY <= stats.bounds.minY && a.printingArea.maxY >= stats.bounds.maxY);
+    assert.ok(
+      Math.abs(a.dimensions.height - stats.bounds.maxZ) < 0.01,
+      `height ${a.dimensions.height} vs ${stats.bounds.maxZ}`,
+    );
+    assert.ok(
+      a.filament.tool0.length >= stats.filamentMm - 0.5 && a.filament.tool0.length <= stats.filamentMm + 40,
+      `filament ${a.filament.tool0.length} vs ${stats.filamentMm} mm`,
+    );
+    assert.ok(
+      a.printingArea.minX <= stats.bounds.minX &&
+        a.printingArea.maxX >= stats.bounds.maxX &&
+        a.printingArea.minY <= stats.bounds.minY &&
+        a.printingArea.maxY >= stats.bounds.maxY,
+    );
     assert.ok(a.estimatedPrintTime > 0);
   } finally {
     await host.stop();
   }
 });
 
-test('Moonraker: the upload is in its file list byte for byte; a wrong key is one line; with no Klipper it says the print did not start', { skip: skipWithout(MOONRAKER_PYTHON, 'Moonraker'), timeout: 120_000 }, async () => {
+test('Moonraker: the upload is in its file list byte for byte; a wrong key is one line; with no Klipper it says the print did not start', {
+  skip: skipWithout(MOONRAKER_PYTHON, 'Moonraker'),
+  timeout: 120_000,
+}, async () => {
   const { gcode } = sliceSmall();
   const host = await startMoonraker();
   try {
@@ -106,11 +173,25 @@ test('Moonraker: the upload is in its file list byte for byte; a wrong key is on
     const bytes = new TextEncoder().encode(gcode);
     const r = await sendToPrinter(bytes, { to: 'moonraker', url: host.url, apiKey, name: 'cube.gcode' });
     assert.deepEqual({ name: r.name, started: r.started }, { name: 'cube.gcode', started: false });
-    const list = (await getJson(`${host.url}/server/files/list?root=gcodes`)) as { result: Array<{ path: string; size: number }> };
+    const list = (await getJson(`${host.url}/server/files/list?root=gcodes`)) as {
+      result: Array<{ path: string; size: number }>;
+    };
     assert.equal(list.result.find((f) => f.path === 'cube.gcode')?.size, bytes.length);
-    assert.ok(same(await getBytes(`${host.url}/server/files/gcodes/cube.gcode`), bytes), 'the host has the file byte for byte');
-    assert.match(await failure(sendToPrinter(bytes, { to: 'moonraker', url: host.url, apiKey: 'WRONG', name: 'cube.gcode' })), /^Moonraker at http:\/\/127\.0\.0\.1:\d+ refused the API key \(401 Unauthorized\)/);
-    const printing = await sendToPrinter(bytes, { to: 'moonraker', url: host.url, apiKey, name: 'cube2.gcode', print: true });
+    assert.ok(
+      same(await getBytes(`${host.url}/server/files/gcodes/cube.gcode`), bytes),
+      'the host has the file byte for byte',
+    );
+    assert.match(
+      await failure(sendToPrinter(bytes, { to: 'moonraker', url: host.url, apiKey: 'WRONG', name: 'cube.gcode' })),
+      /^Moonraker at http:\/\/127\.0\.0\.1:\d+ refused the API key \(401 Unauthorized\)/,
+    );
+    const printing = await sendToPrinter(bytes, {
+      to: 'moonraker',
+      url: host.url,
+      apiKey,
+      name: 'cube2.gcode',
+      print: true,
+    });
     assert.equal(printing.started, false);
     assert.match(printing.notStarted!, /Klipper is not ready/);
   } finally {
@@ -118,7 +199,10 @@ test('Moonraker: the upload is in its file list byte for byte; a wrong key is on
   }
 });
 
-test("Moonraker's metadata (what Mainsail and Fluidd show) reads Strata's G-code right", { skip: skipWithout(MOONRAKER_PYTHON, 'Moonraker'), timeout: 120_000 }, async () => {
+test("Moonraker's metadata (what Mainsail and Fluidd show) reads Strata's G-code right", {
+  skip: skipWithout(MOONRAKER_PYTHON, 'Moonraker'),
+  timeout: 120_000,
+}, async () => {
   const host = await startMoonraker();
   try {
     for (const [name, options] of [
@@ -129,8 +213,14 @@ test("Moonraker's metadata (what Mainsail and Fluidd show) reads Strata's G-code
       const { gcode, stats } = sliceSmall(options);
       const cfg = new Slicer(options).config;
       await sendToPrinter(gcode, { to: 'moonraker', url: host.url, name });
-      const m = ((await getJson(`${host.url}/server/files/metadata?filename=${name}`)) as { result: Record<string, unknown> }).result;
-      const near = (key: string, want: number, tol: number) => assert.ok(typeof m[key] === 'number' && Math.abs((m[key] as number) - want) <= tol, `${name} ${key}: ${m[key]} vs ${want}`);
+      const m = (
+        (await getJson(`${host.url}/server/files/metadata?filename=${name}`)) as { result: Record<string, unknown> }
+      ).result;
+      const near = (key: string, want: number, tol: number) =>
+        assert.ok(
+          typeof m[key] === 'number' && Math.abs((m[key] as number) - want) <= tol,
+          `${name} ${key}: ${m[key]} vs ${want}`,
+        );
       assert.equal(m.slicer, 'Strata', name);
       assert.equal(m.slicer_version, VERSION, name);
       near('layer_height', cfg.layerHeight, 1e-6);

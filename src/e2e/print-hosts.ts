@@ -42,8 +42,20 @@ export interface RunningHost {
 }
 
 /** Start a server process and wait until `ready` answers 200 (or the process ends, or `timeoutMs` passes). */
-async function start(command: string, args: string[], url: string, ready: string, dir: string, headers: Record<string, string> = {}, timeoutMs = 90_000): Promise<RunningHost> {
-  const child: ChildProcess = spawn(command, args, { cwd: dir, stdio: ['ignore', 'pipe', 'pipe'], env: { ...process.env, PYTHONUNBUFFERED: '1' } });
+async function start(
+  command: string,
+  args: string[],
+  url: string,
+  ready: string,
+  dir: string,
+  headers: Record<string, string> = {},
+  timeoutMs = 90_000,
+): Promise<RunningHost> {
+  const child: ChildProcess = spawn(command, args, {
+    cwd: dir,
+    stdio: ['ignore', 'pipe', 'pipe'],
+    env: { ...process.env, PYTHONUNBUFFERED: '1' },
+  });
   let output = '';
   child.stdout!.on('data', (d) => (output = (output + d).slice(-20_000)));
   child.stderr!.on('data', (d) => (output = (output + d).slice(-20_000)));
@@ -118,7 +130,14 @@ export async function startOctoPrint(nozzleC: number): Promise<RunningHost> {
   );
   // OctoPrint refuses to run as root unless told (CI machines often are root)
   const root = process.getuid?.() === 0 ? ['--iknowwhatimdoing'] : [];
-  return start(OCTOPRINT, ['serve', ...root, '--basedir', dir, '--host', '127.0.0.1', '--port', String(port)], `http://127.0.0.1:${port}`, '/api/version', dir, { 'X-Api-Key': OCTOPRINT_KEY });
+  return start(
+    OCTOPRINT,
+    ['serve', ...root, '--basedir', dir, '--host', '127.0.0.1', '--port', String(port)],
+    `http://127.0.0.1:${port}`,
+    '/api/version',
+    dir,
+    { 'X-Api-Key': OCTOPRINT_KEY },
+  );
 }
 
 /** Moonraker with no Klipper, this machine a trusted client (for /access/api_key) and any page origin allowed. */

@@ -14,16 +14,29 @@ import { Feature } from '../analysis/feature-names.js';
 import type { ParsedGcode } from '../analysis/gcode-types.js';
 
 type Box = [number, number, number, number, number, number];
-const FACES = [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7];
+const FACES = [
+  0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7,
+];
 
 /** One 3MF object holding these boxes' triangles in order (twelve each): PrusaSlicer's volumes are ranges of them. */
 function objectXml(id: number, boxes: Box[]): string {
-  const v: string[] = [], t: string[] = [];
+  const v: string[] = [],
+    t: string[] = [];
   boxes.forEach(([x0, y0, z0, x1, y1, z1], b) => {
-    for (const [x, y, z] of [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0, 1], [1, 0, 1], [1, 1, 1], [0, 1, 1]]) {
+    for (const [x, y, z] of [
+      [0, 0, 0],
+      [1, 0, 0],
+      [1, 1, 0],
+      [0, 1, 0],
+      [0, 0, 1],
+      [1, 0, 1],
+      [1, 1, 1],
+      [0, 1, 1],
+    ]) {
       v.push(`<vertex x="${x ? x1 : x0}" y="${y ? y1 : y0}" z="${z ? z1 : z0}"/>`);
     }
-    for (let i = 0; i < FACES.length; i += 3) t.push(`<triangle v1="${8 * b + FACES[i]}" v2="${8 * b + FACES[i + 1]}" v3="${8 * b + FACES[i + 2]}"/>`);
+    for (let i = 0; i < FACES.length; i += 3)
+      t.push(`<triangle v1="${8 * b + FACES[i]}" v2="${8 * b + FACES[i + 1]}" v3="${8 * b + FACES[i + 2]}"/>`);
   });
   return `<object id="${id}" type="model"><mesh><vertices>${v.join('')}</vertices><triangles>${t.join('')}</triangles></mesh></object>`;
 }
@@ -35,52 +48,92 @@ interface Volume {
 }
 
 /** A project of one object (at the bed position its build item gives), its volumes, print settings and layer ranges. */
-function prusaProject(volumes: Volume[], objectSettings: Record<string, string>, print: Record<string, string>, ranges = ''): Uint8Array {
+function prusaProject(
+  volumes: Volume[],
+  objectSettings: Record<string, string>,
+  print: Record<string, string>,
+  ranges = '',
+): Uint8Array {
   const model =
     '<?xml version="1.0" encoding="UTF-8"?>\n<model unit="millimeter" xml:lang="en-US" xmlns="http://schemas.microsoft.com/3dmanufacturing/core/2015/02" ' +
     'xmlns:slic3rpe="http://schemas.slic3r.org/3mf/2017/06"><metadata name="slic3rpe:Version3mf">1</metadata><resources>' +
-    objectXml(1, volumes.map((v) => v.box)) +
+    objectXml(
+      1,
+      volumes.map((v) => v.box),
+    ) +
     '</resources><build><item objectid="1" transform="1 0 0 0 1 0 0 0 1 60 60 0" printable="1"/></build></model>';
   const meta = (type: string, key: string, value: string) => `<metadata type="${type}" key="${key}" value="${value}"/>`;
   const config =
     '<?xml version="1.0" encoding="UTF-8"?>\n<config><object id="1" instances_count="1">' +
     meta('object', 'name', 'bracket') +
-    Object.entries(objectSettings).map(([k, v]) => meta('object', k, v)).join('') +
+    Object.entries(objectSettings)
+      .map(([k, v]) => meta('object', k, v))
+      .join('') +
     volumes
-      .map((v, i) =>
-        `<volume firstid="${12 * i}" lastid="${12 * i + 11}">` +
-        meta('volume', 'name', `${v.type} ${i}`) +
-        meta('volume', 'volume_type', v.type) +
-        meta('volume', 'matrix', '1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1') +
-        Object.entries(v.settings ?? {}).map(([k, s]) => meta('volume', k, s)).join('') +
-        '<mesh edges_fixed="0" degenerate_facets="0" facets_removed="0" facets_reversed="0" backwards_edges="0"/></volume>',
+      .map(
+        (v, i) =>
+          `<volume firstid="${12 * i}" lastid="${12 * i + 11}">` +
+          meta('volume', 'name', `${v.type} ${i}`) +
+          meta('volume', 'volume_type', v.type) +
+          meta('volume', 'matrix', '1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1') +
+          Object.entries(v.settings ?? {})
+            .map(([k, s]) => meta('volume', k, s))
+            .join('') +
+          '<mesh edges_fixed="0" degenerate_facets="0" facets_removed="0" facets_reversed="0" backwards_edges="0"/></volume>',
       )
       .join('') +
     '</object></config>';
   const files: Record<string, Uint8Array> = {
-    '[Content_Types].xml': strToU8('<?xml version="1.0" encoding="UTF-8"?>\n<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types"><Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/><Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>'),
-    '_rels/.rels': strToU8('<?xml version="1.0" encoding="UTF-8"?>\n<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="rel-1" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>'),
+    '[Content_Types].xml': strToU8(
+      '<?xml version="1.0" encoding="UTF-8"?>\n<Types xmlns="http://schemas.openxmlformats.org/package/2006/content-types"><Default Extension="rels" ContentType="application/vnd.openxmlformats-package.relationships+xml"/><Default Extension="model" ContentType="application/vnd.ms-package.3dmanufacturing-3dmodel+xml"/></Types>',
+    ),
+    '_rels/.rels': strToU8(
+      '<?xml version="1.0" encoding="UTF-8"?>\n<Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="rel-1" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>',
+    ),
     '3D/3dmodel.model': strToU8(model),
     'Metadata/Slic3r_PE_model.config': strToU8(config),
-    'Metadata/Slic3r_PE.config': strToU8('; generated by PrusaSlicer 2.7.1\n\n' + Object.entries(print).map(([k, v]) => `; ${k} = ${v}`).join('\n') + '\n'),
+    'Metadata/Slic3r_PE.config': strToU8(
+      '; generated by PrusaSlicer 2.7.1\n\n' +
+        Object.entries(print)
+          .map(([k, v]) => `; ${k} = ${v}`)
+          .join('\n') +
+        '\n',
+    ),
   };
-  if (ranges) files['Metadata/Prusa_Slicer_layer_config_ranges.xml'] = strToU8(`<?xml version="1.0" encoding="utf-8"?>\n<objects><object id="1">${ranges}</object></objects>`);
+  if (ranges)
+    files['Metadata/Prusa_Slicer_layer_config_ranges.xml'] = strToU8(
+      `<?xml version="1.0" encoding="utf-8"?>\n<objects><object id="1">${ranges}</object></objects>`,
+    );
   return zipSync(files);
 }
 
 const FILAMENT_AREA = (Math.PI * 1.75 * 1.75) / 4;
 
 /** Filament (mm³) of these features inside [x0, x1] × [y0, y1] on the layer at Z, segments clipped to it. */
-function volumeIn(g: ParsedGcode, z: number, [x0, y0, x1, y1]: [number, number, number, number], features: number[]): number {
+function volumeIn(
+  g: ParsedGcode,
+  z: number,
+  [x0, y0, x1, y1]: [number, number, number, number],
+  features: number[],
+): number {
   const l = g.layers.find((x) => Math.abs(x.z - z) < 0.1);
   assert.ok(l, `a layer at Z ${z}`);
   const t = l.extrusions;
   let v = 0;
   for (let i = 0; i < t.count; i++) {
     if (!features.includes(t.feature[i])) continue;
-    const ax = t.x0[i], ay = t.y0[i], dx = t.x1[i] - ax, dy = t.y1[i] - ay;
-    let a = 0, b = 1;
-    for (const [p, q] of [[-dx, ax - x0], [dx, x1 - ax], [-dy, ay - y0], [dy, y1 - ay]]) {
+    const ax = t.x0[i],
+      ay = t.y0[i],
+      dx = t.x1[i] - ax,
+      dy = t.y1[i] - ay;
+    let a = 0,
+      b = 1;
+    for (const [p, q] of [
+      [-dx, ax - x0],
+      [dx, x1 - ax],
+      [-dy, ay - y0],
+      [dy, y1 - ay],
+    ]) {
       if (p === 0) {
         if (q < 0) b = -1;
       } else if (p < 0) a = Math.max(a, q / p);
@@ -90,10 +143,19 @@ function volumeIn(g: ParsedGcode, z: number, [x0, y0, x1, y1]: [number, number, 
   }
   return v;
 }
-const density = (g: ParsedGcode, z: number, r: [number, number, number, number]) => (100 * volumeIn(g, z, r, [Feature.Fill])) / ((r[2] - r[0]) * (r[3] - r[1]) * 0.2);
+const density = (g: ParsedGcode, z: number, r: [number, number, number, number]) =>
+  (100 * volumeIn(g, z, r, [Feature.Fill])) / ((r[2] - r[0]) * (r[3] - r[1]) * 0.2);
 
 // in object coordinates: a 40 × 20 × 10 bar; the build item puts it at (60, 60)
-const PRINT = { layer_height: '0.2', first_layer_height: '0.2', fill_density: '15%', fill_pattern: 'rectilinear', perimeters: '2', skirts: '0', brim_width: '0' };
+const PRINT = {
+  layer_height: '0.2',
+  first_layer_height: '0.2',
+  fill_density: '15%',
+  fill_pattern: 'rectilinear',
+  perimeters: '2',
+  skirts: '0',
+  brim_width: '0',
+};
 
 test('a PrusaSlicer project: the modifier region gets its density, the negative volume its hole, the layer range its layers', async () => {
   const bytes = prusaProject(
@@ -109,9 +171,13 @@ test('a PrusaSlicer project: the modifier region gets its density, the negative 
   const { gcode, warnings } = await new Slicer({ threads: 1 }).slice(bytes);
   const g = parseGcode(gcode);
   // the object stays where the project put it: 60..100 × 60..80
-  assert.ok(g.extents && Math.abs(g.extents.min[0] - 60.2) < 0.3 && Math.abs(g.extents.max[0] - 99.8) < 0.3, JSON.stringify(g.extents));
+  assert.ok(
+    g.extents && Math.abs(g.extents.min[0] - 60.2) < 0.3 && Math.abs(g.extents.max[0] - 99.8) < 0.3,
+    JSON.stringify(g.extents),
+  );
   assert.ok(g.extents.max[2] <= 10.01, 'the modifier is not printed');
-  const left: [number, number, number, number] = [62, 64, 69, 76], right: [number, number, number, number] = [84, 64, 96, 76];
+  const left: [number, number, number, number] = [62, 64, 69, 76],
+    right: [number, number, number, number] = [84, 64, 96, 76];
   const at = (z: number, r: [number, number, number, number]) => density(g, z, r).toFixed(0);
   assert.ok(Math.abs(density(g, 4, left) - 15) < 4, `outside the modifier ${at(4, left)} %`);
   assert.ok(Math.abs(density(g, 4, right) - 80) < 12, `inside the modifier ${at(4, right)} %`);
@@ -128,8 +194,15 @@ test('a PrusaSlicer project: the support blocker leaves its overhang without sup
     { box: [0, 0, 6, 40, 10, 8], type: 'ModelPart' },
     { box: [-5, -5, -1, 13, 15, 12], type: 'SupportBlocker' },
   ];
-  const g = parseGcode((await new Slicer({ threads: 1 }).slice(prusaProject(volumes, { support_material: '1' }, { ...PRINT, support_material: '0' }))).gcode);
-  const support = (r: [number, number, number, number]) => volumeIn(g, 3, r, [Feature.Support, Feature.SupportInterface]);
+  const g = parseGcode(
+    (
+      await new Slicer({ threads: 1 }).slice(
+        prusaProject(volumes, { support_material: '1' }, { ...PRINT, support_material: '0' }),
+      )
+    ).gcode,
+  );
+  const support = (r: [number, number, number, number]) =>
+    volumeIn(g, 3, r, [Feature.Support, Feature.SupportInterface]);
   assert.equal(support([61, 61, 72, 69]), 0, 'no support under the blocked shelf');
   assert.ok(support([88, 61, 99, 69]) > 1, 'the other shelf is held');
 });
@@ -147,7 +220,10 @@ test("a PrusaSlicer project's layer range with its own layer_height prints that 
   const g = parseGcode(gcode);
   const thick = g.layers.map((l) => [Math.round(l.z * 1000), Math.round(l.thickness * 1000)]);
   // 0.2 mm to 6, 20 layers of 0.1 to 8, 0.2 mm again (a range repeating the print's height sets nothing)
-  assert.deepEqual(thick.filter(([z]) => z > 6000 && z <= 8000).map(([, t]) => t), new Array(20).fill(100));
+  assert.deepEqual(
+    thick.filter(([z]) => z > 6000 && z <= 8000).map(([, t]) => t),
+    new Array(20).fill(100),
+  );
   assert.ok(thick.filter(([z]) => z <= 6000 || z > 8000).every(([, t]) => t === 200));
   assert.equal(g.layers.length, 30 + 20 + 10);
 });

@@ -14,7 +14,10 @@ for (const name of MODEL_FILES) {
     const s = report.summary;
     assert.equal(layers, s.expectedLayerCount, 'layers planned');
     // the top layer may hold only a section narrower than one line, which no slicer prints
-    assert.ok(s.layerCount === s.expectedLayerCount || s.layerCount === s.expectedLayerCount - 1, `layers printed ${s.layerCount}`);
+    assert.ok(
+      s.layerCount === s.expectedLayerCount || s.layerCount === s.expectedLayerCount - 1,
+      `layers printed ${s.layerCount}`,
+    );
     assert.equal(s.firstLayerZ, 0.2, 'first layer printed at its own height');
     assert.equal(s.zMismatchCount, 0, 'every layer at firstLayerHeight + k·layerHeight');
     assert.ok(s.walls.coverage !== null && s.walls.coverage >= 0.97, `outline coverage ${s.walls.coverage}`);
@@ -27,11 +30,17 @@ for (const name of MODEL_FILES) {
     // CuraEngine) reads as open; above its base it is held to the same bar in the test below
     if (name !== 'stanford-bunny.stl') {
       assert.ok(s.skin.top.coverage === null || s.skin.top.coverage >= 0.99, `top skin ${s.skin.top.coverage}`);
-      assert.ok(s.skin.bottom.coverage === null || s.skin.bottom.coverage >= 0.99, `bottom skin ${s.skin.bottom.coverage}`);
+      assert.ok(
+        s.skin.bottom.coverage === null || s.skin.bottom.coverage >= 0.99,
+        `bottom skin ${s.skin.bottom.coverage}`,
+      );
     }
     // density is judged where there is enough sparse region for it to mean something: 20 ± 1 %
     if (s.infill.regionAreaMm2 >= 500) {
-      assert.ok(s.infill.density !== null && Math.abs(s.infill.density - 0.2) <= 0.01, `sparse density ${s.infill.density}`);
+      assert.ok(
+        s.infill.density !== null && Math.abs(s.infill.density - 0.2) <= 0.01,
+        `sparse density ${s.infill.density}`,
+      );
     }
   });
 }
@@ -48,7 +57,8 @@ test('stanford bunny above its open base: top and bottom skin ≥ 99 %', { skip,
   // the scan's open base reaches 3 mm up (layer 15): how to close it is a mesh-repair question
   const above = report.layers.filter((l) => l.z > 3.2);
   for (const side of ['topSkin', 'bottomSkin'] as const) {
-    let area = 0, covered = 0;
+    let area = 0,
+      covered = 0;
     for (const l of above) {
       const m = l[side];
       if (m.coverage === null) continue;

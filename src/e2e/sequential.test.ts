@@ -26,7 +26,14 @@ interface Part {
   top: number;
 }
 
-const part = (name: string, x0: number, y0: number, size: number, top: number): Part => ({ name, x0, y0, x1: x0 + size, y1: y0 + size, top });
+const part = (name: string, x0: number, y0: number, size: number, top: number): Part => ({
+  name,
+  x0,
+  y0,
+  x1: x0 + size,
+  y1: y0 + size,
+  top,
+});
 const meshOf = (p: Part): Arrays => box(p.x0, p.y0, 0, p.x1, p.y1, p.top);
 
 async function slice(parts: readonly Part[], options: Record<string, unknown> = {}) {
@@ -54,7 +61,10 @@ interface Move {
  */
 function movesOf(gcode: string): Move[] {
   const moves: Move[] = [];
-  let x = NaN, y = NaN, z = NaN, e = 0;
+  let x = NaN,
+    y = NaN,
+    z = NaN,
+    e = 0;
   let label: string | null = null;
   const lines = gcode.split('\n');
   const from = lines.indexOf(';LAYER:0');
@@ -76,7 +86,10 @@ function movesOf(gcode: string): Move[] {
       const m = new RegExp(`\\b${c}(-?[\\d.]+)`).exec(code);
       return m ? Number(m[1]) : undefined;
     };
-    const nx = word('X') ?? x, ny = word('Y') ?? y, nz = word('Z') ?? z, ne = word('E') ?? e;
+    const nx = word('X') ?? x,
+      ny = word('Y') ?? y,
+      nz = word('Z') ?? z,
+      ne = word('E') ?? e;
     const moved = nx !== x || ny !== y;
     moves.push({ line: i, x0: x, y0: y, x: nx, y: ny, z: nz, extrudes: moved && ne > e + 1e-9, label });
     x = nx;
@@ -94,9 +107,16 @@ function partAt(parts: readonly Part[], x: number, y: number, margin = 0.5): num
 
 /** Whether the segment passes over the rectangle (Liang–Barsky clip). */
 function crosses(m: Move, p: Part, margin: number): boolean {
-  let t0 = 0, t1 = 1;
-  const dx = m.x - m.x0, dy = m.y - m.y0;
-  for (const [q, r] of [[-dx, m.x0 - (p.x0 - margin)], [dx, p.x1 + margin - m.x0], [-dy, m.y0 - (p.y0 - margin)], [dy, p.y1 + margin - m.y0]]) {
+  let t0 = 0,
+    t1 = 1;
+  const dx = m.x - m.x0,
+    dy = m.y - m.y0;
+  for (const [q, r] of [
+    [-dx, m.x0 - (p.x0 - margin)],
+    [dx, p.x1 + margin - m.x0],
+    [-dy, m.y0 - (p.y0 - margin)],
+    [dy, p.y1 + margin - m.y0],
+  ]) {
     if (q === 0) {
       if (r < 0) return false;
     } else {
@@ -121,19 +141,26 @@ function sequentialProblems(gcode: string, parts: readonly Part[], order: readon
   const owner = ext.map((m) => partAt(parts, m.x, m.y));
   const firstObjectLayer2 = ext.findIndex((m, i) => owner[i] >= 0 && m.z > FIRST_LAYER + 1e-6);
   ext.forEach((m, i) => {
-    if (owner[i] < 0 && (firstObjectLayer2 < 0 || i > firstObjectLayer2)) problems.push(`line ${m.line + 1}: extrusion outside every part after the first layer`);
-    if (owner[i] >= 0 && m.label !== null && m.label !== parts[owner[i]].name) problems.push(`line ${m.line + 1}: in ${parts[owner[i]].name} but labelled ${m.label}`);
+    if (owner[i] < 0 && (firstObjectLayer2 < 0 || i > firstObjectLayer2))
+      problems.push(`line ${m.line + 1}: extrusion outside every part after the first layer`);
+    if (owner[i] >= 0 && m.label !== null && m.label !== parts[owner[i]].name)
+      problems.push(`line ${m.line + 1}: in ${parts[owner[i]].name} but labelled ${m.label}`);
   });
   // 2. the parts' extrusions in one run each, in order
   const runs: number[] = [];
   for (const o of owner) if (o >= 0 && runs[runs.length - 1] !== o) runs.push(o);
-  if (runs.join() !== order.join()) problems.push(`objects printed in runs ${runs.map((o) => parts[o].name).join(', ')}, not ${order.map((o) => parts[o].name).join(', ')} once each`);
+  if (runs.join() !== order.join())
+    problems.push(
+      `objects printed in runs ${runs.map((o) => parts[o].name).join(', ')}, not ${order.map((o) => parts[o].name).join(', ')} once each`,
+    );
   // 3. each part's Z from the first layer up to its top, never down
   for (const o of order) {
     const zs = ext.filter((_, i) => owner[i] === o).map((m) => m.z);
     if (zs.length === 0) continue;
-    if (Math.abs(zs[0] - FIRST_LAYER) > 1e-6) problems.push(`${parts[o].name} starts at Z ${zs[0]}, not ${FIRST_LAYER}`);
-    if (Math.abs(zs[zs.length - 1] - parts[o].top) > 0.21) problems.push(`${parts[o].name} ends at Z ${zs[zs.length - 1]}, not at its top ${parts[o].top}`);
+    if (Math.abs(zs[0] - FIRST_LAYER) > 1e-6)
+      problems.push(`${parts[o].name} starts at Z ${zs[0]}, not ${FIRST_LAYER}`);
+    if (Math.abs(zs[zs.length - 1] - parts[o].top) > 0.21)
+      problems.push(`${parts[o].name} ends at Z ${zs[zs.length - 1]}, not at its top ${parts[o].top}`);
     for (let k = 1; k < zs.length; k++) {
       if (zs[k] < zs[k - 1] - 1e-6) {
         problems.push(`${parts[o].name}'s Z goes down from ${zs[k - 1]} to ${zs[k]}`);
@@ -152,15 +179,19 @@ function sequentialProblems(gcode: string, parts: readonly Part[], order: readon
       drops++;
       // Z goes down only straight down (no XY), onto the next part, from above everything printed
       if (m.x !== m.x0 || m.y !== m.y0) problems.push(`line ${m.line + 1}: Z goes down while moving in XY`);
-      if (!(prevZ > highest)) problems.push(`line ${m.line + 1}: Z goes down from ${prevZ}, not above the highest print so far (${highest})`);
+      if (!(prevZ > highest))
+        problems.push(`line ${m.line + 1}: Z goes down from ${prevZ}, not above the highest print so far (${highest})`);
       const below = partAt(parts, m.x, m.y, 2);
-      if (below < 0 || lastLine[below] < m.line) problems.push(`line ${m.line + 1}: comes down at (${m.x}, ${m.y}) outside a part still to print`);
+      if (below < 0 || lastLine[below] < m.line)
+        problems.push(`line ${m.line + 1}: comes down at (${m.x}, ${m.y}) outside a part still to print`);
     }
     const moved = m.x !== m.x0 || m.y !== m.y0;
     if (moved && Number.isFinite(m.x0)) {
       parts.forEach((p, o) => {
         if (lastLine[o] >= 0 && lastLine[o] < m.line && crosses(m, p, 1) && m.z <= p.top + 0.2 + 1e-6) {
-          problems.push(`line ${m.line + 1}: ${m.extrudes ? 'extrudes' : 'moves'} over finished ${p.name} at Z ${m.z} (its top ${p.top})`);
+          problems.push(
+            `line ${m.line + 1}: ${m.extrudes ? 'extrudes' : 'moves'} over finished ${p.name} at Z ${m.z} (its top ${p.top})`,
+          );
         }
       });
     }
@@ -197,10 +228,17 @@ test('three parts print one at a time, each from its first layer to its top, lif
   assert.deepEqual(layerCounts(gcode), { markers: layers, declared: layers, times: layers, trailer: layers });
   assert.equal(stats.layers, layers);
   const numbers = (gcode.match(/^;LAYER:(\d+)$/gm) ?? []).map((l) => Number(l.slice(7)));
-  assert.deepEqual(numbers, numbers.map((_, i) => i), 'consecutive layer numbers');
+  assert.deepEqual(
+    numbers,
+    numbers.map((_, i) => i),
+    'consecutive layer numbers',
+  );
   // progress only goes forward
   const percents = (gcode.match(/^M73 P(\d+)/gm) ?? []).map((l) => Number(l.slice(5)));
-  assert.ok(percents.every((p, i) => i === 0 || p >= percents[i - 1]), 'M73 never goes back');
+  assert.ok(
+    percents.every((p, i) => i === 0 || p >= percents[i - 1]),
+    'M73 never goes back',
+  );
   // one skirt, at the start
   assert.equal((gcode.match(/^;TYPE:SKIRT$/gm) ?? []).length, 1);
   // the analyser reads it: the distinct print heights, up to the tallest part, with balanced retractions
@@ -213,12 +251,22 @@ test('three parts print one at a time, each from its first layer to its top, lif
 test('the checks fail on the same parts printed all at once', async () => {
   const { gcode } = await slice([A, B, C], { zHop: 0 });
   const problems = sequentialProblems(gcode, [A, B, C], [0, 1, 2]);
-  assert.ok(problems.some((p) => /in runs/.test(p)), problems.join('\n'));
-  assert.ok(problems.some((p) => /over finished/.test(p)) || problems.some((p) => /goes down/.test(p)) || problems.length > 0);
+  assert.ok(
+    problems.some((p) => /in runs/.test(p)),
+    problems.join('\n'),
+  );
+  assert.ok(
+    problems.some((p) => /over finished/.test(p)) || problems.some((p) => /goes down/.test(p)) || problems.length > 0,
+  );
 });
 
 test('a colour change at a height happens in every part that reaches it, with the first-layer temperature again at each part', async () => {
-  const { gcode } = await slice([A, B, C], { sequentialPrinting: true, colorChangeAt: '5', firstLayerNozzleTemperature: 215, nozzleTemperature: 205 });
+  const { gcode } = await slice([A, B, C], {
+    sequentialPrinting: true,
+    colorChangeAt: '5',
+    firstLayerNozzleTemperature: 215,
+    nozzleTemperature: 205,
+  });
   // A (6 mm) and B (10 mm) reach 5 mm, C (4 mm) does not
   assert.equal((gcode.match(/^M600/gm) ?? []).length, 2);
   assert.equal((gcode.match(/^M104 S215$/gm) ?? []).length, 2, 'B and C start at the first-layer temperature');
@@ -231,10 +279,15 @@ test('the one part taller than the gantry prints last, whatever its place in the
 });
 
 test('an object other than the last taller than extruderClearanceHeight is refused, naming it', async () => {
-  const tall = part('tall', 20, 90, 12, 25), taller = part('taller', 82, 90, 12, 30);
+  const tall = part('tall', 20, 90, 12, 25),
+    taller = part('taller', 82, 90, 12, 30);
   await assert.rejects(
     slice([tall, taller, C], { sequentialPrinting: true }),
-    (e: unknown) => e instanceof StrataError && e.code === 'DOES_NOT_FIT' && /"tall" is 25 mm tall/.test(e.message) && /extruderClearanceHeight \(20 mm\)/.test(e.message),
+    (e: unknown) =>
+      e instanceof StrataError &&
+      e.code === 'DOES_NOT_FIT' &&
+      /"tall" is 25 mm tall/.test(e.message) &&
+      /extruderClearanceHeight \(20 mm\)/.test(e.message),
   );
   // a higher gantry takes them
   await slice([tall, taller, C], { sequentialPrinting: true, extruderClearanceHeight: 30 });
@@ -245,7 +298,10 @@ test('objects closer than extruderClearanceRadius are refused, naming both', asy
   await assert.rejects(
     slice([A, near, C], { sequentialPrinting: true }),
     (e: unknown) =>
-      e instanceof StrataError && e.code === 'OVERLAPPING_OBJECTS' && /objects "A" and "near" are closer than extruderClearanceRadius \(45 mm\)/.test(e.message) && /18 mm apart/.test(e.message),
+      e instanceof StrataError &&
+      e.code === 'OVERLAPPING_OBJECTS' &&
+      /objects "A" and "near" are closer than extruderClearanceRadius \(45 mm\)/.test(e.message) &&
+      /18 mm apart/.test(e.message),
   );
   // a smaller head clears them; all at once there is nothing to check
   await slice([A, near, C], { sequentialPrinting: true, extruderClearanceRadius: 15 });
@@ -253,24 +309,40 @@ test('objects closer than extruderClearanceRadius are refused, naming both', asy
 });
 
 test('a raft is refused with sequential printing', async () => {
-  await assert.rejects(slice([A, C], { sequentialPrinting: true, adhesionType: 'raft' }), (e: unknown) => e instanceof StrataError && e.code === 'BAD_SETTING' && /raft/.test(e.message));
+  await assert.rejects(
+    slice([A, C], { sequentialPrinting: true, adhesionType: 'raft' }),
+    (e: unknown) => e instanceof StrataError && e.code === 'BAD_SETTING' && /raft/.test(e.message),
+  );
 });
 
 test('arranged models are spaced by the clearance radius and pass the check', async () => {
   const s = new Slicer({ threads: 1, sequentialPrinting: true, extruderClearanceRadius: 35, gcodeFlavor: 'klipper' });
   const models = [box(0, 0, 0, 15, 15, 5), box(0, 0, 0, 20, 10, 8), box(0, 0, 0, 10, 10, 3)];
   const r = await s.slice(models);
-  assert.ok(r.warnings.some((w) => /35 mm apart/.test(w)), r.warnings.join('\n'));
+  assert.ok(
+    r.warnings.some((w) => /35 mm apart/.test(w)),
+    r.warnings.join('\n'),
+  );
   assert.equal(r.stats.layers, Math.round(5 / 0.2) + Math.round(8 / 0.2) + Math.round(3 / 0.2));
   // the footprints Klipper is told (EXCLUDE_OBJECT_DEFINE) lie at least the radius apart
   const rects = [...r.gcode.matchAll(/^EXCLUDE_OBJECT_DEFINE NAME=\S+ CENTER=\S+ POLYGON=(\S+)$/gm)].map((m) => {
     const pts = JSON.parse(m[1]) as [number, number][];
-    return { x0: Math.min(...pts.map((p) => p[0])), x1: Math.max(...pts.map((p) => p[0])), y0: Math.min(...pts.map((p) => p[1])), y1: Math.max(...pts.map((p) => p[1])) };
+    return {
+      x0: Math.min(...pts.map((p) => p[0])),
+      x1: Math.max(...pts.map((p) => p[0])),
+      y0: Math.min(...pts.map((p) => p[1])),
+      y1: Math.max(...pts.map((p) => p[1])),
+    };
   });
   assert.equal(rects.length, 3);
   for (let i = 0; i < 3; i++) {
     for (let j = i + 1; j < 3; j++) {
-      const gap = Math.max(rects[j].x0 - rects[i].x1, rects[i].x0 - rects[j].x1, rects[j].y0 - rects[i].y1, rects[i].y0 - rects[j].y1);
+      const gap = Math.max(
+        rects[j].x0 - rects[i].x1,
+        rects[i].x0 - rects[j].x1,
+        rects[j].y0 - rects[i].y1,
+        rects[i].y0 - rects[j].y1,
+      );
       assert.ok(gap >= 35 - 0.01, `objects ${i} and ${j} ${gap.toFixed(2)} mm apart`);
     }
   }

@@ -26,7 +26,10 @@ function cylinder(r: number, h: number, n = 96, cx = 0, cy = 0): Mesh {
   }
   for (let i = 0; i < n; i++) {
     const j = (i + 1) % n;
-    const b0 = 2 + 2 * i, t0 = b0 + 1, b1 = 2 + 2 * j, t1 = b1 + 1;
+    const b0 = 2 + 2 * i,
+      t0 = b0 + 1,
+      b1 = 2 + 2 * j,
+      t1 = b1 + 1;
     indices.push(0, b1, b0, 1, t0, t1, b0, b1, t1, b0, t1, t0);
   }
   return { positions: new Float32Array(positions), indices: new Uint32Array(indices) };
@@ -41,7 +44,10 @@ function tube(R: number, r: number, h: number, n = 96): Mesh {
       positions.push(radius * Math.cos(a), radius * Math.sin(a), z);
       return positions.length / 3 - 1;
     });
-  const o0 = ring(R, 0), o1 = ring(R, h), i0 = ring(r, 0), i1 = ring(r, h);
+  const o0 = ring(R, 0),
+    o1 = ring(R, h),
+    i0 = ring(r, 0),
+    i1 = ring(r, h);
   const indices: number[] = [];
   for (let i = 0; i < n; i++) {
     const j = (i + 1) % n;
@@ -66,7 +72,10 @@ function cup(R: number, r: number, base: number, h: number, n = 96): Mesh {
       positions.push(radius * Math.cos(a), radius * Math.sin(a), z);
       return positions.length / 3 - 1;
     });
-  const o0 = ring(R, 0), o1 = ring(R, h), f = ring(r, base), i1 = ring(r, h);
+  const o0 = ring(R, 0),
+    o1 = ring(R, h),
+    f = ring(r, base),
+    i1 = ring(r, h);
   const indices: number[] = [];
   for (let i = 0; i < n; i++) {
     const j = (i + 1) % n;
@@ -94,7 +103,10 @@ const VASE = cylinder(15, 6);
 /** 0.2 mm layers, four bottom layers (0.8 mm of bottom skin), the default. */
 const BOTTOM = 4;
 
-async function slice(mesh: Mesh, options: SliceOptions): Promise<{ plan: PrintPlan; gcode: string; warnings: string[] }> {
+async function slice(
+  mesh: Mesh,
+  options: SliceOptions,
+): Promise<{ plan: PrintPlan; gcode: string; warnings: string[] }> {
   const chunks: string[] = [];
   const { plan, warnings } = await new Slicer({ threads: 1, ...options }).slicePlan(mesh, {}, (c) => chunks.push(c));
   return { plan, gcode: chunks.join(''), warnings };
@@ -130,12 +142,16 @@ test('spiral vase: after the bottom, one outer wall per layer rising round the t
     if (!layer.spiral) continue;
     const prev = layers[i - 1];
     const extrusions = layer.steps.filter((s): s is ExtrudeStep => s.kind === 'extrude');
-    assert.ok(extrusions.every((s) => s.feature === 'WALL-OUTER'), 'one outer wall, no infill or skin');
+    assert.ok(
+      extrusions.every((s) => s.feature === 'WALL-OUTER'),
+      'one outer wall, no infill or skin',
+    );
     assert.equal(layer.steps.length - extrusions.length, i === BOTTOM ? 1 : 0, 'a travel only onto the first turn');
     // the turn: its rising steps in order, then (on the last layer) the flat finishing turn
     const rising = extrusions.filter((s) => s.z);
     const z: number[] = rising.flatMap((s, k) => [...s.z!].slice(k === 0 ? 0 : 1).map((v) => layer.z + v));
-    for (let k = 1; k < z.length; k++) assert.ok(z[k] > z[k - 1], `layer ${i}: Z rises at every point of the turn (${k})`);
+    for (let k = 1; k < z.length; k++)
+      assert.ok(z[k] > z[k - 1], `layer ${i}: Z rises at every point of the turn (${k})`);
     assert.ok(Math.abs(z[0] - prev.z) < 1e-9, `layer ${i} starts at the previous layer's Z`);
     assert.ok(Math.abs(z[z.length - 1] - layer.z) < 1e-9, `layer ${i} ends at its own Z`);
     assert.ok(Math.abs(z[z.length - 1] - z[0] - layer.height) < 1e-9, 'the turn rises by one layer height');
@@ -154,7 +170,10 @@ test('spiral vase: after the bottom, one outer wall per layer rising round the t
   for (let i = BOTTOM + 1; i < blocks.length; i++) {
     for (const line of blocks[i]) {
       assert.ok(!/^G0\b/.test(line), `layer ${i}: no travel or Z move (${line})`);
-      assert.ok(!/^G1[^;]*\sE-/.test(line) && !/^G1 F\d+ E[\d.]+$/.test(line) && !/^G1[0-1]\b/.test(line), `layer ${i}: no retraction or prime (${line})`);
+      assert.ok(
+        !/^G1[^;]*\sE-/.test(line) && !/^G1 F\d+ E[\d.]+$/.test(line) && !/^G1[0-1]\b/.test(line),
+        `layer ${i}: no retraction or prime (${line})`,
+      );
       if (/^;TYPE:/.test(line)) assert.equal(line, ';TYPE:WALL-OUTER');
       if (!/^G1\s/.test(line)) continue;
       const z = word(line, 'Z');
@@ -186,27 +205,40 @@ test('spiral vase: flow of one wall along the turn, ramped up on the first turn 
   // every extruding G1 of each layer: its filament, XY length and Z word (absolute E, from each G92 E0)
   type Move = { e: number; len: number; z: number | undefined };
   const byLayer: Move[][] = [];
-  let layer = -1, x = NaN, y = NaN, e = 0;
+  let layer = -1,
+    x = NaN,
+    y = NaN,
+    e = 0;
   for (const line of gcode.split('\n')) {
     const m = /^;LAYER:(\d+)$/.exec(line);
     if (m) byLayer[(layer = Number(m[1]))] = [];
     if (line.startsWith('G92 E0')) e = 0;
     if (!/^G[01]\s/.test(line)) continue;
-    const nx = word(line, 'X') ?? x, ny = word(line, 'Y') ?? y, ne = word(line, 'E');
-    if (layer >= 0 && ne !== undefined && ne > e && (nx !== x || ny !== y)) byLayer[layer].push({ e: ne - e, len: Math.hypot(nx - x, ny - y), z: word(line, 'Z') });
+    const nx = word(line, 'X') ?? x,
+      ny = word(line, 'Y') ?? y,
+      ne = word(line, 'E');
+    if (layer >= 0 && ne !== undefined && ne > e && (nx !== x || ny !== y))
+      byLayer[layer].push({ e: ne - e, len: Math.hypot(nx - x, ny - y), z: word(line, 'Z') });
     if (ne !== undefined) e = ne;
     x = nx;
     y = ny;
   }
   const moves = (i: number) => byLayer[i];
   const perMm = (0.4 * 0.2) / FILAMENT_AREA; // one 0.4 mm line 0.2 mm high
-  const sum = (ms: Array<{ e: number; len: number }>) => ms.reduce((a, m) => ({ e: a.e + m.e, len: a.len + m.len }), { e: 0, len: 0 });
+  const sum = (ms: Array<{ e: number; len: number }>) =>
+    ms.reduce((a, m) => ({ e: a.e + m.e, len: a.len + m.len }), { e: 0, len: 0 });
   const middle = sum(moves(15));
-  assert.ok(Math.abs(middle.e / middle.len / perMm - 1) < 0.02, `a full turn lays one wall: ${(middle.e / middle.len).toFixed(5)} mm/mm, nominal ${perMm.toFixed(5)}`);
+  assert.ok(
+    Math.abs(middle.e / middle.len / perMm - 1) < 0.02,
+    `a full turn lays one wall: ${(middle.e / middle.len).toFixed(5)} mm/mm, nominal ${perMm.toFixed(5)}`,
+  );
   // the first turn: flow from 0 to 1, so half the filament, its first quarter an eighth of a full quarter's
   const first = moves(BOTTOM);
   const firstAll = sum(first);
-  assert.ok(Math.abs(firstAll.e / (firstAll.len * perMm) - 0.5) < 0.03, `the first turn ramps up: ${(firstAll.e / (firstAll.len * perMm)).toFixed(3)} of a full turn`);
+  assert.ok(
+    Math.abs(firstAll.e / (firstAll.len * perMm) - 0.5) < 0.03,
+    `the first turn ramps up: ${(firstAll.e / (firstAll.len * perMm)).toFixed(3)} of a full turn`,
+  );
   const quarter = sum(first.slice(0, Math.round(first.length / 4)));
   assert.ok(quarter.e / (quarter.len * perMm) < 0.2, 'little flow at its start');
   // the last layer: a full rising turn, then the flat finishing turn with half a turn's filament, ramping down
@@ -215,17 +247,39 @@ test('spiral vase: flow of one wall along the turn, ramped up on the first turn 
   const flat = last.filter((m) => m.z === undefined);
   const flatAll = sum(flat);
   assert.ok(Math.abs(rising.e / (rising.len * perMm) - 1) < 0.02);
-  assert.ok(Math.abs(flatAll.e / (flatAll.len * perMm) - 0.5) < 0.03, `the finishing turn ramps down: ${(flatAll.e / (flatAll.len * perMm)).toFixed(3)}`);
+  assert.ok(
+    Math.abs(flatAll.e / (flatAll.len * perMm) - 0.5) < 0.03,
+    `the finishing turn ramps down: ${(flatAll.e / (flatAll.len * perMm)).toFixed(3)}`,
+  );
   const tail = sum(flat.slice(-Math.round(flat.length / 4)));
   assert.ok(tail.e / (tail.len * perMm) < 0.2, 'little flow at its end');
 });
 
 test('spiral vase: settings it sets aside are reported, defaults are not', async () => {
-  const set: SliceOptions = { spiralVase: true, wallCount: 3, infillDensity: 25, topSkinThickness: 1, supportEnabled: true, ironingEnabled: true, scarfSeam: 'outer', retractOnLayerChange: true, zHop: 0.4 };
+  const set: SliceOptions = {
+    spiralVase: true,
+    wallCount: 3,
+    infillDensity: 25,
+    topSkinThickness: 1,
+    supportEnabled: true,
+    ironingEnabled: true,
+    scarfSeam: 'outer',
+    retractOnLayerChange: true,
+    zHop: 0.4,
+  };
   const { plan, warnings } = await slice(VASE, set);
   const vase = warnings.filter((w) => w.startsWith('spiral vase:'));
   assert.equal(vase.length, 1, warnings.join('\n'));
-  for (const key of ['wallCount = 3', 'infillDensity = 25', 'topSkinThickness = 1', 'supportEnabled = true', 'ironingEnabled = true', 'scarfSeam = outer', 'retractOnLayerChange = true', 'zHop = 0.4']) {
+  for (const key of [
+    'wallCount = 3',
+    'infillDensity = 25',
+    'topSkinThickness = 1',
+    'supportEnabled = true',
+    'ironingEnabled = true',
+    'scarfSeam = outer',
+    'retractOnLayerChange = true',
+    'zHop = 0.4',
+  ]) {
     assert.ok(vase[0].includes(key), `${key} is named: ${vase[0]}`);
   }
   // and they are set aside: above the bottom the same turns as with the defaults (started elsewhere, as the
@@ -234,13 +288,25 @@ test('spiral vase: settings it sets aside are reported, defaults are not', async
   const turns = (p: PrintPlan) =>
     p.layers.slice(BOTTOM + 1).map((l) => {
       let length = 0;
-      for (const st of l.steps) if (st.kind === 'extrude') for (let k = 1; k < st.points.length; k++) length += Math.hypot(st.points[k].x - st.points[k - 1].x, st.points[k].y - st.points[k - 1].y);
-      return { spiral: l.spiral, steps: l.steps.map((st) => (st.kind === 'extrude' ? st.feature : 'travel')).join(), mm: Math.round(length / 100) / 10 };
+      for (const st of l.steps)
+        if (st.kind === 'extrude')
+          for (let k = 1; k < st.points.length; k++)
+            length += Math.hypot(st.points[k].x - st.points[k - 1].x, st.points[k].y - st.points[k - 1].y);
+      return {
+        spiral: l.spiral,
+        steps: l.steps.map((st) => (st.kind === 'extrude' ? st.feature : 'travel')).join(),
+        mm: Math.round(length / 100) / 10,
+      };
     });
   // the same turns, their lengths to a tenth of a millimetre (a turn starts where the bottom's last path ended)
-  const mine = turns(plan), theirs = turns(plain.plan);
-  assert.deepEqual(mine.map(({ spiral, steps }) => ({ spiral, steps })), theirs.map(({ spiral, steps }) => ({ spiral, steps })));
-  for (let k = 0; k < mine.length; k++) assert.ok(Math.abs(mine[k].mm - theirs[k].mm) <= 0.15, `turn ${k}: ${mine[k].mm} against ${theirs[k].mm} mm`);
+  const mine = turns(plan),
+    theirs = turns(plain.plan);
+  assert.deepEqual(
+    mine.map(({ spiral, steps }) => ({ spiral, steps })),
+    theirs.map(({ spiral, steps }) => ({ spiral, steps })),
+  );
+  for (let k = 0; k < mine.length; k++)
+    assert.ok(Math.abs(mine[k].mm - theirs[k].mm) <= 0.15, `turn ${k}: ${mine[k].mm} against ${theirs[k].mm} mm`);
   // one wall and settings the vase uses as they are: nothing to report
   const quiet = await slice(VASE, { spiralVase: true, wallCount: 1, infillDensity: 0, zHop: 0 });
   assert.deepEqual(quiet.warnings, []);
@@ -259,17 +325,23 @@ test('spiral vase: layers that are not one loop (two islands, a hole) print flat
   // two cylinders: two islands on every layer, nothing spirals
   const two = await slice(join(cylinder(8, 3, 64, -12, 0), cylinder(8, 3, 64, 12, 0)), { spiralVase: true });
   assert.ok(two.plan.layers.every((l) => !l.spiral));
-  assert.ok(two.warnings.some((w) => /^spiral vase: 11 layers between 4 and 14 .* print flat/.test(w)), two.warnings.join('\n'));
+  assert.ok(
+    two.warnings.some((w) => /^spiral vase: 11 layers between 4 and 14 .* print flat/.test(w)),
+    two.warnings.join('\n'),
+  );
   // a tube, a hole on every layer: the hole is dropped above the bottom, and the outside spirals
   const hollow = await slice(tube(12, 8, 3), { spiralVase: true });
   assert.ok(hollow.plan.layers.every((l, i) => !!l.spiral === i >= BOTTOM));
   assert.deepEqual(hollow.warnings, []);
-  for (const l of hollow.plan.layers.slice(BOTTOM)) assert.ok(l.steps.every((s) => s.kind === 'travel' || s.feature === 'WALL-OUTER'));
+  for (const l of hollow.plan.layers.slice(BOTTOM))
+    assert.ok(l.steps.every((s) => s.kind === 'travel' || s.feature === 'WALL-OUTER'));
 
   // no bottom: the first layer is one flat loop, the spiral starts on the second
   const open = await slice(VASE, { spiralVase: true, bottomSkinThickness: 0 });
   assert.ok(!open.plan.layers[0].spiral && open.plan.layers.slice(1).every((l) => l.spiral));
-  assert.ok(open.plan.layers[0].steps.every((s) => s.kind === 'travel' || s.feature === 'WALL-OUTER' || s.feature === 'SKIRT'));
+  assert.ok(
+    open.plan.layers[0].steps.every((s) => s.kind === 'travel' || s.feature === 'WALL-OUTER' || s.feature === 'SKIRT'),
+  );
   // a model as thin as two layers, and one of a single layer: no turn above its bottom, or one
   for (const h of [0.2, 0.4, 1]) {
     const tiny = await slice(cylinder(10, h), { spiralVase: true });
@@ -278,10 +350,17 @@ test('spiral vase: layers that are not one loop (two islands, a hole) print flat
   }
   // arc fitting leaves the rising turns alone (an arc would drop their Z)
   const arcs = await slice(VASE, { spiralVase: true, arcFitting: true });
-  for (const l of arcs.plan.layers.filter((l) => l.spiral)) for (const s of l.steps) if (s.kind === 'extrude' && s.z) assert.equal(s.arcs, undefined);
+  for (const l of arcs.plan.layers.filter((l) => l.spiral))
+    for (const s of l.steps) if (s.kind === 'extrude' && s.z) assert.equal(s.arcs, undefined);
   const arcBlocks = layerBlocks(arcs.gcode);
-  assert.ok(arcBlocks.slice(BOTTOM, -1).every((b) => b.every((line) => !/^G[23]\s/.test(line))), 'no arc on a turn');
-  assert.ok(arcBlocks.at(-1)!.every((line) => !/^G[23]\s/.test(line) || word(line, 'Z') === undefined), 'arcs only on the flat finishing turn');
+  assert.ok(
+    arcBlocks.slice(BOTTOM, -1).every((b) => b.every((line) => !/^G[23]\s/.test(line))),
+    'no arc on a turn',
+  );
+  assert.ok(
+    arcBlocks.at(-1)!.every((line) => !/^G[23]\s/.test(line) || word(line, 'Z') === undefined),
+    'arcs only on the flat finishing turn',
+  );
 });
 
 test('spiral vase: the same G-code on one thread and two', async () => {
@@ -300,19 +379,25 @@ test('spiral vase flags: --spiral-vase, --vase-mode and --spiralize, and their -
 });
 
 test('spiral vase: a cup modelled hollow spirals on its outside like a solid cylinder, its hole dropped', async () => {
-  const R = 15, r = 13.5, H = 6;
+  const R = 15,
+    r = 13.5,
+    H = 6;
   const { plan, gcode, warnings } = await slice(cup(R, r, 1.2, H), { spiralVase: true });
   assert.deepEqual(warnings, [], 'the hole is not reported: it is dropped, as Cura drops it');
   const layers = plan.layers;
   assert.equal(layers.length, 30);
   // the bottom layers print as set (the floor and walls round the hole where there is one); above, turns
-  for (const [i, layer] of layers.entries()) assert.equal(!!layer.spiral, i >= BOTTOM, `layer ${i} spirals only above the bottom`);
+  for (const [i, layer] of layers.entries())
+    assert.equal(!!layer.spiral, i >= BOTTOM, `layer ${i} spirals only above the bottom`);
   // the turns are the solid cylinder's: the same features and lengths, turn by turn
   const solid = await slice(cylinder(R, H), { spiralVase: true });
   const turnLengths = (p: PrintPlan) =>
     p.layers.slice(BOTTOM + 1).map((l) => {
       let length = 0;
-      for (const st of l.steps) if (st.kind === 'extrude') for (let k = 1; k < st.points.length; k++) length += Math.hypot(st.points[k].x - st.points[k - 1].x, st.points[k].y - st.points[k - 1].y);
+      for (const st of l.steps)
+        if (st.kind === 'extrude')
+          for (let k = 1; k < st.points.length; k++)
+            length += Math.hypot(st.points[k].x - st.points[k - 1].x, st.points[k].y - st.points[k - 1].y);
       return Math.round(length / 100) / 10;
     });
   assert.deepEqual(turnLengths(plan), turnLengths(solid.plan));
@@ -322,20 +407,33 @@ test('spiral vase: a cup modelled hollow spirals on its outside like a solid cyl
   const blocks = layerBlocks(gcode);
   // the axis: the middle of the turns' extent
   const xy: Array<[number, number]> = [];
-  for (const b of blocks.slice(BOTTOM + 1)) for (const line of b) if (/^G1\s/.test(line) && word(line, 'X') !== undefined && word(line, 'Y') !== undefined) xy.push([word(line, 'X')!, word(line, 'Y')!]);
-  const xs = xy.map((p) => p[0]), ys = xy.map((p) => p[1]);
+  for (const b of blocks.slice(BOTTOM + 1))
+    for (const line of b)
+      if (/^G1\s/.test(line) && word(line, 'X') !== undefined && word(line, 'Y') !== undefined)
+        xy.push([word(line, 'X')!, word(line, 'Y')!]);
+  const xs = xy.map((p) => p[0]),
+    ys = xy.map((p) => p[1]);
   const centre = { x: (Math.min(...xs) + Math.max(...xs)) / 2, y: (Math.min(...ys) + Math.max(...ys)) / 2 };
-  let lastZ = -Infinity, points = 0;
+  let lastZ = -Infinity,
+    points = 0;
   for (let i = BOTTOM + 1; i < blocks.length; i++) {
     for (const line of blocks[i]) {
       assert.ok(!/^G0\b/.test(line), `layer ${i}: no travel or Z move (${line})`);
-      assert.ok(!/^G1[^;]*\sE-/.test(line) && !/^G1 F\d+ E[\d.]+$/.test(line) && !/^G1[0-1]\b/.test(line), `layer ${i}: no retraction or prime (${line})`);
+      assert.ok(
+        !/^G1[^;]*\sE-/.test(line) && !/^G1 F\d+ E[\d.]+$/.test(line) && !/^G1[0-1]\b/.test(line),
+        `layer ${i}: no retraction or prime (${line})`,
+      );
       if (/^;TYPE:/.test(line)) assert.equal(line, ';TYPE:WALL-OUTER');
       if (!/^G1\s/.test(line)) continue;
-      const x = word(line, 'X'), y = word(line, 'Y'), z = word(line, 'Z');
+      const x = word(line, 'X'),
+        y = word(line, 'Y'),
+        z = word(line, 'Z');
       if (x !== undefined && y !== undefined) {
         const d = Math.hypot(x - centre.x, y - centre.y);
-        assert.ok(Math.abs(d - (R - 0.2)) < 0.06, `layer ${i}: the wall follows the outer surface (${d.toFixed(3)} mm from the axis)`);
+        assert.ok(
+          Math.abs(d - (R - 0.2)) < 0.06,
+          `layer ${i}: the wall follows the outer surface (${d.toFixed(3)} mm from the axis)`,
+        );
         points++;
       }
       if (z === undefined) {
@@ -350,17 +448,24 @@ test('spiral vase: a cup modelled hollow spirals on its outside like a solid cyl
   assert.equal(lastZ, H, 'the spiral ends at the top');
   const parsed = parseGcode(gcode);
   assert.equal(parsed.layers.length, 30);
-  for (const l of parsed.layers.slice(BOTTOM + 1)) assert.ok(Math.abs(l.thickness - 0.2) < 1e-4, `layer ${l.index} is one layer height thick`);
+  for (const l of parsed.layers.slice(BOTTOM + 1))
+    assert.ok(Math.abs(l.thickness - 0.2) < 1e-4, `layer ${l.index} is one layer height thick`);
 });
 
 test('spiral vase: specks beside the main island are dropped with a warning; a second island of size keeps the layer flat', async () => {
   // a pin 0.8 mm square (0.64 mm²) beside the vase, as tall as it
   const pin = box(20, -0.4, 0, 20.8, 0.4, 6);
   const specks = await slice(join(VASE, pin), { spiralVase: true });
-  assert.ok(specks.plan.layers.every((l, i) => !!l.spiral === i >= BOTTOM), 'the vase spirals, the pin left out');
+  assert.ok(
+    specks.plan.layers.every((l, i) => !!l.spiral === i >= BOTTOM),
+    'the vase spirals, the pin left out',
+  );
   const w = specks.warnings.filter((m) => m.startsWith('spiral vase:'));
   assert.equal(w.length, 1, specks.warnings.join('\n'));
-  assert.match(w[0], /^spiral vase: [\d.]+ mm² of islands smaller than 1 mm² beside the main one are left out on 26 layers between 4 and 29/);
+  assert.match(
+    w[0],
+    /^spiral vase: [\d.]+ mm² of islands smaller than 1 mm² beside the main one are left out on 26 layers between 4 and 29/,
+  );
   // a 2 mm square post is an island of its own: those layers print flat, as before
   const post = await slice(join(VASE, box(20, -1, 0, 22, 1, 6)), { spiralVase: true });
   assert.ok(post.plan.layers.every((l) => !l.spiral));

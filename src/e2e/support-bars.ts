@@ -11,10 +11,19 @@ export function assertSupportBars(report: PrintReport): number {
   const s = report.summary;
   const sup = s.support!;
   assert.ok(sup, 'support checks ran');
-  assert.ok(sup.overhangSupported !== null && sup.overhangSupported >= 0.95, `overhang supported ${sup.overhangSupported}`);
+  assert.ok(
+    sup.overhangSupported !== null && sup.overhangSupported >= 0.95,
+    `overhang supported ${sup.overhangSupported}`,
+  );
   assert.ok(sup.overNothing !== null && sup.overNothing <= 0.003, `model over nothing ${sup.overNothing}`);
-  assert.ok(sup.insideAreaMm2 <= 1, `support inside the part ${sup.insideAreaMm2} mm² (worst layer ${sup.insideWorstLayer})`);
-  assert.ok(sup.topGap.medianLayers === 1 || sup.topGap.medianLayers === 2, `top gap ${sup.topGap.medianLayers} layers`);
+  assert.ok(
+    sup.insideAreaMm2 <= 1,
+    `support inside the part ${sup.insideAreaMm2} mm² (worst layer ${sup.insideWorstLayer})`,
+  );
+  assert.ok(
+    sup.topGap.medianLayers === 1 || sup.topGap.medianLayers === 2,
+    `top gap ${sup.topGap.medianLayers} layers`,
+  );
   assert.ok(s.walls.coverage !== null && s.walls.coverage >= 0.97, `outline coverage ${s.walls.coverage}`);
   assert.ok(s.outside.p99Mm <= 0.1, `material outside the model: p99 ${s.outside.p99Mm} mm`);
   return sup.volume.supportMm3 + sup.volume.interfaceMm3;

@@ -26,7 +26,8 @@ async function slice(input: Arrays, options: Record<string, unknown> = {}): Prom
 function segmentsOf(layer: GcodeLayer, feature: number): Array<Segment & { i: number; e: number }> {
   const t = layer.extrusions;
   const out: Array<Segment & { i: number; e: number }> = [];
-  for (let i = 0; i < t.count; i++) if (t.feature[i] === feature) out.push({ i, x0: t.x0[i], y0: t.y0[i], x1: t.x1[i], y1: t.y1[i], e: t.e[i] });
+  for (let i = 0; i < t.count; i++)
+    if (t.feature[i] === feature) out.push({ i, x0: t.x0[i], y0: t.y0[i], x1: t.x1[i], y1: t.y1[i], e: t.e[i] });
   return out;
 }
 
@@ -54,15 +55,21 @@ interface Rect {
  */
 function coverage(segs: readonly Segment[], r: Rect, reach: number): number {
   const step = 0.025;
-  const nx = Math.round((r.x1 - r.x0) / step), ny = Math.round((r.y1 - r.y0) / step);
+  const nx = Math.round((r.x1 - r.x0) / step),
+    ny = Math.round((r.y1 - r.y0) / step);
   const hit = new Uint8Array(nx * ny);
   for (const s of segs) {
-    const dx = s.x1 - s.x0, dy = s.y1 - s.y0, len2 = dx * dx + dy * dy;
-    const i0 = Math.max(0, Math.floor((Math.min(s.x0, s.x1) - reach - r.x0) / step)), i1 = Math.min(nx - 1, Math.ceil((Math.max(s.x0, s.x1) + reach - r.x0) / step));
-    const j0 = Math.max(0, Math.floor((Math.min(s.y0, s.y1) - reach - r.y0) / step)), j1 = Math.min(ny - 1, Math.ceil((Math.max(s.y0, s.y1) + reach - r.y0) / step));
+    const dx = s.x1 - s.x0,
+      dy = s.y1 - s.y0,
+      len2 = dx * dx + dy * dy;
+    const i0 = Math.max(0, Math.floor((Math.min(s.x0, s.x1) - reach - r.x0) / step)),
+      i1 = Math.min(nx - 1, Math.ceil((Math.max(s.x0, s.x1) + reach - r.x0) / step));
+    const j0 = Math.max(0, Math.floor((Math.min(s.y0, s.y1) - reach - r.y0) / step)),
+      j1 = Math.min(ny - 1, Math.ceil((Math.max(s.y0, s.y1) + reach - r.y0) / step));
     for (let j = j0; j <= j1; j++) {
       for (let i = i0; i <= i1; i++) {
-        const px = r.x0 + (i + 0.5) * step, py = r.y0 + (j + 0.5) * step;
+        const px = r.x0 + (i + 0.5) * step,
+          py = r.y0 + (j + 0.5) * step;
         const t = len2 > 0 ? Math.max(0, Math.min(1, ((px - s.x0) * dx + (py - s.y0) * dy) / len2)) : 0;
         if ((px - s.x0 - t * dx) ** 2 + (py - s.y0 - t * dy) ** 2 <= reach * reach) hit[j * nx + i] = 1;
       }
@@ -75,7 +82,8 @@ function coverage(segs: readonly Segment[], r: Rect, reach: number): number {
 
 /** Filament of segments over what full lines `width` wide at `height` would take for their length. */
 function flowShare(segs: ReadonlyArray<Segment & { e: number }>, width: number, height: number): number {
-  let e = 0, len = 0;
+  let e = 0,
+    len = 0;
   for (const s of segs) {
     e += s.e;
     len += Math.hypot(s.x1 - s.x0, s.y1 - s.y0);
@@ -98,12 +106,21 @@ test('ironing irons every top surface (top) or only the highest (topmost), after
   assert.deepEqual(layersWith(topmost.g, Feature.Ironing), [8]);
   // on each top surface's layer, the ironing comes after the layer's skin, and stays on the surface: half a
   // line width in from the part's edges, up to the foot of the step at 4 mm
-  for (const [z, r, inset] of [[4, LOW_TOP, { x0: 0, x1: 0.2, y0: 0.2, y1: 0.2 }], [8, HIGH_TOP, { x0: 0.2, x1: 0.2, y0: 0.2, y1: 0.2 }]] as const) {
+  for (const [z, r, inset] of [
+    [4, LOW_TOP, { x0: 0, x1: 0.2, y0: 0.2, y1: 0.2 }],
+    [8, HIGH_TOP, { x0: 0.2, x1: 0.2, y0: 0.2, y1: 0.2 }],
+  ] as const) {
     const layer = layerAt(top.g, z);
-    const skin = segmentsOf(layer, Feature.Skin), iron = segmentsOf(layer, Feature.Ironing);
+    const skin = segmentsOf(layer, Feature.Skin),
+      iron = segmentsOf(layer, Feature.Ironing);
     assert.ok(skin.length > 0 && iron[0].i > skin[skin.length - 1].i, `Z ${z}: ironing after the skin`);
-    const ok = (x: number, y: number) => x >= r.x0 + inset.x0 - 0.002 && x <= r.x1 - inset.x1 + 0.002 && y >= r.y0 + inset.y0 - 0.002 && y <= r.y1 - inset.y1 + 0.002;
-    for (const s of iron) assert.ok(ok(s.x0, s.y0) && ok(s.x1, s.y1), `Z ${z}: (${s.x0}, ${s.y0}) – (${s.x1}, ${s.y1}) off the surface`);
+    const ok = (x: number, y: number) =>
+      x >= r.x0 + inset.x0 - 0.002 &&
+      x <= r.x1 - inset.x1 + 0.002 &&
+      y >= r.y0 + inset.y0 - 0.002 &&
+      y <= r.y1 - inset.y1 + 0.002;
+    for (const s of iron)
+      assert.ok(ok(s.x0, s.y0) && ok(s.x1, s.y1), `Z ${z}: (${s.x0}, ${s.y0}) – (${s.x1}, ${s.y1}) off the surface`);
   }
 });
 
@@ -114,12 +131,23 @@ test('ironing covers at least 90 % of the top at no more than 20 % flow; the mea
   const covered = coverage(iron, HIGH_TOP, 0.06);
   assert.ok(covered >= 0.9, `ironing covers ${(covered * 100).toFixed(1)} % of the top`);
   const flow = flowShare(iron, 0.1, 0.2);
-  assert.ok(flow <= 0.2 && Math.abs(flow - 0.15) < 0.01, `ironing flow ${(flow * 100).toFixed(1)} % of a full 0.1 mm line`);
+  assert.ok(
+    flow <= 0.2 && Math.abs(flow - 0.15) < 0.01,
+    `ironing flow ${(flow * 100).toFixed(1)} % of a full 0.1 mm line`,
+  );
   // the same measurement on the layer below (no ironing there) and on the skin's own lines (0.4 mm apart)
   assert.equal(coverage(segmentsOf(layerAt(g, 7.8), Feature.Ironing), HIGH_TOP, 0.06), 0);
-  assert.ok(coverage(segmentsOf(layerAt(g, 8), Feature.Skin), HIGH_TOP, 0.06) < 0.5, 'skin lines 0.4 mm apart do not pass for ironing');
+  assert.ok(
+    coverage(segmentsOf(layerAt(g, 8), Feature.Skin), HIGH_TOP, 0.06) < 0.5,
+    'skin lines 0.4 mm apart do not pass for ironing',
+  );
   // the flow setting sets it
-  const strong = await slice(STEPPED, { ironingEnabled: true, ironingType: 'topmost', ironingFlow: 30, ironingSpacing: 0.2 });
+  const strong = await slice(STEPPED, {
+    ironingEnabled: true,
+    ironingType: 'topmost',
+    ironingFlow: 30,
+    ironingSpacing: 0.2,
+  });
   const f2 = flowShare(segmentsOf(layerAt(strong.g, 8), Feature.Ironing), 0.2, 0.2);
   assert.ok(Math.abs(f2 - 0.3) < 0.02, `flow at 30 %: ${(f2 * 100).toFixed(1)} %`);
 });
@@ -133,7 +161,12 @@ test('ironing all solid surfaces irons the skin below the top too', async () => 
 });
 
 // a 24 × 24 × 3 mm plate with an 8 mm square hole through its middle (four bars round it)
-const FRAME = join(box(50, 50, 0, 74, 58, 3), box(50, 66, 0, 74, 74, 3), box(50, 50, 0, 58, 74, 3), box(66, 50, 0, 74, 74, 3));
+const FRAME = join(
+  box(50, 50, 0, 74, 58, 3),
+  box(50, 66, 0, 74, 74, 3),
+  box(50, 50, 0, 58, 74, 3),
+  box(66, 50, 0, 74, 74, 3),
+);
 
 /** The monotonic check on the top layer's skin lines, at whichever of the two skin directions they run. */
 function topSkinOrder(g: ParsedGcode): { lines: number; violations: number } {
@@ -155,7 +188,9 @@ test('monotonic top skin around a hole never lays a line between two lines alrea
 /** Runs of connected segments; a run is closed when it ends where it started. */
 function runs(segs: readonly Segment[]): Array<{ closed: boolean; length: number }> {
   const out: Array<{ closed: boolean; length: number }> = [];
-  let start: Segment | null = null, prev: Segment | null = null, length = 0;
+  let start: Segment | null = null,
+    prev: Segment | null = null,
+    length = 0;
   const close = () => {
     if (start && prev) out.push({ closed: Math.hypot(prev.x1 - start.x0, prev.y1 - start.y0) < 0.01, length });
   };
@@ -196,7 +231,12 @@ test('concentric skin is closed loops; where skin is top and bottom at once the 
 });
 
 test('ironing and the skin patterns give the same bytes every time and with any thread count', async () => {
-  const options = { ironingEnabled: true, ironingType: 'topmost', topSkinPattern: 'monotonic', bottomSkinPattern: 'concentric' };
+  const options = {
+    ironingEnabled: true,
+    ironingType: 'topmost',
+    topSkinPattern: 'monotonic',
+    bottomSkinPattern: 'concentric',
+  };
   const a = await slice(STEPPED, options);
   const b = await slice(STEPPED, options);
   const c = await slice(STEPPED, { ...options, threads: 3 });

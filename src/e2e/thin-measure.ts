@@ -68,13 +68,25 @@ export function beadLayers(gcode: string | ParsedGcode, options: BeadOptions = {
     for (let i = 0; i < ex.count; i++) if (keep.has(ex.feature[i])) idx.push(i);
     const n = idx.length;
     const b: BeadLayer = {
-      z: layer.z, height, count: n,
-      x0: new Float32Array(n), y0: new Float32Array(n), x1: new Float32Array(n), y1: new Float32Array(n),
-      e: new Float32Array(n), feature: new Uint8Array(n), width: new Float64Array(n), length: new Float64Array(n),
+      z: layer.z,
+      height,
+      count: n,
+      x0: new Float32Array(n),
+      y0: new Float32Array(n),
+      x1: new Float32Array(n),
+      y1: new Float32Array(n),
+      e: new Float32Array(n),
+      feature: new Uint8Array(n),
+      width: new Float64Array(n),
+      length: new Float64Array(n),
     };
     idx.forEach((i, k) => {
-      b.x0[k] = ex.x0[i]; b.y0[k] = ex.y0[i]; b.x1[k] = ex.x1[i]; b.y1[k] = ex.y1[i];
-      b.e[k] = ex.e[i]; b.feature[k] = ex.feature[i];
+      b.x0[k] = ex.x0[i];
+      b.y0[k] = ex.y0[i];
+      b.x1[k] = ex.x1[i];
+      b.y1[k] = ex.y1[i];
+      b.e[k] = ex.e[i];
+      b.feature[k] = ex.feature[i];
       const len = Math.hypot(ex.x1[i] - ex.x0[i], ex.y1[i] - ex.y0[i]);
       b.length[k] = len;
       b.width[k] = len > 0 && height > 0 ? (ex.e[i] * area) / (len * height) : 0;
@@ -88,7 +100,8 @@ export function beadLayers(gcode: string | ParsedGcode, options: BeadOptions = {
 export function pointInPolygon(x: number, y: number, poly: Polygon): boolean {
   let inside = false;
   for (let i = 0, j = poly.length - 1; i < poly.length; j = i++) {
-    const [xi, yi] = poly[i], [xj, yj] = poly[j];
+    const [xi, yi] = poly[i],
+      [xj, yj] = poly[j];
     if (yi > y !== yj > y && x < ((xj - xi) * (y - yi)) / (yj - yi) + xi) inside = !inside;
   }
   return inside;
@@ -160,14 +173,27 @@ interface Grid {
   inside: number;
 }
 
-function makeGrid(poly: Polygon, o: Required<Pick<MeasureOptions, 'cellMm' | 'outsideGrowMm' | 'outsideWindowMm'>>, allowed: readonly Polygon[]): Grid {
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+function makeGrid(
+  poly: Polygon,
+  o: Required<Pick<MeasureOptions, 'cellMm' | 'outsideGrowMm' | 'outsideWindowMm'>>,
+  allowed: readonly Polygon[],
+): Grid {
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   for (const [x, y] of poly) {
-    minX = Math.min(minX, x); minY = Math.min(minY, y); maxX = Math.max(maxX, x); maxY = Math.max(maxY, y);
+    minX = Math.min(minX, x);
+    minY = Math.min(minY, y);
+    maxX = Math.max(maxX, x);
+    maxY = Math.max(maxY, y);
   }
-  const cell = o.cellMm, w = o.outsideWindowMm;
-  const x0 = minX - w, y0 = minY - w;
-  const nx = Math.ceil((maxX - minX + 2 * w) / cell), ny = Math.ceil((maxY - minY + 2 * w) / cell);
+  const cell = o.cellMm,
+    w = o.outsideWindowMm;
+  const x0 = minX - w,
+    y0 = minY - w;
+  const nx = Math.ceil((maxX - minX + 2 * w) / cell),
+    ny = Math.ceil((maxY - minY + 2 * w) / cell);
   const cls = new Uint8Array(nx * ny);
   let inside = 0;
   for (let j = 0; j < ny; j++) {
@@ -193,15 +219,24 @@ function makeGrid(poly: Polygon, o: Required<Pick<MeasureOptions, 'cellMm' | 'ou
 function rasterBeads(grid: Grid, layer: BeadLayer, covered: Uint8Array): void {
   covered.fill(0);
   const { x0, y0, nx, ny, cell } = grid;
-  const gx1 = x0 + nx * cell, gy1 = y0 + ny * cell;
+  const gx1 = x0 + nx * cell,
+    gy1 = y0 + ny * cell;
   for (let k = 0; k < layer.count; k++) {
     const r = layer.width[k] / 2;
     if (!(r > 0)) continue;
-    const ax = layer.x0[k], ay = layer.y0[k], bx = layer.x1[k], by = layer.y1[k];
-    const lx = Math.min(ax, bx) - r, hx = Math.max(ax, bx) + r, ly = Math.min(ay, by) - r, hy = Math.max(ay, by) + r;
+    const ax = layer.x0[k],
+      ay = layer.y0[k],
+      bx = layer.x1[k],
+      by = layer.y1[k];
+    const lx = Math.min(ax, bx) - r,
+      hx = Math.max(ax, bx) + r,
+      ly = Math.min(ay, by) - r,
+      hy = Math.max(ay, by) + r;
     if (hx < x0 || lx > gx1 || hy < y0 || ly > gy1) continue;
-    const i0 = Math.max(0, Math.floor((lx - x0) / cell)), i1 = Math.min(nx - 1, Math.floor((hx - x0) / cell));
-    const j0 = Math.max(0, Math.floor((ly - y0) / cell)), j1 = Math.min(ny - 1, Math.floor((hy - y0) / cell));
+    const i0 = Math.max(0, Math.floor((lx - x0) / cell)),
+      i1 = Math.min(nx - 1, Math.floor((hx - x0) / cell));
+    const j0 = Math.max(0, Math.floor((ly - y0) / cell)),
+      j1 = Math.min(ny - 1, Math.floor((hy - y0) / cell));
     const r2 = r * r;
     for (let j = j0; j <= j1; j++) {
       const y = y0 + (j + 0.5) * cell;
@@ -225,9 +260,14 @@ export function layersInRange(layers: readonly BeadLayer[], range: ZRange): Bead
  * area outside (see PolygonMeasure).
  */
 export function measurePolygons(
-  gcode: string | ParsedGcode | readonly BeadLayer[], polygons: readonly Polygon[], range: ZRange, options: MeasureOptions = {},
+  gcode: string | ParsedGcode | readonly BeadLayer[],
+  polygons: readonly Polygon[],
+  range: ZRange,
+  options: MeasureOptions = {},
 ): PolygonMeasure[] {
-  const all = Array.isArray(gcode) ? (gcode as readonly BeadLayer[]) : beadLayers(gcode as string | ParsedGcode, options);
+  const all = Array.isArray(gcode)
+    ? (gcode as readonly BeadLayer[])
+    : beadLayers(gcode as string | ParsedGcode, options);
   const layers = layersInRange(all, range);
   const fa = filamentAreaMm2(options.filamentDiameter ?? 1.75);
   const o = {
@@ -242,19 +282,23 @@ export function measurePolygons(
     const grid = makeGrid(poly, o, options.allowed ?? []);
     const covered = new Uint8Array(grid.cls.length);
     const cellArea = o.cellMm * o.cellMm;
-    let volume = 0, outside = 0;
-    let minW = Infinity, maxW = -Infinity;
+    let volume = 0,
+      outside = 0;
+    let minW = Infinity,
+      maxW = -Infinity;
     const layerCoverage: number[] = [];
     for (const layer of layers) {
       for (let k = 0; k < layer.count; k++) {
-        const mx = (layer.x0[k] + layer.x1[k]) / 2, my = (layer.y0[k] + layer.y1[k]) / 2;
+        const mx = (layer.x0[k] + layer.x1[k]) / 2,
+          my = (layer.y0[k] + layer.y1[k]) / 2;
         if (!inGrownPolygon(mx, my, poly, volumeGrow)) continue;
         volume += layer.e[k] * fa;
         minW = Math.min(minW, layer.width[k]);
         maxW = Math.max(maxW, layer.width[k]);
       }
       rasterBeads(grid, layer, covered);
-      let inCovered = 0, outCovered = 0;
+      let inCovered = 0,
+        outCovered = 0;
       for (let i = 0; i < covered.length; i++) {
         if (!covered[i]) continue;
         if (grid.cls[i] === 1) inCovered++;
@@ -283,9 +327,16 @@ export function measurePolygons(
  * Share of the part's extrusion length (walls, skin, infill: not skirt or support) laid in lines narrower than
  * `minWidthMm`, over the whole file.
  */
-export function underWidthFraction(gcode: string | ParsedGcode | readonly BeadLayer[], minWidthMm: number, options: BeadOptions = {}): number {
-  const layers = Array.isArray(gcode) ? (gcode as readonly BeadLayer[]) : beadLayers(gcode as string | ParsedGcode, options);
-  let total = 0, under = 0;
+export function underWidthFraction(
+  gcode: string | ParsedGcode | readonly BeadLayer[],
+  minWidthMm: number,
+  options: BeadOptions = {},
+): number {
+  const layers = Array.isArray(gcode)
+    ? (gcode as readonly BeadLayer[])
+    : beadLayers(gcode as string | ParsedGcode, options);
+  let total = 0,
+    under = 0;
   for (const l of layers) {
     for (let k = 0; k < l.count; k++) {
       total += l.length[k];

@@ -49,7 +49,12 @@ export const COMB_FIN_THICKNESSES = [0.3, 0.5, 0.7, 1.0] as const;
 
 /** A rectangle as a counter-clockwise polygon. */
 export function rectPolygon(r: Rect): Polygon {
-  return [[r.x0, r.y0], [r.x1, r.y0], [r.x1, r.y1], [r.x0, r.y1]];
+  return [
+    [r.x0, r.y0],
+    [r.x1, r.y0],
+    [r.x1, r.y1],
+    [r.x0, r.y1],
+  ];
 }
 
 /** Area of a polygon (positive when counter-clockwise), mm². */
@@ -69,11 +74,19 @@ export function binaryStl(tris: readonly Triangle[]): Uint8Array {
   dv.setUint32(80, tris.length, true);
   tris.forEach((t, n) => {
     const [a, b, c] = t;
-    const ux = b[0] - a[0], uy = b[1] - a[1], uz = b[2] - a[2];
-    const vx = c[0] - a[0], vy = c[1] - a[1], vz = c[2] - a[2];
-    let nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const ux = b[0] - a[0],
+      uy = b[1] - a[1],
+      uz = b[2] - a[2];
+    const vx = c[0] - a[0],
+      vy = c[1] - a[1],
+      vz = c[2] - a[2];
+    let nx = uy * vz - uz * vy,
+      ny = uz * vx - ux * vz,
+      nz = ux * vy - uy * vx;
     const len = Math.hypot(nx, ny, nz) || 1;
-    nx /= len; ny /= len; nz /= len;
+    nx /= len;
+    ny /= len;
+    nz /= len;
     const base = 84 + 50 * n;
     dv.setFloat32(base, nx, true);
     dv.setFloat32(base + 4, ny, true);
@@ -89,14 +102,21 @@ export function binaryStl(tris: readonly Triangle[]): Uint8Array {
  * any other edge of the piece); together they must tile the outline, sharing whole edges. Without pieces the
  * outline itself must be convex.
  */
-export function prismTris(outline: Polygon, z0: number, z1: number, pieces?: readonly (readonly number[])[]): Triangle[] {
+export function prismTris(
+  outline: Polygon,
+  z0: number,
+  z1: number,
+  pieces?: readonly (readonly number[])[],
+): Triangle[] {
   const n = outline.length;
   const lo = outline.map(([x, y]): Vec3 => [x, y, z0]);
   const hi = outline.map(([x, y]): Vec3 => [x, y, z1]);
   const tris: Triangle[] = [];
   for (const piece of pieces ?? [outline.map((_, i) => i)]) {
     for (let k = 1; k + 1 < piece.length; k++) {
-      const a = piece[0], b = piece[k], c = piece[k + 1];
+      const a = piece[0],
+        b = piece[k],
+        c = piece[k + 1];
       tris.push([hi[a], hi[b], hi[c]]); // top, facing up
       tris.push([lo[a], lo[c], lo[b]]); // bottom, facing down
     }
@@ -128,7 +148,8 @@ export interface FinsPart {
 export function finsPart(at: Point = BED_CENTRE): FinsPart {
   const total = FIN_THICKNESSES.reduce((s, t) => s + t, 0) + FIN_GAP * (FIN_THICKNESSES.length - 1);
   let x = at[0] - total / 2;
-  const y0 = at[1] - FIN_LENGTH / 2, y1 = at[1] + FIN_LENGTH / 2;
+  const y0 = at[1] - FIN_LENGTH / 2,
+    y1 = at[1] + FIN_LENGTH / 2;
   const fins: Fin[] = [];
   const tris: Triangle[] = [];
   for (const t of FIN_THICKNESSES) {
@@ -160,9 +181,25 @@ export interface TaperPart {
  * (2) mm, `THIN_PART_HEIGHT` tall: a trapezoid prism, symmetric about its centre line, centred on `at`.
  */
 export function taperPart(at: Point = BED_CENTRE, length = 20, thinEnd = 0.2, thickEnd = 2): TaperPart {
-  const x0 = at[0] - length / 2, x1 = at[0] + length / 2, yc = at[1];
-  const outline: Polygon = [[x0, yc - thinEnd / 2], [x1, yc - thickEnd / 2], [x1, yc + thickEnd / 2], [x0, yc + thinEnd / 2]];
-  return { stl: binaryStl(prismTris(outline, 0, THIN_PART_HEIGHT)), height: THIN_PART_HEIGHT, outline, length, thinEnd, thickEnd, x0, yCentre: yc };
+  const x0 = at[0] - length / 2,
+    x1 = at[0] + length / 2,
+    yc = at[1];
+  const outline: Polygon = [
+    [x0, yc - thinEnd / 2],
+    [x1, yc - thickEnd / 2],
+    [x1, yc + thickEnd / 2],
+    [x0, yc + thinEnd / 2],
+  ];
+  return {
+    stl: binaryStl(prismTris(outline, 0, THIN_PART_HEIGHT)),
+    height: THIN_PART_HEIGHT,
+    outline,
+    length,
+    thinEnd,
+    thickEnd,
+    x0,
+    yCentre: yc,
+  };
 }
 
 /**
@@ -173,9 +210,15 @@ export function taperSections(taper: TaperPart, count: number): Polygon[] {
   const half = (x: number) => (taper.thinEnd + ((taper.thickEnd - taper.thinEnd) * (x - taper.x0)) / taper.length) / 2;
   const out: Polygon[] = [];
   for (let k = 0; k < count; k++) {
-    const a = taper.x0 + (taper.length * k) / count, b = taper.x0 + (taper.length * (k + 1)) / count;
+    const a = taper.x0 + (taper.length * k) / count,
+      b = taper.x0 + (taper.length * (k + 1)) / count;
     const yc = taper.yCentre;
-    out.push([[a, yc - half(a)], [b, yc - half(b)], [b, yc + half(b)], [a, yc + half(a)]]);
+    out.push([
+      [a, yc - half(a)],
+      [b, yc - half(b)],
+      [b, yc + half(b)],
+      [a, yc + half(a)],
+    ]);
   }
   return out;
 }
@@ -197,8 +240,10 @@ export interface CombPart {
  * mesh, `THIN_PART_HEIGHT` tall, centred on `at` (the spine and fins together).
  */
 export function combPart(at: Point = BED_CENTRE, spineWidth = 4, spineLength = 20, finLength = 6): CombPart {
-  const sx0 = at[0] - (spineWidth + finLength) / 2, sx1 = sx0 + spineWidth;
-  const sy0 = at[1] - spineLength / 2, sy1 = sy0 + spineLength;
+  const sx0 = at[0] - (spineWidth + finLength) / 2,
+    sx1 = sx0 + spineWidth;
+  const sy0 = at[1] - spineLength / 2,
+    sy1 = sy0 + spineLength;
   const fx1 = sx1 + finLength;
   const pitch = spineLength / COMB_FIN_THICKNESSES.length;
   const fins = COMB_FIN_THICKNESSES.map((t, k) => {
@@ -207,7 +252,10 @@ export function combPart(at: Point = BED_CENTRE, spineWidth = 4, spineLength = 2
   });
   // outline, counter-clockwise: along the spine's bottom, up its right side out and back along each fin, then
   // back along its top and down its left side
-  const outline: Point[] = [[sx0, sy0], [sx1, sy0]];
+  const outline: Point[] = [
+    [sx0, sy0],
+    [sx1, sy0],
+  ];
   const spinePiece: number[] = [0, 1];
   const finPieces: number[][] = [];
   for (const f of fins) {

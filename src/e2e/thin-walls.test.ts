@@ -12,8 +12,18 @@ import { Slicer } from '../api/slicer.js';
 import type { SliceOptions } from '../settings/schema.js';
 import { skipWithoutModels, sliceAndAnalyze, type SlicedModel } from './models.js';
 import {
-  COMB_FIN_THICKNESSES, FIN_THICKNESSES, THIN_PART_HEIGHT, binaryStl, combPart, finsPart, polygonArea, prismTris, rectPolygon, taperPart,
-  taperSections, type Polygon,
+  COMB_FIN_THICKNESSES,
+  FIN_THICKNESSES,
+  THIN_PART_HEIGHT,
+  binaryStl,
+  combPart,
+  finsPart,
+  polygonArea,
+  prismTris,
+  rectPolygon,
+  taperPart,
+  taperSections,
+  type Polygon,
 } from './thin-shapes.js';
 import { beadLayers, measurePolygons, underWidthFraction, type PolygonMeasure } from './thin-measure.js';
 
@@ -83,24 +93,31 @@ test('measure: a rectangle filled with lines of the line width', () => {
 });
 
 test('measure: half-width lines cover half, skirt lines do not count, a stray line is outside', () => {
-  const half = syntheticGcode(threeLayers(() => [
-    ...fillLines(0.2),
-    // skirt between the fill lines: not part material
-    ...[0.4, 0.8, 1.2, 1.6].map((dx) => ({ type: 'SKIRT', x0: 50 + dx, y0: 50, x1: 50 + dx, y1: 60, w: 0.2 })),
-  ]));
+  const half = syntheticGcode(
+    threeLayers(() => [
+      ...fillLines(0.2),
+      // skirt between the fill lines: not part material
+      ...[0.4, 0.8, 1.2, 1.6].map((dx) => ({ type: 'SKIRT', x0: 50 + dx, y0: 50, x1: 50 + dx, y1: 60, w: 0.2 })),
+    ]),
+  );
   const [m] = measurePolygons(half, [RECT], UPPER);
   assert.ok(Math.abs(m.volumeRatio - 0.5) < 0.005, `volume ratio ${m.volumeRatio}`);
   assert.ok(Math.abs(m.coverage - 0.5) < 0.03, `coverage ${m.coverage}`);
   assert.ok(m.maxWidthMm !== null && Math.abs(m.maxWidthMm - 0.2) < 0.002, `width ${m.maxWidthMm}`);
 
   // a wall 0.5 mm left of the rectangle, on the upper two layers only: its whole capsule is outside
-  const stray = syntheticGcode(threeLayers((k) => [
-    ...fillLines(0.4),
-    ...(k > 0 ? [{ type: 'WALL-OUTER', x0: 49.5, y0: 50, x1: 49.5, y1: 60, w: 0.4 }] : []),
-  ]));
+  const stray = syntheticGcode(
+    threeLayers((k) => [
+      ...fillLines(0.4),
+      ...(k > 0 ? [{ type: 'WALL-OUTER', x0: 49.5, y0: 50, x1: 49.5, y1: 60, w: 0.4 }] : []),
+    ]),
+  );
   const [s] = measurePolygons(stray, [RECT], UPPER);
   const capsule = 10 * 0.4 + Math.PI * 0.04;
-  assert.ok(Math.abs(s.outsideMm2 - (5 * CAP_OUT + capsule)) < 0.05, `outside ${s.outsideMm2} vs ${5 * CAP_OUT + capsule}`);
+  assert.ok(
+    Math.abs(s.outsideMm2 - (5 * CAP_OUT + capsule)) < 0.05,
+    `outside ${s.outsideMm2} vs ${5 * CAP_OUT + capsule}`,
+  );
   assert.ok(Math.abs(s.volumeRatio - 1) < 0.005, `its midpoint is outside, so not in the volume: ${s.volumeRatio}`);
   // on the first layer alone it is not there
   const [first] = measurePolygons(stray, [RECT], { zMin: 0.1, zMax: 0.3 });
@@ -111,14 +128,18 @@ test('measure: half-width lines cover half, skirt lines do not count, a stray li
 });
 
 test('measure: under-width fraction over part lines only', () => {
-  const g = syntheticGcode(threeLayers((k) => [
-    ...fillLines(0.4),
-    ...(k === 1 ? [
-      { type: 'WALL-INNER', x0: 60, y0: 50, x1: 60, y1: 60, w: 0.15 }, // part, narrow: 10 mm
-      { type: 'SKIRT', x0: 40, y0: 50, x1: 40, y1: 70, w: 0.1 }, // not part
-      { type: 'SUPPORT', x0: 45, y0: 50, x1: 45, y1: 70, w: 0.1 }, // not part
-    ] : []),
-  ]));
+  const g = syntheticGcode(
+    threeLayers((k) => [
+      ...fillLines(0.4),
+      ...(k === 1
+        ? [
+            { type: 'WALL-INNER', x0: 60, y0: 50, x1: 60, y1: 60, w: 0.15 }, // part, narrow: 10 mm
+            { type: 'SKIRT', x0: 40, y0: 50, x1: 40, y1: 70, w: 0.1 }, // not part
+            { type: 'SUPPORT', x0: 45, y0: 50, x1: 45, y1: 70, w: 0.1 }, // not part
+          ]
+        : []),
+    ]),
+  );
   const f = underWidthFraction(g, 0.2);
   assert.ok(Math.abs(f - 10 / 160) < 1e-3, `under 0.2 mm: ${f}`);
   assert.equal(underWidthFraction(g, 0.1), 0);
@@ -131,7 +152,9 @@ test('measure: under-width fraction over part lines only', () => {
 });
 
 test('thin parts: closed, consistently wound meshes of the right volume', () => {
-  const fins = finsPart(), taper = taperPart(), comb = combPart();
+  const fins = finsPart(),
+    taper = taperPart(),
+    comb = combPart();
   const combVolume = (4 * 20 + COMB_FIN_THICKNESSES.reduce((s, t) => s + 6 * t, 0)) * 4;
   for (const [name, stl, volume] of [
     ['fins', fins.stl, FIN_THICKNESSES.reduce((s, t) => s + t * 10 * 4, 0)],
@@ -146,7 +169,9 @@ test('thin parts: closed, consistently wound meshes of the right volume', () => 
     for (let t = 0; t < n; t++) {
       const v = [0, 1, 2].map((k) => [0, 1, 2].map((m) => dv.getFloat32(84 + 50 * t + 12 + 12 * k + 4 * m, true)));
       const [a, b, c] = v;
-      vol += (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) / 6;
+      vol +=
+        (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0]) + a[2] * (b[0] * c[1] - b[1] * c[0])) /
+        6;
       for (let k = 0; k < 3; k++) {
         const key = `${v[k].join(',')}>${v[(k + 1) % 3].join(',')}`;
         edges.set(key, (edges.get(key) ?? 0) + 1);
@@ -195,10 +220,16 @@ const fmt = (m: PolygonMeasure) =>
   `coverage ${m.coverage.toFixed(3)}, volume ${m.volumeRatio.toFixed(3)}, outside ${m.outsideMm2.toFixed(3)} mm², ` +
   `widths ${m.minWidthMm?.toFixed(3) ?? '-'}…${m.maxWidthMm?.toFixed(3) ?? '-'} mm`;
 
-test('fins 0.25-1.6 mm: each printed, covered ≥ 85 %, 0.8-1.3 × its volume, ≤ 5 % of its area outside', { timeout: 60_000 }, async (t) => {
+test('fins 0.25-1.6 mm: each printed, covered ≥ 85 %, 0.8-1.3 × its volume, ≤ 5 % of its area outside', {
+  timeout: 60_000,
+}, async (t) => {
   const part = finsPart();
   const gcode = await sliceThin('fins', part.stl, 'variable');
-  const measures = measurePolygons(gcode, part.fins.map((f) => f.polygon), BODY);
+  const measures = measurePolygons(
+    gcode,
+    part.fins.map((f) => f.polygon),
+    BODY,
+  );
   const failed: string[] = [];
   part.fins.forEach((fin, k) => {
     const m = measures[k];
@@ -225,24 +256,36 @@ test('taper 0.2-2 mm: covered ≥ 90 % along its length, ≤ 5 % of its area out
   parts.forEach((m, k) => t.diagnostic(`quarter ${k + 1}: coverage ${m.coverage.toFixed(3)}`));
   const failed: string[] = [];
   if (whole.coverage < 0.9) failed.push(`whole coverage ${whole.coverage.toFixed(3)}`);
-  if (whole.outsideMm2 > 0.05 * whole.areaMm2) failed.push(`outside ${whole.outsideMm2.toFixed(3)} mm² of ${whole.areaMm2.toFixed(2)}`);
-  parts.forEach((m, k) => { if (m.coverage < 0.9) failed.push(`quarter ${k + 1} coverage ${m.coverage.toFixed(3)}`); });
+  if (whole.outsideMm2 > 0.05 * whole.areaMm2)
+    failed.push(`outside ${whole.outsideMm2.toFixed(3)} mm² of ${whole.areaMm2.toFixed(2)}`);
+  parts.forEach((m, k) => {
+    if (m.coverage < 0.9) failed.push(`quarter ${k + 1} coverage ${m.coverage.toFixed(3)}`);
+  });
   assert.deepEqual(failed, []);
 });
 
 test('comb: fins 0.3-1.0 mm standing off a spine covered ≥ 85 %', { timeout: 60_000 }, async (t) => {
   const part = combPart();
   const gcode = await sliceThin('comb', part.stl, 'variable');
-  const measures = measurePolygons(gcode, part.fins.map((f) => f.polygon), BODY, { allowed: [rectPolygon(part.spine)] });
+  const measures = measurePolygons(
+    gcode,
+    part.fins.map((f) => f.polygon),
+    BODY,
+    { allowed: [rectPolygon(part.spine)] },
+  );
   const failed: string[] = [];
   part.fins.forEach((fin, k) => {
     t.diagnostic(`fin ${fin.thickness} mm: ${fmt(measures[k])}`);
-    if (measures[k].coverage < 0.85) failed.push(`fin ${fin.thickness} mm: coverage ${measures[k].coverage.toFixed(3)}`);
+    if (measures[k].coverage < 0.85)
+      failed.push(`fin ${fin.thickness} mm: coverage ${measures[k].coverage.toFixed(3)}`);
   });
   assert.deepEqual(failed, []);
 });
 
-test('HollowCalibrationCube: ≤ 1 % of part lines under 0.2 mm wide, top and bottom skin ≥ 99 %', { skip, timeout: 120_000 }, async (t) => {
+test('HollowCalibrationCube: ≤ 1 % of part lines under 0.2 mm wide, top and bottom skin ≥ 99 %', {
+  skip,
+  timeout: 120_000,
+}, async (t) => {
   const { gcode, report } = await sliceCube('variable');
   const under = underWidthFraction(gcode, 0.2);
   const { top, bottom } = report.summary.skin;
@@ -253,7 +296,11 @@ test('HollowCalibrationCube: ≤ 1 % of part lines under 0.2 mm wide, top and bo
 });
 
 test('classic walls still slice, and differently from variable ones', { timeout: 120_000 }, async () => {
-  for (const [name, stl] of [['fins', finsPart().stl], ['taper', taperPart().stl], ['comb', combPart().stl]] as const) {
+  for (const [name, stl] of [
+    ['fins', finsPart().stl],
+    ['taper', taperPart().stl],
+    ['comb', combPart().stl],
+  ] as const) {
     const classic = await sliceThin(name, stl, 'classic');
     const variable = await sliceThin(name, stl, 'variable');
     assert.match(classic, /;TYPE:WALL-OUTER/, `${name}: classic walls`);
@@ -261,7 +308,10 @@ test('classic walls still slice, and differently from variable ones', { timeout:
   }
 });
 
-test('HollowCalibrationCube: classic walls still slice, and differently from variable ones', { skip, timeout: 120_000 }, async () => {
+test('HollowCalibrationCube: classic walls still slice, and differently from variable ones', {
+  skip,
+  timeout: 120_000,
+}, async () => {
   const classic = await sliceCube('classic');
   const variable = await sliceCube('variable');
   assert.match(classic.gcode, /;TYPE:WALL-OUTER/);
@@ -277,7 +327,9 @@ test('fins: two slices give byte-identical G-code', { timeout: 60_000 }, async (
   assert.ok(first === again, 'run to run');
 });
 
-test('a feature thinner than minFeatureSize is left out and the result says where and how much', { timeout: 60_000 }, async () => {
+test('a feature thinner than minFeatureSize is left out and the result says where and how much', {
+  timeout: 60_000,
+}, async () => {
   // a 10 × 10 mm block with a 0.06 mm fin standing off it, 12 mm long, 2 mm tall
   const block = prismTris(rectPolygon({ x0: 100, y0: 100, x1: 110, y1: 110 }), 0, 2);
   const fin = prismTris(rectPolygon({ x0: 112, y0: 100, x1: 112.06, y1: 112 }), 0, 2);
@@ -287,8 +339,14 @@ test('a feature thinner than minFeatureSize is left out and the result says wher
   assert.ok(lost.length >= 8, `layers with area left out: ${lost.length}`);
   const total = lost.reduce((a, l) => a + l.areaMm2, 0);
   // 0.06 × 12 mm a layer, over the layers the fin stands in (all but a layer or two at its ends)
-  assert.ok(total > 0.5 * 0.72 * lost.length && total < 1.5 * 0.72 * lost.length, `area left out ${total} mm² over ${lost.length} layers`);
-  assert.ok(lost.every((l) => l.z <= 2.01), 'only the fin layers');
+  assert.ok(
+    total > 0.5 * 0.72 * lost.length && total < 1.5 * 0.72 * lost.length,
+    `area left out ${total} mm² over ${lost.length} layers`,
+  );
+  assert.ok(
+    lost.every((l) => l.z <= 2.01),
+    'only the fin layers',
+  );
   assert.equal(r.warnings.filter((w) => /too thin to print/.test(w)).length, 1, r.warnings.join('; '));
   // a fin the walls can print is not reported
   const printable = binaryStl([...block, ...prismTris(rectPolygon({ x0: 112, y0: 100, x1: 112.3, y1: 112 }), 0, 2)]);

@@ -23,7 +23,8 @@ class SectionIndex {
   private readonly rows = new Map<number, number[]>();
   constructor(private readonly s: SectionSegments) {
     for (let i = 0; i < s.count; i++) {
-      const lo = Math.floor(Math.min(s.y0[i], s.y1[i])), hi = Math.floor(Math.max(s.y0[i], s.y1[i]));
+      const lo = Math.floor(Math.min(s.y0[i], s.y1[i])),
+        hi = Math.floor(Math.max(s.y0[i], s.y1[i]));
       for (let r = lo; r <= hi; r++) (this.rows.get(r) ?? this.rows.set(r, []).get(r)!).push(i);
     }
   }
@@ -32,7 +33,8 @@ class SectionIndex {
     const s = this.s;
     let winding = 0;
     for (const i of this.rows.get(Math.floor(y)) ?? []) {
-      const ay = s.y0[i], by = s.y1[i];
+      const ay = s.y0[i],
+        by = s.y1[i];
       if (ay <= y !== by <= y) {
         const cx = s.x0[i] + ((y - ay) * (s.x1[i] - s.x0[i])) / (by - ay);
         if (cx > x) winding += by > ay ? 1 : -1;
@@ -40,22 +42,28 @@ class SectionIndex {
     }
     if (winding !== 0) return true;
     for (let r = Math.floor(y - near); r <= Math.floor(y + near); r++) {
-      for (const i of this.rows.get(r) ?? []) if (segDist(x, y, s.x0[i], s.y0[i], s.x1[i], s.y1[i]) <= near) return true;
+      for (const i of this.rows.get(r) ?? [])
+        if (segDist(x, y, s.x0[i], s.y0[i], s.x1[i], s.y1[i]) <= near) return true;
     }
     return false;
   }
 }
 
 function segDist(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const dx = bx - ax, dy = by - ay;
+  const dx = bx - ax,
+    dy = by - ay;
   const l2 = dx * dx + dy * dy;
   const t = l2 > 0 ? Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / l2)) : 0;
   return Math.hypot(px - ax - t * dx, py - ay - t * dy);
 }
 
 /** Retracting travels, and the points of unretracted travels (sampled every 0.5 mm) outside the part's section. */
-function travels(plan: PrintPlan, sectionAt: (z: number) => SectionIndex): { retractions: number; travelM: number; outside: string[] } {
-  let retractions = 0, travel = 0;
+function travels(
+  plan: PrintPlan,
+  sectionAt: (z: number) => SectionIndex,
+): { retractions: number; travelM: number; outside: string[] } {
+  let retractions = 0,
+    travel = 0;
   const outside: string[] = [];
   let at = { x: 0, y: 0 };
   for (const layer of plan.layers) {
@@ -73,7 +81,8 @@ function travels(plan: PrintPlan, sectionAt: (z: number) => SectionIndex): { ret
         if (!step.retract && layer.index > 0) {
           index ??= sectionAt(layer.z - layer.height / 2);
           for (let k = 0, n = Math.ceil(len / 0.5); k <= n; k++) {
-            const x = (from.x + ((to.x - from.x) * k) / Math.max(1, n)) / 1000, y = (from.y + ((to.y - from.y) * k) / Math.max(1, n)) / 1000;
+            const x = (from.x + ((to.x - from.x) * k) / Math.max(1, n)) / 1000,
+              y = (from.y + ((to.y - from.y) * k) / Math.max(1, n)) / 1000;
             // a travel along the outer wall's centreline is half a line width inside the outline: allow a line width
             if (!index.inside(x, y, 0.45)) outside.push(`layer ${layer.index} (${x.toFixed(2)}, ${y.toFixed(2)})`);
           }
@@ -91,14 +100,23 @@ for (const [name, prusaRetractions, prusaTravelM, travelRatio] of [
   ['spot.stl', 2067, 25.1, 1.15],
   ['3DBenchy.stl.gz', 1774, 22.8, 1.1],
 ] as const) {
-  test(`${name}: fewer retractions than PrusaSlicer (${prusaRetractions}), travel within ${travelRatio} × its ${prusaTravelM} m, and no unretracted travel outside the part`, { skip, timeout: 300_000 }, async () => {
+  test(`${name}: fewer retractions than PrusaSlicer (${prusaRetractions}), travel within ${travelRatio} × its ${prusaTravelM} m, and no unretracted travel outside the part`, {
+    skip,
+    timeout: 300_000,
+  }, async () => {
     const bytes = readModel(name);
     const slicer = new Slicer({ threads: 1 });
     const { plan } = await slicer.slicePlan(bytes);
     const sectioner = createSectioner(prepareModel(bytes, slicer.config).mesh);
     const r = travels(plan, (z) => new SectionIndex(sectioner.section(z)));
-    assert.ok(r.retractions <= prusaRetractions, `${r.retractions} retractions (PrusaSlicer ${prusaRetractions}); travel ${r.travelM.toFixed(1)} m`);
-    assert.ok(r.travelM <= prusaTravelM * travelRatio, `travel ${r.travelM.toFixed(2)} m (PrusaSlicer ${prusaTravelM} m)`);
+    assert.ok(
+      r.retractions <= prusaRetractions,
+      `${r.retractions} retractions (PrusaSlicer ${prusaRetractions}); travel ${r.travelM.toFixed(1)} m`,
+    );
+    assert.ok(
+      r.travelM <= prusaTravelM * travelRatio,
+      `travel ${r.travelM.toFixed(2)} m (PrusaSlicer ${prusaTravelM} m)`,
+    );
     assert.deepEqual(r.outside.slice(0, 10), [], `${r.outside.length} points of unretracted travel outside the part`);
   });
 }

@@ -32,7 +32,8 @@ function fakeSerial(): void {
     let cs = 0;
     const body = raw.slice(0, raw.lastIndexOf('*'));
     for (let i = 0; i < body.length; i++) cs ^= body.charCodeAt(i);
-    if (!m || cs !== Number(m[3])) return say(`Error:checksum mismatch, Last Line: ${expected - 1}\nResend: ${expected}\nok\n`);
+    if (!m || cs !== Number(m[3]))
+      return say(`Error:checksum mismatch, Last Line: ${expected - 1}\nResend: ${expected}\nok\n`);
     if (m[2]!.startsWith('M110')) {
       expected = 1;
       return say('ok\n');
@@ -43,7 +44,8 @@ function fakeSerial(): void {
       marlin.resends++;
       return say(`Error:checksum mismatch, Last Line: 4\nResend: 5\nok\n`);
     }
-    if (Number(m[1]) !== expected) return say(`Error:Line Number is not Last Line Number+1, Last Line: ${expected - 1}\nResend: ${expected}\nok\n`);
+    if (Number(m[1]) !== expected)
+      return say(`Error:Line Number is not Last Line Number+1, Last Line: ${expected - 1}\nResend: ${expected}\nok\n`);
     expected++;
     marlin.executed.push(m[2]!);
     setTimeout(() => say('ok\n'), 0);
@@ -96,12 +98,17 @@ describe('the page sends to a printer', { skip: missing || false }, () => {
     await page.waitForFunction(() => document.querySelectorAll('#object-list li').length === 1);
     await page.getByRole('button', { name: 'Slice', exact: true }).click();
     await page.waitForSelector('#stat-layers', { timeout: 120_000 });
-    const [download] = await Promise.all([page.waitForEvent('download'), page.getByRole('button', { name: 'Download G-code', exact: true }).click()]);
+    const [download] = await Promise.all([
+      page.waitForEvent('download'),
+      page.getByRole('button', { name: 'Download G-code', exact: true }).click(),
+    ]);
     const gcode = readFileSync((await download.path())!);
     return { page, gcode };
   }
 
-  test('to Moonraker: in its file list byte for byte; the host remembered; a wrong key one line', { timeout: 240_000 }, async () => {
+  test('to Moonraker: in its file list byte for byte; the host remembered; a wrong key one line', {
+    timeout: 240_000,
+  }, async () => {
     const { page, gcode } = await slicedPage();
     await page.getByRole('button', { name: 'Send to printer', exact: true }).click();
     const dialog = page.getByRole('dialog', { name: 'Send to printer' });
@@ -111,16 +118,31 @@ describe('the page sends to a printer', { skip: missing || false }, () => {
     await dialog.getByRole('button', { name: 'Send', exact: true }).click();
     const status = dialog.getByRole('status');
     await status.filter({ hasText: /^Sent |\S/ }).waitFor({ timeout: 60_000 });
-    await page.waitForFunction(() => !/^Uploading/.test(document.getElementById('send-status')!.textContent ?? ''), undefined, { timeout: 60_000 });
-    assert.match((await status.textContent())!, /^Sent calibration-cube\.gcode to Moonraker at http:\/\/127\.0\.0\.1:\d+\.$/);
-    const list = (await getJson(`${moonraker.url}/server/files/list?root=gcodes`)) as { result: Array<{ path: string; size: number }> };
+    await page.waitForFunction(
+      () => !/^Uploading/.test(document.getElementById('send-status')!.textContent ?? ''),
+      undefined,
+      { timeout: 60_000 },
+    );
+    assert.match(
+      (await status.textContent())!,
+      /^Sent calibration-cube\.gcode to Moonraker at http:\/\/127\.0\.0\.1:\d+\.$/,
+    );
+    const list = (await getJson(`${moonraker.url}/server/files/list?root=gcodes`)) as {
+      result: Array<{ path: string; size: number }>;
+    };
     assert.equal(list.result.find((f) => f.path === 'calibration-cube.gcode')?.size, gcode.length);
-    assert.ok(Buffer.from(await getBytes(`${moonraker.url}/server/files/gcodes/calibration-cube.gcode`)).equals(gcode), 'the host has the page\'s G-code byte for byte');
+    assert.ok(
+      Buffer.from(await getBytes(`${moonraker.url}/server/files/gcodes/calibration-cube.gcode`)).equals(gcode),
+      "the host has the page's G-code byte for byte",
+    );
 
     await dialog.getByLabel('API key').fill('WRONG');
     await dialog.getByRole('button', { name: 'Send', exact: true }).click();
     await status.filter({ hasText: /refused the API key/ }).waitFor({ timeout: 30_000 });
-    assert.match((await status.textContent())!, /^Moonraker at http:\/\/127\.0\.0\.1:\d+ refused the API key \(401 Unauthorized\): check the API key field/);
+    assert.match(
+      (await status.textContent())!,
+      /^Moonraker at http:\/\/127\.0\.0\.1:\d+ refused the API key \(401 Unauthorized\): check the API key field/,
+    );
 
     // remembered: a new page opens the dialog on Moonraker at that address (the key, not asked to be, is not)
     const again = await browser.context.newPage();
@@ -134,7 +156,9 @@ describe('the page sends to a printer', { skip: missing || false }, () => {
     await page.close();
   });
 
-  test("the page takes the seeds' library's, PrusaSlicer's and Cura's preset names in a settings file", { timeout: 120_000 }, async () => {
+  test("the page takes the seeds' library's, PrusaSlicer's and Cura's preset names in a settings file", {
+    timeout: 120_000,
+  }, async () => {
     const page = await browser.context.newPage();
     await page.goto(url);
     await page.waitForSelector('html[data-ready="true"]');
@@ -143,20 +167,33 @@ describe('the page sends to a printer', { skip: missing || false }, () => {
       ['Original Prusa MK4', 'PrusamentPETG', 'prusa-mk4', 'prusament-petg'],
       ['creality_cr10s5', 'generic_petg', 'creality-cr-10-s5', 'petg'],
     ]) {
-      await page.getByLabel('Import settings', { exact: true }).setInputFiles({ name: 'profile.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify({ printer, filament })) });
-      await page.waitForFunction(([p, f]) => (document.getElementById('printer') as HTMLSelectElement).value === p && (document.getElementById('filament') as HTMLSelectElement).value === f, [id, fid]);
+      await page.getByLabel('Import settings', { exact: true }).setInputFiles({
+        name: 'profile.json',
+        mimeType: 'application/json',
+        buffer: Buffer.from(JSON.stringify({ printer, filament })),
+      });
+      await page.waitForFunction(
+        ([p, f]) =>
+          (document.getElementById('printer') as HTMLSelectElement).value === p &&
+          (document.getElementById('filament') as HTMLSelectElement).value === f,
+        [id, fid],
+      );
     }
     await page.close();
   });
 
-  test('over USB (Web Serial): every command once, in order, a garbled line sent again', { timeout: 240_000 }, async () => {
+  test('over USB (Web Serial): every command once, in order, a garbled line sent again', {
+    timeout: 240_000,
+  }, async () => {
     const { page, gcode } = await slicedPage();
     await page.getByRole('button', { name: 'Send to printer', exact: true }).click();
     const dialog = page.getByRole('dialog', { name: 'Send to printer' });
     await dialog.getByLabel('USB (Marlin)').check();
     await dialog.getByRole('button', { name: 'Send', exact: true }).click();
     await dialog.getByRole('status').filter({ hasText: 'every line sent' }).waitFor({ timeout: 180_000 });
-    const marlin = await page.evaluate(() => (window as unknown as { __marlin: { executed: string[]; resends: number } }).__marlin);
+    const marlin = await page.evaluate(
+      () => (window as unknown as { __marlin: { executed: string[]; resends: number } }).__marlin,
+    );
     assert.equal(marlin.resends, 1);
     assert.deepEqual(marlin.executed, gcodeCommands(gcode.toString('utf8')));
     await page.close();

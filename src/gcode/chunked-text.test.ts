@@ -12,7 +12,10 @@ function collect(chunkBytes: number, write: (t: ChunkedText) => void): string[] 
 }
 
 test('fixed() writes the same text as fixedDecimal() for positions and E values', () => {
-  const values = [0, 1, -1, 9, 10, 99, 100, 101, 999, 1000, 1001, 10500, -10500, 123456, 220000, 1999999, 10000000000, -7, 50, 12345678901];
+  const values = [
+    0, 1, -1, 9, 10, 99, 100, 101, 999, 1000, 1001, 10500, -10500, 123456, 220000, 1999999, 10000000000, -7, 50,
+    12345678901,
+  ];
   let seed = 12345;
   for (let i = 0; i < 2000; i++) {
     seed = (seed * 1103515245 + 12345) % 2147483648;

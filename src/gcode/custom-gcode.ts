@@ -107,8 +107,15 @@ export function printCustomGcode(plan: PrintPlan, settings: Settings, estimate: 
   const volume = (filamentMm: number) => r3(filamentMm * area);
   const weight = (filamentMm: number) => r3((filamentMm * area * settings.filamentDensity) / 1000);
   const run = (name: string, t: ParsedTemplate, values: Record<string, number>): string[] =>
-    templateForFlavor(finalLines(runCompiledTemplate(t, settings, values)), settings.gcodeFlavor, name, settings.heatedBed);
-  const compiled = new Map(templatesInUse(settings).map(([name, text]) => [name, compileTemplate(name, text, DERIVED_VALUES)]));
+    templateForFlavor(
+      finalLines(runCompiledTemplate(t, settings, values)),
+      settings.gcodeFlavor,
+      name,
+      settings.heatedBed,
+    );
+  const compiled = new Map(
+    templatesInUse(settings).map(([name, text]) => [name, compileTemplate(name, text, DERIVED_VALUES)]),
+  );
 
   const layers = plan.layers;
   let top = 0;
@@ -178,7 +185,8 @@ export function printCustomGcode(plan: PrintPlan, settings: Settings, estimate: 
         maxSoFar = v.maxLayerZ;
         const lines: string[] = [];
         if (before) lines.push(...run('beforeLayerChangeGcode', before, v));
-        if (colorChange && colorLayers.has(index)) lines.push(';COLOR_CHANGE,T0', ...run('colorChangeGcode', colorChange, v));
+        if (colorChange && colorLayers.has(index))
+          lines.push(';COLOR_CHANGE,T0', ...run('colorChangeGcode', colorChange, v));
         if (pause && pauseLayers.has(index)) lines.push(';PAUSE_PRINT', ...run('pauseGcode', pause, v));
         return lines;
       },

@@ -11,13 +11,50 @@ import type { GcodeFlavor } from './flavor.js';
 /** A 10 mm cube as raw arrays. */
 const CUBE = {
   positions: new Float32Array([0, 0, 0, 10, 0, 0, 0, 10, 0, 10, 10, 0, 0, 0, 10, 10, 0, 10, 0, 10, 10, 10, 10, 10]),
-  indices: new Uint32Array([0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5]),
+  indices: new Uint32Array([
+    0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5,
+  ]),
 };
 
-const COMMON = ['G0', 'G1', 'G2', 'G3', 'G4', 'G28', 'G90', 'G91', 'G92', 'M73', 'M82', 'M83', 'M84', 'M106', 'M107', 'M140', 'M190', 'M204'];
+const COMMON = [
+  'G0',
+  'G1',
+  'G2',
+  'G3',
+  'G4',
+  'G28',
+  'G90',
+  'G91',
+  'G92',
+  'M73',
+  'M82',
+  'M83',
+  'M84',
+  'M106',
+  'M107',
+  'M140',
+  'M190',
+  'M204',
+];
 /** The commands each firmware takes (Klipper also runs its macros: upper-case words). */
 const KNOWN: Record<GcodeFlavor, ReadonlySet<string>> = {
-  marlin: new Set([...COMMON, 'M104', 'M109', 'G10', 'G11', 'G29', 'M420', 'G80', 'M862.1', 'M862.3', 'M486', 'M900', 'M201', 'M203', 'M205']),
+  marlin: new Set([
+    ...COMMON,
+    'M104',
+    'M109',
+    'G10',
+    'G11',
+    'G29',
+    'M420',
+    'G80',
+    'M862.1',
+    'M862.3',
+    'M486',
+    'M900',
+    'M201',
+    'M203',
+    'M205',
+  ]),
   klipper: new Set([...COMMON, 'M104', 'M109', 'G10', 'G11']),
   reprap: new Set([...COMMON, 'G10', 'G11', 'T0', 'M116', 'G29', 'M486', 'M572', 'M201', 'M203', 'M566']),
 };
@@ -40,8 +77,17 @@ test('every preset in every flavour: only commands its firmware takes, heated be
       const slicer = new Slicer({ printer: id, gcodeFlavor: flavor, threads: 1 });
       const usesMacros = /^\s*[A-Z_]{4,}/m.test(slicer.config.startGcode + '\n' + slicer.config.endGcode);
       if (usesMacros && flavor !== 'klipper') {
-        assert.equal(new Slicer({ printer: id }).config.gcodeFlavor, 'klipper', `${id}: only Klipper printers' templates call macros`);
-        await assert.rejects(slicer.slice(CUBE), (e: unknown) => e instanceof StrataError && /is a Klipper macro, which .* firmware does not run/.test(e.message), `${id} ${flavor}`);
+        assert.equal(
+          new Slicer({ printer: id }).config.gcodeFlavor,
+          'klipper',
+          `${id}: only Klipper printers' templates call macros`,
+        );
+        await assert.rejects(
+          slicer.slice(CUBE),
+          (e: unknown) =>
+            e instanceof StrataError && /is a Klipper macro, which .* firmware does not run/.test(e.message),
+          `${id} ${flavor}`,
+        );
         refusedCount++;
         continue;
       }
@@ -56,7 +102,10 @@ test('every preset in every flavour: only commands its firmware takes, heated be
       const heatAt = gcode.search(heat);
       // Klipper macro presets heat inside the macro (START_PRINT … EXTRUDER_TEMP=…)
       const macroHeat = gcode.search(/^(START_PRINT|PRINT_START)\b.*\d/m);
-      assert.ok((heatAt >= 0 && heatAt < firstExtrusion) || (macroHeat >= 0 && macroHeat < firstExtrusion), `${id} in ${flavor}: heated before extruding`);
+      assert.ok(
+        (heatAt >= 0 && heatAt < firstExtrusion) || (macroHeat >= 0 && macroHeat < firstExtrusion),
+        `${id} in ${flavor}: heated before extruding`,
+      );
       if (flavor === 'reprap') assert.doesNotMatch(gcode, /^M10[49]\b/m, `${id}: RepRap gets no M104/M109`);
     }
   }
@@ -64,7 +113,16 @@ test('every preset in every flavour: only commands its firmware takes, heated be
 });
 
 test('RepRap: nozzle heating becomes tool temperatures; mesh commands and Prusa checks are translated', () => {
-  const lines = ['M104 S{t} ; warm', 'M109 S215', 'M109 T1 S200', 'M420 S1 ; mesh on', 'G80', 'M862.3 P "MK4"', 'G28', 'M104 S0'];
+  const lines = [
+    'M104 S{t} ; warm',
+    'M109 S215',
+    'M109 T1 S200',
+    'M420 S1 ; mesh on',
+    'G80',
+    'M862.3 P "MK4"',
+    'G28',
+    'M104 S0',
+  ];
   assert.deepEqual(templateForFlavor(lines, 'reprap', 'startGcode'), [
     'G10 P0 S{t} R{t} ; warm',
     'G10 P0 S215 R215 ; nozzle temperature',
@@ -91,8 +149,13 @@ test('a Klipper macro under Marlin or RepRap is refused before slicing, naming t
   for (const flavor of ['marlin', 'reprap'] as const) {
     assert.throws(
       () => checkTemplatesForFlavor({ gcodeFlavor: flavor, startGcode: 'G28\nSTART_PRINT BED=60', endGcode: '' }),
-      (e: unknown) => e instanceof StrataError && e.code === 'BAD_SETTING' && /^startGcode line 2 "START_PRINT BED=60" is a Klipper macro/.test(e.message),
+      (e: unknown) =>
+        e instanceof StrataError &&
+        e.code === 'BAD_SETTING' &&
+        /^startGcode line 2 "START_PRINT BED=60" is a Klipper macro/.test(e.message),
     );
   }
-  assert.doesNotThrow(() => checkTemplatesForFlavor({ gcodeFlavor: 'klipper', startGcode: 'START_PRINT', endGcode: 'END_PRINT' }));
+  assert.doesNotThrow(() =>
+    checkTemplatesForFlavor({ gcodeFlavor: 'klipper', startGcode: 'START_PRINT', endGcode: 'END_PRINT' }),
+  );
 });

@@ -45,7 +45,9 @@ const REWRITES: Readonly<Record<GcodeFlavor, Readonly<Record<string, Rewrite>>>>
   marlin: {},
   klipper: {
     M420: (words, comment) =>
-      param(words, 'S') === '0' ? [`BED_MESH_CLEAR${note(comment, 'no bed mesh')}`] : [`BED_MESH_PROFILE LOAD=default${note(comment, 'load the saved bed mesh')}`],
+      param(words, 'S') === '0'
+        ? [`BED_MESH_CLEAR${note(comment, 'no bed mesh')}`]
+        : [`BED_MESH_PROFILE LOAD=default${note(comment, 'load the saved bed mesh')}`],
     G29: (_w, comment) => [`BED_MESH_CALIBRATE${note(comment, 'probe the bed mesh')}`],
     G80: (_w, comment) => [`BED_MESH_CALIBRATE${note(comment, 'probe the bed mesh')}`],
     M862: commentOut('a Prusa printer check; Klipper has none'),
@@ -53,15 +55,25 @@ const REWRITES: Readonly<Record<GcodeFlavor, Readonly<Record<string, Rewrite>>>>
   reprap: {
     M104: REPRAP_NOZZLE(false),
     M109: REPRAP_NOZZLE(true),
-    M420: (words, comment) => (param(words, 'S') === '0' ? [`G29 S2${note(comment, 'no height map')}`] : [`G29 S1${note(comment, 'load the saved height map')}`]),
+    M420: (words, comment) =>
+      param(words, 'S') === '0'
+        ? [`G29 S2${note(comment, 'no height map')}`]
+        : [`G29 S1${note(comment, 'load the saved height map')}`],
     G80: (_w, comment) => [`G29${note(comment, 'probe the bed')}`],
     M862: commentOut('a Prusa printer check; RepRapFirmware has none'),
   },
 };
 
-const NO_BED: Readonly<Record<string, Rewrite>> = { M140: commentOut('no heated bed'), M190: commentOut('no heated bed') };
+const NO_BED: Readonly<Record<string, Rewrite>> = {
+  M140: commentOut('no heated bed'),
+  M190: commentOut('no heated bed'),
+};
 
-const FIRMWARE: Readonly<Record<GcodeFlavor, string>> = { marlin: 'Marlin', klipper: 'Klipper', reprap: 'RepRapFirmware' };
+const FIRMWARE: Readonly<Record<GcodeFlavor, string>> = {
+  marlin: 'Marlin',
+  klipper: 'Klipper',
+  reprap: 'RepRapFirmware',
+};
 
 /** A G-code command word: a letter and a number (G1, M104, M862.3, T0). */
 const GCODE_WORD = /^[GMTD]\d+(\.\d+)?$/i;
@@ -76,7 +88,12 @@ function split(line: string): { words: string[]; comment: string } {
  * The template's lines for `flavor` (see the file comment). Throws StrataError BAD_SETTING for a
  * Klipper macro under another flavour. `name` is the setting, for messages.
  */
-export function templateForFlavor(lines: readonly string[], flavor: GcodeFlavor, name: string, heatedBed = true): string[] {
+export function templateForFlavor(
+  lines: readonly string[],
+  flavor: GcodeFlavor,
+  name: string,
+  heatedBed = true,
+): string[] {
   const rewrites: Readonly<Record<string, Rewrite>> = heatedBed ? REWRITES[flavor] : { ...REWRITES[flavor], ...NO_BED };
   const out: string[] = [];
   lines.forEach((line, i) => {

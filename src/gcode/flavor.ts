@@ -87,7 +87,8 @@ function axisLimits(code: string, values: Record<'X' | 'Y' | 'Z' | 'E', number |
  * deviation, Marlin's M205 only) when given.
  */
 function jerkWords(s: LimitSettings, scale: number, digits: number, withJ: boolean): string {
-  const jx = s.jerkX ?? s.jerkY ?? s.cornerVelocity, jy = s.jerkY ?? s.jerkX ?? s.cornerVelocity;
+  const jx = s.jerkX ?? s.jerkY ?? s.cornerVelocity,
+    jy = s.jerkY ?? s.jerkX ?? s.cornerVelocity;
   let out = `X${compact(jx * scale, digits)} Y${compact(jy * scale, digits)}`;
   if (s.jerkZ !== null) out += ` Z${compact(s.jerkZ * scale, digits)}`;
   if (s.jerkE !== null) out += ` E${compact(s.jerkE * scale, digits)}`;
@@ -95,11 +96,21 @@ function jerkWords(s: LimitSettings, scale: number, digits: number, withJ: boole
   return out;
 }
 
-function m20xLimits(s: LimitSettings, feedScale: number, jerk: (s: LimitSettings) => string, retractWord: boolean): string[] {
+function m20xLimits(
+  s: LimitSettings,
+  feedScale: number,
+  jerk: (s: LimitSettings) => string,
+  retractWord: boolean,
+): string[] {
   const travel = s.travelAcceleration ?? s.acceleration;
   const retract = s.retractAcceleration ?? s.maxAccelerationE ?? s.acceleration;
   return [
-    ...axisLimits('M201', { X: s.maxAccelerationX, Y: s.maxAccelerationY, Z: s.maxAccelerationZ, E: s.maxAccelerationE }),
+    ...axisLimits('M201', {
+      X: s.maxAccelerationX,
+      Y: s.maxAccelerationY,
+      Z: s.maxAccelerationZ,
+      E: s.maxAccelerationE,
+    }),
     ...axisLimits('M203', { X: s.maxSpeedX, Y: s.maxSpeedY, Z: s.maxSpeedZ, E: s.maxSpeedE }, feedScale),
     `M204 P${accel(s.acceleration)}${retractWord ? ` R${accel(retract)}` : ''} T${accel(travel)}`,
     jerk(s),
@@ -135,7 +146,9 @@ const KLIPPER: FlavorCommands = {
   machineLimits: (s) => {
     const axes = [s.maxSpeedX, s.maxSpeedY].filter((v): v is number => v !== null);
     const velocity = axes.length ? Math.min(...axes) : s.maxSpeed;
-    return [`SET_VELOCITY_LIMIT VELOCITY=${compact(velocity, 2)} ACCEL=${accel(s.acceleration)} SQUARE_CORNER_VELOCITY=${compact(s.cornerVelocity, 2)}`];
+    return [
+      `SET_VELOCITY_LIMIT VELOCITY=${compact(velocity, 2)} ACCEL=${accel(s.acceleration)} SQUARE_CORNER_VELOCITY=${compact(s.cornerVelocity, 2)}`,
+    ];
   },
   colorChange: 'PAUSE',
   pause: 'PAUSE',
@@ -155,4 +168,7 @@ const REPRAP: FlavorCommands = {
   pause: 'M226',
 };
 
-export const FLAVORS = { marlin: MARLIN, klipper: KLIPPER, reprap: REPRAP } as const satisfies Record<GcodeFlavor, FlavorCommands>;
+export const FLAVORS = { marlin: MARLIN, klipper: KLIPPER, reprap: REPRAP } as const satisfies Record<
+  GcodeFlavor,
+  FlavorCommands
+>;

@@ -25,7 +25,13 @@ export interface GcodeMeta {
 
 const oneLine = (text: string): string => text.replace(/[\r\n]+/g, ' ');
 
-export function headerLines(plan: PrintPlan, settings: Settings, estimate: PlanEstimate, meta: GcodeMeta, flavorName: string): string[] {
+export function headerLines(
+  plan: PrintPlan,
+  settings: Settings,
+  estimate: PlanEstimate,
+  meta: GcodeMeta,
+  flavorName: string,
+): string[] {
   const b = plan.bounds;
   const lines = [
     `;FLAVOR:${flavorName}`,
@@ -44,7 +50,9 @@ export function headerLines(plan: PrintPlan, settings: Settings, estimate: PlanE
   // the form Moonraker names the slicer from (host-metadata.ts)
   lines.push(generatedByLine(meta.generator, meta.date));
   lines.push(`;Estimated print time: ${humanDuration(estimate.printTimeSeconds)}`);
-  lines.push(`;Estimated filament: ${compact(estimate.filamentMm / 1000, 2)} m, ${compact(estimate.filamentGrams, 2)} g`);
+  lines.push(
+    `;Estimated filament: ${compact(estimate.filamentMm / 1000, 2)} m, ${compact(estimate.filamentGrams, 2)} g`,
+  );
   for (const c of meta.comments ?? []) lines.push(`;${oneLine(c)}`);
   return lines;
 }
@@ -54,7 +62,10 @@ export function derivedTemplateValues(plan: PrintPlan, estimate: PlanEstimate): 
   const b = plan.bounds;
   const r3 = (v: number) => Math.round(v * 1000) / 1000;
   // the first layer's extent (skirt, brim or raft included), mm
-  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  let x0 = Infinity,
+    y0 = Infinity,
+    x1 = -Infinity,
+    y1 = -Infinity;
   for (const step of plan.layers[0]?.steps ?? []) {
     if (step.kind !== 'extrude') continue;
     for (const p of step.points) {

@@ -12,7 +12,7 @@ import { SCHEMA, SETTING_KEYS, type Settings } from '../settings/schema.js';
 import { gcodeToString, type GcodeMeta } from './writer.js';
 import { THUMBNAIL_LINE_CHARS } from './thumbnail-blocks.js';
 
-const META: GcodeMeta = { generator: "Strata test" };
+const META: GcodeMeta = { generator: 'Strata test' };
 
 function settings(overrides: Partial<Settings> = {}): Settings {
   const values: Record<string, unknown> = {};
@@ -21,7 +21,12 @@ function settings(overrides: Partial<Settings> = {}): Settings {
 }
 
 const pt = (x: number, y: number): Pt => ({ x: Math.round(x * 1000), y: Math.round(y * 1000) });
-const square = (x0: number, y0: number, side: number): Pt[] => [pt(x0, y0), pt(x0 + side, y0), pt(x0 + side, y0 + side), pt(x0, y0 + side)];
+const square = (x0: number, y0: number, side: number): Pt[] => [
+  pt(x0, y0),
+  pt(x0 + side, y0),
+  pt(x0 + side, y0 + side),
+  pt(x0, y0 + side),
+];
 const wall = (points: Pt[], object?: number): ExtrudeStep => ({
   kind: 'extrude',
   feature: 'WALL-OUTER',
@@ -33,20 +38,52 @@ const wall = (points: Pt[], object?: number): ExtrudeStep => ({
   flow: 1,
   ...(object === undefined ? {} : { object }),
 });
-const fill = (points: Pt[], object: number): ExtrudeStep => ({ ...wall(points, object), feature: 'FILL', closed: false, speed: 60 });
-const go = (to: Pt, retract: boolean): TravelStep => ({ kind: 'travel', points: [to], retract, zHop: retract ? 0.4 : 0, speed: 150 });
+const fill = (points: Pt[], object: number): ExtrudeStep => ({
+  ...wall(points, object),
+  feature: 'FILL',
+  closed: false,
+  speed: 60,
+});
+const go = (to: Pt, retract: boolean): TravelStep => ({
+  kind: 'travel',
+  points: [to],
+  retract,
+  zHop: retract ? 0.4 : 0,
+  speed: 150,
+});
 
 /** Two 10 mm cubes' worth of layers: object 0 at x 20..30, object 1 at x 60..70, a skirt around both on layer 0. */
 function twoObjectPlan(layers = 6): PrintPlan {
   const objects: PlanObject[] = [
-    { name: 'left cube', center: [25, 25], polygon: [[20, 20], [30, 20], [30, 30], [20, 30]] },
-    { name: 'right cube', center: [65, 25], polygon: [[60, 20], [70, 20], [70, 30], [60, 30]] },
+    {
+      name: 'left cube',
+      center: [25, 25],
+      polygon: [
+        [20, 20],
+        [30, 20],
+        [30, 30],
+        [20, 30],
+      ],
+    },
+    {
+      name: 'right cube',
+      center: [65, 25],
+      polygon: [
+        [60, 20],
+        [70, 20],
+        [70, 30],
+        [60, 30],
+      ],
+    },
   ];
   const out: LayerPlan[] = [];
   for (let i = 0; i < layers; i++) {
     const steps: LayerPlan['steps'] = [];
     if (i === 0) steps.push(go(pt(15, 15), false), wall(square(15, 15, 60)));
-    for (const [k, x] of [[0, 20], [1, 60]] as const) {
+    for (const [k, x] of [
+      [0, 20],
+      [1, 60],
+    ] as const) {
       steps.push(go(pt(x + 0.2, 20.2), true));
       steps.push(wall(square(x + 0.2, 20.2, 9.6), k));
       // an intra-object retracted travel, then a fill line
@@ -83,7 +120,9 @@ test('M73: P never falls, R never rises, P100 R0 after the last layer, nothing e
     assert.equal(+first[2]!, Math.ceil(total / 60), `${flavor}: R at the start is the whole estimate`);
     const last = m73[m73.length - 1]!;
     assert.deepEqual([last.m![1], last.m![2]], ['100', '0']);
-    const after = lines(gcode).slice(last.i + 1).join('\n');
+    const after = lines(gcode)
+      .slice(last.i + 1)
+      .join('\n');
     // the end template only retracts: no positive E with an XY move after the 100 %
     const tail = parseGcode('G91\nM83\n' + after.replace(/^G90.*$/gm, ''));
     assert.equal(tail.e.extruded, 0, `${flavor}: extrusion after M73 P100`);
@@ -101,12 +140,17 @@ test('M73 can be turned off', () => {
 function labelledMoves(gcode: string, start: RegExp, end: RegExp) {
   const text = lines(gcode);
   let open: string | null = null;
-  let x = 0, y = 0, z = 0, zAtStart = 0, lastE = 0;
+  let x = 0,
+    y = 0,
+    z = 0,
+    zAtStart = 0,
+    lastE = 0;
   const absolute = !/^M83\b/m.test(gcode);
   const inside = new Map<string, Array<[number, number]>>();
   const retractBalance = new Map<string, number>();
   const outsideExtrusions: Array<[number, number]> = [];
-  let starts = 0, ends = 0;
+  let starts = 0,
+    ends = 0;
   for (const l of text) {
     const s = start.exec(l);
     if (s) {
@@ -128,7 +172,9 @@ function labelledMoves(gcode: string, start: RegExp, end: RegExp) {
     if (l.startsWith('G92 E0')) lastE = 0;
     const m = /^G[0-3] /.exec(l);
     if (!m) continue;
-    const nx = /X(-?[\d.]+)/.exec(l), ny = /Y(-?[\d.]+)/.exec(l), ne = /E(-?[\d.]+)/.exec(l);
+    const nx = /X(-?[\d.]+)/.exec(l),
+      ny = /Y(-?[\d.]+)/.exec(l),
+      ne = /E(-?[\d.]+)/.exec(l);
     if (nx) x = +nx[1]!;
     if (ny) y = +ny[1]!;
     if (/^G1 F\d+ E/.test(l) || /^G1 E/.test(l)) {
@@ -153,8 +199,14 @@ function labelledMoves(gcode: string, start: RegExp, end: RegExp) {
 }
 
 const insideBox = ([x, y]: [number, number], poly: [number, number][]) => {
-  const xs = poly.map((p) => p[0]), ys = poly.map((p) => p[1]);
-  return x >= Math.min(...xs) - 1e-6 && x <= Math.max(...xs) + 1e-6 && y >= Math.min(...ys) - 1e-6 && y <= Math.max(...ys) + 1e-6;
+  const xs = poly.map((p) => p[0]),
+    ys = poly.map((p) => p[1]);
+  return (
+    x >= Math.min(...xs) - 1e-6 &&
+    x <= Math.max(...xs) + 1e-6 &&
+    y >= Math.min(...ys) - 1e-6 &&
+    y <= Math.max(...ys) + 1e-6
+  );
 };
 
 test('Klipper labels: objects defined before the start G-code, START/END balanced per layer, moves inside their polygon', () => {
@@ -166,18 +218,26 @@ test('Klipper labels: objects defined before the start G-code, START/END balance
     'EXCLUDE_OBJECT_DEFINE NAME=left_cube CENTER=25,25 POLYGON=[[20,20],[30,20],[30,30],[20,30]]',
     'EXCLUDE_OBJECT_DEFINE NAME=right_cube CENTER=65,25 POLYGON=[[60,20],[70,20],[70,30],[60,30]]',
   ]);
-  assert.ok(text.indexOf(defines[1]!) < text.findIndex((l) => l.startsWith('G28')), 'defined before the start template');
+  assert.ok(
+    text.indexOf(defines[1]!) < text.findIndex((l) => l.startsWith('G28')),
+    'defined before the start template',
+  );
   const r = labelledMoves(gcode, /^EXCLUDE_OBJECT_START NAME=(\S+)$/, /^EXCLUDE_OBJECT_END NAME=(\S+)$/);
   assert.equal(r.starts, 2 * plan.layers.length, 'one block per object per layer');
   assert.equal(r.ends, r.starts);
   const poly = { left_cube: plan.objects[0]!.polygon, right_cube: plan.objects[1]!.polygon };
   for (const [name, moves] of r.inside) {
     assert.ok(moves.length > 0);
-    for (const p of moves) assert.ok(insideBox(p, poly[name as keyof typeof poly]), `${name}: ${p} outside its polygon`);
+    for (const p of moves)
+      assert.ok(insideBox(p, poly[name as keyof typeof poly]), `${name}: ${p} outside its polygon`);
   }
-  for (const [name, balance] of r.retractBalance) assert.equal(balance, 0, `${name}: retractions inside the block are primed inside it`);
+  for (const [name, balance] of r.retractBalance)
+    assert.equal(balance, 0, `${name}: retractions inside the block are primed inside it`);
   // only the skirt prints outside the blocks
-  assert.ok(r.outsideExtrusions.length > 0 && r.outsideExtrusions.every((p) => !insideBox(p, poly.left_cube) && !insideBox(p, poly.right_cube)));
+  assert.ok(
+    r.outsideExtrusions.length > 0 &&
+      r.outsideExtrusions.every((p) => !insideBox(p, poly.left_cube) && !insideBox(p, poly.right_cube)),
+  );
 });
 
 test('cancelling an object (dropping its blocks) leaves the other object and the E bookkeeping intact', () => {
@@ -213,7 +273,8 @@ test('cancelling an object (dropping its blocks) leaves the other object and the
       return e;
     };
     assert.ok(Math.abs(sumRight(cancelled) - sumRight(full)) < 1e-3, `${extruderMode}: right cube unchanged`);
-    const all = (p: ReturnType<typeof parseGcode>) => p.layers.reduce((sum, l) => sum + l.extrusions.e.reduce((a, b) => a + b, 0), 0);
+    const all = (p: ReturnType<typeof parseGcode>) =>
+      p.layers.reduce((sum, l) => sum + l.extrusions.e.reduce((a, b) => a + b, 0), 0);
     assert.ok(all(cancelled) < all(full) * 0.75, `the left cube is gone: ${all(cancelled)} of ${all(full)}`);
   }
 });
@@ -240,14 +301,31 @@ test('comment labels only, auto mode per flavour, off, and no objects', () => {
   assert.ok(!/EXCLUDE_OBJECT|M486/.test(comments));
   const r = labelledMoves(comments, /^; printing object (.+)$/, /^; stop printing object (.+)$/);
   assert.equal(r.starts, 4);
-  for (const [name, moves] of r.inside) for (const p of moves) assert.ok(insideBox(p, plan.objects[name === 'left cube' ? 0 : 1]!.polygon));
-  assert.match(write(plan, settings({ gcodeFlavor: 'klipper' })), /^EXCLUDE_OBJECT_START/m, 'auto: firmware for Klipper');
+  for (const [name, moves] of r.inside)
+    for (const p of moves) assert.ok(insideBox(p, plan.objects[name === 'left cube' ? 0 : 1]!.polygon));
+  assert.match(
+    write(plan, settings({ gcodeFlavor: 'klipper' })),
+    /^EXCLUDE_OBJECT_START/m,
+    'auto: firmware for Klipper',
+  );
   const marlinAuto = write(plan, settings({ gcodeFlavor: 'marlin' }));
   assert.match(marlinAuto, /^; printing object left cube$/m, 'auto: comments for Marlin');
   assert.ok(!/M486/.test(marlinAuto));
-  assert.ok(!/printing object|EXCLUDE_OBJECT|M486/.test(write(plan, settings({ gcodeFlavor: 'klipper', labelObjects: 'off' }))));
-  const anonymous = { ...plan, objects: [], layers: plan.layers.map((l) => ({ ...l, steps: l.steps.map((s) => (s.kind === 'extrude' ? { ...s, object: undefined } : s)) })) };
-  assert.ok(!/printing object|EXCLUDE_OBJECT|M486/.test(write(anonymous, settings({ gcodeFlavor: 'klipper' }))), 'no objects, no labels');
+  assert.ok(
+    !/printing object|EXCLUDE_OBJECT|M486/.test(write(plan, settings({ gcodeFlavor: 'klipper', labelObjects: 'off' }))),
+  );
+  const anonymous = {
+    ...plan,
+    objects: [],
+    layers: plan.layers.map((l) => ({
+      ...l,
+      steps: l.steps.map((s) => (s.kind === 'extrude' ? { ...s, object: undefined } : s)),
+    })),
+  };
+  assert.ok(
+    !/printing object|EXCLUDE_OBJECT|M486/.test(write(anonymous, settings({ gcodeFlavor: 'klipper' }))),
+    'no objects, no labels',
+  );
 });
 
 test('Klipper names: unsafe characters replaced, duplicates made unique ignoring case', () => {
@@ -282,7 +360,10 @@ test('firmware retraction: G10/G11 instead of E moves, the same filament as the 
 test('pressure advance in each flavour, and none when empty', () => {
   const plan = twoObjectPlan(1);
   assert.match(write(plan, settings({ pressureAdvance: 0.045 })), /^M900 K0\.045$/m);
-  assert.match(write(plan, settings({ gcodeFlavor: 'klipper', pressureAdvance: 0.045 })), /^SET_PRESSURE_ADVANCE ADVANCE=0\.045$/m);
+  assert.match(
+    write(plan, settings({ gcodeFlavor: 'klipper', pressureAdvance: 0.045 })),
+    /^SET_PRESSURE_ADVANCE ADVANCE=0\.045$/m,
+  );
   assert.match(write(plan, settings({ gcodeFlavor: 'reprap', pressureAdvance: 0.045 })), /^M572 D0 S0\.045$/m);
   assert.ok(!/M900|SET_PRESSURE_ADVANCE|M572/.test(write(plan, settings())));
 });
@@ -291,9 +372,18 @@ test('machine limits written per flavour after the start template', () => {
   const plan = twoObjectPlan(1);
   const limits: Partial<Settings> = {
     machineLimits: 'write',
-    maxSpeedX: 500, maxSpeedY: 400, maxSpeedZ: 12, maxSpeedE: 120,
-    maxAccelerationX: 9000, maxAccelerationY: 8000, maxAccelerationZ: 500, maxAccelerationE: 10000,
-    acceleration: 1500, travelAcceleration: 2000, retractAcceleration: 1250, cornerVelocity: 8,
+    maxSpeedX: 500,
+    maxSpeedY: 400,
+    maxSpeedZ: 12,
+    maxSpeedE: 120,
+    maxAccelerationX: 9000,
+    maxAccelerationY: 8000,
+    maxAccelerationZ: 500,
+    maxAccelerationE: 10000,
+    acceleration: 1500,
+    travelAcceleration: 2000,
+    retractAcceleration: 1250,
+    cornerVelocity: 8,
   };
   const marlin = lines(write(plan, settings(limits)));
   const at = (l: string) => marlin.indexOf(l);
@@ -306,7 +396,10 @@ test('machine limits written per flavour after the start template', () => {
   assert.match(reprap, /^M204 P1500 T2000$/m);
   const klipper = write(plan, settings({ ...limits, gcodeFlavor: 'klipper' }));
   assert.match(klipper, /^SET_VELOCITY_LIMIT VELOCITY=400 ACCEL=1500 SQUARE_CORNER_VELOCITY=8$/m);
-  assert.ok(!/^M201/m.test(write(plan, settings({ ...limits, machineLimits: 'estimate' }))), 'estimate only: not written');
+  assert.ok(
+    !/^M201/m.test(write(plan, settings({ ...limits, machineLimits: 'estimate' }))),
+    'estimate only: not written',
+  );
 });
 
 test('thumbnail blocks carry the exact bytes, in lines of at most 78 base64 characters, before any command', () => {
@@ -319,13 +412,21 @@ test('thumbnail blocks carry the exact bytes, in lines of at most 78 base64 char
       { width: 300, height: 300, format: 'PNG', data },
     ],
   });
-  const blocks = [...gcode.matchAll(/^; (thumbnail(?:_QOI|_JPG)?) begin (\d+)x(\d+) (\d+)\n((?:; [A-Za-z0-9+/=]+\n)+); \1 end$/gm)];
+  const blocks = [
+    ...gcode.matchAll(/^; (thumbnail(?:_QOI|_JPG)?) begin (\d+)x(\d+) (\d+)\n((?:; [A-Za-z0-9+/=]+\n)+); \1 end$/gm),
+  ];
   assert.equal(blocks.length, 2);
   const [qoi, png] = blocks;
   assert.equal(qoi![1], 'thumbnail_QOI');
   assert.equal(png![1], 'thumbnail');
-  for (const [block, bytes] of [[qoi!, data.subarray(0, 100)], [png!, data]] as const) {
-    const body = block[5]!.split('\n').filter(Boolean).map((l) => l.slice(2));
+  for (const [block, bytes] of [
+    [qoi!, data.subarray(0, 100)],
+    [png!, data],
+  ] as const) {
+    const body = block[5]!
+      .split('\n')
+      .filter(Boolean)
+      .map((l) => l.slice(2));
     assert.ok(body.every((l) => l.length <= THUMBNAIL_LINE_CHARS));
     const text = body.join('');
     assert.equal(text.length, +block[4]!, 'declared length');

@@ -54,7 +54,8 @@ export function hostTrailerLines(plan: PrintPlan, settings: Settings, estimate: 
     `; total layers count = ${plan.layers.length}`,
     `; estimated printing time (normal mode) = ${humanDuration(estimate.printTimeSeconds)}`,
   ];
-  if (estimate.layerSeconds.length > 0) lines.push(`; estimated first layer printing time (normal mode) = ${humanDuration(estimate.layerSeconds[0]!)}`);
+  if (estimate.layerSeconds.length > 0)
+    lines.push(`; estimated first layer printing time (normal mode) = ${humanDuration(estimate.layerSeconds[0]!)}`);
   lines.push(
     '',
     `; layer_height = ${mm(settings.layerHeight)}`,

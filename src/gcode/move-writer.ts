@@ -271,7 +271,16 @@ export class MoveWriter implements MoveSink {
     this.out.endLine();
   }
 
-  arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, _length: number, filament: number, speed: number): void {
+  arc(
+    x: number,
+    y: number,
+    cx: number,
+    cy: number,
+    clockwise: boolean,
+    _length: number,
+    filament: number,
+    speed: number,
+  ): void {
     this.extruded += filament;
     const ux = Math.round(x);
     const uy = Math.round(y);

@@ -53,7 +53,11 @@ export interface ObjectLabels {
 const point = (x: number, y: number) => `${mm(x)},${mm(y)}`;
 
 /** The labels for `objects` in this mode and flavour, or null when nothing is to be written. */
-export function objectLabels(objects: readonly PlanObject[], mode: LabelMode, flavor: Settings['gcodeFlavor']): ObjectLabels | null {
+export function objectLabels(
+  objects: readonly PlanObject[],
+  mode: LabelMode,
+  flavor: Settings['gcodeFlavor'],
+): ObjectLabels | null {
   if (mode === 'off' || objects.length === 0) return null;
   const names = commentNames(objects);
   const comment = (i: number) => [`; printing object ${names[i]}`];

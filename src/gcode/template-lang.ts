@@ -61,14 +61,16 @@ export function valueText(v: TemplateValue): string {
   return v;
 }
 
-const kind = (v: TemplateValue): string => (typeof v === 'number' ? 'a number' : typeof v === 'boolean' ? 'a boolean' : 'text');
+const kind = (v: TemplateValue): string =>
+  typeof v === 'number' ? 'a number' : typeof v === 'boolean' ? 'a boolean' : 'text';
 
 function truthy(v: TemplateValue): boolean {
   return typeof v === 'boolean' ? v : typeof v === 'number' ? v !== 0 : v !== '';
 }
 
 function num(v: TemplateValue, what: string): number {
-  if (typeof v !== 'number') throw new TemplateProblem(`${what} needs a number, not ${kind(v)}${typeof v === 'string' ? ` ("${v}")` : ''}`);
+  if (typeof v !== 'number')
+    throw new TemplateProblem(`${what} needs a number, not ${kind(v)}${typeof v === 'string' ? ` ("${v}")` : ''}`);
   return v;
 }
 
@@ -127,7 +129,8 @@ function evaluate(e: Expr, ctx: TemplateContext): TemplateValue {
       if (!e.index) return variable(ctx, e.name, undefined);
       if (!ctx.has(e.name)) throw new UnknownVariable(e.name);
       const i = num(evaluate(e.index, ctx), `the index of ${e.name}`);
-      if (!Number.isInteger(i) || i < 0) throw new TemplateProblem(`${e.name}[${valueText(i)}]: an index is a whole number from 0`);
+      if (!Number.isInteger(i) || i < 0)
+        throw new TemplateProblem(`${e.name}[${valueText(i)}]: an index is a whole number from 0`);
       return variable(ctx, e.name, i);
     }
     case 'un': {
@@ -174,7 +177,12 @@ function evaluate(e: Expr, ctx: TemplateContext): TemplateValue {
     }
     case 'table': {
       const x = num(evaluate(e.x, ctx), 'interpolate_table()');
-      const pts = e.pairs.map(([px, py]) => [num(evaluate(px, ctx), 'interpolate_table()'), num(evaluate(py, ctx), 'interpolate_table()')] as const).sort((p, q) => p[0] - q[0]);
+      const pts = e.pairs
+        .map(
+          ([px, py]) =>
+            [num(evaluate(px, ctx), 'interpolate_table()'), num(evaluate(py, ctx), 'interpolate_table()')] as const,
+        )
+        .sort((p, q) => p[0] - q[0]);
       if (x <= pts[0]![0]) return pts[0]![1];
       for (let i = 1; i < pts.length; i++) {
         const [x1, y1] = pts[i]!;
@@ -267,7 +275,10 @@ export function runTemplate(t: ParsedTemplate, ctx: TemplateContext): OutputLine
     // a macro that is just the variable: "unknown placeholder {foo}"; else "… foo in {foo + 1}"
     if (e instanceof UnknownVariable || e instanceof NoValue) {
       const alone = src === `{${e.variable}}` || src === `[${e.variable}]`;
-      const what = e instanceof UnknownVariable ? `unknown placeholder ${alone ? src : e.variable}` : `placeholder ${alone ? src : e.variable} has no value (the setting is empty)`;
+      const what =
+        e instanceof UnknownVariable
+          ? `unknown placeholder ${alone ? src : e.variable}`
+          : `placeholder ${alone ? src : e.variable} has no value (the setting is empty)`;
       throw new StrataError('BAD_SETTING', `${t.name} line ${line}: ${what}${alone ? '' : ` in ${src}`}`);
     }
     throw new StrataError('BAD_SETTING', `${t.name} line ${line}: ${e.message} in ${src}`);
@@ -317,7 +328,10 @@ export function runTemplate(t: ParsedTemplate, ctx: TemplateContext): OutputLine
   for (const l of out) {
     if (/[{}]/.test(l.text)) {
       const shown = l.text.trim().length > 60 ? l.text.trim().slice(0, 57) + '…' : l.text.trim();
-      throw new StrataError('BAD_SETTING', `${t.name} line ${l.line}: "${shown}" still has a brace after its placeholders were filled in`);
+      throw new StrataError(
+        'BAD_SETTING',
+        `${t.name} line ${l.line}: "${shown}" still has a brace after its placeholders were filled in`,
+      );
     }
   }
   return out;
@@ -326,7 +340,12 @@ export function runTemplate(t: ParsedTemplate, ctx: TemplateContext): OutputLine
 /** The text of `[name]`, `[name[index]]` or `[name_N]`. */
 function legacyValue(n: Extract<TemplateNode, { k: 'legacy' }>, ctx: TemplateContext): string {
   if (ctx.has(n.name)) {
-    const index = n.index === null ? undefined : /^\d+$/.test(n.index) ? Number(n.index) : num(variable(ctx, n.index, undefined), `the index of ${n.name}`);
+    const index =
+      n.index === null
+        ? undefined
+        : /^\d+$/.test(n.index)
+          ? Number(n.index)
+          : num(variable(ctx, n.index, undefined), `the index of ${n.name}`);
     return valueText(variable(ctx, n.name, index));
   }
   const suffix = /^(.+)_(\d+)$/.exec(n.name);

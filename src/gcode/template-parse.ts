@@ -30,8 +30,21 @@ export type TemplateNode =
   /** `{expression}`; `src` is the macro as written. */
   | { k: 'out'; expr: Expr; line: number; src: string }
   /** `[name]`, `[name[index]]`: `index` a number or a variable name. */
-  | { k: 'legacy'; name: string; index: string | null; line: number; src: string; start: number; end: number; inComment: boolean }
-  | { k: 'if'; branches: Array<{ cond: Expr; body: TemplateNode[]; line: number; src: string }>; otherwise: TemplateNode[] };
+  | {
+      k: 'legacy';
+      name: string;
+      index: string | null;
+      line: number;
+      src: string;
+      start: number;
+      end: number;
+      inComment: boolean;
+    }
+  | {
+      k: 'if';
+      branches: Array<{ cond: Expr; body: TemplateNode[]; line: number; src: string }>;
+      otherwise: TemplateNode[];
+    };
 
 export interface ParsedTemplate {
   name: string;
@@ -161,7 +174,16 @@ class Parser {
         if (m) {
           flush();
           this.pos = LEGACY.lastIndex;
-          nodes.push({ k: 'legacy', name: m[1]!, index: m[2] ?? null, line: this.lineAt(at), src: m[0], start: at, end: this.pos, inComment: this.inComment });
+          nodes.push({
+            k: 'legacy',
+            name: m[1]!,
+            index: m[2] ?? null,
+            line: this.lineAt(at),
+            src: m[0],
+            start: at,
+            end: this.pos,
+            inComment: this.inComment,
+          });
           textStart = this.pos;
           continue;
         }
@@ -194,7 +216,14 @@ class Parser {
       this.pos += kw.length;
       const cond = kw === 'elsif' || kw === 'elif' ? this.expression() : null;
       this.close();
-      return { stop: { kw: kw === 'elif' ? 'elsif' : (kw as Stop['kw']), cond, at: start, src: this.src.slice(start, this.pos) } };
+      return {
+        stop: {
+          kw: kw === 'elif' ? 'elsif' : (kw as Stop['kw']),
+          cond,
+          at: start,
+          src: this.src.slice(start, this.pos),
+        },
+      };
     }
     if (this.src[this.pos] === '}') this.fail(start, 'an empty {}');
     const expr = this.expression();
@@ -227,7 +256,8 @@ class Parser {
       } else otherwise = r.nodes;
       if (r.stop.kw === 'endif') break;
       if (!current) this.fail(r.stop.at, `${r.stop.src} after {else}`);
-      current = r.stop.kw === 'else' ? null : { cond: r.stop.cond!, body: [], line: this.lineAt(r.stop.at), src: r.stop.src };
+      current =
+        r.stop.kw === 'else' ? null : { cond: r.stop.cond!, body: [], line: this.lineAt(r.stop.at), src: r.stop.src };
     }
     return { k: 'if', branches, otherwise };
   }
@@ -249,7 +279,11 @@ class Parser {
 
   private skip(): void {
     const { src } = this;
-    while (this.pos < src.length && (src[this.pos] === ' ' || src[this.pos] === '\t' || src[this.pos] === '\n' || src[this.pos] === '\r')) this.pos++;
+    while (
+      this.pos < src.length &&
+      (src[this.pos] === ' ' || src[this.pos] === '\t' || src[this.pos] === '\n' || src[this.pos] === '\r')
+    )
+      this.pos++;
   }
 
   private peek(text: string): boolean {
@@ -279,7 +313,8 @@ class Parser {
 
   private unexpected(wanted: string): never {
     this.skip();
-    if (this.pos >= this.src.length || this.src[this.pos] === '}') this.fail(this.pos, `the expression ends where ${wanted} was expected`);
+    if (this.pos >= this.src.length || this.src[this.pos] === '}')
+      this.fail(this.pos, `the expression ends where ${wanted} was expected`);
     this.fail(this.pos, `unexpected "${this.src.slice(this.pos, this.pos + 12).split('\n')[0]}" (expected ${wanted})`);
   }
 
@@ -432,7 +467,8 @@ class Parser {
     }
     this.expect(')');
     if (args.length < arity[0] || args.length > arity[1]) {
-      const want = arity[0] === arity[1] ? `${arity[0]}` : arity[1] > 3 ? `at least ${arity[0]}` : `${arity[0]} or ${arity[1]}`;
+      const want =
+        arity[0] === arity[1] ? `${arity[0]}` : arity[1] > 3 ? `at least ${arity[0]}` : `${arity[0]} or ${arity[1]}`;
       this.fail(at, `${fn}() takes ${want} argument${want === '1' ? '' : 's'}, not ${args.length}`);
     }
     if (ON_VARIABLES.has(fn) && args[0]!.k !== 'var') this.fail(at, `${fn}() takes a variable`);
@@ -508,7 +544,16 @@ export function variableUses(t: ParsedTemplate): VariableUse[] {
     if (e instanceof RegExp) return;
     switch (e.k) {
       case 'var':
-        uses.push({ name: e.name, legacy: false, index: e.index, start: e.start, end: e.end, line, src, inComment: false });
+        uses.push({
+          name: e.name,
+          legacy: false,
+          index: e.index,
+          start: e.start,
+          end: e.end,
+          line,
+          src,
+          inComment: false,
+        });
         if (e.index) inExpr(e.index, line, src);
         return;
       case 'un':
@@ -544,10 +589,28 @@ export function variableUses(t: ParsedTemplate): VariableUse[] {
     for (const n of nodes) {
       if (n.k === 'out') inExpr(n.expr, n.line, n.src);
       else if (n.k === 'legacy') {
-        uses.push({ name: n.name, legacy: true, index: n.index, start: n.start, end: n.end, line: n.line, src: n.src, inComment: n.inComment });
-        if (n.index !== null && !/^\d+$/.test(n.index)) uses.push({ name: n.index, legacy: true, index: null, start: n.start, end: n.end, line: n.line, src: n.src, inComment: false });
-      }
-      else if (n.k === 'if') {
+        uses.push({
+          name: n.name,
+          legacy: true,
+          index: n.index,
+          start: n.start,
+          end: n.end,
+          line: n.line,
+          src: n.src,
+          inComment: n.inComment,
+        });
+        if (n.index !== null && !/^\d+$/.test(n.index))
+          uses.push({
+            name: n.index,
+            legacy: true,
+            index: null,
+            start: n.start,
+            end: n.end,
+            line: n.line,
+            src: n.src,
+            inComment: false,
+          });
+      } else if (n.k === 'if') {
         for (const b of n.branches) {
           inExpr(b.cond, b.line, b.src);
           inNodes(b.body);

@@ -103,15 +103,20 @@ const perExtruder = (key: string, scale = 1): Variable => ({
     return typeof v === 'number' && scale !== 1 ? v * scale : v;
   },
 });
-const point = (x: (s: TemplateScope) => TemplateValue | null, y: (s: TemplateScope) => TemplateValue | null): Variable => ({
+const point = (
+  x: (s: TemplateScope) => TemplateValue | null,
+  y: (s: TemplateScope) => TemplateValue | null,
+): Variable => ({
   kind: 'point',
   get: (s, i) => (i === 0 ? x(s) : y(s)),
 });
 const constant = (v: TemplateValue): Variable => single(() => v);
 
 /** The bed's extent in printer coordinates. */
-const bedMin = (s: TemplateScope, axis: 'x' | 'y') => (s.settings.originAtCenter ? -(axis === 'x' ? s.settings.buildPlateWidth : s.settings.buildPlateLength) / 2 : 0);
-const bedSize = (s: TemplateScope, axis: 'x' | 'y') => (axis === 'x' ? s.settings.buildPlateWidth : s.settings.buildPlateLength);
+const bedMin = (s: TemplateScope, axis: 'x' | 'y') =>
+  s.settings.originAtCenter ? -(axis === 'x' ? s.settings.buildPlateWidth : s.settings.buildPlateLength) / 2 : 0;
+const bedSize = (s: TemplateScope, axis: 'x' | 'y') =>
+  axis === 'x' ? s.settings.buildPlateWidth : s.settings.buildPlateLength;
 
 /** Cura's print time: hours, minutes and seconds, `01:23:45`. */
 function clock(seconds: TemplateValue | null): string | null {
@@ -163,15 +168,30 @@ const ALIASES: Readonly<Record<string, Variable>> = {
   max_layer_z: of('maxLayerZ'),
   extruded_volume_total: of('extrudedVolume'),
   extruded_weight_total: of('extrudedWeight'),
-  first_layer_print_min: point((s) => strata(s, 'firstLayerMinX'), (s) => strata(s, 'firstLayerMinY')),
-  first_layer_print_max: point((s) => strata(s, 'firstLayerMaxX'), (s) => strata(s, 'firstLayerMaxY')),
+  first_layer_print_min: point(
+    (s) => strata(s, 'firstLayerMinX'),
+    (s) => strata(s, 'firstLayerMinY'),
+  ),
+  first_layer_print_max: point(
+    (s) => strata(s, 'firstLayerMaxX'),
+    (s) => strata(s, 'firstLayerMaxY'),
+  ),
   first_layer_print_size: point(
     (s) => difference(strata(s, 'firstLayerMaxX'), strata(s, 'firstLayerMinX')),
     (s) => difference(strata(s, 'firstLayerMaxY'), strata(s, 'firstLayerMinY')),
   ),
-  print_bed_min: point((s) => bedMin(s, 'x'), (s) => bedMin(s, 'y')),
-  print_bed_max: point((s) => bedMin(s, 'x') + bedSize(s, 'x'), (s) => bedMin(s, 'y') + bedSize(s, 'y')),
-  print_bed_size: point((s) => bedSize(s, 'x'), (s) => bedSize(s, 'y')),
+  print_bed_min: point(
+    (s) => bedMin(s, 'x'),
+    (s) => bedMin(s, 'y'),
+  ),
+  print_bed_max: point(
+    (s) => bedMin(s, 'x') + bedSize(s, 'x'),
+    (s) => bedMin(s, 'y') + bedSize(s, 'y'),
+  ),
+  print_bed_size: point(
+    (s) => bedSize(s, 'x'),
+    (s) => bedSize(s, 'y'),
+  ),
   // one extruder, no wipe tower, no Z offset (Strata writes none), no spiral vase unless a setting says so
   initial_tool: constant(0),
   initial_extruder: constant(0),
@@ -237,7 +257,12 @@ function metres(mm: TemplateValue | null): number | null {
 
 /** Whether `name` is a variable templates can use (with `values` the use's own values). */
 export function isTemplateVariable(name: string, values: TemplateValues = {}): boolean {
-  return has(values, name) || (has(SCHEMA, name) && name !== 'threads') || has(ALIASES, name) || (DERIVED_VALUES as readonly string[]).includes(name);
+  return (
+    has(values, name) ||
+    (has(SCHEMA, name) && name !== 'threads') ||
+    has(ALIASES, name) ||
+    (DERIVED_VALUES as readonly string[]).includes(name)
+  );
 }
 
 /** The other slicers' names Strata reads (for documentation and the import). */
@@ -249,14 +274,23 @@ export function aliasOf(name: string): string | undefined {
 }
 
 /** The value of variable `name` in `scope` (`index` when indexed), null for none; undefined for no such variable. */
-export function templateVariable(name: string, index: number | undefined, scope: TemplateScope): TemplateValue | null | undefined {
-  if (has(scope.values, name) || (has(SCHEMA, name) && name !== 'threads') || (DERIVED_VALUES as readonly string[]).includes(name)) {
+export function templateVariable(
+  name: string,
+  index: number | undefined,
+  scope: TemplateScope,
+): TemplateValue | null | undefined {
+  if (
+    has(scope.values, name) ||
+    (has(SCHEMA, name) && name !== 'threads') ||
+    (DERIVED_VALUES as readonly string[]).includes(name)
+  ) {
     if (index !== undefined) throw new TemplateProblem(`${name} is a single value: it takes no [${index}]`);
     return strata(scope, name);
   }
   const v = ALIASES[name];
   if (!v) return undefined;
-  if (v.kind === 'single' && index !== undefined) throw new TemplateProblem(`${name} is a single value: it takes no [${index}]`);
+  if (v.kind === 'single' && index !== undefined)
+    throw new TemplateProblem(`${name} is a single value: it takes no [${index}]`);
   if (v.kind === 'point') {
     if (index === undefined) throw new TemplateProblem(`${name} is a point: write ${name}[0] for X, ${name}[1] for Y`);
     if (index > 1) throw new TemplateProblem(`${name}[${index}]: a point has [0] (X) and [1] (Y) only`);

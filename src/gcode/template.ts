@@ -12,7 +12,13 @@ import { StrataError } from '../errors.js';
 import type { Settings } from '../settings/schema.js';
 import { runTemplate } from './template-lang.js';
 import { legacyIsText, parseTemplate, variableUses, type ParsedTemplate } from './template-parse.js';
-import { aliasOf, isTemplateVariable, templateVariable, templateVariableSize, type TemplateValues } from './template-vars.js';
+import {
+  aliasOf,
+  isTemplateVariable,
+  templateVariable,
+  templateVariableSize,
+  type TemplateValues,
+} from './template-vars.js';
 
 export type { TemplateValue } from './template-lang.js';
 export type { TemplateValues } from './template-vars.js';
@@ -37,7 +43,10 @@ export function compileTemplate(name: string, text: string, extraNames: readonly
   for (const use of variableUses(t)) {
     if (use.legacy ? legacyKnown(use.name, extra) || legacyIsText(use) : isTemplateVariable(use.name, extra)) continue;
     const alone = use.src === `{${use.name}}` || use.src === `[${use.name}]`;
-    throw new StrataError('BAD_SETTING', `${name} line ${use.line}: unknown placeholder ${alone ? use.src : `${use.name} in ${use.src}`}`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `${name} line ${use.line}: unknown placeholder ${alone ? use.src : `${use.name} in ${use.src}`}`,
+    );
   }
   return t;
 }

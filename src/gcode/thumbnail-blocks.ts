@@ -14,7 +14,8 @@ export function thumbnailBlockLines(image: EncodedThumbnail): string[] {
   const tag = image.format === 'PNG' ? 'thumbnail' : `thumbnail_${image.format}`;
   const text = toBase64(image.data);
   const lines = [';', `; ${tag} begin ${image.width}x${image.height} ${text.length}`];
-  for (let i = 0; i < text.length; i += THUMBNAIL_LINE_CHARS) lines.push('; ' + text.slice(i, i + THUMBNAIL_LINE_CHARS));
+  for (let i = 0; i < text.length; i += THUMBNAIL_LINE_CHARS)
+    lines.push('; ' + text.slice(i, i + THUMBNAIL_LINE_CHARS));
   lines.push(`; ${tag} end`, ';');
   return lines;
 }

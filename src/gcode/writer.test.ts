@@ -23,7 +23,12 @@ function extrude(feature: FeatureType, points: Pt[], closed: boolean, height = 0
 function travel(points: Pt[], retract: boolean, zHop = 0, speed = 150): TravelStep {
   return { kind: 'travel', points, retract, zHop, speed };
 }
-const square = (x0: number, y0: number, side: number): Pt[] => [pt(x0, y0), pt(x0 + side, y0), pt(x0 + side, y0 + side), pt(x0, y0 + side)];
+const square = (x0: number, y0: number, side: number): Pt[] => [
+  pt(x0, y0),
+  pt(x0 + side, y0),
+  pt(x0 + side, y0 + side),
+  pt(x0, y0 + side),
+];
 
 /** Two layers: a brim loop, a square wall, a retracted hop travel, a fill line; then a layer change. */
 function smallPlan(): PrintPlan {
@@ -50,9 +55,17 @@ function smallPlan(): PrintPlan {
     fan: 1,
     nozzleTemperature: 195,
     bedTemperature: 60,
-    steps: [travel([pt(10, 10)], true), extrude('WALL-OUTER', square(10, 10, 20), true, 0.2, 40), extrude('WALL-OUTER', square(11, 11, 18), true, 0.2, 40)],
+    steps: [
+      travel([pt(10, 10)], true),
+      extrude('WALL-OUTER', square(10, 10, 20), true, 0.2, 40),
+      extrude('WALL-OUTER', square(11, 11, 18), true, 0.2, 40),
+    ],
   };
-  return { layers: [layer0, layer1], objects: [], bounds: { minX: 5, minY: 5, minZ: 0, maxX: 60, maxY: 40.4, maxZ: 0.4 } };
+  return {
+    layers: [layer0, layer1],
+    objects: [],
+    bounds: { minX: 5, minY: 5, minZ: 0, maxX: 60, maxY: 40.4, maxZ: 0.4 },
+  };
 }
 
 /** The filament the small plan extrudes, mm, computed by hand (rectangular model, flow 1, flowRate 100). */
@@ -156,7 +169,10 @@ function parse(gcode: string): Parsed {
   return out;
 }
 
-function gcodeFor(overrides: Partial<Settings> = {}, plan = smallPlan()): { gcode: string; settings: Settings; plan: PrintPlan } {
+function gcodeFor(
+  overrides: Partial<Settings> = {},
+  plan = smallPlan(),
+): { gcode: string; settings: Settings; plan: PrintPlan } {
   const settings = defaults(overrides);
   const gcode = gcodeToString(plan, settings, estimatePlan(plan, settings), META);
   return { gcode, settings, plan };
@@ -168,7 +184,10 @@ test('layer markers, layer count and TYPE markers (BRIM written as SKIRT)', () =
   assert.equal(p.layerCountHeader, 2);
   assert.equal(p.layers, 2);
   assert.deepEqual(p.types, [['SKIRT', 'WALL-OUTER', 'FILL'], ['WALL-OUTER']]);
-  assert.match(gcode, /^;FLAVOR:Marlin\n;TIME:\d+\n;Filament used: [\d.]+m\n;Layer height: 0\.2\n;MINX:5\n;MINY:5\n;MINZ:0\n;MAXX:60\n;MAXY:40\.4\n;MAXZ:0\.4\n;Generated with Strata 0\.0\.0-test\n/);
+  assert.match(
+    gcode,
+    /^;FLAVOR:Marlin\n;TIME:\d+\n;Filament used: [\d.]+m\n;Layer height: 0\.2\n;MINX:5\n;MINY:5\n;MINZ:0\n;MAXX:60\n;MAXY:40\.4\n;MAXZ:0\.4\n;Generated with Strata 0\.0\.0-test\n/,
+  );
   assert.match(gcode, /;Estimated print time: (\d+m )?\d+s\n/);
 });
 
@@ -196,7 +215,8 @@ test('retractions are balanced: each prime restores the retraction plus the extr
     const p = parse(gcode);
     assert.equal(p.retractions, 2);
     assert.equal(p.primes, 2);
-    for (const balance of p.primeBalance) assert.ok(Math.abs(balance - settings.retractionExtraPrime) < 1e-6, `${balance}`);
+    for (const balance of p.primeBalance)
+      assert.ok(Math.abs(balance - settings.retractionExtraPrime) < 1e-6, `${balance}`);
     assert.match(gcode, extruderMode === 'relative' ? /\nG1 F2700 E-4\n/ : /\nG1 F2700 E[\d.]+\n/);
   }
 });
@@ -215,12 +235,21 @@ test('z-hop lifts during the retracted travel and comes back down before printin
   assert.ok(p.retractedTravelZ.includes(0.6), `hop travel at ${p.retractedTravelZ}`);
   assert.ok(p.retractedTravelZ.includes(0.4), 'layer-change travel without hop at the new layer Z');
   // Order: retract, lift, travel, lower, prime.
-  assert.match(gcode, /G1 F2700 E[\d.]+\nG0 F300 Z0\.6\nG0 F9000 X25 Y35\nG0 X40 Y40\nG0 F300 Z0\.2\nG1 F2700 E[\d.]+\n/);
+  assert.match(
+    gcode,
+    /G1 F2700 E[\d.]+\nG0 F300 Z0\.6\nG0 F9000 X25 Y35\nG0 X40 Y40\nG0 F300 Z0\.2\nG1 F2700 E[\d.]+\n/,
+  );
 });
 
 test('placeholders are replaced by settings and derived values; unknown ones are rejected', () => {
-  const startGcode = 'M190 S{firstLayerBedTemperature}\nM109 S{firstLayerNozzleTemperature}\n; plate {buildPlateWidth} x {buildPlateLength}, {layerCount} layers, bed {heatedBed}, top {maxZ}\n; [not a placeholder]';
-  const { gcode } = gcodeFor({ startGcode, nozzleTemperature: 215, firstLayerNozzleTemperature: null, firstLayerBedTemperature: 65 });
+  const startGcode =
+    'M190 S{firstLayerBedTemperature}\nM109 S{firstLayerNozzleTemperature}\n; plate {buildPlateWidth} x {buildPlateLength}, {layerCount} layers, bed {heatedBed}, top {maxZ}\n; [not a placeholder]';
+  const { gcode } = gcodeFor({
+    startGcode,
+    nozzleTemperature: 215,
+    firstLayerNozzleTemperature: null,
+    firstLayerBedTemperature: 65,
+  });
   assert.match(gcode, /\nM190 S65\nM109 S215\n; plate 220 x 220, 2 layers, bed 1, top 0\.4\n; \[not a placeholder\]\n/);
   assert.ok(!/\{\w+\}/.test(gcode));
 
@@ -229,12 +258,18 @@ test('placeholders are replaced by settings and derived values; unknown ones are
   const chunks: string[] = [];
   assert.throws(
     () => writeGcode(plan, bad, estimatePlan(plan, bad), (c) => chunks.push(c), META),
-    (err: unknown) => err instanceof StrataError && err.code === 'BAD_SETTING' && err.message === 'startGcode line 2: unknown placeholder {foo}',
+    (err: unknown) =>
+      err instanceof StrataError &&
+      err.code === 'BAD_SETTING' &&
+      err.message === 'startGcode line 2: unknown placeholder {foo}',
   );
   assert.equal(chunks.length, 0, 'nothing written before the check');
   const badEnd = defaults({ endGcode: 'M84 {nope}' });
   assert.throws(() => gcodeFor({ endGcode: badEnd.endGcode }), /endGcode line 1: unknown placeholder \{nope\}/);
-  assert.throws(() => gcodeFor({ startGcode: '; walls {wallCount}' }), /startGcode line 1: placeholder \{wallCount\} has no value/);
+  assert.throws(
+    () => gcodeFor({ startGcode: '; walls {wallCount}' }),
+    /startGcode line 1: placeholder \{wallCount\} has no value/,
+  );
 });
 
 test('heat-up is written only when the start template does not handle temperatures', () => {
@@ -337,7 +372,8 @@ test('deterministic output; chunked streaming equals the string version', () => 
   const whole = gcodeToString(plan, settings, estimate, META);
   assert.ok(chunks.length > 3, `${chunks.length} chunks`);
   assert.equal(chunks.join(''), whole);
-  for (const c of chunks.slice(0, -1)) assert.ok(c.length >= CHUNK_BYTES && c.length < CHUNK_BYTES + 200 && c.endsWith('\n'));
+  for (const c of chunks.slice(0, -1))
+    assert.ok(c.length >= CHUNK_BYTES && c.length < CHUNK_BYTES + 200 && c.endsWith('\n'));
   assert.equal(gcodeToString(plan, settings, estimatePlan(plan, settings), META), whole);
   const p = parse(whole);
   assert.equal(p.layers, 20);
@@ -350,7 +386,11 @@ test('date and comments from meta go in the header; TIME_ELAPSED adds up the lay
   const plan = smallPlan();
   const settings = defaults();
   const estimate = estimatePlan(plan, settings);
-  const gcode = gcodeToString(plan, settings, estimate, { generator: 'Strata 1.2.3', date: '2024-01-02', comments: ['model: cube.stl'] });
+  const gcode = gcodeToString(plan, settings, estimate, {
+    generator: 'Strata 1.2.3',
+    date: '2024-01-02',
+    comments: ['model: cube.stl'],
+  });
   assert.match(gcode, /\n;Generated with Strata 1\.2\.3\n;Date: 2024-01-02\n/);
   assert.match(gcode, /\n;model: cube\.stl\n/);
   const elapsed = [...gcode.matchAll(/;TIME_ELAPSED:([\d.]+)/g)].map((m) => Number(m[1]));

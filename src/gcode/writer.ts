@@ -72,7 +72,10 @@ export function* writeGcodeSteps(
 
   const out = new ChunkedText(sink, CHUNK_BYTES);
   if (!plan.layers.some((l) => l.steps.some((s) => s.kind === 'extrude'))) {
-    throw new StrataError('EMPTY_MODEL', 'nothing to print: no layer of the model is wide enough for a line (it is thinner than the line width everywhere)');
+    throw new StrataError(
+      'EMPTY_MODEL',
+      'nothing to print: no layer of the model is wide enough for a line (it is thinner than the line width everywhere)',
+    );
   }
   for (const l of headerLines(plan, settings, estimate, meta, flavor.name)) out.line(l);
   for (const image of meta.thumbnails ?? []) for (const l of thumbnailBlockLines(image)) out.line(l);
@@ -82,7 +85,8 @@ export function* writeGcodeSteps(
   const used = placeholders(settings.startGcode);
   const firstNozzle = temperature(settings, 'firstLayerNozzleTemperature');
   const firstBed = temperature(settings, 'firstLayerBedTemperature');
-  const heatNozzle = !NOZZLE_KEYS.some((k) => used.includes(k)) && !templateHeatsNozzle(settings.startGcode, settings.gcodeFlavor);
+  const heatNozzle =
+    !NOZZLE_KEYS.some((k) => used.includes(k)) && !templateHeatsNozzle(settings.startGcode, settings.gcodeFlavor);
   const heatBed = settings.heatedBed && !BED_KEYS.some((k) => used.includes(k)) && !SETS_BED.test(settings.startGcode);
   if (heatBed) out.line(flavor.setBed(firstBed));
   if (heatNozzle) for (const l of flavor.setNozzle(firstNozzle)) out.line(l);

@@ -12,7 +12,7 @@ import { rect } from './test-shapes.js';
 
 function rng(seed: number): () => number {
   let s = seed >>> 0;
-  return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 2 ** 32);
+  return () => (s = (s * 1664525 + 1013904223) >>> 0) / 2 ** 32;
 }
 
 /** A star-shaped ring round (cx, cy) with radii in [r/2, r], counter-clockwise (or clockwise for a hole). */
@@ -30,26 +30,31 @@ function star(cx: number, cy: number, r: number, n: number, rand: () => number, 
 function islands(rand: () => number): ExPolygon[] {
   const out: ExPolygon[] = [];
   for (let k = 0; k < 6; k++) {
-    const cx = 20_000 + k * 30_000, cy = 15_000;
+    const cx = 20_000 + k * 30_000,
+      cy = 15_000;
     out.push({ outer: star(cx, cy, 12_000, 40, rand), holes: [star(cx, cy, 4_000, 12, rand, true)] });
   }
   return out;
 }
 
 const distToSegment = (p: Pt, a: Pt, b: Pt) => {
-  const dx = b.x - a.x, dy = b.y - a.y;
+  const dx = b.x - a.x,
+    dy = b.y - a.y;
   const u = Math.max(0, Math.min(1, ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)));
   return Math.hypot(a.x + u * dx - p.x, a.y + u * dy - p.y);
 };
 
 const nearBoundary = (p: Pt, areas: readonly ExPolygon[], d: number) =>
-  areas.some((a) => [a.outer, ...a.holes].some((r) => r.some((q, i) => distToSegment(p, q, r[(i + 1) % r.length]) < d)));
+  areas.some((a) =>
+    [a.outer, ...a.holes].some((r) => r.some((q, i) => distToSegment(p, q, r[(i + 1) % r.length]) < d)),
+  );
 
 test('contains agrees with the polygon test away from the boundary, wherever the point is', () => {
   const rand = rng(11);
   const areas = islands(rand);
   const index = new AreaIndex(areas);
-  let inside = 0, checked = 0;
+  let inside = 0,
+    checked = 0;
   for (let k = 0; k < 4000; k++) {
     const p = { x: Math.round(-5_000 + 190_000 * rand()), y: Math.round(-5_000 + 40_000 * rand()) };
     if (nearBoundary(p, areas, 1)) continue;
@@ -66,7 +71,8 @@ test('meets agrees with a plain test of vertices and edges', () => {
   const rand = rng(5);
   const areas = islands(rand);
   const index = new AreaIndex(areas);
-  const edges = (a: ExPolygon) => [a.outer, ...a.holes].flatMap((r) => r.map((p, i) => [p, r[(i + 1) % r.length]] as const));
+  const edges = (a: ExPolygon) =>
+    [a.outer, ...a.holes].flatMap((r) => r.map((p, i) => [p, r[(i + 1) % r.length]] as const));
   let hits = 0;
   for (let k = 0; k < 400; k++) {
     const c = { x: Math.round(190_000 * rand()), y: Math.round(30_000 * rand()) };
@@ -74,7 +80,9 @@ test('meets agrees with a plain test of vertices and edges', () => {
     const want =
       probe.outer.some((p) => areas.some((a) => pointInArea(p, a))) ||
       areas.some((a) => pointInArea(a.outer[0], probe) || a.holes.some((h) => pointInArea(h[0], probe))) ||
-      edges(probe).some(([p, q]) => areas.some((a) => edges(a).some(([r, s]) => segmentsMeet(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y))));
+      edges(probe).some(([p, q]) =>
+        areas.some((a) => edges(a).some(([r, s]) => segmentsMeet(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y))),
+      );
     assert.equal(index.meets(probe), want, `probe at (${c.x}, ${c.y})`);
     if (want) hits++;
   }

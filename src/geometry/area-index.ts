@@ -26,7 +26,12 @@ interface Candidates {
   d: Float64Array;
   order: Int32Array;
 }
-const makeCandidates = (n: number): Candidates => ({ x: new Float64Array(n), y: new Float64Array(n), d: new Float64Array(n), order: new Int32Array(n) });
+const makeCandidates = (n: number): Candidates => ({
+  x: new Float64Array(n),
+  y: new Float64Array(n),
+  d: new Float64Array(n),
+  order: new Int32Array(n),
+});
 let cand = makeCandidates(64);
 /** How many of `cand` the query in progress holds. */
 let candCount = 0;
@@ -84,7 +89,10 @@ export class AreaIndex {
       for (let h = 0; h < a.holes.length; h++) n += a.holes[h].length;
     }
     const e = new Float64Array(4 * n);
-    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    let minX = Infinity,
+      minY = Infinity,
+      maxX = -Infinity,
+      maxY = -Infinity;
     let k = 0;
     for (let i = 0; i < areas.length; i++) {
       const a = areas[i];
@@ -93,7 +101,8 @@ export class AreaIndex {
         const len = ring.length;
         if (len) this.#firsts.push(ring[0].x, ring[0].y);
         for (let i = 0; i < len; i++) {
-          const p = ring[i], q = ring[i + 1 < len ? i + 1 : 0];
+          const p = ring[i],
+            q = ring[i + 1 < len ? i + 1 : 0];
           e[k++] = p.x;
           e[k++] = p.y;
           e[k++] = q.x;
@@ -115,7 +124,8 @@ export class AreaIndex {
       this.#items = new Int32Array(0);
       return;
     }
-    const w = maxX - minX, h = maxY - minY;
+    const w = maxX - minX,
+      h = maxY - minY;
     const cell = Math.min(MAX_CELL_UM, Math.max(MIN_CELL_UM, 2 * Math.sqrt((w * h) / n)));
     this.#minX = minX;
     this.#minY = minY;
@@ -127,9 +137,14 @@ export class AreaIndex {
     const ranges = new Int32Array(4 * n);
     const start = new Int32Array(cells + 1);
     for (let i = 0; i < n; i++) {
-      const x1 = e[4 * i], y1 = e[4 * i + 1], x2 = e[4 * i + 2], y2 = e[4 * i + 3];
-      const c0 = Math.floor(((x1 < x2 ? x1 : x2) - minX) / cell), c1 = Math.floor(((x1 < x2 ? x2 : x1) - minX) / cell);
-      const r0 = Math.floor(((y1 < y2 ? y1 : y2) - minY) / cell), r1 = Math.floor(((y1 < y2 ? y2 : y1) - minY) / cell);
+      const x1 = e[4 * i],
+        y1 = e[4 * i + 1],
+        x2 = e[4 * i + 2],
+        y2 = e[4 * i + 3];
+      const c0 = Math.floor(((x1 < x2 ? x1 : x2) - minX) / cell),
+        c1 = Math.floor(((x1 < x2 ? x2 : x1) - minX) / cell);
+      const r0 = Math.floor(((y1 < y2 ? y1 : y2) - minY) / cell),
+        r1 = Math.floor(((y1 < y2 ? y2 : y1) - minY) / cell);
       ranges[4 * i] = c0;
       ranges[4 * i + 1] = c1;
       ranges[4 * i + 2] = r0;
@@ -162,10 +177,13 @@ export class AreaIndex {
    */
   contains(x: number, y: number): boolean {
     if (this.empty) return false;
-    const minX = this.#minX, minY = this.#minY;
+    const minX = this.#minX,
+      minY = this.#minY;
     if (x < minX || y < minY || x > minX + this.#nx * this.#cell || y > minY + this.#ny * this.#cell) return false;
-    const c = this.#col(x), r = this.#row(y);
-    const right = this.#nx - 1 - c, up = this.#ny - 1 - r;
+    const c = this.#col(x),
+      r = this.#row(y);
+    const right = this.#nx - 1 - c,
+      up = this.#ny - 1 - r;
     const m = Math.min(right, c, up, r);
     if (m === right) return this.#ray(x, y, c, r, 0, 1);
     if (m === c) return this.#ray(x, y, c, r, 0, -1);
@@ -180,13 +198,17 @@ export class AreaIndex {
   #ray(x: number, y: number, c0: number, r0: number, axis: 0 | 1, dir: 1 | -1): boolean {
     const e = this.#e;
     // p along the ray, q across it; edges read in the same order
-    const p = axis === 0 ? x : y, q = axis === 0 ? y : x;
+    const p = axis === 0 ? x : y,
+      q = axis === 0 ? y : x;
     let inside = false;
     for (let c = c0, r = r0; c >= 0 && c < this.#nx && r >= 0 && r < this.#ny; axis === 0 ? (c += dir) : (r += dir)) {
       const cell = r * this.#nx + c;
       for (let s = this.#start[cell], t = this.#start[cell + 1]; s < t; s++) {
         const k = 4 * this.#items[s];
-        const p1 = e[k + axis], q1 = e[k + 1 - axis], p2 = e[k + 2 + axis], q2 = e[k + 3 - axis];
+        const p1 = e[k + axis],
+          q1 = e[k + 1 - axis],
+          p2 = e[k + 2 + axis],
+          q2 = e[k + 3 - axis];
         if (q1 > q === q2 > q) continue;
         let cp = p1 + ((q - q1) * (p2 - p1)) / (q2 - q1);
         cp = Math.min(Math.max(cp, Math.min(p1, p2)), Math.max(p1, p2));
@@ -206,21 +228,33 @@ export class AreaIndex {
     const e = this.#e;
     const cell = this.#cell;
     const reach = maxUm + OUTSIDE_MARGIN_UM;
-    const c0 = this.#col(x - reach), c1 = this.#col(x + reach), r0 = this.#row(y - reach), r1 = this.#row(y + reach);
-    let best = Infinity, bx = 0, by = 0, bi = -1;
+    const c0 = this.#col(x - reach),
+      c1 = this.#col(x + reach),
+      r0 = this.#row(y - reach),
+      r1 = this.#row(y + reach);
+    let best = Infinity,
+      bx = 0,
+      by = 0,
+      bi = -1;
     for (let r = r0; r <= r1; r++) {
       for (let c = c0; c <= c1; c++) {
         // skip cells wholly further than the best so far
-        const cx0 = this.#minX + c * cell, cy0 = this.#minY + r * cell;
-        const dx = Math.max(cx0 - x, 0, x - cx0 - cell), dy = Math.max(cy0 - y, 0, y - cy0 - cell);
+        const cx0 = this.#minX + c * cell,
+          cy0 = this.#minY + r * cell;
+        const dx = Math.max(cx0 - x, 0, x - cx0 - cell),
+          dy = Math.max(cy0 - y, 0, y - cy0 - cell);
         if (dx * dx + dy * dy > Math.min(best, reach * reach)) continue;
         const id = r * this.#nx + c;
         for (let s = this.#start[id], t = this.#start[id + 1]; s < t; s++) {
           const i = this.#items[s];
-          const x1 = e[4 * i], y1 = e[4 * i + 1], ex = e[4 * i + 2] - x1, ey = e[4 * i + 3] - y1;
+          const x1 = e[4 * i],
+            y1 = e[4 * i + 1],
+            ex = e[4 * i + 2] - x1,
+            ey = e[4 * i + 3] - y1;
           const len2 = ex * ex + ey * ey;
           const u = len2 > 0 ? Math.min(1, Math.max(0, ((x - x1) * ex + (y - y1) * ey) / len2)) : 0;
-          const px = x1 + u * ex, py = y1 + u * ey;
+          const px = x1 + u * ex,
+            py = y1 + u * ey;
           const d = (px - x) * (px - x) + (py - y) * (py - y);
           if (d < best) {
             best = d;
@@ -234,13 +268,16 @@ export class AreaIndex {
     if (bi < 0 || best > reach * reach) return null;
     // out through the nearest edge: along the way from the point to it, or along the edge's outward normal
     const d = Math.sqrt(best);
-    const ex = e[4 * bi + 2] - e[4 * bi], ey = e[4 * bi + 3] - e[4 * bi + 1];
+    const ex = e[4 * bi + 2] - e[4 * bi],
+      ey = e[4 * bi + 3] - e[4 * bi + 1];
     const el = hypot(ex, ey) || 1;
     for (let way = d > 1e-6 ? 0 : 1; way < 2; way++) {
-      const ux = way === 0 ? (bx - x) / d : ey / el, uy = way === 0 ? (by - y) / d : -ex / el;
+      const ux = way === 0 ? (bx - x) / d : ey / el,
+        uy = way === 0 ? (by - y) / d : -ex / el;
       for (let k = 0; k < 2; k++) {
         const m = k === 0 ? OUTSIDE_MARGIN_UM : 4 * OUTSIDE_MARGIN_UM;
-        const qx = Math.round(bx + ux * m), qy = Math.round(by + uy * m);
+        const qx = Math.round(bx + ux * m),
+          qy = Math.round(by + uy * m);
         if (hypot(qx - x, qy - y) <= reach && !this.contains(qx, qy)) return { x: qx, y: qy };
       }
     }
@@ -255,16 +292,23 @@ export class AreaIndex {
     if (this.empty) return false;
     const e = this.#e;
     const d2 = dist * dist;
-    const c0 = this.#col(x - dist), c1 = this.#col(x + dist), r0 = this.#row(y - dist), r1 = this.#row(y + dist);
+    const c0 = this.#col(x - dist),
+      c1 = this.#col(x + dist),
+      r0 = this.#row(y - dist),
+      r1 = this.#row(y + dist);
     for (let r = r0; r <= r1; r++) {
       for (let c = c0; c <= c1; c++) {
         const id = r * this.#nx + c;
         for (let s = this.#start[id], t = this.#start[id + 1]; s < t; s++) {
           const i = this.#items[s];
-          const x1 = e[4 * i], y1 = e[4 * i + 1], ex = e[4 * i + 2] - x1, ey = e[4 * i + 3] - y1;
+          const x1 = e[4 * i],
+            y1 = e[4 * i + 1],
+            ex = e[4 * i + 2] - x1,
+            ey = e[4 * i + 3] - y1;
           const len2 = ex * ex + ey * ey;
           const u = len2 > 0 ? Math.min(1, Math.max(0, ((x - x1) * ex + (y - y1) * ey) / len2)) : 0;
-          const px = x1 + u * ex - x, py = y1 + u * ey - y;
+          const px = x1 + u * ex - x,
+            py = y1 + u * ey - y;
           if (px * px + py * py <= d2) return true;
         }
       }
@@ -308,7 +352,10 @@ export class AreaIndex {
   #edgeCandidates(x: number, y: number, want: number, maxUm: number): void {
     const e = this.#e;
     const reach = maxUm + want;
-    const c0 = this.#col(x - reach), c1 = this.#col(x + reach), r0 = this.#row(y - reach), r1 = this.#row(y + reach);
+    const c0 = this.#col(x - reach),
+      c1 = this.#col(x + reach),
+      r0 = this.#row(y - reach),
+      r1 = this.#row(y + reach);
     // candidates within maxUm, then tested nearest first (the earliest found on a tie): the first clear one wins
     candCount = 0;
     const seen = (this.#seen ??= new Int32Array(e.length / 4));
@@ -320,11 +367,15 @@ export class AreaIndex {
           const i = this.#items[s];
           if (seen[i] === query) continue;
           seen[i] = query;
-          const x1 = e[4 * i], y1 = e[4 * i + 1], ex = e[4 * i + 2] - x1, ey = e[4 * i + 3] - y1;
+          const x1 = e[4 * i],
+            y1 = e[4 * i + 1],
+            ex = e[4 * i + 2] - x1,
+            ey = e[4 * i + 3] - y1;
           const len2 = ex * ex + ey * ey;
           if (len2 === 0) continue;
           const u = Math.min(1, Math.max(0, ((x - x1) * ex + (y - y1) * ey) / len2));
-          const bx = x1 + u * ex, by = y1 + u * ey;
+          const bx = x1 + u * ex,
+            by = y1 + u * ey;
           const db = hypot(x - bx, y - by);
           if (db > reach) continue;
           const el = Math.sqrt(len2);
@@ -360,12 +411,14 @@ export class AreaIndex {
     const bounds = ringBounds(a.outer);
     const found = this.#edgesNear(bounds);
     if (found === 0) return this.contains(a.outer[0].x, a.outer[0].y);
-    const e = this.#e, near = nearEdges;
+    const e = this.#e,
+      near = nearEdges;
     for (let r = -1; r < a.holes.length; r++) {
       const ring = r < 0 ? a.outer : a.holes[r];
       if (ring.length && this.contains(ring[0].x, ring[0].y)) return true;
       for (let i = 0; i < ring.length; i++) {
-        const p = ring[i], q = ring[i + 1 < ring.length ? i + 1 : 0];
+        const p = ring[i],
+          q = ring[i + 1 < ring.length ? i + 1 : 0];
         for (let k = 0; k < found; k++) {
           const t = 4 * near[k];
           if (segmentsMeet(p.x, p.y, q.x, q.y, e[t], e[t + 1], e[t + 2], e[t + 3])) return true;
@@ -376,7 +429,8 @@ export class AreaIndex {
     const { minX, minY, maxX, maxY } = bounds;
     const f = this.#firsts;
     for (let k = 0; k < f.length; k += 2) {
-      const x = f[k], y = f[k + 1];
+      const x = f[k],
+        y = f[k + 1];
       if (x >= minX && x <= maxX && y >= minY && y <= maxY && pointInArea({ x, y }, a)) return true;
     }
     return false;
@@ -385,17 +439,31 @@ export class AreaIndex {
   /** The areas' edges (in `nearEdges`, possibly repeated) whose bounds meet `bounds`; returns how many. */
   #edgesNear(bounds: Bounds): number {
     const { minX, minY, maxX, maxY } = bounds;
-    const gx = this.#minX + this.#nx * this.#cell, gy = this.#minY + this.#ny * this.#cell;
+    const gx = this.#minX + this.#nx * this.#cell,
+      gy = this.#minY + this.#ny * this.#cell;
     if (maxX < this.#minX || maxY < this.#minY || minX > gx || minY > gy) return 0;
     const e = this.#e;
-    const c0 = this.#col(minX), c1 = this.#col(maxX), r0 = this.#row(minY), r1 = this.#row(maxY);
+    const c0 = this.#col(minX),
+      c1 = this.#col(maxX),
+      r0 = this.#row(minY),
+      r1 = this.#row(maxY);
     let n = 0;
     for (let r = r0; r <= r1; r++) {
       const row = r * this.#nx;
       for (let s = this.#start[row + c0], t = this.#start[row + c1 + 1]; s < t; s++) {
-        const i = this.#items[s], k = 4 * i;
-        const x1 = e[k], y1 = e[k + 1], x2 = e[k + 2], y2 = e[k + 3];
-        if ((x1 < x2 ? x2 : x1) < minX || (x1 < x2 ? x1 : x2) > maxX || (y1 < y2 ? y2 : y1) < minY || (y1 < y2 ? y1 : y2) > maxY) continue;
+        const i = this.#items[s],
+          k = 4 * i;
+        const x1 = e[k],
+          y1 = e[k + 1],
+          x2 = e[k + 2],
+          y2 = e[k + 3];
+        if (
+          (x1 < x2 ? x2 : x1) < minX ||
+          (x1 < x2 ? x1 : x2) > maxX ||
+          (y1 < y2 ? y2 : y1) < minY ||
+          (y1 < y2 ? y1 : y2) > maxY
+        )
+          continue;
         if (n === nearEdges.length) {
           const grown = new Int32Array(2 * n);
           grown.set(nearEdges);
@@ -413,10 +481,14 @@ export class AreaIndex {
     const e = this.#e;
     const cell = this.#cell;
     // walk the cells the segment passes through (grid traversal), testing their edges
-    let c = this.#col(ax), r = this.#row(ay);
-    const cEnd = this.#col(bx), rEnd = this.#row(by);
-    const dx = bx - ax, dy = by - ay;
-    const stepC = dx > 0 ? 1 : -1, stepR = dy > 0 ? 1 : -1;
+    let c = this.#col(ax),
+      r = this.#row(ay);
+    const cEnd = this.#col(bx),
+      rEnd = this.#row(by);
+    const dx = bx - ax,
+      dy = by - ay;
+    const stepC = dx > 0 ? 1 : -1,
+      stepR = dy > 0 ? 1 : -1;
     // where the segment leaves its first cell across x and across y
     let tMaxX = dx !== 0 ? (this.#minX + (c + (stepC > 0 ? 1 : 0)) * cell - ax) / dx : Infinity;
     let tMaxY = dy !== 0 ? (this.#minY + (r + (stepR > 0 ? 1 : 0)) * cell - ay) / dy : Infinity;
@@ -450,14 +522,22 @@ export class AreaIndex {
    */
   crossingsAlong(ax: number, ay: number, bx: number, by: number, out: number[]): boolean {
     if (this.empty) return false;
-    const n = this.#edgesNear({ minX: Math.min(ax, bx), minY: Math.min(ay, by), maxX: Math.max(ax, bx), maxY: Math.max(ay, by) });
+    const n = this.#edgesNear({
+      minX: Math.min(ax, bx),
+      minY: Math.min(ay, by),
+      maxX: Math.max(ax, bx),
+      maxY: Math.max(ay, by),
+    });
     const e = this.#e;
-    const dx = bx - ax, dy = by - ay;
+    const dx = bx - ax,
+      dy = by - ay;
     let touch = false;
     for (let j = 0; j < n; j++) {
       const k = 4 * nearEdges[j];
-      const cx = e[k], cy = e[k + 1];
-      const ex = e[k + 2] - cx, ey = e[k + 3] - cy;
+      const cx = e[k],
+        cy = e[k + 1];
+      const ex = e[k + 2] - cx,
+        ey = e[k + 3] - cy;
       const den = dx * ey - dy * ex;
       if (den === 0) {
         if ((cx - ax) * dy - (cy - ay) * dx === 0) touch = true;

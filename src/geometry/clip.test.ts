@@ -3,7 +3,6 @@ import assert from 'node:assert/strict';
 import { area, difference, intersection } from './clip.js';
 import { square } from './test-shapes.js';
 
-
 test('difference ignores clip islands far from the subject and still cuts the ones that touch it', () => {
   const a = [square(0, 0, 1000)];
   const far = square(5000, 5000, 1000);

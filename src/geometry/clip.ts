@@ -12,7 +12,10 @@ import { islandsApart, islandsIfSimple, MAX_RINGS } from './simple-rings.js';
 import * as wasmEngine from './clipper-wasm.js';
 
 /** A clipping engine's operations, as both engine modules (clipper-wasm.ts, clipper-ts.ts) export them. */
-export type ClipEngine = Pick<typeof wasmEngine, 'booleanAreas' | 'unionDroppingCollinear' | 'inflateAreas' | 'strokeAreas' | 'clipOpen' | 'simplifyClosed'>;
+export type ClipEngine = Pick<
+  typeof wasmEngine,
+  'booleanAreas' | 'unionDroppingCollinear' | 'inflateAreas' | 'strokeAreas' | 'clipOpen' | 'simplifyClosed'
+>;
 
 export type Join = 'miter' | 'round' | 'square';
 
@@ -38,7 +41,12 @@ export interface ClipOperations {
   difference(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[];
   intersection(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[];
   offset(areas: readonly ExPolygon[], deltaUm: number, join?: Join): ExPolygon[];
-  strokeArea(lines: readonly Polyline[], loops: readonly Polygon[], widthUm: number, join?: 'round' | 'miter'): ExPolygon[];
+  strokeArea(
+    lines: readonly Polyline[],
+    loops: readonly Polygon[],
+    widthUm: number,
+    join?: 'round' | 'miter',
+  ): ExPolygon[];
   clipLines(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[];
   clipLinesOutside(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[];
   simplifyRings(rings: readonly Polygon[], toleranceUm: number): Polygon[];
@@ -50,7 +58,12 @@ export interface ClipOperations {
  * exports); the tests make a second set over the TypeScript reference engine and hold the two together.
  */
 export function clipOperations(engine: ClipEngine): ClipOperations {
-  function run(op: wasmEngine.Op, subject: readonly Polygon[], clip: readonly Polygon[], rule: wasmEngine.Rule): ExPolygon[] {
+  function run(
+    op: wasmEngine.Op,
+    subject: readonly Polygon[],
+    clip: readonly Polygon[],
+    rule: wasmEngine.Rule,
+  ): ExPolygon[] {
     return engine.booleanAreas(op, subject, clip, rule);
   }
 
@@ -87,8 +100,6 @@ export function clipOperations(engine: ClipEngine): ClipOperations {
     return run('intersection', flatten(aIn), flatten(bIn), 'nonzero');
   }
 
-
-
   /** Grow (delta > 0) or shrink (delta < 0) areas by delta µm. */
   function offset(areas: readonly ExPolygon[], deltaUm: number, join: Join = 'miter'): ExPolygon[] {
     if (areas.length === 0) return [];
@@ -110,13 +121,22 @@ export function clipOperations(engine: ClipEngine): ClipOperations {
    * are much cheaper and add a little at corners and ends (up to (1 - π/4)·(width/2)² each).
    */
   function strokeArea(
-    lines: readonly Polyline[], loops: readonly Polygon[], widthUm: number, join: 'round' | 'miter' = 'round',
+    lines: readonly Polyline[],
+    loops: readonly Polygon[],
+    widthUm: number,
+    join: 'round' | 'miter' = 'round',
   ): ExPolygon[] {
     if ((lines.length === 0 && loops.length === 0) || !(widthUm > 0)) return [];
-    return engine.strokeAreas(lines, loops, widthUm / 2, join, join === 'round' ? 'round' : 'square', MITER_LIMIT, ARC_TOLERANCE_UM);
+    return engine.strokeAreas(
+      lines,
+      loops,
+      widthUm / 2,
+      join,
+      join === 'round' ? 'round' : 'square',
+      MITER_LIMIT,
+      ARC_TOLERANCE_UM,
+    );
   }
-
-
 
   /** Clip open polylines to areas: the parts inside. */
   function clipLines(lines: readonly Polyline[], areas: readonly ExPolygon[]): Polyline[] {
@@ -150,7 +170,19 @@ export function clipOperations(engine: ClipEngine): ClipOperations {
     return res;
   }
 
-  return { unionRings, evenOddAreas, union, difference, intersection, offset, strokeArea, clipLines, clipLinesOutside, simplifyRings, simplifyAreas };
+  return {
+    unionRings,
+    evenOddAreas,
+    union,
+    difference,
+    intersection,
+    offset,
+    strokeArea,
+    clipLines,
+    clipLinesOutside,
+    simplifyRings,
+    simplifyAreas,
+  };
 }
 
 const ops = clipOperations(wasmEngine);
@@ -219,7 +251,10 @@ export function area(areas: readonly ExPolygon[]): number {
 }
 
 export function boundsOf(areas: readonly ExPolygon[]): Bounds {
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   for (const a of areas) {
     for (const p of a.outer) {
       if (p.x < minX) minX = p.x;

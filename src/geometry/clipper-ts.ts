@@ -8,10 +8,23 @@ import type { PolyPath64 } from 'clipper2-ts';
 import type { ExPolygon, Polygon, Polyline, Pt } from './types.js';
 import type { EndKind, JoinKind, Op, Rule } from './clipper-wasm.js';
 
-const OPS: Record<Op, ClipType> = { union: ClipType.Union, difference: ClipType.Difference, intersection: ClipType.Intersection };
-const RULES: Record<Rule, FillRule> = { nonzero: FillRule.NonZero, evenodd: FillRule.EvenOdd, positive: FillRule.Positive };
+const OPS: Record<Op, ClipType> = {
+  union: ClipType.Union,
+  difference: ClipType.Difference,
+  intersection: ClipType.Intersection,
+};
+const RULES: Record<Rule, FillRule> = {
+  nonzero: FillRule.NonZero,
+  evenodd: FillRule.EvenOdd,
+  positive: FillRule.Positive,
+};
 const JOINS: Record<JoinKind, JoinType> = { miter: JoinType.Miter, round: JoinType.Round, square: JoinType.Square };
-const ENDS: Record<EndKind, EndType> = { polygon: EndType.Polygon, joined: EndType.Joined, round: EndType.Round, square: EndType.Square };
+const ENDS: Record<EndKind, EndType> = {
+  polygon: EndType.Polygon,
+  joined: EndType.Joined,
+  round: EndType.Round,
+  square: EndType.Square,
+};
 
 function collectTree(node: PolyPath64, out: ExPolygon[]): void {
   for (let i = 0; i < node.count; i++) {
@@ -50,7 +63,11 @@ export function unionDroppingCollinear(rings: readonly Polygon[], rule: Rule): E
   return islands(tree);
 }
 
-export function clipOpen(op: 'intersection' | 'difference', lines: readonly Polyline[], clip: readonly Polygon[]): Polyline[] {
+export function clipOpen(
+  op: 'intersection' | 'difference',
+  lines: readonly Polyline[],
+  clip: readonly Polygon[],
+): Polyline[] {
   const c = new Clipper64();
   c.addOpenSubject(lines as Polyline[]);
   c.addClip(clip as Polygon[]);
@@ -60,7 +77,14 @@ export function clipOpen(op: 'intersection' | 'difference', lines: readonly Poly
   return open;
 }
 
-export function inflateAreas(rings: readonly Pt[][], delta: number, join: JoinKind, end: EndKind, miterLimit: number, arcTolerance: number): ExPolygon[] {
+export function inflateAreas(
+  rings: readonly Pt[][],
+  delta: number,
+  join: JoinKind,
+  end: EndKind,
+  miterLimit: number,
+  arcTolerance: number,
+): ExPolygon[] {
   const co = new ClipperOffset(miterLimit, arcTolerance);
   co.addPaths(rings as Pt[][], JOINS[join], ENDS[end]);
   const tree = new PolyTree64();
@@ -70,7 +94,13 @@ export function inflateAreas(rings: readonly Pt[][], delta: number, join: JoinKi
 
 /** Open polylines (with `lineEnd` ends) and closed loops widened by `delta` on each side, in one offset. */
 export function strokeAreas(
-  lines: readonly Polyline[], loops: readonly Polygon[], delta: number, join: JoinKind, lineEnd: EndKind, miterLimit: number, arcTolerance: number,
+  lines: readonly Polyline[],
+  loops: readonly Polygon[],
+  delta: number,
+  join: JoinKind,
+  lineEnd: EndKind,
+  miterLimit: number,
+  arcTolerance: number,
 ): ExPolygon[] {
   const co = new ClipperOffset(miterLimit, arcTolerance);
   if (lines.length) co.addPaths(lines as Polyline[], JOINS[join], ENDS[lineEnd]);

@@ -12,7 +12,7 @@ import type { ExPolygon, Polyline, Pt } from './types.js';
 /** A deterministic pseudo-random generator (so a failure can be replayed). */
 function rng(seed: number): () => number {
   let s = seed >>> 0;
-  return () => ((s = (s * 1664525 + 1013904223) >>> 0) / 2 ** 32);
+  return () => (s = (s * 1664525 + 1013904223) >>> 0) / 2 ** 32;
 }
 
 function star(cx: number, cy: number, r: number, n: number, rand: () => number): ExPolygon {
@@ -33,7 +33,8 @@ function both<T>(f: (ops: ClipOperations) => T): { ts: T; wasm: T } {
   return { ts: f(TS), wasm: f(WASM) };
 }
 
-const length = (lines: readonly Polyline[]) => lines.reduce((t, l) => t + l.slice(1).reduce((s, p, i) => s + Math.hypot(p.x - l[i].x, p.y - l[i].y), 0), 0);
+const length = (lines: readonly Polyline[]) =>
+  lines.reduce((t, l) => t + l.slice(1).reduce((s, p, i) => s + Math.hypot(p.x - l[i].x, p.y - l[i].y), 0), 0);
 
 test('booleans, offsets, strokes, line clipping and simplification agree between the two engines', async () => {
   const rand = rng(7);
@@ -41,7 +42,11 @@ test('booleans, offsets, strokes, line clipping and simplification agree between
     const a = [star(50_000, 50_000, 20_000, 24, rand), star(62_000, 48_000, 15_000, 17, rand)];
     const b = [star(55_000, 60_000, 18_000, 31, rand)];
     const lines: Polyline[] = [];
-    for (let k = 0; k < 10; k++) lines.push([{ x: 20_000, y: 30_000 + k * 4000 }, { x: 90_000, y: 35_000 + k * 4000 }]);
+    for (let k = 0; k < 10; k++)
+      lines.push([
+        { x: 20_000, y: 30_000 + k * 4000 },
+        { x: 90_000, y: 35_000 + k * 4000 },
+      ]);
     const cases: Array<[string, (o: ClipOperations) => number, number]> = [
       // the rings cross themselves: intersection points round to whole µm in their own ways
       ['union', (o) => area(o.union(a, b)), 1e-4],
@@ -73,7 +78,8 @@ test('the engine gives its results in whole micrometres, its crossing points too
   let points = 0;
   for (let t = 0; t < 50; t++) {
     // overlapping stars: their edges cross at points that are seldom whole
-    const a = star(100000 + t * 7, 100000, 1250 + t, 9, rand), b = star(101500 + t * 3, 100300 + t, 1100 + 2 * t, 8, rand);
+    const a = star(100000 + t * 7, 100000, 1250 + t, 9, rand),
+      b = star(101500 + t * 3, 100300 + t, 1100 + 2 * t, 8, rand);
     for (const result of [union([a], [b]), intersection([a], [b]), difference([a], [b]), offset([a, b], 333)]) {
       for (const island of result) {
         for (const ring of [island.outer, ...island.holes]) {

@@ -8,7 +8,16 @@
  * engine object made here is deleted before the call returns, so the engine's heap does not grow.
  */
 import Clipper2Z from 'clipper2-wasm/dist/es/clipper2z.js';
-import type { ClipType, EndType, FillRule, JoinType, MainModule, PathD, PathsD, PolyPathD } from 'clipper2-wasm/dist/clipper2z.js';
+import type {
+  ClipType,
+  EndType,
+  FillRule,
+  JoinType,
+  MainModule,
+  PathD,
+  PathsD,
+  PolyPathD,
+} from 'clipper2-wasm/dist/clipper2z.js';
 import type { ExPolygon, Polygon, Polyline, Pt } from './types.js';
 import { nestRings } from './nest-rings.js';
 
@@ -22,10 +31,27 @@ export type Rule = 'nonzero' | 'evenodd' | 'positive';
 export type JoinKind = 'miter' | 'round' | 'square';
 export type EndKind = 'polygon' | 'joined' | 'round' | 'square';
 
-const OPS: Record<Op, ClipType> = { union: C.ClipType.Union, difference: C.ClipType.Difference, intersection: C.ClipType.Intersection };
-const RULES: Record<Rule, FillRule> = { nonzero: C.FillRule.NonZero, evenodd: C.FillRule.EvenOdd, positive: C.FillRule.Positive };
-const JOINS: Record<JoinKind, JoinType> = { miter: C.JoinType.Miter, round: C.JoinType.Round, square: C.JoinType.Square };
-const ENDS: Record<EndKind, EndType> = { polygon: C.EndType.Polygon, joined: C.EndType.Joined, round: C.EndType.Round, square: C.EndType.Square };
+const OPS: Record<Op, ClipType> = {
+  union: C.ClipType.Union,
+  difference: C.ClipType.Difference,
+  intersection: C.ClipType.Intersection,
+};
+const RULES: Record<Rule, FillRule> = {
+  nonzero: C.FillRule.NonZero,
+  evenodd: C.FillRule.EvenOdd,
+  positive: C.FillRule.Positive,
+};
+const JOINS: Record<JoinKind, JoinType> = {
+  miter: C.JoinType.Miter,
+  round: C.JoinType.Round,
+  square: C.JoinType.Square,
+};
+const ENDS: Record<EndKind, EndType> = {
+  polygon: C.EndType.Polygon,
+  joined: C.EndType.Joined,
+  round: C.EndType.Round,
+  square: C.EndType.Square,
+};
 
 // Reused engine objects and buffer: every call here is synchronous and leaves them empty.
 const scratchPath: PathD = new C.PathD();
@@ -169,8 +195,20 @@ function readTreeDirect(node: PolyPathD, out: ExPolygon[]): void {
 /** Whether reading memory gives what the object interface gives, on a tree with a hole and an island in it. */
 function directReadsAgree(): boolean {
   try {
-    const square = (c: number, r: number): Pt[] => [{ x: c - r, y: c - r }, { x: c + r, y: c - r }, { x: c + r, y: c + r }, { x: c - r, y: c + r }];
-    C.BooleanOpOutD(OPS.union, RULES.evenodd, load(subjects, [square(0, 100), square(0, 60), square(0, 20), square(300, 7)]), load(clips, []), tree, PRECISION);
+    const square = (c: number, r: number): Pt[] => [
+      { x: c - r, y: c - r },
+      { x: c + r, y: c - r },
+      { x: c + r, y: c + r },
+      { x: c - r, y: c + r },
+    ];
+    C.BooleanOpOutD(
+      OPS.union,
+      RULES.evenodd,
+      load(subjects, [square(0, 100), square(0, 60), square(0, 20), square(300, 7)]),
+      load(clips, []),
+      tree,
+      PRECISION,
+    );
     const byHandle: ExPolygon[] = [];
     const direct: ExPolygon[] = [];
     readTreeByHandle(tree, byHandle);
@@ -182,7 +220,12 @@ function directReadsAgree(): boolean {
     res.delete();
     subjects.clear();
     clips.clear();
-    return byHandle.length === 3 && a.length === 2 && JSON.stringify(byHandle) === JSON.stringify(direct) && JSON.stringify(a) === JSON.stringify(b);
+    return (
+      byHandle.length === 3 &&
+      a.length === 2 &&
+      JSON.stringify(byHandle) === JSON.stringify(direct) &&
+      JSON.stringify(a) === JSON.stringify(b)
+    );
   } catch {
     return false;
   }
@@ -224,7 +267,11 @@ export function unionDroppingCollinear(rings: readonly Polygon[], rule: Rule): E
 }
 
 /** Open polylines clipped against closed rings (non-zero): the parts inside (intersection) or outside (difference). */
-export function clipOpen(op: 'intersection' | 'difference', lines: readonly Polyline[], clip: readonly Polygon[]): Polyline[] {
+export function clipOpen(
+  op: 'intersection' | 'difference',
+  lines: readonly Polyline[],
+  clip: readonly Polygon[],
+): Polyline[] {
   keepCollinear.AddOpenSubject(load(subjects, lines));
   keepCollinear.AddClip(load(clips, clip));
   subjects.clear();
@@ -239,16 +286,34 @@ export function clipOpen(op: 'intersection' | 'difference', lines: readonly Poly
 
 /** Rings grown (delta > 0) or shrunk by delta, as flat rings: outer rings counter-clockwise, holes clockwise. */
 export function inflateRings(
-  rings: readonly Pt[][], delta: number, join: JoinKind, end: EndKind, miterLimit: number, arcTolerance: number,
+  rings: readonly Pt[][],
+  delta: number,
+  join: JoinKind,
+  end: EndKind,
+  miterLimit: number,
+  arcTolerance: number,
 ): Polygon[] {
-  const res = C.InflatePathsD(load(subjects, rings), delta, JOINS[join], ENDS[end], miterLimit, PRECISION, arcTolerance);
+  const res = C.InflatePathsD(
+    load(subjects, rings),
+    delta,
+    JOINS[join],
+    ENDS[end],
+    miterLimit,
+    PRECISION,
+    arcTolerance,
+  );
   subjects.clear();
   return readPaths(res, 3);
 }
 
 /** Offset rings as islands. */
 export function inflateAreas(
-  rings: readonly Pt[][], delta: number, join: JoinKind, end: EndKind, miterLimit: number, arcTolerance: number,
+  rings: readonly Pt[][],
+  delta: number,
+  join: JoinKind,
+  end: EndKind,
+  miterLimit: number,
+  arcTolerance: number,
 ): ExPolygon[] {
   return nestRings(inflateRings(rings, delta, join, end, miterLimit, arcTolerance));
 }
@@ -258,14 +323,37 @@ export function inflateAreas(
  * side, as islands: the two offsets are made apart (the engine takes one end type per call) and united.
  */
 export function strokeAreas(
-  lines: readonly Polyline[], loops: readonly Polygon[], delta: number, join: JoinKind, lineEnd: EndKind,
-  miterLimit: number, arcTolerance: number,
+  lines: readonly Polyline[],
+  loops: readonly Polygon[],
+  delta: number,
+  join: JoinKind,
+  lineEnd: EndKind,
+  miterLimit: number,
+  arcTolerance: number,
 ): ExPolygon[] {
   if (lines.length === 0 || loops.length === 0) {
-    return lines.length ? inflateAreas(lines, delta, join, lineEnd, miterLimit, arcTolerance) : inflateAreas(loops, delta, join, 'joined', miterLimit, arcTolerance);
+    return lines.length
+      ? inflateAreas(lines, delta, join, lineEnd, miterLimit, arcTolerance)
+      : inflateAreas(loops, delta, join, 'joined', miterLimit, arcTolerance);
   }
-  const a = C.InflatePathsD(load(subjects, lines), delta, JOINS[join], ENDS[lineEnd], miterLimit, PRECISION, arcTolerance);
-  const b = C.InflatePathsD(load(subjects, loops), delta, JOINS[join], ENDS.joined, miterLimit, PRECISION, arcTolerance);
+  const a = C.InflatePathsD(
+    load(subjects, lines),
+    delta,
+    JOINS[join],
+    ENDS[lineEnd],
+    miterLimit,
+    PRECISION,
+    arcTolerance,
+  );
+  const b = C.InflatePathsD(
+    load(subjects, loops),
+    delta,
+    JOINS[join],
+    ENDS.joined,
+    miterLimit,
+    PRECISION,
+    arcTolerance,
+  );
   subjects.clear();
   C.BooleanOpOutD(OPS.union, RULES.nonzero, a, b, tree, PRECISION);
   a.delete();

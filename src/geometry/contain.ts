@@ -49,7 +49,10 @@ export function twiceArea(r: readonly Pt[]): number {
 
 /** Bounding box of a ring. */
 export function ringBounds(r: readonly Pt[]): Bounds {
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   for (const p of r) {
     if (p.x < minX) minX = p.x;
     if (p.x > maxX) maxX = p.x;
@@ -61,15 +64,26 @@ export function ringBounds(r: readonly Pt[]): Bounds {
 
 /** Whether any edge of `a` meets any edge of `b` (crossing, touching or overlapping). */
 function ringsTouch(a: Polygon, b: Polygon, bb: Bounds): boolean {
-  const na = a.length, nb = b.length;
+  const na = a.length,
+    nb = b.length;
   for (let i = 0, pi = na - 1; i < na; pi = i++) {
-    const p = a[pi], q = a[i];
-    const minX = p.x < q.x ? p.x : q.x, maxX = p.x < q.x ? q.x : p.x;
-    const minY = p.y < q.y ? p.y : q.y, maxY = p.y < q.y ? q.y : p.y;
+    const p = a[pi],
+      q = a[i];
+    const minX = p.x < q.x ? p.x : q.x,
+      maxX = p.x < q.x ? q.x : p.x;
+    const minY = p.y < q.y ? p.y : q.y,
+      maxY = p.y < q.y ? q.y : p.y;
     if (minX > bb.maxX || maxX < bb.minX || minY > bb.maxY || maxY < bb.minY) continue;
     for (let j = 0, pj = nb - 1; j < nb; pj = j++) {
-      const r = b[pj], s = b[j];
-      if ((r.x < minX && s.x < minX) || (r.x > maxX && s.x > maxX) || (r.y < minY && s.y < minY) || (r.y > maxY && s.y > maxY)) continue;
+      const r = b[pj],
+        s = b[j];
+      if (
+        (r.x < minX && s.x < minX) ||
+        (r.x > maxX && s.x > maxX) ||
+        (r.y < minY && s.y < minY) ||
+        (r.y > maxY && s.y > maxY)
+      )
+        continue;
       if (segmentsMeet(p.x, p.y, q.x, q.y, r.x, r.y, s.x, s.y)) return true;
     }
   }
@@ -82,12 +96,23 @@ function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: 
 }
 
 /** Closed segments pq and rs share a point (crossing, touching or overlapping). */
-export function segmentsMeet(px: number, py: number, qx: number, qy: number, rx: number, ry: number, sx: number, sy: number): boolean {
+export function segmentsMeet(
+  px: number,
+  py: number,
+  qx: number,
+  qy: number,
+  rx: number,
+  ry: number,
+  sx: number,
+  sy: number,
+): boolean {
   if (Math.max(px, qx) < Math.min(rx, sx) || Math.max(rx, sx) < Math.min(px, qx)) return false;
   if (Math.max(py, qy) < Math.min(ry, sy) || Math.max(ry, sy) < Math.min(py, qy)) return false;
-  const o1 = orient(px, py, qx, qy, rx, ry), o2 = orient(px, py, qx, qy, sx, sy);
+  const o1 = orient(px, py, qx, qy, rx, ry),
+    o2 = orient(px, py, qx, qy, sx, sy);
   if (o1 !== 0 && o1 === o2) return false;
-  const o3 = orient(rx, ry, sx, sy, px, py), o4 = orient(rx, ry, sx, sy, qx, qy);
+  const o3 = orient(rx, ry, sx, sy, px, py),
+    o4 = orient(rx, ry, sx, sy, qx, qy);
   if (o3 !== 0 && o3 === o4) return false;
   // proper crossing, or a collinear / touching case; with overlapping boxes, collinear means overlap
   return true;
@@ -97,7 +122,8 @@ export function segmentsMeet(px: number, py: number, qx: number, qy: number, rx:
 export function pointInRing(p: Pt, ring: readonly Pt[]): boolean {
   let inside = false;
   for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
-    const a = ring[i], b = ring[j];
+    const a = ring[i],
+      b = ring[j];
     if (a.y > p.y !== b.y > p.y && p.x < a.x + ((p.y - a.y) * (b.x - a.x)) / (b.y - a.y)) inside = !inside;
   }
   return inside;

@@ -8,7 +8,8 @@ export type P = readonly [number, number];
 
 /** Distance from `p` to the segment from `a` to `b`. */
 export function segmentPointDistance(p: P, a: P, b: P): number {
-  const dx = b[0] - a[0], dy = b[1] - a[1];
+  const dx = b[0] - a[0],
+    dy = b[1] - a[1];
   const len2 = dx * dx + dy * dy;
   let t = len2 > 0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / len2 : 0;
   t = t < 0 ? 0 : t > 1 ? 1 : t;
@@ -19,7 +20,8 @@ export function segmentPointDistance(p: P, a: P, b: P): number {
 export function insideConvex(p: P, poly: readonly P[]): boolean {
   if (poly.length < 3) return false;
   for (let i = 0; i < poly.length; i++) {
-    const a = poly[i], b = poly[(i + 1) % poly.length];
+    const a = poly[i],
+      b = poly[(i + 1) % poly.length];
     if ((b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]) < 0) return false;
   }
   return true;
@@ -36,9 +38,11 @@ export function hullDistance(a: readonly P[], b: readonly P[]): number {
   if (insideConvex(a[0], b) || insideConvex(b[0], a)) return 0;
   let best = Infinity;
   for (let i = 0; i < a.length; i++) {
-    const a0 = a[i], a1 = a[(i + 1) % a.length];
+    const a0 = a[i],
+      a1 = a[(i + 1) % a.length];
     for (let j = 0; j < b.length; j++) {
-      const b0 = b[j], b1 = b[(j + 1) % b.length];
+      const b0 = b[j],
+        b1 = b[(j + 1) % b.length];
       if (segmentsCross(a0, a1, b0, b1)) return 0;
       best = Math.min(best, segmentPointDistance(a0, b0, b1), segmentPointDistance(b0, a0, a1));
     }
@@ -51,6 +55,7 @@ export function pointHullDistance(p: P, hull: readonly P[]): number {
   if (hull.length === 0) return Infinity;
   if (insideConvex(p, hull)) return 0;
   let best = Infinity;
-  for (let i = 0; i < hull.length; i++) best = Math.min(best, segmentPointDistance(p, hull[i], hull[(i + 1) % hull.length]));
+  for (let i = 0; i < hull.length; i++)
+    best = Math.min(best, segmentPointDistance(p, hull[i], hull[(i + 1) % hull.length]));
   return best;
 }

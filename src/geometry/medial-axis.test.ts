@@ -12,7 +12,9 @@ const P = (x: number, y: number): Pt => ({ x, y });
 
 /** Distance from p to segment ab. */
 function segDist(p: Pt, a: Pt, b: Pt): number {
-  const dx = b.x - a.x, dy = b.y - a.y, l2 = dx * dx + dy * dy;
+  const dx = b.x - a.x,
+    dy = b.y - a.y,
+    l2 = dx * dx + dy * dy;
   const t = l2 > 0 ? Math.max(0, Math.min(1, ((p.x - a.x) * dx + (p.y - a.y) * dy) / l2)) : 0;
   return Math.hypot(a.x + t * dx - p.x, a.y + t * dy - p.y);
 }
@@ -20,7 +22,8 @@ function segDist(p: Pt, a: Pt, b: Pt): number {
 /** True distance from p to the area's boundary, by brute force over every boundary segment. */
 function boundaryDist(area: ExPolygon, p: Pt): number {
   let d = Infinity;
-  for (const r of [area.outer, ...area.holes]) for (let i = 0; i < r.length; i++) d = Math.min(d, segDist(p, r[i], r[(i + 1) % r.length]));
+  for (const r of [area.outer, ...area.holes])
+    for (let i = 0; i < r.length; i++) d = Math.min(d, segDist(p, r[i], r[(i + 1) % r.length]));
   return d;
 }
 
@@ -51,18 +54,32 @@ const near = (a: Pt, b: Pt, tol: number): boolean => Math.hypot(a.x - b.x, a.y -
 
 /** A regular polygon of `n` sides round (cx, cy), counter-clockwise. */
 function ngon(cx: number, cy: number, r: number, n: number): Polygon {
-  return Array.from({ length: n }, (_, k) => P(Math.round(cx + r * Math.cos((2 * Math.PI * k) / n)), Math.round(cy + r * Math.sin((2 * Math.PI * k) / n))));
+  return Array.from({ length: n }, (_, k) =>
+    P(Math.round(cx + r * Math.cos((2 * Math.PI * k) / n)), Math.round(cy + r * Math.sin((2 * Math.PI * k) / n))),
+  );
 }
 
 /** Strip [0, len] × [-t/2, t/2] whose left end is a point of full angle `deg` (tip at x < 0). */
 function pointedStrip(deg: number, t: number, len: number): { area: ExPolygon; tip: Pt } {
   const d = Math.round(t / 2 / Math.tan((deg * Math.PI) / 360));
-  return { area: { outer: [P(-d, 0), P(0, -t / 2), P(len, -t / 2), P(len, t / 2), P(0, t / 2)], holes: [] }, tip: P(-d, 0) };
+  return {
+    area: { outer: [P(-d, 0), P(0, -t / 2), P(len, -t / 2), P(len, t / 2), P(0, t / 2)], holes: [] },
+    tip: P(-d, 0),
+  };
 }
 
 /** The T: a bar [-5, 5] × [-0.25, 0.25] mm and a stem [-0.25, 0.25] × [-5, -0.25] mm. */
 const tee: ExPolygon = {
-  outer: [P(-5000, -250), P(-250, -250), P(-250, -5000), P(250, -5000), P(250, -250), P(5000, -250), P(5000, 250), P(-5000, 250)],
+  outer: [
+    P(-5000, -250),
+    P(-250, -250),
+    P(-250, -5000),
+    P(250, -5000),
+    P(250, -250),
+    P(5000, -250),
+    P(5000, 250),
+    P(-5000, 250),
+  ],
   holes: [],
 };
 
@@ -73,18 +90,30 @@ const ell: ExPolygon = { outer: [P(0, 0), P(8000, 0), P(8000, 500), P(500, 500),
 function star(arms: number, w: number, len: number): ExPolygon {
   const outer: Pt[] = [];
   for (let k = 0; k < arms; k++) {
-    const a = (2 * Math.PI * k) / arms, b = (2 * Math.PI * (k + 1)) / arms;
-    const dx = Math.cos(a), dy = Math.sin(a), nx = -dy, ny = dx;
-    outer.push(P(Math.round(len * dx - w * nx), Math.round(len * dy - w * ny)), P(Math.round(len * dx + w * nx), Math.round(len * dy + w * ny)));
+    const a = (2 * Math.PI * k) / arms,
+      b = (2 * Math.PI * (k + 1)) / arms;
+    const dx = Math.cos(a),
+      dy = Math.sin(a),
+      nx = -dy,
+      ny = dx;
+    outer.push(
+      P(Math.round(len * dx - w * nx), Math.round(len * dy - w * ny)),
+      P(Math.round(len * dx + w * nx), Math.round(len * dy + w * ny)),
+    );
     // the inner corner where this arm's left edge (p·n = w) meets the next arm's right edge (p·m = -w)
-    const mx = -Math.sin(b), my = Math.cos(b), det = nx * my - ny * mx;
+    const mx = -Math.sin(b),
+      my = Math.cos(b),
+      det = nx * my - ny * mx;
     outer.push(P(Math.round((w * my + ny * w) / det), Math.round((-nx * w - w * mx) / det)));
   }
   return { outer, holes: [] };
 }
 
 /** Square ring: outer 20 mm, hole 19 mm, both centred on the origin (walls 0.5 mm). */
-const squareRing: ExPolygon = { outer: [P(-10000, -10000), P(10000, -10000), P(10000, 10000), P(-10000, 10000)], holes: [[P(-9500, -9500), P(-9500, 9500), P(9500, 9500), P(9500, -9500)]] };
+const squareRing: ExPolygon = {
+  outer: [P(-10000, -10000), P(10000, -10000), P(10000, 10000), P(-10000, 10000)],
+  holes: [[P(-9500, -9500), P(-9500, 9500), P(9500, 9500), P(9500, -9500)]],
+};
 
 /** Circular ring of 180-gons, radii 10 and 9.5 mm. */
 const circleRing: ExPolygon = { outer: ngon(0, 0, 10000, 180), holes: [ngon(0, 0, 9500, 180).reverse()] };
@@ -101,26 +130,36 @@ for (const t of [100, 250, 450, 800, 1600]) {
     assert.equal(c.closed, false);
     for (const [i, p] of c.points.entries()) {
       assert.ok(Math.abs(p.y - t / 2) <= t / 20 + 10, `off the centre line: ${p.x},${p.y}`);
-      if (p.x >= t && p.x <= L - t) assert.ok(Math.abs(c.radii[i] - t / 2) <= 0.05 * (t / 2), `radius ${c.radii[i]} at x ${p.x}`);
+      if (p.x >= t && p.x <= L - t)
+        assert.ok(Math.abs(c.radii[i] - t / 2) <= 0.05 * (t / 2), `radius ${c.radii[i]} at x ${p.x}`);
     }
     const xs = c.points.map((p) => p.x);
-    assert.ok(Math.min(...xs) <= 1.2 * t && Math.max(...xs) >= L - 1.2 * t, `ends ${Math.min(...xs)} .. ${Math.max(...xs)}`);
+    assert.ok(
+      Math.min(...xs) <= 1.2 * t && Math.max(...xs) >= L - 1.2 * t,
+      `ends ${Math.min(...xs)} .. ${Math.max(...xs)}`,
+    );
   });
 
   test(`the same ${t / 1000} mm strip turned by 30° (off-axis samples): one chain, on the centre line, radius t/2`, () => {
-    const L = 10000, c30 = Math.cos(Math.PI / 6), s30 = Math.sin(Math.PI / 6);
-    const turn = (x: number, y: number): Pt => P(Math.round(500 + x * c30 - y * s30), Math.round(-300 + x * s30 + y * c30));
+    const L = 10000,
+      c30 = Math.cos(Math.PI / 6),
+      s30 = Math.sin(Math.PI / 6);
+    const turn = (x: number, y: number): Pt =>
+      P(Math.round(500 + x * c30 - y * s30), Math.round(-300 + x * s30 + y * c30));
     const area: ExPolygon = { outer: [turn(0, 0), turn(L, 0), turn(L, t), turn(0, t)], holes: [] };
     const chains = medialAxis([area]);
     assert.equal(chains.length, 1);
     assert.equal(chains[0].closed, false);
     const along: number[] = [];
     chains[0].points.forEach((p, i) => {
-      const dx = p.x - 500, dy = p.y + 300;
-      const u = dx * c30 + dy * s30, v = -dx * s30 + dy * c30;
+      const dx = p.x - 500,
+        dy = p.y + 300;
+      const u = dx * c30 + dy * s30,
+        v = -dx * s30 + dy * c30;
       along.push(u);
       assert.ok(Math.abs(v - t / 2) <= t / 20 + 10, `off the centre line by ${(v - t / 2).toFixed(1)}`);
-      if (u >= t && u <= L - t) assert.ok(Math.abs(chains[0].radii[i] - t / 2) <= 0.05 * (t / 2), `radius ${chains[0].radii[i]}`);
+      if (u >= t && u <= L - t)
+        assert.ok(Math.abs(chains[0].radii[i] - t / 2) <= 0.05 * (t / 2), `radius ${chains[0].radii[i]}`);
     });
     assert.ok(Math.min(...along) <= 1.2 * t && Math.max(...along) >= L - 1.2 * t);
     assertSound(chains, [area]);
@@ -153,10 +192,15 @@ test('a strip given with 200 vertices along its sides (too many for ear clipping
   dense.push(P(10000, 0), P(10000, 400));
   for (let i = 100; i > 0; i--) dense.push(P(i * 100 - 37, 400));
   dense.push(P(0, 400));
-  const a = medialAxis([few]), b = medialAxis([{ outer: dense, holes: [] }]);
+  const a = medialAxis([few]),
+    b = medialAxis([{ outer: dense, holes: [] }]);
   assert.equal(a.length, 1);
   assert.equal(b.length, 1);
-  for (let k = 0; k < 2; k++) assert.ok(near(ends(a[0])[k], ends(b[0])[k], 3), `ends ${JSON.stringify(ends(a[0]))} and ${JSON.stringify(ends(b[0]))}`);
+  for (let k = 0; k < 2; k++)
+    assert.ok(
+      near(ends(a[0])[k], ends(b[0])[k], 3),
+      `ends ${JSON.stringify(ends(a[0]))} and ${JSON.stringify(ends(b[0]))}`,
+    );
   for (const c of [...a, ...b]) for (const r of c.radii) assert.ok(Math.abs(r - 200) <= 0.01 * 200, `radius ${r}`);
 });
 
@@ -184,7 +228,16 @@ test('square ring (20 mm, hole 19 mm): one closed chain on the midline, radius 0
     }
   });
   // it goes all the way round
-  for (const [sx, sy] of [[1, 1], [1, -1], [-1, 1], [-1, -1]]) assert.ok(c.points.some((p) => sx * p.x > 9000 && sy * p.y > 9000), `corner ${sx},${sy}`);
+  for (const [sx, sy] of [
+    [1, 1],
+    [1, -1],
+    [-1, 1],
+    [-1, -1],
+  ])
+    assert.ok(
+      c.points.some((p) => sx * p.x > 9000 && sy * p.y > 9000),
+      `corner ${sx},${sy}`,
+    );
   assertSound(chains, [squareRing]);
 });
 
@@ -195,7 +248,10 @@ test('circular ring (180-gons, 10 and 9.5 mm): one closed chain on the 9.75 mm c
   assert.equal(c.closed, true);
   const angles: number[] = [];
   c.points.forEach((p, i) => {
-    assert.ok(Math.abs(Math.hypot(p.x, p.y) - 9750) <= 15, `off the midline circle: ${Math.hypot(p.x, p.y).toFixed(1)}`);
+    assert.ok(
+      Math.abs(Math.hypot(p.x, p.y) - 9750) <= 15,
+      `off the midline circle: ${Math.hypot(p.x, p.y).toFixed(1)}`,
+    );
     assert.ok(Math.abs(c.radii[i] - 250) <= 0.05 * 250, `radius ${c.radii[i]}`);
     angles.push(Math.atan2(p.y, p.x));
   });
@@ -213,7 +269,8 @@ test('a ring with a spur: a closed cycle and an open chain that ends on one of i
   };
   const chains = medialAxis([area]);
   assert.equal(chains.length, 2);
-  const loop = chains.find((c) => c.closed), spur = chains.find((c) => !c.closed);
+  const loop = chains.find((c) => c.closed),
+    spur = chains.find((c) => !c.closed);
   assert.ok(loop && spur);
   const joint = ends(spur).find((e) => loop.points.some((p) => same(p, e)));
   assert.ok(joint, 'the spur ends on a point of the cycle');
@@ -231,7 +288,10 @@ test('a plate with two holes side by side: three chains between the two junction
   assert.equal(chains.length, 3);
   assert.ok(chains.every((c) => !c.closed));
   for (const want of [P(3000, 340), P(3000, 1660)]) {
-    assert.ok(chains.every((c) => ends(c).some((e) => near(e, want, 15))), `every chain ends near ${want.x},${want.y}`);
+    assert.ok(
+      chains.every((c) => ends(c).some((e) => near(e, want, 15))),
+      `every chain ends near ${want.x},${want.y}`,
+    );
   }
   for (const c of chains) for (const r of c.radii) assert.ok(r >= 0.95 * 250 && r <= 345, `radius ${r}`);
   assertSound(chains, [area]);
@@ -245,8 +305,12 @@ test('a hole level with a notch in the outer ring: one closed chain round it', (
   const chains = medialAxis([area]);
   assert.equal(chains.length, 1);
   assert.equal(chains[0].closed, true);
-  const xs = chains[0].points.map((p) => p.x), ys = chains[0].points.map((p) => p.y);
-  assert.ok(Math.min(...xs) < 500 && Math.max(...xs) > 2000 && Math.min(...ys) < 300 && Math.max(...ys) > 700, 'round the hole');
+  const xs = chains[0].points.map((p) => p.x),
+    ys = chains[0].points.map((p) => p.y);
+  assert.ok(
+    Math.min(...xs) < 500 && Math.max(...xs) > 2000 && Math.min(...ys) < 300 && Math.max(...ys) > 700,
+    'round the hole',
+  );
   assertSound(chains, [area]);
 });
 
@@ -254,7 +318,8 @@ test('a hole level with a notch in the outer ring: one closed chain round it', (
 // wedges and tips
 
 test('a 5° wedge keeps one chain to its sharp tip, radius growing linearly from it', () => {
-  const L = 20000, h = Math.round(L * Math.tan((2.5 * Math.PI) / 180));
+  const L = 20000,
+    h = Math.round(L * Math.tan((2.5 * Math.PI) / 180));
   const area: ExPolygon = { outer: [P(0, 0), P(L, -h), P(L, h)], holes: [] };
   const chains = medialAxis([area]);
   assert.equal(chains.length, 1);
@@ -263,10 +328,14 @@ test('a 5° wedge keeps one chain to its sharp tip, radius growing linearly from
   const s = Math.sin((2.5 * Math.PI) / 180);
   c.points.forEach((p, i) => {
     assert.ok(Math.abs(p.y) <= 10, 'on the bisector');
-    assert.ok(Math.abs(c.radii[i] - p.x * s) <= 0.03 * p.x * s + 3, `radius ${c.radii[i].toFixed(1)} at x ${p.x}, wedge ${(p.x * s).toFixed(1)}`);
+    assert.ok(
+      Math.abs(c.radii[i] - p.x * s) <= 0.03 * p.x * s + 3,
+      `radius ${c.radii[i].toFixed(1)} at x ${p.x}, wedge ${(p.x * s).toFixed(1)}`,
+    );
   });
   // the other end is the incentre, where the branches into the two blunt base corners were pruned
-  const side = Math.hypot(L, h), inradius = (L * h) / (side + h);
+  const side = Math.hypot(L, h),
+    inradius = (L * h) / (side + h);
   const last = c.points[c.points.length - 1];
   assert.ok(Math.abs(last.x - inradius / s) <= 100, `ends at the incentre, x ${last.x}`);
   assert.ok(Math.abs(c.radii[c.radii.length - 1] - inradius) <= 0.02 * inradius);
@@ -274,12 +343,14 @@ test('a 5° wedge keeps one chain to its sharp tip, radius growing linearly from
 });
 
 test('a 40° triangle: every branch (into corners blunter than 10°) is pruned, leaving its incentre as one point', () => {
-  const L = 5000, h = Math.round(L * Math.tan((20 * Math.PI) / 180));
+  const L = 5000,
+    h = Math.round(L * Math.tan((20 * Math.PI) / 180));
   const area: ExPolygon = { outer: [P(0, 0), P(L, -h), P(L, h)], holes: [] };
   const chains = medialAxis([area]);
   assert.equal(chains.length, 1);
   assert.equal(chains[0].points.length, 1);
-  const side = Math.hypot(L, h), inradius = (L * h) / (side + h);
+  const side = Math.hypot(L, h),
+    inradius = (L * h) / (side + h);
   assert.ok(near(chains[0].points[0], P(Math.round(inradius / Math.sin((20 * Math.PI) / 180)), 0), 20));
   assert.ok(Math.abs(chains[0].radii[0] - inradius) <= 0.01 * inradius);
 });
@@ -321,15 +392,27 @@ test('pruneAngleDeg: at 50° the 40° point keeps its line to the tip', () => {
 });
 
 test('a sharp 8° spike on a 0.6 mm strip keeps its branch to the tip; a 30° spike loses it', () => {
-  const sharp: ExPolygon = { outer: [P(0, 0), P(10000, 0), P(10000, 600), P(5105, 600), P(5000, 2100), P(4895, 600), P(0, 600)], holes: [] };
+  const sharp: ExPolygon = {
+    outer: [P(0, 0), P(10000, 0), P(10000, 600), P(5105, 600), P(5000, 2100), P(4895, 600), P(0, 600)],
+    holes: [],
+  };
   const s = medialAxis([sharp]);
   assert.equal(s.length, 3);
-  assert.ok(s.some((c) => ends(c).some((e) => near(e, P(5000, 2100), 100))), 'a chain reaches the spike tip');
+  assert.ok(
+    s.some((c) => ends(c).some((e) => near(e, P(5000, 2100), 100))),
+    'a chain reaches the spike tip',
+  );
   assertSound(s, [sharp]);
-  const blunt: ExPolygon = { outer: [P(0, 0), P(10000, 0), P(10000, 600), P(5402, 600), P(5000, 2100), P(4598, 600), P(0, 600)], holes: [] };
+  const blunt: ExPolygon = {
+    outer: [P(0, 0), P(10000, 0), P(10000, 600), P(5402, 600), P(5000, 2100), P(4598, 600), P(0, 600)],
+    holes: [],
+  };
   const b = medialAxis([blunt]);
   assert.equal(b.length, 1);
-  assert.ok(b[0].points.every((p) => p.y < 700), 'nothing runs up the spike');
+  assert.ok(
+    b[0].points.every((p) => p.y < 700),
+    'nothing runs up the spike',
+  );
   assertSound(b, [blunt]);
 });
 
@@ -349,7 +432,11 @@ test('T junction of two 0.5 mm strips: three chains sharing one junction point',
     assert.ok(Math.abs(c.radii[i] - 312.5) <= 0.02 * 312.5);
   }
   const far = chains.map((c) => ends(c).find((e) => !same(e, shared))!);
-  for (const want of [P(-4750, 0), P(4750, 0), P(0, -4750)]) assert.ok(far.some((e) => near(e, want, 20)), `an end at ${want.x},${want.y}`);
+  for (const want of [P(-4750, 0), P(4750, 0), P(0, -4750)])
+    assert.ok(
+      far.some((e) => near(e, want, 20)),
+      `an end at ${want.x},${want.y}`,
+    );
   assertSound(chains, [tee]);
 });
 
@@ -365,7 +452,11 @@ test('star of five 0.6 mm arms: five chains meeting at the centre, inside, radii
   const area = star(5, 300, 5000);
   const chains = medialAxis([area]);
   assert.equal(chains.length, 5);
-  for (const c of chains) assert.ok(ends(c).some((p) => near(p, P(0, 0), 5)), 'one end at the centre');
+  for (const c of chains)
+    assert.ok(
+      ends(c).some((p) => near(p, P(0, 0), 5)),
+      'one end at the centre',
+    );
   assertSound(chains, [area]);
 });
 
@@ -383,7 +474,11 @@ test('a frame with walls of 0.4 and 0.5 mm round a hole: one closed chain, radiu
   assert.equal(chains.length, 1);
   assert.equal(chains[0].closed, true);
   chains[0].points.forEach((p, i) => {
-    if (p.y > 1000 && p.y < 2000) assert.ok(Math.abs(p.x < 3000 ? p.x - 200 : p.x - 5750) <= 10 && Math.abs(chains[0].radii[i] - (p.x < 3000 ? 200 : 250)) <= 10);
+    if (p.y > 1000 && p.y < 2000)
+      assert.ok(
+        Math.abs(p.x < 3000 ? p.x - 200 : p.x - 5750) <= 10 &&
+          Math.abs(chains[0].radii[i] - (p.x < 3000 ? 200 : 250)) <= 10,
+      );
   });
   assertSound(chains, [area]);
 });
@@ -392,8 +487,15 @@ test('several separate areas at once give the chains of each, in an order indepe
   const areas = [rect(-5000, 0, 5000, 450), squareRing, tee, star(5, 300, 5000)].map((a, k) => shift(a, 30000 * k, 0));
   const all = medialAxis(areas);
   const each = areas.map((a) => medialAxis([a]));
-  assert.equal(all.length, each.reduce((n, c) => n + c.length, 0));
-  for (const c of each.flat()) assert.ok(all.some((d) => isDeepEqual(c, d)), 'each area’s chains are in the whole');
+  assert.equal(
+    all.length,
+    each.reduce((n, c) => n + c.length, 0),
+  );
+  for (const c of each.flat())
+    assert.ok(
+      all.some((d) => isDeepEqual(c, d)),
+      'each area’s chains are in the whole',
+    );
   assert.deepEqual(medialAxis(areas.slice().reverse()), all);
   assertSound(all, areas);
 });
@@ -401,7 +503,10 @@ test('several separate areas at once give the chains of each, in an order indepe
 test('deterministic: the same input twice gives the same output; ring orientation does not matter', () => {
   const areas = [squareRing, circleRing, star(5, 300, 5000), ell];
   assert.deepEqual(medialAxis(areas), medialAxis(areas));
-  const flipped = areas.map((a) => ({ outer: a.outer.slice().reverse(), holes: a.holes.map((h) => h.slice().reverse()) }));
+  const flipped = areas.map((a) => ({
+    outer: a.outer.slice().reverse(),
+    holes: a.holes.map((h) => h.slice().reverse()),
+  }));
   assert.deepEqual(medialAxis(flipped), medialAxis(areas));
 });
 
@@ -415,7 +520,11 @@ test('options: finer sampling and tolerance give the same T junction, with more 
   const fine = medialAxis([tee], { sampleUm: 20, toleranceUm: 2 });
   const coarse = medialAxis([tee]);
   assert.equal(fine.length, 3);
-  for (let k = 0; k < 3; k++) assert.deepEqual(ends(fine[k]).map((p) => near(p, ends(coarse[k])[0], 3) || near(p, ends(coarse[k])[1], 3)), [true, true]);
+  for (let k = 0; k < 3; k++)
+    assert.deepEqual(
+      ends(fine[k]).map((p) => near(p, ends(coarse[k])[0], 3) || near(p, ends(coarse[k])[1], 3)),
+      [true, true],
+    );
   assertSound(fine, [tee]);
 });
 

@@ -267,8 +267,13 @@ function sampleRing(ring: readonly Pt[], set: Settings, corners: number[]): numb
   // grading rate per vertex: spacing / distance from it (Infinity: none)
   const rate = new Float64Array(n);
   for (let i = 0; i < n; i++) {
-    const o = ring[(i + n - 1) % n], p = ring[i], q = ring[(i + 1) % n];
-    const ux = o.x - p.x, uy = o.y - p.y, vx = q.x - p.x, vy = q.y - p.y;
+    const o = ring[(i + n - 1) % n],
+      p = ring[i],
+      q = ring[(i + 1) % n];
+    const ux = o.x - p.x,
+      uy = o.y - p.y,
+      vx = q.x - p.x,
+      vy = q.y - p.y;
     // the interior lies left of the ring: the vertex is convex when the ring turns left there
     const convex = orient(o.x, o.y, p.x, p.y, q.x, q.y) > 0;
     const angle = Math.atan2(Math.abs(ux * vy - uy * vx), ux * vx + uy * vy);
@@ -277,9 +282,11 @@ function sampleRing(ring: readonly Pt[], set: Settings, corners: number[]): numb
   const out: number[] = [];
   const at: number[] = [];
   for (let i = 0; i < n; i++) {
-    const p = ring[i], q = ring[(i + 1) % n];
+    const p = ring[i],
+      q = ring[(i + 1) % n];
     const len = hypot(q.x - p.x, q.y - p.y);
-    const gp = rate[i], gq = rate[(i + 1) % n];
+    const gp = rate[i],
+      gq = rate[(i + 1) % n];
     at.length = 0;
     if (gp === Infinity && gq === Infinity) {
       const k = Math.max(1, Math.ceil(len / set.sampleUm));
@@ -317,7 +324,10 @@ function splitRings(m: Mesh, pieces: Int32Array): number[][] {
     let a = first;
     do {
       const b = next[a];
-      const x0 = xy[2 * a], y0 = xy[2 * a + 1], x1 = xy[2 * b], y1 = xy[2 * b + 1];
+      const x0 = xy[2 * a],
+        y0 = xy[2 * a + 1],
+        x1 = xy[2 * b],
+        y1 = xy[2 * b + 1];
       out.push(x0, y0);
       const k = pieces[a];
       for (let s = 1; s < k; s++) out.push(x0 + ((x1 - x0) * s) / k, y0 + ((y1 - y0) * s) / k);
@@ -337,13 +347,21 @@ function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: 
 
 /** Circumcentre and circumradius of triangle t, into `out`; false for a degenerate triangle. */
 function circumcentre(xy: Float64Array, tri: Int32Array, t: number, out: Float64Array): boolean {
-  const a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-  const ax = xy[2 * a], ay = xy[2 * a + 1];
-  const bx = xy[2 * b] - ax, by = xy[2 * b + 1] - ay, cx = xy[2 * c] - ax, cy = xy[2 * c + 1] - ay;
+  const a = tri[3 * t],
+    b = tri[3 * t + 1],
+    c = tri[3 * t + 2];
+  const ax = xy[2 * a],
+    ay = xy[2 * a + 1];
+  const bx = xy[2 * b] - ax,
+    by = xy[2 * b + 1] - ay,
+    cx = xy[2 * c] - ax,
+    cy = xy[2 * c + 1] - ay;
   const d = 2 * (bx * cy - by * cx);
-  const b2 = bx * bx + by * by, c2 = cx * cx + cy * cy;
+  const b2 = bx * bx + by * by,
+    c2 = cx * cx + cy * cy;
   if (Math.abs(d) <= 1e-12 * (b2 + c2)) return false;
-  const ux = (cy * b2 - by * c2) / d, uy = (bx * c2 - cx * b2) / d;
+  const ux = (cy * b2 - by * c2) / d,
+    uy = (bx * c2 - cx * b2) / d;
   out[0] = ax + ux;
   out[1] = ay + uy;
   out[2] = Math.sqrt(ux * ux + uy * uy);
@@ -413,7 +431,9 @@ function triangulate(rings: readonly number[][], extra: number): Mesh {
   let n = 0;
   for (const r of rings) n += r.length / 2;
   const cap = n + extra;
-  const xy = f64(F.XY, 2 * cap), next = i32(I.NEXT, cap), prev = i32(I.PREV, cap);
+  const xy = f64(F.XY, 2 * cap),
+    next = i32(I.NEXT, cap),
+    prev = i32(I.PREV, cap);
   const ringStart: number[] = [];
   let base = 0;
   for (const r of rings) {
@@ -427,11 +447,24 @@ function triangulate(rings: readonly number[][], extra: number): Mesh {
     base += k;
   }
   const d = new Delaunator(xy.subarray(0, 2 * n));
-  const nt = d.triangles.length / 3, tcap = nt + 2 * extra;
-  const tri = i32(I.TRI, 3 * tcap), half = i32(I.HALF, 3 * tcap);
+  const nt = d.triangles.length / 3,
+    tcap = nt + 2 * extra;
+  const tri = i32(I.TRI, 3 * tcap),
+    half = i32(I.HALF, 3 * tcap);
   tri.set(d.triangles);
   half.set(d.halfedges);
-  const m: Mesh = { s: { xy, next, prev }, n, ringStart, tri, half, nt, ivl: i32(I.IVL, 3 * tcap), flat: u8(U.FLAT, tcap), bnd: null, dirty: null };
+  const m: Mesh = {
+    s: { xy, next, prev },
+    n,
+    ringStart,
+    tri,
+    half,
+    nt,
+    ivl: i32(I.IVL, 3 * tcap),
+    flat: u8(U.FLAT, tcap),
+    bnd: null,
+    dirty: null,
+  };
   intervals(m);
   return m;
 }
@@ -456,7 +489,9 @@ function constrained(rings: readonly number[][], corners: readonly number[][], e
   let n = 0;
   for (const r of rings) n += r.length / 2;
   const cap = n + extra;
-  const xy = f64(F.XY, 2 * cap), next = i32(I.NEXT, cap), prev = i32(I.PREV, cap);
+  const xy = f64(F.XY, 2 * cap),
+    next = i32(I.NEXT, cap),
+    prev = i32(I.PREV, cap);
   const ringStart: number[] = [];
   const vertices: number[][] = [];
   let base = 0;
@@ -472,8 +507,21 @@ function constrained(rings: readonly number[][], corners: readonly number[][], e
     base += k;
   }
   const tcap = n + 2 * rings.length + 2 * extra;
-  const tri = i32(I.TRI, 3 * tcap), half = i32(I.HALF, 3 * tcap), bnd = i32(I.BND, cap);
-  const m: Mesh = { s: { xy, next, prev }, n, ringStart, tri, half, nt: 0, ivl: i32(I.IVL, 3 * tcap), flat: u8(U.FLAT, tcap), bnd, dirty: u8(U.DIRTY, tcap) };
+  const tri = i32(I.TRI, 3 * tcap),
+    half = i32(I.HALF, 3 * tcap),
+    bnd = i32(I.BND, cap);
+  const m: Mesh = {
+    s: { xy, next, prev },
+    n,
+    ringStart,
+    tri,
+    half,
+    nt: 0,
+    ivl: i32(I.IVL, 3 * tcap),
+    flat: u8(U.FLAT, tcap),
+    bnd,
+    dirty: u8(U.DIRTY, tcap),
+  };
   const poly = bridged(xy, vertices);
   if (!poly || !clipEars(m, poly)) return null;
   // to Delaunay: flip until every edge is locally Delaunay (a bound on the flips guards against rounding
@@ -481,24 +529,30 @@ function constrained(rings: readonly number[][], corners: readonly number[][], e
   const stack: number[] = [];
   for (let e = 0; e < 3 * m.nt; e++) if (half[e] > e) stack.push(e);
   for (let flips = 0; stack.length; ) {
-    const a = stack.pop()!, b = half[a];
+    const a = stack.pop()!,
+      b = half[a];
     if (b < 0 || !illegal(m, a, b)) continue;
     if (++flips > MAX_FLIPS) return null;
     flip(m, a, b);
-    const a0 = a - (a % 3), b0 = b - (b % 3);
+    const a0 = a - (a % 3),
+      b0 = b - (b % 3);
     stack.push(a, a0 + ((a + 1) % 3), b, b0 + ((b + 1) % 3));
   }
   // the samples between the vertices, by bisection: (first sample, lo, hi) of each range still to split
   const ranges: number[] = [];
   for (let r = 0; r < rings.length; r++) {
-    const vs = vertices[r], end = ringStart[r] + rings[r].length / 2;
+    const vs = vertices[r],
+      end = ringStart[r] + rings[r].length / 2;
     for (let j = 0; j < vs.length; j++) {
       const len = (j + 1 < vs.length ? vs[j + 1] : end) - vs[j];
       if (len >= 2) ranges.push(vs[j], 0, len);
     }
   }
   for (let q = 0; q < ranges.length; q += 3) {
-    const s0 = ranges[q], lo = ranges[q + 1], hi = ranges[q + 2], mid = (lo + hi) >> 1;
+    const s0 = ranges[q],
+      lo = ranges[q + 1],
+      hi = ranges[q + 2],
+      mid = (lo + hi) >> 1;
     splitEdge(m, bnd[s0 + lo], s0 + mid);
     if (mid - lo >= 2) ranges.push(s0, lo, mid);
     if (hi - mid >= 2) ranges.push(s0, mid, hi);
@@ -523,7 +577,9 @@ interface EarPolygon {
  */
 function bridged(xy: Float64Array, vertices: readonly number[][]): EarPolygon | null {
   const outer = vertices[0];
-  const at = outer.slice(), nxt = outer.map((_, i) => (i + 1) % outer.length), partner = outer.map(() => -1);
+  const at = outer.slice(),
+    nxt = outer.map((_, i) => (i + 1) % outer.length),
+    partner = outer.map(() => -1);
   // holes by their rightmost vertex, right to left
   const holes = vertices.slice(1).map((h) => {
     let best = 0;
@@ -532,12 +588,17 @@ function bridged(xy: Float64Array, vertices: readonly number[][]): EarPolygon | 
   });
   holes.sort((a, b) => b.x - a.x);
   for (const { h, best } of holes) {
-    const mx = xy[2 * h[best]], my = xy[2 * h[best] + 1];
+    const mx = xy[2 * h[best]],
+      my = xy[2 * h[best] + 1];
     // the nearest edge on the right running upwards across y = my (the area lies left of it)
-    let qx = Infinity, target = -1;
+    let qx = Infinity,
+      target = -1;
     for (let a = 0; a < at.length; a++) {
       const b = nxt[a];
-      const ax = xy[2 * at[a]], ay = xy[2 * at[a] + 1], bx = xy[2 * at[b]], by = xy[2 * at[b] + 1];
+      const ax = xy[2 * at[a]],
+        ay = xy[2 * at[a] + 1],
+        bx = xy[2 * at[b]],
+        by = xy[2 * at[b] + 1];
       if (!(ay <= my && my <= by && ay < by)) continue;
       const x = ax + ((my - ay) * (bx - ax)) / (by - ay);
       if (x < mx || x >= qx) continue;
@@ -547,11 +608,13 @@ function bridged(xy: Float64Array, vertices: readonly number[][]): EarPolygon | 
     if (target < 0) return null;
     // a vertex inside the triangle (hole vertex, crossing, target) would block the view: the one seen at the
     // least angle from the ray is visible
-    const tx = xy[2 * at[target]], ty = xy[2 * at[target] + 1];
+    const tx = xy[2 * at[target]],
+      ty = xy[2 * at[target] + 1];
     let tan = Infinity;
     for (let v = 0; v < at.length; v++) {
       if (v === target) continue;
-      const vx = xy[2 * at[v]], vy = xy[2 * at[v] + 1];
+      const vx = xy[2 * at[v]],
+        vy = xy[2 * at[v] + 1];
       if (!(vx > mx) || !inTriangle(mx, my, qx, my, tx, ty, vx, vy)) continue;
       const t = Math.abs(vy - my) / (vx - mx);
       if (t < tan && locallyInside(xy, at, nxt, v, mx, my)) {
@@ -566,7 +629,8 @@ function bridged(xy: Float64Array, vertices: readonly number[][]): EarPolygon | 
       nxt.push(first + i + 1);
       partner.push(-1);
     }
-    const m2 = at.length, t2 = m2 + 1;
+    const m2 = at.length,
+      t2 = m2 + 1;
     at.push(h[best], at[target]);
     nxt.push(t2, nxt[target]);
     // the target's own edge on goes from its second position
@@ -579,17 +643,41 @@ function bridged(xy: Float64Array, vertices: readonly number[][]): EarPolygon | 
 }
 
 /** Whether p lies in triangle abc or on its boundary (either orientation). */
-function inTriangle(ax: number, ay: number, bx: number, by: number, cx: number, cy: number, px: number, py: number): boolean {
-  const d1 = orient(ax, ay, bx, by, px, py), d2 = orient(bx, by, cx, cy, px, py), d3 = orient(cx, cy, ax, ay, px, py);
+function inTriangle(
+  ax: number,
+  ay: number,
+  bx: number,
+  by: number,
+  cx: number,
+  cy: number,
+  px: number,
+  py: number,
+): boolean {
+  const d1 = orient(ax, ay, bx, by, px, py),
+    d2 = orient(bx, by, cx, cy, px, py),
+    d3 = orient(cx, cy, ax, ay, px, py);
   return (d1 >= 0 && d2 >= 0 && d3 >= 0) || (d1 <= 0 && d2 <= 0 && d3 <= 0);
 }
 
 /** Whether the direction from position v to p points into the polygon's inside at v. */
-function locallyInside(xy: Float64Array, at: readonly number[], nxt: readonly number[], v: number, px: number, py: number): boolean {
+function locallyInside(
+  xy: Float64Array,
+  at: readonly number[],
+  nxt: readonly number[],
+  v: number,
+  px: number,
+  py: number,
+): boolean {
   let u = v;
   while (nxt[u] !== v) u = nxt[u];
-  const ux = xy[2 * at[u]], uy = xy[2 * at[u] + 1], vx = xy[2 * at[v]], vy = xy[2 * at[v] + 1], wx = xy[2 * at[nxt[v]]], wy = xy[2 * at[nxt[v]] + 1];
-  const left1 = orient(ux, uy, vx, vy, px, py) > 0, left2 = orient(vx, vy, wx, wy, px, py) > 0;
+  const ux = xy[2 * at[u]],
+    uy = xy[2 * at[u] + 1],
+    vx = xy[2 * at[v]],
+    vy = xy[2 * at[v] + 1],
+    wx = xy[2 * at[nxt[v]]],
+    wy = xy[2 * at[nxt[v]] + 1];
+  const left1 = orient(ux, uy, vx, vy, px, py) > 0,
+    left2 = orient(vx, vy, wx, wy, px, py) > 0;
   return orient(ux, uy, vx, vy, wx, wy) > 0 ? left1 && left2 : left1 || left2;
 }
 
@@ -607,7 +695,10 @@ function clipEars(m: Mesh, poly: EarPolygon): boolean {
   // the remaining polygon as a linked list, and for each position the half-edge beyond its edge to the
   // next: -1 while that edge is the boundary's, -2 while it is a bridge side (pend: its half-edge once a
   // triangle has it)
-  const vn = i32(I.VN, nv), vp = i32(I.VP, nv), side = i32(I.SIDE, nv), pend = i32(I.PEND, nv);
+  const vn = i32(I.VN, nv),
+    vp = i32(I.VP, nv),
+    side = i32(I.SIDE, nv),
+    pend = i32(I.PEND, nv);
   for (let i = 0; i < nv; i++) {
     vn[i] = poly.nxt[i];
     vp[poly.nxt[i]] = i;
@@ -630,9 +721,11 @@ function clipEars(m: Mesh, poly: EarPolygon): boolean {
       }
     }
   };
-  let left = nv, i = 0;
+  let left = nv,
+    i = 0;
   for (let miss = 0; left > 3; ) {
-    const u = vp[i], w = vn[i];
+    const u = vp[i],
+      w = vn[i];
     if (isEar(xy, at, vn, u, i, w)) {
       // (u, i, w) is counter-clockwise: stored as (u, w, i)
       const t = 3 * m.nt++;
@@ -655,7 +748,8 @@ function clipEars(m: Mesh, poly: EarPolygon): boolean {
     }
   }
   // the last triangle (i, j, k) counter-clockwise: stored as (i, k, j)
-  const j = vn[i], k = vn[j];
+  const j = vn[i],
+    k = vn[j];
   const t = 3 * m.nt++;
   tri[t] = at[i];
   tri[t + 1] = at[k];
@@ -671,14 +765,27 @@ function clipEars(m: Mesh, poly: EarPolygon): boolean {
  * it (other than the positions of its own three samples).
  */
 function isEar(xy: Float64Array, at: readonly number[], vn: Int32Array, u: number, i: number, w: number): boolean {
-  const cu = at[u], ci = at[i], cw = at[w];
-  const ux = xy[2 * cu], uy = xy[2 * cu + 1], ix = xy[2 * ci], iy = xy[2 * ci + 1], wx = xy[2 * cw], wy = xy[2 * cw + 1];
+  const cu = at[u],
+    ci = at[i],
+    cw = at[w];
+  const ux = xy[2 * cu],
+    uy = xy[2 * cu + 1],
+    ix = xy[2 * ci],
+    iy = xy[2 * ci + 1],
+    wx = xy[2 * cw],
+    wy = xy[2 * cw + 1];
   if (!(orient(ux, uy, ix, iy, wx, wy) > 0)) return false;
   for (let v = vn[w]; v !== u; v = vn[v]) {
     const c = at[v];
     if (c === cu || c === ci || c === cw) continue;
-    const px = xy[2 * c], py = xy[2 * c + 1];
-    if (orient(ux, uy, ix, iy, px, py) >= 0 && orient(ix, iy, wx, wy, px, py) >= 0 && orient(wx, wy, ux, uy, px, py) >= 0) return false;
+    const px = xy[2 * c],
+      py = xy[2 * c + 1];
+    if (
+      orient(ux, uy, ix, iy, px, py) >= 0 &&
+      orient(ix, iy, wx, wy, px, py) >= 0 &&
+      orient(wx, wy, ux, uy, px, py) >= 0
+    )
+      return false;
   }
   return true;
 }
@@ -688,7 +795,8 @@ function intervals(m: Mesh): void {
   const { next } = m.s;
   const { tri, ivl } = m;
   for (let e = 0; e < 3 * m.nt; e++) {
-    const u = tri[e], v = tri[nextHalf(e)];
+    const u = tri[e],
+      v = tri[nextHalf(e)];
     ivl[e] = next[u] === v ? u : next[v] === u ? v : -1;
   }
   flats(m);
@@ -701,9 +809,21 @@ function flats(m: Mesh): void {
 
 /** Whether triangle t is a sliver: its area below FLAT of its longest edge squared. */
 function isFlat(xy: Float64Array, tri: Int32Array, t: number): boolean {
-  const a = tri[3 * t], b = tri[3 * t + 1], c = tri[3 * t + 2];
-  const ax = xy[2 * a], ay = xy[2 * a + 1], bx = xy[2 * b], by = xy[2 * b + 1], cx = xy[2 * c], cy = xy[2 * c + 1];
-  const abx = bx - ax, aby = by - ay, bcx = cx - bx, bcy = cy - by, cax = ax - cx, cay = ay - cy;
+  const a = tri[3 * t],
+    b = tri[3 * t + 1],
+    c = tri[3 * t + 2];
+  const ax = xy[2 * a],
+    ay = xy[2 * a + 1],
+    bx = xy[2 * b],
+    by = xy[2 * b + 1],
+    cx = xy[2 * c],
+    cy = xy[2 * c + 1];
+  const abx = bx - ax,
+    aby = by - ay,
+    bcx = cx - bx,
+    bcy = cy - by,
+    cax = ax - cx,
+    cay = ay - cy;
   const l2 = Math.max(abx * abx + aby * aby, bcx * bcx + bcy * bcy, cax * cax + cay * cay);
   return Math.abs(orient(ax, ay, bx, by, cx, cy)) <= FLAT * l2;
 }
@@ -712,7 +832,8 @@ function isFlat(xy: Float64Array, tri: Int32Array, t: number): boolean {
 function makeRoom(m: Mesh, more: number): void {
   const cap = m.s.next.length;
   if (m.n + more <= cap && m.nt + 2 * more <= m.flat.length) return;
-  const n2 = Math.max(m.n + more, 2 * cap), t2 = m.nt + 2 * (n2 - m.n);
+  const n2 = Math.max(m.n + more, 2 * cap),
+    t2 = m.nt + 2 * (n2 - m.n);
   const moved = <T extends Float64Array | Int32Array | Uint8Array>(old: T, fresh: T, used: number): T => {
     fresh.set(old.subarray(0, used));
     return fresh;
@@ -756,8 +877,20 @@ const MAX_FLIPS = 100000;
 function illegal(m: Mesh, a: number, b: number): boolean {
   const { tri } = m;
   const xy = m.s.xy;
-  const p0 = tri[prevHalf(a)], pr = tri[a], pl = tri[nextHalf(a)], p1 = tri[prevHalf(b)];
-  return inCircle(xy[2 * p0], xy[2 * p0 + 1], xy[2 * pr], xy[2 * pr + 1], xy[2 * pl], xy[2 * pl + 1], xy[2 * p1], xy[2 * p1 + 1]);
+  const p0 = tri[prevHalf(a)],
+    pr = tri[a],
+    pl = tri[nextHalf(a)],
+    p1 = tri[prevHalf(b)];
+  return inCircle(
+    xy[2 * p0],
+    xy[2 * p0 + 1],
+    xy[2 * pr],
+    xy[2 * pr + 1],
+    xy[2 * pl],
+    xy[2 * pl + 1],
+    xy[2 * p1],
+    xy[2 * p1 + 1],
+  );
 }
 
 /**
@@ -767,12 +900,16 @@ function illegal(m: Mesh, a: number, b: number): boolean {
  */
 function flip(m: Mesh, a: number, b: number): void {
   const { tri, half, bnd } = m;
-  const a0 = a - (a % 3), b0 = b - (b % 3);
-  const ar = a0 + ((a + 2) % 3), bl = b0 + ((b + 2) % 3);
-  const p0 = tri[ar], p1 = tri[bl];
+  const a0 = a - (a % 3),
+    b0 = b - (b % 3);
+  const ar = a0 + ((a + 2) % 3),
+    bl = b0 + ((b + 2) % 3);
+  const p0 = tri[ar],
+    p1 = tri[bl];
   tri[a] = p1;
   tri[b] = p0;
-  const hbl = half[bl], har = half[ar];
+  const hbl = half[bl],
+    har = half[ar];
   link(half, a, hbl);
   link(half, b, har);
   link(half, ar, bl);
@@ -791,7 +928,8 @@ function flip(m: Mesh, a: number, b: number): void {
  */
 function legalize(m: Mesh, a: number): void {
   const { half } = m;
-  let stack = flipStack, top = 0;
+  let stack = flipStack,
+    top = 0;
   for (let flips = 0; flips < MAX_FLIPS; ) {
     const b = half[a];
     if (b >= 0 && illegal(m, a, b)) {
@@ -814,9 +952,25 @@ function legalize(m: Mesh, a: number): void {
 let flipStack = new Int32Array(256);
 
 /** Whether p lies inside the circumcircle of a, b, c (counter-clockwise), as delaunator tests it. */
-function inCircle(ax: number, ay: number, bx: number, by: number, cx: number, cy: number, px: number, py: number): boolean {
-  const dx = ax - px, dy = ay - py, ex = bx - px, ey = by - py, fx = cx - px, fy = cy - py;
-  const ap = dx * dx + dy * dy, bp = ex * ex + ey * ey, cp = fx * fx + fy * fy;
+function inCircle(
+  ax: number,
+  ay: number,
+  bx: number,
+  by: number,
+  cx: number,
+  cy: number,
+  px: number,
+  py: number,
+): boolean {
+  const dx = ax - px,
+    dy = ay - py,
+    ex = bx - px,
+    ey = by - py,
+    fx = cx - px,
+    fy = cy - py;
+  const ap = dx * dx + dy * dy,
+    bp = ex * ex + ey * ey,
+    cp = fx * fx + fy * fy;
   return dx * (ey * cp - bp * fy) - dy * (ex * cp - bp * fx) + ap * (ex * fy - ey * fx) < 0;
 }
 
@@ -827,8 +981,11 @@ function inCircle(ax: number, ay: number, bx: number, by: number, cx: number, cy
  */
 function splitEdge(m: Mesh, e: number, p: number): void {
   const { tri, half } = m;
-  const en = nextHalf(e), ep = prevHalf(e), e1 = half[e];
-  const b = tri[en], w = tri[ep];
+  const en = nextHalf(e),
+    ep = prevHalf(e),
+    e1 = half[e];
+  const b = tri[en],
+    w = tri[ep];
   // (a, b, w) becomes (a, p, w) and (p, b, w)
   const f0 = 3 * m.nt++;
   tri[f0] = p;
@@ -843,7 +1000,8 @@ function splitEdge(m: Mesh, e: number, p: number): void {
   if (m.dirty) m.dirty[(e / 3) | 0] = m.dirty[f0 / 3] = 1;
   if (e1 >= 0) {
     // (b, a, z) becomes (p, a, z) and (b, p, z)
-    const e1p = prevHalf(e1), z = tri[e1p];
+    const e1p = prevHalf(e1),
+      z = tri[e1p];
     const g0 = 3 * m.nt++;
     tri[g0] = b;
     tri[g0 + 1] = p;
@@ -869,7 +1027,8 @@ function splitEdge(m: Mesh, e: number, p: number): void {
 /** Whether the triangle of half-edge e, which lies on the interval starting at sample a, is on its inner side. */
 function innerSide(m: Mesh, e: number, a: number): boolean {
   const { xy } = m.s;
-  const b = m.s.next[a], w = m.tri[prevHalf(e)];
+  const b = m.s.next[a],
+    w = m.tri[prevHalf(e)];
   return orient(xy[2 * a], xy[2 * a + 1], xy[2 * b], xy[2 * b + 1], xy[2 * w], xy[2 * w + 1]) > 0;
 }
 
@@ -893,7 +1052,8 @@ function refinement(m: Mesh, set: Settings, all: boolean): Refinement | null {
   const n = m.n;
   const pieces = i32(I.PIECES, n).fill(1);
   const cc = new Float64Array(3);
-  let any = false, missing = false;
+  let any = false,
+    missing = false;
   if (m.bnd && m.dirty) {
     // every interval has its triangle; after the first look, only those of changed triangles can ask for
     // more samples
@@ -940,8 +1100,14 @@ function split(m: Mesh, a: number, e: number, set: Settings, cc: Float64Array): 
   const t = (e / 3) | 0;
   if (m.bnd ? isFlat(m.s.xy, m.tri, t) : m.flat[t]) return 1;
   const { xy, next, prev } = m.s;
-  const b = next[a], w = m.tri[prevHalf(e)];
-  const ax = xy[2 * a], ay = xy[2 * a + 1], bx = xy[2 * b], by = xy[2 * b + 1], wx = xy[2 * w], wy = xy[2 * w + 1];
+  const b = next[a],
+    w = m.tri[prevHalf(e)];
+  const ax = xy[2 * a],
+    ay = xy[2 * a + 1],
+    bx = xy[2 * b],
+    by = xy[2 * b + 1],
+    wx = xy[2 * w],
+    wy = xy[2 * w + 1];
   const len = hypot(bx - ax, by - ay);
   if (len < 2 * set.minSpacingUm) return 1;
   let k = 1;
@@ -971,9 +1137,15 @@ function refine(m: Mesh, r: Refinement): Mesh {
     const k = pieces[a];
     if (k < 2) continue;
     const { xy, next, prev } = m.s;
-    const e = m.bnd ? m.bnd[a] : where[a], b = next[a], u = m.tri[e], v = m.tri[nextHalf(e)];
+    const e = m.bnd ? m.bnd[a] : where[a],
+      b = next[a],
+      u = m.tri[e],
+      v = m.tri[nextHalf(e)];
     if (!((u === a && v === b) || (u === b && v === a))) continue;
-    const x0 = xy[2 * a], y0 = xy[2 * a + 1], x1 = xy[2 * b], y1 = xy[2 * b + 1];
+    const x0 = xy[2 * a],
+      y0 = xy[2 * a + 1],
+      x1 = xy[2 * b],
+      y1 = xy[2 * b + 1];
     // the new samples go in from e's far end (v) back towards its start (u): e keeps running from u to the
     // newest sample, the part still to split
     const fromB = v === b;
@@ -1013,7 +1185,8 @@ function classify(m: Mesh, rings: readonly Pt[][]): Uint8Array {
   const label = u8(U.LABEL, m.nt);
   if (m.bnd) return label.fill(1);
   const queue = i32(I.QUEUE, m.nt);
-  let qn = 0, clash = false;
+  let qn = 0,
+    clash = false;
   const mark = (t: number, l: number): void => {
     if (label[t] === 0) {
       label[t] = l;
@@ -1021,20 +1194,24 @@ function classify(m: Mesh, rings: readonly Pt[][]): Uint8Array {
     } else if (label[t] !== l) clash = true;
   };
   for (let e = 0; e < 3 * m.nt; e++) {
-    const a = m.ivl[e], t = Math.floor(e / 3);
+    const a = m.ivl[e],
+      t = Math.floor(e / 3);
     if (a >= 0) mark(t, innerSide(m, e, a) ? 1 : 2);
     else if (m.half[e] < 0) mark(t, 2);
   }
   for (let q = 0; q < qn; q++) {
     const t = queue[q];
     for (let k = 0; k < 3; k++) {
-      const e = 3 * t + k, o = m.half[e];
+      const e = 3 * t + k,
+        o = m.half[e];
       if (o >= 0 && m.ivl[e] < 0) mark(Math.floor(o / 3), label[t]);
     }
   }
   for (let t = 0; t < m.nt; t++) {
     if (label[t] !== 0 && !clash) continue;
-    const a = m.tri[3 * t], b = m.tri[3 * t + 1], c = m.tri[3 * t + 2];
+    const a = m.tri[3 * t],
+      b = m.tri[3 * t + 1],
+      c = m.tri[3 * t + 2];
     const p = { x: (xy[2 * a] + xy[2 * b] + xy[2 * c]) / 3, y: (xy[2 * a + 1] + xy[2 * b + 1] + xy[2 * c + 1]) / 3 };
     label[t] = inArea(rings, p) ? 1 : 2;
   }
@@ -1052,9 +1229,15 @@ function reaches(m: Mesh, label: Uint8Array, rings: readonly Pt[][], t0: number,
     let crossed = -1;
     for (let k = 0; k < 3; k++) {
       const e = 3 * t + k;
-      const u = m.tri[e], v = m.tri[nextHalf(e)], w = m.tri[prevHalf(e)];
-      const ux = xy[2 * u], uy = xy[2 * u + 1], vx = xy[2 * v], vy = xy[2 * v + 1];
-      const sp = orient(ux, uy, vx, vy, px, py), sw = orient(ux, uy, vx, vy, xy[2 * w], xy[2 * w + 1]);
+      const u = m.tri[e],
+        v = m.tri[nextHalf(e)],
+        w = m.tri[prevHalf(e)];
+      const ux = xy[2 * u],
+        uy = xy[2 * u + 1],
+        vx = xy[2 * v],
+        vy = xy[2 * v + 1];
+      const sp = orient(ux, uy, vx, vy, px, py),
+        sw = orient(ux, uy, vx, vy, xy[2 * w], xy[2 * w + 1]);
       if ((sp < 0 && sw > 0) || (sp > 0 && sw < 0)) {
         crossed = e;
         break;
@@ -1084,9 +1267,16 @@ function boundaryDistance(m: Mesh, t: number, px: number, py: number): number {
   const { xy, next, prev } = m.s;
   let d2 = Infinity;
   for (let k = 0; k < 3; k++) {
-    const a = m.tri[3 * t + k], b = next[a], c = prev[a];
-    const ax = xy[2 * a], ay = xy[2 * a + 1];
-    d2 = Math.min(d2, segmentDistance2(px, py, ax, ay, xy[2 * b], xy[2 * b + 1]), segmentDistance2(px, py, xy[2 * c], xy[2 * c + 1], ax, ay));
+    const a = m.tri[3 * t + k],
+      b = next[a],
+      c = prev[a];
+    const ax = xy[2 * a],
+      ay = xy[2 * a + 1];
+    d2 = Math.min(
+      d2,
+      segmentDistance2(px, py, ax, ay, xy[2 * b], xy[2 * b + 1]),
+      segmentDistance2(px, py, xy[2 * c], xy[2 * c + 1], ax, ay),
+    );
   }
   return Math.sqrt(d2);
 }
@@ -1104,20 +1294,35 @@ const centre = new Float64Array(2);
 function centred(m: Mesh, t: number, px: number, py: number): Float64Array | null {
   const { xy, next, prev } = m.s;
   for (let k = 0; k < 3; k++) {
-    const u = m.tri[3 * t + k], v = m.tri[3 * t + ((k + 1) % 3)], w = m.tri[3 * t + ((k + 2) % 3)];
-    let a = u, b = v;
+    const u = m.tri[3 * t + k],
+      v = m.tri[3 * t + ((k + 1) % 3)],
+      w = m.tri[3 * t + ((k + 2) % 3)];
+    let a = u,
+      b = v;
     if (next[v] === u) {
       a = v;
       b = u;
     } else if (next[u] !== v) continue;
     if (w === next[b] || w === prev[a]) return null;
     // the interval a→b has the area on its left
-    const ax = xy[2 * a], ay = xy[2 * a + 1], dx = xy[2 * b] - ax, dy = xy[2 * b + 1] - ay;
+    const ax = xy[2 * a],
+      ay = xy[2 * a + 1],
+      dx = xy[2 * b] - ax,
+      dy = xy[2 * b + 1] - ay;
     const len = Math.sqrt(dx * dx + dy * dy);
-    const nx = -dy / len, ny = dx / len;
+    const nx = -dy / len,
+      ny = dx / len;
     const db = (px - ax) * nx + (py - ay) * ny;
-    const wx = xy[2 * w], wy = xy[2 * w + 1], pw = prev[w], nw = next[w];
-    const dw = Math.sqrt(Math.min(segmentDistance2(px, py, xy[2 * pw], xy[2 * pw + 1], wx, wy), segmentDistance2(px, py, wx, wy, xy[2 * nw], xy[2 * nw + 1])));
+    const wx = xy[2 * w],
+      wy = xy[2 * w + 1],
+      pw = prev[w],
+      nw = next[w];
+    const dw = Math.sqrt(
+      Math.min(
+        segmentDistance2(px, py, xy[2 * pw], xy[2 * pw + 1], wx, wy),
+        segmentDistance2(px, py, wx, wy, xy[2 * nw], xy[2 * nw + 1]),
+      ),
+    );
     const shift = (dw - db) / 2;
     if (!(db > 0) || Math.abs(shift) > CENTRING_LIMIT * db) return null;
     centre[0] = px + shift * nx;
@@ -1139,7 +1344,8 @@ function areaAxis(area: ExPolygon, set: Settings): MedialChain[] {
   // adaptive sampling: room for a quarter more samples from the refinement before the arrays grow
   const corners: number[][] = rings.map(() => []);
   const coords = rings.map((r, k) => sampleRing(r, set, corners[k]));
-  let n = 0, positions = -2;
+  let n = 0,
+    positions = -2;
   for (const c of coords) n += c.length / 2;
   for (const r of rings) positions += r.length + 2;
   const extra = (n >> 2) + 16;
@@ -1164,7 +1370,11 @@ function areaAxis(area: ExPolygon, set: Settings): MedialChain[] {
  * links joined into paths through nodes of degree two (as relink does); `points` are the nodes left without
  * any link.
  */
-function axisGraph(mesh: Mesh, label: Uint8Array, rings: readonly Pt[][]): { nodes: Nodes; paths: number[][]; points: Set<number> } {
+function axisGraph(
+  mesh: Mesh,
+  label: Uint8Array,
+  rings: readonly Pt[][],
+): { nodes: Nodes; paths: number[][]; points: Set<number> } {
   const { xy } = mesh.s;
   const nt = mesh.nt;
   const nodes: Nodes = { x: f64(F.NX, nt), y: f64(F.NY, nt), r: f64(F.NR, nt) };
@@ -1183,7 +1393,9 @@ function axisGraph(mesh: Mesh, label: Uint8Array, rings: readonly Pt[][]): { nod
         py = q[1];
       }
     } else {
-      const a = mesh.tri[3 * t], b = mesh.tri[3 * t + 1], c = mesh.tri[3 * t + 2];
+      const a = mesh.tri[3 * t],
+        b = mesh.tri[3 * t + 1],
+        c = mesh.tri[3 * t + 2];
       px = (xy[2 * a] + xy[2 * b] + xy[2 * c]) / 3;
       py = (xy[2 * a + 1] + xy[2 * b + 1] + xy[2 * c + 1]) / 3;
     }
@@ -1203,17 +1415,20 @@ function axisGraph(mesh: Mesh, label: Uint8Array, rings: readonly Pt[][]): { nod
   for (let t = 0; t < nt; t++) {
     if (label[t] !== 1) continue;
     for (let k = 0; k < 3; k++) {
-      const e = 3 * t + k, o = mesh.half[e];
+      const e = 3 * t + k,
+        o = mesh.half[e];
       if (o < 0) continue;
       const u = (o / 3) | 0;
       if (u <= t || label[u] !== 1 || (!mesh.bnd && mesh.ivl[e] >= 0)) continue;
       ends[2 * ne] = t;
       ends[2 * ne + 1] = u;
       ne++;
-      const dx = nodes.x[t] - nodes.x[u], dy = nodes.y[t] - nodes.y[u];
+      const dx = nodes.x[t] - nodes.x[u],
+        dy = nodes.y[t] - nodes.y[u];
       if (dx * dx + dy * dy <= MERGE_UM * MERGE_UM) {
         merged = true;
-        const ra = find(t), rb = find(u);
+        const ra = find(t),
+          rb = find(u);
         if (ra < rb) root[rb] = ra;
         else if (rb < ra) root[ra] = rb;
       }
@@ -1222,7 +1437,8 @@ function axisGraph(mesh: Mesh, label: Uint8Array, rings: readonly Pt[][]): { nod
   if (merged) {
     let m = 0;
     for (let i = 0; i < ne; i++) {
-      let a = find(ends[2 * i]), b = find(ends[2 * i + 1]);
+      let a = find(ends[2 * i]),
+        b = find(ends[2 * i + 1]);
       if (a === b) continue;
       if (a > b) [a, b] = [b, a];
       ends[2 * m] = a;
@@ -1431,7 +1647,8 @@ function prune(paths: number[][], nodes: Nodes, n: number, set: Settings, points
       return v;
     };
     paths.forEach((p, i) => {
-      const a = keeper(p[0]), b = keeper(p[p.length - 1]);
+      const a = keeper(p[0]),
+        b = keeper(p[p.length - 1]);
       if (p[0] === p[p.length - 1] || deg[p[0]] < 3 || deg[p[p.length - 1]] < 3 || lengths[i] > set.toleranceUm) return;
       drop[i] = 1;
       contracted = true;
@@ -1457,7 +1674,8 @@ function prune(paths: number[][], nodes: Nodes, n: number, set: Settings, points
     let removed = false;
     const shortest = new Map<number, number>();
     paths.forEach((p, i) => {
-      const a = p[0], b = p[p.length - 1];
+      const a = p[0],
+        b = p[p.length - 1];
       if (a === b) return;
       let leaf: number, junction: number;
       if (deg[a] === 1 && deg[b] >= 3) [leaf, junction] = [a, b];
@@ -1487,9 +1705,11 @@ function prune(paths: number[][], nodes: Nodes, n: number, set: Settings, points
 /** Growth of the radius per unit length over the first half of path p (of length len), from its start. */
 function leafSlope(p: readonly number[], len: number, nodes: Nodes): number {
   if (!(len > 0)) return 0;
-  const half = len / 2, r0 = nodes.r[p[0]];
+  const half = len / 2,
+    r0 = nodes.r[p[0]];
   for (let k = 1, d = 0; k < p.length; k++) {
-    const u = p[k - 1], v = p[k];
+    const u = p[k - 1],
+      v = p[k];
     const seg = hypot(nodes.x[v] - nodes.x[u], nodes.y[v] - nodes.y[u]);
     if (d + seg >= half) {
       const f = seg > 0 ? (half - d) / seg : 1;
@@ -1509,7 +1729,8 @@ function tipCut(p: readonly number[], nodes: Nodes, set: Settings): number {
   const n = p.length;
   const dist = f64(F.DIST, n);
   dist[0] = 0;
-  for (let k = 1; k < n; k++) dist[k] = dist[k - 1] + hypot(nodes.x[p[k]] - nodes.x[p[k - 1]], nodes.y[p[k]] - nodes.y[p[k - 1]]);
+  for (let k = 1; k < n; k++)
+    dist[k] = dist[k - 1] + hypot(nodes.x[p[k]] - nodes.x[p[k - 1]], nodes.y[p[k]] - nodes.y[p[k - 1]]);
   let i = 0;
   while (i < n - 1) {
     const window = Math.max(nodes.r[p[i]], TIP_WINDOW * set.minSpacingUm);
@@ -1527,7 +1748,8 @@ function chainsOut(paths: number[][], points: Set<number>, nodes: Nodes, n: numb
   const deg = degrees(paths, n);
   const out: MedialChain[] = [];
   for (let p of paths) {
-    const a = p[0], b = p[p.length - 1];
+    const a = p[0],
+      b = p[p.length - 1];
     const closed = a === b;
     if (closed) {
       if (p.length <= 2) {
@@ -1550,7 +1772,12 @@ function chainsOut(paths: number[][], points: Set<number>, nodes: Nodes, n: numb
     const c = finish(p, closed, closed && deg[p[0]] > 2 ? p[0] : -1, nodes, set.toleranceUm);
     if (c) out.push(c);
   }
-  for (const v of points) out.push({ points: [{ x: round(nodes.x[v]), y: round(nodes.y[v]) }], radii: Float64Array.of(nodes.r[v]), closed: false });
+  for (const v of points)
+    out.push({
+      points: [{ x: round(nodes.x[v]), y: round(nodes.y[v]) }],
+      radii: Float64Array.of(nodes.r[v]),
+      closed: false,
+    });
   return out;
 }
 
@@ -1570,9 +1797,11 @@ function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes
   const order = i32(I.ORDER, n);
   for (let k = 0; k < n; k++) order[k] = p[k];
   if (closed) {
-    let s = 0, area = 0;
+    let s = 0,
+      area = 0;
     for (let k = 0; k < n; k++) {
-      const a = p[k], b = p[(k + 1) % n];
+      const a = p[k],
+        b = p[(k + 1) % n];
       if (before(nodes.x[a], nodes.y[a], nodes.x[p[s]], nodes.y[p[s]])) s = k;
       area += nodes.x[a] * nodes.y[b] - nodes.x[b] * nodes.y[a];
     }
@@ -1580,7 +1809,9 @@ function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes
   } else if (before(nodes.x[p[n - 1]], nodes.y[p[n - 1]], nodes.x[p[0]], nodes.y[p[0]])) order.reverse();
   // a cycle is simplified as a path from its start round to its start again
   const m = closed ? n + 1 : n;
-  const xs = f64(F.XS, m), ys = f64(F.YS, m), rs = f64(F.RS, m);
+  const xs = f64(F.XS, m),
+    ys = f64(F.YS, m),
+    rs = f64(F.RS, m);
   for (let k = 0; k < m; k++) {
     const v = order[k % n];
     xs[k] = nodes.x[v];
@@ -1591,7 +1822,8 @@ function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes
   const keep = u8(U.KEEP, m);
   keep[0] = keep[m - 1] = 1;
   if (closed) {
-    let far = 0, fd = -1;
+    let far = 0,
+      fd = -1;
     for (let k = 1; k < n; k++) {
       const d = hypot(xs[k] - xs[0], ys[k] - ys[0]);
       if (d > fd) [far, fd] = [k, d];
@@ -1604,7 +1836,8 @@ function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes
     simplify(xs, ys, rs, a, b, tol, keep);
     a = b;
   }
-  const points: Pt[] = [], radii: number[] = [];
+  const points: Pt[] = [],
+    radii: number[] = [];
   for (let k = 0; k < n; k++) {
     if (!keep[k]) continue;
     const q = { x: round(xs[k]), y: round(ys[k]) };
@@ -1613,7 +1846,12 @@ function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes
     points.push(q);
     radii.push(rs[k]);
   }
-  if (closed && points.length > 1 && points[0].x === points[points.length - 1].x && points[0].y === points[points.length - 1].y) {
+  if (
+    closed &&
+    points.length > 1 &&
+    points[0].x === points[points.length - 1].x &&
+    points[0].y === points[points.length - 1].y
+  ) {
     points.pop();
     radii.pop();
   }
@@ -1625,17 +1863,32 @@ function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes
  * Douglas–Peucker between kept indices i0 < i1: a node stays when it is farther than `tol` from the chord
  * or its radius differs from the chord's interpolated radius by more than `tol`.
  */
-function simplify(xs: Float64Array, ys: Float64Array, rs: Float64Array, i0: number, i1: number, tol: number, keep: Uint8Array): void {
+function simplify(
+  xs: Float64Array,
+  ys: Float64Array,
+  rs: Float64Array,
+  i0: number,
+  i1: number,
+  tol: number,
+  keep: Uint8Array,
+): void {
   const stack = [i0, i1];
   while (stack.length) {
-    const b = stack.pop()!, a = stack.pop()!;
+    const b = stack.pop()!,
+      a = stack.pop()!;
     if (b - a < 2) continue;
-    const dx = xs[b] - xs[a], dy = ys[b] - ys[a], l2 = dx * dx + dy * dy;
-    let worst = -1, err = tol;
+    const dx = xs[b] - xs[a],
+      dy = ys[b] - ys[a],
+      l2 = dx * dx + dy * dy;
+    let worst = -1,
+      err = tol;
     for (let k = a + 1; k < b; k++) {
       let t = l2 > 0 ? ((xs[k] - xs[a]) * dx + (ys[k] - ys[a]) * dy) / l2 : 0;
       t = t < 0 ? 0 : t > 1 ? 1 : t;
-      const e = Math.max(hypot(xs[a] + t * dx - xs[k], ys[a] + t * dy - ys[k]), Math.abs(rs[a] + t * (rs[b] - rs[a]) - rs[k]));
+      const e = Math.max(
+        hypot(xs[a] + t * dx - xs[k], ys[a] + t * dy - ys[k]),
+        Math.abs(rs[a] + t * (rs[b] - rs[a]) - rs[k]),
+      );
       if (e > err) [worst, err] = [k, e];
     }
     if (worst < 0) continue;
@@ -1648,7 +1901,8 @@ function simplify(xs: Float64Array, ys: Float64Array, rs: Float64Array, i0: numb
 function compareChains(a: MedialChain, b: MedialChain): number {
   const n = Math.min(a.points.length, b.points.length);
   for (let k = 0; k < n; k++) {
-    const p = a.points[k], q = b.points[k];
+    const p = a.points[k],
+      q = b.points[k];
     if (p.x !== q.x) return p.x - q.x;
     if (p.y !== q.y) return p.y - q.y;
   }

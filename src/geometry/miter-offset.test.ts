@@ -5,7 +5,10 @@ import { area, offset, pointInArea } from './clip.js';
 import type { ExPolygon, Polygon, Pt } from './types.js';
 
 const regular = (n: number, r: number): Polygon =>
-  Array.from({ length: n }, (_, i) => ({ x: Math.round(r * Math.cos((2 * Math.PI * i) / n)), y: Math.round(r * Math.sin((2 * Math.PI * i) / n)) }));
+  Array.from({ length: n }, (_, i) => ({
+    x: Math.round(r * Math.cos((2 * Math.PI * i) / n)),
+    y: Math.round(r * Math.sin((2 * Math.PI * i) / n)),
+  }));
 
 /** A star with `n` spikes: radii alternate between r and r/2 (concave corners on every other vertex). */
 const star = (n: number, r: number): Polygon =>
@@ -18,8 +21,10 @@ const star = (n: number, r: number): Polygon =>
 function distToRing(p: Pt, ring: Polygon): number {
   let best = Infinity;
   for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
-    const a = ring[j], b = ring[i];
-    const dx = b.x - a.x, dy = b.y - a.y;
+    const a = ring[j],
+      b = ring[i];
+    const dx = b.x - a.x,
+      dy = b.y - a.y;
     const t = Math.max(0, Math.min(1, ((p.x - a.x) * dx + (p.y - a.y) * dy) / (dx * dx + dy * dy)));
     best = Math.min(best, Math.hypot(a.x + t * dx - p.x, a.y + t * dy - p.y));
   }
@@ -27,7 +32,9 @@ function distToRing(p: Pt, ring: Polygon): number {
 }
 
 test('shrinking a regular polygon gives the regular polygon with its apothem reduced by the offset', () => {
-  const n = 64, r = 20000, d = 400;
+  const n = 64,
+    r = 20000,
+    d = 400;
   const out = offset([{ outer: regular(n, r), holes: [] }], -d);
   const apothem = r * Math.cos(Math.PI / n) - d;
   const expected = n * apothem * apothem * Math.tan(Math.PI / n);
@@ -52,8 +59,18 @@ test('shrunk and grown stars keep every vertex at the offset distance from the o
 test('a shrink that eats thin parts splits or removes them like a full union', () => {
   // a dumbbell: two 4 mm squares joined by a 0.5 mm neck
   const ring: Polygon = [
-    { x: 0, y: 0 }, { x: 4000, y: 0 }, { x: 4000, y: 1750 }, { x: 6000, y: 1750 }, { x: 6000, y: 0 }, { x: 10000, y: 0 },
-    { x: 10000, y: 4000 }, { x: 6000, y: 4000 }, { x: 6000, y: 2250 }, { x: 4000, y: 2250 }, { x: 4000, y: 4000 }, { x: 0, y: 4000 },
+    { x: 0, y: 0 },
+    { x: 4000, y: 0 },
+    { x: 4000, y: 1750 },
+    { x: 6000, y: 1750 },
+    { x: 6000, y: 0 },
+    { x: 10000, y: 0 },
+    { x: 10000, y: 4000 },
+    { x: 6000, y: 4000 },
+    { x: 6000, y: 2250 },
+    { x: 4000, y: 2250 },
+    { x: 4000, y: 4000 },
+    { x: 0, y: 4000 },
   ];
   const out = offset([{ outer: ring, holes: [] }], -400);
   assert.equal(out.length, 2);
@@ -61,12 +78,17 @@ test('a shrink that eats thin parts splits or removes them like a full union', (
 });
 
 test('a corner past the mitre limit is squared off at the offset distance from the vertex', () => {
-  const sharp: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 2000 }];
+  const sharp: Polygon = [
+    { x: 0, y: 0 },
+    { x: 10000, y: 0 },
+    { x: 0, y: 2000 },
+  ];
   const [raw] = rawMiterOffset([sharp], 200, 3)?.rings ?? [];
   assert.equal(raw.length, 4);
   // two points at the sharp tip, on the cut 200 µm beyond it, instead of one far mitre point
   const tip = raw.slice(1, 3);
-  for (const p of tip) assert.ok(Math.hypot(p.x - 10000, p.y) > 199 && Math.hypot(p.x - 10000, p.y) < 600, `${p.x},${p.y}`);
+  for (const p of tip)
+    assert.ok(Math.hypot(p.x - 10000, p.y) > 199 && Math.hypot(p.x - 10000, p.y) < 600, `${p.x},${p.y}`);
   assert.ok(Math.abs(tip[0].y - tip[1].y) > 100);
   const out = offset([{ outer: sharp, holes: [] }], 200);
   assert.equal(out.length, 1);
@@ -74,7 +96,11 @@ test('a corner past the mitre limit is squared off at the offset distance from t
 });
 
 test('a spike is squared off 200 µm beyond its tip', () => {
-  const spike: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 200 }];
+  const spike: Polygon = [
+    { x: 0, y: 0 },
+    { x: 10000, y: 0 },
+    { x: 0, y: 200 },
+  ];
   const [raw] = rawMiterOffset([spike], 200, 3)?.rings ?? [];
   assert.equal(raw.length, 4);
   for (const p of raw.slice(1, 3)) assert.ok(p.x >= 10195 && p.x <= 10205, `${p.x}`);
@@ -84,7 +110,11 @@ test('a spike is squared off 200 µm beyond its tip', () => {
 });
 
 test('repeated points and clockwise outers are left to the general offsetter', () => {
-  const spike: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 0, y: 200 }];
+  const spike: Polygon = [
+    { x: 0, y: 0 },
+    { x: 10000, y: 0 },
+    { x: 0, y: 200 },
+  ];
   const sq = regular(4, 5000);
   assert.equal(rawMiterOffset([[...sq].reverse()], -200, 3), null);
   assert.equal(rawMiterOffset([[sq[0], sq[0], sq[1], sq[2]]], -200, 3), null);
@@ -96,7 +126,8 @@ test('repeated points and clockwise outers are left to the general offsetter', (
 test('edges used up between concave corners are dropped, not left to the union as loops', () => {
   // a 20 mm circle whose edges alternate long and short (126 µm), shrunk by 5 mm: the short
   // offset edges are used up by their two corners
-  const r = 20000, d = 5000;
+  const r = 20000,
+    d = 5000;
   const ring: Polygon = [];
   let a = 0;
   for (let i = 0; i < 200; i++) {

@@ -13,7 +13,9 @@
  */
 import type { Polygon, Pt } from './types.js';
 
-const CONCAVE = 1, SQUARE = 2, LOOP = 4;
+const CONCAVE = 1,
+  SQUARE = 2,
+  LOOP = 4;
 
 /** Per-vertex working arrays, reused between calls (grown as needed). */
 let scratch = makeScratch(256);
@@ -65,8 +67,10 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
     if (n < 3) return null;
     const { nx, ny, len, cosA, used, flag } = scratchFor(n);
     for (let i = 0; i < n; i++) {
-      const a = ring[i], b = ring[i + 1 === n ? 0 : i + 1];
-      const dx = b.x - a.x, dy = b.y - a.y;
+      const a = ring[i],
+        b = ring[i + 1 === n ? 0 : i + 1];
+      const dx = b.x - a.x,
+        dy = b.y - a.y;
       if (dx === 0 && dy === 0) return null;
       const l = Math.sqrt(dx * dx + dy * dy);
       const f = 1 / l;
@@ -131,7 +135,13 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
 let links = makeLinks(256);
 
 function makeLinks(n: number) {
-  return { prev: new Int32Array(n), next: new Int32Array(n), cx: new Float64Array(n), cy: new Float64Array(n), stack: new Int32Array(2 * n) };
+  return {
+    prev: new Int32Array(n),
+    next: new Int32Array(n),
+    cx: new Float64Array(n),
+    cy: new Float64Array(n),
+    stack: new Int32Array(2 * n),
+  };
 }
 
 /**
@@ -156,7 +166,9 @@ function dropUsedUpEdges(ring: Polygon, delta: number): Pt[] | null {
     cy[e] = ring[e].y + (ny[k] + ny[e]) * q;
     stack[e] = e;
   }
-  let top = n, alive = n, first = 0;
+  let top = n,
+    alive = n,
+    first = 0;
   while (top > 0) {
     const e = stack[--top];
     if (prev[e] < 0) continue; // dropped already
@@ -169,8 +181,10 @@ function dropUsedUpEdges(ring: Polygon, delta: number): Pt[] | null {
     const turnSin = ny[b] * nx[a] - ny[a] * nx[b];
     const turnCos = nx[a] * nx[b] + ny[a] * ny[b];
     if (!(turnCos > SPIKE_COS && turnSin * delta < 0)) return null;
-    const pax = ring[a].x + nx[a] * delta, pay = ring[a].y + ny[a] * delta;
-    const pbx = ring[b].x + nx[b] * delta, pby = ring[b].y + ny[b] * delta;
+    const pax = ring[a].x + nx[a] * delta,
+      pay = ring[a].y + ny[a] * delta;
+    const pbx = ring[b].x + nx[b] * delta,
+      pby = ring[b].y + ny[b] * delta;
     // directions: da = (-ny[a], nx[a]), db = (-ny[b], nx[b]); pa + t·da = pb + s·db
     const cross = nx[a] * ny[b] - ny[a] * nx[b]; // cross(da, db)
     const t = ((pbx - pax) * nx[b] + (pby - pay) * ny[b]) / cross; // cross(pb - pa, db) / cross(da, db)
@@ -200,7 +214,8 @@ function dropUsedUpEdges(ring: Polygon, delta: number): Pt[] | null {
 function squareCorner(p: Pt, n1x: number, n1y: number, n2x: number, n2y: number, delta: number, out: Pt[]): void {
   // unit bisector, pointing to the wider side of the corner: the incoming edge's direction minus
   // the outgoing one's (edge direction = the normal turned a quarter left); stable for spikes
-  let mx = n2y - n1y, my = n1x - n2x;
+  let mx = n2y - n1y,
+    my = n1x - n2x;
   const ml = Math.sqrt(mx * mx + my * my);
   mx /= ml;
   my /= ml;
@@ -211,7 +226,8 @@ function squareCorner(p: Pt, n1x: number, n1y: number, n2x: number, n2y: number,
 
 /** Where the offset edge with normal (nx, ny) meets the square cut with unit bisector (mx, my). */
 function squarePoint(p: Pt, nx: number, ny: number, mx: number, my: number, delta: number, absDelta: number): Pt {
-  const ex = -ny, ey = nx; // edge direction: the normal turned a quarter left
+  const ex = -ny,
+    ey = nx; // edge direction: the normal turned a quarter left
   const t = (absDelta - delta * (nx * mx + ny * my)) / (ex * mx + ey * my);
   return { x: Math.round(p.x + nx * delta + t * ex), y: Math.round(p.y + ny * delta + t * ey) };
 }
@@ -221,7 +237,9 @@ function squarePoint(p: Pt, nx: number, ny: number, mx: number, my: number, delt
  * it is an outer ring, so the rings are wound as outer CCW, holes CW.
  */
 function outermostIsCounterClockwise(rings: readonly Polygon[]): boolean {
-  let best = -1, bx = 0, by = -Infinity;
+  let best = -1,
+    bx = 0,
+    by = -Infinity;
   for (let r = 0; r < rings.length; r++) {
     for (const p of rings[r]) {
       if (p.y > by || (p.y === by && p.x < bx)) {

@@ -30,9 +30,13 @@ interface Grid {
 /** A grid of the entries `ids` (indices into `ends`, two coordinates each). */
 function buildGrid(ends: Float64Array, ids: Int32Array): Grid {
   const count = ids.length;
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   for (let k = 0; k < count; k++) {
-    const x = ends[2 * ids[k]], y = ends[2 * ids[k] + 1];
+    const x = ends[2 * ids[k]],
+      y = ends[2 * ids[k] + 1];
     if (x < minX) minX = x;
     if (y < minY) minY = y;
     if (x > maxX) maxX = x;
@@ -44,7 +48,8 @@ function buildGrid(ends: Float64Array, ids: Int32Array): Grid {
   const cols = Math.floor((maxX - minX) / cell) + 1;
   const rows = Math.floor((maxY - minY) / cell) + 1;
   const cellOf = new Int32Array(count);
-  for (let k = 0; k < count; k++) cellOf[k] = Math.floor((ends[2 * ids[k] + 1] - minY) / cell) * cols + Math.floor((ends[2 * ids[k]] - minX) / cell);
+  for (let k = 0; k < count; k++)
+    cellOf[k] = Math.floor((ends[2 * ids[k] + 1] - minY) / cell) * cols + Math.floor((ends[2 * ids[k]] - minX) / cell);
   const { start, items } = bucketByCell(cellOf, cols * rows);
   // bucketed by position in `ids`: back to entry numbers, still ascending within a cell
   for (let k = 0; k < count; k++) items[k] = ids[items[k]];
@@ -61,9 +66,20 @@ interface Nearest {
 }
 
 /** Look at the live entries of cell (gx, gy) from (x, y), dropping used ones, and keep the nearest (the lowest entry on a tie). */
-function visit(grid: Grid, gx: number, gy: number, x: number, y: number, ends: Float64Array, owner: readonly number[], used: Uint8Array, near: Nearest): void {
+function visit(
+  grid: Grid,
+  gx: number,
+  gy: number,
+  x: number,
+  y: number,
+  ends: Float64Array,
+  owner: readonly number[],
+  used: Uint8Array,
+  near: Nearest,
+): void {
   const c = gy * grid.cols + gx;
-  const from = grid.start[c], n = grid.live[c];
+  const from = grid.start[c],
+    n = grid.live[c];
   if (n === 0) return;
   const items = grid.items;
   let kept = from;
@@ -71,7 +87,8 @@ function visit(grid: Grid, gx: number, gy: number, x: number, y: number, ends: F
     const e = items[k];
     if (used[owner[e]]) continue; // dead entry: dropped from the cell
     items[kept++] = e;
-    const ddx = ends[2 * e] - x, ddy = ends[2 * e + 1] - y;
+    const ddx = ends[2 * e] - x,
+      ddy = ends[2 * e + 1] - y;
     const d = ddx * ddx + ddy * ddy;
     if (d < near.d || (d === near.d && e < near.entry)) {
       near.d = d;
@@ -98,7 +115,8 @@ export function orderNearest(
     let best = 0;
     let bestD = Infinity;
     for (let k = 0; k < c.length; k++) {
-      const ddx = c[k].x - from.x, ddy = c[k].y - from.y;
+      const ddx = c[k].x - from.x,
+        ddy = c[k].y - from.y;
       const d = ddx * ddx + ddy * ddy;
       if (d < bestD) {
         bestD = d;
@@ -131,7 +149,8 @@ export function orderNearest(
       let bestD = Infinity;
       for (let e = 0; e < n; e++) {
         if (used[owner[e]]) continue;
-        const ddx = pts[2 * e] - at.x, ddy = pts[2 * e + 1] - at.y;
+        const ddx = pts[2 * e] - at.x,
+          ddy = pts[2 * e + 1] - at.y;
         const d = ddx * ddx + ddy * ddy;
         if (d < bestD) {
           bestD = d;
@@ -153,7 +172,8 @@ export function orderNearest(
   // used, its rings are mostly empty cells, and a grid of the rest is made (the search is exact either way)
   const per = new Int32Array(count);
   for (let e = 0; e < n; e++) per[owner[e]]++;
-  let liveEntries = n, gridEntries = n;
+  let liveEntries = n,
+    gridEntries = n;
   const near: Nearest = { d: Infinity, entry: -1 };
   for (let done = 0; done < count; done++) {
     if (liveEntries * REGRID_SHARE < gridEntries && liveEntries >= SCAN_BELOW) {
@@ -167,7 +187,8 @@ export function orderNearest(
     const cy = Math.floor((at.y - grid.minY) / grid.cell);
     near.entry = -1;
     near.d = Infinity;
-    const x = at.x, y = at.y;
+    const x = at.x,
+      y = at.y;
     // rings of cells around (cx, cy), starting at the first ring that touches the grid
     const dxOut = cx < 0 ? -cx : cx >= grid.cols ? cx - grid.cols + 1 : 0;
     const dyOut = cy < 0 ? -cy : cy >= grid.rows ? cy - grid.rows + 1 : 0;
@@ -176,8 +197,10 @@ export function orderNearest(
     for (let r = r0; r <= rMax; r++) {
       // every point in ring r is at least (r - 1) cells away
       if (near.entry >= 0 && (r - 1) * grid.cell > Math.sqrt(near.d)) break;
-      const y0 = Math.max(0, cy - r), y1 = Math.min(grid.rows - 1, cy + r);
-      const x0 = Math.max(0, cx - r), x1 = Math.min(grid.cols - 1, cx + r);
+      const y0 = Math.max(0, cy - r),
+        y1 = Math.min(grid.rows - 1, cy + r);
+      const x0 = Math.max(0, cx - r),
+        x1 = Math.min(grid.cols - 1, cx + r);
       for (let gy = y0; gy <= y1; gy++) {
         if (gy === cy - r || gy === cy + r) {
           for (let gx = x0; gx <= x1; gx++) visit(grid, gx, gy, x, y, ends, owner, used, near);

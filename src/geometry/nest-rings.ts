@@ -72,16 +72,17 @@ function ringWithin(inner: readonly Pt[], outer: readonly Pt[]): boolean {
 function pointSide(px: number, py: number, ring: readonly Pt[]): number {
   let inside = false;
   for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
-    const a = ring[j], b = ring[i];
+    const a = ring[j],
+      b = ring[i];
     if (a.y === py && b.y === py) {
       if ((a.x <= px && px <= b.x) || (b.x <= px && px <= a.x)) return 0;
       continue;
     }
-    if ((a.y > py) !== (b.y > py)) {
+    if (a.y > py !== b.y > py) {
       // where the edge crosses the horizontal line through p, compared with p.x without division
       const cross = (b.x - a.x) * (py - a.y) - (px - a.x) * (b.y - a.y);
       if (cross === 0) return 0;
-      if ((cross > 0) === (b.y > a.y)) inside = !inside;
+      if (cross > 0 === b.y > a.y) inside = !inside;
     } else if ((a.y === py && a.x === px) || (b.y === py && b.x === px)) {
       return 0;
     }

@@ -23,7 +23,8 @@ test('both grids find exactly the points within the distance, whatever the cell 
   const next = random(7);
   for (const cell of [1, 250, 1000, 4000, 100000]) {
     const n = 300;
-    const xs = new Float64Array(n), ys = new Float64Array(n);
+    const xs = new Float64Array(n),
+      ys = new Float64Array(n);
     const grid = new PointGrid(cell);
     for (let i = 0; i < n; i++) {
       // clustered and negative coordinates too, and some points repeated
@@ -35,7 +36,8 @@ test('both grids find exactly the points within the distance, whatever the cell 
     // one array for every query: entries past the count are stale and must not matter
     const out: number[] = [];
     for (let q = 0; q < 200; q++) {
-      const x = Math.round((next() - 0.4) * 30000), y = Math.round((next() - 0.6) * 12000);
+      const x = Math.round((next() - 0.4) * 30000),
+        y = Math.round((next() - 0.6) * 12000);
       const d = q % 10 === 0 ? 0 : Math.round(next() * 6000);
       const want = brute(xs, ys, x, y, d);
       assert.deepEqual(sorted(out, grid.near(x, y, d, out)), want, `PointGrid cell ${cell} query ${q}`);
@@ -45,7 +47,8 @@ test('both grids find exactly the points within the distance, whatever the cell 
 });
 
 test('a point exactly at the distance is found; queries far outside the points find none', () => {
-  const xs = Float64Array.from([0, 3000, -3000]), ys = Float64Array.from([0, 4000, 0]);
+  const xs = Float64Array.from([0, 3000, -3000]),
+    ys = Float64Array.from([0, 4000, 0]);
   const fixed = new FixedPointGrid(xs, ys, 1000);
   const out: number[] = [];
   assert.deepEqual(sorted(out, fixed.near(0, 0, 5000, out)), [0, 1, 2]);

@@ -43,15 +43,19 @@ export class PointGrid {
   /** Writes the ids of the points within `dist` of (x, y) to out[0 …) and returns how many (the rest of `out` is stale). */
   near(x: number, y: number, dist: number, out: number[]): number {
     const c = this.#cell;
-    const x0 = Math.floor((x - dist) / c), x1 = Math.floor((x + dist) / c);
-    const y0 = Math.floor((y - dist) / c), y1 = Math.floor((y + dist) / c);
+    const x0 = Math.floor((x - dist) / c),
+      x1 = Math.floor((x + dist) / c);
+    const y0 = Math.floor((y - dist) / c),
+      y1 = Math.floor((y + dist) / c);
     const d2 = dist * dist;
-    const xs = this.xs, ys = this.ys;
+    const xs = this.xs,
+      ys = this.ys;
     let n = 0;
     if (x1 - x0 >= WRAP - 1 || y1 - y0 >= WRAP - 1 || (x1 - x0 + 1) * (y1 - y0 + 1) > xs.length) {
       // more cells than points: look at every point
       for (let id = 0; id < xs.length; id++) {
-        const dx = xs[id] - x, dy = ys[id] - y;
+        const dx = xs[id] - x,
+          dy = ys[id] - y;
         if (dx * dx + dy * dy <= d2) out[n++] = id;
       }
       return n;
@@ -62,7 +66,8 @@ export class PointGrid {
         if (!b) continue;
         for (let k = 0; k < b.length; k++) {
           const id = b[k];
-          const dx = xs[id] - x, dy = ys[id] - y;
+          const dx = xs[id] - x,
+            dy = ys[id] - y;
           if (dx * dx + dy * dy <= d2) out[n++] = id;
         }
       }
@@ -74,10 +79,12 @@ export class PointGrid {
   nearest(x: number, y: number, dist: number): number {
     const found = this.#found;
     const n = this.near(x, y, dist, found);
-    let best = -1, bestD = Infinity;
+    let best = -1,
+      bestD = Infinity;
     for (let k = 0; k < n; k++) {
       const id = found[k];
-      const dx = this.xs[id] - x, dy = this.ys[id] - y;
+      const dx = this.xs[id] - x,
+        dy = this.ys[id] - y;
       const d = dx * dx + dy * dy;
       if (d < bestD || (d === bestD && id < best)) {
         bestD = d;
@@ -108,7 +115,10 @@ export class FixedPointGrid {
     this.xs = xs;
     this.ys = ys;
     const n = xs.length;
-    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    let minX = Infinity,
+      minY = Infinity,
+      maxX = -Infinity,
+      maxY = -Infinity;
     for (let i = 0; i < n; i++) {
       if (xs[i] < minX) minX = xs[i];
       if (xs[i] > maxX) maxX = xs[i];
@@ -117,8 +127,10 @@ export class FixedPointGrid {
     }
     if (n === 0) minX = minY = maxX = maxY = 0;
     let cell = Math.max(1, cellUm);
-    while ((Math.floor((maxX - minX) / cell) + 1) * (Math.floor((maxY - minY) / cell) + 1) > CELLS_PER_POINT * n + 1) cell *= 2;
-    const nx = Math.floor((maxX - minX) / cell) + 1, ny = Math.floor((maxY - minY) / cell) + 1;
+    while ((Math.floor((maxX - minX) / cell) + 1) * (Math.floor((maxY - minY) / cell) + 1) > CELLS_PER_POINT * n + 1)
+      cell *= 2;
+    const nx = Math.floor((maxX - minX) / cell) + 1,
+      ny = Math.floor((maxY - minY) / cell) + 1;
     const cellOf = new Int32Array(n);
     for (let i = 0; i < n; i++) cellOf[i] = Math.floor((ys[i] - minY) / cell) * nx + Math.floor((xs[i] - minX) / cell);
     const { start, items } = bucketByCell(cellOf, nx * ny);
@@ -133,17 +145,24 @@ export class FixedPointGrid {
 
   /** Writes the ids of the points within `dist` of (x, y) to out[0 …) and returns how many (the rest of `out` is stale). */
   near(x: number, y: number, dist: number, out: number[]): number {
-    const c = this.#cell, nx = this.#nx;
-    const x0 = Math.max(0, Math.floor((x - dist - this.#minX) / c)), x1 = Math.min(nx - 1, Math.floor((x + dist - this.#minX) / c));
-    const y0 = Math.max(0, Math.floor((y - dist - this.#minY) / c)), y1 = Math.min(this.#ny - 1, Math.floor((y + dist - this.#minY) / c));
+    const c = this.#cell,
+      nx = this.#nx;
+    const x0 = Math.max(0, Math.floor((x - dist - this.#minX) / c)),
+      x1 = Math.min(nx - 1, Math.floor((x + dist - this.#minX) / c));
+    const y0 = Math.max(0, Math.floor((y - dist - this.#minY) / c)),
+      y1 = Math.min(this.#ny - 1, Math.floor((y + dist - this.#minY) / c));
     if (x0 > x1 || y0 > y1) return 0;
     const d2 = dist * dist;
-    const xs = this.xs, ys = this.ys, start = this.#start, items = this.#items;
+    const xs = this.xs,
+      ys = this.ys,
+      start = this.#start,
+      items = this.#items;
     let n = 0;
     for (let cy = y0; cy <= y1; cy++) {
       for (let k = start[cy * nx + x0], end = start[cy * nx + x1 + 1]; k < end; k++) {
         const id = items[k];
-        const dx = xs[id] - x, dy = ys[id] - y;
+        const dx = xs[id] - x,
+          dy = ys[id] - y;
         if (dx * dx + dy * dy <= d2) out[n++] = id;
       }
     }

@@ -71,7 +71,9 @@ function cleanRing(r: readonly Pt[]): Polygon | null {
     changed = false;
     const next: Pt[] = [];
     for (let i = 0; i < n; i++) {
-      const a = ring[(i + n - 1) % n], b = ring[i], c = ring[(i + 1) % n];
+      const a = ring[(i + n - 1) % n],
+        b = ring[i],
+        c = ring[(i + 1) % n];
       const cross = (b.x - a.x) * (c.y - b.y) - (b.y - a.y) * (c.x - b.x);
       if (cross === 0) {
         // straight on: drop; turning back: a spike the union would cut off
@@ -95,8 +97,15 @@ let edges = makeEdges(1024);
 
 function makeEdges(n: number) {
   return {
-    ax: new Float64Array(n), ay: new Float64Array(n), bx: new Float64Array(n), by: new Float64Array(n),
-    maxY: new Float64Array(n), key: new Float64Array(n), ring: new Int32Array(n), at: new Int32Array(n), ringLen: new Int32Array(n),
+    ax: new Float64Array(n),
+    ay: new Float64Array(n),
+    bx: new Float64Array(n),
+    by: new Float64Array(n),
+    maxY: new Float64Array(n),
+    key: new Float64Array(n),
+    ring: new Int32Array(n),
+    at: new Int32Array(n),
+    ringLen: new Int32Array(n),
     open: new Int32Array(n),
   };
 }
@@ -116,7 +125,8 @@ function edgesSimple(rings: readonly Polygon[]): boolean {
   for (let ri = 0; ri < rings.length; ri++) {
     const r = rings[ri];
     for (let i = 0; i < r.length; i++) {
-      const p = r[i], q = r[i + 1 === r.length ? 0 : i + 1];
+      const p = r[i],
+        q = r[i + 1 === r.length ? 0 : i + 1];
       ax[e] = p.x;
       ay[e] = p.y;
       bx[e] = q.x;
@@ -159,7 +169,11 @@ function edgesSimple(rings: readonly Polygon[]): boolean {
  * @param raw one ring per ring of `areas`, in flatten() order
  * @param unite the clean-up union of some raw rings
  */
-export function islandsApart(raw: readonly Pt[][], areas: readonly ExPolygon[], unite: (rings: Pt[][]) => ExPolygon[]): ExPolygon[] {
+export function islandsApart(
+  raw: readonly Pt[][],
+  areas: readonly ExPolygon[],
+  unite: (rings: Pt[][]) => ExPolygon[],
+): ExPolygon[] {
   const n = areas.length;
   const first = new Int32Array(n + 1);
   for (let i = 0; i < n; i++) first[i + 1] = first[i] + 1 + areas[i].holes.length;

@@ -25,6 +25,9 @@ export const rect = (x0: number, y0: number, x1: number, y1: number): ExPolygon 
 
 /** A regular polygon of `n` sides approximating the disc of radius `r` round (cx, cy), counter-clockwise. */
 export const disc = (cx: number, cy: number, r: number, n = 64): ExPolygon => ({
-  outer: Array.from({ length: n }, (_, k) => ({ x: Math.round(cx + r * Math.cos((2 * Math.PI * k) / n)), y: Math.round(cy + r * Math.sin((2 * Math.PI * k) / n)) })),
+  outer: Array.from({ length: n }, (_, k) => ({
+    x: Math.round(cx + r * Math.cos((2 * Math.PI * k) / n)),
+    y: Math.round(cy + r * Math.sin((2 * Math.PI * k) / n)),
+  })),
   holes: [],
 });

@@ -19,10 +19,13 @@ const FLAT_SIN = 1e-3;
  * (or there are no segments).
  */
 export function flatteningTurn(lines: readonly (readonly Pt[])[]): Turn | null {
-  let best = 0, bx = 1, by = 0;
+  let best = 0,
+    bx = 1,
+    by = 0;
   for (const l of lines) {
     for (let i = 1; i < l.length; i++) {
-      const dx = l[i].x - l[i - 1].x, dy = l[i].y - l[i - 1].y;
+      const dx = l[i].x - l[i - 1].x,
+        dy = l[i].y - l[i - 1].y;
       const d = dx * dx + dy * dy;
       if (d > best) {
         best = d;
@@ -46,7 +49,8 @@ export function inverse(t: Turn): Turn {
 /** Points turned (new array, integer coordinates). */
 export function turnPts(pts: readonly Pt[], t: Turn): Pt[] {
   const out: Pt[] = new Array<Pt>(pts.length);
-  const c = t.cos, s = t.sin;
+  const c = t.cos,
+    s = t.sin;
   for (let i = 0; i < pts.length; i++) {
     const p = pts[i];
     // + 0 turns -0 into 0

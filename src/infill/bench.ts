@@ -16,7 +16,17 @@ function model(layers: number): InfillModelInput {
   const ls: InfillLayerInput[] = [];
   const need: ExPolygon[][] = [];
   const c = SHAPE_CENTRE;
-  const deck: ExPolygon[] = [{ outer: [{ x: c.x - 12_000, y: c.y - 6_000 }, { x: c.x + 2_000, y: c.y - 6_000 }, { x: c.x + 2_000, y: c.y + 6_000 }, { x: c.x - 12_000, y: c.y + 6_000 }], holes: [] }];
+  const deck: ExPolygon[] = [
+    {
+      outer: [
+        { x: c.x - 12_000, y: c.y - 6_000 },
+        { x: c.x + 2_000, y: c.y - 6_000 },
+        { x: c.x + 2_000, y: c.y + 6_000 },
+        { x: c.x - 12_000, y: c.y + 6_000 },
+      ],
+      holes: [],
+    },
+  ];
   for (let i = 0; i < layers; i++) {
     const z = 0.2 * (i + 1);
     ls.push({ layerIndex: i, z, layerHeight: 0.2, region: hull(z) });
@@ -52,12 +62,15 @@ function main(): void {
         len += pathLength(r);
       }
       const t2 = performance.now();
-      if ((t2 - t0) / n < best.ms) best = { ms: (t2 - t0) / n, prepMs: (t1 - t0) / n, density: (len * params.lineWidth) / regionArea };
+      if ((t2 - t0) / n < best.ms)
+        best = { ms: (t2 - t0) / n, prepMs: (t1 - t0) / n, density: (len * params.lineWidth) / regionArea };
     }
     rows.push({ id, ...best });
   }
   const grid = rows.find((r) => r.id === 'grid')?.ms ?? 1;
-  console.log(`infill bench: ${n} layers, hull 60 × 30 mm, density ${(density * 100).toFixed(0)} %, line width ${params.lineWidth} µm`);
+  console.log(
+    `infill bench: ${n} layers, hull 60 × 30 mm, density ${(density * 100).toFixed(0)} %, line width ${params.lineWidth} µm`,
+  );
   console.log('pattern       ms/layer  (prepare)  × grid   length×width/area');
   for (const r of rows) {
     console.log(

@@ -17,13 +17,19 @@ export function dedupePoints(pts: readonly Pt[]): Pt[] {
  * Clean lines and loops. Loops that lose a segment become open lines. `minLengthUm`: shorter open paths
  * are dropped (a blob, not a line).
  */
-export function cleanPaths(lines: readonly Pt[][], loops: readonly Pt[][], minLengthUm: number): { lines: Pt[][]; loops: Pt[][] } {
+export function cleanPaths(
+  lines: readonly Pt[][],
+  loops: readonly Pt[][],
+  minLengthUm: number,
+): { lines: Pt[][]; loops: Pt[][] } {
   const L = lines.map(dedupePoints).filter((l) => l.length >= 2);
-  const C = loops.map((l) => {
-    const d = dedupePoints(l);
-    while (d.length > 1 && d[0].x === d[d.length - 1].x && d[0].y === d[d.length - 1].y) d.pop();
-    return d;
-  }).filter((l) => l.length >= 3);
+  const C = loops
+    .map((l) => {
+      const d = dedupePoints(l);
+      while (d.length > 1 && d[0].x === d[d.length - 1].x && d[0].y === d[d.length - 1].y) d.pop();
+      return d;
+    })
+    .filter((l) => l.length >= 3);
   // every segment: canonical key (smaller endpoint first), owner path, index
   let n = 0;
   for (const l of L) n += l.length - 1;
@@ -34,7 +40,8 @@ export function cleanPaths(lines: readonly Pt[][], loops: readonly Pt[][], minLe
   let k = 0;
   const add = (a: Pt, b: Pt, o: number, i: number) => {
     const swap = a.x > b.x || (a.x === b.x && a.y > b.y);
-    const p = swap ? b : a, q = swap ? a : b;
+    const p = swap ? b : a,
+      q = swap ? a : b;
     key[4 * k] = p.x;
     key[4 * k + 1] = p.y;
     key[4 * k + 2] = q.x;
@@ -54,7 +61,10 @@ export function cleanPaths(lines: readonly Pt[][], loops: readonly Pt[][], minLe
   const drop = new Uint8Array(n);
   let any = false;
   const same = (a: number, b: number) =>
-    key[4 * a] === key[4 * b] && key[4 * a + 1] === key[4 * b + 1] && key[4 * a + 2] === key[4 * b + 2] && key[4 * a + 3] === key[4 * b + 3];
+    key[4 * a] === key[4 * b] &&
+    key[4 * a + 1] === key[4 * b + 1] &&
+    key[4 * a + 2] === key[4 * b + 2] &&
+    key[4 * a + 3] === key[4 * b + 3];
   if (n < 1 << 20) {
     const sk = new Float64Array(n);
     for (let i = 0; i < n; i++) {
@@ -83,7 +93,14 @@ export function cleanPaths(lines: readonly Pt[][], loops: readonly Pt[][], minLe
   } else {
     const order = new Int32Array(n);
     for (let i = 0; i < n; i++) order[i] = i;
-    order.sort((a, b) => key[4 * a] - key[4 * b] || key[4 * a + 1] - key[4 * b + 1] || key[4 * a + 2] - key[4 * b + 2] || key[4 * a + 3] - key[4 * b + 3] || a - b);
+    order.sort(
+      (a, b) =>
+        key[4 * a] - key[4 * b] ||
+        key[4 * a + 1] - key[4 * b + 1] ||
+        key[4 * a + 2] - key[4 * b + 2] ||
+        key[4 * a + 3] - key[4 * b + 3] ||
+        a - b,
+    );
     for (let i = 1; i < n; i++) {
       if (same(order[i - 1], order[i])) {
         drop[order[i]] = 1;

@@ -26,7 +26,8 @@ interface Cut {
 function pointAt(pl: Polyline, s: number): { x: number; y: number } {
   const i = Math.min(Math.floor(s), pl.length - 2);
   const t = s - i;
-  const a = pl[i], b = pl[i + 1];
+  const a = pl[i],
+    b = pl[i + 1];
   return { x: a.x + t * (b.x - a.x), y: a.y + t * (b.y - a.y) };
 }
 
@@ -39,11 +40,13 @@ export function clipPolylines(ix: RegionIndex, lines: readonly Polyline[], out: 
     if (n < 2) continue;
     cuts.length = 0;
     for (let i = 0; i + 1 < n; i++) {
-      const a = pl[i], b = pl[i + 1];
+      const a = pl[i],
+        b = pl[i + 1];
       if (a.x === b.x && a.y === b.y) continue;
       segmentHits(ix, a.x, a.y, b.x, b.y, hits);
       for (const h of hits) {
-        const qx = a.x + h.t * (b.x - a.x), qy = a.y + h.t * (b.y - a.y);
+        const qx = a.x + h.t * (b.x - a.x),
+          qy = a.y + h.t * (b.y - a.y);
         const last = cuts[cuts.length - 1];
         // merge with the previous cut when it is the same point (a crossing through a region vertex)
         if (last && Math.abs(last.x - qx) + Math.abs(last.y - qy) <= CUT_MERGE_UM) continue;

@@ -37,8 +37,22 @@ export type Refine = (x: number, y: number, nodeA: number, nodeB: number) => Con
  * (bit 0: (0,0), bit 1: (1,0), bit 2: (1,1), bit 3: (0,1) at or above the level); saddles 5 and 10 apart.
  */
 const CASE_EDGES: ReadonlyArray<readonly [number, number]> = [
-  [0, 0], [0, 3], [0, 1], [1, 3], [1, 2], [0, 0], [0, 2], [2, 3],
-  [2, 3], [0, 2], [0, 0], [1, 2], [1, 3], [0, 1], [0, 3], [0, 0],
+  [0, 0],
+  [0, 3],
+  [0, 1],
+  [1, 3],
+  [1, 2],
+  [0, 0],
+  [0, 2],
+  [2, 3],
+  [2, 3],
+  [0, 2],
+  [0, 0],
+  [1, 2],
+  [1, 3],
+  [0, 1],
+  [0, 3],
+  [0, 0],
 ];
 
 /** Reusable per-grid work arrays for traceContours (sized for the grid; cleaned after every call). */
@@ -59,8 +73,12 @@ export function contourScratch(g: ScalarGrid): ContourScratch {
  * crosses; `scratch` avoids allocating the work arrays on every call.
  */
 export function traceContours(
-  g: ScalarGrid, level: number, centre: (i: number, j: number) => number, refine?: Refine,
-  cells?: ArrayLike<number>, scratch?: ContourScratch,
+  g: ScalarGrid,
+  level: number,
+  centre: (i: number, j: number) => number,
+  refine?: Refine,
+  cells?: ArrayLike<number>,
+  scratch?: ContourScratch,
 ): Contour[] {
   const { nx, ny, x0, y0, h, v } = g;
   const W = nx + 1;
@@ -79,10 +97,16 @@ export function traceContours(
   };
   const cell = (i: number, j: number) => {
     const n = j * W + i;
-    const a = v[n] >= level, b = v[n + 1] >= level, c = v[n + W + 1] >= level, d = v[n + W] >= level;
+    const a = v[n] >= level,
+      b = v[n + 1] >= level,
+      c = v[n + W + 1] >= level,
+      d = v[n + W] >= level;
     const code = (a ? 1 : 0) | (b ? 2 : 0) | (c ? 4 : 0) | (d ? 8 : 0);
     if (code === 0 || code === 15) return;
-    const bottom = j * nx + i, top = (j + 1) * nx + i, left = nH + n, right = nH + n + 1;
+    const bottom = j * nx + i,
+      top = (j + 1) * nx + i,
+      left = nH + n,
+      right = nH + n + 1;
     if (code === 5 || code === 10) {
       if (centre(i, j) >= level === a) {
         link(bottom, right);
@@ -100,7 +124,8 @@ export function traceContours(
   };
   if (cells) {
     for (let k = 0; k < cells.length; k++) {
-      const c = cells[k], j = Math.floor(c / nx);
+      const c = cells[k],
+        j = Math.floor(c / nx);
       cell(c - j * nx, j);
     }
   } else {
@@ -109,29 +134,42 @@ export function traceContours(
   const pointOf = (e: number) => {
     let na: number, nbN: number, xa: number, ya: number, xb: number, yb: number;
     if (e < nH) {
-      const j = Math.floor(e / nx), i = e - j * nx;
+      const j = Math.floor(e / nx),
+        i = e - j * nx;
       na = j * W + i;
       nbN = na + 1;
-      xa = x0 + i * h; ya = y0 + j * h; xb = xa + h; yb = ya;
+      xa = x0 + i * h;
+      ya = y0 + j * h;
+      xb = xa + h;
+      yb = ya;
     } else {
-      const q = e - nH, j = Math.floor(q / W), i = q - j * W;
+      const q = e - nH,
+        j = Math.floor(q / W),
+        i = q - j * W;
       na = j * W + i;
       nbN = na + W;
-      xa = x0 + i * h; ya = y0 + j * h; xb = xa; yb = ya + h;
+      xa = x0 + i * h;
+      ya = y0 + j * h;
+      xb = xa;
+      yb = ya + h;
     }
-    const fa = v[na] - level, fb = v[nbN] - level;
+    const fa = v[na] - level,
+      fb = v[nbN] - level;
     const t = fa === fb ? 0.5 : fa / (fa - fb);
-    const x = xa + t * (xb - xa), y = ya + t * (yb - ya);
+    const x = xa + t * (xb - xa),
+      y = ya + t * (yb - ya);
     return refine ? refine(x, y, na, nbN) : { x, y };
   };
   const out: Contour[] = [];
   const walk = (start: number, closed: boolean) => {
     const pts: ContourPt[] = [];
-    let prev = -1, cur = start;
+    let prev = -1,
+      cur = start;
     while (cur !== -1 && !seen[cur]) {
       seen[cur] = 1;
       pts.push(pointOf(cur));
-      const n0 = nb[2 * cur], n1 = nb[2 * cur + 1];
+      const n0 = nb[2 * cur],
+        n1 = nb[2 * cur + 1];
       const next = n0 !== -1 && n0 !== prev && !seen[n0] ? n0 : n1 !== -1 && n1 !== prev && !seen[n1] ? n1 : -1;
       prev = cur;
       cur = next;

@@ -21,7 +21,8 @@ export function familyDensity(spacing: number, lineWidth: number, families: numb
 
 /** Solve a decreasing function f(s) = target for s in [lo, hi] by bisection (60 steps: ~1e-12 relative). */
 export function solveDecreasing(f: (s: number) => number, target: number, lo: number, hi: number): number {
-  let a = lo, b = hi;
+  let a = lo,
+    b = hi;
   for (let i = 0; i < 60; i++) {
     const m = Math.sqrt(a * b);
     if (f(m) > target) a = m;

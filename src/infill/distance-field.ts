@@ -24,16 +24,23 @@ export function edgeDistance(ix: RegionIndex, e: number, x: number, y: number): 
 
 /** Signed distance field of the region on a grid of cell size h (µm), one cell of margin outside. */
 export function distanceField(ix: RegionIndex, h: number): DistanceField {
-  const x0 = ix.minX - h, y0 = ix.minY - h;
-  const nx = Math.ceil((ix.maxX - ix.minX) / h) + 2, ny = Math.ceil((ix.maxY - ix.minY) / h) + 2;
-  const W = nx + 1, N = W * (ny + 1);
+  const x0 = ix.minX - h,
+    y0 = ix.minY - h;
+  const nx = Math.ceil((ix.maxX - ix.minX) / h) + 2,
+    ny = Math.ceil((ix.maxY - ix.minY) / h) + 2;
+  const W = nx + 1,
+    N = W * (ny + 1);
   const best = new Float64Array(N).fill(Infinity);
   const edge = new Int32Array(N).fill(-1);
   const E = ix.edgeCount;
   // seed: nodes within about one cell of each edge
   for (let e = 0; e < E; e++) {
-    const ax = ix.ex0[e], ay = ix.ey0[e], bx = ix.ex1[e], by = ix.ey1[e];
-    const j0 = Math.max(0, Math.floor((Math.min(ay, by) - y0) / h) - 1), j1 = Math.min(ny, Math.ceil((Math.max(ay, by) - y0) / h) + 1);
+    const ax = ix.ex0[e],
+      ay = ix.ey0[e],
+      bx = ix.ex1[e],
+      by = ix.ey1[e];
+    const j0 = Math.max(0, Math.floor((Math.min(ay, by) - y0) / h) - 1),
+      j1 = Math.min(ny, Math.ceil((Math.max(ay, by) - y0) / h) + 1);
     for (let j = j0; j <= j1; j++) {
       const y = y0 + j * h;
       let xa: number, xb: number;
@@ -41,12 +48,15 @@ export function distanceField(ix: RegionIndex, h: number): DistanceField {
         xa = Math.min(ax, bx);
         xb = Math.max(ax, bx);
       } else {
-        const lo = Math.max(Math.min(ay, by), y - h), hi = Math.min(Math.max(ay, by), y + h);
-        const xl = ax + ((lo - ay) / (by - ay)) * (bx - ax), xh = ax + ((hi - ay) / (by - ay)) * (bx - ax);
+        const lo = Math.max(Math.min(ay, by), y - h),
+          hi = Math.min(Math.max(ay, by), y + h);
+        const xl = ax + ((lo - ay) / (by - ay)) * (bx - ax),
+          xh = ax + ((hi - ay) / (by - ay)) * (bx - ax);
         xa = Math.min(xl, xh);
         xb = Math.max(xl, xh);
       }
-      const i0 = Math.max(0, Math.floor((xa - x0) / h) - 1), i1 = Math.min(nx, Math.ceil((xb - x0) / h) + 1);
+      const i0 = Math.max(0, Math.floor((xa - x0) / h) - 1),
+        i1 = Math.min(nx, Math.ceil((xb - x0) / h) + 1);
       for (let i = i0; i <= i1; i++) {
         const n = j * W + i;
         const d2 = closestOnSegment(ix.ex0[e], ix.ey0[e], ix.ex1[e], ix.ey1[e], x0 + i * h, y).d2;
@@ -62,11 +72,15 @@ export function distanceField(ix: RegionIndex, h: number): DistanceField {
   const relax = (n: number, m: number, x: number, y: number) => {
     const e = edge[m];
     if (e < 0 || e === edge[n]) return;
-    const ax = ex0[e], ay = ey0[e], ux = ex1[e] - ax, uy = ey1[e] - ay;
+    const ax = ex0[e],
+      ay = ey0[e],
+      ux = ex1[e] - ax,
+      uy = ey1[e] - ay;
     const l2 = ux * ux + uy * uy;
     let t = l2 > 0 ? ((x - ax) * ux + (y - ay) * uy) / l2 : 0;
     t = t < 0 ? 0 : t > 1 ? 1 : t;
-    const dx = x - ax - t * ux, dy = y - ay - t * uy;
+    const dx = x - ax - t * ux,
+      dy = y - ay - t * uy;
     const d2 = dx * dx + dy * dy;
     if (d2 < best[n]) {
       best[n] = d2;
@@ -76,7 +90,8 @@ export function distanceField(ix: RegionIndex, h: number): DistanceField {
   for (let j = 0; j <= ny; j++) {
     const y = y0 + j * h;
     for (let i = 0; i <= nx; i++) {
-      const n = j * W + i, x = x0 + i * h;
+      const n = j * W + i,
+        x = x0 + i * h;
       if (i > 0) relax(n, n - 1, x, y);
       if (j > 0) {
         relax(n, n - W, x, y);
@@ -88,7 +103,8 @@ export function distanceField(ix: RegionIndex, h: number): DistanceField {
   for (let j = ny; j >= 0; j--) {
     const y = y0 + j * h;
     for (let i = nx; i >= 0; i--) {
-      const n = j * W + i, x = x0 + i * h;
+      const n = j * W + i,
+        x = x0 + i * h;
       if (i < nx) relax(n, n + 1, x, y);
       if (j < ny) {
         relax(n, n + W, x, y);
@@ -107,7 +123,8 @@ export function distanceField(ix: RegionIndex, h: number): DistanceField {
     const b = Math.min(ix.ny - 1, Math.max(0, Math.floor((y - ix.minY) / ix.cell)));
     for (let k = ix.bandStart[b], end = ix.bandStart[b + 1]; k < end; k++) {
       const e = ix.bandEdges[k];
-      const ay = ix.ey0[e], by = ix.ey1[e];
+      const ay = ix.ey0[e],
+        by = ix.ey1[e];
       if (ay > y !== by > y) xs.push(ix.ex0[e] + ((y - ay) / (by - ay)) * (ix.ex1[e] - ix.ex0[e]));
     }
     xs.sort((p, q) => p - q);
@@ -133,10 +150,23 @@ export function distanceField(ix: RegionIndex, h: number): DistanceField {
  * `tag` is the edge the point ends up nearest to when that nearest point lies inside the edge (not at a
  * vertex), else −1: the contour there runs parallel to that edge.
  */
-export function refineToDepth(ix: RegionIndex, f: DistanceField, x: number, y: number, na: number, nb: number, t: number): { x: number; y: number; tag: number } {
-  let px = x, py = y, tag = -1;
+export function refineToDepth(
+  ix: RegionIndex,
+  f: DistanceField,
+  x: number,
+  y: number,
+  na: number,
+  nb: number,
+  t: number,
+): { x: number; y: number; tag: number } {
+  let px = x,
+    py = y,
+    tag = -1;
   for (let it = 0; it < 2; it++) {
-    let bestD = Infinity, qx = 0, qy = 0, be = -1;
+    let bestD = Infinity,
+      qx = 0,
+      qy = 0,
+      be = -1;
     for (const e of [f.edge[na], f.edge[nb]]) {
       if (e < 0) continue;
       const r = edgeDistance(ix, e, px, py);
@@ -168,7 +198,8 @@ export function restoreCorners(ix: RegionIndex, pts: ContourPtIn[], closed: bool
   const out: ContourPtIn[] = [];
   const n = pts.length;
   const dir = (e: number) => {
-    const ux = ix.ex1[e] - ix.ex0[e], uy = ix.ey1[e] - ix.ey0[e];
+    const ux = ix.ex1[e] - ix.ex0[e],
+      uy = ix.ey1[e] - ix.ey0[e];
     const l = hypot(ux, uy);
     return { x: ux / l, y: uy / l };
   };
@@ -177,15 +208,19 @@ export function restoreCorners(ix: RegionIndex, pts: ContourPtIn[], closed: bool
     out.push(a);
     if (!closed && k === n - 1) break;
     const b = pts[(k + 1) % n];
-    const ea = a.tag ?? -1, eb = b.tag ?? -1;
+    const ea = a.tag ?? -1,
+      eb = b.tag ?? -1;
     if (ea < 0 || eb < 0 || ea === eb) continue;
-    const da = dir(ea), db = dir(eb);
+    const da = dir(ea),
+      db = dir(eb);
     const den = da.x * db.y - da.y * db.x;
     if (Math.abs(den) < 1e-6) continue;
     // a + s·da = b + r·db
-    const wx = b.x - a.x, wy = b.y - a.y;
+    const wx = b.x - a.x,
+      wy = b.y - a.y;
     const sA = (wx * db.y - wy * db.x) / den;
-    const cx = a.x + sA * da.x, cy = a.y + sA * da.y;
+    const cx = a.x + sA * da.x,
+      cy = a.y + sA * da.y;
     if (hypot(cx - a.x, cy - a.y) > reach || hypot(cx - b.x, cy - b.y) > reach) continue;
     out.push({ x: cx, y: cy, tag: -1 });
   }

@@ -62,7 +62,14 @@ function lengthOf(paths: readonly Pt[][], closed: boolean): number {
   return l;
 }
 
-function runPattern(pattern: InfillPattern, layer: InfillLayerInput, params: InfillParams, prepared: unknown, ctx: Ctx, factor: number): Run {
+function runPattern(
+  pattern: InfillPattern,
+  layer: InfillLayerInput,
+  params: InfillParams,
+  prepared: unknown,
+  ctx: Ctx,
+  factor: number,
+): Run {
   const p = factor === 1 ? params : { ...params, density: params.density * factor };
   const out = pattern.generate(layer, p, prepared);
   const pieces: Piece[] = [];
@@ -71,11 +78,13 @@ function runPattern(pattern: InfillPattern, layer: InfillLayerInput, params: Inf
     ctx.index ??= indexRegion(ctx.geom);
     clipPolylines(ctx.index, out.lines, pieces);
   }
-  const w = params.lineWidth, A = ctx.geom.area;
+  const w = params.lineWidth,
+    A = ctx.geom.area;
   let own = out.loops.length ? lengthOf(out.loops, true) : 0;
   for (const pc of pieces) own += polylineLength(pc.pts);
   const lineShare = (own * w) / A;
-  const linkReach = p.connect && out.link !== false && out.linkSpacing && out.linkSpacing > 0 ? LINK_REACH * out.linkSpacing : 0;
+  const linkReach =
+    p.connect && out.link !== false && out.linkSpacing && out.linkSpacing > 0 ? LINK_REACH * out.linkSpacing : 0;
   return { pieces, loops: out.loops, linkReach, fitted: !!out.fitted, lineShare, factor };
 }
 
@@ -88,7 +97,13 @@ function quantize(f: number): number {
  * file): at most MAX_RUNS runs, the best one wins. 'volume' and 'support' patterns and patterns that fitted
  * themselves are run once.
  */
-function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: InfillParams, prepared: unknown, ctx: Ctx): Run {
+function runCorrected(
+  pattern: InfillPattern,
+  layer: InfillLayerInput,
+  params: InfillParams,
+  prepared: unknown,
+  ctx: Ctx,
+): Run {
   const d = params.density;
   const model = pattern.densityModel ?? 'layer';
   if (model === 'volume') return runPattern(pattern, layer, params, prepared, ctx, 1);
@@ -102,7 +117,8 @@ function runCorrected(pattern: InfillPattern, layer: InfillLayerInput, params: I
   const tried = new Set<number>([1]);
   for (let k = 1; k < MAX_RUNS && err(best) > CORRECTION_SETTLED * d; k++) {
     // bisect between the nearest runs on either side of the setting, else scale by what was missing
-    let below: Run | null = null, above: Run | null = null;
+    let below: Run | null = null,
+      above: Run | null = null;
     for (const r of runs) {
       if (total(r) < d && (!below || r.factor > below.factor)) below = r;
       if (total(r) > d && (!above || r.factor < above.factor)) above = r;
@@ -131,7 +147,13 @@ const MAX_CORRECTION = 1.5;
  * zero-length and duplicate segments, ordered from `start` (default: the region's lower-left corner):
  * loops first, then lines. `prepared` is this layer's entry of the pattern's `prepare` result, if it has one.
  */
-export function generateInfill(patternId: PatternId, layer: InfillLayerInput, params: InfillParams, prepared?: unknown, start?: Pt): InfillResult {
+export function generateInfill(
+  patternId: PatternId,
+  layer: InfillLayerInput,
+  params: InfillParams,
+  prepared?: unknown,
+  start?: Pt,
+): InfillResult {
   const pattern: InfillPattern | undefined = PATTERNS[patternId];
   if (!pattern) throw new Error(`unknown infill pattern '${String(patternId)}'`);
   if (!(params.density > 0) || layer.region.length === 0) return { lines: [], loops: [] };

@@ -5,12 +5,21 @@
 import type { ExPolygon, Pt } from '../geometry/types.js';
 
 /** Closest point to (x, y) on segment a→b: parameter t ∈ [0, 1], the point, squared distance. */
-export function closestOnSegment(ax: number, ay: number, bx: number, by: number, x: number, y: number): { t: number; x: number; y: number; d2: number } {
-  const ux = bx - ax, uy = by - ay;
+export function closestOnSegment(
+  ax: number,
+  ay: number,
+  bx: number,
+  by: number,
+  x: number,
+  y: number,
+): { t: number; x: number; y: number; d2: number } {
+  const ux = bx - ax,
+    uy = by - ay;
   const l2 = ux * ux + uy * uy;
   let t = l2 > 0 ? ((x - ax) * ux + (y - ay) * uy) / l2 : 0;
   t = t < 0 ? 0 : t > 1 ? 1 : t;
-  const px = ax + t * ux, py = ay + t * uy;
+  const px = ax + t * ux,
+    py = ay + t * uy;
   return { t, x: px, y: py, d2: (px - x) * (px - x) + (py - y) * (py - y) };
 }
 
@@ -19,7 +28,8 @@ export function rowCrossings(rings: readonly (readonly Pt[])[], y: number, out: 
   out.length = 0;
   for (const ring of rings) {
     for (let i = 0, k = ring.length - 1; i < ring.length; k = i++) {
-      const a = ring[k], b = ring[i];
+      const a = ring[k],
+        b = ring[i];
       if (a.y > y !== b.y > y) out.push(a.x + ((y - a.y) / (b.y - a.y)) * (b.x - a.x));
     }
   }
@@ -34,16 +44,27 @@ export function ringsOf(region: readonly ExPolygon[]): Pt[][] {
 }
 
 /** Bounds of the region's outer rings in the frame rotated by `angleRad` about `origin` (u along, v across). */
-export function frameBounds(region: readonly ExPolygon[], origin: Pt, angleRad: number): { uMin: number; uMax: number; vMin: number; vMax: number } {
-  const c = Math.cos(angleRad), s = Math.sin(angleRad);
-  let uMin = Infinity, uMax = -Infinity, vMin = Infinity, vMax = -Infinity;
-  for (const e of region) for (const p of e.outer) {
-    const dx = p.x - origin.x, dy = p.y - origin.y;
-    const u = dx * c + dy * s, v = -dx * s + dy * c;
-    if (u < uMin) uMin = u;
-    if (u > uMax) uMax = u;
-    if (v < vMin) vMin = v;
-    if (v > vMax) vMax = v;
-  }
+export function frameBounds(
+  region: readonly ExPolygon[],
+  origin: Pt,
+  angleRad: number,
+): { uMin: number; uMax: number; vMin: number; vMax: number } {
+  const c = Math.cos(angleRad),
+    s = Math.sin(angleRad);
+  let uMin = Infinity,
+    uMax = -Infinity,
+    vMin = Infinity,
+    vMax = -Infinity;
+  for (const e of region)
+    for (const p of e.outer) {
+      const dx = p.x - origin.x,
+        dy = p.y - origin.y;
+      const u = dx * c + dy * s,
+        v = -dx * s + dy * c;
+      if (u < uMin) uMin = u;
+      if (u > uMax) uMax = u;
+      if (v < vMin) vMin = v;
+      if (v > vMax) vMax = v;
+    }
   return { uMin, uMax, vMin, vMax };
 }

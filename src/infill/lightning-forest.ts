@@ -92,7 +92,8 @@ export function prune(f: Forest, dist: number): Forest {
         dead[v] = 1;
         break;
       }
-      const dx = f.xs[p] - f.xs[v], dy = f.ys[p] - f.ys[v];
+      const dx = f.xs[p] - f.xs[v],
+        dy = f.ys[p] - f.ys[v];
       const len = hypot(dx, dy);
       if (len <= rem) {
         dead[v] = 1;
@@ -119,13 +120,18 @@ export function straighten(f: Forest, dist: number): void {
   const only = new Int32Array(n).fill(-1);
   for (let v = 0; v < n; v++) if (f.par[v] >= 0 && kids[f.par[v]] === 1) only[f.par[v]] = v;
   for (let v = 0; v < n; v++) {
-    const p = f.par[v], c = only[v];
+    const p = f.par[v],
+      c = only[v];
     if (p < 0 || c < 0) continue;
-    const ax = f.xs[p], ay = f.ys[p], ux = f.xs[c] - ax, uy = f.ys[c] - ay;
+    const ax = f.xs[p],
+      ay = f.ys[p],
+      ux = f.xs[c] - ax,
+      uy = f.ys[c] - ay;
     const l2 = ux * ux + uy * uy;
     if (l2 === 0) continue;
     const t = Math.max(0, Math.min(1, ((f.xs[v] - ax) * ux + (f.ys[v] - ay) * uy) / l2));
-    const tx = ax + t * ux - f.xs[v], ty = ay + t * uy - f.ys[v];
+    const tx = ax + t * ux - f.xs[v],
+      ty = ay + t * uy - f.ys[v];
     const d = hypot(tx, ty);
     if (d === 0) continue;
     const s = Math.min(1, dist / d);
@@ -140,7 +146,8 @@ export function fitToRegion(f: Forest, ix: RegionIndex, snapDist: number): Fores
   const dead = new Uint8Array(n);
   const scratch: Hit[] = [];
   for (let v = 0; v < n; v++) {
-    const x = f.xs[v], y = f.ys[v];
+    const x = f.xs[v],
+      y = f.ys[v];
     if (!pointInside(ix, x, y) && !nearestBoundary(ix, x, y, ON_BOUNDARY_UM)) dead[v] = 1;
   }
   for (let v = 0; v < n; v++) {
@@ -172,16 +179,22 @@ export function fitToRegion(f: Forest, ix: RegionIndex, snapDist: number): Fores
 /** Spatial hash of forest edges (child → parent), for distance queries. Edges are only ever added. */
 class EdgeGrid {
   private readonly cells = new Map<number, number[]>();
-  constructor(private readonly f: Forest, private readonly cell: number) {
+  constructor(
+    private readonly f: Forest,
+    private readonly cell: number,
+  ) {
     for (let v = 0; v < f.par.length; v++) if (f.par[v] >= 0) this.add(v);
   }
   private key(cx: number, cy: number): number {
     return (cx + 1048576) * 2097152 + (cy + 1048576);
   }
   add(v: number): void {
-    const f = this.f, p = f.par[v];
-    const x0 = Math.min(f.xs[v], f.xs[p]), x1 = Math.max(f.xs[v], f.xs[p]);
-    const y0 = Math.min(f.ys[v], f.ys[p]), y1 = Math.max(f.ys[v], f.ys[p]);
+    const f = this.f,
+      p = f.par[v];
+    const x0 = Math.min(f.xs[v], f.xs[p]),
+      x1 = Math.max(f.xs[v], f.xs[p]);
+    const y0 = Math.min(f.ys[v], f.ys[p]),
+      y1 = Math.max(f.ys[v], f.ys[p]);
     for (let cx = Math.floor(x0 / this.cell); cx <= Math.floor(x1 / this.cell); cx++) {
       for (let cy = Math.floor(y0 / this.cell); cy <= Math.floor(y1 / this.cell); cy++) {
         const k = this.key(cx, cy);
@@ -197,7 +210,8 @@ class EdgeGrid {
     let best: { v: number; t: number; x: number; y: number; d: number } | null = null;
     let bestD = maxDist;
     const r = Math.ceil(maxDist / this.cell);
-    const cx0 = Math.floor(x / this.cell), cy0 = Math.floor(y / this.cell);
+    const cx0 = Math.floor(x / this.cell),
+      cy0 = Math.floor(y / this.cell);
     for (let cx = cx0 - r; cx <= cx0 + r; cx++) {
       for (let cy = cy0 - r; cy <= cy0 + r; cy++) {
         const list = this.cells.get(this.key(cx, cy));
@@ -221,18 +235,21 @@ class EdgeGrid {
 /** Grid points (spacing g, anchored at origin) inside the areas, row by row. */
 function samplePoints(areas: readonly ExPolygon[], g: number, origin: Pt): Pt[] {
   const rings = ringsOf(areas);
-  let minY = Infinity, maxY = -Infinity;
-  for (const r of rings) for (const p of r) {
-    if (p.y < minY) minY = p.y;
-    if (p.y > maxY) maxY = p.y;
-  }
+  let minY = Infinity,
+    maxY = -Infinity;
+  for (const r of rings)
+    for (const p of r) {
+      if (p.y < minY) minY = p.y;
+      if (p.y > maxY) maxY = p.y;
+    }
   const out: Pt[] = [];
   const xs: number[] = [];
   for (let j = Math.ceil((minY - origin.y) / g); origin.y + j * g <= maxY; j++) {
     const y = origin.y + j * g;
     rowCrossings(rings, y, xs);
     for (let k = 0; k + 1 < xs.length; k += 2) {
-      for (let i = Math.ceil((xs[k] - origin.x) / g); origin.x + i * g <= xs[k + 1]; i++) out.push({ x: origin.x + i * g, y });
+      for (let i = Math.ceil((xs[k] - origin.x) / g); origin.x + i * g <= xs[k + 1]; i++)
+        out.push({ x: origin.x + i * g, y });
     }
   }
   return out;
@@ -249,7 +266,10 @@ export function grow(f: Forest, need: readonly ExPolygon[], ix: RegionIndex, fp:
   const samples = samplePoints(need, g, fp.origin)
     .filter((p) => pointInside(ix, p.x, p.y))
     .map((p) => ({ p, b: nearestBoundary(ix, p.x, p.y, FAR_UM) }))
-    .filter((s) => s.b !== null && s.b.dist > reach) as Array<{ p: Pt; b: NonNullable<ReturnType<typeof nearestBoundary>> }>;
+    .filter((s) => s.b !== null && s.b.dist > reach) as Array<{
+    p: Pt;
+    b: NonNullable<ReturnType<typeof nearestBoundary>>;
+  }>;
   samples.sort((a, b) => b.b.dist - a.b.dist || a.p.y - b.p.y || a.p.x - b.p.x);
   const grid = new EdgeGrid(f, fp.radius);
   const scratch: Hit[] = [];
@@ -258,7 +278,8 @@ export function grow(f: Forest, need: readonly ExPolygon[], ix: RegionIndex, fp:
     const t = grid.nearest(p.x, p.y, b.dist);
     let attach = -1;
     if (t && !segmentCrosses(ix, p.x, p.y, t.x, t.y, ON_BOUNDARY_UM, scratch)) {
-      const c = t.v, q = f.par[c];
+      const c = t.v,
+        q = f.par[c];
       const len = hypot(f.xs[q] - f.xs[c], f.ys[q] - f.ys[c]);
       if (t.t * len < 1) attach = c;
       else if ((1 - t.t) * len < 1) attach = q;

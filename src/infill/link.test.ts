@@ -40,6 +40,10 @@ test('ends farther apart than the reach along the boundary stay apart', () => {
 test('a hole: lines cut by it are linked round it without crossing it', () => {
   const region = TEST_SHAPES['disc with hole']();
   const r = generateInfill('lines', { layerIndex: 0, z: 0.2, layerHeight: 0.2, region }, testParams(0.2));
-  const unlinked = generateInfill('lines', { layerIndex: 0, z: 0.2, layerHeight: 0.2, region }, testParams(0.2, { connect: false }));
+  const unlinked = generateInfill(
+    'lines',
+    { layerIndex: 0, z: 0.2, layerHeight: 0.2, region },
+    testParams(0.2, { connect: false }),
+  );
   assert.ok(r.lines.length < unlinked.lines.length / 4, `${r.lines.length} vs ${unlinked.lines.length}`);
 });

@@ -54,17 +54,24 @@ export function linkPieces(geom: RegionGeom, pieces: readonly Piece[], maxGap: n
       if (m < 2) return [];
       const L = geom.rings[a.ring].length;
       const k = rank[x];
-      const nx = list[(k + 1) % m], pv = list[(k - 1 + m) % m];
+      const nx = list[(k + 1) % m],
+        pv = list[(k - 1 + m) % m];
       const gNext = k + 1 < m ? nx.pos - a.pos : nx.pos + L - a.pos;
       const gPrev = k > 0 ? a.pos - pv.pos : a.pos + L - pv.pos;
-      return [[nx.node, gNext, true], [pv.node, gPrev, false]];
+      return [
+        [nx.node, gNext, true],
+        [pv.node, gPrev, false],
+      ];
     };
     const uf = new Int32Array(P);
     for (let i = 0; i < P; i++) uf[i] = i;
     const options = (x: number): Array<[number, number, boolean]> =>
-      neighbours(x).filter(([y, gap]) => gap <= maxGap && (y >> 1) !== (x >> 1) && partner[y] === -1 && find(uf, y >> 1) !== find(uf, x >> 1));
+      neighbours(x).filter(
+        ([y, gap]) => gap <= maxGap && y >> 1 !== x >> 1 && partner[y] === -1 && find(uf, y >> 1) !== find(uf, x >> 1),
+      );
     const link = (x: number, y: number, gap: number, forward: boolean) => {
-      const ax = anchorOf(x) as Anchor, ay = anchorOf(y) as Anchor;
+      const ax = anchorOf(x) as Anchor,
+        ay = anchorOf(y) as Anchor;
       const raw = forward ? boundaryPath(geom, ax, ay) : boundaryPath(geom, ay, ax).reverse();
       const path: Pt[] = [];
       for (const q of raw) pushPt(path, rnd(q.x, q.y));
@@ -86,10 +93,11 @@ export function linkPieces(geom: RegionGeom, pieces: readonly Piece[], maxGap: n
         x = y ^ 1;
       }
     };
-    const degree = (x: number) => neighbours(x).filter(([y, gap]) => gap <= maxGap && (y >> 1) !== (x >> 1)).length;
+    const degree = (x: number) => neighbours(x).filter(([y, gap]) => gap <= maxGap && y >> 1 !== x >> 1).length;
     const starts: Array<{ piece: number; end: number; deg: number }> = [];
     for (let i = 0; i < P; i++) {
-      const d0 = degree(2 * i), d1 = degree(2 * i + 1);
+      const d0 = degree(2 * i),
+        d1 = degree(2 * i + 1);
       starts.push(d0 <= d1 ? { piece: i, end: 2 * i, deg: d0 } : { piece: i, end: 2 * i + 1, deg: d1 });
     }
     starts.sort((a, b) => a.deg - b.deg || a.piece - b.piece);

@@ -7,20 +7,68 @@ import { hexSide } from './patterns/hexagons.js';
 const W = 400;
 
 test('one line: length × width plus two half-disc caps', () => {
-  const a = extrudedArea({ lines: [[{ x: 0, y: 0 }, { x: 10_000, y: 0 }]], loops: [] }, W);
+  const a = extrudedArea(
+    {
+      lines: [
+        [
+          { x: 0, y: 0 },
+          { x: 10_000, y: 0 },
+        ],
+      ],
+      loops: [],
+    },
+    W,
+  );
   const expected = 10_000 * W + Math.PI * (W / 2) ** 2;
   assert.ok(Math.abs(a - expected) / expected < 0.01, `${a} vs ${expected}`);
 });
 
 test('a crossing counts once', () => {
-  const a = extrudedArea({ lines: [[{ x: -5_000, y: 0 }, { x: 5_000, y: 0 }], [{ x: 0, y: -5_000 }, { x: 0, y: 5_000 }]], loops: [] }, W);
+  const a = extrudedArea(
+    {
+      lines: [
+        [
+          { x: -5_000, y: 0 },
+          { x: 5_000, y: 0 },
+        ],
+        [
+          { x: 0, y: -5_000 },
+          { x: 0, y: 5_000 },
+        ],
+      ],
+      loops: [],
+    },
+    W,
+  );
   const expected = 2 * (10_000 * W + Math.PI * (W / 2) ** 2) - W * W;
   assert.ok(Math.abs(a - expected) / expected < 0.01, `${a} vs ${expected}`);
 });
 
 test('inside a region only the inner part counts: a line on the boundary is half in', () => {
-  const region = [{ outer: [{ x: 0, y: 0 }, { x: 10_000, y: 0 }, { x: 10_000, y: 10_000 }, { x: 0, y: 10_000 }], holes: [] }];
-  const a = extrudedArea({ lines: [[{ x: 2_000, y: 0 }, { x: 8_000, y: 0 }]], loops: [] }, W, region);
+  const region = [
+    {
+      outer: [
+        { x: 0, y: 0 },
+        { x: 10_000, y: 0 },
+        { x: 10_000, y: 10_000 },
+        { x: 0, y: 10_000 },
+      ],
+      holes: [],
+    },
+  ];
+  const a = extrudedArea(
+    {
+      lines: [
+        [
+          { x: 2_000, y: 0 },
+          { x: 8_000, y: 0 },
+        ],
+      ],
+      loops: [],
+    },
+    W,
+    region,
+  );
   const expected = 6_000 * (W / 2) + (Math.PI * (W / 2) ** 2) / 2; // the inner halves of the caps too
   assert.ok(Math.abs(a - expected) / expected < 0.02, `${a} vs ${expected}`);
 });

@@ -20,7 +20,8 @@ interface Raster {
 }
 
 function makeRaster(minX: number, minY: number, maxX: number, maxY: number, p: number): Raster {
-  const W = Math.max(1, Math.ceil((maxX - minX) / p)), H = Math.max(1, Math.ceil((maxY - minY) / p));
+  const W = Math.max(1, Math.ceil((maxX - minX) / p)),
+    H = Math.max(1, Math.ceil((maxY - minY) / p));
   return { minX, minY, p, W, H, bits: new Uint8Array(W * H) };
 }
 
@@ -33,18 +34,21 @@ function fillRow(R: Raster, j: number, xlo: number, xhi: number, value: number):
 /** Interval of x where a·x + b ∈ [lo, hi]; null if empty. */
 function linearRange(a: number, b: number, lo: number, hi: number): [number, number] | null {
   if (a === 0) return b >= lo && b <= hi ? [-Infinity, Infinity] : null;
-  const x0 = (lo - b) / a, x1 = (hi - b) / a;
+  const x0 = (lo - b) / a,
+    x1 = (hi - b) / a;
   return a > 0 ? [x0, x1] : [x1, x0];
 }
 
 function drawCapsule(R: Raster, A: Pt, B: Pt, r: number): void {
-  const dx = B.x - A.x, dy = B.y - A.y;
+  const dx = B.x - A.x,
+    dy = B.y - A.y;
   const len = hypot(dx, dy);
   const j0 = Math.max(0, Math.ceil((Math.min(A.y, B.y) - r - R.minY) / R.p - 0.5));
   const j1 = Math.min(R.H - 1, Math.floor((Math.max(A.y, B.y) + r - R.minY) / R.p - 0.5));
   for (let j = j0; j <= j1; j++) {
     const y = R.minY + (j + 0.5) * R.p;
-    let lo = Infinity, hi = -Infinity;
+    let lo = Infinity,
+      hi = -Infinity;
     for (const C of [A, B]) {
       const h = r * r - (y - C.y) * (y - C.y);
       if (h >= 0) {
@@ -58,7 +62,8 @@ function drawCapsule(R: Raster, A: Pt, B: Pt, r: number): void {
       const t = linearRange(dx / (len * len), (-A.x * dx + (y - A.y) * dy) / (len * len), 0, 1);
       const n = linearRange(-dy / len, (A.x * dy + (y - A.y) * dx) / len, -r, r);
       if (t && n) {
-        const a = Math.max(t[0], n[0]), b = Math.min(t[1], n[1]);
+        const a = Math.max(t[0], n[0]),
+          b = Math.min(t[1], n[1]);
         if (a <= b) {
           lo = Math.min(lo, a);
           hi = Math.max(hi, b);
@@ -82,21 +87,33 @@ function drawRegion(R: Raster, region: readonly ExPolygon[]): void {
  * Extruded footprint of an infill result, µm²: the union of all lines and loops drawn `lineWidthUm` wide
  * (crossings counted once), measured by rasterising. With `region`, only the part inside the region counts.
  */
-export function extrudedArea(result: InfillResult, lineWidthUm: number, region?: readonly ExPolygon[], pixelUm?: number): number {
+export function extrudedArea(
+  result: InfillResult,
+  lineWidthUm: number,
+  region?: readonly ExPolygon[],
+  pixelUm?: number,
+): number {
   const r = lineWidthUm / 2;
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   const paths: Array<{ pts: Pt[]; closed: boolean }> = [
     ...result.lines.map((pts) => ({ pts, closed: false })),
     ...result.loops.map((pts) => ({ pts, closed: true })),
   ];
-  for (const { pts } of paths) for (const p of pts) {
-    if (p.x < minX) minX = p.x;
-    if (p.y < minY) minY = p.y;
-    if (p.x > maxX) maxX = p.x;
-    if (p.y > maxY) maxY = p.y;
-  }
+  for (const { pts } of paths)
+    for (const p of pts) {
+      if (p.x < minX) minX = p.x;
+      if (p.y < minY) minY = p.y;
+      if (p.x > maxX) maxX = p.x;
+      if (p.y > maxY) maxY = p.y;
+    }
   if (minX > maxX) return 0;
-  minX -= r; minY -= r; maxX += r; maxY += r;
+  minX -= r;
+  minY -= r;
+  maxX += r;
+  maxY += r;
   const p = pixelUm ?? Math.max(lineWidthUm / 10, Math.max(maxX - minX, maxY - minY) / 6000);
   const R = makeRaster(minX, minY, maxX, maxY, p);
   for (const { pts, closed } of paths) {
@@ -115,7 +132,12 @@ export function extrudedArea(result: InfillResult, lineWidthUm: number, region?:
 }
 
 /** Measured density: extruded footprint inside the region over the region's area. */
-export function measuredDensity(result: InfillResult, region: readonly ExPolygon[], lineWidthUm: number, pixelUm?: number): number {
+export function measuredDensity(
+  result: InfillResult,
+  region: readonly ExPolygon[],
+  lineWidthUm: number,
+  pixelUm?: number,
+): number {
   const a = regionArea(region);
   return a > 0 ? extrudedArea(result, lineWidthUm, region, pixelUm) / a : 0;
 }
@@ -123,11 +145,14 @@ export function measuredDensity(result: InfillResult, region: readonly ExPolygon
 /** Total length of all lines and loops, µm. */
 export function pathLength(result: InfillResult): number {
   let l = 0;
-  for (const pts of result.lines) for (let i = 1; i < pts.length; i++) l += hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
-  for (const pts of result.loops) for (let i = 0; i < pts.length; i++) {
-    const a = pts[i], b = pts[(i + 1) % pts.length];
-    l += hypot(b.x - a.x, b.y - a.y);
-  }
+  for (const pts of result.lines)
+    for (let i = 1; i < pts.length; i++) l += hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
+  for (const pts of result.loops)
+    for (let i = 0; i < pts.length; i++) {
+      const a = pts[i],
+        b = pts[(i + 1) % pts.length];
+      l += hypot(b.x - a.x, b.y - a.y);
+    }
   return l;
 }
 
@@ -137,7 +162,12 @@ export function pathLength(result: InfillResult): number {
  * overlap, and are left out, as the G-code analyser leaves them out (src/analysis/infill-density.ts): only
  * what lies deeper than `insetUm` (default a tenth of the line width) counts, over the area that deep.
  */
-export function lineDensity(result: InfillResult, region: readonly ExPolygon[], lineWidthUm: number, insetUm = lineWidthUm / 10): number {
+export function lineDensity(
+  result: InfillResult,
+  region: readonly ExPolygon[],
+  lineWidthUm: number,
+  insetUm = lineWidthUm / 10,
+): number {
   const inner = offset(region, -insetUm);
   const a = regionArea(inner);
   if (!(a > 0)) return 0;

@@ -11,7 +11,8 @@ const W = 450;
 
 function segments(lines: readonly Polyline[]): Segment[] {
   const out: Segment[] = [];
-  for (const l of lines) for (let i = 1; i < l.length; i++) out.push({ x0: l[i - 1].x, y0: l[i - 1].y, x1: l[i].x, y1: l[i].y });
+  for (const l of lines)
+    for (let i = 1; i < l.length; i++) out.push({ x0: l[i - 1].x, y0: l[i - 1].y, x1: l[i].x, y1: l[i].y });
   return out;
 }
 
@@ -20,7 +21,10 @@ function squareWithHole(): ExPolygon[] {
   const hole: Pt[] = [];
   for (let i = 0; i < 64; i++) {
     const a = (-2 * Math.PI * i) / 64;
-    hole.push({ x: Math.round(SHAPE_CENTRE.x + 6000 * Math.cos(a)), y: Math.round(SHAPE_CENTRE.y + 6000 * Math.sin(a)) });
+    hole.push({
+      x: Math.round(SHAPE_CENTRE.x + 6000 * Math.cos(a)),
+      y: Math.round(SHAPE_CENTRE.y + 6000 * Math.sin(a)),
+    });
   }
   return [{ outer: square()[0].outer, holes: [hole] }];
 }
@@ -28,7 +32,11 @@ function squareWithHole(): ExPolygon[] {
 /** A comb (a square with four V notches from the top) and a square beside it: rows that split and end. */
 function comb(): ExPolygon[] {
   const c = SHAPE_CENTRE;
-  const outer: Pt[] = [{ x: c.x - 15000, y: c.y - 15000 }, { x: c.x + 15000, y: c.y - 15000 }, { x: c.x + 15000, y: c.y + 15000 }];
+  const outer: Pt[] = [
+    { x: c.x - 15000, y: c.y - 15000 },
+    { x: c.x + 15000, y: c.y - 15000 },
+    { x: c.x + 15000, y: c.y + 15000 },
+  ];
   // four V notches down from the top edge
   for (let t = 3; t >= 0; t--) {
     const x = c.x - 15000 + t * 7500;
@@ -37,7 +45,12 @@ function comb(): ExPolygon[] {
   return [{ outer, holes: [] }, ...square(8000, { x: c.x + 40000, y: c.y })];
 }
 
-const REGIONS: Record<string, () => ExPolygon[]> = { ...TEST_SHAPES, 'square with a hole': squareWithHole, hull: () => hull(), comb };
+const REGIONS: Record<string, () => ExPolygon[]> = {
+  ...TEST_SHAPES,
+  'square with a hole': squareWithHole,
+  hull: () => hull(),
+  comb,
+};
 
 test('monotonic fill never lays a line between two lines already printed, at any angle', () => {
   for (const [name, make] of Object.entries(REGIONS)) {
@@ -45,7 +58,11 @@ test('monotonic fill never lays a line between two lines already printed, at any
       const lines = monotonicFill(make(), angle, W, SHAPE_CENTRE);
       const r = monotonicViolations(segments(lines), angle, W, 2 * W);
       assert.ok(r.lines > 20, `${name} at ${angle}°: ${r.lines} lines checked`);
-      assert.equal(r.violations, 0, `${name} at ${angle}°: ${r.violations} of ${r.lines} lines laid between printed ones`);
+      assert.equal(
+        r.violations,
+        0,
+        `${name} at ${angle}°: ${r.violations} of ${r.lines} lines laid between printed ones`,
+      );
     }
   }
 });
@@ -53,7 +70,13 @@ test('monotonic fill never lays a line between two lines already printed, at any
 test('the check finds what nearest-first lines do wrong around a hole', () => {
   // the rule is not trivially met: ordinary zig-zag lines, ordered nearest-first, break it here
   let broken = 0;
-  for (const angle of [0, 45, 90]) broken += monotonicViolations(segments(solidFill(squareWithHole(), angle, W, SHAPE_CENTRE)), angle, W, 2 * W).violations;
+  for (const angle of [0, 45, 90])
+    broken += monotonicViolations(
+      segments(solidFill(squareWithHole(), angle, W, SHAPE_CENTRE)),
+      angle,
+      W,
+      2 * W,
+    ).violations;
   broken += monotonicViolations(segments(solidFill(comb(), 90, W, SHAPE_CENTRE)), 90, W, 2 * W).violations;
   assert.ok(broken > 0, 'nearest-first lines break the monotonic rule somewhere');
 });
@@ -78,6 +101,9 @@ test('monotonic fill lays the same lines as solid fill, joined along the boundar
 test('a convex region is one back-and-forth path; the output is the same every time', () => {
   const lines = monotonicFill(square(), 30, W, SHAPE_CENTRE);
   assert.equal(lines.length, 1);
-  assert.deepEqual(monotonicFill(squareWithHole(), 45, W, SHAPE_CENTRE), monotonicFill(squareWithHole(), 45, W, SHAPE_CENTRE));
+  assert.deepEqual(
+    monotonicFill(squareWithHole(), 45, W, SHAPE_CENTRE),
+    monotonicFill(squareWithHole(), 45, W, SHAPE_CENTRE),
+  );
   assert.deepEqual(monotonicFill([], 45, W, SHAPE_CENTRE), []);
 });

@@ -38,17 +38,23 @@ function rowsOf(geom: RegionGeom, angleDeg: number, spacingUm: number, origin: P
   const pieces: Piece[] = [];
   clipSweep(geom, { angle: angleDeg, spacing: spacingUm, offset: 0 }, origin, pieces);
   const a = (angleDeg * Math.PI) / 180;
-  const c = Math.cos(a), s = Math.sin(a);
+  const c = Math.cos(a),
+    s = Math.sin(a);
   const P = pieces.length;
   const v0 = -origin.x * s + origin.y * c;
-  const row = new Int32Array(P), lo = new Float64Array(P), hi = new Float64Array(P);
+  const row = new Int32Array(P),
+    lo = new Float64Array(P),
+    hi = new Float64Array(P);
   for (let i = 0; i < P; i++) {
     const [p, q] = pieces[i].pts;
     row[i] = Math.round((-p.x * s + p.y * c - v0) / spacingUm);
     lo[i] = p.x * c + p.y * s;
     hi[i] = q.x * c + q.y * s;
   }
-  const nextCount = new Int32Array(P), nextFirst = new Int32Array(P), prevCount = new Int32Array(P), prevStart = new Int32Array(P);
+  const nextCount = new Int32Array(P),
+    nextFirst = new Int32Array(P),
+    prevCount = new Int32Array(P),
+    prevStart = new Int32Array(P);
   // two rows of n and m intervals overlap in at most n + m − 1 pairs
   const prevList = new Int32Array(2 * P);
   let edges = 0;
@@ -115,7 +121,8 @@ class RingEnds {
   /** +1 when `y` follows `x` along their ring, −1 when it precedes it, 0 when they are not neighbours. */
   side(x: number, ring: number, y: number): number {
     const list = this.#lists[ring];
-    const m = list.length, k = this.#rank[x];
+    const m = list.length,
+      k = this.#rank[x];
     if (m < 2 || k < 0) return 0;
     if (list[(k + 1) % m] === y) return 1;
     if (list[(k - 1 + m) % m] === y) return -1;
@@ -134,7 +141,13 @@ export interface MonotonicOptions {
  * Monotonic solid fill of `region`: lines `spacingUm` apart at `angleDeg`, phase anchored at `origin`, in
  * print order, each to be printed from its first point.
  */
-export function monotonicFill(region: readonly ExPolygon[], angleDeg: number, spacingUm: number, origin: Pt, options: MonotonicOptions = {}): Polyline[] {
+export function monotonicFill(
+  region: readonly ExPolygon[],
+  angleDeg: number,
+  spacingUm: number,
+  origin: Pt,
+  options: MonotonicOptions = {},
+): Polyline[] {
   if (region.length === 0 || !(spacingUm > 0)) return [];
   const geom = regionGeom(region);
   const rows = rowsOf(geom, angleDeg, spacingUm, origin);
@@ -149,7 +162,8 @@ export function monotonicFill(region: readonly ExPolygon[], angleDeg: number, sp
   runs.forEach((run, k) => {
     const first = run[0];
     const deps = new Set<number>();
-    for (let e = rows.prevStart[first], end = e + rows.prevCount[first]; e < end; e++) deps.add(runOf[rows.prevList[e]]);
+    for (let e = rows.prevStart[first], end = e + rows.prevCount[first]; e < end; e++)
+      deps.add(runOf[rows.prevList[e]]);
     waiting[k] = deps.size;
     for (const d of deps) after[d].push(k);
   });
@@ -162,10 +176,13 @@ export function monotonicFill(region: readonly ExPolygon[], angleDeg: number, sp
   const d2 = (p: Pt) => (p.x - at.x) ** 2 + (p.y - at.y) ** 2;
   while (ready.length) {
     // the nearest run that may print, entered at the nearer end of its first piece
-    let best = 0, bestD = Infinity, bestForward = true;
+    let best = 0,
+      bestD = Infinity,
+      bestForward = true;
     for (let r = 0; r < ready.length; r++) {
       const pts = pieces[runs[ready[r]][0]].pts;
-      const da = d2(pts[0]), db = d2(pts[1]);
+      const da = d2(pts[0]),
+        db = d2(pts[1]);
       const d = Math.min(da, db);
       if (d < bestD || (d === bestD && ready[r] < ready[best])) {
         best = r;
@@ -182,16 +199,28 @@ export function monotonicFill(region: readonly ExPolygon[], angleDeg: number, sp
 }
 
 /** Print one run back and forth from its first piece (entered at its start when `forward`); returns where it ends. */
-function emitRun(geom: RegionGeom, pieces: readonly Piece[], run: readonly number[], forward: boolean, ends: RingEnds | null, maxGap: number, out: Polyline[]): Pt {
+function emitRun(
+  geom: RegionGeom,
+  pieces: readonly Piece[],
+  run: readonly number[],
+  forward: boolean,
+  ends: RingEnds | null,
+  maxGap: number,
+  out: Polyline[],
+): Pt {
   let line: Pt[] = [];
   let exit: { node: number; anchor: Anchor | null } | null = null;
   for (const i of run) {
     const p = pieces[i];
     const inNode = forward ? 2 * i : 2 * i + 1;
     const inAnchor = forward ? p.a0 : p.a1;
-    const from = forward ? p.pts[0] : p.pts[1], to = forward ? p.pts[1] : p.pts[0];
+    const from = forward ? p.pts[0] : p.pts[1],
+      to = forward ? p.pts[1] : p.pts[0];
     if (exit) {
-      const link = ends && exit.anchor && inAnchor ? connector(geom, ends, exit.node, exit.anchor, inNode, inAnchor, maxGap) : null;
+      const link =
+        ends && exit.anchor && inAnchor
+          ? connector(geom, ends, exit.node, exit.anchor, inNode, inAnchor, maxGap)
+          : null;
       if (link) for (const q of link) pushPt(line, q);
       else {
         if (line.length >= 2) out.push(line);
@@ -208,7 +237,15 @@ function emitRun(geom: RegionGeom, pieces: readonly Piece[], run: readonly numbe
 }
 
 /** The boundary path from one piece end to the next when they are neighbours on one ring and close enough. */
-function connector(geom: RegionGeom, ends: RingEnds, x: number, ax: Anchor, y: number, ay: Anchor, maxGap: number): Pt[] | null {
+function connector(
+  geom: RegionGeom,
+  ends: RingEnds,
+  x: number,
+  ax: Anchor,
+  y: number,
+  ay: Anchor,
+  maxGap: number,
+): Pt[] | null {
   if (ax.ring !== ay.ring) return null;
   const side = ends.side(x, ax.ring, y);
   if (side === 0) return null;

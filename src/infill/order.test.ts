@@ -5,11 +5,15 @@ import { orderPaths, travelLength } from './order.js';
 
 function shuffled(n: number, seed: number): Pt[][] {
   let s = seed;
-  const rnd = () => ((s = (s * 1103515245 + 12345) % 2147483648) / 2147483648);
+  const rnd = () => (s = (s * 1103515245 + 12345) % 2147483648) / 2147483648;
   const out: Pt[][] = [];
   for (let i = 0; i < n; i++) {
-    const x = Math.round(rnd() * 200_000), y = Math.round(rnd() * 200_000);
-    out.push([{ x, y }, { x: x + Math.round((rnd() - 0.5) * 3_000), y: y + Math.round((rnd() - 0.5) * 3_000) }]);
+    const x = Math.round(rnd() * 200_000),
+      y = Math.round(rnd() * 200_000);
+    out.push([
+      { x, y },
+      { x: x + Math.round((rnd() - 0.5) * 3_000), y: y + Math.round((rnd() - 0.5) * 3_000) },
+    ]);
   }
   return out;
 }
@@ -20,7 +24,8 @@ test('ordering keeps every path once (possibly reversed) and cuts travel', () =>
   const { lines: out } = orderPaths(lines, [], start);
   assert.equal(out.length, lines.length);
   const key = (l: Pt[]) => {
-    const a = `${l[0].x},${l[0].y}`, b = `${l[l.length - 1].x},${l[l.length - 1].y}`;
+    const a = `${l[0].x},${l[0].y}`,
+      b = `${l[l.length - 1].x},${l[l.length - 1].y}`;
     return a < b ? a + '|' + b : b + '|' + a;
   };
   assert.deepEqual(out.map(key).sort(), lines.map(key).sort());
@@ -35,12 +40,18 @@ test('ordering is about linear: 16× the paths cost well under 64× the time', (
     return performance.now() - t;
   };
   time(2_000);
-  const small = Math.max(0.5, time(2_000)), big = time(32_000);
+  const small = Math.max(0.5, time(2_000)),
+    big = time(32_000);
   assert.ok(big < 64 * small, `${big} ms vs ${small} ms`);
 });
 
 test('loops are rotated to start nearest to where the nozzle is', () => {
-  const loop = [{ x: 0, y: 0 }, { x: 10, y: 0 }, { x: 10, y: 10 }, { x: 0, y: 10 }];
+  const loop = [
+    { x: 0, y: 0 },
+    { x: 10, y: 0 },
+    { x: 10, y: 10 },
+    { x: 0, y: 10 },
+  ];
   const { loops } = orderPaths([], [loop], { x: 11, y: 11 });
   assert.deepEqual(loops[0][0], { x: 10, y: 10 });
 });

@@ -6,7 +6,11 @@ import { orderLoops, orderPolylines } from '../geometry/nearest-order.js';
 import { hypot, type Pt } from '../geometry/types.js';
 
 /** Order loops (first) and then lines by nearest-neighbour chaining from `start`. */
-export function orderPaths(lines: readonly Pt[][], loops: readonly Pt[][], start: Pt): { lines: Pt[][]; loops: Pt[][] } {
+export function orderPaths(
+  lines: readonly Pt[][],
+  loops: readonly Pt[][],
+  start: Pt,
+): { lines: Pt[][]; loops: Pt[][] } {
   const L = orderLoops(loops, start);
   return { loops: L.loops, lines: orderPolylines(lines, L.end) };
 }

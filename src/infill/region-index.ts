@@ -61,7 +61,9 @@ export interface RegionIndex extends RegionGeom {
 function ringOf(poly: Polygon): Ring | null {
   const n = poly.length;
   if (n < 3) return null;
-  const xs = new Float64Array(n), ys = new Float64Array(n), cum = new Float64Array(n + 1);
+  const xs = new Float64Array(n),
+    ys = new Float64Array(n),
+    cum = new Float64Array(n + 1);
   for (let i = 0; i < n; i++) {
     xs[i] = poly[i].x;
     ys[i] = poly[i].y;
@@ -83,8 +85,13 @@ function signedArea(r: Ring): number {
 export function regionGeom(region: readonly ExPolygon[]): RegionGeom {
   const rings: Ring[] = [];
   const edgeStart: number[] = [];
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
-  let area = 0, perimeter = 0, edgeCount = 0;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
+  let area = 0,
+    perimeter = 0,
+    edgeCount = 0;
   const add = (poly: Polygon, hole: boolean) => {
     const r = ringOf(poly);
     if (!r) return;
@@ -95,7 +102,8 @@ export function regionGeom(region: readonly ExPolygon[]): RegionGeom {
     const a = Math.abs(signedArea(r));
     area += hole ? -a : a;
     for (let i = 0; i < r.n; i++) {
-      const x = r.xs[i], y = r.ys[i];
+      const x = r.xs[i],
+        y = r.ys[i];
       if (x < minX) minX = x;
       if (x > maxX) maxX = x;
       if (y < minY) minY = y;
@@ -124,7 +132,8 @@ function cols(ix: RegionIndex, xa: number, xb: number): [number, number] {
  * `visit(cellIndex)` is called once per cell.
  */
 function forCells(ix: RegionIndex, x0: number, y0: number, x1: number, y1: number, visit: (c: number) => void): void {
-  const yLo = Math.min(y0, y1), yHi = Math.max(y0, y1);
+  const yLo = Math.min(y0, y1),
+    yHi = Math.max(y0, y1);
   const r0 = Math.max(0, Math.floor((yLo - GRID_PAD_UM - ix.minY) / ix.cell));
   const r1 = Math.min(ix.ny - 1, Math.floor((yHi + GRID_PAD_UM - ix.minY) / ix.cell));
   const dy = y1 - y0;
@@ -134,8 +143,10 @@ function forCells(ix: RegionIndex, x0: number, y0: number, x1: number, y1: numbe
       xa = x0;
       xb = x1;
     } else {
-      const bandLo = ix.minY + r * ix.cell - GRID_PAD_UM, bandHi = ix.minY + (r + 1) * ix.cell + GRID_PAD_UM;
-      const ya = Math.max(yLo, bandLo), yb = Math.min(yHi, bandHi);
+      const bandLo = ix.minY + r * ix.cell - GRID_PAD_UM,
+        bandHi = ix.minY + (r + 1) * ix.cell + GRID_PAD_UM;
+      const ya = Math.max(yLo, bandLo),
+        yb = Math.min(yHi, bandHi);
       xa = x0 + ((ya - y0) / dy) * (x1 - x0);
       xb = x0 + ((yb - y0) / dy) * (x1 - x0);
     }
@@ -147,8 +158,12 @@ function forCells(ix: RegionIndex, x0: number, y0: number, x1: number, y1: numbe
 /** Build the spatial index over a region's edges. */
 export function indexRegion(geom: RegionGeom): RegionIndex {
   const E = geom.edgeCount;
-  const ex0 = new Float64Array(E), ey0 = new Float64Array(E), ex1 = new Float64Array(E), ey1 = new Float64Array(E);
-  const edgeRing = new Int32Array(E), edgeLocal = new Int32Array(E);
+  const ex0 = new Float64Array(E),
+    ey0 = new Float64Array(E),
+    ex1 = new Float64Array(E),
+    ey1 = new Float64Array(E);
+  const edgeRing = new Int32Array(E),
+    edgeLocal = new Int32Array(E);
   for (let r = 0; r < geom.rings.length; r++) {
     const ring = geom.rings[r];
     const base = geom.edgeStart[r];
@@ -163,14 +178,23 @@ export function indexRegion(geom: RegionGeom): RegionIndex {
       edgeLocal[e] = i;
     }
   }
-  const w = Math.max(1, geom.maxX - geom.minX), h = Math.max(1, geom.maxY - geom.minY);
+  const w = Math.max(1, geom.maxX - geom.minX),
+    h = Math.max(1, geom.maxY - geom.minY);
   const targetCells = Math.min(1 << 16, Math.max(64, 2 * E));
   const cell = Math.max(50, Math.sqrt((w * h) / targetCells), Math.max(w, h) / 1024);
-  const nx = Math.max(1, Math.ceil(w / cell) + 1), ny = Math.max(1, Math.ceil(h / cell) + 1);
+  const nx = Math.max(1, Math.ceil(w / cell) + 1),
+    ny = Math.max(1, Math.ceil(h / cell) + 1);
   const ix: RegionIndex = {
     ...geom,
-    ex0, ey0, ex1, ey1, edgeRing, edgeLocal,
-    cell, nx, ny,
+    ex0,
+    ey0,
+    ex1,
+    ey1,
+    edgeRing,
+    edgeLocal,
+    cell,
+    nx,
+    ny,
     cellStart: new Int32Array(nx * ny + 1),
     cellEdges: new Int32Array(0),
     bandStart: new Int32Array(ny + 1),
@@ -194,7 +218,8 @@ export function indexRegion(geom: RegionGeom): RegionIndex {
   // bands
   const bc = new Int32Array(ny);
   const bandRange = (e: number): [number, number] => {
-    const lo = Math.min(ey0[e], ey1[e]), hi = Math.max(ey0[e], ey1[e]);
+    const lo = Math.min(ey0[e], ey1[e]),
+      hi = Math.max(ey0[e], ey1[e]);
     return [Math.max(0, Math.floor((lo - ix.minY) / cell)), Math.min(ny - 1, Math.floor((hi - ix.minY) / cell))];
   };
   for (let e = 0; e < E; e++) {
@@ -226,7 +251,8 @@ export function pointInside(ix: RegionIndex, x: number, y: number): boolean {
   let inside = false;
   for (let k = ix.bandStart[b], end = ix.bandStart[b + 1]; k < end; k++) {
     const e = ix.bandEdges[k];
-    const ay = ix.ey0[e], by = ix.ey1[e];
+    const ay = ix.ey0[e],
+      by = ix.ey1[e];
     if (ay > y !== by > y) {
       const xi = ix.ex0[e] + ((y - ay) / (by - ay)) * (ix.ex1[e] - ix.ex0[e]);
       if (x < xi) inside = !inside;
@@ -243,11 +269,14 @@ export interface Hit {
 }
 
 function hitEdge(ix: RegionIndex, e: number, x0: number, y0: number, dx: number, dy: number, out: Hit[]): void {
-  const ax = ix.ex0[e], ay = ix.ey0[e];
-  const ux = ix.ex1[e] - ax, uy = ix.ey1[e] - ay;
+  const ax = ix.ex0[e],
+    ay = ix.ey0[e];
+  const ux = ix.ex1[e] - ax,
+    uy = ix.ey1[e] - ay;
   const den = dx * uy - dy * ux;
   if (den === 0) return;
-  const wx = ax - x0, wy = ay - y0;
+  const wx = ax - x0,
+    wy = ay - y0;
   const t = (wx * uy - wy * ux) / den;
   if (t < 0 || t > 1) return;
   const u = (wx * dy - wy * dx) / den;
@@ -259,24 +288,30 @@ function hitEdge(ix: RegionIndex, e: number, x0: number, y0: number, dx: number,
 export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number, y1: number, out: Hit[]): void {
   if (out.length) out.length = 0;
   // fast path: a short segment well inside one cell that holds no edge cannot cross anything
-  const fx0 = (x0 - ix.minX) / ix.cell, fy0 = (y0 - ix.minY) / ix.cell;
-  const fx1 = (x1 - ix.minX) / ix.cell, fy1 = (y1 - ix.minY) / ix.cell;
-  const cx = Math.floor(fx0), cy = Math.floor(fy0);
-  const dx = x1 - x0, dy = y1 - y0;
+  const fx0 = (x0 - ix.minX) / ix.cell,
+    fy0 = (y0 - ix.minY) / ix.cell;
+  const fx1 = (x1 - ix.minX) / ix.cell,
+    fy1 = (y1 - ix.minY) / ix.cell;
+  const cx = Math.floor(fx0),
+    cy = Math.floor(fy0);
+  const dx = x1 - x0,
+    dy = y1 - y0;
   if (cx === Math.floor(fx1) && cy === Math.floor(fy1) && cx >= 0 && cy >= 0 && cx < ix.nx && cy < ix.ny) {
     const pad = GRID_PAD_UM / ix.cell;
     const inner = (f: number) => f - Math.floor(f) > pad && Math.ceil(f) - f > pad;
     if (inner(fx0) && inner(fy0) && inner(fx1) && inner(fy1)) {
       // a short segment well inside one cell meets only that cell's edges
       const c = cy * ix.nx + cx;
-      for (let k = ix.cellStart[c], end = ix.cellStart[c + 1]; k < end; k++) hitEdge(ix, ix.cellEdges[k], x0, y0, dx, dy, out);
+      for (let k = ix.cellStart[c], end = ix.cellStart[c + 1]; k < end; k++)
+        hitEdge(ix, ix.cellEdges[k], x0, y0, dx, dy, out);
       if (out.length > 1) out.sort((a, b) => a.t - b.t || a.edge - b.edge);
       return;
     }
   }
   // general case: the cells of each row the segment passes (as in forCells, inlined: this is hot)
   const stamp = ++ix.stampNow.v;
-  const yLo = Math.min(y0, y1), yHi = Math.max(y0, y1);
+  const yLo = Math.min(y0, y1),
+    yHi = Math.max(y0, y1);
   const r0 = Math.max(0, Math.floor((yLo - GRID_PAD_UM - ix.minY) / ix.cell));
   const r1 = Math.min(ix.ny - 1, Math.floor((yHi + GRID_PAD_UM - ix.minY) / ix.cell));
   for (let r = r0; r <= r1; r++) {
@@ -285,7 +320,8 @@ export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number,
       xa = x0;
       xb = x1;
     } else {
-      const ya = Math.max(yLo, ix.minY + r * ix.cell - GRID_PAD_UM), yb = Math.min(yHi, ix.minY + (r + 1) * ix.cell + GRID_PAD_UM);
+      const ya = Math.max(yLo, ix.minY + r * ix.cell - GRID_PAD_UM),
+        yb = Math.min(yHi, ix.minY + (r + 1) * ix.cell + GRID_PAD_UM);
       xa = x0 + ((ya - y0) / dy) * dx;
       xb = x0 + ((yb - y0) / dy) * dx;
     }
@@ -304,7 +340,15 @@ export function segmentHits(ix: RegionIndex, x0: number, y0: number, x1: number,
 }
 
 /** Whether the open segment crosses the boundary anywhere except within `endSlackUm` of its ends. */
-export function segmentCrosses(ix: RegionIndex, x0: number, y0: number, x1: number, y1: number, endSlackUm: number, scratch: Hit[]): boolean {
+export function segmentCrosses(
+  ix: RegionIndex,
+  x0: number,
+  y0: number,
+  x1: number,
+  y1: number,
+  endSlackUm: number,
+  scratch: Hit[],
+): boolean {
   segmentHits(ix, x0, y0, x1, y1, scratch);
   if (scratch.length === 0) return false;
   const len = hypot(x1 - x0, y1 - y0);
@@ -314,7 +358,11 @@ export function segmentCrosses(ix: RegionIndex, x0: number, y0: number, x1: numb
 }
 
 /** Anchor (ring, arc position) of the point at parameter u on global edge e. */
-export function anchorOnEdge(ix: RegionGeom & { edgeRing?: Int32Array; edgeLocal?: Int32Array }, e: number, u: number): Anchor {
+export function anchorOnEdge(
+  ix: RegionGeom & { edgeRing?: Int32Array; edgeLocal?: Int32Array },
+  e: number,
+  u: number,
+): Anchor {
   let r = 0;
   let i = 0;
   if (ix.edgeRing && ix.edgeLocal) {
@@ -340,7 +388,8 @@ export interface Nearest {
 export function nearestBoundary(ix: RegionIndex, x: number, y: number, maxDist: number): Nearest | null {
   let best: Nearest | null = null;
   let bestD2 = maxDist * maxDist;
-  const cx = Math.floor((x - ix.minX) / ix.cell), cy = Math.floor((y - ix.minY) / ix.cell);
+  const cx = Math.floor((x - ix.minX) / ix.cell),
+    cy = Math.floor((y - ix.minY) / ix.cell);
   const maxRing = Math.ceil(maxDist / ix.cell) + 1;
   const stamp = ++ix.stampNow.v;
   for (let rr = 0; rr <= maxRing; rr++) {
@@ -349,7 +398,8 @@ export function nearestBoundary(ix: RegionIndex, x: number, y: number, maxDist: 
       const ringMin = (rr - 1) * ix.cell;
       if (ringMin > 0 && ringMin * ringMin > bestD2) break;
     }
-    const y0 = cy - rr, y1 = cy + rr;
+    const y0 = cy - rr,
+      y1 = cy + rr;
     for (let gy = y0; gy <= y1; gy++) {
       if (gy < 0 || gy >= ix.ny) continue;
       const edgeRow = gy === y0 || gy === y1;
@@ -380,13 +430,15 @@ export function boundaryPath(geom: RegionGeom, a: Anchor, b: Anchor): Array<{ x:
     let p = pos % L;
     if (p < 0) p += L;
     // binary search the edge containing p
-    let lo = 0, hi = ring.n - 1;
+    let lo = 0,
+      hi = ring.n - 1;
     while (lo < hi) {
       const mid = (lo + hi + 1) >> 1;
       if (ring.cum[mid] <= p) lo = mid;
       else hi = mid - 1;
     }
-    const i = lo, j = i + 1 === ring.n ? 0 : i + 1;
+    const i = lo,
+      j = i + 1 === ring.n ? 0 : i + 1;
     const el = ring.cum[i + 1] - ring.cum[i];
     const u = el > 0 ? (p - ring.cum[i]) / el : 0;
     return { i, x: ring.xs[i] + u * (ring.xs[j] - ring.xs[i]), y: ring.ys[i] + u * (ring.ys[j] - ring.ys[i]) };
@@ -397,7 +449,7 @@ export function boundaryPath(geom: RegionGeom, a: Anchor, b: Anchor): Array<{ x:
   const out = [{ x: pa.x, y: pa.y }];
   // vertices strictly after a.pos up to b.pos (walk forward)
   let i = pa.i;
-  let travelled = ring.cum[i + 1] - (a.pos % L < 0 ? a.pos % L + L : a.pos % L);
+  let travelled = ring.cum[i + 1] - (a.pos % L < 0 ? (a.pos % L) + L : a.pos % L);
   while (travelled < gap) {
     i = i + 1 === ring.n ? 0 : i + 1;
     out.push({ x: ring.xs[i], y: ring.ys[i] });

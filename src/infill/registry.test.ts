@@ -36,7 +36,8 @@ function outsideLength(r: InfillResult, region: ExPolygon[], grow: number): numb
 
 function segmentProblems(r: InfillResult): { zero: number; dup: number } {
   const seen = new Set<string>();
-  let zero = 0, dup = 0;
+  let zero = 0,
+    dup = 0;
   const seg = (a: Pt, b: Pt) => {
     if (a.x === b.x && a.y === b.y) {
       zero++;
@@ -73,11 +74,16 @@ for (const id of PATTERN_IDS) {
           const period = pattern.zPeriod ? pattern.zPeriod(params) : 1;
           const k = 8;
           measured = 0;
-          for (let i = 0; i < k; i++) measured += lineDensity(generateInfill(id, layerAt(region, 0.1 + (period * (i + 0.5)) / k), params), region, W) / k;
+          for (let i = 0; i < k; i++)
+            measured +=
+              lineDensity(generateInfill(id, layerAt(region, 0.1 + (period * (i + 0.5)) / k), params), region, W) / k;
         } else measured = lineDensity(r, region, W);
         figures.push(`${(d * 100).toFixed(0)}% → ${(measured * 100).toFixed(1)}%`);
         if (model !== 'support') {
-          assert.ok(Math.abs(measured - d) <= TOLERANCE * d, `${id} on ${shapeName} at ${d}: measured ${measured.toFixed(4)}`);
+          assert.ok(
+            Math.abs(measured - d) <= TOLERANCE * d,
+            `${id} on ${shapeName} at ${d}: measured ${measured.toFixed(4)}`,
+          );
         }
         // containment: nothing outside the region grown by half a line width; centre lines inside (±3 µm rounding)
         assert.ok(outsideLength(r, region, W / 2) < 1, `${id} ${d}: outside region + w/2`);
@@ -93,7 +99,11 @@ for (const id of PATTERN_IDS) {
   test(`${id}: centering ${pattern.followsRegion ? 'has no effect (follows the region)' : 'moves the pattern phase'}`, () => {
     const region = TEST_SHAPES.square();
     const a = generateInfill(id, layerAt(region, 1.4), testParams(0.2));
-    const b = generateInfill(id, layerAt(region, 1.4), testParams(0.2, { centering: 'global', origin: { x: 117_345, y: 98_765 } }));
+    const b = generateInfill(
+      id,
+      layerAt(region, 1.4),
+      testParams(0.2, { centering: 'global', origin: { x: 117_345, y: 98_765 } }),
+    );
     if (pattern.followsRegion) assert.deepEqual(b, a);
     else assert.notDeepEqual(b, a);
   });

@@ -19,14 +19,22 @@ test('every skin pattern covers the region with beads one spacing apart and stay
       assert.ok(d > 0.9 && d < 1.1, `${id} on ${name}: covers ${d.toFixed(3)}`);
       // every point within the region (a micrometre of rounding aside)
       const grown = offset(region, 2);
-      for (const p of [...f.lines, ...f.loops].flat()) assert.ok(grown.some((a) => pointInArea(p, a)), `${id} on ${name}: (${p.x}, ${p.y}) outside`);
+      for (const p of [...f.lines, ...f.loops].flat())
+        assert.ok(
+          grown.some((a) => pointInArea(p, a)),
+          `${id} on ${name}: (${p.x}, ${p.y}) outside`,
+        );
     }
   }
 });
 
 test('lines is the solid fill as it always was; monotonic and concentric keep their order', () => {
   const region = TEST_SHAPES['disc with hole']();
-  assert.deepEqual(SKIN_PATTERNS.lines.fill(region, 45, W, SHAPE_CENTRE), { lines: solidFill(region, 45, W, SHAPE_CENTRE), loops: [], ordered: false });
+  assert.deepEqual(SKIN_PATTERNS.lines.fill(region, 45, W, SHAPE_CENTRE), {
+    lines: solidFill(region, 45, W, SHAPE_CENTRE),
+    loops: [],
+    ordered: false,
+  });
   assert.equal(SKIN_PATTERNS.monotonic.fill(region, 45, W, SHAPE_CENTRE).ordered, true);
   assert.equal(SKIN_PATTERNS.concentric.fill(region, 45, W, SHAPE_CENTRE).ordered, true);
 });
@@ -42,8 +50,11 @@ test('concentric skin is closed loops inwards from the boundary, each a spacing 
   }
   // outside in: each loop's area smaller than the one before, its side W·2 shorter
   for (let k = 1; k < loops.length; k++) {
-    const side = (l: typeof loops[number]) => Math.max(...l.map((p) => p.x)) - Math.min(...l.map((p) => p.x));
-    assert.ok(Math.abs(side(loops[k - 1]) - side(loops[k]) - 2 * W) <= 2, `loop ${k}: ${side(loops[k - 1])} → ${side(loops[k])}`);
+    const side = (l: (typeof loops)[number]) => Math.max(...l.map((p) => p.x)) - Math.min(...l.map((p) => p.x));
+    assert.ok(
+      Math.abs(side(loops[k - 1]) - side(loops[k]) - 2 * W) <= 2,
+      `loop ${k}: ${side(loops[k - 1])} → ${side(loops[k])}`,
+    );
   }
   // a region with a hole: the hole's ring is a loop too (clockwise), printed after its outer ring
   const disc = concentricLoops(TEST_SHAPES['disc with hole'](), W);

@@ -50,12 +50,21 @@ export const SKIN_PATTERNS: Readonly<Record<SkinPatternId, SkinPattern>> = {
   lines: {
     id: 'lines',
     description: 'Parallel lines, joined where neighbouring ends meet along the boundary, nearest first.',
-    fill: (region, angle, spacing, origin) => ({ lines: solidFill(region, angle, spacing, origin), loops: [], ordered: false }),
+    fill: (region, angle, spacing, origin) => ({
+      lines: solidFill(region, angle, spacing, origin),
+      loops: [],
+      ordered: false,
+    }),
   },
   monotonic: {
     id: 'monotonic',
-    description: 'Parallel lines, each laid beside lines already printed on one side only, so no seam shows where fronts of lines meet.',
-    fill: (region, angle, spacing, origin) => ({ lines: monotonicFill(region, angle, spacing, origin), loops: [], ordered: true }),
+    description:
+      'Parallel lines, each laid beside lines already printed on one side only, so no seam shows where fronts of lines meet.',
+    fill: (region, angle, spacing, origin) => ({
+      lines: monotonicFill(region, angle, spacing, origin),
+      loops: [],
+      ordered: true,
+    }),
   },
   concentric: {
     id: 'concentric',

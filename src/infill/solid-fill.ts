@@ -24,12 +24,19 @@ export interface SolidFillOptions {
  * Solid (skin) fill: one family of lines `spacingUm` apart at `angleDeg`, phase anchored at `origin`,
  * clipped exactly by the scanline engine, zig-zag linked and ordered.
  */
-export function solidFill(region: readonly ExPolygon[], angleDeg: number, spacingUm: number, origin: Pt, options: SolidFillOptions = {}): Polyline[] {
+export function solidFill(
+  region: readonly ExPolygon[],
+  angleDeg: number,
+  spacingUm: number,
+  origin: Pt,
+  options: SolidFillOptions = {},
+): Polyline[] {
   if (region.length === 0 || !(spacingUm > 0)) return [];
   const geom = regionGeom(region);
   const pieces: Piece[] = [];
   clipSweep(geom, { angle: angleDeg, spacing: spacingUm, offset: 0 }, origin, pieces);
-  const lines = options.connect === false ? pieces.map((p) => p.pts) : linkPieces(geom, pieces, LINK_REACH * spacingUm).lines;
+  const lines =
+    options.connect === false ? pieces.map((p) => p.pts) : linkPieces(geom, pieces, LINK_REACH * spacingUm).lines;
   const clean = cleanPaths(lines, [], 0);
   if (options.order === false) return clean.lines;
   return orderPaths(clean.lines, [], options.start ?? { x: geom.minX, y: geom.minY }).lines;

@@ -15,7 +15,9 @@ function len(l: readonly Pt[]): number {
 
 /** The same family as long raw lines, for the facade's general clipper. */
 function rawLines(angle: number, spacing: number, origin: Pt): Pt[][] {
-  const a = (angle * Math.PI) / 180, c = Math.cos(a), s = Math.sin(a);
+  const a = (angle * Math.PI) / 180,
+    c = Math.cos(a),
+    s = Math.sin(a);
   const out: Pt[][] = [];
   for (let k = -40; k <= 40; k++) {
     const v = k * spacing;
@@ -37,7 +39,10 @@ for (const [name, make] of Object.entries(shapes)) {
       const pieces: Piece[] = [];
       clipSweep(geom, { angle, spacing: 1_700, offset: 333 }, SHAPE_CENTRE, pieces);
       // (offset: no line runs exactly along an edge, where either answer is right)
-      const o = { x: SHAPE_CENTRE.x - 333 * Math.sin((angle * Math.PI) / 180), y: SHAPE_CENTRE.y + 333 * Math.cos((angle * Math.PI) / 180) };
+      const o = {
+        x: SHAPE_CENTRE.x - 333 * Math.sin((angle * Math.PI) / 180),
+        y: SHAPE_CENTRE.y + 333 * Math.cos((angle * Math.PI) / 180),
+      };
       const ref = clipLines(rawLines(angle, 1_700, o), region);
       const mine = pieces.map((p) => len(p.pts)).reduce((a, b) => a + b, 0);
       const theirs = ref.map(len).reduce((a, b) => a + b, 0);
@@ -54,13 +59,18 @@ test('every scanline segment end is anchored on the boundary point it reports', 
   clipSweep(geom, { angle: 30, spacing: 900, offset: 123 }, SHAPE_CENTRE, pieces);
   assert.ok(pieces.length > 20);
   for (const p of pieces) {
-    for (const [pt, a] of [[p.pts[0], p.a0], [p.pts[p.pts.length - 1], p.a1]] as const) {
+    for (const [pt, a] of [
+      [p.pts[0], p.a0],
+      [p.pts[p.pts.length - 1], p.a1],
+    ] as const) {
       assert.ok(a, 'anchored');
       const ring = geom.rings[a.ring];
       let i = 0;
       while (i + 1 < ring.n && ring.cum[i + 1] <= a.pos) i++;
-      const j = (i + 1) % ring.n, t = (a.pos - ring.cum[i]) / (ring.cum[i + 1] - ring.cum[i]);
-      const x = ring.xs[i] + t * (ring.xs[j] - ring.xs[i]), y = ring.ys[i] + t * (ring.ys[j] - ring.ys[i]);
+      const j = (i + 1) % ring.n,
+        t = (a.pos - ring.cum[i]) / (ring.cum[i + 1] - ring.cum[i]);
+      const x = ring.xs[i] + t * (ring.xs[j] - ring.xs[i]),
+        y = ring.ys[i] + t * (ring.ys[j] - ring.ys[i]);
       assert.ok(Math.hypot(x - pt.x, y - pt.y) < 1, `${x},${y} vs ${pt.x},${pt.y}`);
     }
   }
@@ -78,11 +88,24 @@ test('offset shifts a family along its normal; lines pass through origin + offse
 test('a scanline through vertices and along edges is counted once', () => {
   // a diamond: the line through the side vertices, and a square whose edges lie on scanlines
   const c = SHAPE_CENTRE;
-  const diamond = [{ outer: [{ x: c.x, y: c.y - 5_000 }, { x: c.x + 5_000, y: c.y }, { x: c.x, y: c.y + 5_000 }, { x: c.x - 5_000, y: c.y }], holes: [] }];
+  const diamond = [
+    {
+      outer: [
+        { x: c.x, y: c.y - 5_000 },
+        { x: c.x + 5_000, y: c.y },
+        { x: c.x, y: c.y + 5_000 },
+        { x: c.x - 5_000, y: c.y },
+      ],
+      holes: [],
+    },
+  ];
   const pieces: Piece[] = [];
   clipSweep(regionGeom(diamond), { angle: 0, spacing: 5_000, offset: 0 }, c, pieces);
   assert.equal(pieces.length, 1);
-  assert.deepEqual(pieces[0].pts, [{ x: c.x - 5_000, y: c.y }, { x: c.x + 5_000, y: c.y }]);
+  assert.deepEqual(pieces[0].pts, [
+    { x: c.x - 5_000, y: c.y },
+    { x: c.x + 5_000, y: c.y },
+  ]);
   const sq = TEST_SHAPES.square();
   const p2: Piece[] = [];
   clipSweep(regionGeom(sq), { angle: 0, spacing: 15_000, offset: 0 }, c, p2);
@@ -92,11 +115,13 @@ test('a scanline through vertices and along edges is counted once', () => {
 
 test('a convex ring swept on its own gives the segments the general sweep cuts', () => {
   let seed = 3;
-  const rand = () => ((seed = (seed * 1664525 + 1013904223) >>> 0) / 2 ** 32);
+  const rand = () => (seed = (seed * 1664525 + 1013904223) >>> 0) / 2 ** 32;
   let compared = 0;
   for (let round = 0; round < 200; round++) {
     const sides = 3 + Math.floor(rand() * 40);
-    const r = 300 + rand() * 8000, cx = rand() * 50_000, cy = rand() * 50_000;
+    const r = 300 + rand() * 8000,
+      cx = rand() * 50_000,
+      cy = rand() * 50_000;
     const ring: Pt[] = [];
     for (let k = 0; k < sides; k++) {
       const a = (2 * Math.PI * k) / sides;

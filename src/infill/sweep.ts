@@ -17,25 +17,43 @@ const MIN_SEGMENT_UM = 1;
 export function clipSweep(geom: RegionGeom, sweep: Sweep, origin: Pt, out: Piece[]): void {
   if (!(sweep.spacing > 0) || geom.edgeCount === 0) return;
   const a = (sweep.angle * Math.PI) / 180;
-  const c = Math.cos(a), s = Math.sin(a);
+  const c = Math.cos(a),
+    s = Math.sin(a);
   const E = geom.edgeCount;
   // per edge, in the sweep frame: vLo, vHi, u at vLo, du/dv, and the arc data to anchor a crossing
-  const vLo = new Float64Array(E), vHi = new Float64Array(E), uLo = new Float64Array(E), dudv = new Float64Array(E);
-  const ring = new Int32Array(E), edgeLocal = new Int32Array(E), fromStart = new Uint8Array(E);
+  const vLo = new Float64Array(E),
+    vHi = new Float64Array(E),
+    uLo = new Float64Array(E),
+    dudv = new Float64Array(E);
+  const ring = new Int32Array(E),
+    edgeLocal = new Int32Array(E),
+    fromStart = new Uint8Array(E);
   let m = 0;
-  let vMin = Infinity, vMax = -Infinity;
+  let vMin = Infinity,
+    vMax = -Infinity;
   for (let r = 0; r < geom.rings.length; r++) {
     const R = geom.rings[r];
     for (let i = 0; i < R.n; i++) {
       const j = i + 1 === R.n ? 0 : i + 1;
-      const x0 = R.xs[i], y0 = R.ys[i], x1 = R.xs[j], y1 = R.ys[j];
-      const v0 = -x0 * s + y0 * c, v1 = -x1 * s + y1 * c;
+      const x0 = R.xs[i],
+        y0 = R.ys[i],
+        x1 = R.xs[j],
+        y1 = R.ys[j];
+      const v0 = -x0 * s + y0 * c,
+        v1 = -x1 * s + y1 * c;
       if (v0 === v1) continue;
-      const u0 = x0 * c + y0 * s, u1 = x1 * c + y1 * s;
+      const u0 = x0 * c + y0 * s,
+        u1 = x1 * c + y1 * s;
       if (v0 < v1) {
-        vLo[m] = v0; vHi[m] = v1; uLo[m] = u0; fromStart[m] = 1;
+        vLo[m] = v0;
+        vHi[m] = v1;
+        uLo[m] = u0;
+        fromStart[m] = 1;
       } else {
-        vLo[m] = v1; vHi[m] = v0; uLo[m] = u1; fromStart[m] = 0;
+        vLo[m] = v1;
+        vHi[m] = v0;
+        uLo[m] = u1;
+        fromStart[m] = 0;
       }
       dudv[m] = (u1 - u0) / (v1 - v0);
       ring[m] = r;
@@ -76,7 +94,8 @@ export function clipSweep(geom: RegionGeom, sweep: Sweep, origin: Pt, out: Piece
     if (n < 2) continue;
     // insertion sort (crossing counts per scanline are small)
     for (let i = 1; i < n; i++) {
-      const ku = xu[i], ke = xe[i];
+      const ku = xu[i],
+        ke = xe[i];
       let j = i - 1;
       while (j >= 0 && (xu[j] > ku || (xu[j] === ku && xe[j] > ke))) {
         xu[j + 1] = xu[j];
@@ -87,7 +106,8 @@ export function clipSweep(geom: RegionGeom, sweep: Sweep, origin: Pt, out: Piece
       xe[j + 1] = ke;
     }
     for (let i = 0; i + 1 < n; i += 2) {
-      const ua = xu[i], ub = xu[i + 1];
+      const ua = xu[i],
+        ub = xu[i + 1];
       if (ub - ua < MIN_SEGMENT_UM) continue;
       out.push({
         pts: [rnd(ua * c - v * s, ua * s + v * c), rnd(ub * c - v * s, ub * s + v * c)],
@@ -99,8 +119,14 @@ export function clipSweep(geom: RegionGeom, sweep: Sweep, origin: Pt, out: Piece
 }
 
 function anchorOf(
-  geom: RegionGeom, e: number, v: number, vLo: Float64Array, vHi: Float64Array,
-  fromStart: Uint8Array, ring: Int32Array, edgeLocal: Int32Array,
+  geom: RegionGeom,
+  e: number,
+  v: number,
+  vLo: Float64Array,
+  vHi: Float64Array,
+  fromStart: Uint8Array,
+  ring: Int32Array,
+  edgeLocal: Int32Array,
 ) {
   const f = (v - vLo[e]) / (vHi[e] - vLo[e]);
   const t = fromStart[e] ? f : 1 - f;
@@ -119,8 +145,10 @@ export function sweepConvexRing(ring: readonly Pt[], sweep: Sweep, origin: Pt): 
   const n = ring.length;
   if (!(sweep.spacing > 0) || n < 3) return out;
   const a = (sweep.angle * Math.PI) / 180;
-  const c = Math.cos(a), s = Math.sin(a);
-  let vMin = Infinity, vMax = -Infinity;
+  const c = Math.cos(a),
+    s = Math.sin(a);
+  let vMin = Infinity,
+    vMax = -Infinity;
   for (const p of ring) {
     const v = -p.x * s + p.y * c;
     if (v < vMin) vMin = v;
@@ -131,14 +159,20 @@ export function sweepConvexRing(ring: readonly Pt[], sweep: Sweep, origin: Pt): 
   const kLast = Math.floor((vMax - v0) / sweep.spacing);
   for (let k = kFirst; k <= kLast; k++) {
     const v = v0 + k * sweep.spacing;
-    let ua = Infinity, ub = -Infinity, crossings = 0;
+    let ua = Infinity,
+      ub = -Infinity,
+      crossings = 0;
     for (let i = 0; i < n; i++) {
-      const p = ring[i], q = ring[i + 1 === n ? 0 : i + 1];
-      const pv = -p.x * s + p.y * c, qv = -q.x * s + q.y * c;
+      const p = ring[i],
+        q = ring[i + 1 === n ? 0 : i + 1];
+      const pv = -p.x * s + p.y * c,
+        qv = -q.x * s + q.y * c;
       if (pv === qv) continue;
-      const lo = pv < qv ? pv : qv, hi = pv < qv ? qv : pv;
+      const lo = pv < qv ? pv : qv,
+        hi = pv < qv ? qv : pv;
       if (!(lo <= v && v < hi)) continue;
-      const pu = p.x * c + p.y * s, qu = q.x * c + q.y * s;
+      const pu = p.x * c + p.y * s,
+        qu = q.x * c + q.y * s;
       const uLo = pv < qv ? pu : qu;
       const u = uLo + (v - lo) * ((qu - pu) / (qv - pv));
       crossings++;
@@ -146,7 +180,8 @@ export function sweepConvexRing(ring: readonly Pt[], sweep: Sweep, origin: Pt): 
       if (u > ub) ub = u;
     }
     if (crossings !== 2 || ub - ua < MIN_SEGMENT_UM) continue;
-    const pa = rnd(ua * c - v * s, ua * s + v * c), pb = rnd(ub * c - v * s, ub * s + v * c);
+    const pa = rnd(ua * c - v * s, ua * s + v * c),
+      pb = rnd(ub * c - v * s, ub * s + v * c);
     if (pa.x !== pb.x || pa.y !== pb.y) out.push([pa, pb]);
   }
   return out;

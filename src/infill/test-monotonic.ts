@@ -20,23 +20,32 @@ export interface MonotonicReport {
   violations: number;
 }
 
-export function monotonicViolations(segments: readonly Segment[], angleDeg: number, spacing: number, minLength: number): MonotonicReport {
+export function monotonicViolations(
+  segments: readonly Segment[],
+  angleDeg: number,
+  spacing: number,
+  minLength: number,
+): MonotonicReport {
   const a = (angleDeg * Math.PI) / 180;
-  const c = Math.cos(a), s = Math.sin(a);
+  const c = Math.cos(a),
+    s = Math.sin(a);
   const along: Array<{ v: number; lo: number; hi: number }> = [];
   for (const g of segments) {
-    const dx = g.x1 - g.x0, dy = g.y1 - g.y0;
+    const dx = g.x1 - g.x0,
+      dy = g.y1 - g.y0;
     const len = Math.hypot(dx, dy);
     if (len < minLength) continue;
     // within a degree of the family's direction, either way along it
     if (Math.abs(dx * c + dy * s) < len * Math.cos(Math.PI / 180)) continue;
-    const u0 = g.x0 * c + g.y0 * s, u1 = g.x1 * c + g.y1 * s;
+    const u0 = g.x0 * c + g.y0 * s,
+      u1 = g.x1 * c + g.y1 * s;
     along.push({ v: -g.x0 * s + g.y0 * c, lo: Math.min(u0, u1), hi: Math.max(u0, u1) });
   }
   if (along.length === 0) return { lines: 0, violations: 0 };
   const vMin = Math.min(...along.map((l) => l.v));
   const printed = new Map<number, Array<{ lo: number; hi: number }>>();
-  const beside = (row: number, lo: number, hi: number) => (printed.get(row) ?? []).some((p) => Math.min(p.hi, hi) - Math.max(p.lo, lo) > spacing / 2);
+  const beside = (row: number, lo: number, hi: number) =>
+    (printed.get(row) ?? []).some((p) => Math.min(p.hi, hi) - Math.max(p.lo, lo) > spacing / 2);
   let violations = 0;
   for (const l of along) {
     const row = Math.round((l.v - vMin) / spacing);

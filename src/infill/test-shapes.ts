@@ -19,7 +19,17 @@ export const SHAPE_CENTRE: Pt = { x: 110_000, y: 105_000 };
 
 export function square(side = 30_000, c: Pt = SHAPE_CENTRE): ExPolygon[] {
   const h = side / 2;
-  return [{ outer: [{ x: c.x - h, y: c.y - h }, { x: c.x + h, y: c.y - h }, { x: c.x + h, y: c.y + h }, { x: c.x - h, y: c.y + h }], holes: [] }];
+  return [
+    {
+      outer: [
+        { x: c.x - h, y: c.y - h },
+        { x: c.x + h, y: c.y - h },
+        { x: c.x + h, y: c.y + h },
+        { x: c.x - h, y: c.y + h },
+      ],
+      holes: [],
+    },
+  ];
 }
 
 export function discWithHole(c: Pt = SHAPE_CENTRE): ExPolygon[] {
@@ -27,14 +37,21 @@ export function discWithHole(c: Pt = SHAPE_CENTRE): ExPolygon[] {
 }
 
 export function lShape(c: Pt = SHAPE_CENTRE): ExPolygon[] {
-  const x0 = c.x - 15_000, y0 = c.y - 15_000;
-  return [{
-    outer: [
-      { x: x0, y: y0 }, { x: x0 + 30_000, y: y0 }, { x: x0 + 30_000, y: y0 + 15_000 },
-      { x: x0 + 15_000, y: y0 + 15_000 }, { x: x0 + 15_000, y: y0 + 30_000 }, { x: x0, y: y0 + 30_000 },
-    ],
-    holes: [],
-  }];
+  const x0 = c.x - 15_000,
+    y0 = c.y - 15_000;
+  return [
+    {
+      outer: [
+        { x: x0, y: y0 },
+        { x: x0 + 30_000, y: y0 },
+        { x: x0 + 30_000, y: y0 + 15_000 },
+        { x: x0 + 15_000, y: y0 + 15_000 },
+        { x: x0 + 15_000, y: y0 + 30_000 },
+        { x: x0, y: y0 + 30_000 },
+      ],
+      holes: [],
+    },
+  ];
 }
 
 /** A boat-like hull about 60 × 30 mm with a round hole and a slot; shrinks a little with z (mm). */
@@ -46,11 +63,15 @@ export function hull(z = 0, c: Pt = SHAPE_CENTRE): ExPolygon[] {
     const t = (2 * Math.PI * i) / n;
     // rounded stern on the left, pointed bow on the right
     const x = 30_000 * s * Math.cos(t) * (Math.cos(t) > 0 ? 1 : 0.9);
-    const y = 15_000 * s * Math.sin(t) * (Math.cos(t) > 0 ? Math.pow(1 - Math.cos(t), 0.35) / Math.pow(2, 0.35) * 1.3 : 1);
+    const y =
+      15_000 * s * Math.sin(t) * (Math.cos(t) > 0 ? (Math.pow(1 - Math.cos(t), 0.35) / Math.pow(2, 0.35)) * 1.3 : 1);
     outer.push({ x: Math.round(c.x + x), y: Math.round(c.y + Math.max(-15_000, Math.min(15_000, y))) });
   }
   const slot: Pt[] = [
-    { x: c.x - 14_000, y: c.y - 2_500 }, { x: c.x - 14_000, y: c.y + 2_500 }, { x: c.x - 6_000, y: c.y + 2_500 }, { x: c.x - 6_000, y: c.y - 2_500 },
+    { x: c.x - 14_000, y: c.y - 2_500 },
+    { x: c.x - 14_000, y: c.y + 2_500 },
+    { x: c.x - 6_000, y: c.y + 2_500 },
+    { x: c.x - 6_000, y: c.y - 2_500 },
   ];
   return [{ outer, holes: [circle(c.x + 8_000, c.y, 4_000, 80, true), slot] }];
 }

@@ -37,6 +37,12 @@ test('several objects are arranged on the bed without overlap, with the gap betw
 test('no free spot: findSpot says so, arrange falls back to the centre', () => {
   const big = { width: 200, depth: 200, center: [110, 110] as [number, number] };
   assert.equal(findSpot({ width: 50, depth: 50 }, [big], bed), null);
-  const centres = arrange([{ width: 200, depth: 200 }, { width: 50, depth: 50 }], bed);
+  const centres = arrange(
+    [
+      { width: 200, depth: 200 },
+      { width: 50, depth: 50 },
+    ],
+    bed,
+  );
   assert.deepEqual(centres[1], [110, 110]);
 });

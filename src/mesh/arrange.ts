@@ -42,10 +42,14 @@ function insideBed(f: PlacedFootprint, bed: Bed): boolean {
 function candidates(f: Footprint, placed: readonly PlacedFootprint[], bed: Bed, gap: number): Array<[number, number]> {
   const out: Array<[number, number]> = [bed.center];
   for (const p of placed) {
-    const dx = (p.width + f.width) / 2 + gap, dy = (p.depth + f.depth) / 2 + gap;
-    const ax = (p.width - f.width) / 2, ay = (p.depth - f.depth) / 2;
-    for (const sx of [-1, 1]) for (const y of [p.center[1], p.center[1] - ay, p.center[1] + ay]) out.push([p.center[0] + sx * dx, y]);
-    for (const sy of [-1, 1]) for (const x of [p.center[0], p.center[0] - ax, p.center[0] + ax]) out.push([x, p.center[1] + sy * dy]);
+    const dx = (p.width + f.width) / 2 + gap,
+      dy = (p.depth + f.depth) / 2 + gap;
+    const ax = (p.width - f.width) / 2,
+      ay = (p.depth - f.depth) / 2;
+    for (const sx of [-1, 1])
+      for (const y of [p.center[1], p.center[1] - ay, p.center[1] + ay]) out.push([p.center[0] + sx * dx, y]);
+    for (const sy of [-1, 1])
+      for (const x of [p.center[0], p.center[0] - ax, p.center[0] + ax]) out.push([x, p.center[1] + sy * dy]);
   }
   return out;
 }
@@ -53,7 +57,12 @@ function candidates(f: Footprint, placed: readonly PlacedFootprint[], bed: Bed, 
 /**
  * A free spot for `f` among `placed`, nearest the bed centre; null when there is none on the bed.
  */
-export function findSpot(f: Footprint, placed: readonly PlacedFootprint[], bed: Bed, gap = ARRANGE_GAP_MM): [number, number] | null {
+export function findSpot(
+  f: Footprint,
+  placed: readonly PlacedFootprint[],
+  bed: Bed,
+  gap = ARRANGE_GAP_MM,
+): [number, number] | null {
   let best: [number, number] | null = null;
   let bestD = Infinity;
   for (const c of candidates(f, placed, bed, gap)) {
@@ -77,12 +86,23 @@ export function arrange(items: readonly Footprint[], bed: Bed, gap = ARRANGE_GAP
 }
 
 /** As `arrange`, but null when a footprint finds no free spot (the models do not fit together). */
-export function arrangeAll(items: readonly Footprint[], bed: Bed, gap = ARRANGE_GAP_MM): Array<[number, number]> | null {
+export function arrangeAll(
+  items: readonly Footprint[],
+  bed: Bed,
+  gap = ARRANGE_GAP_MM,
+): Array<[number, number]> | null {
   return arrangeWith(items, bed, gap, false);
 }
 
-function arrangeWith(items: readonly Footprint[], bed: Bed, gap: number, fallBack: boolean): Array<[number, number]> | null {
-  const order = items.map((_, i) => i).sort((a, b) => items[b].width * items[b].depth - items[a].width * items[a].depth || a - b);
+function arrangeWith(
+  items: readonly Footprint[],
+  bed: Bed,
+  gap: number,
+  fallBack: boolean,
+): Array<[number, number]> | null {
+  const order = items
+    .map((_, i) => i)
+    .sort((a, b) => items[b].width * items[b].depth - items[a].width * items[a].depth || a - b);
   const placed: PlacedFootprint[] = [];
   const out: Array<[number, number]> = new Array(items.length);
   for (const i of order) {

@@ -55,7 +55,14 @@ test('a mesh a loader welded passes through as it is (welding it again would cha
   const again = fromArrays(welded);
   assert.equal(again.mesh, welded, 'taken as it is');
   const rewelded = weld(welded.positions, welded.indices);
-  assert.deepEqual([...rewelded.positions, ...rewelded.indices], [...welded.positions, ...welded.indices], 'welding again changes nothing');
+  assert.deepEqual(
+    [...rewelded.positions, ...rewelded.indices],
+    [...welded.positions, ...welded.indices],
+    'welding again changes nothing',
+  );
   welded.positions[4] = NaN;
-  assert.throws(() => fromArrays(welded), (e: Error) => e instanceof StrataError && /positions\[4\] is NaN/.test(e.message));
+  assert.throws(
+    () => fromArrays(welded),
+    (e: Error) => e instanceof StrataError && /positions\[4\] is NaN/.test(e.message),
+  );
 });

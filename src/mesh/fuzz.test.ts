@@ -28,7 +28,8 @@ function mutations(src: Uint8Array, name: string, rounds: number, seed: number):
     seed = (Math.imul(seed, 1664525) + 1013904223) >>> 0;
     return seed % n;
   };
-  for (let cut = 0; cut < src.length; cut += Math.max(1, Math.floor(src.length / 97))) survives(src.subarray(0, cut), name);
+  for (let cut = 0; cut < src.length; cut += Math.max(1, Math.floor(src.length / 97)))
+    survives(src.subarray(0, cut), name);
   for (let r = 0; r < rounds; r++) {
     const b = src.slice();
     const flips = 1 + rnd(8);
@@ -53,7 +54,8 @@ test('ASCII STL survives truncation and corruption', () => {
 });
 
 test('OBJ survives truncation and corruption', () => {
-  const obj = 'o a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 1\nf 1/1/1 3/1/1 2/1/1\nf 1//1 2//1 4//1\ng b\nf -4 -1 -2\nf 2 3 4\n';
+  const obj =
+    'o a\nv 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nvt 0 0\nvn 0 0 1\nf 1/1/1 3/1/1 2/1/1\nf 1//1 2//1 4//1\ng b\nf -4 -1 -2\nf 2 3 4\n';
   mutations(strToU8(obj), 'm.obj', 500, 3);
 });
 

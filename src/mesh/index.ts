@@ -1,5 +1,14 @@
 /** Mesh input: file parsers, three.js and raw-array adapters, preparation and bed placement. */
-export type { LayerRangeSettings, Mesh, MeshObject, MeshReport, MeshVolume, RawMeshArrays, SettingsSource, VolumeKind } from './types.js';
+export type {
+  LayerRangeSettings,
+  Mesh,
+  MeshObject,
+  MeshReport,
+  MeshVolume,
+  RawMeshArrays,
+  SettingsSource,
+  VolumeKind,
+} from './types.js';
 export { parseStl } from './stl.js';
 export { parseObj } from './obj.js';
 export { parse3mf } from './threemf.js';

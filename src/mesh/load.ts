@@ -109,7 +109,8 @@ export function toModels(input: unknown, opts: LoadOptions = {}): LoadedModels {
     if (isNamedModel(item)) {
       const named = item as ModelInput;
       if (named.warnings) notes.warnings.push(...named.warnings);
-      if (notes.projectSettings === undefined && named.projectSettings !== undefined) notes.projectSettings = named.projectSettings;
+      if (notes.projectSettings === undefined && named.projectSettings !== undefined)
+        notes.projectSettings = named.projectSettings;
       return { name: item.name, objects: convert(item.objects, 1, opts, notes) };
     }
     const objects = convert(item, 1, opts, notes);
@@ -122,14 +123,20 @@ export function toModels(input: unknown, opts: LoadOptions = {}): LoadedModels {
 }
 
 function isNamedModel(v: unknown): v is { name: string; objects: unknown[] } {
-  return typeof v === 'object' && v !== null && typeof (v as { name?: unknown }).name === 'string' && Array.isArray((v as { objects?: unknown }).objects);
+  return (
+    typeof v === 'object' &&
+    v !== null &&
+    typeof (v as { name?: unknown }).name === 'string' &&
+    Array.isArray((v as { objects?: unknown }).objects)
+  );
 }
 
 /** File bytes: their objects, with the file's warnings and (the first) project settings noted. */
 function fromBytes(bytes: Uint8Array, opts: LoadOptions, notes: Notes): MeshObject[] {
   const file = loadModelFile(bytes, undefined, opts);
   notes.warnings.push(...file.warnings);
-  if (notes.projectSettings === undefined && file.projectSettings !== undefined) notes.projectSettings = file.projectSettings;
+  if (notes.projectSettings === undefined && file.projectSettings !== undefined)
+    notes.projectSettings = file.projectSettings;
   return file.objects;
 }
 
@@ -137,7 +144,8 @@ function convert(input: unknown, depth: number, opts: LoadOptions, notes: Notes)
   if (depth > MAX_INPUT_DEPTH) throw new StrataError('UNSUPPORTED_FORMAT', 'the input is nested too deeply');
   if (input instanceof Uint8Array) return fromBytes(input, opts, notes);
   if (input instanceof ArrayBuffer) return fromBytes(new Uint8Array(input), opts, notes);
-  if (input instanceof DataView) return fromBytes(new Uint8Array(input.buffer, input.byteOffset, input.byteLength), opts, notes);
+  if (input instanceof DataView)
+    return fromBytes(new Uint8Array(input.buffer, input.byteOffset, input.byteLength), opts, notes);
   if (typeof input === 'string') {
     if (/^\s*solid(\s|$)/i.test(input.slice(0, 256))) return parseStl(new TextEncoder().encode(input));
     if (/^\s*(v|vn|vt|f|o|g|mtllib|usemtl|#)/m.test(input.slice(0, 4096))) return parseObj(input);
@@ -145,7 +153,10 @@ function convert(input: unknown, depth: number, opts: LoadOptions, notes: Notes)
   }
   if (Array.isArray(input)) {
     if (input.length > 0 && input.every((v) => typeof v === 'number')) {
-      throw new StrataError('UNSUPPORTED_FORMAT', 'got an array of numbers: pass { positions, indices } for raw arrays');
+      throw new StrataError(
+        'UNSUPPORTED_FORMAT',
+        'got an array of numbers: pass { positions, indices } for raw arrays',
+      );
     }
     return input.flatMap((item) => convert(item, depth + 1, opts, notes));
   }
@@ -161,14 +172,23 @@ function convert(input: unknown, depth: number, opts: LoadOptions, notes: Notes)
       }
       return objects;
     }
-    if (isObjectInput(o)) return [objectFromInput(o as Record<string, unknown>, (mesh) => convert(mesh, depth + 1, opts, notes), 0)];
-    if ('positions' in o) return [fromArrays(o as unknown as RawMeshArrays, typeof o.name === 'string' ? o.name : 'mesh')];
+    if (isObjectInput(o))
+      return [objectFromInput(o as Record<string, unknown>, (mesh) => convert(mesh, depth + 1, opts, notes), 0)];
+    if ('positions' in o)
+      return [fromArrays(o as unknown as RawMeshArrays, typeof o.name === 'string' ? o.name : 'mesh')];
     if (typeof o.mesh === 'object' && o.mesh !== null && 'positions' in o.mesh) {
       const name = typeof o.name === 'string' && o.name !== '' ? o.name : 'mesh';
       return [fromArrays(o.mesh as RawMeshArrays, name)];
     }
   }
-  const what = input === null ? 'null' : Array.isArray(input) ? 'array' : typeof input === 'object' ? (input.constructor?.name ?? 'object') : typeof input;
+  const what =
+    input === null
+      ? 'null'
+      : Array.isArray(input)
+        ? 'array'
+        : typeof input === 'object'
+          ? (input.constructor?.name ?? 'object')
+          : typeof input;
   throw new StrataError(
     'UNSUPPORTED_FORMAT',
     `cannot make a mesh from ${what}: pass file bytes, STL/OBJ text, a three.js object, { positions, indices } or a Mesh`,

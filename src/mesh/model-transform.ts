@@ -15,7 +15,11 @@ export interface ModelTransform {
   scale: readonly [number, number, number];
 }
 
-export const NO_TRANSFORM: ModelTransform = Object.freeze({ upAxis: 'z', rotate: [0, 0, 0], scale: [1, 1, 1] } as const);
+export const NO_TRANSFORM: ModelTransform = Object.freeze({
+  upAxis: 'z',
+  rotate: [0, 0, 0],
+  scale: [1, 1, 1],
+} as const);
 
 export function isIdentity(t: ModelTransform): boolean {
   return t.upAxis === 'z' && t.rotate.every((a) => a % 360 === 0) && t.scale.every((s) => s === 1);

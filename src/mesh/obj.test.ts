@@ -54,7 +54,10 @@ test('OBJ: negative indices are relative to the vertices read so far', () => {
 test('OBJ: o and g split objects; empty groups are skipped; vertices are shared file-wide', () => {
   const text = `v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\ng empty\no A\nf 1 2 3\ng B\nf 1 2 4\nf 2 3 4\ng\ng C\n`;
   const objs = parseObj(text, 'm');
-  assert.deepEqual(objs.map((o) => o.name), ['A', 'B']);
+  assert.deepEqual(
+    objs.map((o) => o.name),
+    ['A', 'B'],
+  );
   assert.equal(objs[0].mesh.indices.length, 3);
   assert.equal(objs[1].mesh.indices.length, 6);
   assert.equal(objs[1].mesh.positions.length / 3, 4); // only the vertices B uses

@@ -51,7 +51,9 @@ export function parseObj(input: string | Uint8Array, name = 'model'): MeshObject
     if (c0 === 118 /* v */) {
       const t = tokens(line);
       if (t.length < 3) fail(lineNo, `a vertex needs 3 coordinates, found ${t.length}`);
-      const x = Number(t[0]), y = Number(t[1]), z = Number(t[2]);
+      const x = Number(t[0]),
+        y = Number(t[1]),
+        z = Number(t[2]);
       if (!Number.isFinite(x) || !Number.isFinite(y) || !Number.isFinite(z)) {
         fail(lineNo, `vertex "${clip(line.trim())}" has a coordinate that is not a number`);
       }

@@ -85,7 +85,11 @@ function usedBounds(mesh: Mesh, what: string, box: Box): void {
   const nVerts = positions.length / 3;
   for (let i = 0; i < indices.length; i++) {
     const v = indices[i];
-    if (v >= nVerts) throw new StrataError('BAD_MESH', `${what}: triangle ${Math.floor(i / 3)} uses vertex ${v} but there are only ${nVerts} vertices`);
+    if (v >= nVerts)
+      throw new StrataError(
+        'BAD_MESH',
+        `${what}: triangle ${Math.floor(i / 3)} uses vertex ${v} but there are only ${nVerts} vertices`,
+      );
     for (let k = 0; k < 3; k++) {
       const c = positions[v * 3 + k];
       if (c < box.min[k]) box.min[k] = c;
@@ -155,7 +159,10 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
       const bedW = w - 2 * around;
       const bedL = l - 2 * around;
       const spots = arrangeAll(sizes, { center: [0, 0], width: 2 * bedW, depth: 2 * bedL }, gap);
-      let gx0 = Infinity, gy0 = Infinity, gx1 = -Infinity, gy1 = -Infinity;
+      let gx0 = Infinity,
+        gy0 = Infinity,
+        gx1 = -Infinity,
+        gy1 = -Infinity;
       spots?.forEach(([x, y], i) => {
         gx0 = Math.min(gx0, x - sizes[i].width / 2);
         gx1 = Math.max(gx1, x + sizes[i].width / 2);
@@ -168,7 +175,8 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
           `the ${turned.length} models do not fit on the ${fmt(w)} × ${fmt(l)} mm bed together, ${fmt(gap)} mm apart${withMargin.replace(' its', ' their')}: slice fewer at once, make them smaller or lower ${opts.spacingSetting ?? 'objectSpacing'}`,
         );
       }
-      const sx = cx - (gx0 + gx1) / 2, sy = cy - (gy0 + gy1) / 2;
+      const sx = cx - (gx0 + gx1) / 2,
+        sy = cy - (gy0 + gy1) / 2;
       turned.forEach((m, i) => {
         const { min, max } = m.box;
         offsets.push([sx + spots[i][0] - (min[0] + max[0]) / 2, sy + spots[i][1] - (min[1] + max[1]) / 2, -min[2]]);
@@ -181,7 +189,10 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
       const { min, max } = m.box;
       const past: string[] = [];
       const side = (by: number, where: string, axis: string, lo: number, hi: number, b0: number, b1: number): void => {
-        if (by > FIT_EPS) past.push(`${mm(by)} mm past the ${where} edge (${axis} ${mm(lo)} to ${mm(hi)} mm${withMargin}, the bed ${fmt(b0)} to ${fmt(b1)} mm)`);
+        if (by > FIT_EPS)
+          past.push(
+            `${mm(by)} mm past the ${where} edge (${axis} ${mm(lo)} to ${mm(hi)} mm${withMargin}, the bed ${fmt(b0)} to ${fmt(b1)} mm)`,
+          );
       };
       side(bedX0 - (min[0] - around), 'left', 'X', min[0], max[0], bedX0, bedX0 + w);
       side(max[0] + around - (bedX0 + w), 'right', 'X', min[0], max[0], bedX0, bedX0 + w);
@@ -190,7 +201,10 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
       if (past.length) off.push(`${m.name} leaves the bed by ${past.join(' and ')}`);
     }
     if (off.length) {
-      throw new StrataError('DOES_NOT_FIT', `${off.join('; ')}; without --no-center (center: true) it would be placed on the bed`);
+      throw new StrataError(
+        'DOES_NOT_FIT',
+        `${off.join('; ')}; without --no-center (center: true) it would be placed on the bed`,
+      );
     }
   }
 
@@ -210,9 +224,12 @@ export function placeModels(models: readonly ModelInput[], opts: PlaceOptions): 
 /** Refuse a model larger than the build volume (only the size matters here, not the position). */
 function checkSize(name: string, box: Box, opts: PlaceOptions, margin: { mm: number; what: string }): void {
   const { bedWidth: w, bedLength: l, bedHeight: h } = opts;
-  const sx = box.max[0] - box.min[0], sy = box.max[1] - box.min[1], sz = box.max[2] - box.min[2];
+  const sx = box.max[0] - box.min[0],
+    sy = box.max[1] - box.min[1],
+    sz = box.max[2] - box.min[2];
   const m = 2 * margin.mm;
-  const plus = (size: number, bed: number) => (m > 0 && size <= bed + FIT_EPS ? ` (${mm(size + m)} mm with its ${margin.what})` : '');
+  const plus = (size: number, bed: number) =>
+    m > 0 && size <= bed + FIT_EPS ? ` (${mm(size + m)} mm with its ${margin.what})` : '';
   const problems: string[] = [];
   if (sx + m > w + FIT_EPS) problems.push(`${mm(sx)} mm wide in X${plus(sx, w)}, the bed ${fmt(w)} mm`);
   if (sy + m > l + FIT_EPS) problems.push(`${mm(sy)} mm deep in Y${plus(sy, l)}, the bed ${fmt(l)} mm`);

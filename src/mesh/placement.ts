@@ -29,11 +29,16 @@ export interface Box {
  * Bounds after the linear part `m` (row-major 3×3) of the objects' vertices that triangles use
  * (as placeOnBed counts them), or of every vertex in a flat xyz array.
  */
-export function linearBounds(objects: readonly MeshObject[] | Float32Array, m: readonly number[] = IDENTITY_LINEAR): Box {
+export function linearBounds(
+  objects: readonly MeshObject[] | Float32Array,
+  m: readonly number[] = IDENTITY_LINEAR,
+): Box {
   const min: [number, number, number] = [Infinity, Infinity, Infinity];
   const max: [number, number, number] = [-Infinity, -Infinity, -Infinity];
   const add = (p: ArrayLike<number>, i: number) => {
-    const x = p[i], y = p[i + 1], z = p[i + 2];
+    const x = p[i],
+      y = p[i + 1],
+      z = p[i + 2];
     for (let r = 0; r < 3; r++) {
       const v = m[r * 3] * x + m[r * 3 + 1] * y + m[r * 3 + 2] * z;
       if (v < min[r]) min[r] = v;
@@ -85,7 +90,8 @@ function determinant3(m: readonly number[]): number {
 /** Product of two row-major 3×3 matrices (a·b: b applies first). */
 export function mul3(a: readonly number[], b: readonly number[]): number[] {
   const r = new Array<number>(9);
-  for (let i = 0; i < 3; i++) for (let j = 0; j < 3; j++) r[i * 3 + j] = a[i * 3] * b[j] + a[i * 3 + 1] * b[3 + j] + a[i * 3 + 2] * b[6 + j];
+  for (let i = 0; i < 3; i++)
+    for (let j = 0; j < 3; j++) r[i * 3 + j] = a[i * 3] * b[j] + a[i * 3 + 1] * b[3 + j] + a[i * 3 + 2] * b[6 + j];
   return r;
 }
 
@@ -101,23 +107,44 @@ export function axisRotation(axis: 'x' | 'y' | 'z', deg: number): number[] {
 
 /** The rotation taking unit vector `from` to unit vector `to` (Rodrigues). */
 export function rotationBetween(from: readonly number[], to: readonly number[]): number[] {
-  const [ax, ay, az] = from, [bx, by, bz] = to;
-  const cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+  const [ax, ay, az] = from,
+    [bx, by, bz] = to;
+  const cx = ay * bz - az * by,
+    cy = az * bx - ax * bz,
+    cz = ax * by - ay * bx;
   const c = ax * bx + ay * by + az * bz;
   if (c < -1 + 1e-9) {
     // opposite: half a turn about any axis perpendicular to `from`
     const p = Math.abs(ax) < 0.9 ? [1, 0, 0] : [0, 1, 0];
-    let ux = ay * p[2] - az * p[1], uy = az * p[0] - ax * p[2], uz = ax * p[1] - ay * p[0];
+    let ux = ay * p[2] - az * p[1],
+      uy = az * p[0] - ax * p[2],
+      uz = ax * p[1] - ay * p[0];
     const l = Math.hypot(ux, uy, uz);
     ux /= l;
     uy /= l;
     uz /= l;
-    return [2 * ux * ux - 1, 2 * ux * uy, 2 * ux * uz, 2 * uy * ux, 2 * uy * uy - 1, 2 * uy * uz, 2 * uz * ux, 2 * uz * uy, 2 * uz * uz - 1];
+    return [
+      2 * ux * ux - 1,
+      2 * ux * uy,
+      2 * ux * uz,
+      2 * uy * ux,
+      2 * uy * uy - 1,
+      2 * uy * uz,
+      2 * uz * ux,
+      2 * uz * uy,
+      2 * uz * uz - 1,
+    ];
   }
   const k = 1 / (1 + c);
   return [
-    c + cx * cx * k, cx * cy * k - cz, cx * cz * k + cy,
-    cy * cx * k + cz, c + cy * cy * k, cy * cz * k - cx,
-    cz * cx * k - cy, cz * cy * k + cx, c + cz * cz * k,
+    c + cx * cx * k,
+    cx * cy * k - cz,
+    cx * cz * k + cy,
+    cy * cx * k + cz,
+    c + cy * cy * k,
+    cy * cz * k - cx,
+    cz * cx * k - cy,
+    cz * cy * k + cx,
+    c + cz * cz * k,
   ];
 }

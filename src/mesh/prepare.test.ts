@@ -38,7 +38,10 @@ test('3DBenchy: 8 degenerate triangles removed, then closed (0 open, 0 non-manif
   assert.equal(report.openEdges, 0);
   assert.equal(report.nonManifoldEdges, 0);
   assert.ok(report.volume > 14000 && report.volume < 17000, `volume ${report.volume}`);
-  assert.deepEqual([report.max[0] - report.min[0], report.max[1] - report.min[1], report.max[2]].map((v) => Math.round(v)), [60, 31, 48]);
+  assert.deepEqual(
+    [report.max[0] - report.min[0], report.max[1] - report.min[1], report.max[2]].map((v) => Math.round(v)),
+    [60, 31, 48],
+  );
   assert.deepEqual(report.warnings, ['removed 8 degenerate triangles (two corners at the same point)']);
 });
 
@@ -101,7 +104,10 @@ test('open edges, non-manifold edges, flipped triangles and inside-out meshes ar
   const flippedIdx = TET_I.slice();
   [flippedIdx[1], flippedIdx[2]] = [flippedIdx[2], flippedIdx[1]];
   const fl = prepareMesh({ positions: TET_P, indices: flippedIdx }).report;
-  assert.ok(fl.warnings.some((w) => /3 edges join triangles that face opposite ways/.test(w)), fl.warnings.join('|'));
+  assert.ok(
+    fl.warnings.some((w) => /3 edges join triangles that face opposite ways/.test(w)),
+    fl.warnings.join('|'),
+  );
   const inverted = TET_I.slice();
   for (let i = 0; i < inverted.length; i += 3) [inverted[i + 1], inverted[i + 2]] = [inverted[i + 2], inverted[i + 1]];
   const inv = prepareMesh({ positions: TET_P, indices: inverted }).report;
@@ -116,7 +122,8 @@ test('a vertex shared by many triangles (large edge bucket) is counted correctly
   for (let i = 0; i < n; i++) p.push(Math.cos((2 * Math.PI * i) / n), Math.sin((2 * Math.PI * i) / n), 0);
   const idx: number[] = [];
   for (let i = 0; i < n; i++) {
-    const a = 2 + i, b = 2 + ((i + 1) % n);
+    const a = 2 + i,
+      b = 2 + ((i + 1) % n);
     idx.push(0, a, b, 1, b, a);
   }
   const { report } = prepareMesh({ positions: new Float32Array(p), indices: new Uint32Array(idx) });

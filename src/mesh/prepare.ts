@@ -66,7 +66,9 @@ function dropRepeatedCorners(mesh: Mesh): { mesh: Mesh; removed: number } {
   const n = idx.length;
   let removed = 0;
   for (let i = 0; i < n; i += 3) {
-    const a = idx[i], b = idx[i + 1], c = idx[i + 2];
+    const a = idx[i],
+      b = idx[i + 1],
+      c = idx[i + 2];
     if (a === b || b === c || a === c) removed++;
   }
   if (removed === 0) return { mesh, removed };
@@ -77,7 +79,9 @@ function dropRepeatedCorners(mesh: Mesh): { mesh: Mesh; removed: number } {
   let k = 0;
   let used = 0;
   for (let i = 0; i < n; i += 3) {
-    const a = idx[i], b = idx[i + 1], c = idx[i + 2];
+    const a = idx[i],
+      b = idx[i + 1],
+      c = idx[i + 2];
     if (a === b || b === c || a === c) continue;
     kept[k++] = a;
     kept[k++] = b;
@@ -116,11 +120,14 @@ const SMALL_BUCKET = 24;
  * Each entry stores upper·2 + direction bit (1 when the triangle runs upper → lower).
  */
 function countEdges(indices: Uint32Array, nVerts: number): EdgeCounts {
-  if (nVerts > 0x3fffffff) throw new StrataError('LIMIT_EXCEEDED', `the mesh has ${nVerts} vertices; the limit is ${0x3fffffff}`);
+  if (nVerts > 0x3fffffff)
+    throw new StrataError('LIMIT_EXCEEDED', `the mesh has ${nVerts} vertices; the limit is ${0x3fffffff}`);
   const n = indices.length;
   const start = new Int32Array(nVerts + 1);
   for (let t = 0; t < n; t += 3) {
-    const a = indices[t], b = indices[t + 1], c = indices[t + 2];
+    const a = indices[t],
+      b = indices[t + 1],
+      c = indices[t + 2];
     start[(a < b ? a : b) + 1]++;
     start[(b < c ? b : c) + 1]++;
     start[(c < a ? c : a) + 1]++;
@@ -183,10 +190,16 @@ function countEdges(indices: Uint32Array, nVerts: number): EdgeCounts {
 /** Bounding box of a position array (x,y,z per vertex), mm. */
 export function positionBounds(p: Float32Array): { min: [number, number, number]; max: [number, number, number] } {
   if (p.length === 0) return { min: [0, 0, 0], max: [0, 0, 0] };
-  let x0 = Infinity, y0 = Infinity, z0 = Infinity;
-  let x1 = -Infinity, y1 = -Infinity, z1 = -Infinity;
+  let x0 = Infinity,
+    y0 = Infinity,
+    z0 = Infinity;
+  let x1 = -Infinity,
+    y1 = -Infinity,
+    z1 = -Infinity;
   for (let i = 0; i < p.length; i += 3) {
-    const x = p[i], y = p[i + 1], z = p[i + 2];
+    const x = p[i],
+      y = p[i + 1],
+      z = p[i + 2];
     if (x < x0) x0 = x;
     if (x > x1) x1 = x;
     if (y < y0) y0 = y;
@@ -199,15 +212,25 @@ export function positionBounds(p: Float32Array): { min: [number, number, number]
 
 /** Signed volume (sum of tetrahedra to the bounding-box centre, which keeps the sum precise). */
 function signedVolume(mesh: Mesh, min: number[], max: number[]): number {
-  const cx = (min[0] + max[0]) / 2, cy = (min[1] + max[1]) / 2, cz = (min[2] + max[2]) / 2;
+  const cx = (min[0] + max[0]) / 2,
+    cy = (min[1] + max[1]) / 2,
+    cz = (min[2] + max[2]) / 2;
   const p = mesh.positions;
   const idx = mesh.indices;
   let sum = 0;
   for (let i = 0; i < idx.length; i += 3) {
-    const a = idx[i] * 3, b = idx[i + 1] * 3, c = idx[i + 2] * 3;
-    const ax = p[a] - cx, ay = p[a + 1] - cy, az = p[a + 2] - cz;
-    const bx = p[b] - cx, by = p[b + 1] - cy, bz = p[b + 2] - cz;
-    const qx = p[c] - cx, qy = p[c + 1] - cy, qz = p[c + 2] - cz;
+    const a = idx[i] * 3,
+      b = idx[i + 1] * 3,
+      c = idx[i + 2] * 3;
+    const ax = p[a] - cx,
+      ay = p[a + 1] - cy,
+      az = p[a + 2] - cz;
+    const bx = p[b] - cx,
+      by = p[b + 1] - cy,
+      bz = p[b + 2] - cz;
+    const qx = p[c] - cx,
+      qy = p[c + 1] - cy,
+      qz = p[c + 2] - cz;
     sum += ax * (by * qz - bz * qy) + ay * (bz * qx - bx * qz) + az * (bx * qy - by * qx);
   }
   return sum / 6;

@@ -136,7 +136,10 @@ function asciiFacet(v: number[]): string {
 test('ASCII STL: several solids become several objects', () => {
   const text = `solid first\n${TET.map(asciiFacet).join('')}endsolid first\nsolid second\n${asciiFacet([5, 5, 5, 6, 5, 5, 5, 6, 5])}endsolid second\n`;
   const objs = parseStl(enc(text), 'multi');
-  assert.deepEqual(objs.map((o) => o.name), ['first', 'second']);
+  assert.deepEqual(
+    objs.map((o) => o.name),
+    ['first', 'second'],
+  );
   assert.equal(objs[0].mesh.indices.length, 12);
   assert.equal(objs[1].mesh.indices.length, 3);
 });
@@ -151,7 +154,8 @@ test('ASCII STL: CRLF, tabs, odd spacing, exponent numbers, no endsolid name, un
 });
 
 test('ASCII STL: a quad facet is fan-triangulated', () => {
-  const text = 'solid q\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid q\n';
+  const text =
+    'solid q\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\nendloop\nendfacet\nendsolid q\n';
   assert.equal(parseStl(enc(text))[0].mesh.indices.length, 6);
 });
 
@@ -159,8 +163,16 @@ test('ASCII STL errors: truncated facet, bad number, stray token, empty', () => 
   const good = `solid a\n${asciiFacet([0, 0, 0, 1, 0, 0, 0, 1, 0])}endsolid a\n`;
   const cut = good.slice(0, good.indexOf('endloop'));
   throwsStrata(() => parseStl(enc(cut)), 'BAD_FILE', /ends inside a facet/);
-  throwsStrata(() => parseStl(enc(good.slice(0, good.indexOf('1 0 0') + 2))), 'BAD_FILE', /line 5: the file ends where a vertex coordinate was expected/);
-  throwsStrata(() => parseStl(enc(good.replace('vertex 1 0 0', 'vertex 1 zero 0'))), 'BAD_FILE', /"zero" is not a number/);
+  throwsStrata(
+    () => parseStl(enc(good.slice(0, good.indexOf('1 0 0') + 2))),
+    'BAD_FILE',
+    /line 5: the file ends where a vertex coordinate was expected/,
+  );
+  throwsStrata(
+    () => parseStl(enc(good.replace('vertex 1 0 0', 'vertex 1 zero 0'))),
+    'BAD_FILE',
+    /"zero" is not a number/,
+  );
   throwsStrata(() => parseStl(enc(good.replace('outer loop', 'outer loop banana'))), 'BAD_FILE', /unexpected "banana"/);
   throwsStrata(() => parseStl(enc(good.replace('vertex 0 1 0\n', ''))), 'BAD_FILE', /2 vertices/);
   throwsStrata(() => parseStl(enc('solid empty\nendsolid empty\n')), 'EMPTY_MODEL');

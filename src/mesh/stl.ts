@@ -15,7 +15,10 @@ export function parseStl(bytes: Uint8Array, name = 'model'): MeshObject[] {
   if (count >= 0 && 84 + 50 * count === len) return [readBinary(bytes, count, name)];
   if (looksAscii(bytes)) return parseAsciiStl(new TextDecoder('utf-8').decode(bytes), name);
   if (len < 84) {
-    throw new StrataError('BAD_FILE', `not an STL file: ${len} bytes is too short for binary STL and it is not ASCII STL`);
+    throw new StrataError(
+      'BAD_FILE',
+      `not an STL file: ${len} bytes is too short for binary STL and it is not ASCII STL`,
+    );
   }
   const expected = 84 + 50 * count;
   // Fewer than 50 stray bytes after the last triangle cannot hold geometry: tolerate them.

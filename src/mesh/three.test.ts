@@ -10,7 +10,9 @@ import type { Mesh } from './types.js';
 /** A unit cube BufferGeometry (indexed, 8 vertices, 12 outward triangles). */
 function cubeGeometry(indexed = true): Record<string, unknown> {
   const v = [0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0, 0, 0, 1, 1, 0, 1, 0, 1, 1, 1, 1, 1];
-  const f = [0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5];
+  const f = [
+    0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5,
+  ];
   if (indexed) {
     return {
       isBufferGeometry: true,
@@ -20,7 +22,11 @@ function cubeGeometry(indexed = true): Record<string, unknown> {
   }
   const soup: number[] = [];
   for (const i of f) soup.push(v[i * 3], v[i * 3 + 1], v[i * 3 + 2]);
-  return { isBufferGeometry: true, attributes: { position: { array: new Float32Array(soup), itemSize: 3, count: f.length } }, index: null };
+  return {
+    isBufferGeometry: true,
+    attributes: { position: { array: new Float32Array(soup), itemSize: 3, count: f.length } },
+    index: null,
+  };
 }
 
 /** Column-major translation/scale matrix as three.js stores it. */
@@ -50,7 +56,10 @@ test('a Group with two translated meshes gives two objects at the right places (
     children: [mesh('a', matrix(5, 0, 0)), mesh('b', matrix(-20, 3, 0, 2))],
   };
   const objs = fromThree(group);
-  assert.deepEqual(objs.map((o) => o.name), ['a', 'b']);
+  assert.deepEqual(
+    objs.map((o) => o.name),
+    ['a', 'b'],
+  );
   assert.deepEqual(bbox(objs[0].mesh), { min: [5, 0, 10], max: [6, 1, 11] });
   assert.deepEqual(bbox(objs[1].mesh), { min: [-20, 3, 10], max: [-18, 5, 12] });
 });
@@ -106,7 +115,10 @@ test('every mesh in a deep tree is taken; lines and points are skipped', () => {
     ],
   };
   const objs = fromThree(tree);
-  assert.deepEqual(objs.map((o) => o.name), ['deep', 'top']);
+  assert.deepEqual(
+    objs.map((o) => o.name),
+    ['deep', 'top'],
+  );
   assert.equal(objs[0].mesh.positions.length / 3, 8, 'unindexed geometry is welded');
   assert.equal(prepareMesh(objs[0].mesh).report.openEdges, 0);
 });
@@ -121,7 +133,15 @@ test('a bare BufferGeometry, an interleaved attribute, and a mirrored mesh', () 
   for (let i = 0; i < 8; i++) inter.set([9, src[i * 3], src[i * 3 + 1], src[i * 3 + 2], 7], i * 5);
   const geometry = {
     isBufferGeometry: true,
-    attributes: { position: { isInterleavedBufferAttribute: true, data: { array: inter, stride: 5 }, offset: 1, itemSize: 3, count: 8 } },
+    attributes: {
+      position: {
+        isInterleavedBufferAttribute: true,
+        data: { array: inter, stride: 5 },
+        offset: 1,
+        itemSize: 3,
+        count: 8,
+      },
+    },
     index: base.index,
   };
   const [i] = fromThree(geometry);
@@ -139,21 +159,37 @@ test('an InstancedMesh gives one object per instance', () => {
   inst.set(matrix(10, 0, 0).elements, 16);
   const im = { ...mesh('bolt', matrix(0, 0, 5)), isInstancedMesh: true, instanceMatrix: { array: inst }, count: 2 };
   const objs = fromThree(im);
-  assert.deepEqual(objs.map((o) => o.name), ['bolt #1', 'bolt #2']);
+  assert.deepEqual(
+    objs.map((o) => o.name),
+    ['bolt #1', 'bolt #2'],
+  );
   assert.deepEqual(bbox(objs[1].mesh).min, [10, 0, 5]);
 });
 
 test('bad three.js input throws StrataError', () => {
   const check = (v: unknown, code: string): void =>
-    assert.throws(() => fromThree(v), (e: unknown) => e instanceof StrataError && e.code === code);
+    assert.throws(
+      () => fromThree(v),
+      (e: unknown) => e instanceof StrataError && e.code === code,
+    );
   check(null, 'UNSUPPORTED_FORMAT');
   check({ foo: 1 }, 'UNSUPPORTED_FORMAT');
   check({ isObject3D: true, children: [] }, 'EMPTY_MODEL');
   check({ isBufferGeometry: true, attributes: {} }, 'BAD_MESH');
   check({ isBufferGeometry: true, attributes: { position: { array: [0, 0, 0, 1, 0, 0], itemSize: 2 } } }, 'BAD_MESH');
   check({ isBufferGeometry: true, attributes: { position: { array: [0, 0, 0, 1, 0, 0], itemSize: 3 } } }, 'BAD_MESH');
-  check({ isBufferGeometry: true, attributes: { position: { array: [0, 0, 0, 1, 0, 0, 0, 1, 0], itemSize: 3, count: 9 } } }, 'BAD_MESH');
-  check({ isBufferGeometry: true, attributes: { position: { array: [0, 0, 0, 1, 0, 0, 0, 1, 0] } }, index: { array: [0, 1, 3] } }, 'BAD_MESH');
+  check(
+    { isBufferGeometry: true, attributes: { position: { array: [0, 0, 0, 1, 0, 0, 0, 1, 0], itemSize: 3, count: 9 } } },
+    'BAD_MESH',
+  );
+  check(
+    {
+      isBufferGeometry: true,
+      attributes: { position: { array: [0, 0, 0, 1, 0, 0, 0, 1, 0] } },
+      index: { array: [0, 1, 3] },
+    },
+    'BAD_MESH',
+  );
   check({ isBufferGeometry: true, attributes: { position: { array: [0, 0, NaN, 1, 0, 0, 0, 1, 0] } } }, 'BAD_MESH');
   const cyclic: Record<string, unknown> = { isObject3D: true, children: [] };
   (cyclic.children as unknown[]).push(cyclic);

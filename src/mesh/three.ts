@@ -24,7 +24,9 @@ function isDict(v: unknown): v is Dict {
 
 function isNumberArray(v: unknown): v is ArrayLike<number> {
   if (Array.isArray(v)) return true;
-  return ArrayBuffer.isView(v) && !(v instanceof DataView) && !(v instanceof BigInt64Array) && !(v instanceof BigUint64Array);
+  return (
+    ArrayBuffer.isView(v) && !(v instanceof DataView) && !(v instanceof BigInt64Array) && !(v instanceof BigUint64Array)
+  );
 }
 
 /** Looks like a three.js BufferGeometry (and not an Object3D). */
@@ -36,9 +38,7 @@ export function isThreeGeometry(v: unknown): boolean {
 /** Looks like a three.js Object3D (Mesh, Group, Scene, ...) or a BufferGeometry. */
 export function isThreeLike(v: unknown): boolean {
   if (!isDict(v)) return false;
-  return (
-    v.isObject3D === true || v.isMesh === true || v.isScene === true || v.isGroup === true || isThreeGeometry(v)
-  );
+  return v.isObject3D === true || v.isMesh === true || v.isScene === true || v.isGroup === true || isThreeGeometry(v);
 }
 
 /**
@@ -52,13 +52,17 @@ export function threeLooksYUp(object: unknown): boolean {
 }
 
 export function fromThree(object: unknown): MeshObject[] {
-  if (!isDict(object)) throw new StrataError('UNSUPPORTED_FORMAT', 'fromThree expects a three.js Object3D or BufferGeometry');
+  if (!isDict(object))
+    throw new StrataError('UNSUPPORTED_FORMAT', 'fromThree expects a three.js Object3D or BufferGeometry');
   if (isThreeGeometry(object)) {
     const name = typeof object.name === 'string' && object.name !== '' ? object.name : 'mesh';
     return [{ name, mesh: geometryToMesh(object, identity(), name) }];
   }
   if (!isThreeLike(object) && !Array.isArray(object.children)) {
-    throw new StrataError('UNSUPPORTED_FORMAT', 'fromThree expects a three.js Object3D (Mesh, Group, Scene) or BufferGeometry');
+    throw new StrataError(
+      'UNSUPPORTED_FORMAT',
+      'fromThree expects a three.js Object3D (Mesh, Group, Scene) or BufferGeometry',
+    );
   }
   const useWorld = typeof object.updateMatrixWorld === 'function';
   if (useWorld) (object.updateMatrixWorld as (force?: boolean) => void).call(object, true);
@@ -78,7 +82,8 @@ export function fromThree(object: unknown): MeshObject[] {
 
   const visit = (node: Dict, parentWorld: Affine, depth: number): void => {
     if (seen.has(node)) return;
-    if (depth > MAX_TREE_DEPTH) throw new StrataError('LIMIT_EXCEEDED', `the scene is nested deeper than ${MAX_TREE_DEPTH} levels`);
+    if (depth > MAX_TREE_DEPTH)
+      throw new StrataError('LIMIT_EXCEEDED', `the scene is nested deeper than ${MAX_TREE_DEPTH} levels`);
     seen.add(node);
     if (node.visible === false) {
       hidden++;
@@ -87,11 +92,13 @@ export function fromThree(object: unknown): MeshObject[] {
     const composed = compose(localMatrix(node), parentWorld);
     const world = useWorld ? (matrixOf(node.matrixWorld) ?? composed) : composed;
     if (node.isMesh && isDict(node.geometry)) {
-      const name =
-        typeof node.name === 'string' && node.name !== '' ? node.name : `mesh ${out.length + 1}`;
+      const name = typeof node.name === 'string' && node.name !== '' ? node.name : `mesh ${out.length + 1}`;
       const inst = node.isInstancedMesh && isDict(node.instanceMatrix) ? node.instanceMatrix.array : undefined;
       if (isNumberArray(inst)) {
-        const n = typeof node.count === 'number' ? Math.min(node.count, Math.floor(inst.length / 16)) : Math.floor(inst.length / 16);
+        const n =
+          typeof node.count === 'number'
+            ? Math.min(node.count, Math.floor(inst.length / 16))
+            : Math.floor(inst.length / 16);
         for (let i = 0; i < n; i++) {
           const e = Array.prototype.slice.call(inst, i * 16, i * 16 + 16) as number[];
           add(`${name} #${i + 1}`, node.geometry, compose(fromColumnMajor4x4(e), world));
@@ -106,7 +113,10 @@ export function fromThree(object: unknown): MeshObject[] {
   };
   visit(object, identity(), 0);
   if (out.length === 0) {
-    throw new StrataError('EMPTY_MODEL', `the three.js object holds no ${hidden ? 'visible ' : ''}meshes with triangles${hidden ? ` (${hidden} hidden object${hidden === 1 ? ' is' : 's are'} skipped)` : ''}`);
+    throw new StrataError(
+      'EMPTY_MODEL',
+      `the three.js object holds no ${hidden ? 'visible ' : ''}meshes with triangles${hidden ? ` (${hidden} hidden object${hidden === 1 ? ' is' : 's are'} skipped)` : ''}`,
+    );
   }
   return out;
 }
@@ -125,13 +135,27 @@ function localMatrix(node: Dict): Affine {
   const q = isDict(node.quaternion) ? node.quaternion : {};
   const s = isDict(node.scale) ? node.scale : {};
   const num = (o: Dict, k: string, d: number): number => (typeof o[k] === 'number' ? (o[k] as number) : d);
-  const x = num(q, 'x', 0), y = num(q, 'y', 0), z = num(q, 'z', 0), w = num(q, 'w', 1);
-  const sx = num(s, 'x', 1), sy = num(s, 'y', 1), sz = num(s, 'z', 1);
+  const x = num(q, 'x', 0),
+    y = num(q, 'y', 0),
+    z = num(q, 'z', 0),
+    w = num(q, 'w', 1);
+  const sx = num(s, 'x', 1),
+    sy = num(s, 'y', 1),
+    sz = num(s, 'z', 1);
   // Rotation matrix of a unit quaternion, columns scaled.
   return Float64Array.of(
-    (1 - 2 * (y * y + z * z)) * sx, (2 * (x * y - w * z)) * sy, (2 * (x * z + w * y)) * sz, num(p, 'x', 0),
-    (2 * (x * y + w * z)) * sx, (1 - 2 * (x * x + z * z)) * sy, (2 * (y * z - w * x)) * sz, num(p, 'y', 0),
-    (2 * (x * z - w * y)) * sx, (2 * (y * z + w * x)) * sy, (1 - 2 * (x * x + y * y)) * sz, num(p, 'z', 0),
+    (1 - 2 * (y * y + z * z)) * sx,
+    2 * (x * y - w * z) * sy,
+    2 * (x * z + w * y) * sz,
+    num(p, 'x', 0),
+    2 * (x * y + w * z) * sx,
+    (1 - 2 * (x * x + z * z)) * sy,
+    2 * (y * z - w * x) * sz,
+    num(p, 'y', 0),
+    2 * (x * z - w * y) * sx,
+    2 * (y * z + w * x) * sy,
+    (1 - 2 * (x * x + y * y)) * sz,
+    num(p, 'z', 0),
   );
 }
 
@@ -154,7 +178,10 @@ function geometryToMesh(geometry: Dict, m: Affine, name: string): { positions: F
   if (!isDict(pos)) throw new StrataError('BAD_MESH', `${label}: the geometry has no position attribute`);
   const itemSize = typeof pos.itemSize === 'number' ? pos.itemSize : 3;
   if (!Number.isInteger(itemSize) || itemSize < 3) {
-    throw new StrataError('BAD_MESH', `${label}: position itemSize is ${printable(String(itemSize))}; 3D positions need at least 3`);
+    throw new StrataError(
+      'BAD_MESH',
+      `${label}: position itemSize is ${printable(String(itemSize))}; 3D positions need at least 3`,
+    );
   }
   let arr: unknown = pos.array;
   let stride = itemSize;
@@ -167,20 +194,28 @@ function geometryToMesh(geometry: Dict, m: Affine, name: string): { positions: F
   }
   if (!isNumberArray(arr)) throw new StrataError('BAD_MESH', `${label}: the position attribute has no array`);
   if (!Number.isInteger(stride) || stride < 3 || !Number.isInteger(offset) || offset < 0 || offset + 3 > stride) {
-    throw new StrataError('BAD_MESH', `${label}: bad interleaved layout (stride ${printable(String(stride))}, offset ${printable(String(offset))})`);
+    throw new StrataError(
+      'BAD_MESH',
+      `${label}: bad interleaved layout (stride ${printable(String(stride))}, offset ${printable(String(offset))})`,
+    );
   }
   const fit = arr.length >= offset + 3 ? Math.floor((arr.length - offset - 3) / stride) + 1 : 0;
   let count = fit;
   if (typeof pos.count === 'number') {
     if (!Number.isInteger(pos.count) || pos.count < 0 || pos.count > fit) {
-      throw new StrataError('BAD_MESH', `${label}: position count ${printable(String(pos.count))} does not fit its array of ${arr.length} numbers`);
+      throw new StrataError(
+        'BAD_MESH',
+        `${label}: position count ${printable(String(pos.count))} does not fit its array of ${arr.length} numbers`,
+      );
     }
     count = pos.count;
   }
   const norm = pos.normalized === true ? normaliser(arr) : 0;
   const src = new Float64Array(count * 3);
   for (let i = 0, o = offset; i < count; i++, o += stride) {
-    let x = arr[o], y = arr[o + 1], z = arr[o + 2];
+    let x = arr[o],
+      y = arr[o + 1],
+      z = arr[o + 2];
     if (norm !== 0) {
       x = Math.max(x / norm, -1);
       y = Math.max(y / norm, -1);
@@ -198,18 +233,23 @@ function geometryToMesh(geometry: Dict, m: Affine, name: string): { positions: F
   if (isDict(index) && isNumberArray(index.array)) {
     const ia = index.array;
     let n = ia.length;
-    if (typeof index.count === 'number' && Number.isInteger(index.count) && index.count >= 0 && index.count <= n) n = index.count;
+    if (typeof index.count === 'number' && Number.isInteger(index.count) && index.count >= 0 && index.count <= n)
+      n = index.count;
     if (n % 3 !== 0) throw new StrataError('BAD_MESH', `${label}: ${n} indices is not a multiple of 3`);
     indices = new Uint32Array(n);
     for (let i = 0; i < n; i++) {
       const v = ia[i];
       if (!Number.isInteger(v) || v < 0 || v >= count) {
-        throw new StrataError('BAD_MESH', `${label}: index ${i} is ${printable(String(v))}, outside the ${count} vertices`);
+        throw new StrataError(
+          'BAD_MESH',
+          `${label}: index ${i} is ${printable(String(v))}, outside the ${count} vertices`,
+        );
       }
       indices[i] = v;
     }
   } else {
-    if (count % 3 !== 0) throw new StrataError('BAD_MESH', `${label}: ${count} unindexed vertices is not a multiple of 3`);
+    if (count % 3 !== 0)
+      throw new StrataError('BAD_MESH', `${label}: ${count} unindexed vertices is not a multiple of 3`);
     indices = new Uint32Array(count);
     for (let i = 0; i < count; i++) indices[i] = i;
   }

@@ -48,7 +48,8 @@ export function assemble(e: ExpandedItem, spec: ObjectSpec): Assembled {
   const volumes: MeshVolume[] = [];
   for (const p of spec.pieces) {
     if (p.kind === 'part' && p.settings === undefined) continue;
-    if (volumes.length >= MAX_VOLUMES) throw new StrataError('LIMIT_EXCEEDED', `3MF: object "${spec.name}" has more than ${MAX_VOLUMES} volumes`);
+    if (volumes.length >= MAX_VOLUMES)
+      throw new StrataError('LIMIT_EXCEEDED', `3MF: object "${spec.name}" has more than ${MAX_VOLUMES} volumes`);
     const v: MeshVolume = { kind: p.kind === 'part' ? 'modifier' : p.kind, name: p.name, mesh: cutter.mesh(p.runs) };
     if (p.settings !== undefined) v.settings = p.settings;
     volumes.push(v);

@@ -144,7 +144,8 @@ export function parseLayerRanges(bytes: Uint8Array, fileName: string, warnings: 
         if (x.attrIs('min_z')) minZ = x.number();
         else if (x.attrIs('max_z')) maxZ = x.number();
       }
-      if (!Number.isFinite(minZ) || !Number.isFinite(maxZ)) x.fail('a <range> needs numbers in min_z and max_z', x.nameStart);
+      if (!Number.isFinite(minZ) || !Number.isFinite(maxZ))
+        x.fail('a <range> needs numbers in min_z and max_z', x.nameStart);
       if (!(minZ < maxZ)) x.fail(`the layer range ${minZ}–${maxZ} mm is empty`, x.nameStart);
       range = { minZ, maxZ, options: new Map() };
       ranges.push(range);
@@ -182,14 +183,21 @@ export function parseHeightProfiles(text: string, fileName: string, warnings: st
     if (line.trim() === '') continue;
     const m = /^\s*object_id\s*=\s*(\d+)\s*\|(.*)$/.exec(line);
     const values = m ? m[2].split(';').map((v) => (v.trim() === '' ? NaN : Number(v))) : [];
-    const ok = m !== null && values.length >= 4 && values.length % 2 === 0 && values.length <= 2 * MAX_PROFILE_POINTS &&
+    const ok =
+      m !== null &&
+      values.length >= 4 &&
+      values.length % 2 === 0 &&
+      values.length <= 2 * MAX_PROFILE_POINTS &&
       values.every((v, i) => Number.isFinite(v) && (i % 2 === 0 ? v >= 0 && (i === 0 || v > values[i - 2]) : v > 0));
     if (!ok) {
-      warnings.push(`3MF ${fileName}: a line that is not a layer height profile (object_id=N|z;h;…, Z rising, heights above 0) is not used`);
+      warnings.push(
+        `3MF ${fileName}: a line that is not a layer height profile (object_id=N|z;h;…, Z rising, heights above 0) is not used`,
+      );
       continue;
     }
     const id = Number(m![1]);
-    if (out.has(id)) warnings.push(`3MF ${fileName}: object ${id} has two layer height profiles; the second is not used`);
+    if (out.has(id))
+      warnings.push(`3MF ${fileName}: object ${id} has two layer height profiles; the second is not used`);
     else out.set(id, values);
   }
   return out;

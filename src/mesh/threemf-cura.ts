@@ -23,7 +23,13 @@ export const CURA_NS = 'http://software.ultimaker.com/xml/cura/3mf/2015/10';
 const MAX_STACK_FILE_BYTES = 4 * 1024 * 1024;
 
 /** Entries that say what a node is or where it goes rather than how it prints. */
-const NOT_SETTINGS = new Set(['mesh_node_objectid', 'extruder_nr', 'print_order', 'drop_to_buildplate', 'setting_version']);
+const NOT_SETTINGS = new Set([
+  'mesh_node_objectid',
+  'extruder_nr',
+  'print_order',
+  'drop_to_buildplate',
+  'setting_version',
+]);
 const MESH_KINDS: ReadonlyArray<readonly [string, VolumeKind]> = [
   ['infill_mesh', 'modifier'],
   ['cutting_mesh', 'modifier'],
@@ -44,7 +50,10 @@ export function isCuraProject(build: Build): boolean {
 }
 
 /** A node's Cura settings (prefix removed), or null when it has none. */
-function nodeSettings(metadata: ReadonlyMap<string, string> | null | undefined, root: ModelPart): Map<string, string> | null {
+function nodeSettings(
+  metadata: ReadonlyMap<string, string> | null | undefined,
+  root: ModelPart,
+): Map<string, string> | null {
   if (!metadata) return null;
   const out = new Map<string, string>();
   for (const [name, value] of metadata) {
@@ -78,7 +87,8 @@ export function curaPlanner(build: Build): (item: BuildItem, e: ExpandedItem) =>
         let settings = own(node);
         if (k === 0 && itemSettings !== null) settings = new Map([...(settings ?? []), ...itemSettings]);
         // a node's own mesh, kept in a component of its own, is the node's
-        if (settings === null && k > 0 && s.path[k - 1].metadata?.get('mesh_node_objectid') === String(node.id)) continue;
+        if (settings === null && k > 0 && s.path[k - 1].metadata?.get('mesh_node_objectid') === String(node.id))
+          continue;
         if (settings !== null) return { node, settings };
       }
       return null;
@@ -134,15 +144,24 @@ function stripKinds(settings: ReadonlyMap<string, string>): SettingsSource | nul
  * The print's settings from a Cura project's stacks: the global stack's containers, then the first
  * extruder's over them, each from the definition up to the user's changes. Undefined when there are none.
  */
-export function curaProjectSettings(pkg: ThreeMfPackage, readText: (key: string, maxBytes: number) => string | undefined): SettingsSource | undefined {
+export function curaProjectSettings(
+  pkg: ThreeMfPackage,
+  readText: (key: string, maxBytes: number) => string | undefined,
+): SettingsSource | undefined {
   const keys = pkg.keys().filter((k) => k.startsWith('cura/'));
   const globalKey = keys.find((k) => k.endsWith('.global.cfg'));
   if (globalKey === undefined) return undefined;
   const extruders = keys
     .filter((k) => k.endsWith('.extruder.cfg'))
     .map((k) => ({ k, ini: parseCuraIni(readText(k, MAX_STACK_FILE_BYTES) ?? '') }))
-    .sort((a, b) => Number(a.ini.get('metadata')?.get('position') ?? 99) - Number(b.ini.get('metadata')?.get('position') ?? 99));
-  const stacks = [parseCuraIni(readText(globalKey, MAX_STACK_FILE_BYTES) ?? ''), ...(extruders.length > 0 ? [extruders[0].ini] : [])];
+    .sort(
+      (a, b) =>
+        Number(a.ini.get('metadata')?.get('position') ?? 99) - Number(b.ini.get('metadata')?.get('position') ?? 99),
+    );
+  const stacks = [
+    parseCuraIni(readText(globalKey, MAX_STACK_FILE_BYTES) ?? ''),
+    ...(extruders.length > 0 ? [extruders[0].ini] : []),
+  ];
   const values: Record<string, string> = {};
   let any = false;
   for (const stack of stacks) {

@@ -84,7 +84,11 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
   const metadata = new Map<string, string>();
   const namespaces = new Map<string, string>();
   // the named value being read: where its text starts and which map it goes to
-  const value: { name: string; start: number; target: Map<string, string> | null } = { name: '', start: 0, target: null };
+  const value: { name: string; start: number; target: Map<string, string> | null } = {
+    name: '',
+    start: 0,
+    target: null,
+  };
   let groupTarget: Map<string, string> | null = null;
 
   let obj: ModelObject | null = null;
@@ -115,7 +119,9 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
     switch (parent) {
       case C_VERTICES:
         if (x.is('vertex') && isCore() && verts !== null) {
-          let vx = NaN, vy = NaN, vz = NaN;
+          let vx = NaN,
+            vy = NaN,
+            vz = NaN;
           while (x.nextAttr()) {
             if (x.attrNameEnd - x.attrNameStart !== 1) continue;
             const c = bytes[x.attrNameStart];
@@ -131,7 +137,9 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
         break;
       case C_TRIANGLES:
         if (x.is('triangle') && isCore() && tris !== null) {
-          let v1 = -1, v2 = -1, v3 = -1;
+          let v1 = -1,
+            v2 = -1,
+            v3 = -1;
           while (x.nextAttr()) {
             if (x.attrNameEnd - x.attrNameStart !== 2 || bytes[x.attrNameStart] !== 118) continue;
             const c = bytes[x.attrNameStart + 1];
@@ -154,7 +162,11 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
           if (x.attrIs('unit')) {
             const u = x.value();
             const s = UNIT_MM[u];
-            if (s === undefined) x.fail(`unknown unit "${printable(u)}" (expected micron, millimeter, centimeter, inch, foot or meter)`, x.nameStart);
+            if (s === undefined)
+              x.fail(
+                `unknown unit "${printable(u)}" (expected micron, millimeter, centimeter, inch, foot or meter)`,
+                x.nameStart,
+              );
             unitScale = s;
           } else if (x.attrNameEnd - x.attrNameStart > 6 && x.attrName().startsWith('xmlns:')) {
             const uri = x.value();

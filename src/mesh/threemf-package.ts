@@ -39,13 +39,17 @@ export function partKey(name: string): string {
   return n.toLowerCase();
 }
 
-export function openPackage(bytes: Uint8Array, budget: ZipBudget = { maxBytes: DEFAULT_INFLATE_BYTES, setting: 'inflateBudget' }): ThreeMfPackage {
+export function openPackage(
+  bytes: Uint8Array,
+  budget: ZipBudget = { maxBytes: DEFAULT_INFLATE_BYTES, setting: 'inflateBudget' },
+): ThreeMfPackage {
   if (bytes.length < 22 || bytes[0] !== 0x50 || bytes[1] !== 0x4b) {
     throw new StrataError('BAD_FILE', 'not a 3MF file: a 3MF is a zip archive and this does not start like one');
   }
   const zip = new ZipArchive(bytes, budget, partKey);
   const models = [...zip.entries.keys()].filter((k) => k.endsWith('.model'));
-  if (models.length === 0) throw new StrataError('BAD_FILE', 'not a valid 3MF file: the archive holds no 3D model part');
+  if (models.length === 0)
+    throw new StrataError('BAD_FILE', 'not a valid 3MF file: the archive holds no 3D model part');
   const cache = new Map<string, Uint8Array>();
   const read = (key: string): Uint8Array | undefined => {
     const known = cache.get(key);
@@ -62,7 +66,10 @@ export function openPackage(bytes: Uint8Array, budget: ZipBudget = { maxBytes: D
   if (!zip.entries.has(root)) root = '3d/3dmodel.model';
   if (!zip.entries.has(root)) {
     if (models.length !== 1) {
-      throw new StrataError('BAD_FILE', 'not a valid 3MF file: cannot tell which part is the 3D model (no usable _rels/.rels)');
+      throw new StrataError(
+        'BAD_FILE',
+        'not a valid 3MF file: cannot tell which part is the 3D model (no usable _rels/.rels)',
+      );
     }
     root = models[0];
   }
@@ -71,7 +78,10 @@ export function openPackage(bytes: Uint8Array, budget: ZipBudget = { maxBytes: D
     if (entry === undefined) return undefined;
     if (entry.size > maxBytes) {
       const mib = (n: number) => `${Math.ceil((n / 1048576) * 10) / 10} MiB`;
-      throw new StrataError('LIMIT_EXCEEDED', `3MF part ${printable(entry.name)} unpacks to ${mib(entry.size)}, more than the ${mib(maxBytes)} a slicer config may take`);
+      throw new StrataError(
+        'LIMIT_EXCEEDED',
+        `3MF part ${printable(entry.name)} unpacks to ${mib(entry.size)}, more than the ${mib(maxBytes)} a slicer config may take`,
+      );
     }
     return read(key);
   };

@@ -29,7 +29,14 @@ import { curaPlanner, curaProjectSettings, isCuraProject } from './threemf-cura.
 import { partKey } from './threemf-package.js';
 import { orcaPlanner, prusaPlanner, wholeItem } from './threemf-slic3r.js';
 import { overlayStrata, readStrataProject, type StrataProjectObject } from './threemf-strata.js';
-import { expandItem, openBuild, type Build, type BuildItem, type ExpandedItem, type ThreeMfOptions } from './threemf.js';
+import {
+  expandItem,
+  openBuild,
+  type Build,
+  type BuildItem,
+  type ExpandedItem,
+  type ThreeMfOptions,
+} from './threemf.js';
 import type { MeshObject, MeshVolume, SettingsSource } from './types.js';
 
 export interface ThreeMfProject {
@@ -62,7 +69,8 @@ export function parse3mfProject(bytes: Uint8Array, name = 'model', opts: ThreeMf
     const { object, volumes } = assemble(e, spec);
     if (object === null) {
       if (cura) loose.push({ from: spec.name, volumes });
-      else if (volumes.length > 0) warnings.push(`3MF: object "${spec.name}" has no printed part; its volumes are not used`);
+      else if (volumes.length > 0)
+        warnings.push(`3MF: object "${spec.name}" has no printed part; its volumes are not used`);
       return;
     }
     if (used.has(object.name)) object.name = `${object.name} (${i + 1})`;
@@ -104,10 +112,12 @@ function readProjectData(
     const rangesXml = read(PRUSA_LAYER_RANGES);
     const ranges = rangesXml === undefined ? undefined : parseLayerRanges(rangesXml, PRUSA_LAYER_RANGES, warnings);
     const profileText = text(PRUSA_HEIGHT_PROFILE);
-    const profiles = profileText === undefined ? undefined : parseHeightProfiles(profileText, PRUSA_HEIGHT_PROFILE, warnings);
+    const profiles =
+      profileText === undefined ? undefined : parseHeightProfiles(profileText, PRUSA_HEIGHT_PROFILE, warnings);
     let planner: Planner = prusaPlanner(build, { format: 'prusaslicer', config, ranges, profiles }, warnings);
     const printText = text(PRUSA_PRINT_CONFIG);
-    let projectSettings: SettingsSource | undefined = printText === undefined ? undefined : { format: 'prusaslicer', values: parseSlic3rConfig(printText) };
+    let projectSettings: SettingsSource | undefined =
+      printText === undefined ? undefined : { format: 'prusaslicer', values: parseSlic3rConfig(printText) };
     const strataText = text(STRATA_PROJECT);
     if (strataText !== undefined) {
       const project = readStrataProject(strataText);
@@ -118,7 +128,8 @@ function readProjectData(
         const byId = new Map<number, StrataProjectObject>();
         for (const o of project.objects) if (!byId.has(o.id)) byId.set(o.id, o);
         planner = (item, e) => overlayStrata(prusa(item, e), byId, warnings);
-        if (Object.keys(project.printSettings).length > 0) projectSettings = { format: 'strata', values: project.printSettings };
+        if (Object.keys(project.printSettings).length > 0)
+          projectSettings = { format: 'strata', values: project.printSettings };
       }
     }
     return { planner, projectSettings, cura: false };
@@ -129,7 +140,8 @@ function readProjectData(
     const rangesXml = read(ORCA_LAYER_RANGES);
     const ranges = rangesXml === undefined ? undefined : parseLayerRanges(rangesXml, ORCA_LAYER_RANGES, warnings);
     const profileText = text(ORCA_HEIGHT_PROFILE);
-    const profiles = profileText === undefined ? undefined : parseHeightProfiles(profileText, ORCA_HEIGHT_PROFILE, warnings);
+    const profiles =
+      profileText === undefined ? undefined : parseHeightProfiles(profileText, ORCA_HEIGHT_PROFILE, warnings);
     const planner = orcaPlanner(build, { format: 'orcaslicer', config, ranges, profiles }, warnings);
     return { planner, projectSettings: orcaProjectSettings(text(ORCA_PROJECT_CONFIG), warnings), cura: false };
   }
@@ -142,7 +154,12 @@ function readProjectData(
   }
   // PrusaSlicer's print config alone (a model saved without objects of its own settings)
   const printText = text(PRUSA_PRINT_CONFIG);
-  if (printText !== undefined) return { planner: wholeItem, projectSettings: { format: 'prusaslicer', values: parseSlic3rConfig(printText) }, cura: false };
+  if (printText !== undefined)
+    return {
+      planner: wholeItem,
+      projectSettings: { format: 'prusaslicer', values: parseSlic3rConfig(printText) },
+      cura: false,
+    };
   return { planner: wholeItem, cura: false };
 }
 
@@ -151,7 +168,8 @@ function orcaProjectSettings(json: string | undefined, warnings: string[]): Sett
   if (json === undefined) return undefined;
   try {
     const values: unknown = JSON.parse(json);
-    if (typeof values === 'object' && values !== null && !Array.isArray(values)) return { format: 'orcaslicer', values: values as Record<string, unknown> };
+    if (typeof values === 'object' && values !== null && !Array.isArray(values))
+      return { format: 'orcaslicer', values: values as Record<string, unknown> };
   } catch {
     // reported below
   }

@@ -23,7 +23,16 @@ import type { LayerRangeSettings, SettingsSource, VolumeKind } from './types.js'
 type Slic3rFormat = 'prusaslicer' | 'orcaslicer';
 
 /** Metadata keys that describe an object or volume rather than set anything. */
-const NOT_SETTINGS = new Set(['name', 'volume_type', 'modifier', 'matrix', 'extruder', 'module', 'mesh_shared', 'part_type']);
+const NOT_SETTINGS = new Set([
+  'name',
+  'volume_type',
+  'modifier',
+  'matrix',
+  'extruder',
+  'module',
+  'mesh_shared',
+  'part_type',
+]);
 
 const PRUSA_TYPES: Readonly<Record<string, 'part' | VolumeKind>> = {
   ModelPart: 'part',
@@ -41,7 +50,10 @@ const ORCA_TYPES: Readonly<Record<string, 'part' | VolumeKind>> = {
 };
 
 /** The settings among an object's or volume's metadata, or undefined when there are none. */
-export function metadataSettings(metadata: ReadonlyMap<string, string>, format: SettingsSource['format']): SettingsSource | undefined {
+export function metadataSettings(
+  metadata: ReadonlyMap<string, string>,
+  format: SettingsSource['format'],
+): SettingsSource | undefined {
   const values: Record<string, string> = {};
   let any = false;
   for (const [k, v] of metadata) {
@@ -53,7 +65,10 @@ export function metadataSettings(metadata: ReadonlyMap<string, string>, format: 
 }
 
 /** Layer ranges of one object in our terms. */
-export function layerRanges(list: readonly ConfigRange[] | undefined, format: SettingsSource['format']): LayerRangeSettings[] | undefined {
+export function layerRanges(
+  list: readonly ConfigRange[] | undefined,
+  format: SettingsSource['format'],
+): LayerRangeSettings[] | undefined {
   if (list === undefined || list.length === 0) return undefined;
   return list.map((r) => ({ fromZ: r.minZ, toZ: r.maxZ, settings: { format, values: Object.fromEntries(r.options) } }));
 }
@@ -67,10 +82,15 @@ export interface Slic3rProject {
 }
 
 /** What each of an item's triangles is, for a PrusaSlicer project. */
-export function prusaPlanner(build: Build, project: Slic3rProject, warnings: string[]): (item: BuildItem, e: ExpandedItem) => ObjectSpec {
+export function prusaPlanner(
+  build: Build,
+  project: Slic3rProject,
+  warnings: string[],
+): (item: BuildItem, e: ExpandedItem) => ObjectSpec {
   // PrusaSlicer numbers its objects as the model's mesh objects come
   const objectNumber = new Map<ModelObject, number>();
-  for (const o of build.root.objects.values()) if (o.triangles !== null && o.triangles.length > 0) objectNumber.set(o, objectNumber.size + 1);
+  for (const o of build.root.objects.values())
+    if (o.triangles !== null && o.triangles.length > 0) objectNumber.set(o, objectNumber.size + 1);
   return (item, e) => {
     const found = configObject(build, item, project.config);
     if (found === null) return wholeItem(item, e);
@@ -98,7 +118,11 @@ export function prusaPlanner(build: Build, project: Slic3rProject, warnings: str
 }
 
 /** What each of an item's triangles is, for an OrcaSlicer / Bambu Studio project. */
-export function orcaPlanner(build: Build, project: Slic3rProject, warnings: string[]): (item: BuildItem, e: ExpandedItem) => ObjectSpec {
+export function orcaPlanner(
+  build: Build,
+  project: Slic3rProject,
+  warnings: string[],
+): (item: BuildItem, e: ExpandedItem) => ObjectSpec {
   const objectNumber = new Map<ModelObject, number>();
   for (const item of build.items) {
     const o = build.lookup(item.key, item.ref.objectId);
@@ -117,9 +141,12 @@ export function orcaPlanner(build: Build, project: Slic3rProject, warnings: stri
     const isRanged = new Set(ranged);
     if (ranged.length > 0) {
       const own = e.segments.findIndex((s) => s.path.length === 1);
-      if (own < 0) throw new StrataError('BAD_FILE', `3MF: object ${cfg.id} lists triangle ranges but has no mesh of its own`);
+      if (own < 0)
+        throw new StrataError('BAD_FILE', `3MF: object ${cfg.id} lists triangle ranges but has no mesh of its own`);
       claimed.add(own);
-      pieces.push(...rangePieces(cfg, ranged, e.segments[own].start, e.segments[own].count, name, project.format, warnings));
+      pieces.push(
+        ...rangePieces(cfg, ranged, e.segments[own].start, e.segments[own].count, name, project.format, warnings),
+      );
     }
     // the item's triangles by the component (of the item's object) they come from
     const byComponent = new Map<number, number[]>();
@@ -138,14 +165,22 @@ export function orcaPlanner(build: Build, project: Slic3rProject, warnings: stri
         claimed.add(k);
       }
       if (runs.length === 0) {
-        warnings.push(`3MF: object "${name}" lists a part ${v.id ?? '(without id)'} that is not one of its components; skipped`);
+        warnings.push(
+          `3MF: object "${name}" lists a part ${v.id ?? '(without id)'} that is not one of its components; skipped`,
+        );
         return;
       }
-      pieces.push(piece(v, ORCA_TYPES[v.subtype] ?? 'part', runs, v.metadata.get('name') || `${name} ${i + 1}`, project.format));
+      pieces.push(
+        piece(v, ORCA_TYPES[v.subtype] ?? 'part', runs, v.metadata.get('name') || `${name} ${i + 1}`, project.format),
+      );
     });
-    const rest = e.segments.filter((_, k) => !claimed.has(k)).map((s): TriangleRun => ({ start: s.start, count: s.count }));
+    const rest = e.segments
+      .filter((_, k) => !claimed.has(k))
+      .map((s): TriangleRun => ({ start: s.start, count: s.count }));
     if (rest.length > 0) {
-      warnings.push(`3MF: ${rest.length} component${rest.length === 1 ? '' : 's'} of object "${name}" are not listed in its config; printed as parts`);
+      warnings.push(
+        `3MF: ${rest.length} component${rest.length === 1 ? '' : 's'} of object "${name}" are not listed in its config; printed as parts`,
+      );
       pieces.unshift({ kind: 'part', name, runs: rest });
     }
     const spec: ObjectSpec = { name, id: cfg.id, pieces };
@@ -161,14 +196,21 @@ export function orcaPlanner(build: Build, project: Slic3rProject, warnings: stri
 
 /** The whole item as one printed part (no project data for it). */
 export function wholeItem(item: BuildItem, e: ExpandedItem): ObjectSpec {
-  return { name: item.label, pieces: [{ kind: 'part', name: item.label, runs: [{ start: 0, count: e.indices.length / 3 }] }] };
+  return {
+    name: item.label,
+    pieces: [{ kind: 'part', name: item.label, runs: [{ start: 0, count: e.indices.length / 3 }] }],
+  };
 }
 
 /**
  * The object of the project config an item places: its own, or (an instance) the one its only component
  * refers to, followed down. Config ids are object ids of the root part.
  */
-function configObject(build: Build, item: BuildItem, config: ReadonlyMap<number, ConfigObject>): { object: ModelObject; cfg: ConfigObject } | null {
+function configObject(
+  build: Build,
+  item: BuildItem,
+  config: ReadonlyMap<number, ConfigObject>,
+): { object: ModelObject; cfg: ConfigObject } | null {
   let key = item.key;
   let object = build.lookup(key, item.ref.objectId);
   for (let depth = 0; depth < 32; depth++) {
@@ -183,15 +225,31 @@ function configObject(build: Build, item: BuildItem, config: ReadonlyMap<number,
 }
 
 /** Pieces from PrusaSlicer's inclusive triangle ranges, checked against the object's `count` triangles. */
-function rangePieces(cfg: ConfigObject, volumes: readonly ConfigVolume[], start: number, count: number, name: string, format: Slic3rFormat, warnings: string[]): PieceSpec[] {
+function rangePieces(
+  cfg: ConfigObject,
+  volumes: readonly ConfigVolume[],
+  start: number,
+  count: number,
+  name: string,
+  format: Slic3rFormat,
+  warnings: string[],
+): PieceSpec[] {
   if (volumes.length > MAX_VOLUMES) tooManyVolumes(name);
   const index = new Map(cfg.volumes.map((v, i) => [v, i]));
   const order = volumes.map((v) => ({ v, i: index.get(v)! }));
   for (const { v, i } of order) {
-    if (v.firstId === null || v.lastId === null) throw new StrataError('BAD_FILE', `3MF: volume ${i + 1} of object ${cfg.id} has no firstid and lastid`);
-    if (v.lastId < v.firstId) throw new StrataError('BAD_FILE', `3MF: volume ${i + 1} of object ${cfg.id} ends (triangle ${v.lastId}) before it starts (${v.firstId})`);
+    if (v.firstId === null || v.lastId === null)
+      throw new StrataError('BAD_FILE', `3MF: volume ${i + 1} of object ${cfg.id} has no firstid and lastid`);
+    if (v.lastId < v.firstId)
+      throw new StrataError(
+        'BAD_FILE',
+        `3MF: volume ${i + 1} of object ${cfg.id} ends (triangle ${v.lastId}) before it starts (${v.firstId})`,
+      );
     if (v.lastId >= count) {
-      throw new StrataError('BAD_FILE', `3MF: volume ${i + 1} of object ${cfg.id} covers triangles ${v.firstId}–${v.lastId}, but the object has ${count}`);
+      throw new StrataError(
+        'BAD_FILE',
+        `3MF: volume ${i + 1} of object ${cfg.id} covers triangles ${v.firstId}–${v.lastId}, but the object has ${count}`,
+      );
     }
   }
   const sorted = [...order].sort((a, b) => a.v.firstId! - b.v.firstId!);
@@ -199,16 +257,27 @@ function rangePieces(cfg: ConfigObject, volumes: readonly ConfigVolume[], start:
   for (let k = 0; k < sorted.length; k++) {
     const { v, i } = sorted[k];
     if (k > 0 && v.firstId! <= sorted[k - 1].v.lastId!) {
-      throw new StrataError('BAD_FILE', `3MF: volumes ${sorted[k - 1].i + 1} and ${i + 1} of object ${cfg.id} share triangles (from ${v.firstId})`);
+      throw new StrataError(
+        'BAD_FILE',
+        `3MF: volumes ${sorted[k - 1].i + 1} and ${i + 1} of object ${cfg.id} share triangles (from ${v.firstId})`,
+      );
     }
     covered += v.lastId! - v.firstId! + 1;
   }
   if (covered < count) {
-    warnings.push(`3MF: ${count - covered} triangles of object "${name}" belong to no volume; dropped, as the slicer that wrote it drops them`);
+    warnings.push(
+      `3MF: ${count - covered} triangles of object "${name}" belong to no volume; dropped, as the slicer that wrote it drops them`,
+    );
   }
   return order.map(({ v, i }) => {
-    const kind = format === 'prusaslicer' ? prusaKind(v) : ORCA_TYPES[v.subtype] ?? 'part';
-    return piece(v, kind, [{ start: start + v.firstId!, count: v.lastId! - v.firstId! + 1 }], v.metadata.get('name') || `${name} ${i + 1}`, format);
+    const kind = format === 'prusaslicer' ? prusaKind(v) : (ORCA_TYPES[v.subtype] ?? 'part');
+    return piece(
+      v,
+      kind,
+      [{ start: start + v.firstId!, count: v.lastId! - v.firstId! + 1 }],
+      v.metadata.get('name') || `${name} ${i + 1}`,
+      format,
+    );
   });
 }
 
@@ -218,7 +287,13 @@ function prusaKind(v: ConfigVolume): 'part' | VolumeKind {
   return v.metadata.get('modifier') === '1' ? 'modifier' : 'part';
 }
 
-function piece(v: ConfigVolume, kind: 'part' | VolumeKind, runs: TriangleRun[], name: string, format: Slic3rFormat): PieceSpec {
+function piece(
+  v: ConfigVolume,
+  kind: 'part' | VolumeKind,
+  runs: TriangleRun[],
+  name: string,
+  format: Slic3rFormat,
+): PieceSpec {
   const p: PieceSpec = { kind, name, runs };
   const settings = metadataSettings(v.metadata, format);
   if (settings !== undefined) p.settings = settings;

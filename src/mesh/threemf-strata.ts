@@ -44,7 +44,8 @@ export function readStrataProject(text: string): StrataProject | string {
     return 'it is not valid JSON';
   }
   if (!isRecord(json)) return 'it is not a JSON object';
-  if (json.version !== STRATA_PROJECT_VERSION) return `its version is ${JSON.stringify(json.version)}, not ${STRATA_PROJECT_VERSION}`;
+  if (json.version !== STRATA_PROJECT_VERSION)
+    return `its version is ${JSON.stringify(json.version)}, not ${STRATA_PROJECT_VERSION}`;
   const printSettings = json.printSettings ?? {};
   if (!isRecord(printSettings)) return 'printSettings is not an object';
   if (!Array.isArray(json.objects)) return 'objects is not a list';
@@ -55,24 +56,42 @@ export function readStrataProject(text: string): StrataProject | string {
     const settings = o.settings ?? {};
     const volumes = o.volumes ?? [];
     const ranges = o.layerRanges ?? [];
-    if (!isRecord(settings) || !Array.isArray(volumes) || !Array.isArray(ranges)) return `${where}: settings, volumes or layerRanges is malformed`;
+    if (!isRecord(settings) || !Array.isArray(volumes) || !Array.isArray(ranges))
+      return `${where}: settings, volumes or layerRanges is malformed`;
     const vs: StrataProjectVolume[] = [];
     for (const v of volumes) {
-      if (!isRecord(v) || !KINDS.includes(v.kind as VolumeKind) || typeof v.name !== 'string' || !isRecord(v.settings ?? {})) {
+      if (
+        !isRecord(v) ||
+        !KINDS.includes(v.kind as VolumeKind) ||
+        typeof v.name !== 'string' ||
+        !isRecord(v.settings ?? {})
+      ) {
         return `${where}: a volume needs a kind (${KINDS.join(', ')}), a name and settings`;
       }
       vs.push({ kind: v.kind as VolumeKind, name: v.name, settings: (v.settings ?? {}) as Record<string, unknown> });
     }
     const rs: StrataProjectObject['layerRanges'] = [];
     for (const r of ranges) {
-      if (!isRecord(r) || typeof r.fromZ !== 'number' || typeof r.toZ !== 'number' || !(r.fromZ < r.toZ) || !isRecord(r.settings ?? {})) {
+      if (
+        !isRecord(r) ||
+        typeof r.fromZ !== 'number' ||
+        typeof r.toZ !== 'number' ||
+        !(r.fromZ < r.toZ) ||
+        !isRecord(r.settings ?? {})
+      ) {
         return `${where}: a layer range needs fromZ below toZ and settings`;
       }
       rs.push({ fromZ: r.fromZ, toZ: r.toZ, settings: (r.settings ?? {}) as Record<string, unknown> });
     }
     rs.sort((a, b) => a.fromZ - b.fromZ);
     if (rs.some((r, k) => k > 0 && r.fromZ < rs[k - 1].toZ)) return `${where}: its layer ranges overlap`;
-    objects.push({ id: o.id as number, name: o.name, settings: settings as Record<string, unknown>, volumes: vs, layerRanges: rs });
+    objects.push({
+      id: o.id as number,
+      name: o.name,
+      settings: settings as Record<string, unknown>,
+      volumes: vs,
+      layerRanges: rs,
+    });
   }
   return { version: STRATA_PROJECT_VERSION, printSettings: printSettings as Record<string, unknown>, objects };
 }
@@ -82,12 +101,18 @@ const strata = (values: Record<string, unknown>): SettingsSource | undefined =>
   Object.keys(values).length > 0 ? { format: 'strata', values: { ...values } } : undefined;
 
 /** Replace what PrusaSlicer's data says of an object (`spec`) with Strata's copy, found by the object's id. */
-export function overlayStrata(spec: ObjectSpec, objects: ReadonlyMap<number, StrataProjectObject>, warnings: string[]): ObjectSpec {
+export function overlayStrata(
+  spec: ObjectSpec,
+  objects: ReadonlyMap<number, StrataProjectObject>,
+  warnings: string[],
+): ObjectSpec {
   const o = spec.id === undefined ? undefined : objects.get(spec.id);
   if (o === undefined) return spec;
   const volumePieces = spec.pieces.filter((p) => p.kind !== 'part');
   if (volumePieces.length !== o.volumes.length || volumePieces.some((p, i) => p.kind !== o.volumes[i].kind)) {
-    warnings.push(`3MF: Strata's project data of object "${o.name}" does not match its volumes; PrusaSlicer's settings are used`);
+    warnings.push(
+      `3MF: Strata's project data of object "${o.name}" does not match its volumes; PrusaSlicer's settings are used`,
+    );
     return spec;
   }
   let k = 0;
@@ -103,7 +128,11 @@ export function overlayStrata(spec: ObjectSpec, objects: ReadonlyMap<number, Str
   const out: ObjectSpec = { name: o.name, pieces };
   const settings = strata(o.settings);
   if (settings !== undefined) out.settings = settings;
-  const ranges: LayerRangeSettings[] = o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { format: 'strata', values: { ...r.settings } } }));
+  const ranges: LayerRangeSettings[] = o.layerRanges.map((r) => ({
+    fromZ: r.fromZ,
+    toZ: r.toZ,
+    settings: { format: 'strata', values: { ...r.settings } },
+  }));
   if (ranges.length > 0) out.layerRanges = ranges;
   return out;
 }

@@ -52,17 +52,23 @@ const IDENTITY = '1 0 0 0 0 1 0 0 0 0 1 0 0 0 0 1';
 export function writeProject3mf(objects: readonly MeshObject[], opts: WriteProjectOptions = {}): Uint8Array {
   if (objects.length === 0) throw new StrataError('EMPTY_MODEL', 'a project needs at least one object to write');
   objects.forEach((o, i) => {
-    if (o.mesh.indices.length === 0) throw new StrataError('BAD_MESH', `object ${i + 1} ("${o.name}") has no triangles to write`);
+    if (o.mesh.indices.length === 0)
+      throw new StrataError('BAD_MESH', `object ${i + 1} ("${o.name}") has no triangles to write`);
   });
-  const layerHeight = typeof opts.printSettings?.layerHeight === 'number' ? opts.printSettings.layerHeight : (SCHEMA.layerHeight.default as number);
+  const layerHeight =
+    typeof opts.printSettings?.layerHeight === 'number'
+      ? opts.printSettings.layerHeight
+      : (SCHEMA.layerHeight.default as number);
   const files: Record<string, Uint8Array> = {
     '[Content_Types].xml': strToU8(CONTENT_TYPES),
     '_rels/.rels': strToU8(RELS),
     '3D/3dmodel.model': strToU8(modelXml(objects)),
     [PRUSA_MODEL_CONFIG]: strToU8(modelConfigXml(objects, layerHeight)),
   };
-  if (objects.some((o) => (o.layerRanges ?? []).length > 0)) files[PRUSA_LAYER_RANGES] = strToU8(layerRangesXml(objects, layerHeight));
-  if (opts.slic3rPrintSettings !== undefined) files[PRUSA_PRINT_CONFIG] = strToU8(slic3rConfig(opts.slic3rPrintSettings));
+  if (objects.some((o) => (o.layerRanges ?? []).length > 0))
+    files[PRUSA_LAYER_RANGES] = strToU8(layerRangesXml(objects, layerHeight));
+  if (opts.slic3rPrintSettings !== undefined)
+    files[PRUSA_PRINT_CONFIG] = strToU8(slic3rConfig(opts.slic3rPrintSettings));
   files[STRATA_PROJECT] = strToU8(JSON.stringify(strataProject(objects, opts.printSettings ?? {}), null, 1));
   return zipSync(files);
 }
@@ -83,13 +89,15 @@ function modelXml(objects: readonly MeshObject[]): string {
     out.push(`  <object id="${i + 1}" name="${attr(o.name)}" type="model">\n   <mesh>\n    <vertices>\n`);
     for (const m of meshes) {
       const p = m.positions;
-      for (let k = 0; k < p.length; k += 3) out.push(`     <vertex x="${coord(p[k])}" y="${coord(p[k + 1])}" z="${coord(p[k + 2])}"/>\n`);
+      for (let k = 0; k < p.length; k += 3)
+        out.push(`     <vertex x="${coord(p[k])}" y="${coord(p[k + 1])}" z="${coord(p[k + 2])}"/>\n`);
     }
     out.push('    </vertices>\n    <triangles>\n');
     let base = 0;
     for (const m of meshes) {
       const t = m.indices;
-      for (let k = 0; k < t.length; k += 3) out.push(`     <triangle v1="${t[k] + base}" v2="${t[k + 1] + base}" v3="${t[k + 2] + base}"/>\n`);
+      for (let k = 0; k < t.length; k += 3)
+        out.push(`     <triangle v1="${t[k] + base}" v2="${t[k + 1] + base}" v3="${t[k + 2] + base}"/>\n`);
       base += m.positions.length / 3;
     }
     out.push('    </triangles>\n   </mesh>\n  </object>\n');
@@ -117,7 +125,9 @@ function modelConfigXml(objects: readonly MeshObject[], layerHeight: number): st
       meta('   ', 'volume', 'volume_type', VOLUME_TYPES[kind]);
       meta('   ', 'volume', 'matrix', IDENTITY);
       for (const [k, v] of Object.entries(slic3rValues(settings, layerHeight))) meta('   ', 'volume', k, v);
-      out.push('   <mesh edges_fixed="0" degenerate_facets="0" facets_removed="0" facets_reversed="0" backwards_edges="0"/>\n  </volume>\n');
+      out.push(
+        '   <mesh edges_fixed="0" degenerate_facets="0" facets_removed="0" facets_reversed="0" backwards_edges="0"/>\n  </volume>\n',
+      );
       first += count;
     };
     volume(o.mesh, o.name, 'part', undefined);
@@ -164,7 +174,8 @@ function slic3rValues(src: SettingsSource | undefined, layerHeight: number): Rec
   if (src === undefined) return {};
   if (src.format === 'prusaslicer') {
     const out: Record<string, string> = {};
-    for (const [k, v] of Object.entries(src.values)) if (typeof v === 'string' || typeof v === 'number' || typeof v === 'boolean') out[k] = String(v);
+    for (const [k, v] of Object.entries(src.values))
+      if (typeof v === 'string' || typeof v === 'number' || typeof v === 'boolean') out[k] = String(v);
     return out;
   }
   return toSlic3rKeys(strataValues(src), layerHeight);
@@ -180,7 +191,11 @@ function strataProject(objects: readonly MeshObject[], printSettings: Record<str
         name: o.name,
         settings: strataValues(o.settings),
         volumes: written(o).map((v) => ({ kind: v.kind, name: v.name, settings: strataValues(v.settings) })),
-        layerRanges: (o.layerRanges ?? []).map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: strataValues(r.settings) })),
+        layerRanges: (o.layerRanges ?? []).map((r) => ({
+          fromZ: r.fromZ,
+          toZ: r.toZ,
+          settings: strataValues(r.settings),
+        })),
       }),
     ),
   };
@@ -197,9 +212,21 @@ function coord(v: number): string {
 }
 
 function attr(s: string): string {
-  return s.replace(/[\u0000-\u0008\u000b\u000c\u000e-\u001f]/g, '').replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;').replace(/"/g, '&quot;').replace(/\n/g, '&#10;').replace(/\r/g, '&#13;').replace(/\t/g, '&#9;');
+  return s
+    .replace(/[\u0000-\u0008\u000b\u000c\u000e-\u001f]/g, '')
+    .replace(/&/g, '&amp;')
+    .replace(/</g, '&lt;')
+    .replace(/>/g, '&gt;')
+    .replace(/"/g, '&quot;')
+    .replace(/\n/g, '&#10;')
+    .replace(/\r/g, '&#13;')
+    .replace(/\t/g, '&#9;');
 }
 
 function text(s: string): string {
-  return s.replace(/[\u0000-\u0008\u000b\u000c\u000e-\u001f]/g, '').replace(/&/g, '&amp;').replace(/</g, '&lt;').replace(/>/g, '&gt;');
+  return s
+    .replace(/[\u0000-\u0008\u000b\u000c\u000e-\u001f]/g, '')
+    .replace(/&/g, '&amp;')
+    .replace(/</g, '&lt;')
+    .replace(/>/g, '&gt;');
 }

@@ -34,7 +34,9 @@ function bbox(mesh: Mesh): { min: number[]; max: number[] } {
 }
 
 function close(actual: number[], expected: number[], tol = 1e-4): void {
-  actual.forEach((v, i) => assert.ok(Math.abs(v - expected[i]) <= tol, `[${i}] ${v} vs ${expected[i]} (${actual} vs ${expected})`));
+  actual.forEach((v, i) =>
+    assert.ok(Math.abs(v - expected[i]) <= tol, `[${i}] ${v} vs ${expected[i]} (${actual} vs ${expected})`),
+  );
 }
 
 const RELS = `<?xml version="1.0" encoding="UTF-8"?>
@@ -52,10 +54,21 @@ function make3mf(model: string, extra: Record<string, string> = {}, rels: string
 /** A 10 mm cube (unit cube scaled by `s`) as a 3MF <object>. */
 function cubeObject(id: number, name: string, s = 1): string {
   const v: string[] = [];
-  for (let i = 0; i < 8; i++) v.push(`<vertex x="${(i & 1) * s}" y="${((i >> 1) & 1) * s}" z="${((i >> 2) & 1) * s}"/>`);
+  for (let i = 0; i < 8; i++)
+    v.push(`<vertex x="${(i & 1) * s}" y="${((i >> 1) & 1) * s}" z="${((i >> 2) & 1) * s}"/>`);
   const faces = [
-    [0, 2, 3], [0, 3, 1], [4, 5, 7], [4, 7, 6], [0, 1, 5], [0, 5, 4],
-    [2, 6, 7], [2, 7, 3], [0, 4, 6], [0, 6, 2], [1, 3, 7], [1, 7, 5],
+    [0, 2, 3],
+    [0, 3, 1],
+    [4, 5, 7],
+    [4, 7, 6],
+    [0, 1, 5],
+    [0, 5, 4],
+    [2, 6, 7],
+    [2, 7, 3],
+    [0, 4, 6],
+    [0, 6, 2],
+    [1, 3, 7],
+    [1, 7, 5],
   ];
   const t = faces.map(([a, b, c]) => `<triangle v1="${a}" v2="${b}" v3="${c}"/>`);
   return `<object id="${id}" name="${name}" type="model"><mesh><vertices>${v.join('')}</vertices><triangles>${t.join('')}</triangles></mesh></object>`;
@@ -92,7 +105,12 @@ test('3DBenchy.3mf equals 3DBenchy.stl: triangle count, bounding box, prepared r
 
 test('3MF units convert to mm', () => {
   const cases: [string, number][] = [
-    ['micron', 0.001], ['millimeter', 1], ['centimeter', 10], ['inch', 25.4], ['foot', 304.8], ['meter', 1000],
+    ['micron', 0.001],
+    ['millimeter', 1],
+    ['centimeter', 10],
+    ['inch', 25.4],
+    ['foot', 304.8],
+    ['meter', 1000],
   ];
   for (const [unit, mm] of cases) {
     const [o] = parse3mf(make3mf(model(cubeObject(1, 'c', 2), '<item objectid="1"/>', unit)));
@@ -100,7 +118,11 @@ test('3MF units convert to mm', () => {
     close(min, [0, 0, 0]);
     close(max, [2 * mm, 2 * mm, 2 * mm], 1e-4 * mm);
   }
-  throwsStrata(() => parse3mf(make3mf(model(cubeObject(1, 'c'), '<item objectid="1"/>', 'furlong'))), 'BAD_FILE', /unknown unit "furlong"/);
+  throwsStrata(
+    () => parse3mf(make3mf(model(cubeObject(1, 'c'), '<item objectid="1"/>', 'furlong'))),
+    'BAD_FILE',
+    /unknown unit "furlong"/,
+  );
 });
 
 test('3MF: every build item is one object with its transform (row-major m00..m32, translation last)', () => {
@@ -111,7 +133,10 @@ test('3MF: every build item is one object with its transform (row-major m00..m32
     '<item objectid="2"/>';
   const objs = parse3mf(make3mf(model(cubeObject(1, 'cube', 10) + cubeObject(2, '', 1), build, 'millimeter')), 'file');
   assert.equal(objs.length, 3);
-  assert.deepEqual(objs.map((o) => o.name), ['cube', 'cube (2)', 'file 3']);
+  assert.deepEqual(
+    objs.map((o) => o.name),
+    ['cube', 'cube (2)', 'file 3'],
+  );
   close(bbox(objs[0].mesh).min, [100, 50, 0]);
   close(bbox(objs[0].mesh).max, [110, 60, 10]);
   close(bbox(objs[1].mesh).min, [0, 0, 5]);
@@ -125,7 +150,9 @@ test('3MF: every build item is one object with its transform (row-major m00..m32
 });
 
 test('3MF: translations scale with the unit', () => {
-  const [o] = parse3mf(make3mf(model(cubeObject(1, 'c', 1), '<item objectid="1" transform="1 0 0 0 1 0 0 0 1 2 0 0"/>', 'centimeter')));
+  const [o] = parse3mf(
+    make3mf(model(cubeObject(1, 'c', 1), '<item objectid="1" transform="1 0 0 0 1 0 0 0 1 2 0 0"/>', 'centimeter')),
+  );
   close(bbox(o.mesh).min, [20, 0, 0]);
   close(bbox(o.mesh).max, [30, 10, 10]);
 });
@@ -199,11 +226,19 @@ test('3MF errors: not a zip, damaged zip, bad XML, missing objects, cycles, DOCT
   throwsStrata(() => parse3mf(make3mf(xml.replace('v3="3"', 'v3="8"'))), 'BAD_FILE', /vertex 8/);
   throwsStrata(() => parse3mf(make3mf(xml.replace('x="1"', 'x="1,5"'))), 'BAD_FILE', /finite numbers/);
   throwsStrata(() => parse3mf(make3mf(xml.replace('v2="2"', 'v2="-2"'))), 'BAD_FILE', /v1, v2 and v3/);
-  throwsStrata(() => parse3mf(make3mf(model(cubeObject(1, 'c'), '<item objectid="1" transform="1 0 0"/>'))), 'BAD_FILE', /12 numbers/);
+  throwsStrata(
+    () => parse3mf(make3mf(model(cubeObject(1, 'c'), '<item objectid="1" transform="1 0 0"/>'))),
+    'BAD_FILE',
+    /12 numbers/,
+  );
   throwsStrata(() => parse3mf(make3mf(model(cubeObject(1, 'c'), ''))), 'EMPTY_MODEL');
   throwsStrata(() => parse3mf(make3mf('<notamodel/>')), 'BAD_FILE', /root element/);
   throwsStrata(() => parse3mf(make3mf('<!DOCTYPE model [<!ENTITY a "aaaa">]>' + xml)), 'BAD_FILE', /DOCTYPE/);
-  throwsStrata(() => parse3mf(make3mf(xml.replace('<metadata', `${'<a>'.repeat(100)}${'</a>'.repeat(100)}<metadata`))), 'LIMIT_EXCEEDED', /nested/);
+  throwsStrata(
+    () => parse3mf(make3mf(xml.replace('<metadata', `${'<a>'.repeat(100)}${'</a>'.repeat(100)}<metadata`))),
+    'LIMIT_EXCEEDED',
+    /nested/,
+  );
 
   const cycle =
     '<object id="1"><components><component objectid="2"/></components></object>' +

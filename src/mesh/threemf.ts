@@ -80,13 +80,20 @@ export function parse3mf(bytes: Uint8Array, name = 'model', opts: ThreeMfOptions
 
 /** Open the package, parse the root part and size every build item (nothing is expanded yet). */
 export function openBuild(bytes: Uint8Array, name: string, opts: ThreeMfOptions = {}): Build {
-  const pkg = openPackage(bytes, { maxBytes: opts.maxInflatedBytes ?? DEFAULT_INFLATE_BYTES, setting: 'inflateBudget' });
+  const pkg = openPackage(bytes, {
+    maxBytes: opts.maxInflatedBytes ?? DEFAULT_INFLATE_BYTES,
+    setting: 'inflateBudget',
+  });
   const parsed = new Map<string, ModelPart>();
   const part = (key: string): ModelPart => {
     let p = parsed.get(key);
     if (p === undefined) {
       const data = pkg.read(key);
-      if (data === undefined) throw new StrataError('BAD_FILE', `3MF: a component refers to part /${printable(key)}, which is not in the archive`);
+      if (data === undefined)
+        throw new StrataError(
+          'BAD_FILE',
+          `3MF: a component refers to part /${printable(key)}, which is not in the archive`,
+        );
       p = parseModelPart(data, key);
       parsed.set(key, p);
     }
@@ -94,7 +101,8 @@ export function openBuild(bytes: Uint8Array, name: string, opts: ThreeMfOptions 
   };
   const lookup = (key: string, id: number): ModelObject => {
     const o = part(key).objects.get(id);
-    if (o === undefined) throw new StrataError('BAD_FILE', `3MF: object ${id} is referenced but not defined in /${printable(key)}`);
+    if (o === undefined)
+      throw new StrataError('BAD_FILE', `3MF: object ${id} is referenced but not defined in /${printable(key)}`);
     return o;
   };
 
@@ -105,7 +113,8 @@ export function openBuild(bytes: Uint8Array, name: string, opts: ThreeMfOptions 
     const k = `${key}#${id}`;
     const known = sizes.get(k);
     if (known !== undefined) return known;
-    if (inProgress.has(k)) throw new StrataError('BAD_FILE', `3MF: object ${id} contains itself through its components`);
+    if (inProgress.has(k))
+      throw new StrataError('BAD_FILE', `3MF: object ${id} contains itself through its components`);
     if (depth > MAX_COMPONENT_DEPTH) {
       throw new StrataError('LIMIT_EXCEEDED', `3MF: components nested deeper than ${MAX_COMPONENT_DEPTH} levels`);
     }

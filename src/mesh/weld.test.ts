@@ -3,7 +3,11 @@ import assert from 'node:assert/strict';
 import { weld } from './weld.js';
 
 test('welding numbers vertices in the order triangles first use them, however many are distinct (the table grows)', () => {
-  for (const [corners, range] of [[9, 3], [60_000, 40], [60_000, 100_000]] as const) {
+  for (const [corners, range] of [
+    [9, 3],
+    [60_000, 40],
+    [60_000, 100_000],
+  ] as const) {
     let s = 7;
     const next = () => (s = (s * 48271) % 2147483647) % range;
     const p = new Float32Array(corners * 3);
@@ -20,6 +24,7 @@ test('welding numbers vertices in the order triangles first use them, however ma
     }
     assert.equal(w.positions.length, 3 * seen.size, `${corners} corners`);
     assert.deepEqual([...w.indices], ids);
-    for (const [k, id] of seen) assert.equal(`${w.positions[3 * id]},${w.positions[3 * id + 1]},${w.positions[3 * id + 2]}`, k);
+    for (const [k, id] of seen)
+      assert.equal(`${w.positions[3 * id]},${w.positions[3 * id + 1]},${w.positions[3 * id + 2]}`, k);
   }
 });

@@ -22,7 +22,19 @@ test('parseDecimal equals Number() bit for bit on many decimal forms', () => {
     if (rnd(4) === 0) s += 'e' + (rnd(2) ? '-' : '+') + String(rnd(40));
     assert.equal(Object.is(num(s), Number(s)), true, s);
   }
-  for (const s of ['0', '-0', '1.', '.5', '+3', ' 7 ', '1e5', '1E-5', '123456789012345678', '0.000000000000000000001', '1e400']) {
+  for (const s of [
+    '0',
+    '-0',
+    '1.',
+    '.5',
+    '+3',
+    ' 7 ',
+    '1e5',
+    '1E-5',
+    '123456789012345678',
+    '0.000000000000000000001',
+    '1e400',
+  ]) {
     assert.ok(Object.is(num(s), Number(s)), s);
   }
   for (const s of ['', '-', '.', 'e5', '1e', '1e+', '0x10', 'Infinity', 'NaN', '1,5', '1 2', '--1']) {
@@ -35,7 +47,10 @@ test('decodeEntities handles predefined and numeric references', () => {
 });
 
 test('the scanner yields starts, ends and attributes, skipping comments, PIs and CDATA', () => {
-  const x = new XmlScanner(enc('<?xml version="1.0"?><!-- c --><a k="v&amp;" q=\'>\'><b/><![CDATA[<x>]]><c:d/></a>'), 't');
+  const x = new XmlScanner(
+    enc('<?xml version="1.0"?><!-- c --><a k="v&amp;" q=\'>\'><b/><![CDATA[<x>]]><c:d/></a>'),
+    't',
+  );
   const seen: string[] = [];
   for (let ev = x.next(); ev !== XML_EOF; ev = x.next()) {
     if (ev === XML_START) {
@@ -50,7 +65,17 @@ test('the scanner yields starts, ends and attributes, skipping comments, PIs and
 });
 
 test('malformed XML throws BAD_FILE with a line number', () => {
-  const bad = ['<a>', '<a></b>', '<a x="1></a>', '<a><!-- never closed </a>', '</a>', '<a x=1/>', '<a <b>', '<!DOCTYPE a><a/>', '<a><![CDATA[x</a>'];
+  const bad = [
+    '<a>',
+    '<a></b>',
+    '<a x="1></a>',
+    '<a><!-- never closed </a>',
+    '</a>',
+    '<a x=1/>',
+    '<a <b>',
+    '<!DOCTYPE a><a/>',
+    '<a><![CDATA[x</a>',
+  ];
   for (const s of bad) {
     assert.throws(
       () => {
@@ -63,8 +88,11 @@ test('malformed XML throws BAD_FILE with a line number', () => {
   }
 });
 
-test('textContent reads an element\'s text, entities decoded and CDATA unwrapped', () => {
-  const x = new XmlScanner(enc('<m><v n="a">80 &amp; up</v><v n="b"><![CDATA[<raw> &amp;]]> tail</v><v n="c"></v></m>'), 't');
+test("textContent reads an element's text, entities decoded and CDATA unwrapped", () => {
+  const x = new XmlScanner(
+    enc('<m><v n="a">80 &amp; up</v><v n="b"><![CDATA[<raw> &amp;]]> tail</v><v n="c"></v></m>'),
+    't',
+  );
   const got: string[] = [];
   let start = -1;
   for (let ev = x.next(); ev !== XML_EOF; ev = x.next()) {

@@ -14,8 +14,8 @@ export const XML_END = 2;
 
 /** 10^0 … 10^22: every one is exact in float64, which makes the fast number path correctly rounded. */
 const POW10 = Object.freeze([
-  1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18,
-  1e19, 1e20, 1e21, 1e22,
+  1, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20,
+  1e21, 1e22,
 ]);
 
 function isWs(c: number): boolean {
@@ -107,7 +107,8 @@ export class XmlScanner {
         if (gt < 0) this.fail('the XML ends inside an end tag (truncated?)', lt);
         if (this.depth === 0) this.fail(`unexpected end tag </${this.text(s, i)}>`, lt);
         const d = --this.depth;
-        const os = this.stack[d * 2], oe = this.stack[d * 2 + 1];
+        const os = this.stack[d * 2],
+          oe = this.stack[d * 2 + 1];
         if (oe - os !== i - s || !this.sameBytes(os, s, i - s)) {
           this.fail(`</${this.text(s, i)}> does not close <${this.text(os, oe)}>`, lt);
         }
@@ -185,7 +186,8 @@ export class XmlScanner {
     i++;
     while (i < end && isWs(b[i])) i++;
     const q = b[i];
-    if (q !== 34 && q !== 39) this.fail(`attribute value without quotes in <${this.text(this.nameStart, this.nameEnd)}>`, ns);
+    if (q !== 34 && q !== 39)
+      this.fail(`attribute value without quotes in <${this.text(this.nameStart, this.nameEnd)}>`, ns);
     let ve = i + 1;
     while (ve < end && b[ve] !== q) ve++;
     this.attrNameStart = ns;

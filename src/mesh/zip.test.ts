@@ -107,9 +107,16 @@ function refused(fn: () => unknown, code: string, re: RegExp): void {
 const BOMB = spaces(8);
 
 test('a part claiming more than the budget is refused before anything is inflated', () => {
-  const bytes = zip([deflated('_rels/.rels', RELS), { name: '3D/3dmodel.model', data: BOMB, method: 8, size: 1 << 30 }]);
+  const bytes = zip([
+    deflated('_rels/.rels', RELS),
+    { name: '3D/3dmodel.model', data: BOMB, method: 8, size: 1 << 30 },
+  ]);
   const before = process.memoryUsage().rss;
-  refused(() => parse3mf(bytes), 'LIMIT_EXCEEDED', /3D\/3dmodel\.model unpacks to 1024 MiB, more than the 512 MiB left of the 512 MiB budget; raise inflateBudget/);
+  refused(
+    () => parse3mf(bytes),
+    'LIMIT_EXCEEDED',
+    /3D\/3dmodel\.model unpacks to 1024 MiB, more than the 512 MiB left of the 512 MiB budget; raise inflateBudget/,
+  );
   assert.ok(process.memoryUsage().rss - before < 64 * 1024 * 1024, 'no gigabyte was allocated');
   // raising the budget is not enough for a part that packs ~1000×
   refused(() => parse3mf(bytes, 'm', { maxInflatedBytes: 2 * 1024 ** 3 }), 'LIMIT_EXCEEDED', /refused as a zip bomb/);
@@ -124,10 +131,18 @@ test('a part that packs implausibly well is refused as a zip bomb, within the bu
 
 test('a part that unpacks to more than it declares stops within a few slices', () => {
   const bytes = zip([{ name: '3D/3dmodel.model', data: BOMB, method: 8, size: 64 * 1024 }]);
-  refused(() => parse3mf(bytes), 'BAD_FILE', /zip archive is damaged \(3D\/3dmodel\.model unpacks to more than the 65536 bytes it declares\)/);
+  refused(
+    () => parse3mf(bytes),
+    'BAD_FILE',
+    /zip archive is damaged \(3D\/3dmodel\.model unpacks to more than the 65536 bytes it declares\)/,
+  );
   // and less than it declares is damage too
   const short = deflated('3D/3dmodel.model', MODEL);
-  refused(() => parse3mf(zip([{ ...short, size: short.size + 10 }])), 'BAD_FILE', /unpacks to \d+ bytes, not the \d+ it declares/);
+  refused(
+    () => parse3mf(zip([{ ...short, size: short.size + 10 }])),
+    'BAD_FILE',
+    /unpacks to \d+ bytes, not the \d+ it declares/,
+  );
 });
 
 test('only the parts the build refers to are inflated: an unreferenced bomb costs nothing', () => {
@@ -148,13 +163,21 @@ test('only the parts the build refers to are inflated: an unreferenced bomb cost
 test('the budget counts every part read, and a small budget names the setting to raise', () => {
   const bytes = zip([deflated('_rels/.rels', RELS), deflated('3D/3dmodel.model', MODEL)]);
   assert.equal(parse3mf(bytes).length, 1);
-  refused(() => parse3mf(bytes, 'm', { maxInflatedBytes: 600 }), 'LIMIT_EXCEEDED', /more than the \d+ bytes left of the 600 bytes budget; raise inflateBudget/);
+  refused(
+    () => parse3mf(bytes, 'm', { maxInflatedBytes: 600 }),
+    'LIMIT_EXCEEDED',
+    /more than the \d+ bytes left of the 600 bytes budget; raise inflateBudget/,
+  );
 });
 
 test('stored parts, encrypted parts and unknown methods', () => {
   const raw = strToU8(MODEL);
   assert.equal(parse3mf(zip([{ name: '3D/3dmodel.model', data: raw, method: 0, size: raw.length }])).length, 1);
-  refused(() => parse3mf(zip([{ name: '3D/3dmodel.model', data: raw, method: 0, size: raw.length + 1 }])), 'BAD_FILE', /stored part .* has two sizes/);
+  refused(
+    () => parse3mf(zip([{ name: '3D/3dmodel.model', data: raw, method: 0, size: raw.length + 1 }])),
+    'BAD_FILE',
+    /stored part .* has two sizes/,
+  );
   const odd = zip([{ name: '3D/3dmodel.model', data: raw, method: 12 as 8, size: raw.length }]);
   refused(() => parse3mf(odd), 'BAD_FILE', /compression method 12/);
   refused(() => parse3mf(zip([]).subarray(0, 10)), 'BAD_FILE', /not a 3MF file|damaged/);

@@ -81,7 +81,10 @@ export class ZipArchive {
     const label = printable(entry.name);
     if (entry.encrypted) throw new StrataError('BAD_FILE', `3MF part ${label} is encrypted; Strata cannot read it`);
     if (entry.method !== 0 && entry.method !== 8) {
-      throw new StrataError('BAD_FILE', `3MF part ${label} uses zip compression method ${entry.method}; only stored and deflated parts can be read`);
+      throw new StrataError(
+        'BAD_FILE',
+        `3MF part ${label} uses zip compression method ${entry.method}; only stored and deflated parts can be read`,
+      );
     }
     const left = this.#budget.maxBytes - this.#unpacked;
     if (entry.size > left) {
@@ -108,7 +111,8 @@ export class ZipArchive {
   #entryData(e: ZipEntry): Uint8Array {
     const b = this.#bytes;
     const o = e.offset;
-    if (o + 30 > b.length || this.#dv.getUint32(o, true) !== 0x04034b50) throw damaged(`no local header for ${printable(e.name)}`);
+    if (o + 30 > b.length || this.#dv.getUint32(o, true) !== 0x04034b50)
+      throw damaged(`no local header for ${printable(e.name)}`);
     const start = o + 30 + this.#dv.getUint16(o + 26, true) + this.#dv.getUint16(o + 28, true);
     const end = start + e.packedSize;
     if (end > b.length) throw damaged(`${printable(e.name)} runs past the end of the file`);
@@ -148,7 +152,8 @@ export class ZipArchive {
     const names = new TextDecoder('utf-8');
     let p = cdOffset;
     for (let n = 0; n < count; n++) {
-      if (p + 46 > cdOffset + cdSize || dv.getUint32(p, true) !== 0x02014b50) throw damaged('a directory entry is broken');
+      if (p + 46 > cdOffset + cdSize || dv.getUint32(p, true) !== 0x02014b50)
+        throw damaged('a directory entry is broken');
       const flags = dv.getUint16(p + 8, true);
       const method = dv.getUint16(p + 10, true);
       let packedSize = dv.getUint32(p + 20, true);

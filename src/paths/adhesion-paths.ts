@@ -17,7 +17,12 @@ import type { PathGroup } from './types.js';
  * @param islands the first layer's islands, µm
  * @param support the first layer's support areas, µm
  */
-export function skirtOrBrim(islands: readonly ExPolygon[], support: readonly ExPolygon[], cfg: Config, widthUm: number): PathGroup[] {
+export function skirtOrBrim(
+  islands: readonly ExPolygon[],
+  support: readonly ExPolygon[],
+  cfg: Config,
+  widthUm: number,
+): PathGroup[] {
   const around = cfg.adhesionType === 'skirt' && support.length ? union([...islands, ...support]) : islands;
   const loops = adhesionLoops(around, cfg, widthUm);
   if (loops.length === 0) return [];

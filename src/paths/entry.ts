@@ -25,19 +25,29 @@ export interface EntryOptions {
 }
 
 /** An entry of closed or open paths of one role, `width` mm wide unless a path has widths of its own. */
-export function makeEntry(cfg: Config, role: PathRole, closed: boolean, paths: Pt[][], width: number, opts: EntryOptions = {}): PathEntry {
+export function makeEntry(
+  cfg: Config,
+  role: PathRole,
+  closed: boolean,
+  paths: Pt[][],
+  width: number,
+  opts: EntryOptions = {},
+): PathEntry {
   const style = entryStyle(cfg, role, opts.wall);
   const e: PathEntry = { role, closed, paths, width, style };
   if (opts.wall !== undefined) e.wall = opts.wall;
   let widths = opts.widths && opts.widths.some((w) => w !== null) ? opts.widths : undefined;
   if (widths) e.widths = widths;
   const overAir = opts.overAir;
-  const graded = style.levels && (opts.overhangLevels?.length || overAir?.length) ? gradedAreas(opts.overhangLevels, overAir) : null;
+  const graded =
+    style.levels && (opts.overhangLevels?.length || overAir?.length) ? gradedAreas(opts.overhangLevels, overAir) : null;
   if (graded ? graded.some((a) => a.areas.length) : overAir && overAir.length && overAirMatters(style)) {
     const idx = graded ? null : indexArea(overAir!);
     let flags: (Uint8Array | null)[] | null = null;
     for (let k = 0; k < paths.length; k++) {
-      const f = graded ? flagLevels(paths[k], closed, graded, widths?.[k] ?? null) : flagOverAir(paths[k], closed, idx!, widths?.[k] ?? null);
+      const f = graded
+        ? flagLevels(paths[k], closed, graded, widths?.[k] ?? null)
+        : flagOverAir(paths[k], closed, idx!, widths?.[k] ?? null);
       if (!f) continue;
       if (!flags) {
         flags = new Array(paths.length).fill(null);

@@ -14,12 +14,17 @@ const circle = (r: number, n: number, clockwise = false): Pt[] =>
 const radii = (loop: readonly Pt[]) => loop.map((p) => Math.hypot(p.x, p.y));
 
 test('a fuzzy loop: points about the point distance apart, each moved in or out by up to the thickness, all of it used', () => {
-  const R = 10_000, t = 300, spacing = 800;
+  const R = 10_000,
+    t = 300,
+    spacing = 800;
   const loop = circle(R, 360);
   const out = fuzzyLoop(loop, null, t, spacing, 12345)!;
   const length = 2 * Math.PI * R;
   // gaps of ¾ to 1¼ of the distance: about length / spacing points
-  assert.ok(out.points.length > (length / spacing) * 0.85 && out.points.length < (length / spacing) * 1.15, `${out.points.length} points`);
+  assert.ok(
+    out.points.length > (length / spacing) * 0.85 && out.points.length < (length / spacing) * 1.15,
+    `${out.points.length} points`,
+  );
   const r = radii(out.points);
   const dev = r.map((x) => x - R);
   const sag = R * (1 - Math.cos(Math.PI / 360)); // the chords' distance inside the circle
@@ -28,7 +33,8 @@ test('a fuzzy loop: points about the point distance apart, each moved in or out 
   const mean = dev.reduce((a, b) => a + b, 0) / dev.length;
   assert.ok(Math.abs(mean) < 0.15 * t, `in and out alike: mean ${mean.toFixed(0)} µm`);
   for (let i = 0; i < out.points.length; i++) {
-    const a = out.points[i], b = out.points[(i + 1) % out.points.length];
+    const a = out.points[i],
+      b = out.points[(i + 1) % out.points.length];
     assert.ok(Math.hypot(b.x - a.x, b.y - a.y) < 1.25 * spacing + 2 * t + 2, 'no gap wider than the spacing allows');
   }
   assert.deepEqual(fuzzyLoop(loop, null, t, spacing, 12345), out, 'the same seed, the same texture');
@@ -36,14 +42,20 @@ test('a fuzzy loop: points about the point distance apart, each moved in or out 
 });
 
 test('a fuzzy loop keeps the widths of a variable-width wall along it', () => {
-  const loop: Pt[] = [{ x: 0, y: 0 }, { x: 10_000, y: 0 }, { x: 10_000, y: 10_000 }, { x: 0, y: 10_000 }];
+  const loop: Pt[] = [
+    { x: 0, y: 0 },
+    { x: 10_000, y: 0 },
+    { x: 10_000, y: 10_000 },
+    { x: 0, y: 10_000 },
+  ];
   const widths = Float64Array.from([0.4, 0.6, 0.6, 0.4]);
   const out = fuzzyLoop(loop, widths, 100, 500, 7)!;
   assert.equal(out.widths!.length, out.points.length);
   for (let i = 0; i < out.points.length; i++) {
     const p = out.points[i];
     // along the bottom edge the width grows from 0.4 to 0.6, along the right edge it stays 0.6
-    if (Math.abs(p.y) <= 100 && p.x > 0 && p.x < 10_000) assert.ok(Math.abs(out.widths![i] - (0.4 + (0.2 * p.x) / 10_000)) < 0.01, `${p.x}: ${out.widths![i]}`);
+    if (Math.abs(p.y) <= 100 && p.x > 0 && p.x < 10_000)
+      assert.ok(Math.abs(out.widths![i] - (0.4 + (0.2 * p.x) / 10_000)) < 0.01, `${p.x}: ${out.widths![i]}`);
     if (Math.abs(p.x - 10_000) <= 100 && p.y > 100 && p.y < 9_900) assert.ok(Math.abs(out.widths![i] - 0.6) < 1e-9);
   }
 });

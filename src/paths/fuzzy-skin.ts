@@ -76,12 +76,14 @@ export function fuzzyLoop(
     const a = loop[k];
     const bi = k + 1 === n ? 0 : k + 1;
     const b = loop[bi];
-    const dx = b.x - a.x, dy = b.y - a.y;
+    const dx = b.x - a.x,
+      dy = b.y - a.y;
     const len = Math.sqrt(dx * dx + dy * dy);
     let d = carry;
     if (len > 0) {
       // unit normal (left of the edge): in or out, the jitter is symmetric
-      const nx = -dy / len, ny = dx / len;
+      const nx = -dy / len,
+        ny = dx / len;
       for (; d < len; d += minGap + next() * gapRange) {
         const t = d / len;
         const off = (next() * 2 - 1) * thickness;
@@ -104,7 +106,11 @@ function signedArea2(loop: readonly Pt[]): number {
 
 /** A seed from the layer and the loop: its first point and its size. */
 function seedOf(layer: number, loop: readonly Pt[]): number {
-  let h = Math.imul(layer + 1, 0x9e3779b1) ^ Math.imul(loop[0].x, 0x85ebca77) ^ Math.imul(loop[0].y, 0xc2b2ae3d) ^ Math.imul(loop.length, 0x27d4eb2f);
+  let h =
+    Math.imul(layer + 1, 0x9e3779b1) ^
+    Math.imul(loop[0].x, 0x85ebca77) ^
+    Math.imul(loop[0].y, 0xc2b2ae3d) ^
+    Math.imul(loop.length, 0x27d4eb2f);
   h = Math.imul(h ^ (h >>> 16), 0x7feb352d);
   h = Math.imul(h ^ (h >>> 15), 0x846ca68b);
   return h ^ (h >>> 16);

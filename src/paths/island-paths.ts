@@ -47,7 +47,12 @@ interface FillContext extends IslandContext {
  * The skin of one region of an island, as skin-wall, skin and skin-gap entries, and its bridge lines.
  * @param bridgeFill the anchored bridge, printed as its own lines (and taken out of the rest of the skin), or null
  */
-function skinEntries(island: RegionFill, ctx: FillContext, bridgeArea: readonly ExPolygon[], bridgeFill: RegionFill['bridgeFill'] | null): PathEntry[] {
+function skinEntries(
+  island: RegionFill,
+  ctx: FillContext,
+  bridgeArea: readonly ExPolygon[],
+  bridgeFill: RegionFill['bridgeFill'] | null,
+): PathEntry[] {
   const { cfg, widthUm: w, layer } = ctx;
   let skinAll = allSkin({ top: island.topSkin, bottom: island.bottomSkin, exposed: island.exposed });
   let exposed = island.exposed;
@@ -76,14 +81,19 @@ function skinEntries(island: RegionFill, ctx: FillContext, bridgeArea: readonly 
     fillArea = offset(skinAll, -(w / 2 - overlapSkin));
   }
   // lines, loops or both, by the region's top and bottom skin patterns
-  const fills = fillArea.length ? skinFills(island, cfg, fillArea, skinAngleOf(island, cfg, layer.index), w, ctx.params.origin) : [];
+  const fills = fillArea.length
+    ? skinFills(island, cfg, fillArea, skinAngleOf(island, cfg, layer.index), w, ctx.params.origin)
+    : [];
   const lines = fills.length === 1 ? fills[0].lines : fills.flatMap((f) => f.lines);
   const loops = fills.flatMap((f) => f.loops);
   const gaps = skinGapFill(exposed, loops.length ? skinWalls.concat(loops) : skinWalls, lines, w);
   const air = bridgeArea.length ? bridgeArea : null;
   if (skinWalls.length) out.push(makeEntry(cfg, 'skin-wall', true, skinWalls, w / UM_PER_MM, { overAir: air }));
   for (const f of fills) {
-    for (const [closed, paths] of [[false, f.lines], [true, f.loops]] as const) {
+    for (const [closed, paths] of [
+      [false, f.lines],
+      [true, f.loops],
+    ] as const) {
       if (paths.length === 0) continue;
       const e = makeEntry(cfg, 'skin', closed, paths, w / UM_PER_MM, { overAir: air });
       if (f.ordered) e.ordered = true;
@@ -104,10 +114,12 @@ const BRIDGE_SNAP_DEG = 5;
  * BRIDGE_SNAP_DEG of it, so that lines beside a straight wall run along it and are not cut into pieces by it.
  */
 function pieceAngle(piece: ExPolygon, angle: number, minLengthUm: number): number {
-  let best = angle, bestLength = minLengthUm;
+  let best = angle,
+    bestLength = minLengthUm;
   const ring = piece.outer;
   for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
-    const dx = ring[i].x - ring[j].x, dy = ring[i].y - ring[j].y;
+    const dx = ring[i].x - ring[j].x,
+      dy = ring[i].y - ring[j].y;
     const length = Math.hypot(dx, dy);
     if (length <= bestLength) continue;
     const dir = (Math.atan2(dy, dx) * 180) / Math.PI;
@@ -136,8 +148,10 @@ function bridgeEntries(bridge: NonNullable<RegionFill['bridgeFill']>, ctx: FillC
   for (const piece of centres) {
     const angle = pieceAngle(piece, bridge.angle, 4 * spacing);
     const a = (angle * Math.PI) / 180;
-    const c = Math.cos(a), sn = Math.sin(a);
-    let lo = Infinity, hi = -Infinity;
+    const c = Math.cos(a),
+      sn = Math.sin(a);
+    let lo = Infinity,
+      hi = -Infinity;
     for (const p of piece.outer) {
       const v = -p.x * sn + p.y * c;
       if (v < lo) lo = v;
@@ -167,7 +181,14 @@ function skinAngleOf(fill: RegionFill, cfg: Config, layerIndex: number): number 
 /** Gap loops with their own widths, as one entry of per-path widths. */
 function gapEntry(cfg: Config, role: 'skin-gap', gaps: readonly GapLoop[]): PathEntry {
   const widths = gapLoopWidths(gaps);
-  return makeEntry(cfg, role, true, gaps.map((g) => g.loop), widths[0][0], { widths });
+  return makeEntry(
+    cfg,
+    role,
+    true,
+    gaps.map((g) => g.loop),
+    widths[0][0],
+    { widths },
+  );
 }
 
 function infillEntries(island: RegionFill, ctx: FillContext): PathEntry[] {
@@ -175,7 +196,9 @@ function infillEntries(island: RegionFill, ctx: FillContext): PathEntry[] {
   const { cfg, layer, widthUm } = ctx;
   const input = { layerIndex: layer.index, z: layer.z, layerHeight: layer.height, region: island.sparse };
   const params = { ...ctx.params, lineWidth: widthUm };
-  const res = ctx.custom ? ctx.custom(input, params) : generateInfill(cfg.infillPattern as PatternId, input, params, ctx.prepared);
+  const res = ctx.custom
+    ? ctx.custom(input, params)
+    : generateInfill(cfg.infillPattern as PatternId, input, params, ctx.prepared);
   const out: PathEntry[] = [];
   const width = widthUm / UM_PER_MM;
   if (res.loops.length) out.push(makeEntry(cfg, 'infill', true, res.loops, width));
@@ -186,7 +209,8 @@ function infillEntries(island: RegionFill, ctx: FillContext): PathEntry[] {
 /** The infill parameters of a region: the object's, with the region's density, angle and linking. */
 function regionParams(params: InfillParams, cfg: Config): InfillParams {
   const density = cfg.infillDensity / 100;
-  if (params.density === density && params.angle === cfg.infillAngle && params.connect === cfg.infillConnect) return params;
+  if (params.density === density && params.angle === cfg.infillAngle && params.connect === cfg.infillConnect)
+    return params;
   return { ...params, density, angle: cfg.infillAngle, connect: cfg.infillConnect };
 }
 
@@ -196,7 +220,8 @@ function fillEntries(fill: RegionFill, ctx: IslandContext): PathEntry[] {
   const fctx: FillContext = { ...ctx, cfg, params: regionParams(ctx.params, cfg) };
   const entries = infillEntries(fill, fctx);
   // skin resting on support right below it (no Z gap) is not a bridge; over a Z gap it is, as over air
-  const bridgeArea = fill.bridge.length && ctx.supportBelow.length ? difference(fill.bridge, ctx.supportBelow) : fill.bridge;
+  const bridgeArea =
+    fill.bridge.length && ctx.supportBelow.length ? difference(fill.bridge, ctx.supportBelow) : fill.bridge;
   // the anchored bridge prints as bridge lines unless support holds part of it up
   const held = ctx.supportBelow.length > 0 && fill.bridgeFill !== undefined && area(bridgeArea) < area(fill.bridge) - 1;
   entries.push(...skinEntries(fill, fctx, bridgeArea, held ? null : (fill.bridgeFill ?? null)));
@@ -208,10 +233,12 @@ function fillEntries(fill: RegionFill, ctx: IslandContext): PathEntry[] {
 /** The closed loops of the island's innermost wall, or null when it has no closed wall. */
 function innermostLoops(walls: readonly WallSet[]): Pt[][] | null {
   let deepest = -1;
-  for (const set of walls) if (set.role === 'wall' && set.closed && set.paths.length > 0 && set.wall > deepest) deepest = set.wall;
+  for (const set of walls)
+    if (set.role === 'wall' && set.closed && set.paths.length > 0 && set.wall > deepest) deepest = set.wall;
   if (deepest < 0) return null;
   const loops: Pt[][] = [];
-  for (const set of walls) if (set.role === 'wall' && set.closed && set.wall === deepest) for (const p of set.paths) loops.push(p);
+  for (const set of walls)
+    if (set.role === 'wall' && set.closed && set.wall === deepest) for (const p of set.paths) loops.push(p);
   return loops;
 }
 
@@ -226,12 +253,23 @@ export function islandGroup(island: IslandRegions, ctx: IslandContext): PathGrou
     // the outer wall made rough where fuzzy skin is on (fuzzy-skin.ts), its widths with it
     const { paths, widths } = fuzzyWalls(set, cfg, ctx.layer.index);
     const isWall = set.role === 'wall';
-    const opts = { wall: isWall ? set.wall : undefined, widths: widths ?? undefined, overAir: isWall ? wallsOverAir : null, overhangLevels: isWall ? island.overhangLevels : null };
+    const opts = {
+      wall: isWall ? set.wall : undefined,
+      widths: widths ?? undefined,
+      overAir: isWall ? wallsOverAir : null,
+      overhangLevels: isWall ? island.overhangLevels : null,
+    };
     entries.push(makeEntry(cfg, set.role, set.closed, paths, w, opts));
   }
   // extra walls over overhangs: a ring an entry, in the order they were made (the planner keeps it)
   for (const ring of island.extraWalls ?? []) {
-    entries.push(makeEntry(cfg, 'extra-wall', false, ring.paths, w, { widths: ring.widths ?? undefined, overAir: wallsOverAir, overhangLevels: island.overhangLevels }));
+    entries.push(
+      makeEntry(cfg, 'extra-wall', false, ring.paths, w, {
+        widths: ring.widths ?? undefined,
+        overAir: wallsOverAir,
+        overhangLevels: island.overhangLevels,
+      }),
+    );
   }
   entries.push(...fillEntries(island, ctx));
   if (island.fills) for (const f of island.fills) entries.push(...fillEntries(f, ctx));

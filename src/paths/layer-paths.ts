@@ -89,14 +89,25 @@ export function withSharedGroups(paths: LayerPaths, regions: LayerRegions, ctx: 
   const shared: PathGroup[] = [];
   if (ctx.adhesion) {
     const support = regions.support ? [...regions.support.body, ...regions.support.roof, ...regions.support.floor] : [];
-    shared.push(...skirtOrBrim(regions.islands.map((i) => i.outline), support, cfg, widthOf(regions, cfg)));
+    shared.push(
+      ...skirtOrBrim(
+        regions.islands.map((i) => i.outline),
+        support,
+        cfg,
+        widthOf(regions, cfg),
+      ),
+    );
   }
   if (regions.supports) {
     // each object's support prints inside the object's label, so cancelling the object stops its support
     regions.supports.forEach((support, o) => {
-      for (const g of supportGroups(support, ctx.configs[ctx.objectConfigs[o]], regions, ctx.params[0].origin)) shared.push({ ...g, object: o });
+      for (const g of supportGroups(support, ctx.configs[ctx.objectConfigs[o]], regions, ctx.params[0].origin))
+        shared.push({ ...g, object: o });
     });
-  } else shared.push(...supportGroups(regions.support, ctx.configs[ctx.objectConfigs[0] ?? 0], regions, ctx.params[0].origin));
+  } else
+    shared.push(
+      ...supportGroups(regions.support, ctx.configs[ctx.objectConfigs[0] ?? 0], regions, ctx.params[0].origin),
+    );
   if (shared.length) paths.groups = [...shared, ...paths.groups];
   paths.z = regions.z + ctx.zOffset;
   return paths;

@@ -32,7 +32,14 @@ function overlaps(a: Bounds, minX: number, minY: number, maxX: number, maxY: num
 }
 
 function inside(p: Pt, idx: AreaIndex): boolean {
-  if (idx.grid) return p.x >= idx.box.minX && p.x <= idx.box.maxX && p.y >= idx.box.minY && p.y <= idx.box.maxY && idx.grid.contains(p.x, p.y);
+  if (idx.grid)
+    return (
+      p.x >= idx.box.minX &&
+      p.x <= idx.box.maxX &&
+      p.y >= idx.box.minY &&
+      p.y <= idx.box.maxY &&
+      idx.grid.contains(p.x, p.y)
+    );
   for (let k = 0; k < idx.areas.length; k++) {
     const b = idx.bounds[k];
     if (p.x < b.minX || p.x > b.maxX || p.y < b.minY || p.y > b.maxY) continue;
@@ -47,17 +54,29 @@ function inside(p: Pt, idx: AreaIndex): boolean {
  */
 function crossings(a: Pt, b: Pt, idx: AreaIndex, out: number[]): boolean {
   if (idx.grid) return idx.grid.crossingsAlong(a.x, a.y, b.x, b.y, out);
-  const minX = Math.min(a.x, b.x), maxX = Math.max(a.x, b.x), minY = Math.min(a.y, b.y), maxY = Math.max(a.y, b.y);
-  const dx = b.x - a.x, dy = b.y - a.y;
+  const minX = Math.min(a.x, b.x),
+    maxX = Math.max(a.x, b.x),
+    minY = Math.min(a.y, b.y),
+    maxY = Math.max(a.y, b.y);
+  const dx = b.x - a.x,
+    dy = b.y - a.y;
   for (let k = 0; k < idx.areas.length; k++) {
     if (!overlaps(idx.bounds[k], minX, minY, maxX, maxY)) continue;
     const area = idx.areas[k];
     for (let r = -1; r < area.holes.length; r++) {
       const ring = r < 0 ? area.outer : area.holes[r];
       for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
-        const c = ring[j], d = ring[i];
-        if (Math.max(c.x, d.x) < minX || Math.min(c.x, d.x) > maxX || Math.max(c.y, d.y) < minY || Math.min(c.y, d.y) > maxY) continue;
-        const ex = d.x - c.x, ey = d.y - c.y;
+        const c = ring[j],
+          d = ring[i];
+        if (
+          Math.max(c.x, d.x) < minX ||
+          Math.min(c.x, d.x) > maxX ||
+          Math.max(c.y, d.y) < minY ||
+          Math.min(c.y, d.y) > maxY
+        )
+          continue;
+        const ex = d.x - c.x,
+          ey = d.y - c.y;
         const den = dx * ey - dy * ex;
         if (den === 0) continue;
         const t = ((c.x - a.x) * ey - (c.y - a.y) * ex) / den;
@@ -81,7 +100,12 @@ export interface FlaggedPath {
  * Split a path where it crosses into and out of `idx`'s area and flag each edge; null when no part of it
  * lies over air (the common case: the path is returned unchanged by the caller).
  */
-export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex, widths: Float64Array | null = null): FlaggedPath | null {
+export function flagOverAir(
+  path: readonly Pt[],
+  closed: boolean,
+  idx: AreaIndex,
+  widths: Float64Array | null = null,
+): FlaggedPath | null {
   return flagPath(path, closed, [idx], widths);
 }
 
@@ -91,7 +115,12 @@ export function flagOverAir(path: readonly Pt[], closed: boolean, idx: AreaIndex
  * level's area lies within the one before). Pieces of one edge that end up on one level are one edge again.
  * Null when no part of the path lies in any level's area.
  */
-export function flagLevels(path: readonly Pt[], closed: boolean, levels: readonly AreaIndex[], widths: Float64Array | null = null): FlaggedPath | null {
+export function flagLevels(
+  path: readonly Pt[],
+  closed: boolean,
+  levels: readonly AreaIndex[],
+  widths: Float64Array | null = null,
+): FlaggedPath | null {
   const f = flagPath(path, closed, levels, widths);
   return f && joinLevelRuns(f, path);
 }
@@ -111,7 +140,12 @@ function levelAt(p: Pt, levels: readonly AreaIndex[]): number {
   return level;
 }
 
-function flagPath(path: readonly Pt[], closed: boolean, levels: readonly AreaIndex[], widths: Float64Array | null): FlaggedPath | null {
+function flagPath(
+  path: readonly Pt[],
+  closed: boolean,
+  levels: readonly AreaIndex[],
+  widths: Float64Array | null,
+): FlaggedPath | null {
   const n = path.length;
   if (n < 2 || levels.every((idx) => idx.areas.length === 0)) return null;
   // quick rejection: the path's bounds miss the area
@@ -128,9 +162,11 @@ function flagPath(path: readonly Pt[], closed: boolean, levels: readonly AreaInd
   const carry = levels.every((idx) => idx.grid || idx.areas.length === 0);
   let clear = false;
   for (let e = 0; e < edges; e++) {
-    const a = path[e], b = path[(e + 1) % n];
+    const a = path[e],
+      b = path[(e + 1) % n];
     points.push(a);
-    const wa = widths ? widths[e] : 0, wb = widths ? widths[(e + 1) % n] : 0;
+    const wa = widths ? widths[e] : 0,
+      wb = widths ? widths[(e + 1) % n] : 0;
     if (ws) ws.push(wa);
     ts.length = 0;
     let touch = false;
@@ -146,7 +182,9 @@ function flagPath(path: readonly Pt[], closed: boolean, levels: readonly AreaInd
     const len = hypot(b.x - a.x, b.y - a.y);
     let prevT = 0;
     let prev = a;
-    const cuts = ts.filter((t, i) => (i === 0 || t - ts[i - 1] > 1e-9) && t * len > MIN_PIECE_UM && (1 - t) * len > MIN_PIECE_UM);
+    const cuts = ts.filter(
+      (t, i) => (i === 0 || t - ts[i - 1] > 1e-9) && t * len > MIN_PIECE_UM && (1 - t) * len > MIN_PIECE_UM,
+    );
     cuts.push(1);
     for (let c = 0; c < cuts.length; c++) {
       const t = cuts[c];

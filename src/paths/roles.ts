@@ -101,7 +101,10 @@ export const ROLES = {
 /** What a path is for. */
 export type PathRole = keyof typeof ROLES;
 export const PATH_ROLES = Object.keys(ROLES) as PathRole[];
-const RANK: Readonly<Record<PathRole, number>> = Object.fromEntries(PATH_ROLES.map((r, i) => [r, i])) as Record<PathRole, number>;
+const RANK: Readonly<Record<PathRole, number>> = Object.fromEntries(PATH_ROLES.map((r, i) => [r, i])) as Record<
+  PathRole,
+  number
+>;
 
 /** How one run of extrusion prints. */
 export interface ExtrusionStyle {
@@ -176,7 +179,8 @@ function makeStyle(cfg: Config, role: PathRole, wall: number | undefined): Entry
     };
     const fan = air.fan?.(cfg);
     if (fan !== undefined) a.fan = fan;
-    const same = a.feature === normal.feature && a.speed === normal.speed && a.flow === normal.flow && a.fan === undefined;
+    const same =
+      a.feature === normal.feature && a.speed === normal.speed && a.flow === normal.flow && a.fan === undefined;
     if (!same) overAir = a;
     partial = air.partial?.(cfg) ?? null;
     if (partial) levels = gradedLevels(normal, overAir, partial, fan);
@@ -191,7 +195,12 @@ function makeStyle(cfg: Config, role: PathRole, wall: number | undefined): Entry
 /** The scarf seam of wall `wall`'s loops by the region's settings (none: undefined). */
 function scarfOf(cfg: Config, wall: number): ScarfStyle | undefined {
   if (cfg.scarfSeam === 'off' || (cfg.scarfSeam === 'outer' && wall > 0)) return undefined;
-  return { length: cfg.scarfLength, startHeight: cfg.scarfStartHeight / 100, steps: cfg.scarfSteps, conditional: cfg.scarfConditional };
+  return {
+    length: cfg.scarfLength,
+    startHeight: cfg.scarfStartHeight / 100,
+    steps: cfg.scarfSteps,
+    conditional: cfg.scarfConditional,
+  };
 }
 
 /**
@@ -199,7 +208,12 @@ function scarfOf(cfg: Config, wall: number): ScarfStyle | undefined {
  * levels that print alike share one style object (the planner joins runs of one style); null when every level
  * prints as the wall does.
  */
-function gradedLevels(normal: ExtrusionStyle, overAir: ExtrusionStyle, speeds: readonly [number, number, number], fan: number | undefined): ExtrusionStyle[] | null {
+function gradedLevels(
+  normal: ExtrusionStyle,
+  overAir: ExtrusionStyle,
+  speeds: readonly [number, number, number],
+  fan: number | undefined,
+): ExtrusionStyle[] | null {
   const levels: ExtrusionStyle[] = [normal];
   for (const s of speeds) {
     const speed = Math.min(normal.speed, s);
@@ -209,7 +223,14 @@ function gradedLevels(normal: ExtrusionStyle, overAir: ExtrusionStyle, speeds: r
     else levels.push(fan === undefined ? { ...normal, speed } : { ...normal, speed, fan });
   }
   const last = levels[3];
-  levels.push(last.speed === overAir.speed && last.fan === overAir.fan && last.feature === overAir.feature && last.flow === overAir.flow ? last : overAir);
+  levels.push(
+    last.speed === overAir.speed &&
+      last.fan === overAir.fan &&
+      last.feature === overAir.feature &&
+      last.flow === overAir.flow
+      ? last
+      : overAir,
+  );
   return levels.some((l) => l !== normal) ? levels : null;
 }
 

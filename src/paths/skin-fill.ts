@@ -22,7 +22,14 @@ import type { Config } from '../settings/resolve.js';
  * @param angle direction of the skin lines on this layer, degrees
  * @param w line width (and spacing), µm
  */
-export function skinFills(fill: RegionFill, cfg: Config, fillArea: ExPolygon[], angle: number, w: number, origin: Pt): SkinFill[] {
+export function skinFills(
+  fill: RegionFill,
+  cfg: Config,
+  fillArea: ExPolygon[],
+  angle: number,
+  w: number,
+  origin: Pt,
+): SkinFill[] {
   const topId: SkinPatternId = cfg.topSkinPattern;
   let bottomId: SkinPatternId = cfg.bottomSkinPattern;
   if (bottomId === 'concentric' && fill.bridgeAngle !== null) bottomId = 'lines';

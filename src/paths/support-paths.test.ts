@@ -13,7 +13,8 @@ const origin = { x: 0, y: 0 };
 /** Every path of the groups with `role`, and whether each is closed. */
 function pathsOf(groups: readonly PathGroup[], role: PathRole): { path: Pt[]; closed: boolean }[] {
   const out: { path: Pt[]; closed: boolean }[] = [];
-  for (const g of groups) for (const e of g.entries) if (e.role === role) for (const path of e.paths) out.push({ path, closed: e.closed });
+  for (const g of groups)
+    for (const e of g.entries) if (e.role === role) for (const path of e.paths) out.push({ path, closed: e.closed });
   return out;
 }
 
@@ -34,12 +35,16 @@ test('support walls go round the body only: the roof beside it is dense lines, n
   assert.ok(walls.length >= 1, 'the body has its wall');
   assert.ok(allIn(walls, body), 'every wall lies in the body');
   assert.ok(roofLines.length > 0, 'the roof has lines');
-  assert.ok(roofLines.every((p) => !p.closed), 'the roof has no wall');
+  assert.ok(
+    roofLines.every((p) => !p.closed),
+    'the roof has no wall',
+  );
   assert.ok(allIn(roofLines, roof), 'every roof line lies in the roof');
   // dense: the lines' length covers the roof at about the interface density (70 %)
   const w = cfg.supportLineWidthMm * 1000;
   let length = 0;
-  for (const { path } of roofLines) for (let k = 1; k < path.length; k++) length += Math.hypot(path[k].x - path[k - 1].x, path[k].y - path[k - 1].y);
+  for (const { path } of roofLines)
+    for (let k = 1; k < path.length; k++) length += Math.hypot(path[k].x - path[k - 1].x, path[k].y - path[k - 1].y);
   const share = (length * w) / (4_000 * 10_000);
   assert.ok(share > 0.55 && share < 0.85, `roof lines cover ${(share * 100).toFixed(0)} % of the roof`);
 });
@@ -52,15 +57,24 @@ test("a tree's straight columns are printed as normal support's body: no wall un
   const tree = resolveConfig({ supportEnabled: true, supportType: 'tree' });
   const walls = pathsOf(supportGroups(areas, tree, layer, origin), 'support').filter((p) => p.closed);
   assert.ok(walls.length >= 1 && allIn(walls, [branch]), 'the branch has its wall, the column none');
-  const lines = pathsOf(supportGroups(areas, tree, layer, origin), 'support').filter((p) => !p.closed && allIn([p], [column]));
+  const lines = pathsOf(supportGroups(areas, tree, layer, origin), 'support').filter(
+    (p) => !p.closed && allIn([p], [column]),
+  );
   let length = 0;
-  for (const { path } of lines) for (let k = 1; k < path.length; k++) length += Math.hypot(path[k].x - path[k - 1].x, path[k].y - path[k - 1].y);
+  for (const { path } of lines)
+    for (let k = 1; k < path.length; k++) length += Math.hypot(path[k].x - path[k - 1].x, path[k].y - path[k - 1].y);
   // sparse lines at the support density over the column's 100 mm²
   const expected = (100e6 * tree.supportDensity) / 100 / (tree.supportLineWidthMm * 1000);
-  assert.ok(length > 0.6 * expected && length < 1.4 * expected, `the column's lines: ${(length / 1000).toFixed(1)} mm, ${(expected / 1000).toFixed(1)} mm expected`);
+  assert.ok(
+    length > 0.6 * expected && length < 1.4 * expected,
+    `the column's lines: ${(length / 1000).toFixed(1)} mm, ${(expected / 1000).toFixed(1)} mm expected`,
+  );
   const asked = resolveConfig({ supportEnabled: true, supportType: 'tree', supportWallCount: 1 });
   const both = pathsOf(supportGroups(areas, asked, layer, origin), 'support').filter((p) => p.closed);
-  assert.ok(both.some((p) => allIn([p], [column])), 'with supportWallCount 1 the column has its wall too');
+  assert.ok(
+    both.some((p) => allIn([p], [column])),
+    'with supportWallCount 1 the column has its wall too',
+  );
 });
 
 test('a roof sliver that no interface line crosses is printed as its outline', () => {

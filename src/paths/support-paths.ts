@@ -37,8 +37,10 @@ function shrink(areas: readonly ExPolygon[], d: number): ExPolygon[] {
  */
 function mayHoldLines(a: ExPolygon, d: number, angle: number, spacingUm: number, origin: Pt): boolean {
   const t = (angle * Math.PI) / 180;
-  const c = Math.cos(t), s = Math.sin(t);
-  let lo = Infinity, hi = -Infinity;
+  const c = Math.cos(t),
+    s = Math.sin(t);
+  let lo = Infinity,
+    hi = -Infinity;
   for (const p of a.outer) {
     const v = -p.x * s + p.y * c;
     if (v < lo) lo = v;
@@ -51,7 +53,8 @@ function mayHoldLines(a: ExPolygon, d: number, angle: number, spacingUm: number,
 /** mayHoldLines for a regular polygon, from its circumcircle (its extent across the lines is at most the diameter). */
 function circleMayHoldLines(p: RegularPolygon, d: number, angle: number, spacingUm: number, origin: Pt): boolean {
   const t = (angle * Math.PI) / 180;
-  const c = Math.cos(t), s = Math.sin(t);
+  const c = Math.cos(t),
+    s = Math.sin(t);
   const v = -p.x * s + p.y * c;
   return familyCrosses(v - p.r + d - 1, v + p.r - d + 1, c, s, spacingUm, origin);
 }
@@ -68,7 +71,13 @@ type Emit = (line: Polyline, area: ExPolygon | null) => void;
 
 /** Lines of one family `spacing` apart over `area` (shrunk so the beads stay inside it). */
 function fill(
-  area: readonly ExPolygon[], insetUm: number, angle: number, spacingUm: number, origin: Pt, connect: boolean, emit: Emit,
+  area: readonly ExPolygon[],
+  insetUm: number,
+  angle: number,
+  spacingUm: number,
+  origin: Pt,
+  connect: boolean,
+  emit: Emit,
   circles?: ReadonlyMap<ExPolygon, RegularPolygon>,
 ): void {
   const region: ExPolygon[] = [];
@@ -88,10 +97,19 @@ function fill(
   }
   if (others.length) region.push(...shrink(others, insetUm));
   // the planner orders each support area's lines itself
-  if (region.length) for (const line of solidFill(region, angle, spacingUm, origin, { connect, order: false })) emit(line, null);
+  if (region.length)
+    for (const line of solidFill(region, angle, spacingUm, origin, { connect, order: false })) emit(line, null);
 }
 
-function bodyLines(body: readonly ExPolygon[], cfg: Config, insetUm: number, w: number, origin: Pt, circles: ReadonlyMap<ExPolygon, RegularPolygon>, emit: Emit): void {
+function bodyLines(
+  body: readonly ExPolygon[],
+  cfg: Config,
+  insetUm: number,
+  w: number,
+  origin: Pt,
+  circles: ReadonlyMap<ExPolygon, RegularPolygon>,
+  emit: Emit,
+): void {
   const d = cfg.supportDensity / 100;
   switch (cfg.supportPattern) {
     case 'grid': {
@@ -133,7 +151,8 @@ function owner(components: readonly Component[], p: Pt): Component {
   let bestD = Infinity;
   for (const c of components) {
     const b = c.box;
-    const dx = Math.max(b.minX - p.x, 0, p.x - b.maxX), dy = Math.max(b.minY - p.y, 0, p.y - b.maxY);
+    const dx = Math.max(b.minX - p.x, 0, p.x - b.maxX),
+      dy = Math.max(b.minY - p.y, 0, p.y - b.maxY);
     const d = dx * dx + dy * dy;
     if (d === 0 && pointInArea(p, c.area)) return c;
     if (d < bestD) {
@@ -191,18 +210,27 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   if (s.columnBody?.length) addWalls(s.columnBody, cfg.supportColumnWalls, w, plain);
   const byArea = new Map<ExPolygon, Component>();
   for (const c of components) byArea.set(c.area, c);
-  const to = (role: PathRole): Emit => (line, a) => add((a && byArea.get(a)) || owner(components, line[0]), role, false, line);
+  const to =
+    (role: PathRole): Emit =>
+    (line, a) =>
+      add((a && byArea.get(a)) || owner(components, line[0]), role, false, line);
   // the body's lines start inside its innermost wall, the roof's and floor's half a line in
   const branches = columns.size ? s.body.filter((a) => !columns.has(a)) : s.body;
   bodyLines(branches, cfg, w / 2 + cfg.supportWalls * w, w, origin, circles, to('support'));
-  if (s.columnBody?.length) bodyLines(s.columnBody, cfg, w / 2 + cfg.supportColumnWalls * w, w, origin, circles, to('support'));
+  if (s.columnBody?.length)
+    bodyLines(s.columnBody, cfg, w / 2 + cfg.supportColumnWalls * w, w, origin, circles, to('support'));
   const iface = w / (cfg.supportInterfaceDensity / 100);
   const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
-  for (const [kind, role] of [[s.roof, 'support-roof'], [s.floor, 'support-floor']] as const) {
+  for (const [kind, role] of [
+    [s.roof, 'support-roof'],
+    [s.floor, 'support-floor'],
+  ] as const) {
     // a piece no line of the family crosses (a sliver of a sloping overhang's roof) is printed as its outline
-    const lined: ExPolygon[] = [], slivers: ExPolygon[] = [];
+    const lined: ExPolygon[] = [],
+      slivers: ExPolygon[] = [];
     for (const a of kind) (mayHoldLines(a, w / 2, ifaceAngle, iface, origin) ? lined : slivers).push(a);
-    if (slivers.length) for (const ring of flatten(shrink(slivers, w / 2))) add(owner(components, ring[0]), role, true, ring);
+    if (slivers.length)
+      for (const ring of flatten(shrink(slivers, w / 2))) add(owner(components, ring[0]), role, true, ring);
     fill(lined, w / 2, ifaceAngle, iface, origin, true, to(role));
   }
   const width = w / UM_PER_MM;
@@ -210,7 +238,8 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   for (const c of components) {
     if (c.entries.length === 0) continue;
     const entries: PathEntry[] = [];
-    for (const e of c.entries) entries.push({ role: e.role, closed: e.closed, paths: e.paths, width, style: entryStyle(cfg, e.role) });
+    for (const e of c.entries)
+      entries.push({ role: e.role, closed: e.closed, paths: e.paths, width, style: entryStyle(cfg, e.role) });
     groups.push({ kind: 'support', area: c.area, convex: circles.has(c.area), entries });
   }
   return groups;

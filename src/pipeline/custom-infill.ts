@@ -2,11 +2,22 @@
  * Custom infill in IceSL's infiller format (a GLSL cellular() shader or a cells.png image), as plain
  * data that crosses a worker boundary: each thread compiles it once into a per-layer generator.
  */
-import { compileShader, customInfillGenerator, loadInfiller, type CustomInfillGenerator, type DensityInput, type InfillerFiles } from '../shader/index.js';
+import {
+  compileShader,
+  customInfillGenerator,
+  loadInfiller,
+  type CustomInfillGenerator,
+  type DensityInput,
+  type InfillerFiles,
+} from '../shader/index.js';
 import type { Config } from '../settings/resolve.js';
 
 /** What density() returns (0–100): a constant, one value per layer, a density shader, or a JS field. */
-export type CustomDensity = number | readonly number[] | { shader: string; fileName?: string } | ((x: number, y: number, z: number) => number);
+export type CustomDensity =
+  | number
+  | readonly number[]
+  | { shader: string; fileName?: string }
+  | ((x: number, y: number, z: number) => number);
 
 export interface CustomInfillSpec extends InfillerFiles {
   /** Values for the shader's ui_ parameters (names with or without the ui_ prefix). */
@@ -21,7 +32,8 @@ export interface CustomInfillSpec extends InfillerFiles {
 export { isTransferable } from './custom-infill-loader.js';
 
 function densityInput(d: CustomDensity | undefined): DensityInput | undefined {
-  if (d === undefined || typeof d === 'number' || typeof d === 'function' || Array.isArray(d)) return d as DensityInput | undefined;
+  if (d === undefined || typeof d === 'number' || typeof d === 'function' || Array.isArray(d))
+    return d as DensityInput | undefined;
   const s = d as { shader: string; fileName?: string };
   return compileShader(s.shader, { entry: 'density', fileName: s.fileName ?? 'density.glsl' });
 }

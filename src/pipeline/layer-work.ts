@@ -77,17 +77,47 @@ export interface RangeResult {
 }
 
 /** What the paths stage of one layer is given. */
-export function pathsContext(regions: LayerRegions, setup: PrintSetup, job: PathsParams, custom: CustomInfillGenerator | undefined, supportBelow: ExPolygon[], prepared?: unknown): LayerPathsContext {
-  return { cfg: setup.configs[0], configs: setup.configs, objectConfigs: setup.objects.map((o) => o.config), params: job.infillParams, prepared, custom, supportBelow, zOffset: job.zOffset, adhesion: job.adhesion && regions.index === 0 };
+export function pathsContext(
+  regions: LayerRegions,
+  setup: PrintSetup,
+  job: PathsParams,
+  custom: CustomInfillGenerator | undefined,
+  supportBelow: ExPolygon[],
+  prepared?: unknown,
+): LayerPathsContext {
+  return {
+    cfg: setup.configs[0],
+    configs: setup.configs,
+    objectConfigs: setup.objects.map((o) => o.config),
+    params: job.infillParams,
+    prepared,
+    custom,
+    supportBelow,
+    zOffset: job.zOffset,
+    adhesion: job.adhesion && regions.index === 0,
+  };
 }
 
 /** The paths of one layer from its regions. */
-export function pathsOf(regions: LayerRegions, setup: PrintSetup, job: PathsParams, custom: CustomInfillGenerator | undefined, supportBelow: ExPolygon[], prepared?: unknown): LayerPaths {
+export function pathsOf(
+  regions: LayerRegions,
+  setup: PrintSetup,
+  job: PathsParams,
+  custom: CustomInfillGenerator | undefined,
+  supportBelow: ExPolygon[],
+  prepared?: unknown,
+): LayerPaths {
   return layerPaths(regions, pathsContext(regions, setup, job, custom, supportBelow, prepared));
 }
 
 /** Run a job, yielding after each layer; returns its result. `held` keeps the thread's held regions. */
-export function* rangeSteps(meshes: readonly PreparedMesh[], setup: PrintSetup, job: RangeJob, custom?: CustomInfillGenerator, held?: RegionsHeld): Generator<void, RangeResult> {
+export function* rangeSteps(
+  meshes: readonly PreparedMesh[],
+  setup: PrintSetup,
+  job: RangeJob,
+  custom?: CustomInfillGenerator,
+  held?: RegionsHeld,
+): Generator<void, RangeResult> {
   const regions: LayerRegions[] = [];
   const paths: LayerPaths[] = [];
   if (job.kind === 'held') {
@@ -130,7 +160,13 @@ export function* rangeSteps(meshes: readonly PreparedMesh[], setup: PrintSetup, 
 }
 
 /** Run a job to its end. */
-export function computeRange(meshes: readonly PreparedMesh[], setup: PrintSetup, job: RangeJob, custom?: CustomInfillGenerator, held?: RegionsHeld): RangeResult {
+export function computeRange(
+  meshes: readonly PreparedMesh[],
+  setup: PrintSetup,
+  job: RangeJob,
+  custom?: CustomInfillGenerator,
+  held?: RegionsHeld,
+): RangeResult {
   const steps = rangeSteps(meshes, setup, job, custom, held);
   for (;;) {
     const s = steps.next();

@@ -26,8 +26,12 @@ export function footprintHull(mesh: Mesh): [number, number][] {
   const best = new Float64Array(8).fill(-Infinity);
   for (let v = 0; v < n; v++) {
     if (!used[v]) continue;
-    const x = positions[3 * v], y = positions[3 * v + 1];
-    const sc0 = x, sc1 = x + y, sc2 = y, sc3 = y - x;
+    const x = positions[3 * v],
+      y = positions[3 * v + 1];
+    const sc0 = x,
+      sc1 = x + y,
+      sc2 = y,
+      sc3 = y - x;
     if (sc0 > best[0]) (best[0] = sc0), (ext[0] = v);
     if (sc1 > best[1]) (best[1] = sc1), (ext[1] = v);
     if (sc2 > best[2]) (best[2] = sc2), (ext[2] = v);
@@ -46,7 +50,8 @@ export function footprintHull(mesh: Mesh): [number, number][] {
   const insideOctagon = (x: number, y: number): boolean => {
     if (oct.length < 3) return false;
     for (let k = 0; k < oct.length; k++) {
-      const a = oct[k], b = oct[(k + 1) % oct.length];
+      const a = oct[k],
+        b = oct[(k + 1) % oct.length];
       if ((b[0] - a[0]) * (y - a[1]) - (b[1] - a[1]) * (x - a[0]) <= 0) return false;
     }
     return true;
@@ -54,7 +59,8 @@ export function footprintHull(mesh: Mesh): [number, number][] {
   const pts: Pt[] = [];
   for (let v = 0; v < n; v++) {
     if (!used[v]) continue;
-    const x = positions[3 * v], y = positions[3 * v + 1];
+    const x = positions[3 * v],
+      y = positions[3 * v + 1];
     if (!insideOctagon(x, y)) pts.push({ x: Math.round(x * 1000) / 1000, y: Math.round(y * 1000) / 1000 });
   }
   return convexHull(pts).map((p): [number, number] => [p.x, p.y]);
@@ -69,7 +75,10 @@ export function planObjects(objects: readonly PlacedObject[]): PlanObject[] {
     for (let k = 2; used.has(name); k++) name = `${base}_${k}`;
     used.add(name);
     const polygon = footprintHull(o.mesh);
-    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    let x0 = Infinity,
+      y0 = Infinity,
+      x1 = -Infinity,
+      y1 = -Infinity;
     for (const [x, y] of polygon) {
       x0 = Math.min(x0, x);
       y0 = Math.min(y0, y);
@@ -77,7 +86,9 @@ export function planObjects(objects: readonly PlacedObject[]): PlanObject[] {
       y1 = Math.max(y1, y);
     }
     // the centre of the footprint's bounds
-    const center: [number, number] = polygon.length ? [Math.round(((x0 + x1) / 2) * 1000) / 1000, Math.round(((y0 + y1) / 2) * 1000) / 1000] : [0, 0];
+    const center: [number, number] = polygon.length
+      ? [Math.round(((x0 + x1) / 2) * 1000) / 1000, Math.round(((y0 + y1) / 2) * 1000) / 1000]
+      : [0, 0];
     return { name, center, polygon };
   });
 }

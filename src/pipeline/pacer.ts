@@ -96,7 +96,12 @@ export class Pacer {
       if (next.value !== undefined) {
         // the promise is not awaited here: keep its rejection from being reported as unhandled
         next.value.catch(() => {});
-        next = steps.throw(new StrataError('BAD_SETTING', 'this slice needs to wait for something (a module to load, workers to start) and cannot run synchronously: use the async slice()'));
+        next = steps.throw(
+          new StrataError(
+            'BAD_SETTING',
+            'this slice needs to wait for something (a module to load, workers to start) and cannot run synchronously: use the async slice()',
+          ),
+        );
         continue;
       }
       try {

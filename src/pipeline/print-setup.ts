@@ -75,7 +75,9 @@ function plain(o: PlacedObject): boolean {
  */
 export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions, print: Config): PlateSetup {
   const table = new ConfigTable(base, print);
-  const objectConfig = objects.map((o) => table.resolve([{ settings: o.settings, use: 'object', where: `object "${o.name}"` }]));
+  const objectConfig = objects.map((o) =>
+    table.resolve([{ settings: o.settings, use: 'object', where: `object "${o.name}"` }]),
+  );
   // overlapping twins print as one object
   const boxes: Box[] = objects.map((o) => positionBounds(o.mesh.positions));
   const groupOf = objects.map((_, i) => i);
@@ -85,7 +87,8 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
     for (let j = i + 1; j < objects.length; j++) {
       if (!boxesOverlap(boxes[i], boxes[j])) continue;
       if (plain(objects[i]) && plain(objects[j]) && objectConfig[i] === objectConfig[j]) {
-        const a = find(i), b = find(j);
+        const a = find(i),
+          b = find(j);
         if (a !== b) groupOf[Math.max(a, b)] = Math.min(a, b);
       } else overlapPairs.push([i, j]);
     }
@@ -93,7 +96,17 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
   const warnings: string[] = [];
   // settings given a value the spiral vase sets aside, wherever they were given
   const vase = print.spiralVase
-    ? vaseWarning([base, ...objects.flatMap((o) => [o.settings, ...(o.volumes ?? []).map((v) => v.settings), ...(o.layerRanges ?? []).map((r) => r.settings)])], print)
+    ? vaseWarning(
+        [
+          base,
+          ...objects.flatMap((o) => [
+            o.settings,
+            ...(o.volumes ?? []).map((v) => v.settings),
+            ...(o.layerRanges ?? []).map((r) => r.settings),
+          ]),
+        ],
+        print,
+      )
     : null;
   if (vase) warnings.push(vase);
   const printed: PlacedObject[] = [];
@@ -108,8 +121,14 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
     if (members.length === 1) printed.push(objects[i]);
     else {
       const names = members.map((j) => objects[j].name);
-      warnings.push(`${names.join(', ')} overlap (their bounds do) and have the same settings: they print as one object (their union), "${names.join(' + ')}"`);
-      printed.push({ name: names.join(' + '), mesh: mergeObjects(members.map((j) => ({ name: objects[j].name, mesh: objects[j].mesh }))), settings: objects[i].settings });
+      warnings.push(
+        `${names.join(', ')} overlap (their bounds do) and have the same settings: they print as one object (their union), "${names.join(' + ')}"`,
+      );
+      printed.push({
+        name: names.join(' + '),
+        mesh: mergeObjects(members.map((j) => ({ name: objects[j].name, mesh: objects[j].mesh }))),
+        settings: objects[i].settings,
+      });
     }
   }
   for (let i = 0; i < objects.length; i++) if (find(i) !== i) printedIndex.set(i, printedIndex.get(find(i))!);
@@ -122,20 +141,40 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
     const modifiers = of('modifier');
     const ranges = (o.layerRanges ?? []).map((r) => ({ fromZ: r.fromZ, toZ: r.toZ }));
     if ((ranges.length + 1) * (modifiers.length + 1) > MAX_REGIONS) {
-      throw new StrataError('LIMIT_EXCEEDED', `object "${o.name}" has ${modifiers.length} modifiers and ${ranges.length} layer ranges: more than ${MAX_REGIONS} combinations of them to resolve`);
+      throw new StrataError(
+        'LIMIT_EXCEEDED',
+        `object "${o.name}" has ${modifiers.length} modifiers and ${ranges.length} layer ranges: more than ${MAX_REGIONS} combinations of them to resolve`,
+      );
     }
     const objectLayer = { settings: o.settings, use: 'object' as const, where: `object "${o.name}"` };
     const regions: number[][] = [];
     for (let r = 0; r <= ranges.length; r++) {
       const range = r === 0 ? null : o.layerRanges![r - 1];
-      const rangeLayer = range ? [{ settings: range.settings, use: 'layer range' as const, where: `object "${o.name}" layers ${range.fromZ}–${range.toZ} mm` }] : [];
+      const rangeLayer = range
+        ? [
+            {
+              settings: range.settings,
+              use: 'layer range' as const,
+              where: `object "${o.name}" layers ${range.fromZ}–${range.toZ} mm`,
+            },
+          ]
+        : [];
       const row: number[] = [];
       for (let m = 0; m <= modifiers.length; m++) {
         if (r === 0 && m === 0) {
           row.push(settingsOf[k]);
           continue;
         }
-        const mod = m === 0 ? [] : [{ settings: modifiers[m - 1].settings, use: 'modifier' as const, where: `modifier "${modifiers[m - 1].name}" of "${o.name}"` }];
+        const mod =
+          m === 0
+            ? []
+            : [
+                {
+                  settings: modifiers[m - 1].settings,
+                  use: 'modifier' as const,
+                  where: `modifier "${modifiers[m - 1].name}" of "${o.name}"`,
+                },
+              ];
         row.push(table.resolve([objectLayer, ...rangeLayer, ...mod]));
       }
       regions.push(row);
@@ -155,10 +194,22 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
   const heightRanges = layerHeightRanges(printed, setups, table.configs, print, warnings);
   // one Z plan: the first object's layer height profile
   const profiled = printed.filter((o) => o.layerHeightProfile);
-  if (profiled.length > 1) warnings.push(`objects ${profiled.map((o) => `"${o.name}"`).join(', ')} have layer height profiles: the plate has one Z plan, so the first one's ("${profiled[0].name}") holds for every object`);
+  if (profiled.length > 1)
+    warnings.push(
+      `objects ${profiled.map((o) => `"${o.name}"`).join(', ')} have layer height profiles: the plate has one Z plan, so the first one's ("${profiled[0].name}") holds for every object`,
+    );
   const heightProfile = profiled[0]?.layerHeightProfile ?? null;
-  const pairs = overlapPairs.map(([a, b]): [number, number] => [printedIndex.get(a)!, printedIndex.get(b)!]).filter(([a, b]) => a !== b);
-  return { setup: { configs: table.configs, objects: setups, overlapPairs: pairs }, meshes, objects: printed, warnings, heightRanges, heightProfile };
+  const pairs = overlapPairs
+    .map(([a, b]): [number, number] => [printedIndex.get(a)!, printedIndex.get(b)!])
+    .filter(([a, b]) => a !== b);
+  return {
+    setup: { configs: table.configs, objects: setups, overlapPairs: pairs },
+    meshes,
+    objects: printed,
+    warnings,
+    heightRanges,
+    heightProfile,
+  };
 }
 
 /**
@@ -167,7 +218,13 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
  * overlap), with a warning when more than one object gives them. A range repeating the print's layerHeight
  * sets nothing unless adaptive layer height is on (there it keeps its range even).
  */
-function layerHeightRanges(printed: readonly PlacedObject[], setups: readonly ObjectSetup[], configs: readonly Config[], print: Config, warnings: string[]): HeightRange[] {
+function layerHeightRanges(
+  printed: readonly PlacedObject[],
+  setups: readonly ObjectSetup[],
+  configs: readonly Config[],
+  print: Config,
+  warnings: string[],
+): HeightRange[] {
   const out: HeightRange[] = [];
   const givers: string[] = [];
   printed.forEach((o, k) => {
@@ -181,6 +238,9 @@ function layerHeightRanges(printed: readonly PlacedObject[], setups: readonly Ob
     });
     if (gives) givers.push(`"${o.name}"`);
   });
-  if (givers.length > 1) warnings.push(`objects ${givers.join(', ')} set layer heights in layer ranges: the plate has one Z plan, so each range's height holds for every object in its Z range (a later object's range wins where they overlap)`);
+  if (givers.length > 1)
+    warnings.push(
+      `objects ${givers.join(', ')} set layer heights in layer ranges: the plate has one Z plan, so each range's height holds for every object in its Z range (a later object's range wins where they overlap)`,
+    );
   return out;
 }

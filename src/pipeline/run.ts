@@ -29,7 +29,17 @@ import type { LayerZ } from '../slice/types.js';
 import { renderThumbnails } from '../thumbnail/index.js';
 import { createPool, releaseWorkers, sharePrepared, type LayerPool } from '../workers/pool.js';
 import type { Port } from '../workers/ports.js';
-import { pathsContext, pathsOf, rangeSteps, type HeldJob, type PathsParams, type RangeJob, type RangeResult, type RegionsHeld, type RegionsJob } from './layer-work.js';
+import {
+  pathsContext,
+  pathsOf,
+  rangeSteps,
+  type HeldJob,
+  type PathsParams,
+  type RangeJob,
+  type RangeResult,
+  type RegionsHeld,
+  type RegionsJob,
+} from './layer-work.js';
 import type { CustomInfillSpec } from './custom-infill.js';
 import { isTransferable, loadCustomInfill, loadedCustomInfill } from './custom-infill-loader.js';
 import { planObjects } from './objects.js';
@@ -103,11 +113,15 @@ function bedCentre(cfg: Config): Pt {
 /** Infill parameters of one object: its bounding-box centre is the pattern origin with object centering. */
 function infillParamsFor(cfg: Config, object: PlacedObject): InfillParams {
   const p = object.mesh.positions;
-  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  let x0 = Infinity,
+    y0 = Infinity,
+    x1 = -Infinity,
+    y1 = -Infinity;
   const idx = object.mesh.indices;
   for (let i = 0; i < idx.length; i++) {
     const v = idx[i];
-    const x = p[3 * v], y = p[3 * v + 1];
+    const x = p[3 * v],
+      y = p[3 * v + 1];
     if (x < x0) x0 = x;
     if (x > x1) x1 = x;
     if (y < y0) y0 = y;
@@ -139,7 +153,8 @@ function ranges(n: number, threads: number): Array<[number, number]> {
   const pieces = Math.min(n, threads * 4);
   const out: Array<[number, number]> = [];
   for (let k = 0; k < pieces; k++) {
-    const a = Math.floor((k * n) / pieces), b = Math.floor(((k + 1) * n) / pieces);
+    const a = Math.floor((k * n) / pieces),
+      b = Math.floor(((k + 1) * n) / pieces);
     if (b > a) out.push([a, b]);
   }
   return out;
@@ -159,10 +174,22 @@ interface Runner {
  * Run the jobs; `onResult` sees each result as it arrives (in any order with a pool), with where it was
  * computed (a worker's index, or -1 on this thread).
  */
-function* runJobs(jobs: RangeJob[], runner: Runner, onResult: (id: number, r: RangeResult, where: number) => void): Steps<void> {
+function* runJobs(
+  jobs: RangeJob[],
+  runner: Runner,
+  onResult: (id: number, r: RangeResult, where: number) => void,
+): Steps<void> {
   const { pool, local, pacer } = runner;
   pacer.check();
-  if (pool) return yield* wait(pool.run(jobs, { local: (job) => pacer.drive(local(job)), onResult, signal: runner.signal, helpAboveMs: runner.plansOnly ? Infinity : HELP_ABOVE_MS }));
+  if (pool)
+    return yield* wait(
+      pool.run(jobs, {
+        local: (job) => pacer.drive(local(job)),
+        onResult,
+        signal: runner.signal,
+        helpAboveMs: runner.plansOnly ? Infinity : HELP_ABOVE_MS,
+      }),
+    );
   for (let id = 0; id < jobs.length; id++) onResult(id, yield* local(jobs[id]), -1);
 }
 
@@ -231,8 +258,15 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const p = o.mesh.positions;
     for (let i = 2; i < p.length; i += 3) if (p[i] > height) height = p[i];
   }
-  const layers: LayerZ[] = planPlateLayers(height, cfg, objects.map((o) => o.mesh), plate.heightRanges, plate.heightProfile);
-  if (layers.length === 0) throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
+  const layers: LayerZ[] = planPlateLayers(
+    height,
+    cfg,
+    objects.map((o) => o.mesh),
+    plate.heightRanges,
+    plate.heightProfile,
+  );
+  if (layers.length === 0)
+    throw new StrataError('EMPTY_MODEL', 'the model is thinner than the first layer: nothing to print');
   // sequential printing: the order, and the print head's clearances checked before anything is sliced
   const sequence = cfg.sequentialPrinting && objects.length > 1 ? sequenceObjects(objects, cfg) : null;
   const uneven = !evenLayers(layers, cfg.layerHeight);
@@ -242,10 +276,16 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
   // (a custom density given as a JS function cannot travel to a worker)
   const plansOnly = !!opts.customInWorkers && !!opts.custom && isTransferable(opts.custom);
   const split = ranges(layers.length, plansOnly ? Math.max(2, opts.threads) : opts.threads);
-  const workers = opts.custom && !isTransferable(opts.custom) ? 0 : plansOnly ? Math.min(Math.max(1, opts.threads), split.length) : Math.min(opts.threads, split.length) - 1;
+  const workers =
+    opts.custom && !isTransferable(opts.custom)
+      ? 0
+      : plansOnly
+        ? Math.min(Math.max(1, opts.threads), split.length)
+        : Math.min(opts.threads, split.length) - 1;
   let meshes: PreparedMesh[] | null = null;
   // with workers, the calling thread uses the copy it shares with them
-  const prepared = () => (meshes ??= plate.meshes.map((m) => (workers > 0 ? sharePrepared(prepareForSlicing(m)) : prepareForSlicing(m))));
+  const prepared = () =>
+    (meshes ??= plate.meshes.map((m) => (workers > 0 ? sharePrepared(prepareForSlicing(m)) : prepareForSlicing(m))));
   // each object's mesh made ready for slicing, pausing between objects
   for (let k = 0; k < plate.meshes.length && workers === 0; k++) {
     meshes ??= [];
@@ -256,7 +296,9 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
   if (!pool && opts.started) yield* wait(releaseWorkers(opts.started));
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
-    const custom = opts.custom ? (loadedCustomInfill() ?? (yield* wait(loadCustomInfill()))).customGenerator(opts.custom, cfg) : undefined;
+    const custom = opts.custom
+      ? (loadedCustomInfill() ?? (yield* wait(loadCustomInfill()))).customGenerator(opts.custom, cfg)
+      : undefined;
     const twoPhase = needsRegionsFirst(setup, opts.custom);
     // progress: the layer work is 80 % of the run (regions and paths halves when there are two phases)
     const total = layers.length * (twoPhase ? 2 : 1);
@@ -274,7 +316,13 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       signal,
       local: function* (job) {
         // a paths or held job reads its regions, not the meshes
-        const steps = rangeSteps(job.kind === 'paths' || job.kind === 'held' ? [] : prepared(), setup, job, custom, heldHere);
+        const steps = rangeSteps(
+          job.kind === 'paths' || job.kind === 'held' ? [] : prepared(),
+          setup,
+          job,
+          custom,
+          heldHere,
+        );
         for (;;) {
           const s = steps.next();
           if (s.done) return s.value;
@@ -286,7 +334,11 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     const jobDone = (job: RangeJob) => {
       if (pool) layerDone(job.to - job.from);
     };
-    const common: PathsParams = { infillParams, zOffset: 0, adhesion: cfg.adhesionType === 'skirt' || cfg.adhesionType === 'brim' };
+    const common: PathsParams = {
+      infillParams,
+      zOffset: 0,
+      adhesion: cfg.adhesionType === 'skirt' || cfg.adhesionType === 'brim',
+    };
 
     // Travel planning is sequential (each layer starts where the last one ended), so ranges are
     // planned in order as they arrive, while later ones are still being computed.
@@ -300,8 +352,10 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     let firstLayerFilledMm2 = 0;
     const plan = (lp: LayerPaths) => {
       if (lp.firstLayerFilledMm2) firstLayerFilledMm2 += lp.firstLayerFilledMm2;
-      if (lp.lostMm2) thinLost.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.lostMm2 });
-      if (lp.vaseDroppedMm2) vaseSpecks.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.vaseDroppedMm2 });
+      if (lp.lostMm2)
+        thinLost.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.lostMm2 });
+      if (lp.vaseDroppedMm2)
+        vaseSpecks.push({ layer: sequence ? collected.length : planned.length, z: lp.z, areaMm2: lp.vaseDroppedMm2 });
       if (sequence) {
         collected.push(lp);
         return;
@@ -323,7 +377,14 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       // With workers and support, each range keeps its regions where they were made, and the workers make
       // their ranges' model paths while this thread runs the support pass (which they would wait for idle).
       const hold = !!modelPaths && !!pool && anySupport(setup);
-      const regionJobs: RegionsJob[] = split.map(([from, to]) => ({ kind: 'regions', layers, from, to, modelPaths: hold ? undefined : modelPaths, hold }));
+      const regionJobs: RegionsJob[] = split.map(([from, to]) => ({
+        kind: 'regions',
+        layers,
+        from,
+        to,
+        modelPaths: hold ? undefined : modelPaths,
+        hold,
+      }));
       const regionResults: RangeResult[] = [];
       const where: number[] = [];
       yield* runJobs(regionJobs, runner, (id, r, w) => {
@@ -335,18 +396,35 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       // every layer is sliced: the meshes' slicing structures go (the calling thread's copy; the pool's with it)
       meshes = null;
       report('support', 0.4);
-      const heldJob = (id: number): HeldJob => ({ kind: 'held', layers, from: regionJobs[id].from, to: regionJobs[id].to, modelPaths: modelPaths! });
+      const heldJob = (id: number): HeldJob => ({
+        kind: 'held',
+        layers,
+        from: regionJobs[id].from,
+        to: regionJobs[id].to,
+        modelPaths: modelPaths!,
+      });
       const heldIds = hold ? regionJobs.map((_, id) => id).filter((id) => where[id] >= 0) : [];
       const heldPaths: LayerPaths[][] = [];
       const heldRun = heldIds.length
-        ? pool!.run(heldIds.map(heldJob), { placement: heldIds.map((id) => where[id]), onResult: (k, r) => (heldPaths[heldIds[k]] = r.paths), signal })
+        ? pool!.run(heldIds.map(heldJob), {
+            placement: heldIds.map((id) => where[id]),
+            onResult: (k, r) => (heldPaths[heldIds[k]] = r.paths),
+            signal,
+          })
         : null;
       // its failure is met where it is awaited, after the support pass
       heldRun?.catch(() => {});
-      yield* paced(objectsSupportPass(regions, setup.configs, setup.objects.map((o) => o.config)));
+      yield* paced(
+        objectsSupportPass(
+          regions,
+          setup.configs,
+          setup.objects.map((o) => o.config),
+        ),
+      );
       if (hold) {
         // the model paths of the ranges this thread made, then the workers'
-        for (let id = 0; id < regionJobs.length; id++) if (where[id] < 0) heldPaths[id] = (yield* runner.local(heldJob(id))).paths;
+        for (let id = 0; id < regionJobs.length; id++)
+          if (where[id] < 0) heldPaths[id] = (yield* runner.local(heldJob(id))).paths;
         yield* wait(heldRun!);
         for (let id = 0; id < regionJobs.length; id++) regionResults[id].paths = heldPaths[id];
       }
@@ -354,11 +432,17 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       if (lightningCfg) {
         // every region printed with the pattern, with the first such region's density
         const pattern = lightningCfg.infillPattern;
-        const ofPattern = setup.configs.length === 1 ? undefined : (region: number) => setup.configs[region].infillPattern === pattern;
+        const ofPattern =
+          setup.configs.length === 1 ? undefined : (region: number) => setup.configs[region].infillPattern === pattern;
         const density = lightningCfg.infillDensity / 100;
         preparedInfill = PATTERNS[pattern as PatternId].prepare!(
           {
-            layers: regions.map((r) => ({ layerIndex: r.index, z: r.z, layerHeight: r.height, region: layerSparse(r, ofPattern) })),
+            layers: regions.map((r) => ({
+              layerIndex: r.index,
+              z: r.z,
+              layerHeight: r.height,
+              region: layerSparse(r, ofPattern),
+            })),
             supportNeeded: regions.map((_, i) => (i + 1 < regions.length ? layerTopSkin(regions[i + 1]) : [])),
           },
           infillParams[0].density === density ? infillParams[0] : { ...infillParams[0], density },
@@ -418,7 +502,17 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     meshes = null;
     if (pool) yield* wait(pool.close());
     if (sequence) {
-      planned.push(...planSequential({ paths: collected, order: sequence.order, hulls: sequence.hulls, liftZ: (top) => liftZ(top, cfg.buildVolumeHeight) }, cfg));
+      planned.push(
+        ...planSequential(
+          {
+            paths: collected,
+            order: sequence.order,
+            hulls: sequence.hulls,
+            liftZ: (top) => liftZ(top, cfg.buildVolumeHeight),
+          },
+          cfg,
+        ),
+      );
       collected.length = 0;
     }
     pacer.check();
@@ -430,8 +524,14 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
     let k = 0;
     const estimate = yield* paced(estimatePlanSteps(printPlan, cfg), () => report('planning', 0.8 + (0.1 * ++k) / n));
     k = 0;
-    const thumbnails = renderThumbnails(objects.map((o) => o.mesh), cfg.thumbnails);
-    yield* paced(writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }), () => report('writing', 0.9 + (0.1 * ++k) / n));
+    const thumbnails = renderThumbnails(
+      objects.map((o) => o.mesh),
+      cfg.thumbnails,
+    );
+    yield* paced(
+      writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }),
+      () => report('writing', 0.9 + (0.1 * ++k) / n),
+    );
     report('writing', 1);
     return { plan: printPlan, estimate, layers: planned.length, thinLost, vaseFlat, vaseSpecks, firstLayerFilledMm2 };
   } finally {
@@ -440,7 +540,12 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
 }
 
 function planBounds(layers: readonly LayerPlan[]): PrintPlan['bounds'] {
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity, minZ = Infinity, maxZ = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity,
+    minZ = Infinity,
+    maxZ = -Infinity;
   // indexed loops: this runs once, mostly before the engine optimises it, and a for-of there makes an
   // iterator result per point (4 MB a BridgeTest slice with tree support)
   for (let li = 0; li < layers.length; li++) {

@@ -59,9 +59,15 @@ const mm = (v: number) => String(Math.round(v * 100) / 100);
  * file comment). Throws StrataError: OVERLAPPING_OBJECTS for two objects too close together, DOES_NOT_FIT
  * for an object too tall to be printed before another, BAD_SETTING for a raft.
  */
-export function sequenceObjects(objects: readonly SequenceObject[], cfg: Pick<Config, 'extruderClearanceRadius' | 'extruderClearanceHeight' | 'adhesionType'>): Sequence {
+export function sequenceObjects(
+  objects: readonly SequenceObject[],
+  cfg: Pick<Config, 'extruderClearanceRadius' | 'extruderClearanceHeight' | 'adhesionType'>,
+): Sequence {
   if (cfg.adhesionType === 'raft') {
-    throw new StrataError('BAD_SETTING', 'sequentialPrinting cannot print a raft (one raft under every object would be in the way of the print head): choose adhesionType skirt, brim or none, or turn sequentialPrinting off');
+    throw new StrataError(
+      'BAD_SETTING',
+      'sequentialPrinting cannot print a raft (one raft under every object would be in the way of the print head): choose adhesionType skirt, brim or none, or turn sequentialPrinting off',
+    );
   }
   const hulls = objects.map((o) => footprintHull(o.mesh));
   const tops = objects.map((o) => meshTop(o.mesh));

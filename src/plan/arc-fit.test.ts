@@ -19,7 +19,14 @@ function settings(overrides: Partial<Settings> = {}): Settings {
 
 const pt = (x: number, y: number): Pt => ({ x: Math.round(x * 1000), y: Math.round(y * 1000) });
 const step = (points: Pt[], closed: boolean, feature: ExtrudeStep['feature'] = 'WALL-OUTER'): ExtrudeStep => ({
-  kind: 'extrude', feature, points, closed, width: 0.4, height: 0.2, speed: 40, flow: 1,
+  kind: 'extrude',
+  feature,
+  points,
+  closed,
+  width: 0.4,
+  height: 0.2,
+  speed: 40,
+  flow: 1,
 });
 /** n points on a circle (µm-rounded), from angle a0 over `sweep` radians. */
 function circle(cx: number, cy: number, r: number, n: number, a0 = 0, sweep = 2 * Math.PI, closed = true): Pt[] {
@@ -54,7 +61,11 @@ function checkAgainst(original: Pt[], fitted: ExtrudeStep): void {
     const arc = fitted.arcs?.[i];
     if (arc) {
       const r = Math.hypot(path[i - 1]!.x - arc.cx, path[i - 1]!.y - arc.cy);
-      for (let m = from; m <= to; m++) assert.ok(offCircle(source[m]!, arc, r) <= TOL + 1e-6, `point ${m} off its arc by ${offCircle(source[m]!, arc, r)}`);
+      for (let m = from; m <= to; m++)
+        assert.ok(
+          offCircle(source[m]!, arc, r) <= TOL + 1e-6,
+          `point ${m} off its arc by ${offCircle(source[m]!, arc, r)}`,
+        );
       for (let m = from; m < to; m++) {
         const mid = { x: (source[m]!.x + source[m + 1]!.x) / 2, y: (source[m]!.y + source[m + 1]!.y) / 2 };
         assert.ok(offCircle(mid as Pt, arc, r) <= SEGMENT_TOLERANCE_FACTOR * TOL + 1e-6, 'segment middle near the arc');
@@ -95,7 +106,8 @@ test('the arcs carry the same E as the circle within 0.1 %, and parse back to th
   assert.ok((gcode.match(/^G3 /gm) ?? []).length >= 2);
   const parsed = parseGcode(gcode);
   const layer = parsed.layers.find((l) => Math.abs(l.z - 0.2) < 1e-6)!;
-  let e = 0, maxOff = 0;
+  let e = 0,
+    maxOff = 0;
   const t = layer.extrusions;
   for (let i = 0; i < t.count; i++) {
     e += t.e[i]!;

@@ -50,20 +50,25 @@ function fitRun(path: readonly Pt[], i: number, j: number, tol: number, samples:
   const chord = hypot(b.x - a.x, b.y - a.y);
   if (!(chord > 0)) return null;
   const h = chord / 2;
-  const tx = (b.x - a.x) / chord, ty = (b.y - a.y) / chord;
-  const mx = (a.x + b.x) / 2, my = (a.y + b.y) / 2;
+  const tx = (b.x - a.x) / chord,
+    ty = (b.y - a.y) / chord;
+  const mx = (a.x + b.x) / 2,
+    my = (a.y + b.y) / 2;
   // samples in the chord's frame: u along the chord from its middle, v to its left
   // (u, v, weight): a segment middle counts its distance divided by SEGMENT_TOLERANCE_FACTOR
   const midWeight = 1 / SEGMENT_TOLERANCE_FACTOR;
   let n = 0;
   for (let k = i; k < j; k++) {
-    const p = path[k]!, q = path[k + 1]!;
-    const hx = (p.x + q.x) / 2 - mx, hy = (p.y + q.y) / 2 - my;
+    const p = path[k]!,
+      q = path[k + 1]!;
+    const hx = (p.x + q.x) / 2 - mx,
+      hy = (p.y + q.y) / 2 - my;
     samples[n++] = hx * tx + hy * ty;
     samples[n++] = hy * tx - hx * ty;
     samples[n++] = midWeight;
     if (k + 1 < j) {
-      const qx = q.x - mx, qy = q.y - my;
+      const qx = q.x - mx,
+        qy = q.y - my;
       samples[n++] = qx * tx + qy * ty;
       samples[n++] = qy * tx - qx * ty;
       samples[n++] = 1;
@@ -77,7 +82,8 @@ function fitRun(path: readonly Pt[], i: number, j: number, tol: number, samples:
     const r = Math.sqrt(h2 + q * q);
     let max = 0;
     for (let k = 0; k < n; k += 3) {
-      const u = samples[k]!, v = samples[k + 1]!;
+      const u = samples[k]!,
+        v = samples[k + 1]!;
       // |p − c|² − r², then the distance from the circle without cancelling large numbers
       const num = u * u + v * v + 2 * v * q - h2;
       const d = (num / (Math.sqrt(Math.max(0, r * r + num)) + r)) * samples[k + 2]!;
@@ -87,9 +93,12 @@ function fitRun(path: readonly Pt[], i: number, j: number, tol: number, samples:
     return max;
   };
   const nonZero = (s: number) => (s === 0 ? 1e-9 : s);
-  let lo = -h, hi = h;
-  let x1 = hi - GOLDEN * (hi - lo), x2 = lo + GOLDEN * (hi - lo);
-  let f1 = worst(nonZero(x1)), f2 = worst(nonZero(x2));
+  let lo = -h,
+    hi = h;
+  let x1 = hi - GOLDEN * (hi - lo),
+    x2 = lo + GOLDEN * (hi - lo);
+  let f1 = worst(nonZero(x1)),
+    f2 = worst(nonZero(x2));
   for (let it = 0; it < BULGE_SEARCH_STEPS; it++) {
     if (f1 <= f2) {
       hi = x2;
@@ -116,7 +125,8 @@ function fitRun(path: readonly Pt[], i: number, j: number, tol: number, samples:
   // bulging left (s > 0) the centre lies to the right: the arc turns clockwise
   const clockwise = s > 0;
   for (let k = i; k < j; k++) {
-    const p = path[k]!, nq = path[k + 1]!;
+    const p = path[k]!,
+      nq = path[k + 1]!;
     const turn = (p.x - cx) * (nq.y - cy) - (p.y - cy) * (nq.x - cx);
     if (turn === 0 || turn < 0 !== clockwise) return null;
   }
@@ -124,7 +134,13 @@ function fitRun(path: readonly Pt[], i: number, j: number, tol: number, samples:
 }
 
 /** The longest run from `i` (at least MIN_ARC_SEGMENTS segments) that fits an arc, or null. */
-function longestRun(path: readonly Pt[], i: number, lastIndex: number, tol: number, samples: Float64Array): { end: number; arc: PlanArc } | null {
+function longestRun(
+  path: readonly Pt[],
+  i: number,
+  lastIndex: number,
+  tol: number,
+  samples: Float64Array,
+): { end: number; arc: PlanArc } | null {
   let good = i + MIN_ARC_SEGMENTS;
   if (good > lastIndex) return null;
   let arc = fitRun(path, i, good, tol, samples);
@@ -165,7 +181,13 @@ export function fitStepArcs(step: ExtrudeStep, toleranceMm: number): number {
   const samples = new Float64Array(6 * path.length);
   const keptIndex: number[] = [0];
   for (let i = 0; i < path.length - 1; ) {
-    const run = longestRun(path, i, widths ? sameWidthUntil(widths, n, i, path.length - 1) : path.length - 1, tol, samples);
+    const run = longestRun(
+      path,
+      i,
+      widths ? sameWidthUntil(widths, n, i, path.length - 1) : path.length - 1,
+      tol,
+      samples,
+    );
     if (run) {
       kept.push(path[run.end]!);
       keptIndex.push(run.end % n);

@@ -30,7 +30,8 @@ test('a travel across a hole goes around it and stays inside the island', () => 
   // boundary to walk along: rings half a line width inside the material
   const boundary = [sq(200, 200, 19800, 19800), sq(7800, 7800, 12200, 12200).reverse()];
   const area = makeCombArea(outline, boundary);
-  const a = { x: 2000, y: 10000 }, b = { x: 18000, y: 10000 };
+  const a = { x: 2000, y: 10000 },
+    b = { x: 18000, y: 10000 };
   const way = combRoute(a, b, area);
   assert.ok(way && way.length > 1, 'detoured');
   assert.deepEqual(way[way.length - 1], b);
@@ -45,16 +46,29 @@ test('a travel that stays inside needs no waypoints', () => {
 
 test('a travel across the notch of a U shape follows the outline instead of crossing air', () => {
   const u: Polygon = [
-    { x: 0, y: 0 }, { x: 30000, y: 0 }, { x: 30000, y: 20000 }, { x: 20000, y: 20000 },
-    { x: 20000, y: 5000 }, { x: 10000, y: 5000 }, { x: 10000, y: 20000 }, { x: 0, y: 20000 },
+    { x: 0, y: 0 },
+    { x: 30000, y: 0 },
+    { x: 30000, y: 20000 },
+    { x: 20000, y: 20000 },
+    { x: 20000, y: 5000 },
+    { x: 10000, y: 5000 },
+    { x: 10000, y: 20000 },
+    { x: 0, y: 20000 },
   ];
   const outline: ExPolygon = { outer: u, holes: [] };
   const inner: Polygon = [
-    { x: 200, y: 200 }, { x: 29800, y: 200 }, { x: 29800, y: 19800 }, { x: 20200, y: 19800 },
-    { x: 20200, y: 4800 }, { x: 9800, y: 4800 }, { x: 9800, y: 19800 }, { x: 200, y: 19800 },
+    { x: 200, y: 200 },
+    { x: 29800, y: 200 },
+    { x: 29800, y: 19800 },
+    { x: 20200, y: 19800 },
+    { x: 20200, y: 4800 },
+    { x: 9800, y: 4800 },
+    { x: 9800, y: 19800 },
+    { x: 200, y: 19800 },
   ];
   const area = makeCombArea(outline, [inner]);
-  const a = { x: 5000, y: 15000 }, b = { x: 25000, y: 15000 };
+  const a = { x: 5000, y: 15000 },
+    b = { x: 25000, y: 15000 };
   const way = combRoute(a, b, area);
   assert.ok(way);
   assert.ok(segmentsInside(a, way, outline));

@@ -32,7 +32,10 @@ export interface CombArea {
 }
 
 function makeRing(pts: Polygon): CombRing {
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   for (let i = 0; i < pts.length; i++) {
     const p = pts[i];
     if (p.x < minX) minX = p.x;
@@ -50,7 +53,8 @@ function cumulative(ring: CombRing): Float64Array {
   const n = pts.length;
   const cum = new Float64Array(n + 1);
   for (let i = 0; i < n; i++) {
-    const p = pts[i], q = pts[(i + 1) % n];
+    const p = pts[i],
+      q = pts[(i + 1) % n];
     cum[i + 1] = cum[i] + hypot(q.x - p.x, q.y - p.y);
   }
   return (ring.cum = cum);
@@ -63,20 +67,33 @@ export function makeCombArea(outline: ExPolygon, boundary: readonly Polygon[]): 
 
 function crossings(a: Pt, b: Pt, rings: readonly CombRing[]): Crossing[] {
   const out: Crossing[] = [];
-  const minX = Math.min(a.x, b.x), maxX = Math.max(a.x, b.x), minY = Math.min(a.y, b.y), maxY = Math.max(a.y, b.y);
-  const dx = b.x - a.x, dy = b.y - a.y;
+  const minX = Math.min(a.x, b.x),
+    maxX = Math.max(a.x, b.x),
+    minY = Math.min(a.y, b.y),
+    maxY = Math.max(a.y, b.y);
+  const dx = b.x - a.x,
+    dy = b.y - a.y;
   for (let r = 0; r < rings.length; r++) {
     const ring = rings[r];
     if (ring.maxX < minX || ring.minX > maxX || ring.maxY < minY || ring.minY > maxY) continue;
     const pts = ring.pts;
     const n = pts.length;
     for (let i = 0; i < n; i++) {
-      const p = pts[i], q = pts[i + 1 === n ? 0 : i + 1];
-      if ((p.x < minX && q.x < minX) || (p.x > maxX && q.x > maxX) || (p.y < minY && q.y < minY) || (p.y > maxY && q.y > maxY)) continue;
-      const ex = q.x - p.x, ey = q.y - p.y;
+      const p = pts[i],
+        q = pts[i + 1 === n ? 0 : i + 1];
+      if (
+        (p.x < minX && q.x < minX) ||
+        (p.x > maxX && q.x > maxX) ||
+        (p.y < minY && q.y < minY) ||
+        (p.y > maxY && q.y > maxY)
+      )
+        continue;
+      const ex = q.x - p.x,
+        ey = q.y - p.y;
       const den = dx * ey - dy * ex;
       if (den === 0) continue;
-      const fx = p.x - a.x, fy = p.y - a.y;
+      const fx = p.x - a.x,
+        fy = p.y - a.y;
       const t = (fx * ey - fy * ex) / den;
       const u = (fx * dy - fy * dx) / den;
       if (t <= 1e-9 || t >= 1 - 1e-9 || u < 0 || u >= 1) continue;
@@ -93,7 +110,8 @@ function walk(ring: CombRing, c1: Crossing, c2: Crossing): Pt[] {
   const cum = cumulative(ring);
   const length = cum[n];
   const pos = (c: Crossing) => cum[c.edge] + c.u * (cum[c.edge + 1] - cum[c.edge]);
-  const s1 = pos(c1), s2 = pos(c2);
+  const s1 = pos(c1),
+    s2 = pos(c2);
   let forward = s2 - s1;
   if (forward < 0) forward += length;
   const out: Pt[] = [c1.p];
@@ -165,7 +183,13 @@ export function insideRings(p: Pt, area: CombArea, tolerance: number): boolean {
   let inside = false;
   const t2 = tolerance * tolerance;
   for (const ring of area.rings) {
-    if (p.x < ring.minX - tolerance || p.x > ring.maxX + tolerance || p.y < ring.minY - tolerance || p.y > ring.maxY + tolerance) continue;
+    if (
+      p.x < ring.minX - tolerance ||
+      p.x > ring.maxX + tolerance ||
+      p.y < ring.minY - tolerance ||
+      p.y > ring.maxY + tolerance
+    )
+      continue;
     if (pointInRing(p, ring.pts)) inside = !inside;
     const pts = ring.pts;
     for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) {

@@ -21,7 +21,8 @@ function polyLength(points: readonly Pt[], closed: boolean, from?: Pt): number {
   let len = from ? hypot(points[0].x - from.x, points[0].y - from.y) : 0;
   for (let i = 1; i < points.length; i++) len += hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
   if (closed && points.length > 2) {
-    const a = points[points.length - 1], b = points[0];
+    const a = points[points.length - 1],
+      b = points[0];
     len += hypot(a.x - b.x, a.y - b.y);
   }
   return len / 1000;
@@ -29,7 +30,8 @@ function polyLength(points: readonly Pt[], closed: boolean, from?: Pt): number {
 
 /** Seconds the layer takes by length/speed (mm and mm/s), extrusions and travels. */
 export function naiveLayerSeconds(layer: LayerPlan, from?: Pt): { extrude: number; travel: number } {
-  let extrude = 0, travel = 0;
+  let extrude = 0,
+    travel = 0;
   let at = from;
   for (const s of layer.steps) {
     if (s.kind === 'extrude') {
@@ -57,7 +59,16 @@ export function applyMinLayerTime(layer: LayerPlan, minLayerTime: number, minPri
 }
 
 /** The fan settings the fan pass reads, fan speeds in %. */
-export type FanSettings = Pick<Config, 'fanSpeed' | 'firstLayerFanSpeed' | 'fanOffLayers' | 'fanFullLayer' | 'fanBelowLayerTime' | 'maxFanSpeed' | 'minLayerTime'>;
+export type FanSettings = Pick<
+  Config,
+  | 'fanSpeed'
+  | 'firstLayerFanSpeed'
+  | 'fanOffLayers'
+  | 'fanFullLayer'
+  | 'fanBelowLayerTime'
+  | 'maxFanSpeed'
+  | 'minLayerTime'
+>;
 
 /** The fan, 0..1, of layer `k` of its object that lasts `seconds` (before any slowing for minimum layer time). */
 export function layerFan(cfg: FanSettings, k: number, seconds: number): number {

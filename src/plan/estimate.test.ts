@@ -58,9 +58,25 @@ const line = (points: Pt[], speed: number, closed = false): ExtrudeStep => ({
   speed,
   flow: 1,
 });
-const move = (points: Pt[], retract: boolean, zHop = 0, speed = 150): TravelStep => ({ kind: 'travel', points, retract, zHop, speed });
-const layer = (index: number, steps: PlanStep[], z = 0.2 * (index + 1)): LayerPlan => ({ index, z, height: 0.2, fan: 0, steps });
-const plan = (...layers: LayerPlan[]): PrintPlan => ({ layers, objects: [], bounds: { minX: 0, minY: 0, minZ: 0, maxX: 100, maxY: 100, maxZ: 1 } });
+const move = (points: Pt[], retract: boolean, zHop = 0, speed = 150): TravelStep => ({
+  kind: 'travel',
+  points,
+  retract,
+  zHop,
+  speed,
+});
+const layer = (index: number, steps: PlanStep[], z = 0.2 * (index + 1)): LayerPlan => ({
+  index,
+  z,
+  height: 0.2,
+  fan: 0,
+  steps,
+});
+const plan = (...layers: LayerPlan[]): PrintPlan => ({
+  layers,
+  objects: [],
+  bounds: { minX: 0, minY: 0, minZ: 0, maxX: 100, maxY: 100, maxZ: 1 },
+});
 const close = (actual: number, expected: number, tolerance: number, what: string): void =>
   assert.ok(Math.abs(actual - expected) <= tolerance, `${what}: ${actual} vs ${expected}`);
 
@@ -68,11 +84,10 @@ const close = (actual: number, expected: number, tolerance: number, what: string
 const trapezoid = (L: number, v: number, v0: number, v1: number, a: number): number =>
   L / v + (v - v0) ** 2 / (2 * a * v) + (v - v1) ** 2 / (2 * a * v);
 
-
 /** Marlin's planner starts and ends every chain at its minimum planner speed. */
 const m = MINIMUM_PLANNER_SPEED;
 
-test('a long straight move takes L/v + v/a (from and to Marlin\'s minimum planner speed)', () => {
+test("a long straight move takes L/v + v/a (from and to Marlin's minimum planner speed)", () => {
   const e = estimatePlan(plan(layer(0, [line([pt(0, 0), pt(100, 0)], 50)])), S);
   close(e.printTimeSeconds, trapezoid(100, 50, m, m, 500), 1e-9, 'straight');
   close(e.printTimeSeconds, 100 / 50 + 50 / 500, 1e-3, 'about L/v + v/a');
@@ -114,7 +129,10 @@ test('a 90° corner is taken at cornerVelocity (the junction deviation it maps t
   const vr = Math.sqrt((500 * jd * sinBack) / (1 - sinBack));
   assert.ok(vr < 1);
   close(back.printTimeSeconds, trapezoid(100, 50, m, vr, 500) + trapezoid(100, 50, vr, m, 500), 1e-9, 'reversal');
-  const travelBack = estimatePlan(plan(layer(0, [move([pt(0, 0)], false), move([pt(100, 0), pt(0, 0)], false, 0, 50)])), S);
+  const travelBack = estimatePlan(
+    plan(layer(0, [move([pt(0, 0)], false), move([pt(100, 0), pt(0, 0)], false, 0, 50)])),
+    S,
+  );
   close(travelBack.printTimeSeconds, 2 * trapezoid(100, 50, m, m, 500), 1e-9, 'travel reversal');
 });
 
@@ -130,7 +148,8 @@ test('a zig-zag of short segments is slower than the straight line of the same l
 test('a finely divided circle runs near its centripetal speed √(a·r)', () => {
   const r = 10;
   const pts: Pt[] = [];
-  for (let i = 0; i < 100; i++) pts.push(pt(50 + r * Math.cos((i / 100) * 2 * Math.PI), 50 + r * Math.sin((i / 100) * 2 * Math.PI)));
+  for (let i = 0; i < 100; i++)
+    pts.push(pt(50 + r * Math.cos((i / 100) * 2 * Math.PI), 50 + r * Math.sin((i / 100) * 2 * Math.PI)));
   const e = estimatePlan(plan(layer(0, [line(pts, 200, true)])), S);
   const v = Math.sqrt(500 * r);
   const expected = (2 * Math.PI * r) / v + v / 500; // cruise at v, start and end at rest
@@ -188,26 +207,56 @@ test('machine limits: per-axis speed and acceleration caps, travel and retract a
   const long = plan(layer(0, [line([pt(0, 0), pt(100, 0)], 100)]));
   const capped = estimatePlan(long, { ...S, maxSpeedX: 50 });
   close(capped.printTimeSeconds, trapezoid(100, 50, m, m, 500), 1e-9, 'X capped at 50 mm/s');
-  close(estimatePlan(long, { ...S, maxSpeedX: 50, machineLimits: 'ignore' }).printTimeSeconds, trapezoid(100, 100, m, m, 500), 1e-9, 'ignored');
-  close(estimatePlan(long, { ...S, maxSpeedY: 50 }).printTimeSeconds, trapezoid(100, 100, m, m, 500), 1e-9, 'a Y limit does not slow an X move');
+  close(
+    estimatePlan(long, { ...S, maxSpeedX: 50, machineLimits: 'ignore' }).printTimeSeconds,
+    trapezoid(100, 100, m, m, 500),
+    1e-9,
+    'ignored',
+  );
+  close(
+    estimatePlan(long, { ...S, maxSpeedY: 50 }).printTimeSeconds,
+    trapezoid(100, 100, m, m, 500),
+    1e-9,
+    'a Y limit does not slow an X move',
+  );
   // a 45° move may go 50/cos 45° when each axis is limited to 50
   const diagonal = plan(layer(0, [line([pt(0, 0), pt(100, 100)], 200)]));
   const v = 50 / Math.SQRT1_2;
-  close(estimatePlan(diagonal, { ...S, maxSpeedX: 50, maxSpeedY: 50 }).printTimeSeconds, trapezoid(100 * Math.SQRT2, v, m, m, 500), 1e-9, 'diagonal');
+  close(
+    estimatePlan(diagonal, { ...S, maxSpeedX: 50, maxSpeedY: 50 }).printTimeSeconds,
+    trapezoid(100 * Math.SQRT2, v, m, m, 500),
+    1e-9,
+    'diagonal',
+  );
   // per-axis acceleration: X at 250 mm/s² halves the acceleration of an X move
-  close(estimatePlan(long, { ...S, maxAccelerationX: 250 }).printTimeSeconds, trapezoid(100, 100, m, m, 250), 1e-9, 'X acceleration');
+  close(
+    estimatePlan(long, { ...S, maxAccelerationX: 250 }).printTimeSeconds,
+    trapezoid(100, 100, m, m, 250),
+    1e-9,
+    'X acceleration',
+  );
   // travels accelerate at travelAcceleration
   const hop = plan(layer(0, [move([pt(0, 0)], false), move([pt(100, 0)], false, 0, 100)]));
-  close(estimatePlan(hop, { ...S, travelAcceleration: 5000 }).printTimeSeconds, trapezoid(100, 100, m, m, 5000), 1e-9, 'travel acceleration');
+  close(
+    estimatePlan(hop, { ...S, travelAcceleration: 5000 }).printTimeSeconds,
+    trapezoid(100, 100, m, m, 5000),
+    1e-9,
+    'travel acceleration',
+  );
   // retractions are capped at maxSpeedE and use retractAcceleration; the 90° junctions E→X→E at the junction
   // deviation's speed with each entering block's acceleration: 8 mm/s into the travel (500), 8√2 into the prime (1000)
   const retract = plan(layer(0, [move([pt(0, 0)], false), move([pt(10, 0)], true)]));
   const r1 = estimatePlan(retract, { ...S, maxSpeedE: 20, retractAcceleration: 1000 }).printTimeSeconds;
   const v2 = 8 * Math.SQRT2;
-  close(r1, trapezoidSeconds(5, m, 20, 8, 1000) + trapezoidSeconds(10, 8, 150, v2, 500) + trapezoidSeconds(5, v2, 20, m, 1000), 1e-9, 'retract and prime');
+  close(
+    r1,
+    trapezoidSeconds(5, m, 20, 8, 1000) + trapezoidSeconds(10, 8, 150, v2, 500) + trapezoidSeconds(5, v2, 20, m, 1000),
+    1e-9,
+    'retract and prime',
+  );
 });
 
-test('an arc is timed like the firmware runs it: 1 mm chords, taken at the circle\'s own speed', () => {
+test("an arc is timed like the firmware runs it: 1 mm chords, taken at the circle's own speed", () => {
   const r = 20;
   const quarter: ExtrudeStep = {
     ...line([pt(r, 0), pt(0, r)], 50),

@@ -101,8 +101,18 @@ export function startGcodeLimits(gcode: string): StartLimits {
 export function marlinLimits(s: EstimateSettings): MarlinLimits {
   const use = s.machineLimits !== 'ignore';
   const or = (v: number | null, fallback: number) => (use && v !== null ? v : fallback);
-  const feed = [or(s.maxSpeedX, Infinity), or(s.maxSpeedY, Infinity), or(s.maxSpeedZ, Infinity), or(s.maxSpeedE, Infinity)];
-  const maxAccel = [or(s.maxAccelerationX, Infinity), or(s.maxAccelerationY, Infinity), or(s.maxAccelerationZ, Infinity), or(s.maxAccelerationE, Infinity)];
+  const feed = [
+    or(s.maxSpeedX, Infinity),
+    or(s.maxSpeedY, Infinity),
+    or(s.maxSpeedZ, Infinity),
+    or(s.maxSpeedE, Infinity),
+  ];
+  const maxAccel = [
+    or(s.maxAccelerationX, Infinity),
+    or(s.maxAccelerationY, Infinity),
+    or(s.maxAccelerationZ, Infinity),
+    or(s.maxAccelerationE, Infinity),
+  ];
   let print = s.acceleration;
   let travel = or(s.travelAcceleration, print);
   let retract = or(s.retractAcceleration, or(s.maxAccelerationE, print));
@@ -135,7 +145,9 @@ export function marlinLimits(s: EstimateSettings): MarlinLimits {
     const set = (v: number | null, i: number, into: number[]) => {
       if (v !== null) into[i] = v;
     };
-    [s.maxAccelerationX, s.maxAccelerationY, s.maxAccelerationZ, s.maxAccelerationE].forEach((v, i) => set(v, i, maxAccel));
+    [s.maxAccelerationX, s.maxAccelerationY, s.maxAccelerationZ, s.maxAccelerationE].forEach((v, i) =>
+      set(v, i, maxAccel),
+    );
     [s.maxSpeedX, s.maxSpeedY, s.maxSpeedZ, s.maxSpeedE].forEach((v, i) => set(v, i, feed));
     print = s.acceleration;
     travel = s.travelAcceleration ?? s.acceleration;
@@ -153,7 +165,12 @@ export function marlinLimits(s: EstimateSettings): MarlinLimits {
   // any jerk given says the firmware has classic jerk: X/Y default to cornerVelocity, Z/E to Marlin's
   const jerk: MarlinLimits['jerk'] =
     jx !== null || jy !== null || jz !== null || je !== null
-      ? [jx ?? jy ?? s.cornerVelocity, jy ?? jx ?? s.cornerVelocity, jz ?? MARLIN_DEFAULT_JERK_Z, je ?? MARLIN_DEFAULT_JERK_E]
+      ? [
+          jx ?? jy ?? s.cornerVelocity,
+          jy ?? jx ?? s.cornerVelocity,
+          jz ?? MARLIN_DEFAULT_JERK_Z,
+          je ?? MARLIN_DEFAULT_JERK_E,
+        ]
       : null;
   return {
     maxFeedrate: [feed[0], feed[1], feed[2], feed[3]],
@@ -250,7 +267,16 @@ class KlipperTimer implements MoveSink {
     this.pz = z;
     this.xy(x, y, length, dz, filament, speed);
   }
-  arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void {
+  arc(
+    x: number,
+    y: number,
+    cx: number,
+    cy: number,
+    clockwise: boolean,
+    length: number,
+    filament: number,
+    speed: number,
+  ): void {
     this.filament += filament;
     const r = hypot(this.px - cx, this.py - cy);
     const segments = Math.max(1, Math.floor(length / ARC_SEGMENT_MM));
@@ -294,7 +320,8 @@ export function segmentSeconds(length: number, v0: number, vc: number, v1: numbe
   const cruise2 = vc * vc;
   const accelDistance = (cruise2 - entry2) / twoA;
   const decelDistance = (cruise2 - exit2) / twoA;
-  if (accelDistance + decelDistance <= length) return (2 * vc - v0 - v1) / accel + (length - accelDistance - decelDistance) / vc;
+  if (accelDistance + decelDistance <= length)
+    return (2 * vc - v0 - v1) / accel + (length - accelDistance - decelDistance) / vc;
   const peak = Math.sqrt(accel * length + (entry2 + exit2) / 2);
   return (2 * peak - v0 - v1) / accel;
 }
@@ -359,7 +386,16 @@ class MarlinTimer implements MoveSink {
     this.pz = z;
     this.xy(x, y, length, dz, filament, speed);
   }
-  arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void {
+  arc(
+    x: number,
+    y: number,
+    cx: number,
+    cy: number,
+    clockwise: boolean,
+    length: number,
+    filament: number,
+    speed: number,
+  ): void {
     this.filament += filament;
     const r = hypot(this.px - cx, this.py - cy);
     const pieces = Math.max(1, Math.ceil(length / ARC_SEGMENT_MM));

@@ -1,6 +1,12 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { extrudeOnlyRatio, KlipperPlanner, klipperJunctionV2, klipperMoveSeconds, type KlipperLimits } from './klipper-planner.js';
+import {
+  extrudeOnlyRatio,
+  KlipperPlanner,
+  klipperJunctionV2,
+  klipperMoveSeconds,
+  type KlipperLimits,
+} from './klipper-planner.js';
 
 const L: KlipperLimits = {
   maxVelocity: 300,
@@ -14,7 +20,8 @@ const L: KlipperLimits = {
   instantCornerVelocity: 1,
 };
 
-const close = (a: number, b: number, eps = 1e-9, what = '') => assert.ok(Math.abs(a - b) <= eps * Math.max(1, Math.abs(b)), `${what} ${a} ≠ ${b}`);
+const close = (a: number, b: number, eps = 1e-9, what = '') =>
+  assert.ok(Math.abs(a - b) <= eps * Math.max(1, Math.abs(b)), `${what} ${a} ≠ ${b}`);
 
 function total(p: KlipperPlanner): number {
   p.flush();
@@ -67,7 +74,7 @@ test('planner: minimum_cruise_ratio lowers the peak of a short move that only ac
   const smoothed = new KlipperPlanner({ ...L, minCruiseRatio: 0.5 });
   smoothed.move(2, 0, 0, 0, 200);
   // without: a triangle to √(3000 · 2) mm/s; with: cruise at the speed the pseudo-acceleration 1500 reaches at mid-move
-  close(total(plain), 2 * Math.sqrt(6000) / 3000);
+  close(total(plain), (2 * Math.sqrt(6000)) / 3000);
   const peak2 = 1500 * 2; // (0 + 2 · 2 · 1500) / 2
   close(total(smoothed), klipperMoveSeconds(2, 3000, 0, peak2, 0));
   assert.ok(total(smoothed) > total(plain));

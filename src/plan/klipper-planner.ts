@@ -58,14 +58,25 @@ export function klipperJunctionV2(
   const rJd = sinHalf / (1 - sinHalf);
   const tanHalf = sinHalf / Math.sqrt(0.5 * (1 + c));
   const jd = (squareCornerVelocity * squareCornerVelocity * (Math.SQRT2 - 1)) / maxAccel;
-  return Math.min(rJd * jd * accel, rJd * jd * prevAccel, 0.5 * moveD * tanHalf * accel, 0.5 * prevMoveD * tanHalf * prevAccel);
+  return Math.min(
+    rJd * jd * accel,
+    rJd * jd * prevAccel,
+    0.5 * moveD * tanHalf * accel,
+    0.5 * prevMoveD * tanHalf * prevAccel,
+  );
 }
 
 /**
  * Time of one planned move (toolhead.py set_junction): accelerate from start_v² to cruise_v², cruise,
  * decelerate to end_v², at `accel`, over `moveD` mm.
  */
-export function klipperMoveSeconds(moveD: number, accel: number, startV2: number, cruiseV2: number, endV2: number): number {
+export function klipperMoveSeconds(
+  moveD: number,
+  accel: number,
+  startV2: number,
+  cruiseV2: number,
+  endV2: number,
+): number {
   const halfInvAccel = 0.5 / accel;
   const accelD = (cruiseV2 - startV2) * halfInvAccel;
   const decelD = (cruiseV2 - endV2) * halfInvAccel;
@@ -176,7 +187,15 @@ export class KlipperPlanner {
         const prevDelta = 2 * this.moveD[p]! * this.accel[p]!;
         const prevSmoothDelta = 2 * this.moveD[p]! * this.smoothAccel[p]!;
         startV2 = Math.min(
-          klipperJunctionV2(cosTheta, moveD, accel, this.moveD[p]!, this.accel[p]!, L.squareCornerVelocity, this.jdAccel),
+          klipperJunctionV2(
+            cosTheta,
+            moveD,
+            accel,
+            this.moveD[p]!,
+            this.accel[p]!,
+            L.squareCornerVelocity,
+            this.jdAccel,
+          ),
           extruderV2,
           cruiseV2,
           this.maxCruiseV2[p]!,

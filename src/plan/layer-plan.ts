@@ -93,7 +93,13 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
     // a layer that starts where the last one ended still retracts on the layer change when asked
     if (forceRetract && cfg.retractionEnabled && cfg.retractionDistance > 0) {
       ctx.window?.add();
-      ctx.steps.push({ kind: 'travel', points: [to], retract: true, zHop: cfg.zHopOnlyOverParts ? 0 : cfg.zHop, speed });
+      ctx.steps.push({
+        kind: 'travel',
+        points: [to],
+        retract: true,
+        zHop: cfg.zHopOnlyOverParts ? 0 : cfg.zHop,
+        speed,
+      });
     }
     return;
   }
@@ -126,8 +132,18 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
     leaves = !(route && route.length === 1);
   }
   const length = pathLength(from, points);
-  let retract = cfg.retractionEnabled && cfg.retractionDistance > 0 && (forceRetract || ((leaves || length > minTravelUm) && length > minTravelUm * 0.25));
-  if (retract && !forceRetract && cfg.supportLimitRetractions && ctx.kind === 'support' && ctx.lastKind === 'support' && points.length === 1) {
+  let retract =
+    cfg.retractionEnabled &&
+    cfg.retractionDistance > 0 &&
+    (forceRetract || ((leaves || length > minTravelUm) && length > minTravelUm * 0.25));
+  if (
+    retract &&
+    !forceRetract &&
+    cfg.supportLimitRetractions &&
+    ctx.kind === 'support' &&
+    ctx.lastKind === 'support' &&
+    points.length === 1
+  ) {
     retract = !(ctx.guard ??= new PartGuard([ctx.islands, ctx.below])).clear(from, to);
   }
   // retractionCountMax: a travel that stays inside skips the retraction once the window is full
@@ -293,7 +309,14 @@ function lineRun(entry: PathEntry, i: number, flip: boolean): Run {
   const z = entry.z?.[i] ?? null;
   const flags = entry.overAir?.[i] ?? null;
   if (!flip) return { points: line, closed: false, width, widths, z, flags };
-  return { points: line.slice().reverse(), closed: false, width, widths: reverseChannel(widths), z: reverseChannel(z), flags: reverseChannel(flags) };
+  return {
+    points: line.slice().reverse(),
+    closed: false,
+    width,
+    widths: reverseChannel(widths),
+    z: reverseChannel(z),
+    flags: reverseChannel(flags),
+  };
 }
 
 /**
@@ -316,13 +339,18 @@ function printLoops(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
   if (loops.length === 1) {
     // one loop (a tree branch's wall, most of a layer's support): no order to find
     const loop = loops[0];
-    const s = mode === 'nearest' ? chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0) : chooseSeam(loop, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo);
+    const s =
+      mode === 'nearest'
+        ? chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0)
+        : chooseSeam(loop, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo);
     printLoop(ctx, entry, style, 0, s);
     ctx.loopNo += 1;
     return;
   }
   // For ordering purposes a loop is entered at its seam (or, for 'nearest', at any vertex: use the first).
-  const seams = loops.map((l, i) => (mode === 'nearest' ? -1 : chooseSeam(l, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo + i)));
+  const seams = loops.map((l, i) =>
+    mode === 'nearest' ? -1 : chooseSeam(l, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo + i),
+  );
   const order = orderNearest(
     loops.length,
     (i) => [seams[i] >= 0 ? loops[i][seams[i]] : loops[i][0]],
@@ -343,8 +371,12 @@ function printLines(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
   if (lines.length === 1) {
     // one line (a tree branch's chord): from its nearer end, the first on a tie
     const line = lines[0];
-    const a = line[0], b = line[line.length - 1];
-    const ax = a.x - ctx.at.x, ay = a.y - ctx.at.y, bx = b.x - ctx.at.x, by = b.y - ctx.at.y;
+    const a = line[0],
+      b = line[line.length - 1];
+    const ax = a.x - ctx.at.x,
+      ay = a.y - ctx.at.y,
+      bx = b.x - ctx.at.x,
+      by = b.y - ctx.at.y;
     extrudeFlagged(ctx, style, lineRun(entry, 0, bx * bx + by * by < ax * ax + ay * ay));
     return;
   }
@@ -360,7 +392,8 @@ function printLines(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
 /** Paths in the order the entry gives them (PathEntry.ordered): lines from their first point, loops from their nearest point. */
 function printInOrder(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
   for (let i = 0; i < entry.paths.length; i++) {
-    if (entry.closed) extrudeFlagged(ctx, style, loopRun(entry, i, chooseSeam(entry.paths[i], 'nearest', ctx.at, 0, 0, 0)));
+    if (entry.closed)
+      extrudeFlagged(ctx, style, loopRun(entry, i, chooseSeam(entry.paths[i], 'nearest', ctx.at, 0, 0, 0)));
     else extrudeFlagged(ctx, style, lineRun(entry, i, false));
   }
 }
@@ -382,7 +415,13 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
   let combed = false;
   // without a retraction on the layer change, a layer that starts over the island the nozzle is already
   // above travels into it as within it (retracting only as such a travel would)
-  if (ctx.layerStart && !ctx.cfg.retractOnLayerChange && group.kind === 'island' && group.area && inArea(ctx.at, group.area)) {
+  if (
+    ctx.layerStart &&
+    !ctx.cfg.retractOnLayerChange &&
+    group.kind === 'island' &&
+    group.area &&
+    inArea(ctx.at, group.area)
+  ) {
     ctx.comb = group;
     combed = true;
   }
@@ -417,7 +456,11 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
 
 /** Skin lines in no fixed order, and the skin's gap fill loops (entered anywhere): printed as one tour. */
 function mixable(entry: PathEntry): boolean {
-  return !entry.ordered && (((entry.role === 'skin' || entry.role === 'infill') && !entry.closed) || (entry.role === 'skin-gap' && entry.closed && entry.style.seam === 'nearest'));
+  return (
+    !entry.ordered &&
+    (((entry.role === 'skin' || entry.role === 'infill') && !entry.closed) ||
+      (entry.role === 'skin-gap' && entry.closed && entry.style.seam === 'nearest'))
+  );
 }
 
 /** Vertices of a loop entered anywhere that the ordering considers (evenly spread; all of a small loop). */
@@ -470,7 +513,8 @@ function inArea(p: Pt, area: ExPolygon): boolean {
 function groupEntries(group: PathGroup, cfg: Config, layer: number): readonly Pt[] {
   const outer = group.boundary?.[0];
   if (outer && outer.length >= 3) {
-    if (cfg.seamPosition === 'aligned' || cfg.seamPosition === 'rear') return [outer[chooseSeam(outer, cfg.seamPosition, outer[0], cfg.randomSeed, layer, 0)]];
+    if (cfg.seamPosition === 'aligned' || cfg.seamPosition === 'rear')
+      return [outer[chooseSeam(outer, cfg.seamPosition, outer[0], cfg.randomSeed, layer, 0)]];
     if (cfg.seamPosition === 'nearest') return spreadPoints(outer, LOOP_ENTRIES);
   }
   return [groupEntry(group)];
@@ -503,7 +547,15 @@ function spiralLoop(layer: LayerPaths): { group: PathGroup; entry: PathEntry } |
   for (const group of layer.groups) {
     for (const entry of group.entries) {
       if (entry.paths.length === 0) continue;
-      if (found || group.kind !== 'island' || entry.role !== 'wall' || !entry.closed || entry.paths.length !== 1 || entry.paths[0].length < 3) return null;
+      if (
+        found ||
+        group.kind !== 'island' ||
+        entry.role !== 'wall' ||
+        !entry.closed ||
+        entry.paths.length !== 1 ||
+        entry.paths[0].length < 3
+      )
+        return null;
       found = { group, entry };
     }
   }
@@ -547,18 +599,47 @@ export function endSpiral(state: PlanState): void {
  * @param first the layer is printed on the bed as a first layer (first-layer speeds and fan, no retraction
  *   on the layer change): the print's first, or in sequential printing each object's first
  */
-export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, position = layer.index, first = position === 0): LayerPlan {
+export function planLayer(
+  layer: LayerPaths,
+  cfg: Config,
+  state: PlanState,
+  position = layer.index,
+  first = position === 0,
+): LayerPlan {
   // the part's islands, here and on the layer below (support travels keep off them)
   const islands: ExPolygon[] = [];
   for (const g of layer.groups) if (g.kind === 'island' && g.area) islands.push(g.area);
   const ctx: Ctx = {
-    cfg, layer, steps: [], at: state.at, first, layerStart: !first, loopNo: 0, comb: null, combArea: undefined, innerArea: undefined,
-    kind: null, lastKind: null, islands, below: state.below ?? [], guard: null, firstStyles: new Map(),
-    printed: [], groupArea: null, leaving: null,
-    window: cfg.retractionCountMax > 0 ? (state.retractions ??= new RetractionWindow(cfg.retractionCountMax, cfg.retractionExtrusionWindow ?? cfg.retractionDistance)) : null,
+    cfg,
+    layer,
+    steps: [],
+    at: state.at,
+    first,
+    layerStart: !first,
+    loopNo: 0,
+    comb: null,
+    combArea: undefined,
+    innerArea: undefined,
+    kind: null,
+    lastKind: null,
+    islands,
+    below: state.below ?? [],
+    guard: null,
+    firstStyles: new Map(),
+    printed: [],
+    groupArea: null,
+    leaving: null,
+    window:
+      cfg.retractionCountMax > 0
+        ? (state.retractions ??= new RetractionWindow(
+            cfg.retractionCountMax,
+            cfg.retractionExtrusionWindow ?? cfg.retractionDistance,
+          ))
+        : null,
   };
   // a spiral vase layer above the model's first, over a layer below it, turns when it is one loop
-  const turn = layer.vase && layer.index > 0 && !first && state.z !== undefined && layer.z > state.z ? spiralLoop(layer) : null;
+  const turn =
+    layer.vase && layer.index > 0 && !first && state.z !== undefined && layer.z > state.z ? spiralLoop(layer) : null;
   const onFromTurn = !!turn && !!state.spiralEnd;
   if (!onFromTurn) endSpiral(state);
   state.spiralEnd = undefined;
@@ -569,7 +650,12 @@ export function planLayer(layer: LayerPaths, cfg: Config, state: PlanState, posi
       const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
       // travels into another group are not combed (printGroup starts each group without a comb area)
       const entries = groups.map((g) => groupEntries(g, cfg, position));
-      const order = orderNearest(groups.length, (i) => entries[i], (i, k) => entries[i][k], ctx.at);
+      const order = orderNearest(
+        groups.length,
+        (i) => entries[i],
+        (i, k) => entries[i][k],
+        ctx.at,
+      );
       for (let k = 0; k < order.length; k++) printGroup(ctx, groups[order[k][0]]);
     }
   }

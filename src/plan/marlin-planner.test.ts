@@ -7,7 +7,15 @@ const close = (actual: number, expected: number, tolerance: number, what: string
   assert.ok(Math.abs(actual - expected) <= tolerance, `${what}: ${actual} vs ${expected}`);
 
 const NONE = [Infinity, Infinity, Infinity, Infinity] as const;
-const JD: MarlinLimits = { maxFeedrate: NONE, maxAccel: NONE, printAccel: 1000, travelAccel: 1000, retractAccel: 1000, jerk: null, junctionDeviation: 0.02 };
+const JD: MarlinLimits = {
+  maxFeedrate: NONE,
+  maxAccel: NONE,
+  printAccel: 1000,
+  travelAccel: 1000,
+  retractAccel: 1000,
+  jerk: null,
+  junctionDeviation: 0.02,
+};
 const JERK: MarlinLimits = { ...JD, jerk: [10, 10, 0.4, 1.5] };
 
 function run(limits: MarlinLimits, moves: Array<[number, number, number, number, number]>): number {
@@ -31,7 +39,15 @@ test('a long straight move: from and to the minimum planner speed, L/v + v/a', (
   close(t, 2 * ((100 - m) / 1000) + (200 - 2 * ramp) / 100, 1e-12, 'straight');
   close(t, 200 / 100 + 100 / 1000, 1e-4, 'about L/v + v/a');
   // split into 1 mm pieces: the same (straight junctions do not slow)
-  close(run(JD, Array.from({ length: 200 }, () => [1, 0, 0, 0, 100] as [number, number, number, number, number])), t, 1e-9, 'pieces');
+  close(
+    run(
+      JD,
+      Array.from({ length: 200 }, () => [1, 0, 0, 0, 100] as [number, number, number, number, number]),
+    ),
+    t,
+    1e-9,
+    'pieces',
+  );
 });
 
 test('classic jerk: a 20 mm square at 100 mm/s, 1000 mm/s², jerk 10 mm/s: every corner at 10 mm/s', () => {
@@ -58,7 +74,8 @@ test('junction deviation: the same square, 90° corners at √(a · jd · (√2 
     [0, -20, 0, 0, 100],
   ]);
   const v = Math.sqrt(1000 * 0.02 * (Math.SQRT2 + 1)); // 6.95 mm/s
-  const up = (100 - v) / 1000, upD = (100 * 100 - v * v) / 2000;
+  const up = (100 - v) / 1000,
+    upD = (100 * 100 - v * v) / 2000;
   const first = (100 - m) / 1000 + (20 - (100 * 100 - m * m) / 2000 - upD) / 100 + up;
   const middle = 2 * up + (20 - 2 * upD) / 100;
   const last = up + (20 - upD - (100 * 100 - m * m) / 2000) / 100 + (100 - m) / 1000;
@@ -86,7 +103,12 @@ test('per-axis limits: feed rate and acceleration of the axes, the extruder incl
   // a retraction: E only, 20 mm/s (M203 E) at the retract acceleration
   close(run(lim, [[0, 0, 0, -5, 45]]), trapezoidSeconds(5, m, 20, m, 1000), 1e-12, 'retraction');
   // classic jerk: a retraction starts at the E jerk
-  close(run({ ...JERK, retractAccel: 1000 }, [[0, 0, 0, -5, 45]]), trapezoidSeconds(5, 1.5, 45, m, 1000), 1e-12, 'E jerk');
+  close(
+    run({ ...JERK, retractAccel: 1000 }, [[0, 0, 0, -5, 45]]),
+    trapezoidSeconds(5, 1.5, 45, m, 1000),
+    1e-12,
+    'E jerk',
+  );
 });
 
 const SETTINGS = {
@@ -123,11 +145,17 @@ test('limits: junction deviation from cornerVelocity, or given; classic jerk whe
   // any jerk given means classic jerk: X and Y from cornerVelocity when not given
   assert.deepEqual(marlinLimits({ ...SETTINGS, jerkE: 2.5 }).jerk, [8, 8, 0.3, 2.5]);
   assert.equal(marlinLimits({ ...SETTINGS, jerkX: 8, machineLimits: 'ignore' }).jerk, null);
-  assert.deepEqual(marlinLimits({ ...SETTINGS, machineLimits: 'ignore' }).maxFeedrate, [Infinity, Infinity, Infinity, Infinity]);
+  assert.deepEqual(marlinLimits({ ...SETTINGS, machineLimits: 'ignore' }).maxFeedrate, [
+    Infinity,
+    Infinity,
+    Infinity,
+    Infinity,
+  ]);
 });
 
-test('limits: the start G-code\'s M201/M203/M204/M205, then what Strata writes after it', () => {
-  const start = 'G28\nM201 X1000 Y1000 Z200 E5000 ; accelerations\nM203 X200 Y200 Z12 E120\nM204 P1250 R1250 T1500\nM205 X8.00 Y8.00 Z0.40 E4.50\nM201 X{machine_max_acceleration_x}\n';
+test("limits: the start G-code's M201/M203/M204/M205, then what Strata writes after it", () => {
+  const start =
+    'G28\nM201 X1000 Y1000 Z200 E5000 ; accelerations\nM203 X200 Y200 Z12 E120\nM204 P1250 R1250 T1500\nM205 X8.00 Y8.00 Z0.40 E4.50\nM201 X{machine_max_acceleration_x}\n';
   const g = startGcodeLimits(start);
   assert.deepEqual(g.M201, { X: 1000, Y: 1000, Z: 200, E: 5000 });
   assert.deepEqual(g.M204, { P: 1250, R: 1250, T: 1500 });
@@ -143,7 +171,10 @@ test('limits: the start G-code\'s M201/M203/M204/M205, then what Strata writes a
   const w = marlinLimits({ ...SETTINGS, startGcode: start, machineLimits: 'write', maxAccelerationX: 3000 });
   assert.deepEqual(w.maxAccel, [3000, 1000, 200, 5000]);
   assert.deepEqual(w.jerk, [8, 8, 0.4, 4.5]);
-  assert.deepEqual(marlinLimits({ ...SETTINGS, startGcode: start, machineLimits: 'write', jerkX: 10 }).jerk, [10, 10, 0.4, 4.5]);
+  assert.deepEqual(
+    marlinLimits({ ...SETTINGS, startGcode: start, machineLimits: 'write', jerkX: 10 }).jerk,
+    [10, 10, 0.4, 4.5],
+  );
   // written with no jerk set (M205 X Y = cornerVelocity): still junction deviation
   assert.equal(marlinLimits({ ...SETTINGS, machineLimits: 'write' }).jerk, null);
   // M205 J: junction deviation; RepRap: M203 and M566 in mm/min

@@ -199,7 +199,10 @@ export class MarlinPlanner {
   #plan(): void {
     const n = this.#length.length;
     if (n === 0) return;
-    const len = this.#length, nom = this.#nominal, acc = this.#accel, maxE = this.#maxEntry2;
+    const len = this.#length,
+      nom = this.#nominal,
+      acc = this.#accel,
+      maxE = this.#maxEntry2;
     const entry = new Float64Array(n);
     // reverse: each entry at most what brakes to the next one
     let next2 = MIN_SPEED2;

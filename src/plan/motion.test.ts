@@ -19,7 +19,16 @@ function settings(overrides: Partial<Settings> = {}): Settings {
 }
 
 const pt = (xMm: number, yMm: number): Pt => ({ x: Math.round(xMm * 1000), y: Math.round(yMm * 1000) });
-const line = (points: Pt[], closed = false): ExtrudeStep => ({ kind: 'extrude', feature: 'WALL-OUTER', points, closed, width: 0.4, height: 0.2, speed: 40, flow: 1 });
+const line = (points: Pt[], closed = false): ExtrudeStep => ({
+  kind: 'extrude',
+  feature: 'WALL-OUTER',
+  points,
+  closed,
+  width: 0.4,
+  height: 0.2,
+  speed: 40,
+  flow: 1,
+});
 
 function plan(steps: PlanStep[]): PrintPlan {
   return {
@@ -61,7 +70,8 @@ function record(p: PrintPlan, s: Settings): Move[] {
   return moves;
 }
 
-const sum = (moves: Move[], kind: string, key: 'filament' | 'length') => moves.filter((m) => m.kind === kind).reduce((a, m) => a + m[key]!, 0);
+const sum = (moves: Move[], kind: string, key: 'filament' | 'length') =>
+  moves.filter((m) => m.kind === kind).reduce((a, m) => a + m[key]!, 0);
 const near = (a: number, b: number, eps = 1e-9) => assert.ok(Math.abs(a - b) <= eps, `${a} ≉ ${b}`);
 
 test('wipe: back along the path just printed, for wipeDistance, retracting the rest of the retraction on the way', () => {
@@ -93,10 +103,20 @@ test('wipe: round the corner of the path, and a path shorter than the wipe retra
   const s = settings({ wipeDistance: 14, retractionDistance: 4 });
   const moves = record(lPlan(), s);
   const wipes = moves.filter((m) => m.kind === 'wipe');
-  assert.deepEqual(wipes.map((w) => [w.x, w.y]), [[20000, 10000], [16000, 10000]]);
+  assert.deepEqual(
+    wipes.map((w) => [w.x, w.y]),
+    [
+      [20000, 10000],
+      [16000, 10000],
+    ],
+  );
   near(sum(moves, 'wipe', 'filament'), 4);
   // the L is 20 mm: all 14 mm wiped. A 5 mm line can only wipe 5: 5/14 of the retraction on the way, the rest after
-  const short = plan([line([pt(10, 10), pt(15, 10)]), { kind: 'travel', points: [pt(40, 40)], retract: true, zHop: 0, speed: 150 }, line([pt(40, 40), pt(45, 40)])]);
+  const short = plan([
+    line([pt(10, 10), pt(15, 10)]),
+    { kind: 'travel', points: [pt(40, 40)], retract: true, zHop: 0, speed: 150 },
+    line([pt(40, 40), pt(45, 40)]),
+  ]);
   const m2 = record(short, s);
   near(sum(m2, 'wipe', 'length'), 5);
   near(sum(m2, 'wipe', 'filament'), (4 * 5) / 14);
@@ -140,7 +160,11 @@ test('coasting: the last coastingVolume / (width × height) mm of an extrusion b
 });
 
 test('coasting keeps off paths shorter than twice the coasted length or under coastingMinVolume', () => {
-  const shortPlan = () => plan([line([pt(10, 10), pt(10.8, 10)]), { kind: 'travel', points: [pt(40, 40)], retract: true, zHop: 0, speed: 150 }]);
+  const shortPlan = () =>
+    plan([
+      line([pt(10, 10), pt(10.8, 10)]),
+      { kind: 'travel', points: [pt(40, 40)], retract: true, zHop: 0, speed: 150 },
+    ]);
   // 0.5 mm coast on a 0.8 mm line: would leave less than half
   const m1 = record(shortPlan(), settings({ coastingVolume: 0.04, coastingMinVolume: 0 }));
   assert.equal(m1.filter((m) => m.kind === 'extrude').length, 1);
@@ -149,12 +173,22 @@ test('coasting keeps off paths shorter than twice the coasted length or under co
   const m2 = record(lPlan(), settings({ coastingVolume: 0.04, coastingMinVolume: 2 }));
   assert.ok(!m2.some((m) => m.kind === 'travel' && m.length! < 1));
   // no coasting before a travel that does not retract
-  const noRetract = plan([line([pt(10, 10), pt(20, 10)]), { kind: 'travel', points: [pt(40, 40)], retract: false, zHop: 0, speed: 150 }]);
-  assert.ok(!record(noRetract, settings({ coastingVolume: 0.04, coastingMinVolume: 0 })).some((m) => m.kind === 'travel' && m.length! < 1));
+  const noRetract = plan([
+    line([pt(10, 10), pt(20, 10)]),
+    { kind: 'travel', points: [pt(40, 40)], retract: false, zHop: 0, speed: 150 },
+  ]);
+  assert.ok(
+    !record(noRetract, settings({ coastingVolume: 0.04, coastingMinVolume: 0 })).some(
+      (m) => m.kind === 'travel' && m.length! < 1,
+    ),
+  );
 });
 
 test('coasting on a closed loop ends at its start point', () => {
-  const loop = plan([line([pt(10, 10), pt(20, 10), pt(20, 20), pt(10, 20)], true), { kind: 'travel', points: [pt(40, 40)], retract: true, zHop: 0, speed: 150 }]);
+  const loop = plan([
+    line([pt(10, 10), pt(20, 10), pt(20, 20), pt(10, 20)], true),
+    { kind: 'travel', points: [pt(40, 40)], retract: true, zHop: 0, speed: 150 },
+  ]);
   const moves = record(loop, settings({ coastingVolume: 0.08, coastingMinVolume: 0 }));
   const k = moves.findIndex((m) => m.kind === 'retract');
   assert.deepEqual([moves[k - 1]!.x, moves[k - 1]!.y], [10000, 10000]);
@@ -169,30 +203,61 @@ test('z-hop moves Z at zHopSpeed (capped at maxSpeedZ); unset, at the standalone
   assert.ok(hops(settings()).some((l) => l.includes('F300')));
   const fast = hops(settings({ zHopSpeed: 12 }));
   assert.ok(fast.length >= 2);
-  const gcode = gcodeToString(lPlan(0.4), settings({ zHopSpeed: 12 }), estimatePlan(lPlan(0.4), settings({ zHopSpeed: 12 })), { generator: 'test' });
+  const gcode = gcodeToString(
+    lPlan(0.4),
+    settings({ zHopSpeed: 12 }),
+    estimatePlan(lPlan(0.4), settings({ zHopSpeed: 12 })),
+    { generator: 'test' },
+  );
   assert.match(gcode, /G0 F720 Z0\.6\n/);
-  const capped = gcodeToString(lPlan(0.4), settings({ zHopSpeed: 12, maxSpeedZ: 8 }), estimatePlan(lPlan(0.4), settings({ zHopSpeed: 12, maxSpeedZ: 8 })), { generator: 'test' });
+  const capped = gcodeToString(
+    lPlan(0.4),
+    settings({ zHopSpeed: 12, maxSpeedZ: 8 }),
+    estimatePlan(lPlan(0.4), settings({ zHopSpeed: 12, maxSpeedZ: 8 })),
+    { generator: 'test' },
+  );
   assert.match(capped, /G0 F480 Z0\.6\n/);
   // a faster hop takes less time
-  near(estimatePlan(lPlan(0.4), settings()).printTimeSeconds > estimatePlan(lPlan(0.4), settings({ zHopSpeed: 12 })).printTimeSeconds ? 1 : 0, 1);
+  near(
+    estimatePlan(lPlan(0.4), settings()).printTimeSeconds >
+      estimatePlan(lPlan(0.4), settings({ zHopSpeed: 12 })).printTimeSeconds
+      ? 1
+      : 0,
+    1,
+  );
 });
 
 test('wipe and coasting: the G-code parses back balanced (Marlin and Klipper, absolute and relative E) and the estimate counts the moves', () => {
   for (const gcodeFlavor of ['marlin', 'klipper'] as const) {
     for (const extruderMode of ['absolute', 'relative'] as const) {
-      const s = settings({ gcodeFlavor, extruderMode, wipeDistance: 2, retractBeforeWipe: 20, coastingVolume: 0.04, coastingMinVolume: 0, zHop: 0.4 });
+      const s = settings({
+        gcodeFlavor,
+        extruderMode,
+        wipeDistance: 2,
+        retractBeforeWipe: 20,
+        coastingVolume: 0.04,
+        coastingMinVolume: 0,
+        zHop: 0.4,
+      });
       const p = lPlan(0.4);
       const est = estimatePlan(p, s);
       const parsed = parseGcode(gcodeToString(p, s, est, { generator: 'test' }));
       assert.equal(parsed.balance.unbalanced, 0, `${gcodeFlavor} ${extruderMode}`);
       // the end G-code's retraction is left pending: everything before it was primed
-      assert.equal(parsed.balance.retractions, 2, 'the retraction spread over the wipe counts once (and the end G-code one)');
+      assert.equal(
+        parsed.balance.retractions,
+        2,
+        'the retraction spread over the wipe counts once (and the end G-code one)',
+      );
       near(parsed.e.retracted - parsed.balance.trailingMm, 5, 2e-5);
       near(parsed.e.primed, 5, 2e-5);
       const plain = estimatePlan(p, settings({ gcodeFlavor, extruderMode, zHop: 0.4 }));
       // the wipe is timed: more or less than the plain retraction (Marlin's planner runs the wipe on from the
       // extrusion through a junction, where a retraction on the spot stops the head first)
-      assert.ok(Math.abs(est.printTimeSeconds - plain.printTimeSeconds) > 0.005, `the wipe is timed (${est.printTimeSeconds} against ${plain.printTimeSeconds} s)`);
+      assert.ok(
+        Math.abs(est.printTimeSeconds - plain.printTimeSeconds) > 0.005,
+        `the wipe is timed (${est.printTimeSeconds} against ${plain.printTimeSeconds} s)`,
+      );
       assert.ok(Math.abs(est.printTimeSeconds - plain.printTimeSeconds) < 1, 'a little');
       near(plain.filamentMm - est.filamentMm, 0.04 / (Math.PI * 0.875 * 0.875), 1e-9);
     }

@@ -102,7 +102,16 @@ export interface MoveSink {
   /** An extrusion that also moves Z (to `z`, mm), for steps with a Z per point. */
   extrudeZ(x: number, y: number, z: number, length: number, filament: number, speed: number): void;
   /** An extrusion along a circular arc around (cx, cy) µm to (x, y); `length` is the arc's, mm. */
-  arc(x: number, y: number, cx: number, cy: number, clockwise: boolean, length: number, filament: number, speed: number): void;
+  arc(
+    x: number,
+    y: number,
+    cx: number,
+    cy: number,
+    clockwise: boolean,
+    length: number,
+    filament: number,
+    speed: number,
+  ): void;
   retract(filament: number, speed: number): void;
   /**
    * A wipe move to (x, y) µm, `length` mm, retracting `filament` mm on the way (0 with firmware
@@ -120,7 +129,15 @@ export interface MoveSink {
  * Length (mm) of the arc from (x0, y0) to (x1, y1) around (cx, cy), all µm, turning `clockwise` or not:
  * the start radius times the swept angle, which lies in (0, 2π).
  */
-export function arcLengthMm(x0: number, y0: number, x1: number, y1: number, cx: number, cy: number, clockwise: boolean): number {
+export function arcLengthMm(
+  x0: number,
+  y0: number,
+  x1: number,
+  y1: number,
+  cx: number,
+  cy: number,
+  clockwise: boolean,
+): number {
   const a0 = Math.atan2(y0 - cy, x0 - cx);
   const a1 = Math.atan2(y1 - cy, x1 - cx);
   let sweep = clockwise ? a0 - a1 : a1 - a0;
@@ -135,7 +152,11 @@ export function filamentArea(filamentDiameter: number): number {
 }
 
 /** Millimetres of filament per millimetre of an extrusion path `width` mm wide (rectangular cross-section). */
-export function filamentPerMm(step: ExtrudeStep, s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>, width = step.width): number {
+export function filamentPerMm(
+  step: ExtrudeStep,
+  s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>,
+  width = step.width,
+): number {
   return ((width * step.height) / filamentArea(s.filamentDiameter)) * step.flow * (s.flowRate / 100);
 }
 
@@ -144,7 +165,14 @@ export function filamentPerMm(step: ExtrudeStep, s: Pick<MoveSettings, 'filament
  * point, for the mean of its two end widths (the firmware spreads a segment's E evenly, so it is laid at one
  * width); else for the step's width.
  */
-export function segmentFilament(step: ExtrudeStep, s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>, perMm: number, a: number, b: number, length: number): number {
+export function segmentFilament(
+  step: ExtrudeStep,
+  s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>,
+  perMm: number,
+  a: number,
+  b: number,
+  length: number,
+): number {
   const widths = step.widths;
   if (!widths) return length * perMm;
   return length * filamentPerMm(step, s, (widths[a]! + widths[b]!) / 2);
@@ -230,9 +258,14 @@ export function* walkPlanSteps(plan: PrintPlan, s: MoveSettings, sink: MoveSink)
     s,
     sink,
     retractDistance,
-    primeDistance: !s.retractionEnabled ? 0 : s.firmwareRetraction ? s.retractionDistance : s.retractionDistance + s.retractionExtraPrime,
+    primeDistance: !s.retractionEnabled
+      ? 0
+      : s.firmwareRetraction
+        ? s.retractionDistance
+        : s.retractionDistance + s.retractionExtraPrime,
     zSpeed,
-    hopSpeed: s.zHopSpeed === null ? zSpeed : s.maxSpeedZ !== null && s.maxSpeedZ < s.zHopSpeed ? s.maxSpeedZ : s.zHopSpeed,
+    hopSpeed:
+      s.zHopSpeed === null ? zSpeed : s.maxSpeedZ !== null && s.maxSpeedZ < s.zHopSpeed ? s.maxSpeedZ : s.zHopSpeed,
     pos: { x: 0, y: 0, z: NaN, known: false },
     open: NO_OBJECT,
     wipe: retractDistance > 0 && s.wipeDistance > 0,
@@ -252,14 +285,30 @@ function retractsNext(w: Walk, li: number, si: number): boolean {
 }
 
 /** Point (µm) at `distance` mm along the arc from (x, y) around (cx, cy) in its direction. */
-function alongArc(x: number, y: number, cx: number, cy: number, clockwise: boolean, distance: number): [number, number] {
+function alongArc(
+  x: number,
+  y: number,
+  cx: number,
+  cy: number,
+  clockwise: boolean,
+  distance: number,
+): [number, number] {
   const r = hypot(x - cx, y - cy);
   const a = Math.atan2(y - cy, x - cx) + ((clockwise ? -1 : 1) * distance * 1000) / r;
   return [cx + r * Math.cos(a), cy + r * Math.sin(a)];
 }
 
 /** Points (µm) every ARC_CHORD_MM or less along an arc of `length` mm from (x, y), after the start, up to (ex, ey) exactly. */
-function arcChords(x: number, y: number, ex: number, ey: number, cx: number, cy: number, clockwise: boolean, length: number): number[] {
+function arcChords(
+  x: number,
+  y: number,
+  ex: number,
+  ey: number,
+  cx: number,
+  cy: number,
+  clockwise: boolean,
+  length: number,
+): number[] {
   const pieces = Math.max(1, Math.ceil(length / ARC_CHORD_MM));
   const out: number[] = [];
   for (let k = 1; k < pieces; k++) out.push(...alongArc(x, y, cx, cy, clockwise, (length * k) / pieces));
@@ -478,7 +527,9 @@ function walkCoasted(w: Walk, step: ExtrudeStep, perMm: number, speed: number, l
     const dy = p.y - y;
     if (dx === 0 && dy === 0) continue;
     const arc = arcs?.[i];
-    const length = arc ? arcLengthMm(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise) : Math.sqrt(dx * dx + dy * dy) / 1000;
+    const length = arc
+      ? arcLengthMm(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise)
+      : Math.sqrt(dx * dx + dy * dy) / 1000;
     const filament = segmentFilament(step, s, perMm, i - 1, k, length);
     const start = done;
     done += length;
@@ -510,7 +561,8 @@ function walkCoasted(w: Walk, step: ExtrudeStep, perMm: number, speed: number, l
       }
       const rest = length - extruded;
       const chords = arcChords(x, y, p.x, p.y, arc.cx, arc.cy, arc.clockwise, rest);
-      for (let c = 0; c < chords.length; c += 2) coastTo(chords[c]!, chords[c + 1]!, hypot(chords[c]! - x, chords[c + 1]! - y) / 1000);
+      for (let c = 0; c < chords.length; c += 2)
+        coastTo(chords[c]!, chords[c + 1]!, hypot(chords[c]! - x, chords[c + 1]! - y) / 1000);
       continue;
     }
     if (extruded > 0) {

@@ -9,7 +9,8 @@ import type { Config } from '../settings/resolve.js';
 export function sortEntries(entries: readonly PathEntry[], wallOrder: Config['wallOrder']): PathEntry[] {
   if (entries.length < 2) return entries.slice();
   const wallKey = (e: PathEntry) => (e.wall ?? 0) * (wallOrder === 'inner-first' ? -1 : 1);
-  const before = (a: PathEntry, b: PathEntry) => a.style.rank - b.style.rank || (a.role === 'wall' && b.role === 'wall' ? wallKey(a) - wallKey(b) : 0);
+  const before = (a: PathEntry, b: PathEntry) =>
+    a.style.rank - b.style.rank || (a.role === 'wall' && b.role === 'wall' ? wallKey(a) - wallKey(b) : 0);
   // most groups come in print order already (a tree branch's wall, then its line): the stable sort would keep them
   let sorted = true;
   for (let i = 1; i < entries.length && sorted; i++) sorted = before(entries[i - 1], entries[i]) <= 0;

@@ -11,22 +11,36 @@ const STYLE: ScarfStyle = { length: 20, startHeight: 0.1, steps: 10, conditional
 /** A counter-clockwise square `side` mm wide from (0, 0), corners only, optionally starting mid-way along its first side. */
 function square(side: number, midStart = false): Pt[] {
   const s = side * 1000;
-  const corners = [{ x: 0, y: 0 }, { x: s, y: 0 }, { x: s, y: s }, { x: 0, y: s }];
+  const corners = [
+    { x: 0, y: 0 },
+    { x: s, y: 0 },
+    { x: s, y: s },
+    { x: 0, y: s },
+  ];
   return midStart ? [{ x: s / 2, y: 0 }, corners[1], corners[2], corners[3], corners[0]] : corners;
 }
 
-const loopOf = (points: Pt[], extra: Partial<ScarfLoop> = {}): ScarfLoop => ({ points, width: W, widths: null, z: null, flags: null, ...extra });
+const loopOf = (points: Pt[], extra: Partial<ScarfLoop> = {}): ScarfLoop => ({
+  points,
+  width: W,
+  widths: null,
+  z: null,
+  flags: null,
+  ...extra,
+});
 
 /** Length of a run's path, mm. */
 function runLength(run: ScarfRun): number {
   let l = 0;
-  for (let i = 1; i < run.points.length; i++) l += Math.hypot(run.points[i].x - run.points[i - 1].x, run.points[i].y - run.points[i - 1].y);
+  for (let i = 1; i < run.points.length; i++)
+    l += Math.hypot(run.points[i].x - run.points[i - 1].x, run.points[i].y - run.points[i - 1].y);
   return l / 1000;
 }
 /** Distance of each point from the run's start along it, mm. */
 function along(run: ScarfRun): number[] {
   const d = [0];
-  for (let i = 1; i < run.points.length; i++) d.push(d[i - 1] + Math.hypot(run.points[i].x - run.points[i - 1].x, run.points[i].y - run.points[i - 1].y) / 1000);
+  for (let i = 1; i < run.points.length; i++)
+    d.push(d[i - 1] + Math.hypot(run.points[i].x - run.points[i - 1].x, run.points[i].y - run.points[i - 1].y) / 1000);
   return d;
 }
 
@@ -36,7 +50,8 @@ test('a loop starts on a ramp of the scarf length: Z and flow rise together from
   const [ramp, rest, wipe] = runs;
   assert.ok(Math.abs(runLength(ramp) - 20) < 0.01, `ramp ${runLength(ramp)} mm`);
   assert.ok(ramp.points.length - 1 >= STYLE.steps);
-  const z = ramp.z!, w = ramp.widths!;
+  const z = ramp.z!,
+    w = ramp.widths!;
   assert.ok(Math.abs(z[0] - -(1 - 0.1) * H) < 1e-9, `starts 10 % of the layer above the layer below: ${z[0]}`);
   assert.equal(z[z.length - 1], 0, "ends at the layer's Z");
   const d = along(ramp);
@@ -53,7 +68,8 @@ test('a loop starts on a ramp of the scarf length: Z and flow rise together from
   assert.ok(Math.abs(runLength(ramp) + runLength(rest) - 160) < 0.01, 'ramp and rest are the loop');
   assert.equal(wipe.z, null, "the end runs over the ramp at the layer's Z");
   assert.deepEqual(wipe.points, ramp.points);
-  for (let j = 0; j < w.length; j++) assert.ok(Math.abs(w[j] + wipe.widths![j] - W) < 1e-9, 'ramp and end lay one bead between them');
+  for (let j = 0; j < w.length; j++)
+    assert.ok(Math.abs(w[j] + wipe.widths![j] - W) < 1e-9, 'ramp and end lay one bead between them');
   assert.equal(wipe.widths![wipe.widths!.length - 1], 0, 'the flow shrinks to nothing');
 });
 
@@ -69,11 +85,41 @@ test('a ramp keeps the corners it passes, and one ending on a corner leaves the 
   // a 10 mm square: the ramp of 15 mm turns its first corner at 10 mm
   const runs = scarfRuns(loopOf(square(10)), { ...STYLE, length: 15, steps: 3 }, H)!;
   const [ramp, rest] = runs;
-  assert.deepEqual(ramp.points.map((p) => [p.x, p.y]), [[0, 0], [5000, 0], [10000, 0], [10000, 5000]]);
-  assert.deepEqual(rest.points.map((p) => [p.x, p.y]), [[10000, 5000], [10000, 10000], [0, 10000], [0, 0]]);
+  assert.deepEqual(
+    ramp.points.map((p) => [p.x, p.y]),
+    [
+      [0, 0],
+      [5000, 0],
+      [10000, 0],
+      [10000, 5000],
+    ],
+  );
+  assert.deepEqual(
+    rest.points.map((p) => [p.x, p.y]),
+    [
+      [10000, 5000],
+      [10000, 10000],
+      [0, 10000],
+      [0, 0],
+    ],
+  );
   const ends = scarfRuns(loopOf(square(10)), { ...STYLE, length: 20, steps: 2 }, H)!;
-  assert.deepEqual(ends[0].points.map((p) => [p.x, p.y]), [[0, 0], [10000, 0], [10000, 10000]]);
-  assert.deepEqual(ends[1].points.map((p) => [p.x, p.y]), [[10000, 10000], [0, 10000], [0, 0]]);
+  assert.deepEqual(
+    ends[0].points.map((p) => [p.x, p.y]),
+    [
+      [0, 0],
+      [10000, 0],
+      [10000, 10000],
+    ],
+  );
+  assert.deepEqual(
+    ends[1].points.map((p) => [p.x, p.y]),
+    [
+      [10000, 10000],
+      [0, 10000],
+      [0, 0],
+    ],
+  );
   // a ramp as long as the loop: the ramp and the end only
   const whole = scarfRuns(loopOf(square(10)), { ...STYLE, length: 40, steps: 4 }, H)!;
   assert.equal(whole.length, 2);
@@ -90,7 +136,10 @@ test('conditional: no scarf where the seam is in a sharp corner, a scarf where i
   assert.equal(scarfRuns(loopOf(square(40)), conditional, H), null);
   assert.notEqual(scarfRuns(loopOf(square(40, true)), conditional, H), null);
   // a 64-gon turns 5.6° a corner: smooth
-  const circle = Array.from({ length: 64 }, (_, i) => ({ x: Math.round(10000 * Math.cos((i * Math.PI) / 32)), y: Math.round(10000 * Math.sin((i * Math.PI) / 32)) }));
+  const circle = Array.from({ length: 64 }, (_, i) => ({
+    x: Math.round(10000 * Math.cos((i * Math.PI) / 32)),
+    y: Math.round(10000 * Math.sin((i * Math.PI) / 32)),
+  }));
   assert.notEqual(scarfRuns(loopOf(circle), conditional, H), null);
 });
 
@@ -100,12 +149,28 @@ test('widths and over-air flags of the loop carry over to the ramp, the rest and
   const flags = Uint8Array.from([0, 1, 0, 0, 0]);
   const [ramp, rest, wipe] = scarfRuns(loopOf(points, { widths, flags }), { ...STYLE, length: 10, steps: 2 }, H)!;
   // ramp: (5,0) → (10,0) corner → (10,5) end, the first segment on edge 0, the second on edge 1 (over air)
-  assert.deepEqual(ramp.points.map((p) => [p.x, p.y]), [[5000, 0], [10000, 0], [10000, 5000]]);
+  assert.deepEqual(
+    ramp.points.map((p) => [p.x, p.y]),
+    [
+      [5000, 0],
+      [10000, 0],
+      [10000, 5000],
+    ],
+  );
   assert.deepEqual([...ramp.flags!], [0, 1]);
   assert.deepEqual([...wipe.flags!], [0, 1]);
   assert.ok(Math.abs(ramp.widths![1] - 0.6 * (0.1 + 0.9 * 0.5)) < 1e-9, 'the corner: its own width times the share');
   assert.ok(Math.abs(ramp.widths![2] - 0.6) < 1e-9, 'half-way along edge 1, whose ends are both 0.6 wide');
-  assert.deepEqual(rest.points.map((p) => [p.x, p.y]), [[10000, 5000], [10000, 10000], [0, 10000], [0, 0], [5000, 0]]);
+  assert.deepEqual(
+    rest.points.map((p) => [p.x, p.y]),
+    [
+      [10000, 5000],
+      [10000, 10000],
+      [0, 10000],
+      [0, 0],
+      [5000, 0],
+    ],
+  );
   assert.deepEqual([...rest.widths!], [0.6, 0.6, 0.4, 0.4, 0.4]);
   assert.deepEqual([...rest.flags!], [1, 0, 0, 0]);
 });

@@ -66,7 +66,8 @@ export function scarfRuns(loop: ScarfLoop, scarf: ScarfStyle, layerHeight: numbe
   const edges = new Float64Array(n);
   let total = 0;
   for (let k = 0; k < n; k++) {
-    const a = pts[k], b = pts[k + 1 === n ? 0 : k + 1];
+    const a = pts[k],
+      b = pts[k + 1 === n ? 0 : k + 1];
     total += edges[k] = hypot(b.x - a.x, b.y - a.y);
   }
   const length = scarf.length * UM_PER_MM;
@@ -88,7 +89,8 @@ export function scarfRuns(loop: ScarfLoop, scarf: ScarfStyle, layerHeight: numbe
   /** Where the ramp ends: inside edge `k` (at the last ramp point), or on the loop's corner `endCorner`. */
   let endCorner = -1;
   for (;;) {
-    const a = pts[k], b = pts[k + 1 === n ? 0 : k + 1];
+    const a = pts[k],
+      b = pts[k + 1 === n ? 0 : k + 1];
     const end = along + edges[k];
     while (cut <= steps && cutAt(cut) < end - SAME_POINT_UM) {
       const t = (cutAt(cut) - along) / edges[k];
@@ -130,7 +132,9 @@ export function scarfRuns(loop: ScarfLoop, scarf: ScarfStyle, layerHeight: numbe
     rampFlags = new Uint8Array(r - 1);
     for (let j = 0; j + 1 < r; j++) rampFlags[j] = loop.flags[onEdge[j]];
   }
-  const runs: ScarfRun[] = [{ points: ramp, closed: false, width: loop.width, widths: rampWidths, z: rampZ, flags: rampFlags }];
+  const runs: ScarfRun[] = [
+    { points: ramp, closed: false, width: loop.width, widths: rampWidths, z: rampZ, flags: rampFlags },
+  ];
 
   // the rest of the loop, from the ramp's end back to the seam
   if (endCorner !== 0) {
@@ -172,7 +176,10 @@ export function turnAtStart(pts: readonly Pt[], edges: Float64Array, arm: number
   const after = pointAlong(pts, edges, reach, 1);
   const before = pointAlong(pts, edges, reach, -1);
   const p = pts[0];
-  const ux = p.x - before.x, uy = p.y - before.y, vx = after.x - p.x, vy = after.y - p.y;
+  const ux = p.x - before.x,
+    uy = p.y - before.y,
+    vx = after.x - p.x,
+    vy = after.y - p.y;
   return Math.abs(Math.atan2(ux * vy - uy * vx, ux * vx + uy * vy));
 }
 

@@ -3,8 +3,17 @@ import assert from 'node:assert/strict';
 import { chooseSeam } from './seam.js';
 import type { Polygon } from '../geometry/types.js';
 
-const circle = (n: number, r: number): Polygon => Array.from({ length: n }, (_, i) => ({ x: Math.round(r * Math.cos((2 * Math.PI * i) / n)), y: Math.round(r * Math.sin((2 * Math.PI * i) / n)) }));
-const square: Polygon = [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 10000, y: 10000 }, { x: 0, y: 10000 }];
+const circle = (n: number, r: number): Polygon =>
+  Array.from({ length: n }, (_, i) => ({
+    x: Math.round(r * Math.cos((2 * Math.PI * i) / n)),
+    y: Math.round(r * Math.sin((2 * Math.PI * i) / n)),
+  }));
+const square: Polygon = [
+  { x: 0, y: 0 },
+  { x: 10000, y: 0 },
+  { x: 10000, y: 10000 },
+  { x: 0, y: 10000 },
+];
 
 test('rear seam is the vertex with the largest Y', () => {
   const c = circle(72, 10000);

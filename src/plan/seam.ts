@@ -18,7 +18,8 @@ export function hash01(a: number, b: number, c: number): number {
 function rearmost(loop: Polygon): number {
   let best = 0;
   for (let i = 1; i < loop.length; i++) {
-    const p = loop[i], q = loop[best];
+    const p = loop[i],
+      q = loop[best];
     if (p.y > q.y || (p.y === q.y && p.x < q.x)) best = i;
   }
   return best;
@@ -40,14 +41,21 @@ function nearest(loop: Polygon, at: Pt): number {
 /** Turn at vertex i in radians: positive = left (convex for a CCW outer ring), negative = right. */
 function turn(loop: Polygon, i: number): number {
   const n = loop.length;
-  const a = loop[(i - 1 + n) % n], b = loop[i], c = loop[(i + 1) % n];
-  const ux = b.x - a.x, uy = b.y - a.y, vx = c.x - b.x, vy = c.y - b.y;
+  const a = loop[(i - 1 + n) % n],
+    b = loop[i],
+    c = loop[(i + 1) % n];
+  const ux = b.x - a.x,
+    uy = b.y - a.y,
+    vx = c.x - b.x,
+    vy = c.y - b.y;
   return Math.atan2(ux * vy - uy * vx, ux * vx + uy * vy);
 }
 
 /** Sharpest-corner seam: among corners turning more than 40°, the one nearest the loop's rear; else the rearmost vertex. */
 function aligned(loop: Polygon): number {
-  let maxY = -Infinity, minX = Infinity, maxX = -Infinity;
+  let maxY = -Infinity,
+    minX = Infinity,
+    maxX = -Infinity;
   for (const p of loop) {
     if (p.y > maxY) maxY = p.y;
     if (p.x < minX) minX = p.x;

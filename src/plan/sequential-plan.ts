@@ -47,7 +47,8 @@ function ownerOf(group: PathGroup, hulls: SequentialInput['hulls']): number {
   // support: the object whose footprint it stands in, or the nearest
   const p = group.area?.outer[0] ?? firstPoint(group);
   if (!p) return SHARED;
-  let best = 0, bestD = Infinity;
+  let best = 0,
+    bestD = Infinity;
   for (let k = 0; k < hulls.length; k++) {
     const d = pointHullDistance([p.x / UM_PER_MM, p.y / UM_PER_MM], hulls[k]);
     if (d < bestD) (bestD = d), (best = k);
@@ -69,7 +70,9 @@ export function planSequential(input: SequentialInput, cfg: Config): LayerPlan[]
     let own = 0;
     for (let li = 0; li < paths.length; li++) {
       const lp = paths[li];
-      const groups = lp.groups.filter((g, gi) => hasPaths(g) && (owners[li][gi] === object || (k === 0 && owners[li][gi] === SHARED)));
+      const groups = lp.groups.filter(
+        (g, gi) => hasPaths(g) && (owners[li][gi] === object || (k === 0 && owners[li][gi] === SHARED)),
+      );
       if (groups.length === 0) continue;
       const first = own === 0;
       if (first) state.below = undefined;
@@ -85,7 +88,15 @@ export function planSequential(input: SequentialInput, cfg: Config): LayerPlan[]
   }
   // at the end, up above every object, so the end template's moves (presenting the print) clear them
   const last = out[out.length - 1];
-  if (last) last.steps.push({ kind: 'travel', points: [state.at], retract: false, zHop: 0, speed: cfg.travelSpeed, liftTo: input.liftZ(printedTop) });
+  if (last)
+    last.steps.push({
+      kind: 'travel',
+      points: [state.at],
+      retract: false,
+      zHop: 0,
+      speed: cfg.travelSpeed,
+      liftTo: input.liftZ(printedTop),
+    });
   return out;
 }
 
@@ -99,14 +110,22 @@ function temperatures(layer: LayerPlan, cfg: Config, k: number, own: number): vo
   const nozzleDiffers = cfg.nozzleTemperature !== cfg.firstLayerNozzleTemp;
   if (own === 0 && k > 0 && nozzleDiffers) layer.nozzleTemperature = cfg.firstLayerNozzleTemp;
   if (own === 1 && nozzleDiffers) layer.nozzleTemperature = cfg.nozzleTemperature;
-  if (own === 1 && k === 0 && cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemp) layer.bedTemperature = cfg.bedTemperature;
+  if (own === 1 && k === 0 && cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemp)
+    layer.bedTemperature = cfg.bedTemperature;
 }
 
 /** Make the layer's first move the travel over the printed objects: retracted, at `z`, straight to its first point. */
 function liftOver(layer: LayerPlan, z: number, cfg: Config): void {
   const s0 = layer.steps[0];
   const to = s0.kind === 'travel' ? s0.points[s0.points.length - 1] : s0.points[0];
-  const travel: TravelStep = { kind: 'travel', points: [to], retract: true, zHop: 0, speed: cfg.travelSpeed, liftTo: z };
+  const travel: TravelStep = {
+    kind: 'travel',
+    points: [to],
+    retract: true,
+    zHop: 0,
+    speed: cfg.travelSpeed,
+    liftTo: z,
+  };
   if (s0.kind === 'travel') layer.steps[0] = travel;
   else layer.steps.unshift(travel);
 }

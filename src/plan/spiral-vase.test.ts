@@ -10,11 +10,20 @@ const SQUARE: Pt[] = [
   { x: 10000, y: 10000 },
   { x: 0, y: 10000 },
 ];
-const loop = (extra: Partial<VaseRun> = {}): VaseRun => ({ points: SQUARE, closed: true, width: 0.4, widths: null, z: null, flags: null, ...extra });
+const loop = (extra: Partial<VaseRun> = {}): VaseRun => ({
+  points: SQUARE,
+  closed: true,
+  width: 0.4,
+  widths: null,
+  z: null,
+  flags: null,
+  ...extra,
+});
 
 function lengths(points: readonly Pt[]): number[] {
   const d = [0];
-  for (let k = 1; k < points.length; k++) d.push(d[k - 1] + Math.hypot(points[k].x - points[k - 1].x, points[k].y - points[k - 1].y));
+  for (let k = 1; k < points.length; k++)
+    d.push(d[k - 1] + Math.hypot(points[k].x - points[k - 1].x, points[k].y - points[k - 1].y));
   return d;
 }
 
@@ -30,7 +39,10 @@ test('a loop opened near a point goes once round from the nearest point back to 
   const o = openLoopNear(loop({ flags, widths }), { x: 2500, y: 100 });
   assert.deepEqual(o.points, [{ x: 2500, y: 0 }, SQUARE[1], SQUARE[2], SQUARE[3], SQUARE[0], { x: 2500, y: 0 }]);
   assert.deepEqual([...o.flags!], [1, 0, 0, 2, 1], 'the start edge is split: its flag on both ends');
-  assert.deepEqual([...o.widths!].map((w) => +w.toFixed(3)), [0.425, 0.5, 0.4, 0.3, 0.4, 0.425]);
+  assert.deepEqual(
+    [...o.widths!].map((w) => +w.toFixed(3)),
+    [0.425, 0.5, 0.4, 0.3, 0.4, 0.425],
+  );
   assert.equal(o.closed, false);
   const corner = openLoopNear(loop(), { x: 9997, y: 10004 }); // 3 µm along edge 2 from its corner: the corner
   assert.deepEqual(corner.points, [SQUARE[2], SQUARE[3], SQUARE[0], SQUARE[1], SQUARE[2]]);

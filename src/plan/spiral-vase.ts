@@ -54,12 +54,15 @@ export function nearestOnLoop(points: readonly Pt[], p: Pt): NearestOnLoop {
   let edge = 0;
   let bestT = 0;
   for (let k = 0; k < n; k++) {
-    const a = points[k], b = points[k + 1 === n ? 0 : k + 1];
-    const dx = b.x - a.x, dy = b.y - a.y;
+    const a = points[k],
+      b = points[k + 1 === n ? 0 : k + 1];
+    const dx = b.x - a.x,
+      dy = b.y - a.y;
     const len2 = dx * dx + dy * dy;
     let t = len2 > 0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / len2 : 0;
     t = t < 0 ? 0 : t > 1 ? 1 : t;
-    const ex = a.x + t * dx - p.x, ey = a.y + t * dy - p.y;
+    const ex = a.x + t * dx - p.x,
+      ey = a.y + t * dy - p.y;
     const d2 = ex * ex + ey * ey;
     if (d2 < best) {
       best = d2;
@@ -67,7 +70,8 @@ export function nearestOnLoop(points: readonly Pt[], p: Pt): NearestOnLoop {
       bestT = t;
     }
   }
-  const a = points[edge], b = points[edge + 1 === n ? 0 : edge + 1];
+  const a = points[edge],
+    b = points[edge + 1 === n ? 0 : edge + 1];
   const len = hypot(b.x - a.x, b.y - a.y);
   if (bestT * len <= SAME_POINT_UM) return { edge, at: a, t: 0 };
   if ((1 - bestT) * len <= SAME_POINT_UM) return { edge: edge + 1 === n ? 0 : edge + 1, at: b, t: 0 };
@@ -114,7 +118,8 @@ export function openLoopNear(loop: VaseRun, near: Pt): VaseRun {
 /** Distance from the run's start to each of its points, µm. */
 function distances(points: readonly Pt[]): Float64Array {
   const d = new Float64Array(points.length);
-  for (let k = 1; k < points.length; k++) d[k] = d[k - 1] + hypot(points[k].x - points[k - 1].x, points[k].y - points[k - 1].y);
+  for (let k = 1; k < points.length; k++)
+    d[k] = d[k - 1] + hypot(points[k].x - points[k - 1].x, points[k].y - points[k - 1].y);
   return d;
 }
 
@@ -122,7 +127,8 @@ function distances(points: readonly Pt[]): Float64Array {
 function scaledWidths(run: VaseRun, d: Float64Array, share: (f: number) => number): Float64Array {
   const total = d[d.length - 1];
   const out = new Float64Array(run.points.length);
-  for (let k = 0; k < out.length; k++) out[k] = (run.widths ? run.widths[k] : run.width) * share(total > 0 ? d[k] / total : 1);
+  for (let k = 0; k < out.length; k++)
+    out[k] = (run.widths ? run.widths[k] : run.width) * share(total > 0 ? d[k] / total : 1);
   return out;
 }
 

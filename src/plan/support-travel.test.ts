@@ -4,7 +4,10 @@ import type { ExPolygon } from '../geometry/types.js';
 import { PartGuard } from './support-travel.js';
 
 const square = (x0: number, y0: number, s: number) => [
-  { x: x0, y: y0 }, { x: x0 + s, y: y0 }, { x: x0 + s, y: y0 + s }, { x: x0, y: y0 + s },
+  { x: x0, y: y0 },
+  { x: x0 + s, y: y0 },
+  { x: x0 + s, y: y0 + s },
+  { x: x0, y: y0 + s },
 ];
 const island = (x0: number, y0: number, s: number, hole?: [number, number, number]): ExPolygon => ({
   outer: square(x0, y0, s),

@@ -22,7 +22,8 @@ export class PartGuard {
   clear(a: Pt, b: Pt): boolean {
     // with no edge crossed the whole line lies inside an island or outside it, as its middle does (taken to
     // the whole µm: the index's point queries run on integers, as the part's points are)
-    const x = Math.round((a.x + b.x) / 2), y = Math.round((a.y + b.y) / 2);
+    const x = Math.round((a.x + b.x) / 2),
+      y = Math.round((a.y + b.y) / 2);
     for (let i = 0; i < this.#layers.length; i++) {
       const ix = this.#layers[i];
       if (ix.crosses(a.x, a.y, b.x, b.y) || ix.contains(x, y)) return false;

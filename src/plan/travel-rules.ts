@@ -37,7 +37,13 @@ function segmentCrossesRing(a: Pt, b: Pt, ring: readonly Pt[]): boolean {
 /** Whether segment ab has a point over `island` (inside its outline, outside its holes). */
 export function segmentOverIsland(a: Pt, b: Pt, island: PrintedIsland): boolean {
   const bb = island.bounds;
-  if (Math.max(a.x, b.x) < bb.minX || Math.min(a.x, b.x) > bb.maxX || Math.max(a.y, b.y) < bb.minY || Math.min(a.y, b.y) > bb.maxY) return false;
+  if (
+    Math.max(a.x, b.x) < bb.minX ||
+    Math.min(a.x, b.x) > bb.maxX ||
+    Math.max(a.y, b.y) < bb.minY ||
+    Math.min(a.y, b.y) > bb.maxY
+  )
+    return false;
   if (insideArea(a, island.area) || insideArea(b, island.area)) return true;
   // both ends outside the area: the segment is over it only if it crosses one of its rings
   if (segmentCrossesRing(a, b, island.area.outer)) return true;
@@ -46,7 +52,12 @@ export function segmentOverIsland(a: Pt, b: Pt, island: PrintedIsland): boolean 
 }
 
 /** Whether the route from `from` through `points` passes over any of `islands` but `except`. */
-export function routeOverIslands(from: Pt, points: readonly Pt[], islands: readonly PrintedIsland[], except: ExPolygon | null): boolean {
+export function routeOverIslands(
+  from: Pt,
+  points: readonly Pt[],
+  islands: readonly PrintedIsland[],
+  except: ExPolygon | null,
+): boolean {
   for (const island of islands) {
     if (island.area === except) continue;
     let a = from;

@@ -15,9 +15,18 @@ import { suggest } from '../settings/resolve.js';
 
 /** Makers sold by the branded presets, by id prefix; the rest are generic materials. */
 const BRANDS: ReadonlyArray<[prefix: string, brand: string]> = [
-  ['prusament-', 'Prusa'], ['bambu-', 'Bambu Lab'], ['polymaker-', 'Polymaker'], ['hatchbox-', 'Hatchbox'], ['esun-', 'eSUN'],
-  ['overture-', 'Overture'], ['sunlu-', 'SUNLU'], ['colorfabb-', 'colorFabb'], ['ninjaflex', 'NinjaTek'], ['sainsmart-', 'SainSmart'],
-  ['3dxtech-', '3DXTech'], ['ultimaker-', 'UltiMaker'],
+  ['prusament-', 'Prusa'],
+  ['bambu-', 'Bambu Lab'],
+  ['polymaker-', 'Polymaker'],
+  ['hatchbox-', 'Hatchbox'],
+  ['esun-', 'eSUN'],
+  ['overture-', 'Overture'],
+  ['sunlu-', 'SUNLU'],
+  ['colorfabb-', 'colorFabb'],
+  ['ninjaflex', 'NinjaTek'],
+  ['sainsmart-', 'SainSmart'],
+  ['3dxtech-', '3DXTech'],
+  ['ultimaker-', 'UltiMaker'],
 ];
 
 /** Presets sold on 2.85 mm spools. */
@@ -27,7 +36,11 @@ const SPOOL_285: ReadonlySet<string> = new Set(['ultimaker-pla', 'ultimaker-toug
 const STANDBY_BELOW = 20;
 
 function nonNegative(what: string, v: unknown, max = Infinity): number {
-  if (typeof v !== 'number' || !Number.isFinite(v) || v < 0 || v > max) throw new StrataError('BAD_SETTING', `${what} must be a number from 0${max < Infinity ? ` to ${max}` : ''}, got ${JSON.stringify(v)}`);
+  if (typeof v !== 'number' || !Number.isFinite(v) || v < 0 || v > max)
+    throw new StrataError(
+      'BAD_SETTING',
+      `${what} must be a number from 0${max < Infinity ? ` to ${max}` : ''}, got ${JSON.stringify(v)}`,
+    );
   return v;
 }
 
@@ -66,7 +79,10 @@ export class Filament {
     if (!preset) {
       const names = [...Object.keys(POLYSLICE_NAMES.filaments), ...listPresets().filaments.map((f) => f.id)];
       const s = suggest(String(material), names);
-      throw new StrataError('UNKNOWN_PRESET', `unknown filament "${material}"${s ? ` (did you mean "${s}"?)` : ''}; listAvailableFilaments() lists them`);
+      throw new StrataError(
+        'UNKNOWN_PRESET',
+        `unknown filament "${material}"${s ? ` (did you mean "${s}"?)` : ''}; listAvailableFilaments() lists them`,
+      );
     }
     const s = preset.settings;
     this.material = material;
@@ -81,8 +97,15 @@ export class Filament {
     this.weight = 0;
     this.cost = 0;
     this.fan = s.fanSpeed!;
-    this.temperature = { bed: s.bedTemperature!, nozzle: s.nozzleTemperature!, standby: Math.max(0, s.nozzleTemperature! - STANDBY_BELOW) };
-    this.retraction = { speed: s.retractionDistance !== undefined ? (s.retractionSpeed ?? null) : null, distance: s.retractionDistance ?? null };
+    this.temperature = {
+      bed: s.bedTemperature!,
+      nozzle: s.nozzleTemperature!,
+      standby: Math.max(0, s.nozzleTemperature! - STANDBY_BELOW),
+    };
+    this.retraction = {
+      speed: s.retractionDistance !== undefined ? (s.retractionSpeed ?? null) : null,
+      distance: s.retractionDistance ?? null,
+    };
   }
 
   getMaterial(): string {
@@ -195,7 +218,8 @@ export class Filament {
     return this;
   }
   setRetractionSpeed(speed: number): this {
-    if (nonNegative('setRetractionSpeed', speed) === 0) throw new StrataError('BAD_SETTING', 'setRetractionSpeed must be above 0');
+    if (nonNegative('setRetractionSpeed', speed) === 0)
+      throw new StrataError('BAD_SETTING', 'setRetractionSpeed must be above 0');
     this.retraction.speed = speed;
     return this;
   }

@@ -130,8 +130,17 @@ export interface KeptOption {
   why: string;
 }
 
-const mapped = (key: SettingKey, quantity: Quantity = 'plain', conv: Pick<MappedOption, 'to' | 'from'> = {}): MappedOption => ({ kind: 'mapped', key, quantity, ...conv });
-const kept = (initial: unknown, why: string, quantity: Quantity = 'plain', values?: readonly unknown[]): KeptOption => ({ kind: 'kept', quantity, initial, why, ...(values ? { values } : {}) });
+const mapped = (
+  key: SettingKey,
+  quantity: Quantity = 'plain',
+  conv: Pick<MappedOption, 'to' | 'from'> = {},
+): MappedOption => ({ kind: 'mapped', key, quantity, ...conv });
+const kept = (
+  initial: unknown,
+  why: string,
+  quantity: Quantity = 'plain',
+  values?: readonly unknown[],
+): KeptOption => ({ kind: 'kept', quantity, initial, why, ...(values ? { values } : {}) });
 
 const HEADER = "Strata's G-code header always carries its metadata (what hosts read: see README)";
 const PRECISION = "Strata's writer chooses the precision (3 decimals for XYZ, 5 for E, whole mm/min for F)";
@@ -168,21 +177,32 @@ export const OPTIONS: Readonly<Partial<Record<OptionName, MappedOption | KeptOpt
   supportThreshold: mapped('supportThreshold', 'angle'),
   supportGap: mapped('supportXYGap', 'length'),
   supportDensity: mapped('supportDensity'),
-  supportRootsEnabled: kept(true, "Strata's trees have no separate roots: merged trunks widen by supportTreeDiameterAngle"),
+  supportRootsEnabled: kept(
+    true,
+    "Strata's trees have no separate roots: merged trunks widen by supportTreeDiameterAngle",
+  ),
   supportRootCount: kept(4, "Strata's trees have no separate roots: merged trunks widen by supportTreeDiameterAngle"),
   supportBranchAngle: mapped('supportTreeBranchAngle', 'angle'),
   supportTwigAngle: kept(45, "Strata's trees have one branch angle (supportBranchAngle)", 'angle'),
-  skirtType: kept('circular', "Strata draws its skirt skirtDistance around the first layer's outline", 'plain', ['circular', 'shape']),
+  skirtType: kept('circular', "Strata draws its skirt skirtDistance around the first layer's outline", 'plain', [
+    'circular',
+    'shape',
+  ]),
   skirtDistance: mapped('skirtDistance', 'length'),
   skirtLineCount: mapped('skirtLoops'),
   brimDistance: kept(0, "Strata's brim touches the part (that is what holds it down)", 'length'),
-  brimLineCount: mapped('brimWidth', 'plain', { to: (v, c) => v * c.lineWidthMm, from: (c) => Math.round(c.brimWidth / c.lineWidthMm) }),
+  brimLineCount: mapped('brimWidth', 'plain', {
+    to: (v, c) => v * c.lineWidthMm,
+    from: (c) => Math.round(c.brimWidth / c.lineWidthMm),
+  }),
   raftMargin: mapped('raftMargin', 'length'),
   raftBaseThickness: mapped('raftBaseThickness', 'length'),
   raftInterfaceLayers: mapped('raftInterfaceLayers'),
   raftInterfaceThickness: kept(0.2, "Strata's raft interface layers are layerHeight thick", 'length'),
   raftAirGap: mapped('raftAirGap', 'length'),
-  raftLineSpacing: mapped('raftBaseLineSpacing', 'length', { from: (c) => c.raftBaseLineSpacing ?? 2 * (c.raftBaseLineWidth ?? 2 * c.nozzleDiameter) }),
+  raftLineSpacing: mapped('raftBaseLineSpacing', 'length', {
+    from: (c) => c.raftBaseLineSpacing ?? 2 * (c.raftBaseLineWidth ?? 2 * c.nozzleDiameter),
+  }),
   testStrip: kept(false, "the printer preset's start G-code draws a prime line"),
   metadata: kept(true, HEADER),
   verbose: kept(true, "Strata's G-code always names each feature (;TYPE:) and layer"),
@@ -214,6 +234,8 @@ export const OPTIONS: Readonly<Partial<Record<OptionName, MappedOption | KeptOpt
   buzzer: kept(true, END),
   wipeNozzle: kept(true, `${END} retracts and lifts`),
   smartWipeNozzle: kept(true, `${END} retracts and lifts`),
-  positioningMode: kept('absolute', 'Strata writes absolute XYZ positions (relative positioning is refused)', 'plain', ['absolute']),
+  positioningMode: kept('absolute', 'Strata writes absolute XYZ positions (relative positioning is refused)', 'plain', [
+    'absolute',
+  ]),
   extruderMode: mapped('extruderMode'),
 };

@@ -18,15 +18,35 @@ import { FILAMENT_PRESETS, PRINTER_PRESETS } from '../settings/presets/index.js'
 import type { Config } from '../settings/resolve.js';
 import { SCHEMA, type SettingKey, type Settings, type SliceOptions } from '../settings/schema.js';
 import { Filament } from './filament.js';
-import { OPTIONS, type KeptOption, type MappedOption, type OptionName, type PolysliceSettings, type ProgressInfo } from './options.js';
+import {
+  OPTIONS,
+  type KeptOption,
+  type MappedOption,
+  type OptionName,
+  type PolysliceSettings,
+  type ProgressInfo,
+} from './options.js';
 import { Printer } from './printer.js';
-import { ANGLE_UNITS, checkUnit, fromInternal, LENGTH_UNITS, SPEED_UNITS, TEMPERATURE_UNITS, TIME_UNITS, toInternal, type Units } from './units.js';
+import {
+  ANGLE_UNITS,
+  checkUnit,
+  fromInternal,
+  LENGTH_UNITS,
+  SPEED_UNITS,
+  TEMPERATURE_UNITS,
+  TIME_UNITS,
+  toInternal,
+  type Units,
+} from './units.js';
 
 export type { ProgressInfo, PolysliceSettings } from './options.js';
 
 /** Constructor options: any of the seeds' options, and the printer and filament (objects, names or null). */
 export type PolysliceOptions = Partial<PolysliceSettings> &
-  Partial<Omit<Settings, keyof PolysliceSettings>> & { printer?: Printer | string | null; filament?: Filament | string | null };
+  Partial<Omit<Settings, keyof PolysliceSettings>> & {
+    printer?: Printer | string | null;
+    filament?: Filament | string | null;
+  };
 
 /** Strata's own settings are options too (in Strata's units: mm, mm/s, °C), where the seeds' library has no option of that name. */
 const isSettingKey = (name: string): name is SettingKey => Object.hasOwn(SCHEMA, name);
@@ -48,7 +68,11 @@ type Accessors = { [K in OptionName as `get${Capitalize<K>}`]: () => PolysliceSe
 /** The settings a printer object sets: its preset, and what was changed on it. */
 function printerOptions(p: Printer | null): SliceOptions {
   if (!p) return {};
-  if (!p.presetId) throw new StrataError('UNKNOWN_PRESET', `${p.unsupportedReason}; make a Polyslice without a printer and give buildPlateWidth and buildPlateLength (${p.size.x} × ${p.size.y} mm) for a generic Marlin printer`);
+  if (!p.presetId)
+    throw new StrataError(
+      'UNKNOWN_PRESET',
+      `${p.unsupportedReason}; make a Polyslice without a printer and give buildPlateWidth and buildPlateLength (${p.size.x} × ${p.size.y} mm) for a generic Marlin printer`,
+    );
   const s = PRINTER_PRESETS[p.presetId]!.settings;
   const out: SliceOptions = { printer: p.presetId };
   const nozzle = p.getNozzle(0);
@@ -97,7 +121,13 @@ export class Polyslice {
   /** Statistics of the last slice (layers, print time, filament), or null before the first. */
   stats: SliceStats | null = null;
 
-  #units: Units & { timeUnit: (typeof TIME_UNITS)[number] } = { lengthUnit: 'millimeters', speedUnit: 'millimeterSecond', temperatureUnit: 'celsius', angleUnit: 'degree', timeUnit: 'milliseconds' };
+  #units: Units & { timeUnit: (typeof TIME_UNITS)[number] } = {
+    lengthUnit: 'millimeters',
+    speedUnit: 'millimeterSecond',
+    temperatureUnit: 'celsius',
+    angleUnit: 'degree',
+    timeUnit: 'milliseconds',
+  };
   #printer: Printer | null = null;
   #filament: Filament | null = null;
   /** Strata settings set by options and setters (over the printer's and the filament's). */
@@ -109,10 +139,13 @@ export class Polyslice {
   #slicer: Slicer;
 
   constructor(options: PolysliceOptions = {}) {
-    if (options === null || typeof options !== 'object') throw new StrataError('BAD_SETTING', 'Polyslice options must be an object');
-    for (const [name, def] of Object.entries(OPTIONS) as Array<[OptionName, MappedOption | KeptOption]>) if (def.kind === 'kept') this.#kept[name] = def.initial;
+    if (options === null || typeof options !== 'object')
+      throw new StrataError('BAD_SETTING', 'Polyslice options must be an object');
+    for (const [name, def] of Object.entries(OPTIONS) as Array<[OptionName, MappedOption | KeptOption]>)
+      if (def.kind === 'kept') this.#kept[name] = def.initial;
     // units first: the other values are in them
-    for (const u of Object.keys(UNIT_OPTIONS) as UnitOption[]) if (options[u] !== undefined) this.#setUnit(u, options[u]);
+    for (const u of Object.keys(UNIT_OPTIONS) as UnitOption[])
+      if (options[u] !== undefined) this.#setUnit(u, options[u]);
     this.#printer = Polyslice.#asPrinter(options.printer);
     this.#filament = Polyslice.#asFilament(options.filament);
     this.#slicer = new Slicer(this.#compose());
@@ -120,13 +153,19 @@ export class Polyslice {
     const rest = { ...options } as Record<string, unknown>;
     if (rest.adhesionType !== undefined) this.#setAdhesionType(rest.adhesionType, own);
     if (rest.adhesionEnabled !== undefined) this.#setAdhesionEnabled(rest.adhesionEnabled, own);
-    if (rest.progressCallback !== undefined) this.setProgressCallback(rest.progressCallback as PolysliceSettings['progressCallback']);
+    if (rest.progressCallback !== undefined)
+      this.setProgressCallback(rest.progressCallback as PolysliceSettings['progressCallback']);
     // options converted through the config (brimLineCount: lines × line width) go last, over the others resolved
     const converted = (name: string) => (OPTIONS[name as OptionName] as MappedOption | undefined)?.to !== undefined;
     const entries = Object.entries(rest).sort(([a], [b]) => Number(converted(a)) - Number(converted(b)));
     let resolved = false;
     for (const [name, value] of entries) {
-      if (value === undefined || name in UNIT_OPTIONS || ['printer', 'filament', 'adhesionType', 'adhesionEnabled', 'progressCallback'].includes(name)) continue;
+      if (
+        value === undefined ||
+        name in UNIT_OPTIONS ||
+        ['printer', 'filament', 'adhesionType', 'adhesionEnabled', 'progressCallback'].includes(name)
+      )
+        continue;
       if (converted(name) && !resolved) {
         this.#slicer = new Slicer(this.#compose(own));
         resolved = true;
@@ -134,7 +173,11 @@ export class Polyslice {
       const def = OPTIONS[name as OptionName];
       if (def) this.#setOption(name as OptionName, def, value, own);
       else if (isSettingKey(name)) (own as Record<string, unknown>)[name] = value;
-      else throw new StrataError('UNKNOWN_SETTING', `unknown Polyslice option "${name}" (neither the seeds' library's nor a Strata setting)`);
+      else
+        throw new StrataError(
+          'UNKNOWN_SETTING',
+          `unknown Polyslice option "${name}" (neither the seeds' library's nor a Strata setting)`,
+        );
     }
     this.#apply(own);
   }
@@ -180,8 +223,14 @@ export class Polyslice {
 
   #setOption(name: OptionName, def: MappedOption | KeptOption, value: unknown, own: SliceOptions): void {
     if (def.kind === 'kept') {
-      const ok = def.values ? def.values.includes(value) : typeof value === typeof def.initial && (typeof value !== 'number' || Number.isFinite(value));
-      if (!ok) throw new StrataError('BAD_SETTING', `${name}: ${def.values ? `one of ${def.values.map((v) => JSON.stringify(v)).join(', ')}` : `a ${typeof def.initial}`} expected, got ${JSON.stringify(value)}${name === 'positioningMode' ? ` (${def.why})` : ''}`);
+      const ok = def.values
+        ? def.values.includes(value)
+        : typeof value === typeof def.initial && (typeof value !== 'number' || Number.isFinite(value));
+      if (!ok)
+        throw new StrataError(
+          'BAD_SETTING',
+          `${name}: ${def.values ? `one of ${def.values.map((v) => JSON.stringify(v)).join(', ')}` : `a ${typeof def.initial}`} expected, got ${JSON.stringify(value)}${name === 'positioningMode' ? ` (${def.why})` : ''}`,
+        );
       this.#kept[name] = typeof value === 'number' ? toInternal(value, def.quantity, this.#units) : value;
       return;
     }
@@ -229,20 +278,27 @@ export class Polyslice {
       this.#setOption(name, def, value, own);
       this.#apply(own);
     } catch (e) {
-      if (e instanceof StrataError && !e.message.startsWith(name)) throw new StrataError(e.code, `${name}: ${e.message}`);
+      if (e instanceof StrataError && !e.message.startsWith(name))
+        throw new StrataError(e.code, `${name}: ${e.message}`);
       throw e;
     }
     return this;
   }
 
   #setAdhesionType(value: unknown, own: SliceOptions): void {
-    if (!(ADHESION_TYPES as readonly unknown[]).includes(value)) throw new StrataError('BAD_SETTING', `adhesionType must be one of ${ADHESION_TYPES.join(', ')}, got ${JSON.stringify(value)}`);
+    if (!(ADHESION_TYPES as readonly unknown[]).includes(value))
+      throw new StrataError(
+        'BAD_SETTING',
+        `adhesionType must be one of ${ADHESION_TYPES.join(', ')}, got ${JSON.stringify(value)}`,
+      );
     this.#adhesionKind = value as (typeof ADHESION_TYPES)[number];
-    if (this.#compose(own).adhesionType !== 'none' && this.#slicer.config.adhesionType !== 'none') own.adhesionType = this.#adhesionKind;
+    if (this.#compose(own).adhesionType !== 'none' && this.#slicer.config.adhesionType !== 'none')
+      own.adhesionType = this.#adhesionKind;
   }
 
   #setAdhesionEnabled(value: unknown, own: SliceOptions): void {
-    if (typeof value !== 'boolean') throw new StrataError('BAD_SETTING', `adhesionEnabled must be true or false, got ${JSON.stringify(value)}`);
+    if (typeof value !== 'boolean')
+      throw new StrataError('BAD_SETTING', `adhesionEnabled must be true or false, got ${JSON.stringify(value)}`);
     own.adhesionType = value ? this.#adhesionKind : 'none';
   }
 
@@ -270,7 +326,8 @@ export class Polyslice {
     return this.#progress;
   }
   setProgressCallback(callback: ((info: ProgressInfo) => void) | null = null): this {
-    if (callback !== null && typeof callback !== 'function') throw new StrataError('BAD_SETTING', 'progressCallback must be a function or null');
+    if (callback !== null && typeof callback !== 'function')
+      throw new StrataError('BAD_SETTING', 'progressCallback must be a function or null');
     this.#progress = callback;
     return this;
   }
@@ -282,7 +339,13 @@ export class Polyslice {
   setPrinter(printer: Printer | string | null): this {
     const next = Polyslice.#asPrinter(printer);
     const own = { ...this.#own };
-    for (const k of ['buildPlateWidth', 'buildPlateLength', 'nozzleDiameter', ...(this.#filament ? [] : ['filamentDiameter'])]) delete (own as Record<string, unknown>)[k];
+    for (const k of [
+      'buildPlateWidth',
+      'buildPlateLength',
+      'nozzleDiameter',
+      ...(this.#filament ? [] : ['filamentDiameter']),
+    ])
+      delete (own as Record<string, unknown>)[k];
     const before = this.#printer;
     this.#printer = next;
     try {
@@ -301,7 +364,15 @@ export class Polyslice {
   setFilament(filament: Filament | string | null): this {
     const next = Polyslice.#asFilament(filament);
     const own = { ...this.#own };
-    for (const k of ['nozzleTemperature', 'bedTemperature', 'retractionDistance', 'retractionSpeed', 'filamentDiameter', 'fanSpeed']) delete (own as Record<string, unknown>)[k];
+    for (const k of [
+      'nozzleTemperature',
+      'bedTemperature',
+      'retractionDistance',
+      'retractionSpeed',
+      'filamentDiameter',
+      'fanSpeed',
+    ])
+      delete (own as Record<string, unknown>)[k];
     const before = this.#filament;
     this.#filament = next;
     try {
@@ -331,7 +402,13 @@ export class Polyslice {
     this.gcode = r.gcode;
     this.warnings = r.warnings;
     this.stats = r.stats;
-    this.#report({ stage: 'complete', percent: 100, currentLayer: null, totalLayers: r.stats.layers, message: 'G-code generation complete' });
+    this.#report({
+      stage: 'complete',
+      percent: 100,
+      currentLayer: null,
+      totalLayers: r.stats.layers,
+      message: 'G-code generation complete',
+    });
     return r.gcode;
   }
 
@@ -346,7 +423,14 @@ export class Polyslice {
   #onProgress(): ((p: Progress) => void) | undefined {
     if (!this.#progress) return undefined;
     this.#report({ stage: 'initializing', percent: 0, currentLayer: null, totalLayers: null, message: 'Starting...' });
-    return (p) => this.#report({ stage: p.stage === 'writing' ? 'post-print' : 'slicing', percent: Math.min(99, Math.floor(p.fraction * 100)), currentLayer: null, totalLayers: null, message: p.stage });
+    return (p) =>
+      this.#report({
+        stage: p.stage === 'writing' ? 'post-print' : 'slicing',
+        percent: Math.min(99, Math.floor(p.fraction * 100)),
+        currentLayer: null,
+        totalLayers: null,
+        message: p.stage,
+      });
   }
 }
 

@@ -25,8 +25,17 @@ export interface Nozzle {
 
 /** Printers with a closed (heated or warmed) build chamber among the presets. */
 const ENCLOSED: ReadonlySet<string> = new Set([
-  'bambu-lab-x1c', 'bambu-lab-p1s', 'creality-k1', 'creality-k1-max', 'creality-k1c', 'prusa-core-one',
-  'voron-2.4-350', 'voron-trident-300', 'voron-0.2', 'qidi-q1-pro', 'qidi-x-plus-3',
+  'bambu-lab-x1c',
+  'bambu-lab-p1s',
+  'creality-k1',
+  'creality-k1-max',
+  'creality-k1c',
+  'prusa-core-one',
+  'voron-2.4-350',
+  'voron-trident-300',
+  'voron-0.2',
+  'qidi-q1-pro',
+  'qidi-x-plus-3',
 ]);
 
 /** Gantry height the seeds' library gives most printers, mm. */
@@ -34,12 +43,14 @@ const DEFAULT_GANTRY = 25;
 
 /** A positive finite number, or a one-line error naming the setter. */
 function positive(what: string, v: unknown): number {
-  if (typeof v !== 'number' || !Number.isFinite(v) || v <= 0) throw new StrataError('BAD_SETTING', `${what} must be a number above 0, got ${JSON.stringify(v)}`);
+  if (typeof v !== 'number' || !Number.isFinite(v) || v <= 0)
+    throw new StrataError('BAD_SETTING', `${what} must be a number above 0, got ${JSON.stringify(v)}`);
   return v;
 }
 
 function flag(what: string, v: unknown): boolean {
-  if (typeof v !== 'boolean') throw new StrataError('BAD_SETTING', `${what} must be true or false, got ${JSON.stringify(v)}`);
+  if (typeof v !== 'boolean')
+    throw new StrataError('BAD_SETTING', `${what} must be true or false, got ${JSON.stringify(v)}`);
   return v;
 }
 
@@ -60,7 +71,10 @@ export class Printer {
     if (!preset && !gap) {
       const names = [...Object.keys(POLYSLICE_NAMES.printers), ...listPresets().printers.map((p) => p.id)];
       const s = suggest(String(model), names);
-      throw new StrataError('UNKNOWN_PRESET', `unknown printer "${model}"${s ? ` (did you mean "${s}"?)` : ''}; listAvailablePrinters() lists them`);
+      throw new StrataError(
+        'UNKNOWN_PRESET',
+        `unknown printer "${model}"${s ? ` (did you mean "${s}"?)` : ''}; listAvailablePrinters() lists them`,
+      );
     }
     this.model = model;
     if (preset) {
@@ -150,7 +164,8 @@ export class Printer {
     return this;
   }
   setShape(shape: 'rectangular' | 'circular'): this {
-    if (shape !== 'rectangular' && shape !== 'circular') throw new StrataError('BAD_SETTING', `setShape: "rectangular" or "circular", got ${JSON.stringify(shape)}`);
+    if (shape !== 'rectangular' && shape !== 'circular')
+      throw new StrataError('BAD_SETTING', `setShape: "rectangular" or "circular", got ${JSON.stringify(shape)}`);
     this.shape = shape;
     return this;
   }
@@ -169,18 +184,24 @@ export class Printer {
   /** Change nozzle `index`; an argument left out keeps its value. */
   setNozzle(index: number, filament?: number, diameter?: number, gantry?: number): this {
     const n = this.getNozzle(index);
-    if (!n) throw new StrataError('BAD_SETTING', `setNozzle: no nozzle ${index} (the printer has ${this.nozzles.length})`);
+    if (!n)
+      throw new StrataError('BAD_SETTING', `setNozzle: no nozzle ${index} (the printer has ${this.nozzles.length})`);
     if (filament !== undefined) n.filament = positive('setNozzle filament', filament);
     if (diameter !== undefined) n.diameter = positive('setNozzle diameter', diameter);
     if (gantry !== undefined) n.gantry = positive('setNozzle gantry', gantry);
     return this;
   }
   addNozzle(filament = 1.75, diameter = 0.4, gantry = DEFAULT_GANTRY): this {
-    this.nozzles.push({ filament: positive('addNozzle filament', filament), diameter: positive('addNozzle diameter', diameter), gantry: positive('addNozzle gantry', gantry) });
+    this.nozzles.push({
+      filament: positive('addNozzle filament', filament),
+      diameter: positive('addNozzle diameter', diameter),
+      gantry: positive('addNozzle gantry', gantry),
+    });
     return this;
   }
   removeNozzle(index: number): this {
-    if (!this.getNozzle(index)) throw new StrataError('BAD_SETTING', `removeNozzle: no nozzle ${index} (the printer has ${this.nozzles.length})`);
+    if (!this.getNozzle(index))
+      throw new StrataError('BAD_SETTING', `removeNozzle: no nozzle ${index} (the printer has ${this.nozzles.length})`);
     this.nozzles.splice(index, 1);
     return this;
   }

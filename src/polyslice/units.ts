@@ -36,7 +36,11 @@ export function toInternal(value: number, quantity: Quantity, u: Units): number 
     case 'speed':
       return u.speedUnit === 'inchSecond' ? value * MM_PER_INCH : u.speedUnit === 'meterSecond' ? value * 1000 : value;
     case 'temperature':
-      return u.temperatureUnit === 'fahrenheit' ? ((value - 32) * 5) / 9 : u.temperatureUnit === 'kelvin' ? value - 273.15 : value;
+      return u.temperatureUnit === 'fahrenheit'
+        ? ((value - 32) * 5) / 9
+        : u.temperatureUnit === 'kelvin'
+          ? value - 273.15
+          : value;
     case 'angle':
       return u.angleUnit === 'radian' ? (value * 180) / Math.PI : u.angleUnit === 'gradian' ? value * 0.9 : value;
     case 'plain':
@@ -52,7 +56,11 @@ export function fromInternal(value: number, quantity: Quantity, u: Units): numbe
     case 'speed':
       return u.speedUnit === 'inchSecond' ? value / MM_PER_INCH : u.speedUnit === 'meterSecond' ? value / 1000 : value;
     case 'temperature':
-      return u.temperatureUnit === 'fahrenheit' ? (value * 9) / 5 + 32 : u.temperatureUnit === 'kelvin' ? value + 273.15 : value;
+      return u.temperatureUnit === 'fahrenheit'
+        ? (value * 9) / 5 + 32
+        : u.temperatureUnit === 'kelvin'
+          ? value + 273.15
+          : value;
     case 'angle':
       return u.angleUnit === 'radian' ? (value * Math.PI) / 180 : u.angleUnit === 'gradian' ? value / 0.9 : value;
     case 'plain':
@@ -62,7 +70,12 @@ export function fromInternal(value: number, quantity: Quantity, u: Units): numbe
 
 /** A unit name checked against its list (the seeds' `speedUnit` also took any letter case). */
 export function checkUnit<T extends string>(option: string, value: unknown, allowed: readonly T[]): T {
-  const found = typeof value === 'string' ? allowed.find((a) => a.toLowerCase() === value.trim().toLowerCase()) : undefined;
-  if (found === undefined) throw new StrataError('BAD_SETTING', `${option} must be one of ${allowed.join(', ')}, got ${JSON.stringify(value)}`);
+  const found =
+    typeof value === 'string' ? allowed.find((a) => a.toLowerCase() === value.trim().toLowerCase()) : undefined;
+  if (found === undefined)
+    throw new StrataError(
+      'BAD_SETTING',
+      `${option} must be one of ${allowed.join(', ')}, got ${JSON.stringify(value)}`,
+    );
   return found;
 }

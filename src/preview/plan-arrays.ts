@@ -126,7 +126,8 @@ export function planToArrays(plan: PrintPlan, layerSeconds?: readonly number[]):
           retractionMove.push(move);
         }
         for (const p of step.points) {
-          const x = p.x / UM_PER_MM, y = p.y / UM_PER_MM;
+          const x = p.x / UM_PER_MM,
+            y = p.y / UM_PER_MM;
           if (at) {
             put(travels, at.x, at.y, at.z, x, y, z, li);
             travelMove.push(move++);
@@ -139,15 +140,21 @@ export function planToArrays(plan: PrintPlan, layerSeconds?: readonly number[]):
       const f = FEATURE_INDEX.get(step.feature) ?? 0;
       const pts: readonly Pt[] = step.points;
       const count = step.closed ? pts.length : pts.length - 1;
-      const widths = step.widths, zs = step.z;
+      const widths = step.widths,
+        zs = step.z;
       let length = 0;
       for (let k = 0; k < count; k++) {
         const k1 = (k + 1) % pts.length;
-        const a = pts[k], b = pts[k1];
+        const a = pts[k],
+          b = pts[k1];
         if (a.x === b.x && a.y === b.y) continue;
-        const x0 = a.x / UM_PER_MM, y0 = a.y / UM_PER_MM, x1 = b.x / UM_PER_MM, y1 = b.y / UM_PER_MM;
+        const x0 = a.x / UM_PER_MM,
+          y0 = a.y / UM_PER_MM,
+          x1 = b.x / UM_PER_MM,
+          y1 = b.y / UM_PER_MM;
         length += Math.hypot(x1 - x0, y1 - y0);
-        const o = segs.add(SEGMENT_STRIDE), d = segs.data;
+        const o = segs.add(SEGMENT_STRIDE),
+          d = segs.data;
         d[o] = x0;
         d[o + 1] = y0;
         d[o + 2] = x1;
@@ -208,7 +215,5 @@ export function transferList(a: PreviewArrays): ArrayBuffer[] {
     a.retractionMove,
     a.layerMoves,
     a.layerSeconds,
-  ].map(
-    (t) => t.buffer as ArrayBuffer,
-  );
+  ].map((t) => t.buffer as ArrayBuffer);
 }

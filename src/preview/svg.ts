@@ -36,7 +36,10 @@ function fmt(v: number): string {
 /** SVG of one layer plan, in mm with Y up (flipped for the screen). */
 export function layerToSvg(layer: LayerPlan, opts: SvgOptions = {}): string {
   const margin = opts.marginMm ?? 2;
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   for (const s of layer.steps) {
     if (s.kind !== 'extrude') continue;
     for (const p of s.points) {
@@ -47,13 +50,17 @@ export function layerToSvg(layer: LayerPlan, opts: SvgOptions = {}): string {
     }
   }
   if (minX === Infinity) minX = minY = maxX = maxY = 0;
-  const x0 = minX / 1000 - margin, y0 = minY / 1000 - margin;
-  const w = (maxX - minX) / 1000 + 2 * margin, h = (maxY - minY) / 1000 + 2 * margin;
+  const x0 = minX / 1000 - margin,
+    y0 = minY / 1000 - margin;
+  const w = (maxX - minX) / 1000 + 2 * margin,
+    h = (maxY - minY) / 1000 + 2 * margin;
   const px = opts.widthPx ?? 800;
   const X = (p: Pt) => fmt(p.x / 1000 - x0);
   const Y = (p: Pt) => fmt(h - (p.y / 1000 - y0));
   const out: string[] = [];
-  out.push(`<svg xmlns="http://www.w3.org/2000/svg" width="${px}" height="${Math.round((px * h) / w)}" viewBox="0 0 ${fmt(w)} ${fmt(h)}">`);
+  out.push(
+    `<svg xmlns="http://www.w3.org/2000/svg" width="${px}" height="${Math.round((px * h) / w)}" viewBox="0 0 ${fmt(w)} ${fmt(h)}">`,
+  );
   out.push(`<rect width="100%" height="100%" fill="#ffffff"/>`);
   if (opts.title) out.push(`<title>${opts.title.replace(/[<&>]/g, '')}</title>`);
   let at: Pt | null = null;
@@ -80,9 +87,13 @@ export function layerToSvg(layer: LayerPlan, opts: SvgOptions = {}): string {
       const w = s.widths;
       const last = s.closed ? n : n - 1;
       for (let i = 1; i <= last; i++) {
-        const a = s.points[i - 1]!, k = i % n, b = s.points[k]!;
+        const a = s.points[i - 1]!,
+          k = i % n,
+          b = s.points[k]!;
         const width = fmt((w[i - 1]! + w[k]!) / 2);
-        out.push(`<path d="M${X(a)} ${Y(a)}${segment(b, i, a)}" fill="none" stroke="${FEATURE_COLOURS[s.feature]}" stroke-width="${width}" stroke-linecap="round" stroke-opacity="0.85"/>`);
+        out.push(
+          `<path d="M${X(a)} ${Y(a)}${segment(b, i, a)}" fill="none" stroke="${FEATURE_COLOURS[s.feature]}" stroke-width="${width}" stroke-linecap="round" stroke-opacity="0.85"/>`,
+        );
       }
       at = s.closed ? s.points[0] : s.points[n - 1];
       continue;
@@ -90,7 +101,9 @@ export function layerToSvg(layer: LayerPlan, opts: SvgOptions = {}): string {
     let d = n ? `M${X(s.points[0]!)} ${Y(s.points[0]!)}` : '';
     for (let i = 1; i < n; i++) d += segment(s.points[i]!, i, s.points[i - 1]!);
     if (s.closed && n > 0) d += s.arcs?.[n] ? segment(s.points[0]!, n, s.points[n - 1]!) : 'Z';
-    out.push(`<path d="${d}" fill="none" stroke="${FEATURE_COLOURS[s.feature]}" stroke-width="${fmt(s.width)}" stroke-linejoin="round" stroke-linecap="round" stroke-opacity="0.85"/>`);
+    out.push(
+      `<path d="${d}" fill="none" stroke="${FEATURE_COLOURS[s.feature]}" stroke-width="${fmt(s.width)}" stroke-linejoin="round" stroke-linecap="round" stroke-opacity="0.85"/>`,
+    );
     at = s.closed ? s.points[0] : s.points[s.points.length - 1];
   }
   out.push('</svg>');

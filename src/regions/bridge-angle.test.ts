@@ -9,8 +9,12 @@ const W = 400;
 /** A rectangle `length` × `width` µm from `at` along direction `deg` (its near edge's midpoint at `at`). */
 function bar(at: Pt, deg: number, from: number, to: number, width: number): ExPolygon {
   const a = (deg * Math.PI) / 180;
-  const u = { x: Math.cos(a), y: Math.sin(a) }, n = { x: -Math.sin(a), y: Math.cos(a) };
-  const p = (s: number, t: number) => ({ x: Math.round(at.x + s * u.x + t * n.x), y: Math.round(at.y + s * u.y + t * n.y) });
+  const u = { x: Math.cos(a), y: Math.sin(a) },
+    n = { x: -Math.sin(a), y: Math.cos(a) };
+  const p = (s: number, t: number) => ({
+    x: Math.round(at.x + s * u.x + t * n.x),
+    y: Math.round(at.y + s * u.y + t * n.y),
+  });
   return { outer: [p(from, -width / 2), p(to, -width / 2), p(to, width / 2), p(from, width / 2)], holes: [] };
 }
 
@@ -26,7 +30,8 @@ test('a bridge between two supports: skin lines run from one support to the othe
   assert.ok(Math.abs(mod180(angle) - 38) < 1, `angle ${angle}`);
   // every line of the fill runs along the span (the zig-zag's short connectors aside)
   const lines = solidFill(skin, angle, W, { x: 0, y: 0 });
-  let along = 0, across = 0;
+  let along = 0,
+    across = 0;
   for (const l of lines) {
     for (let k = 1; k < l.length; k++) {
       const len = Math.hypot(l[k].x - l[k - 1].x, l[k].y - l[k - 1].y);

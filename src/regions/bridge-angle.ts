@@ -15,7 +15,9 @@ const ANCHOR_REACH_WIDTHS = 3;
 
 /** Centroid and area of an island (outer ring counter-clockwise, holes clockwise, as the clipper gives them). */
 function centroid(a: ExPolygon): { x: number; y: number; area: number } {
-  let cx = 0, cy = 0, A = 0;
+  let cx = 0,
+    cy = 0,
+    A = 0;
   for (const ring of [a.outer, ...a.holes]) {
     for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
       const cross = ring[j].x * ring[i].y - ring[i].x * ring[j].y;
@@ -60,13 +62,21 @@ export function bridgeOf(bottom: readonly ExPolygon[], below: readonly ExPolygon
  * bridge between walls resting on thin pillars ends at the innermost wall, which lies on them.
  * @param inner the region's area inside its walls, µm
  */
-export function anchoredBridge(bridge: readonly ExPolygon[], inner: readonly ExPolygon[], anchorUm: number): ExPolygon[] {
+export function anchoredBridge(
+  bridge: readonly ExPolygon[],
+  inner: readonly ExPolygon[],
+  anchorUm: number,
+): ExPolygon[] {
   if (bridge.length === 0 || inner.length === 0) return [];
   if (anchorUm <= 0) return intersection(bridge, inner);
   return intersection(offset(bridge, anchorUm), inner);
 }
 
-function anchorAngle(unsupported: readonly ExPolygon[], below: readonly ExPolygon[], lineWidthUm: number): number | null {
+function anchorAngle(
+  unsupported: readonly ExPolygon[],
+  below: readonly ExPolygon[],
+  lineWidthUm: number,
+): number | null {
   const anchors = intersection(offset(unsupported, ANCHOR_REACH_WIDTHS * lineWidthUm), below).map(centroid);
   if (anchors.length < 2) return null;
   anchors.sort((p, q) => q.area - p.area);
@@ -80,7 +90,11 @@ function anchorAngle(unsupported: readonly ExPolygon[], below: readonly ExPolygo
  * @param bottom the island's bottom skin, µm
  * @param below the section of the layer below, µm
  */
-export function bridgeAngle(bottom: readonly ExPolygon[], below: readonly ExPolygon[], lineWidthUm: number): number | null {
+export function bridgeAngle(
+  bottom: readonly ExPolygon[],
+  below: readonly ExPolygon[],
+  lineWidthUm: number,
+): number | null {
   if (bottom.length === 0) return null;
   const unsupported = difference(bottom, below);
   if (unsupported.length === 0 || area(unsupported) < BRIDGE_SHARE * area(bottom)) return null;

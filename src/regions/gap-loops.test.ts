@@ -6,7 +6,12 @@ import type { ExPolygon } from '../geometry/types.js';
 
 const W = 400;
 const rect = (x0: number, y0: number, x1: number, y1: number): ExPolygon => ({
-  outer: [{ x: x0, y: y0 }, { x: x1, y: y0 }, { x: x1, y: y1 }, { x: x0, y: y1 }],
+  outer: [
+    { x: x0, y: y0 },
+    { x: x1, y: y0 },
+    { x: x1, y: y1 },
+    { x: x0, y: y1 },
+  ],
   holes: [],
 });
 
@@ -27,7 +32,14 @@ test('a strip with a hairline sliver attached is filled edge to edge (the sliver
 });
 
 test('a wedge gets more loops towards its wide end', () => {
-  const wedge: ExPolygon = { outer: [{ x: 0, y: 0 }, { x: 6_000, y: 0 }, { x: 0, y: 600 }], holes: [] };
+  const wedge: ExPolygon = {
+    outer: [
+      { x: 0, y: 0 },
+      { x: 6_000, y: 0 },
+      { x: 0, y: 600 },
+    ],
+    holes: [],
+  };
   const loops = gapLoops([wedge], W);
   assert.ok(loops.length >= 2, `${loops.length} loops`);
   // what stays bare is mostly its tip, thinner than 0.3 line widths (4 % of it); one loop would leave 15 %
@@ -43,13 +55,20 @@ test('loopBeads covers what strokeArea does along loops (a square, and a C whose
   const square = rect(0, 0, 3000, 2000).outer;
   // a C: 3 mm square less a 1 mm slot from the right, its mouth 150 µm wide (narrower than the bead)
   const c = [
-    { x: 10_000, y: 0 }, { x: 13_000, y: 0 }, { x: 13_000, y: 1425 }, { x: 11_000, y: 1425 },
-    { x: 11_000, y: 1575 }, { x: 13_000, y: 1575 }, { x: 13_000, y: 3000 }, { x: 10_000, y: 3000 },
+    { x: 10_000, y: 0 },
+    { x: 13_000, y: 0 },
+    { x: 13_000, y: 1425 },
+    { x: 11_000, y: 1425 },
+    { x: 11_000, y: 1575 },
+    { x: 13_000, y: 1575 },
+    { x: 13_000, y: 3000 },
+    { x: 10_000, y: 3000 },
   ];
   for (const loops of [[square], [c], [square, c]]) {
     const beads = loopBeads(loops, 300);
     const stroke = strokeArea([], loops, 300, 'miter');
-    const a = area(beads), b = area(stroke);
+    const a = area(beads),
+      b = area(stroke);
     assert.ok(Math.abs(a - b) < 1e-3 * b, `areas ${a} vs ${b}`);
     assert.ok(area(difference(stroke, beads)) < 1e-3 * b && area(difference(beads, stroke)) < 1e-3 * b);
   }

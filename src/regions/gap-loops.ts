@@ -46,7 +46,9 @@ function fillGaps(gaps: readonly ExPolygon[], w: number, rounds: number, out: Ga
     const d = stripWidth(g);
     if (d < minWidth || d > MAX_GAP_WIDTHS * w) continue;
     const bead = d / 2;
-    const loops = offset([g], -bead / 2).filter((p) => Math.abs(ringArea(p.outer)) >= MIN_LOOP_AREA_UM2).map((p) => p.outer);
+    const loops = offset([g], -bead / 2)
+      .filter((p) => Math.abs(ringArea(p.outer)) >= MIN_LOOP_AREA_UM2)
+      .map((p) => p.outer);
     for (const loop of loops) out.push({ loop, widthUm: Math.round(bead) });
     if (loops.length && rounds > 1) fillGaps(difference([g], loopBeads(loops, bead)), w, rounds - 1, out);
   }

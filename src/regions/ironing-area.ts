@@ -28,14 +28,24 @@ export interface IroningIsland {
  * @param insetUm distance kept from the island's edge, µm
  */
 export function ironingArea(
-  type: Config['ironingType'], island: IroningIsland, piece: readonly ExPolygon[] | null, fill: RegionFill, solid: boolean, insetUm: number,
+  type: Config['ironingType'],
+  island: IroningIsland,
+  piece: readonly ExPolygon[] | null,
+  fill: RegionFill,
+  solid: boolean,
+  insetUm: number,
 ): ExPolygon[] {
   let area: ExPolygon[];
   if (type === 'all' && solid) area = piece ? piece.slice() : [island.outline];
   else {
     area = piece && island.topSurface.length ? intersection(island.topSurface, piece) : island.topSurface;
     if (type === 'all') {
-      const skin = fill.topSkin.length && fill.bottomSkin.length ? union(fill.topSkin, fill.bottomSkin) : fill.topSkin.length ? fill.topSkin : fill.bottomSkin;
+      const skin =
+        fill.topSkin.length && fill.bottomSkin.length
+          ? union(fill.topSkin, fill.bottomSkin)
+          : fill.topSkin.length
+            ? fill.topSkin
+            : fill.bottomSkin;
       if (skin.length) area = area.length ? union(area, skin) : skin;
     }
   }

@@ -94,7 +94,17 @@ export function vaseOutline(section: readonly ExPolygon[]): { kept: ExPolygon[];
 
 /** The walls' settings: regions that agree on these share their walls. */
 function wallsKey(cfg: Config): string {
-  return [cfg.walls, cfg.wallGenerator, cfg.minFeatureSize, cfg.minBeadWidth, cfg.maxBeadWidth, cfg.wallTransitionLength, cfg.wallTransitionAngle, cfg.wallDistributionCount, cfg.extraPerimetersOnOverhangs].join('/');
+  return [
+    cfg.walls,
+    cfg.wallGenerator,
+    cfg.minFeatureSize,
+    cfg.minBeadWidth,
+    cfg.maxBeadWidth,
+    cfg.wallTransitionLength,
+    cfg.wallTransitionAngle,
+    cfg.wallDistributionCount,
+    cfg.extraPerimetersOnOverhangs,
+  ].join('/');
 }
 
 /**
@@ -123,12 +133,19 @@ export class RegionsRun {
     const n = layers.length;
     const objectCfgs = setup.objects.map((o) => setup.configs[o.config]);
     // skin counts its layers by their heights when they are uneven (adaptive, a layer range's own height)
-    const heights = evenLayers(layers, cfg.layerHeight) ? null : Int32Array.from(layers, (l) => Math.round(l.height * 1000));
+    const heights = evenLayers(layers, cfg.layerHeight)
+      ? null
+      : Int32Array.from(layers, (l) => Math.round(l.height * 1000));
     const counts = objectCfgs.map((c) => {
       if (!heights) return { top: null, bottom: null, maxTop: c.topLayers, maxBottom: c.bottomLayers };
       const top = skinLayerCounts(heights, c.topSkinThickness ?? c.shellSkinThickness, 1);
       const bottom = skinLayerCounts(heights, c.bottomSkinThickness ?? c.shellSkinThickness, -1);
-      return { top, bottom, maxTop: top.reduce((a, b) => Math.max(a, b), 0), maxBottom: bottom.reduce((a, b) => Math.max(a, b), 0) };
+      return {
+        top,
+        bottom,
+        maxTop: top.reduce((a, b) => Math.max(a, b), 0),
+        maxBottom: bottom.reduce((a, b) => Math.max(a, b), 0),
+      };
     });
     const maxBottom = Math.max(1, ...counts.map((c) => c.maxBottom));
     const maxTop = Math.max(0, ...counts.map((c) => c.maxTop));
@@ -252,14 +269,31 @@ export class RegionsRun {
    * The skin and infill of one region of an island, and where it irons when it does (`iron`: the island's
    * outline and top surface, `piece`: the region's part of it, null for all of it).
    */
-  #fill(k: number, i: number, region: number, inner: readonly ExPolygon[], below: readonly ExPolygon[], w: number, iron: IroningIsland | null = null, piece: readonly ExPolygon[] | null = null): RegionFill {
+  #fill(
+    k: number,
+    i: number,
+    region: number,
+    inner: readonly ExPolygon[],
+    below: readonly ExPolygon[],
+    w: number,
+    iron: IroningIsland | null = null,
+    piece: readonly ExPolygon[] | null = null,
+  ): RegionFill {
     const o = this.#objects[k];
     const cfg = this.#setup.configs[region];
     const topLayers = o.topCounts ? o.topCounts[i] : o.cfg.topLayers;
     const bottomLayers = o.bottomCounts ? o.bottomCounts[i] : o.cfg.bottomLayers;
     const coveredAbove = inner.length ? o.top.window(i + 1, topLayers) : [];
     const coveredBelow = inner.length ? o.bottom.window(i - bottomLayers, bottomLayers) : [];
-    const skin = skinAreas(inner, coveredAbove, coveredBelow, topLayers, bottomLayers, w, cfg.topSkinPattern !== cfg.bottomSkinPattern);
+    const skin = skinAreas(
+      inner,
+      coveredAbove,
+      coveredBelow,
+      topLayers,
+      bottomLayers,
+      w,
+      cfg.topSkinPattern !== cfg.bottomSkinPattern,
+    );
     const bridge = i > 0 ? bridgeOf(skin.bottom, below, w) : null;
     // a bridge with two anchors is grown onto them (bridgeAnchor): that area is bottom skin, printed as bridge
     let bridgeFill: RegionFill['bridgeFill'];
@@ -324,7 +358,14 @@ export class RegionsRun {
    * Object k's islands of layer i.
    * @param levelsBelow the layer below as measured for the overhang levels of walls
    */
-  #islands(k: number, i: number, w: number, below: readonly ExPolygon[], belowGrown: readonly ExPolygon[], levelsBelow: BelowLevels): IslandRegions[] {
+  #islands(
+    k: number,
+    i: number,
+    w: number,
+    below: readonly ExPolygon[],
+    belowGrown: readonly ExPolygon[],
+    levelsBelow: BelowLevels,
+  ): IslandRegions[] {
     const section = this.#section(k, i);
     const pieces = this.#pieces(k, i, section);
     const configs = this.#setup.configs;
@@ -336,13 +377,15 @@ export class RegionsRun {
     }
     const out: IslandRegions[] = [];
     for (const group of groups.values()) {
-      const area = groups.size === 1 ? section : group.length === 1 ? group[0].area! : union(group.flatMap((p) => p.area!));
+      const area =
+        groups.size === 1 ? section : group.length === 1 ? group[0].area! : union(group.flatMap((p) => p.area!));
       const first = group[0].region;
       const irons = group.some((p) => this.#irons(k, i, configs[p.region]));
       const wallCfg = configs[first];
       for (const iw of computeWalls(area, wallCfg, w)) {
         // extra walls over the overhangs inside the walls that cannot bridge take their area from skin and infill
-        const extra = i > 0 && wallCfg.extraPerimetersOnOverhangs ? overhangWalls(iw.inner, below, w, wallCfg.walls) : null;
+        const extra =
+          i > 0 && wallCfg.extraPerimetersOnOverhangs ? overhangWalls(iw.inner, below, w, wallCfg.walls) : null;
         const inside = extra ? difference(iw.inner, extra.covered) : iw.inner;
         const fills: RegionFill[] = [];
         // the island's top surface, where a region of it irons
@@ -353,7 +396,8 @@ export class RegionsRun {
         }
         for (const p of group) {
           const inner = group.length === 1 ? inside : intersection(inside, p.area!);
-          if (inner.length || group.length === 1) fills.push(this.#fill(k, i, p.region, inner, below, w, iron, group.length === 1 ? null : p.area));
+          if (inner.length || group.length === 1)
+            fills.push(this.#fill(k, i, p.region, inner, below, w, iron, group.length === 1 ? null : p.area));
         }
         const main = fills.shift() ?? this.#fill(k, i, first, [], below, w);
         const island: IslandRegions = {
@@ -389,7 +433,13 @@ export class RegionsRun {
    * specks beside the main island dropped), one outer wall round each island left (laid with the object's own
    * wall settings, modifiers aside: a vase has no inside for them to change), and nothing inside it.
    */
-  #vaseIslands(k: number, i: number, w: number, belowGrown: readonly ExPolygon[], levelsBelow: BelowLevels): { islands: IslandRegions[]; droppedMm2: number } {
+  #vaseIslands(
+    k: number,
+    i: number,
+    w: number,
+    belowGrown: readonly ExPolygon[],
+    levelsBelow: BelowLevels,
+  ): { islands: IslandRegions[]; droppedMm2: number } {
     const o = this.#objects[k];
     const region = o.setup.regions[rangeAt(o.setup, this.#layers[i].sliceZ)][0];
     const cfg = this.#setup.configs[region];
@@ -426,7 +476,12 @@ export class RegionsRun {
     if (i === 0 || !(o.cfg.supportEnabled || o.enforcers.length) || this.#vase(i)) return [];
     const section = this.#section(k, i);
     const below = this.#section(k, i - 1);
-    let over = o.cfg.supportEnabled ? overhangOf(section, below, z.height, o.cfg, false, { any: islands.some((r) => r.unsupported.length > 0), grownUm }) : [];
+    let over = o.cfg.supportEnabled
+      ? overhangOf(section, below, z.height, o.cfg, false, {
+          any: islands.some((r) => r.unsupported.length > 0),
+          grownUm,
+        })
+      : [];
     const enforced = this.#volumes(o.enforcers, i);
     if (enforced.length) {
       // inside an enforcer every overhang is held, however steep
@@ -462,7 +517,11 @@ export class RegionsRun {
       overhangs.push(this.#overhang(k, i, own, w / 2));
     }
     this.#checkOverlaps(i);
-    const vase = this.#vase(i) ? (droppedMm2 > 0 ? { vase: true as const, vaseDroppedMm2: droppedMm2 } : { vase: true as const }) : {};
+    const vase = this.#vase(i)
+      ? droppedMm2 > 0
+        ? { vase: true as const, vaseDroppedMm2: droppedMm2 }
+        : { vase: true as const }
+      : {};
     let filled = 0;
     if (i === 0) for (const o of this.#objects) filled += o.first?.addedMm2 ?? 0;
     const repaired = filled > 0 ? { firstLayerFilledMm2: filled } : {};
@@ -473,11 +532,13 @@ export class RegionsRun {
   /** Refuse objects with different settings that share volume on layer i. */
   #checkOverlaps(i: number): void {
     for (const [a, b] of this.#setup.overlapPairs) {
-      const sa = this.#section(a, i), sb = this.#section(b, i);
+      const sa = this.#section(a, i),
+        sb = this.#section(b, i);
       if (!sa.length || !sb.length) continue;
       const shared = area(intersection(sa, sb)) / 1e6;
       if (shared > OVERLAP_MIN_MM2) {
-        const na = this.#setup.objects[a].name, nb = this.#setup.objects[b].name;
+        const na = this.#setup.objects[a].name,
+          nb = this.#setup.objects[b].name;
         throw new StrataError(
           'OVERLAPPING_OBJECTS',
           `objects "${na}" and "${nb}" overlap (${shared.toFixed(1)} mm² at Z ${this.#layers[i].z.toFixed(2)} mm) and have different settings or volumes of their own: move them apart, give them the same settings, or make one a modifier of the other`,
@@ -500,7 +561,8 @@ export class RegionsRun {
 export function layerSparse(layer: LayerRegions, regions?: (region: number) => boolean): ExPolygon[] {
   const all: ExPolygon[] = [];
   for (const island of layer.islands) {
-    for (const f of island.fills ? [island, ...island.fills] : [island]) if (!regions || regions(f.region)) all.push(...f.sparse);
+    for (const f of island.fills ? [island, ...island.fills] : [island])
+      if (!regions || regions(f.region)) all.push(...f.sparse);
   }
   return all.length > 1 ? union(all) : all;
 }

@@ -44,16 +44,19 @@ export function rangeAt(object: ObjectSetup, sliceZ: number): number {
 
 /** The setup of a plate of objects with no settings or volumes of their own (object k sliced from mesh k). */
 export function plainSetup(cfg: Config, objectCount = 1): PrintSetup {
-  const objects = Array.from({ length: objectCount }, (_, k): ObjectSetup => ({
-    name: `object ${k + 1}`,
-    parts: k,
-    negatives: [],
-    modifiers: [],
-    blockers: [],
-    enforcers: [],
-    config: 0,
-    ranges: [],
-    regions: [[0]],
-  }));
+  const objects = Array.from(
+    { length: objectCount },
+    (_, k): ObjectSetup => ({
+      name: `object ${k + 1}`,
+      parts: k,
+      negatives: [],
+      modifiers: [],
+      blockers: [],
+      enforcers: [],
+      config: 0,
+      ranges: [],
+      regions: [[0]],
+    }),
+  );
   return { configs: [cfg], objects, overlapPairs: [] };
 }

@@ -14,12 +14,24 @@ test('a side reaching out past the layer below: its outer wall (half a line in) 
   const outline = rect(0, 0, 10_000, 10_000);
   // the layer below ends `out` µm inside the right side: the outer wall's centreline, 200 µm in, has
   // (out - 200 + 200) / 400 = out / 400 of its line over nothing
-  for (const [out, level] of [[50, 0], [130, 1], [230, 2], [330, 3], [390, 3]] as const) {
+  for (const [out, level] of [
+    [50, 0],
+    [130, 1],
+    [230, 2],
+    [330, 3],
+    [390, 3],
+  ] as const) {
     const levels = overhangLevels(outline, new BelowLevels([rect(0, 0, 10_000 - out, 10_000)], W), W);
     const wall = { x: 10_000 - W / 2, y: 5_000 };
     assert.equal(levels === null ? 0 : levelAt(wall, levels), level, `${out} µm out`);
     // the sides over the layer below are on no level, the outer wall on them neither
-    if (levels) for (const p of [{ x: W / 2, y: 5_000 }, { x: 5_000, y: W / 2 }, { x: 5_000, y: 5_000 }]) assert.equal(levelAt(p, levels), 0);
+    if (levels)
+      for (const p of [
+        { x: W / 2, y: 5_000 },
+        { x: 5_000, y: W / 2 },
+        { x: 5_000, y: 5_000 },
+      ])
+        assert.equal(levelAt(p, levels), 0);
   }
 });
 

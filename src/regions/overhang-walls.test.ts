@@ -16,9 +16,13 @@ test('a cantilever held on one side: rings parallel to its free edges, ending in
   assert.ok(made && made.rings.length >= 4, `rings: ${made?.rings.length}`);
   // each ring reaches further out than the one printed before it
   const reach = made.rings.map((r) => maxX(r.paths));
-  for (let k = 1; k < reach.length; k++) assert.ok(reach[k] >= reach[k - 1] - 1, `ring ${k} reaches ${reach[k]} after ${reach[k - 1]}`);
+  for (let k = 1; k < reach.length; k++)
+    assert.ok(reach[k] >= reach[k - 1] - 1, `ring ${k} reaches ${reach[k]} after ${reach[k - 1]}`);
   // the last ring runs along the free end, half a line in
-  assert.ok(reach[reach.length - 1] > 20_000 - W && reach[reach.length - 1] <= 20_000 - W / 2, `${reach[reach.length - 1]}`);
+  assert.ok(
+    reach[reach.length - 1] > 20_000 - W && reach[reach.length - 1] <= 20_000 - W / 2,
+    `${reach[reach.length - 1]}`,
+  );
   // the rings' lines (not the gap fill's loops) start and end over the anchor: U shapes, never a dangling end
   for (const ring of made.rings.filter((r) => r.widths === null)) {
     for (const line of ring.paths) {
@@ -34,7 +38,10 @@ test('a cantilever held on one side: rings parallel to its free edges, ending in
 
 test('an overhang held on two sides bridges (no extra walls); nothing over air, nothing to do', () => {
   const inner = [rect(0, 0, 20_000, 4_000)];
-  assert.equal(overhangWalls(inner, [rect(-1_000, -1_000, 4_000, 5_000), rect(16_000, -1_000, 21_000, 5_000)], W, 2), null);
+  assert.equal(
+    overhangWalls(inner, [rect(-1_000, -1_000, 4_000, 5_000), rect(16_000, -1_000, 21_000, 5_000)], W, 2),
+    null,
+  );
   assert.equal(overhangWalls(inner, [rect(-1_000, -1_000, 21_000, 5_000)], W, 2), null);
   // a sliver over air along a side (thinner than half a line) rests on the wall beside it
   assert.equal(overhangWalls(inner, [rect(-1_000, 150, 21_000, 5_000)], W, 2), null);

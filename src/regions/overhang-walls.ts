@@ -45,7 +45,12 @@ export interface OverhangWalls {
  * @param below the section of the layer below, µm
  * @param walls the island's wall count (the anchor band is a line wider than they are)
  */
-export function overhangWalls(inner: readonly ExPolygon[], below: readonly ExPolygon[], lineWidthUm: number, walls: number): OverhangWalls | null {
+export function overhangWalls(
+  inner: readonly ExPolygon[],
+  below: readonly ExPolygon[],
+  lineWidthUm: number,
+  walls: number,
+): OverhangWalls | null {
   const w = lineWidthUm;
   if (inner.length === 0 || below.length === 0) return null;
   // slivers thinner than half a line rest on the walls beside them
@@ -85,7 +90,12 @@ function bridges(overhang: readonly ExPolygon[], anchoring: readonly ExPolygon[]
  * one more line, clipped to the piece, so that its lines end in the anchor; the strip the last one leaves
  * inside it filled as gaps are (gap-loops.ts). Null when no line is long enough.
  */
-function ringsOver(piece: ExPolygon, overhang: readonly ExPolygon[], anchoring: readonly ExPolygon[], w: number): OverhangWalls | null {
+function ringsOver(
+  piece: ExPolygon,
+  overhang: readonly ExPolygon[],
+  anchoring: readonly ExPolygon[],
+  w: number,
+): OverhangWalls | null {
   const reach = offset([piece], 1.1 * w);
   const clip = offset([piece], -0.1 * w);
   const minLength = MIN_LINE_WIDTHS * w;
@@ -101,7 +111,11 @@ function ringsOver(piece: ExPolygon, overhang: readonly ExPolygon[], anchoring: 
       const room = lines.length > 0 && offset(ring, -0.3 * w).length > 0;
       if (room) rings.push({ paths: lines, widths: null });
       const gaps = gapLoops(intersection(room ? offset(ring, -w / 2) : ring, clip), w);
-      if (gaps.length) rings.push({ paths: gaps.map((g) => [...g.loop, g.loop[0]]), widths: gaps.map((g) => new Float64Array(g.loop.length + 1).fill(g.widthUm / UM_PER_MM)) });
+      if (gaps.length)
+        rings.push({
+          paths: gaps.map((g) => [...g.loop, g.loop[0]]),
+          widths: gaps.map((g) => new Float64Array(g.loop.length + 1).fill(g.widthUm / UM_PER_MM)),
+        });
       ring = next;
       break;
     }
@@ -139,7 +153,8 @@ function joinEnds(lines: Polyline[], tolUm: number): Polyline[] {
   for (let i = 0; i < out.length; i++) {
     for (let j = 0; j < out.length; j++) {
       if (i === j) continue;
-      const a = out[i], b = out[j];
+      const a = out[i],
+        b = out[j];
       if (near(a[a.length - 1], b[0])) {
         out[i] = a.concat(b.slice(1));
         out.splice(j, 1);

@@ -20,10 +20,22 @@ test('no overhang within the angle, on the first layer, or for specks below supp
   assert.deepEqual(overhangOf([square(-200, -200, 10_400)], [square(0, 0, 10_000)], 0.2, S), []);
   assert.deepEqual(overhangOf([square(0, 0, 20_000)], [], 0.2, S, true), []);
   // a 0.6 × 0.6 mm speck (0.36 mm²) beside the part
-  assert.deepEqual(overhangOf([square(0, 0, 10_000), rect(12_000, 0, 12_600, 600)], [square(0, 0, 10_000)], 0.2, S), []);
+  assert.deepEqual(
+    overhangOf([square(0, 0, 10_000), rect(12_000, 0, 12_600, 600)], [square(0, 0, 10_000)], 0.2, S),
+    [],
+  );
   // …but a larger one is kept, and a steeper threshold keeps the 45° slope out too
-  assert.equal(overhangOf([square(0, 0, 10_000), rect(12_000, 0, 13_000, 1_000)], [square(0, 0, 10_000)], 0.2, S).length, 1);
-  assert.ok(overhangOf([square(-200, -200, 10_400)], [square(0, 0, 10_000)], 0.2, { ...S, supportThreshold: 30, supportMinArea: 0 }).length > 0);
+  assert.equal(
+    overhangOf([square(0, 0, 10_000), rect(12_000, 0, 13_000, 1_000)], [square(0, 0, 10_000)], 0.2, S).length,
+    1,
+  );
+  assert.ok(
+    overhangOf([square(-200, -200, 10_400)], [square(0, 0, 10_000)], 0.2, {
+      ...S,
+      supportThreshold: 30,
+      supportMinArea: 0,
+    }).length > 0,
+  );
 });
 
 test('a floating part (nothing below) is all overhang', () => {

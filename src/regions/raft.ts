@@ -19,9 +19,14 @@ export interface Raft {
 export function raftUnder(first: LayerRegions | undefined, cfg: Config): Raft {
   if (cfg.adhesionType !== 'raft' || !first) return { layers: [], zOffset: 0 };
   const footprint: ExPolygon[] = first.islands.map((i) => ({ outer: i.outline.outer, holes: [] }));
-  if (first.support) for (const a of [...first.support.body, ...first.support.roof, ...first.support.floor]) footprint.push({ outer: a.outer, holes: [] });
+  if (first.support)
+    for (const a of [...first.support.body, ...first.support.roof, ...first.support.floor])
+      footprint.push({ outer: a.outer, holes: [] });
   if (footprint.length === 0) return { layers: [], zOffset: 0 };
-  const grown = offset(union(footprint), cfg.raftMargin * UM_PER_MM, 'round').map((a) => ({ outer: a.outer, holes: [] }));
+  const grown = offset(union(footprint), cfg.raftMargin * UM_PER_MM, 'round').map((a) => ({
+    outer: a.outer,
+    holes: [],
+  }));
   const area = union(grown);
   const kinds: { kind: RaftArea['kind']; height: number }[] = [{ kind: 'base', height: cfg.raftBaseThickness }];
   for (let k = 0; k < cfg.raftInterfaceLayers; k++) kinds.push({ kind: 'interface', height: cfg.layerHeight });
@@ -31,7 +36,16 @@ export function raftUnder(first: LayerRegions | undefined, cfg: Config): Raft {
   kinds.forEach((k, index) => {
     const hUm = Math.round(k.height * UM_PER_MM);
     zUm += hUm;
-    layers.push({ index, z: zUm / UM_PER_MM, height: hUm / UM_PER_MM, sliceZ: NaN, islands: [], overhang: [], support: null, raft: { kind: k.kind, area } });
+    layers.push({
+      index,
+      z: zUm / UM_PER_MM,
+      height: hUm / UM_PER_MM,
+      sliceZ: NaN,
+      islands: [],
+      overhang: [],
+      support: null,
+      raft: { kind: k.kind, area },
+    });
   });
   return { layers, zOffset: (zUm + Math.round(cfg.raftAirGap * UM_PER_MM)) / UM_PER_MM };
 }

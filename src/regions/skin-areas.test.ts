@@ -5,7 +5,12 @@ import { area, intersection } from '../geometry/clip.js';
 import type { ExPolygon } from '../geometry/types.js';
 
 const sq = (x0: number, y0: number, s: number): ExPolygon => ({
-  outer: [{ x: x0, y: y0 }, { x: x0 + s, y: y0 }, { x: x0 + s, y: y0 + s }, { x: x0, y: y0 + s }],
+  outer: [
+    { x: x0, y: y0 },
+    { x: x0 + s, y: y0 },
+    { x: x0 + s, y: y0 + s },
+    { x: x0, y: y0 + s },
+  ],
   holes: [],
 });
 

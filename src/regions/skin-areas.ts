@@ -80,7 +80,8 @@ export class CoverWindows {
   #pair(a: number): ExPolygon[] {
     let p = this.#pairs.get(a);
     if (!p) {
-      const s0 = this.#sectionAt(a), s1 = this.#sectionAt(a + 1);
+      const s0 = this.#sectionAt(a),
+        s1 = this.#sectionAt(a + 1);
       p = s0.length && s1.length ? intersection(s0, s1) : [];
       this.#pairs.set(a, p);
     }
@@ -123,7 +124,9 @@ export function skinLayerCounts(heightsUm: ArrayLike<number>, thicknessMm: numbe
   // as ceil(t / h − 1e-6): a stack within a millionth of a layer of the thickness reaches it
   const need = thicknessMm * 1000;
   for (let i = 0; i < n; i++) {
-    let k = 0, sum = 0, reached = false;
+    let k = 0,
+      sum = 0,
+      reached = false;
     for (let j = i + dir; j >= 0 && j < n && !reached; j += dir) {
       k++;
       sum += heightsUm[j];

@@ -10,8 +10,12 @@ const W = 400;
 /** A strip `width` × `length` µm from `at`, along direction `deg`. */
 function strip(at: Pt, deg: number, length: number, width: number): ExPolygon {
   const a = (deg * Math.PI) / 180;
-  const u = { x: Math.cos(a), y: Math.sin(a) }, n = { x: -Math.sin(a), y: Math.cos(a) };
-  const p = (s: number, t: number) => ({ x: Math.round(at.x + s * u.x + t * n.x), y: Math.round(at.y + s * u.y + t * n.y) });
+  const u = { x: Math.cos(a), y: Math.sin(a) },
+    n = { x: -Math.sin(a), y: Math.cos(a) };
+  const p = (s: number, t: number) => ({
+    x: Math.round(at.x + s * u.x + t * n.x),
+    y: Math.round(at.y + s * u.y + t * n.y),
+  });
   return { outer: [p(0, 0), p(length, 0), p(length, width), p(0, width)], holes: [] };
 }
 
@@ -19,7 +23,12 @@ function strip(at: Pt, deg: number, length: number, width: number): ExPolygon {
  * Share of `region` that beads of the skin wall, skin lines and gap loops leave bare (round ends, exact widths),
  * less the slivers a few µm wide between neighbouring lines that rounding to whole µm leaves.
  */
-function bareShare(region: ExPolygon[], walls: Polygon[], lines: Polyline[], gaps: { loop: Polygon; widthUm: number }[]): number {
+function bareShare(
+  region: ExPolygon[],
+  walls: Polygon[],
+  lines: Polyline[],
+  gaps: { loop: Polygon; widthUm: number }[],
+): number {
   let bare = difference(region, strokeArea(lines, walls, W));
   for (const g of gaps) bare = difference(bare, strokeArea([], [g.loop], g.widthUm));
   return area(opening(bare, 10)) / area(region);
@@ -44,7 +53,7 @@ test('lines meeting the skin edge at a shallow angle: gap fill covers the wedges
   // what stays bare is the round-ended loops' corners; it sits near 1 % at 38-50° and moves by
   // ±0.1 point with µm changes of the offsets, so the bound leaves that room
   assert.ok(withGaps < 0.0125 && withGaps < without / 3, `bare with gap fill: ${withGaps} (without: ${without})`);
-  for (const g of gaps) assert.ok(g.widthUm >= 0.3 * W / 2 && g.widthUm <= W, `bead ${g.widthUm}`);
+  for (const g of gaps) assert.ok(g.widthUm >= (0.3 * W) / 2 && g.widthUm <= W, `bead ${g.widthUm}`);
 });
 
 test('a top strip narrower than a line width gets a loop covering at least 99 % of it', () => {

@@ -21,7 +21,10 @@ import { gapLoops, type GapLoop } from './gap-loops.js';
  * @param lineWidthUm the width of their beads, µm
  */
 export function skinGapFill(
-  exposed: readonly ExPolygon[], skinWalls: readonly Polygon[], skinLines: readonly Polyline[], lineWidthUm: number,
+  exposed: readonly ExPolygon[],
+  skinWalls: readonly Polygon[],
+  skinLines: readonly Polyline[],
+  lineWidthUm: number,
 ): GapLoop[] {
   if (exposed.length === 0) return [];
   const turn = flatteningTurn(skinLines);

@@ -157,20 +157,22 @@ export interface LayerRegions extends LayerZ {
  * full regions alive until the end cost ~9 % of the run in garbage collection.
  */
 export function outlinesOnly(layer: LayerRegions): LayerRegions {
-  const islands = layer.islands.map((i): IslandRegions => ({
-    object: i.object,
-    region: i.region,
-    outline: i.outline,
-    walls: [],
-    lostMm2: 0,
-    topSkin: [],
-    bottomSkin: [],
-    exposed: [],
-    bridge: [],
-    bridgeAngle: null,
-    sparse: [],
-    unsupported: [],
-  }));
+  const islands = layer.islands.map(
+    (i): IslandRegions => ({
+      object: i.object,
+      region: i.region,
+      outline: i.outline,
+      walls: [],
+      lostMm2: 0,
+      topSkin: [],
+      bottomSkin: [],
+      exposed: [],
+      bridge: [],
+      bridgeAngle: null,
+      sparse: [],
+      unsupported: [],
+    }),
+  );
   return { ...layer, islands };
 }
 

@@ -39,25 +39,33 @@ const WIDTH_EPS_MM = 1e-6;
 // ---------------------------------------------------------------- shapes (µm)
 
 function rotatePt(p: Pt, deg: number, c: Pt = { x: 0, y: 0 }): Pt {
-  const a = (deg * Math.PI) / 180, cs = Math.cos(a), sn = Math.sin(a);
-  const dx = p.x - c.x, dy = p.y - c.y;
+  const a = (deg * Math.PI) / 180,
+    cs = Math.cos(a),
+    sn = Math.sin(a);
+  const dx = p.x - c.x,
+    dy = p.y - c.y;
   return { x: Math.round(c.x + dx * cs - dy * sn), y: Math.round(c.y + dx * sn + dy * cs) };
 }
 
 function rotate(shape: ExPolygon, deg: number, c: Pt = { x: 0, y: 0 }): ExPolygon {
   if (deg === 0) return shape;
-  return { outer: shape.outer.map((p) => rotatePt(p, deg, c)), holes: shape.holes.map((h) => h.map((p) => rotatePt(p, deg, c))) };
+  return {
+    outer: shape.outer.map((p) => rotatePt(p, deg, c)),
+    holes: shape.holes.map((h) => h.map((p) => rotatePt(p, deg, c))),
+  };
 }
 
 /** A strip `lengthMm` long and `widthMm` wide centred on the origin along x, rotated by `deg`. */
 function strip(widthMm: number, deg = 0, lengthMm = 20): ExPolygon {
-  const w = Math.round(widthMm * MM), l = lengthMm * MM;
+  const w = Math.round(widthMm * MM),
+    l = lengthMm * MM;
   return rotate(rect(-l / 2, -Math.round(w / 2), l / 2, w - Math.round(w / 2)), deg);
 }
 
 /** A polygon from mm coordinates (counter-clockwise expected). */
 function poly(ptsMm: readonly [number, number][], holes: readonly (readonly [number, number][])[] = []): ExPolygon {
-  const ring = (r: readonly [number, number][]): Polygon => r.map(([x, y]) => ({ x: Math.round(x * MM), y: Math.round(y * MM) }));
+  const ring = (r: readonly [number, number][]): Polygon =>
+    r.map(([x, y]) => ({ x: Math.round(x * MM), y: Math.round(y * MM) }));
   return { outer: ring(ptsMm), holes: holes.map(ring) };
 }
 
@@ -145,7 +153,8 @@ function footprint(b: Bead): ExPolygon[] {
   };
   for (let e = 0; e < edges; e++) {
     const k = bucket(e);
-    const a = b.points[e], c = b.points[(e + 1) % n];
+    const a = b.points[e],
+      c = b.points[(e + 1) % n];
     if (k !== runBucket) {
       flush();
       runBucket = k;
@@ -200,18 +209,28 @@ function measureWalls(shape: ExPolygon, r: IslandWalls, lineMm = LINE_MM): Measu
   let sum = 0;
   for (const p of prints) sum += area(p);
   const out = difference(printed, offset([shape], 50, 'round'));
-  let minWidth = Infinity, maxWidth = -Infinity;
-  for (const b of beads) for (const w of b.widths) {
-    minWidth = Math.min(minWidth, w);
-    maxWidth = Math.max(maxWidth, w);
-  }
+  let minWidth = Infinity,
+    maxWidth = -Infinity;
+  for (const b of beads)
+    for (const w of b.widths) {
+      minWidth = Math.min(minWidth, w);
+      maxWidth = Math.max(maxWidth, w);
+    }
   return {
-    shapeMm2, beads, prints, printed, innerMm2, extrudedMm2: ext,
+    shapeMm2,
+    beads,
+    prints,
+    printed,
+    innerMm2,
+    extrudedMm2: ext,
     fill: (ext + innerMm2) / shapeMm2,
     overlap: (sum - area(printed)) / MM2 / shapeMm2,
     outside: area(out) / MM2 / shapeMm2,
     outsideMaxMm2: Math.max(0, ...out.map((p) => area([p]) / MM2)),
-    minWidth, maxWidth, lostMm2: r.lostMm2, res: [r],
+    minWidth,
+    maxWidth,
+    lostMm2: r.lostMm2,
+    res: [r],
   };
 }
 
@@ -239,16 +258,28 @@ const SVG_DIR = process.env.STRATA_WALL_SVG;
 function draw(label: string, shape: ExPolygon, m: Measure): void {
   if (!SVG_DIR) return;
   const pts = shape.outer;
-  const x0 = Math.min(...pts.map((p) => p.x)) - 500, x1 = Math.max(...pts.map((p) => p.x)) + 500;
-  const y0 = Math.min(...pts.map((p) => p.y)) - 500, y1 = Math.max(...pts.map((p) => p.y)) + 500;
+  const x0 = Math.min(...pts.map((p) => p.x)) - 500,
+    x1 = Math.max(...pts.map((p) => p.x)) + 500;
+  const y0 = Math.min(...pts.map((p) => p.y)) - 500,
+    y1 = Math.max(...pts.map((p) => p.y)) + 500;
   const ring = (r: readonly Pt[]) => 'M' + r.map((p) => `${p.x} ${-p.y}`).join('L') + 'Z';
-  const areaPath = (as: readonly ExPolygon[], style: string) => `<path fill-rule="evenodd" ${style} d="${as.map((a) => ring(a.outer) + a.holes.map(ring).join('')).join('')}"/>`;
+  const areaPath = (as: readonly ExPolygon[], style: string) =>
+    `<path fill-rule="evenodd" ${style} d="${as.map((a) => ring(a.outer) + a.holes.map(ring).join('')).join('')}"/>`;
   const gaps = opening(difference([shape], union(m.printed, m.res[0].inner)), 25);
-  const lines = m.beads.map((b) => `<path fill="none" stroke="${b.closed ? 'blue' : 'red'}" stroke-width="15" d="M${b.points.map((p) => `${p.x} ${-p.y}`).join('L')}${b.closed ? 'Z' : ''}"/>`).join('');
-  const svg = `<svg xmlns="http://www.w3.org/2000/svg" viewBox="${x0} ${-y1} ${x1 - x0} ${y1 - y0}" width="${Math.min(2000, (x1 - x0) / 5)}">` +
-    areaPath([shape], 'fill="#eee" stroke="black" stroke-width="10"') + areaPath(m.res[0].inner, 'fill="#cfc"') +
+  const lines = m.beads
+    .map(
+      (b) =>
+        `<path fill="none" stroke="${b.closed ? 'blue' : 'red'}" stroke-width="15" d="M${b.points.map((p) => `${p.x} ${-p.y}`).join('L')}${b.closed ? 'Z' : ''}"/>`,
+    )
+    .join('');
+  const svg =
+    `<svg xmlns="http://www.w3.org/2000/svg" viewBox="${x0} ${-y1} ${x1 - x0} ${y1 - y0}" width="${Math.min(2000, (x1 - x0) / 5)}">` +
+    areaPath([shape], 'fill="#eee" stroke="black" stroke-width="10"') +
+    areaPath(m.res[0].inner, 'fill="#cfc"') +
     m.prints.map((p) => areaPath(p, 'fill="orange" fill-opacity="0.35" stroke="#a60" stroke-width="5"')).join('') +
-    lines + areaPath(gaps, 'fill="magenta"') + '</svg>';
+    lines +
+    areaPath(gaps, 'fill="magenta"') +
+    '</svg>';
   mkdirSync(SVG_DIR, { recursive: true });
   writeFileSync(`${SVG_DIR}/${label.replace(/[^\w.-]+/g, '_')}.svg`, svg);
 }
@@ -264,9 +295,14 @@ function widthsInRange(m: Measure): boolean {
 
 test('the measures see what they should: a bead off the part, a doubled bead, a missing bead, a width out of range', () => {
   const shape = strip(0.4);
-  const line = (dy: number): Pt[] => [{ x: -9800, y: dy }, { x: 9800, y: dy }];
+  const line = (dy: number): Pt[] => [
+    { x: -9800, y: dy },
+    { x: 9800, y: dy },
+  ];
   const walls = (paths: Pt[][], w: number): IslandWalls => ({
-    outline: shape, inner: [], lostMm2: 0,
+    outline: shape,
+    inner: [],
+    lostMm2: 0,
     walls: [{ role: 'wall', wall: 0, closed: false, paths, widths: paths.map((p) => Float64Array.from(p, () => w)) }],
   });
   assert.equal(CFG2.walls, 2, 'default settings: two walls');
@@ -289,7 +325,10 @@ test('the measures see what they should: a bead off the part, a doubled bead, a 
 
 const STRIP_WIDTHS = Array.from({ length: 39 }, (_, k) => (2 + k) * 0.05).map((w) => Math.round(w * 1000) / 1000);
 const ANGLES = [0, 30];
-const WALLS: [string, Config][] = [['2 walls', CFG2], ['3 walls', CFG3]];
+const WALLS: [string, Config][] = [
+  ['2 walls', CFG2],
+  ['3 walls', CFG3],
+];
 
 const stripCache = new Map<string, Measure>();
 function stripMeasure(widthMm: number, deg: number, cfg: Config): Measure {
@@ -324,7 +363,8 @@ for (const [name, cfg] of WALLS) {
         if (!(m.lostMm2 >= 0.5 * m.shapeMm2)) return `no bead, but lostMm2 ${f3(m.lostMm2)} of ${f3(m.shapeMm2)} mm²`;
         return null;
       }
-      if (!widthsInRange(m)) return `widths ${f3(m.minWidth)}..${f3(m.maxWidth)} mm outside [${MIN_BEAD_MM}, ${MAX_BEAD_MM}]`;
+      if (!widthsInRange(m))
+        return `widths ${f3(m.minWidth)}..${f3(m.maxWidth)} mm outside [${MIN_BEAD_MM}, ${MAX_BEAD_MM}]`;
       return null;
     });
   });
@@ -342,7 +382,9 @@ for (const [name, cfg] of WALLS) {
     everyStrip(cfg, (m, w, deg) => {
       rows.push(`${w}@${deg}: ${pct(m.fill - 1)}`);
       if (w < MIN_BEAD_MM - 1e-9) return null;
-      return Math.abs(m.fill - 1) <= 0.08 ? null : `extruded ${f3(m.extrudedMm2)} + inner ${f3(m.innerMm2)} = ${pct(m.fill)} of ${f3(m.shapeMm2)} mm²`;
+      return Math.abs(m.fill - 1) <= 0.08
+        ? null
+        : `extruded ${f3(m.extrudedMm2)} + inner ${f3(m.innerMm2)} = ${pct(m.fill)} of ${f3(m.shapeMm2)} mm²`;
     });
     report(`fill error, ${name}:`, rows.join('  '));
   });
@@ -367,12 +409,13 @@ for (const [name, cfg] of WALLS) {
 }
 
 /** The strip's middle line is as wide as the strip (the file comment's "as wide as the strip there"). */
-test('strips 0.25-0.75 mm, one middle line: its width in the middle matches the strip within 3 % (the medial axis\'s accuracy)', () => {
+test("strips 0.25-0.75 mm, one middle line: its width in the middle matches the strip within 3 % (the medial axis's accuracy)", () => {
   const rows: string[] = [];
   everyStrip(CFG2, (m, w, deg) => {
     if (w < 0.25 - 1e-9 || w > 0.75 + 1e-9) return null;
     const open = m.beads.filter((b) => !b.closed);
-    if (open.length !== 1 || m.beads.length !== 1) return `${m.beads.length} beads, ${open.length} open: not one middle line`;
+    if (open.length !== 1 || m.beads.length !== 1)
+      return `${m.beads.length} beads, ${open.length} open: not one middle line`;
     const b = open[0];
     const mid = b.widths[Math.floor(b.widths.length / 2)];
     rows.push(`${w}@${deg}: ${f3(mid)} (${pct(mid / w - 1)})`);
@@ -384,8 +427,22 @@ test('strips 0.25-0.75 mm, one middle line: its width in the middle matches the 
 // ---------------------------------------------------------------- wedges
 
 const WEDGES: [string, ExPolygon][] = [
-  ['a 20 mm taper from 0 to 2 mm', poly([[0, 0], [20, -1], [20, 1]])],
-  ['a 15° wedge 20 mm long', poly([[0, 0], [20, -20 * Math.tan((7.5 * Math.PI) / 180)], [20, 20 * Math.tan((7.5 * Math.PI) / 180)]])],
+  [
+    'a 20 mm taper from 0 to 2 mm',
+    poly([
+      [0, 0],
+      [20, -1],
+      [20, 1],
+    ]),
+  ],
+  [
+    'a 15° wedge 20 mm long',
+    poly([
+      [0, 0],
+      [20, -20 * Math.tan((7.5 * Math.PI) / 180)],
+      [20, 20 * Math.tan((7.5 * Math.PI) / 180)],
+    ]),
+  ],
 ];
 
 for (const [name, cfg] of WALLS) {
@@ -394,7 +451,9 @@ for (const [name, cfg] of WALLS) {
       const m = measure(shape, cfg);
       draw(`${shapeName}, ${name}`, shape, m);
       const cov = coverage(m, thickerThan(shape, 0.2));
-      report(`${shapeName}, ${name}: coverage ${pct(cov)}, outside ${pct(m.outside)}, widths ${f3(m.minWidth)}..${f3(m.maxWidth)}, fill ${pct(m.fill)}, overlap ${pct(m.overlap)}, gap ${f3(largestGapMm2(m, thickerThan(shape, 0.2)))} mm²`);
+      report(
+        `${shapeName}, ${name}: coverage ${pct(cov)}, outside ${pct(m.outside)}, widths ${f3(m.minWidth)}..${f3(m.maxWidth)}, fill ${pct(m.fill)}, overlap ${pct(m.overlap)}, gap ${f3(largestGapMm2(m, thickerThan(shape, 0.2)))} mm²`,
+      );
       assert.ok(widthsInRange(m), `widths ${f3(m.minWidth)}..${f3(m.maxWidth)} mm`);
       assert.ok(cov >= 0.85, `coverage ${pct(cov)}`);
       assert.ok(m.outside <= 0.02, `outside ${pct(m.outside)}`);
@@ -412,7 +471,10 @@ function tube(t: number): ExPolygon {
 
 const RINGS: [string, ExPolygon][] = [
   ...[0.3, 0.5, 1.0, 1.7].map((t): [string, ExPolygon] => [`a square tube with ${t} mm walls`, tube(t)]),
-  ['a circular ring 0.6 mm thick', { outer: disc(0, 0, 5 * MM, 128).outer, holes: [cw(disc(0, 0, 4.4 * MM, 128).outer)] }],
+  [
+    'a circular ring 0.6 mm thick',
+    { outer: disc(0, 0, 5 * MM, 128).outer, holes: [cw(disc(0, 0, 4.4 * MM, 128).outer)] },
+  ],
 ];
 
 for (const [name, cfg] of WALLS) {
@@ -420,18 +482,27 @@ for (const [name, cfg] of WALLS) {
     test(`${shapeName}, ${name}: only closed loops (≥ 3 points, not repeating the first), widths in range, area within 5 %`, () => {
       const m = measure(shape, cfg);
       draw(`${shapeName}, ${name}`, shape, m);
-      report(`${shapeName}, ${name}: ${m.beads.length} beads (${m.beads.filter((b) => !b.closed).length} open), fill ${pct(m.fill)}, widths ${f3(m.minWidth)}..${f3(m.maxWidth)}, overlap ${pct(m.overlap)}, outside ${pct(m.outside)}, coverage ${pct(coverage(m, [shape]))}`);
+      report(
+        `${shapeName}, ${name}: ${m.beads.length} beads (${m.beads.filter((b) => !b.closed).length} open), fill ${pct(m.fill)}, widths ${f3(m.minWidth)}..${f3(m.maxWidth)}, overlap ${pct(m.overlap)}, outside ${pct(m.outside)}, coverage ${pct(coverage(m, [shape]))}`,
+      );
       assert.ok(m.beads.length > 0, 'walls');
       for (const set of m.res[0].walls) {
-        assert.ok(set.closed, `wall ${set.wall}: a ring of even thickness has no open line (${set.paths.length} paths, lengths ${set.paths.map((p) => p.length).join(', ')})`);
+        assert.ok(
+          set.closed,
+          `wall ${set.wall}: a ring of even thickness has no open line (${set.paths.length} paths, lengths ${set.paths.map((p) => p.length).join(', ')})`,
+        );
         for (const p of set.paths) {
           assert.ok(p.length >= 3, `a closed loop of ${p.length} points`);
-          const a = p[0], b = p[p.length - 1];
+          const a = p[0],
+            b = p[p.length - 1];
           assert.ok(a.x !== b.x || a.y !== b.y, 'a closed loop repeats its first point');
         }
       }
       assert.ok(widthsInRange(m), `widths ${f3(m.minWidth)}..${f3(m.maxWidth)} mm`);
-      assert.ok(Math.abs(m.fill - 1) <= 0.05, `extruded ${f3(m.extrudedMm2)} + inner ${f3(m.innerMm2)} mm² = ${pct(m.fill)} of ${f3(m.shapeMm2)} mm²`);
+      assert.ok(
+        Math.abs(m.fill - 1) <= 0.05,
+        `extruded ${f3(m.extrudedMm2)} + inner ${f3(m.innerMm2)} mm² = ${pct(m.fill)} of ${f3(m.shapeMm2)} mm²`,
+      );
       assert.ok(m.outside <= 0.02, `outside ${pct(m.outside)}`);
     });
   }
@@ -445,12 +516,17 @@ const STAR = one(union([0, 72, 144, 216, 288].map((deg) => rotate(rect(0, -250, 
 const TEE = one(union([rect(-10 * MM, -300, 10 * MM, 300), rect(-300, 0, 300, 10 * MM)]));
 
 for (const [name, cfg] of WALLS) {
-  for (const [shapeName, shape] of [['a star of five 0.5 mm arms', STAR], ['a T junction of two 0.6 mm strips', TEE]] as const) {
+  for (const [shapeName, shape] of [
+    ['a star of five 0.5 mm arms', STAR],
+    ['a T junction of two 0.6 mm strips', TEE],
+  ] as const) {
     test(`${shapeName}, ${name}: ≥ 90 % covered, widths in range, nothing outside`, () => {
       const m = measure(shape, cfg);
       draw(`${shapeName}, ${name}`, shape, m);
       const cov = coverage(m, [shape]);
-      report(`${shapeName}, ${name}: coverage ${pct(cov)}, outside ${pct(m.outside)}, widths ${f3(m.minWidth)}..${f3(m.maxWidth)}, fill ${pct(m.fill)}, overlap ${pct(m.overlap)}, largest gap ${f3(largestGapMm2(m, [shape]))} mm²`);
+      report(
+        `${shapeName}, ${name}: coverage ${pct(cov)}, outside ${pct(m.outside)}, widths ${f3(m.minWidth)}..${f3(m.maxWidth)}, fill ${pct(m.fill)}, overlap ${pct(m.overlap)}, largest gap ${f3(largestGapMm2(m, [shape]))} mm²`,
+      );
       assert.ok(widthsInRange(m), `widths ${f3(m.minWidth)}..${f3(m.maxWidth)} mm`);
       assert.ok(cov >= 0.9, `coverage ${pct(cov)}`);
       assert.ok(m.outside <= 0.02, `outside ${pct(m.outside)}`);
@@ -478,11 +554,13 @@ const TODO_TRANSITION =
 const TODO_POINT_AXIS =
   'known limit: a piece whose medial axis is one point gets a loop half its thickness wide (or widens the walls beside ' +
   'it); under 2 × minBeadWidth that loop is a minBeadWidth dot larger than the pin, and a pocket between a small ' +
-  'hole\'s walls and the outer walls can stay (0.11 mm²)';
+  "hole's walls and the outer walls can stay (0.11 mm²)";
 
 /** A 6 × 6 mm block with a `t` mm fin `l` mm long standing out of its right side, centred. */
 function blockWithFin(t: number, l: number, block = 6): ExPolygon {
-  const B = block * MM, T = Math.round(t * MM), L = Math.round(l * MM);
+  const B = block * MM,
+    T = Math.round(t * MM),
+    L = Math.round(l * MM);
   return one(union([rect(0, 0, B, B), rect(B - 10, B / 2 - Math.round(T / 2), B + L, B / 2 - Math.round(T / 2) + T)]));
 }
 
@@ -490,7 +568,9 @@ function blockWithFin(t: number, l: number, block = 6): ExPolygon {
 function regression(shape: ExPolygon, cfg: Config, label: string): Measure {
   const m = measure(shape, cfg);
   draw(label, shape, m);
-  report(`${label}: beads ${m.beads.length}, widths ${f3(m.minWidth)}..${f3(m.maxWidth)}, fill ${pct(m.fill)}, overlap ${pct(m.overlap)}, outside ${pct(m.outside)}, coverage ${pct(coverage(m, [shape]))}, largest gap ${f3(largestGapMm2(m, [shape]))} mm², lost ${f3(m.lostMm2)} mm²`);
+  report(
+    `${label}: beads ${m.beads.length}, widths ${f3(m.minWidth)}..${f3(m.maxWidth)}, fill ${pct(m.fill)}, overlap ${pct(m.overlap)}, outside ${pct(m.outside)}, coverage ${pct(coverage(m, [shape]))}, largest gap ${f3(largestGapMm2(m, [shape]))} mm², lost ${f3(m.lostMm2)} mm²`,
+  );
   assert.ok(widthsInRange(m), `${label}: widths ${f3(m.minWidth)}..${f3(m.maxWidth)} mm`);
   assert.ok(m.outside <= 0.02, `${label}: ${pct(m.outside)} outside`);
   return m;
@@ -521,12 +601,16 @@ for (const [name, cfg] of WALLS) {
       // the fin's line: the open bead right of the block; the block's walls: the closed ones
       const fin = m.beads.filter((b) => !b.closed && b.points.some((p) => p.x > 7 * MM));
       const walls = m.beads.filter((b) => b.closed);
-      const finPrint = union(fin.flatMap(footprint)), wallPrint = union(walls.flatMap(footprint));
+      const finPrint = union(fin.flatMap(footprint)),
+        wallPrint = union(walls.flatMap(footprint));
       const bond = area(intersection(finPrint, wallPrint)) / MM2;
       const reach = Math.min(...fin.flatMap((b) => b.points.map((p) => p.x))) / MM;
-      report(`fin ${t} mm, ${name}: line starts at x = ${f3(reach)} mm (block edge 6 mm), overlap with the walls ${f3(bond)} mm²`);
+      report(
+        `fin ${t} mm, ${name}: line starts at x = ${f3(reach)} mm (block edge 6 mm), overlap with the walls ${f3(bond)} mm²`,
+      );
       if (fin.length !== 1) bad.push(`fin ${t} mm: ${fin.length} lines`);
-      else if (reach > 6 + t / 4) bad.push(`fin ${t} mm: its line stops ${f3(reach - 6)} mm short of the block (bond ${f3(bond)} mm²)`);
+      else if (reach > 6 + t / 4)
+        bad.push(`fin ${t} mm: its line stops ${f3(reach - 6)} mm short of the block (bond ${f3(bond)} mm²)`);
     }
     assert.deepEqual(bad, []);
   });
@@ -535,7 +619,8 @@ for (const [name, cfg] of WALLS) {
     const shape = one(union([rect(-10 * MM, -300, 0, 300), rect(-10, -600, 10 * MM, 600)]));
     const m = regression(shape, cfg, `step 0.6 → 1.2 mm, ${name}`);
     const step = intersection([shape], [rect(-1.5 * MM, -MM, 1.5 * MM, MM)]);
-    const cov = coverage(m, step), gap = largestGapMm2(m, step);
+    const cov = coverage(m, step),
+      gap = largestGapMm2(m, step);
     report(`  step: coverage ${pct(cov)}, largest gap ${f3(gap)} mm²`);
     assert.ok(cov >= 0.93, `step ${pct(cov)} covered`);
     assert.ok(gap <= 0.03, `a ${f3(gap)} mm² hole at the step`);
@@ -549,7 +634,11 @@ for (const [name, cfg] of WALLS) {
       ['0.4 mm disc', disc(5 * MM, 0, 200, 24)],
       ['0.25 × 1 mm pin', rect(8 * MM, 0, 8.25 * MM, MM)],
     ];
-    const res = variableWalls(islands.map(([, s]) => s), cfg, LINE_UM);
+    const res = variableWalls(
+      islands.map(([, s]) => s),
+      cfg,
+      LINE_UM,
+    );
     assert.equal(res.length, islands.length, 'one result per island');
     const bad: string[] = [];
     islands.forEach(([label, shape], i) => {
@@ -562,12 +651,21 @@ for (const [name, cfg] of WALLS) {
     assert.deepEqual(bad, []);
   });
 
-  test(`regression, ${name}: a tiny 0.15 mm pin (thicker than minFeatureSize) gets a line, and never vanishes unreported`, { todo: TODO_POINT_AXIS }, () => {
+  test(`regression, ${name}: a tiny 0.15 mm pin (thicker than minFeatureSize) gets a line, and never vanishes unreported`, {
+    todo: TODO_POINT_AXIS,
+  }, () => {
     const bad: string[] = [];
-    for (const [label, shape] of [['0.15 mm disc', disc(0, 0, 75, 16)], ['0.15 × 0.6 mm pin', rect(0, 0, 150, 600)]] as const) {
+    for (const [label, shape] of [
+      ['0.15 mm disc', disc(0, 0, 75, 16)],
+      ['0.15 × 0.6 mm pin', rect(0, 0, 150, 600)],
+    ] as const) {
       const m = regression(shape, cfg, `${label}, ${name}`);
-      if (m.beads.length === 0 && m.lostMm2 < 0.5 * m.shapeMm2) bad.push(`${label}: nothing printed and lost only ${f3(m.lostMm2)} of ${f3(m.shapeMm2)} mm²`);
-      else if (m.beads.length === 0) bad.push(`${label}: thicker than minFeatureSize (${MIN_FEATURE_MM} mm) but no line (lost ${f3(m.lostMm2)} mm²)`);
+      if (m.beads.length === 0 && m.lostMm2 < 0.5 * m.shapeMm2)
+        bad.push(`${label}: nothing printed and lost only ${f3(m.lostMm2)} of ${f3(m.shapeMm2)} mm²`);
+      else if (m.beads.length === 0)
+        bad.push(
+          `${label}: thicker than minFeatureSize (${MIN_FEATURE_MM} mm) but no line (lost ${f3(m.lostMm2)} mm²)`,
+        );
     }
     assert.deepEqual(bad, []);
   });
@@ -580,22 +678,35 @@ for (const [name, cfg] of WALLS) {
   });
 
   test(`regression, ${name}: no zig-zag over-extrusion in slightly tapered walls (0.35 → 0.45, 0.7 → 0.9, 1.1 → 1.3 mm over 20 mm)`, () => {
-    for (const [a, b] of [[0.7, 0.9], [1.1, 1.3], [0.35, 0.45]]) {
-      const shape = poly([[-10, -a / 2], [10, -b / 2], [10, b / 2], [-10, a / 2]]);
+    for (const [a, b] of [
+      [0.7, 0.9],
+      [1.1, 1.3],
+      [0.35, 0.45],
+    ]) {
+      const shape = poly([
+        [-10, -a / 2],
+        [10, -b / 2],
+        [10, b / 2],
+        [-10, a / 2],
+      ]);
       const m = regression(shape, cfg, `taper ${a} → ${b} mm, ${name}`);
       // over-extrusion: no more plastic than the taper holds, and no bead on another
       assert.ok(m.fill <= 1.03, `taper ${a} → ${b}: extruded + inner ${pct(m.fill)} of the area`);
       assert.ok(m.fill >= 0.92, `taper ${a} → ${b}: extruded + inner only ${pct(m.fill)} of the area`);
       assert.ok(m.overlap <= 0.03, `taper ${a} → ${b}: overlap ${pct(m.overlap)}`);
       // zig-zag: open lines turn no more than a few degrees along the taper (ends excepted)
-      let worst = 0, pieces = 0;
+      let worst = 0,
+        pieces = 0;
       for (const bead of m.beads) {
         if (bead.closed) continue;
         pieces++;
         let turn = 0;
         for (let i = 1; i + 1 < bead.points.length; i++) {
-          const p = bead.points[i - 1], q = bead.points[i], r = bead.points[i + 1];
-          const a1 = Math.atan2(q.y - p.y, q.x - p.x), a2 = Math.atan2(r.y - q.y, r.x - q.x);
+          const p = bead.points[i - 1],
+            q = bead.points[i],
+            r = bead.points[i + 1];
+          const a1 = Math.atan2(q.y - p.y, q.x - p.x),
+            a2 = Math.atan2(r.y - q.y, r.x - q.x);
           let d = Math.abs(a2 - a1);
           if (d > Math.PI) d = 2 * Math.PI - d;
           turn += d;
@@ -608,57 +719,99 @@ for (const [name, cfg] of WALLS) {
     }
   });
 
-  test(`regression, ${name}: no hole where a taper's middle line turns into a loop (0.7 → 0.9 mm, one line to two)`, { todo: TODO_TRANSITION }, () => {
-    const shape = poly([[-10, -0.35], [10, -0.45], [10, 0.45], [-10, 0.35]]);
+  test(`regression, ${name}: no hole where a taper's middle line turns into a loop (0.7 → 0.9 mm, one line to two)`, {
+    todo: TODO_TRANSITION,
+  }, () => {
+    const shape = poly([
+      [-10, -0.35],
+      [10, -0.45],
+      [10, 0.45],
+      [-10, 0.35],
+    ]);
     const m = measure(shape, cfg);
     const gap = largestGapMm2(m, [shape]);
     // one bead's round end in a square corner leaves (1 - π/4)·(w/2)², 0.034 mm² at 0.8 mm: more is a hole
     const corner = (1 - Math.PI / 4) * 0.4 ** 2;
-    report(`taper 0.7 → 0.9 mm transition, ${name}: largest gap ${f3(gap)} mm² (one round end's corner ${f3(corner)} mm²)`);
+    report(
+      `taper 0.7 → 0.9 mm transition, ${name}: largest gap ${f3(gap)} mm² (one round end's corner ${f3(corner)} mm²)`,
+    );
     assert.ok(gap <= corner, `a ${f3(gap)} mm² hole where the line meets the loop`);
   });
 
   test(`regression, ${name}: walls follow narrow slots (0.3 and 0.6 mm wide, 4 mm deep) instead of bridging them`, () => {
     // an 8 × 8 mm block with two slots cut in from the top
-    const block = one(difference([rect(0, 0, 8 * MM, 8 * MM)], [rect(2 * MM, 4 * MM, 2.3 * MM, 9 * MM), rect(5 * MM, 4 * MM, 5.6 * MM, 9 * MM)]));
+    const block = one(
+      difference(
+        [rect(0, 0, 8 * MM, 8 * MM)],
+        [rect(2 * MM, 4 * MM, 2.3 * MM, 9 * MM), rect(5 * MM, 4 * MM, 5.6 * MM, 9 * MM)],
+      ),
+    );
     const m = regression(block, cfg, `slotted block, ${name}`);
-    for (const [x0, x1] of [[2 * MM, 2.3 * MM], [5 * MM, 5.6 * MM]]) {
+    for (const [x0, x1] of [
+      [2 * MM, 2.3 * MM],
+      [5 * MM, 5.6 * MM],
+    ]) {
       const slot = rect(x0 + 50, 4 * MM + 50, x1 - 50, 8 * MM);
       const inSlot = area(intersection(m.printed, [slot])) / MM2;
       assert.ok(inSlot <= 0.01, `${f3(inSlot)} mm² printed inside the ${(x1 - x0) / MM} mm slot`);
     }
     // the material between and beside the slots is printed
-    const cov = coverage(m, [block]), gap = largestGapMm2(m, [block]);
+    const cov = coverage(m, [block]),
+      gap = largestGapMm2(m, [block]);
     assert.ok(cov >= 0.97, `${pct(cov)} covered`);
     // a 0.8 mm bead's round end in a square pocket leaves (1 - π/4)·0.4² = 0.034 mm² in each corner
     assert.ok(gap <= 0.05, `a ${f3(gap)} mm² hole`);
   });
 
   test(`regression, ${name}: small holes (0.4 and 1 mm) stay open, the walls round them whole`, () => {
-    const plate: ExPolygon = { outer: rect(0, 0, 6 * MM, 6 * MM).outer, holes: [cw(disc(1.5 * MM, 3 * MM, 200, 24).outer), cw(disc(4 * MM, 3 * MM, 500, 48).outer)] };
+    const plate: ExPolygon = {
+      outer: rect(0, 0, 6 * MM, 6 * MM).outer,
+      holes: [cw(disc(1.5 * MM, 3 * MM, 200, 24).outer), cw(disc(4 * MM, 3 * MM, 500, 48).outer)],
+    };
     const m = regression(plate, cfg, `plate with small holes, ${name}`);
-    for (const [cx, r] of [[1.5 * MM, 200], [4 * MM, 500]]) {
+    for (const [cx, r] of [
+      [1.5 * MM, 200],
+      [4 * MM, 500],
+    ]) {
       const inHole = area(intersection(m.printed, [disc(cx, 3 * MM, r - 50, 24)])) / MM2;
       assert.ok(inHole <= 0.005, `${f3(inHole)} mm² printed inside the ${(2 * r) / MM} mm hole`);
     }
     assert.ok(coverage(m, [plate]) >= 0.97, `${pct(coverage(m, [plate]))} covered`);
   });
 
-  test(`regression, ${name}: no pocket left where a small hole's walls meet the outer walls (1.3 mm of material between)`, { todo: TODO_POINT_AXIS }, () => {
-    const plate: ExPolygon = { outer: rect(0, 0, 6 * MM, 6 * MM).outer, holes: [cw(disc(1.5 * MM, 3 * MM, 200, 24).outer), cw(disc(4 * MM, 3 * MM, 500, 48).outer)] };
+  test(`regression, ${name}: no pocket left where a small hole's walls meet the outer walls (1.3 mm of material between)`, {
+    todo: TODO_POINT_AXIS,
+  }, () => {
+    const plate: ExPolygon = {
+      outer: rect(0, 0, 6 * MM, 6 * MM).outer,
+      holes: [cw(disc(1.5 * MM, 3 * MM, 200, 24).outer), cw(disc(4 * MM, 3 * MM, 500, 48).outer)],
+    };
     const m = measure(plate, cfg);
     const neck = intersection([plate], [rect(0, 2 * MM, 1.3 * MM, 4 * MM)]);
-    const gap = largestGapMm2(m, neck), cov = coverage(m, neck);
-    report(`pocket by the 0.4 mm hole, ${name}: neck coverage ${pct(cov)}, largest gap ${f3(gap)} mm², lost ${f3(m.lostMm2)} mm²`);
-    assert.ok(gap <= 0.03 || m.lostMm2 >= gap, `a ${f3(gap)} mm² pocket in the neck, unreported (lost ${f3(m.lostMm2)} mm²)`);
+    const gap = largestGapMm2(m, neck),
+      cov = coverage(m, neck);
+    report(
+      `pocket by the 0.4 mm hole, ${name}: neck coverage ${pct(cov)}, largest gap ${f3(gap)} mm², lost ${f3(m.lostMm2)} mm²`,
+    );
+    assert.ok(
+      gap <= 0.03 || m.lostMm2 >= gap,
+      `a ${f3(gap)} mm² pocket in the neck, unreported (lost ${f3(m.lostMm2)} mm²)`,
+    );
     assert.ok(gap <= 0.03, `a ${f3(gap)} mm² pocket in the neck (coverage ${pct(cov)})`);
   });
 
   test(`regression, ${name}: a very sharp 3° spike (alone and on a block) does not crash, stays inside, is covered where thicker than 0.2 mm`, () => {
     const half = 10 * Math.tan((1.5 * Math.PI) / 180);
-    const spike = poly([[0, 0], [10, -half], [10, half]]);
+    const spike = poly([
+      [0, 0],
+      [10, -half],
+      [10, half],
+    ]);
     const onBlock = one(union([spike, rect(10 * MM - 10, -2 * MM, 14 * MM, 2 * MM)]));
-    for (const [label, shape] of [['3° spike', spike], ['3° spike on a block', onBlock]] as const) {
+    for (const [label, shape] of [
+      ['3° spike', spike],
+      ['3° spike on a block', onBlock],
+    ] as const) {
       const m = regression(shape, cfg, `${label}, ${name}`);
       const region = thickerThan(shape, 0.2);
       const cov = coverage(m, region);
@@ -674,7 +827,10 @@ for (const [name, cfg] of WALLS) {
     const dirty: ExPolygon = { outer: [a, mid, mid, { x: mid.x + 3000, y: a.y }, b, b, c, d], holes: [] };
     const m0 = regression(clean, cfg, `clean 0.6 mm strip, ${name}`);
     const m1 = regression(dirty, cfg, `0.6 mm strip with duplicate and collinear points, ${name}`);
-    assert.ok(Math.abs(m1.extrudedMm2 / m0.extrudedMm2 - 1) <= 0.01, `extruded ${f3(m1.extrudedMm2)} vs ${f3(m0.extrudedMm2)} mm²`);
+    assert.ok(
+      Math.abs(m1.extrudedMm2 / m0.extrudedMm2 - 1) <= 0.01,
+      `extruded ${f3(m1.extrudedMm2)} vs ${f3(m0.extrudedMm2)} mm²`,
+    );
     assert.equal(m1.beads.length, m0.beads.length, 'as many beads');
     assert.ok(coverage(m1, [dirty]) >= 0.95, `${pct(coverage(m1, [dirty]))} covered`);
   });

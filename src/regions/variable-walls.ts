@@ -118,9 +118,16 @@ function nearRings(x: number, y: number, loops: readonly Polygon[], reach: numbe
   let found = false;
   for (const ring of loops) {
     for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
-      const a = ring[j], b = ring[i];
+      const a = ring[j],
+        b = ring[i];
       // cheap box rejection
-      if (Math.min(a.x, b.x) - reach > x || Math.max(a.x, b.x) + reach < x || Math.min(a.y, b.y) - reach > y || Math.max(a.y, b.y) + reach < y) continue;
+      if (
+        Math.min(a.x, b.x) - reach > x ||
+        Math.max(a.x, b.x) + reach < x ||
+        Math.min(a.y, b.y) - reach > y ||
+        Math.max(a.y, b.y) + reach < y
+      )
+        continue;
       const d2 = segmentDistance2(x, y, a.x, a.y, b.x, b.y);
       if (d2 <= best2) {
         best2 = d2;
@@ -140,7 +147,12 @@ function besideLoops(p: Pt, r: number, loops: readonly Polygon[], L: Limits): bo
  * The leftover of one level: each medial-axis point is printed as a middle line, absorbed by the loops
  * beside it (`loops`, the level's wall centrelines, when it lies against them), or lost.
  */
-function leftover(pieces: readonly ExPolygon[], loops: readonly Polygon[], band: readonly Polygon[], L: Limits): LeftoverResult {
+function leftover(
+  pieces: readonly ExPolygon[],
+  loops: readonly Polygon[],
+  band: readonly Polygon[],
+  L: Limits,
+): LeftoverResult {
   const out: LeftoverResult = { beads: [], absorbed: [], lostUm2: 0 };
   // inside the walls, a piece this small is a corner's crumb: what it would add to a wall is not worth its axis
   const least = loops.length ? MIN_INNER_PIECE_AREA_UM2 : MIN_PIECE_AREA_UM2;
@@ -196,7 +208,8 @@ function absorbThin(pieces: ExPolygon[], L: Limits, out: LeftoverResult): ExPoly
  * loop half its thickness wide, a quarter of it in from its edge (the two passes cover it), else lost.
  */
 function speck(piece: ExPolygon, chain: MedialChain, loops: readonly Polygon[], L: Limits, out: LeftoverResult): void {
-  const p = chain.points[0], r = chain.radii[0];
+  const p = chain.points[0],
+    r = chain.radii[0];
   const g = 2 * r;
   if (besideLoops(p, r, loops, L)) {
     out.absorbed.push({ x: p.x, y: p.y, r });
@@ -213,7 +226,9 @@ function speck(piece: ExPolygon, chain: MedialChain, loops: readonly Polygon[], 
   out.lostUm2 += Math.abs(area([piece]));
 }
 
-const PRINT = 1, ABSORB = 2, LOST = 0;
+const PRINT = 1,
+  ABSORB = 2,
+  LOST = 0;
 
 /** Medial-axis edges are split into pieces no longer than this (µm), so a line starts where the strip gets thick enough. */
 const AXIS_STEP_UM = 100;
@@ -226,11 +241,17 @@ function resample(chain: MedialChain): { points: Pt[]; radii: number[]; closed: 
   const rs: number[] = [];
   const edges = closed ? n : n - 1;
   for (let e = 0; e < edges; e++) {
-    const a = points[e], b = points[(e + 1) % n];
-    const ra = radii[e], rb = radii[(e + 1) % n];
+    const a = points[e],
+      b = points[(e + 1) % n];
+    const ra = radii[e],
+      rb = radii[(e + 1) % n];
     const parts = Math.max(1, Math.ceil(dist(a, b) / AXIS_STEP_UM));
     for (let k = 0; k < parts; k++) {
-      pts.push(k === 0 ? a : { x: Math.round(a.x + ((b.x - a.x) * k) / parts), y: Math.round(a.y + ((b.y - a.y) * k) / parts) });
+      pts.push(
+        k === 0
+          ? a
+          : { x: Math.round(a.x + ((b.x - a.x) * k) / parts), y: Math.round(a.y + ((b.y - a.y) * k) / parts) },
+      );
       rs.push(ra + ((rb - ra) * k) / parts);
     }
   }
@@ -241,7 +262,13 @@ function resample(chain: MedialChain): { points: Pt[]; radii: number[]; closed: 
   return { points: pts, radii: rs, closed };
 }
 
-function classify(chain: MedialChain, loops: readonly Polygon[], band: readonly Polygon[], L: Limits, out: LeftoverResult): void {
+function classify(
+  chain: MedialChain,
+  loops: readonly Polygon[],
+  band: readonly Polygon[],
+  L: Limits,
+  out: LeftoverResult,
+): void {
   const { points, radii, closed } = resample(chain);
   const n = points.length;
   if (n < 2) return;
@@ -253,16 +280,24 @@ function classify(chain: MedialChain, loops: readonly Polygon[], band: readonly 
     else kind[i] = g < L.minFeature ? LOST : PRINT;
   }
   const edges = closed ? n : n - 1;
-  for (let i = 0; i < n; i++) if (kind[i] === ABSORB) out.absorbed.push({ x: points[i].x, y: points[i].y, r: radii[i] });
+  for (let i = 0; i < n; i++)
+    if (kind[i] === ABSORB) out.absorbed.push({ x: points[i].x, y: points[i].y, r: radii[i] });
   // lost area: edges with both ends lost
   for (let e = 0; e < edges; e++) {
-    const a = e, b = (e + 1) % n;
+    const a = e,
+      b = (e + 1) % n;
     if (kind[a] === LOST && kind[b] === LOST) out.lostUm2 += dist(points[a], points[b]) * (radii[a] + radii[b]);
   }
   // runs of printed points become middle lines
   const all = kind.every((k) => k === PRINT);
   if (all && closed) {
-    out.beads.push(simplifyBead(points.slice(), radii.map((r) => beadWidth(2 * r, L)), true));
+    out.beads.push(
+      simplifyBead(
+        points.slice(),
+        radii.map((r) => beadWidth(2 * r, L)),
+        true,
+      ),
+    );
     return;
   }
   // start a closed chain's walk at a point that is not printed, so no run is split across its end
@@ -277,11 +312,19 @@ function classify(chain: MedialChain, loops: readonly Polygon[], band: readonly 
       if (len >= L.minLength || touchesEnd(run, n, closed)) {
         if (band.length && !closed) {
           if (run[0] === 0) pts[0] = joinBand(pts[1], pts[0], radii[0], band, L);
-          if (run[run.length - 1] === n - 1) pts[pts.length - 1] = joinBand(pts[pts.length - 2], pts[pts.length - 1], radii[n - 1], band, L);
+          if (run[run.length - 1] === n - 1)
+            pts[pts.length - 1] = joinBand(pts[pts.length - 2], pts[pts.length - 1], radii[n - 1], band, L);
         }
-        out.beads.push(simplifyBead(pts, run.map((k) => beadWidth(2 * radii[k], L)), false));
-      }
-      else for (let k = 1; k < run.length; k++) out.lostUm2 += dist(points[run[k - 1]], points[run[k]]) * (radii[run[k - 1]] + radii[run[k]]);
+        out.beads.push(
+          simplifyBead(
+            pts,
+            run.map((k) => beadWidth(2 * radii[k], L)),
+            false,
+          ),
+        );
+      } else
+        for (let k = 1; k < run.length; k++)
+          out.lostUm2 += dist(points[run[k - 1]], points[run[k]]) * (radii[run[k - 1]] + radii[run[k]]);
     }
     run = [];
   };
@@ -328,7 +371,8 @@ function simplifyBead(points: Pt[], widths: number[], closed: boolean): Bead {
   // a closed line is split at its first point and the point farthest from it
   const stack: [number, number][] = [];
   if (closed) {
-    let far = 1, fd = -1;
+    let far = 1,
+      fd = -1;
     for (let i = 1; i < n; i++) {
       const d = dist(points[0], points[i]);
       if (d > fd) {
@@ -342,11 +386,15 @@ function simplifyBead(points: Pt[], widths: number[], closed: boolean): Bead {
   while (stack.length) {
     const [a, b] = stack.pop()!;
     if (b - a < 2) continue;
-    const pa = points[a], pb = points[b % n];
-    const wa = widths[a], wb = widths[b % n];
-    const dx = pb.x - pa.x, dy = pb.y - pa.y;
+    const pa = points[a],
+      pb = points[b % n];
+    const wa = widths[a],
+      wb = widths[b % n];
+    const dx = pb.x - pa.x,
+      dy = pb.y - pa.y;
     const len2 = dx * dx + dy * dy;
-    let worst = -1, at = -1;
+    let worst = -1,
+      at = -1;
     for (let i = a + 1; i < b; i++) {
       const p = points[i];
       const t = len2 > 0 ? Math.max(0, Math.min(1, ((p.x - pa.x) * dx + (p.y - pa.y) * dy) / len2)) : 0;
@@ -368,7 +416,8 @@ function simplifyBead(points: Pt[], widths: number[], closed: boolean): Bead {
       stack.push([a, at], [at, b]);
     }
   }
-  const pts: Pt[] = [], ws: number[] = [];
+  const pts: Pt[] = [],
+    ws: number[] = [];
   for (let i = 0; i < n; i++) {
     if (!keep[i]) continue;
     pts.push(points[i]);
@@ -398,7 +447,12 @@ function dist(a: Pt, b: Pt): number {
  * lies where a strip beside this wall would be. Long edges are split first so the widening follows the
  * strip. Returns the loops and their widths (null for a loop that absorbs nothing).
  */
-function widenLoops(loops: readonly Polygon[], found: Shares | null, L: Limits, reach: number): { paths: Polygon[]; widths: (Float64Array | null)[] } {
+function widenLoops(
+  loops: readonly Polygon[],
+  found: Shares | null,
+  L: Limits,
+  reach: number,
+): { paths: Polygon[]; widths: (Float64Array | null)[] } {
   if (!found) return { paths: loops.slice(), widths: loops.map(() => null) };
   const { grid, shares } = found;
   const paths: Polygon[] = [];
@@ -416,7 +470,10 @@ function widenLoops(loops: readonly Polygon[], found: Shares | null, L: Limits, 
       const d = q ? Math.sqrt((q.x - p.x) ** 2 + (q.y - p.y) ** 2) : Infinity;
       if (q && d <= L.w / 2 + q.j * L.w + q.r + L.w / 4) {
         const shift = Math.min(((2 * (q.c - 1 - q.j) + 1) * q.r) / (2 * q.c), d);
-        moved[i] = d > 0 ? { x: Math.round(p.x + ((q.x - p.x) / d) * shift), y: Math.round(p.y + ((q.y - p.y) / d) * shift) } : p;
+        moved[i] =
+          d > 0
+            ? { x: Math.round(p.x + ((q.x - p.x) / d) * shift), y: Math.round(p.y + ((q.y - p.y) / d) * shift) }
+            : p;
         ws[i] = (L.w + q.r / q.c) / UM_PER_MM;
         any = true;
       } else {
@@ -448,15 +505,24 @@ function dropStraight(points: Polygon, widths: Float64Array): { points: Polygon;
   let prev = n - 1;
   for (let i = 0; i < n; i++) {
     const next = (i + 1) % n;
-    const a = points[prev], b = points[i], c = points[next];
-    const dx = c.x - a.x, dy = c.y - a.y;
+    const a = points[prev],
+      b = points[i],
+      c = points[next];
+    const dx = c.x - a.x,
+      dy = c.y - a.y;
     const len = Math.sqrt(dx * dx + dy * dy);
     if (len > 0) {
       const off = Math.abs((b.x - a.x) * dy - (b.y - a.y) * dx) / len;
       const t = ((b.x - a.x) * dx + (b.y - a.y) * dy) / (len * len);
       const w = widths[prev] + t * (widths[next] - widths[prev]);
       // (and the segment left would not span more than one width step: it prints at one width)
-      if (off <= STRAIGHT_TOL_UM && t > 0 && t < 1 && Math.abs(w - widths[i]) <= WIDTH_TOL_MM && Math.abs(widths[next] - widths[prev]) * UM_PER_MM <= BEAD_WIDTH_STEP_UM) {
+      if (
+        off <= STRAIGHT_TOL_UM &&
+        t > 0 &&
+        t < 1 &&
+        Math.abs(w - widths[i]) <= WIDTH_TOL_MM &&
+        Math.abs(widths[next] - widths[prev]) * UM_PER_MM <= BEAD_WIDTH_STEP_UM
+      ) {
         keep[i] = 0;
         continue;
       }
@@ -477,11 +543,13 @@ function dropStraight(points: Polygon, widths: Float64Array): { points: Polygon;
 function subdivide(ring: Polygon, step: number): Polygon {
   const out: Pt[] = [];
   for (let i = 0; i < ring.length; i++) {
-    const a = ring[i], b = ring[(i + 1) % ring.length];
+    const a = ring[i],
+      b = ring[(i + 1) % ring.length];
     out.push(a);
     const len = dist(a, b);
     const parts = Math.ceil(len / step);
-    for (let k = 1; k < parts; k++) out.push({ x: Math.round(a.x + ((b.x - a.x) * k) / parts), y: Math.round(a.y + ((b.y - a.y) * k) / parts) });
+    for (let k = 1; k < parts; k++)
+      out.push({ x: Math.round(a.x + ((b.x - a.x) * k) / parts), y: Math.round(a.y + ((b.y - a.y) * k) / parts) });
   }
   return out;
 }
@@ -498,7 +566,13 @@ interface Level {
 }
 
 /** Level k's leftover: its middle lines go to level k, what wall k - 1's loops absorb to level k - 1. */
-function takeLeftover(levels: Level[], k: number, rest: readonly ExPolygon[], band: readonly ExPolygon[], L: Limits): void {
+function takeLeftover(
+  levels: Level[],
+  k: number,
+  rest: readonly ExPolygon[],
+  band: readonly ExPolygon[],
+  L: Limits,
+): void {
   const outer = k > 0 ? levels[k - 1] : null;
   const left = leftover(rest, outer ? outer.loops : [], flatten(band), L);
   levels[k].beads.push(...left.beads);
@@ -561,8 +635,16 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
     const toMm = (b: Bead) => Float64Array.from(b.widths, (x) => x / UM_PER_MM);
     // a middle line of the first level is the part's outside: the outer wall
     const wall = Math.min(k, wallCount - 1);
-    if (open.length) walls.push({ role: 'wall', wall, closed: false, paths: open.map((b) => b.points), widths: open.map(toMm) });
-    if (closedBeads.length) walls.push({ role: 'wall', wall, closed: true, paths: closedBeads.map((b) => b.points), widths: closedBeads.map(toMm) });
+    if (open.length)
+      walls.push({ role: 'wall', wall, closed: false, paths: open.map((b) => b.points), widths: open.map(toMm) });
+    if (closedBeads.length)
+      walls.push({
+        role: 'wall',
+        wall,
+        closed: true,
+        paths: closedBeads.map((b) => b.points),
+        widths: closedBeads.map(toMm),
+      });
   });
   return { outline: island, walls, inner: inside, lostMm2: lostUm2 / (UM_PER_MM * UM_PER_MM) };
 }

@@ -4,7 +4,10 @@ import { area } from '../geometry/clip.js';
 import { disc, square } from '../geometry/test-shapes.js';
 import { VASE_SPECK_MM2, vaseOutline } from './layer-regions.js';
 
-const ring = (r: number, hole: number) => ({ outer: disc(0, 0, r).outer, holes: [disc(0, 0, hole).outer.slice().reverse()] });
+const ring = (r: number, hole: number) => ({
+  outer: disc(0, 0, r).outer,
+  holes: [disc(0, 0, hole).outer.slice().reverse()],
+});
 
 test('vaseOutline: holes dropped, an island inside a hole goes with it', () => {
   const { kept, droppedMm2 } = vaseOutline([ring(15_000, 13_000), disc(0, 0, 5_000)]);

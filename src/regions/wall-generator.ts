@@ -10,5 +10,7 @@ import { classicWalls, type IslandWalls } from './walls.js';
 export type { IslandWalls } from './walls.js';
 
 export function computeWalls(islands: readonly ExPolygon[], cfg: Config, lineWidthUm: number): IslandWalls[] {
-  return cfg.wallGenerator === 'classic' || cfg.walls === 0 ? classicWalls(islands, cfg.walls, lineWidthUm) : variableWalls(islands, cfg, lineWidthUm);
+  return cfg.wallGenerator === 'classic' || cfg.walls === 0
+    ? classicWalls(islands, cfg.walls, lineWidthUm)
+    : variableWalls(islands, cfg, lineWidthUm);
 }

@@ -70,9 +70,21 @@ export function classicWalls(islands: readonly ExPolygon[], wallCount: number, l
       wallLoops.push(rings(centre));
       inside = fit;
     }
-    const walls: WallSet[] = wallLoops.map((paths, wall) => ({ role: 'wall', wall, closed: true, paths, widths: null }));
+    const walls: WallSet[] = wallLoops.map((paths, wall) => ({
+      role: 'wall',
+      wall,
+      closed: true,
+      paths,
+      widths: null,
+    }));
     if (gapFill.length) {
-      walls.push({ role: 'wall-gap', wall: 1, closed: true, paths: gapFill.map((g) => g.loop), widths: gapLoopWidths(gapFill) });
+      walls.push({
+        role: 'wall-gap',
+        wall: 1,
+        closed: true,
+        paths: gapFill.map((g) => g.loop),
+        widths: gapLoopWidths(gapFill),
+      });
     }
     out.push({ outline: island, walls, inner: inside, lostMm2: 0 });
   }

@@ -3,7 +3,11 @@ import assert from 'node:assert/strict';
 import { checkGcode, checkGcodeName } from './gcode-check.js';
 
 const text = (s: string) => new TextEncoder().encode(s);
-const refused = (bytes: Uint8Array, pattern: RegExp) => assert.throws(() => checkGcode(bytes, 'x.gcode'), (e: Error) => pattern.test(e.message) && !e.message.includes('\n'));
+const refused = (bytes: Uint8Array, pattern: RegExp) =>
+  assert.throws(
+    () => checkGcode(bytes, 'x.gcode'),
+    (e: Error) => pattern.test(e.message) && !e.message.includes('\n'),
+  );
 
 test('G-code passes: commands with comments, line numbers, CRLF', () => {
   assert.doesNotThrow(() => checkGcode(text(';FLAVOR:Marlin\n;TIME:60\nG28\nG1 X10 Y10 E1\n'), 'a.gcode'));
@@ -27,6 +31,9 @@ test('names: the hosts list .gcode, .gco and .g files only', () => {
   assert.equal(checkGcodeName('/tmp/part.gcode'), 'part.gcode');
   assert.equal(checkGcodeName('C:\\prints\\PART.GCO'), 'PART.GCO');
   assert.equal(checkGcodeName('a.g'), 'a.g');
-  assert.throws(() => checkGcodeName('part.stl'), /part\.stl is not a G-code file name \(print hosts take \.gcode, \.gco, \.g\)/);
+  assert.throws(
+    () => checkGcodeName('part.stl'),
+    /part\.stl is not a G-code file name \(print hosts take \.gcode, \.gco, \.g\)/,
+  );
   assert.throws(() => checkGcodeName(''), /needs a name/);
 });

@@ -26,7 +26,10 @@ export function checkGcodeName(name: string): string {
   const base = name.split(/[\\/]/).pop() ?? '';
   if (!base) throw new StrataError('BAD_FILE', 'the file to send needs a name');
   if (!GCODE_EXTENSIONS.some((e) => base.toLowerCase().endsWith(e))) {
-    throw new StrataError('BAD_FILE', `${base} is not a G-code file name (print hosts take ${GCODE_EXTENSIONS.join(', ')})`);
+    throw new StrataError(
+      'BAD_FILE',
+      `${base} is not a G-code file name (print hosts take ${GCODE_EXTENSIONS.join(', ')})`,
+    );
   }
   return base;
 }
@@ -37,11 +40,23 @@ export function checkGcode(bytes: Uint8Array, name: string): void {
   const head = bytes.subarray(0, SNIFF_BYTES);
   const text = new TextDecoder('utf-8', { fatal: false }).decode(head);
   const model = kindOfModel(head, text);
-  if (model) throw new StrataError('BAD_FILE', `${name} is ${model}, not G-code: slice it first (strata slice ${name})`);
+  if (model)
+    throw new StrataError('BAD_FILE', `${name} is ${model}, not G-code: slice it first (strata slice ${name})`);
   // a binary STL is an 80-byte header and a triangle count that gives its size exactly
-  if (bytes.length >= 84 && 84 + 50 * new DataView(bytes.buffer, bytes.byteOffset + 80, 4).getUint32(0, true) === bytes.length) {
-    throw new StrataError('BAD_FILE', `${name} is a binary STL model, not G-code: slice it first (strata slice ${name})`);
+  if (
+    bytes.length >= 84 &&
+    84 + 50 * new DataView(bytes.buffer, bytes.byteOffset + 80, 4).getUint32(0, true) === bytes.length
+  ) {
+    throw new StrataError(
+      'BAD_FILE',
+      `${name} is a binary STL model, not G-code: slice it first (strata slice ${name})`,
+    );
   }
-  if (head.includes(0)) throw new StrataError('BAD_FILE', `${name} is binary data, not G-code (text lines of G and M commands)`);
-  if (!COMMAND.test(text)) throw new StrataError('BAD_FILE', `${name} is not G-code: no G or M command in its first ${SNIFF_BYTES / 1024} KiB`);
+  if (head.includes(0))
+    throw new StrataError('BAD_FILE', `${name} is binary data, not G-code (text lines of G and M commands)`);
+  if (!COMMAND.test(text))
+    throw new StrataError(
+      'BAD_FILE',
+      `${name} is not G-code: no G or M command in its first ${SNIFF_BYTES / 1024} KiB`,
+    );
 }

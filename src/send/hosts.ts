@@ -54,9 +54,13 @@ export function hostUrl(text: string): URL {
   try {
     url = new URL(/^[a-z][a-z0-9+.-]*:\/\//i.test(t) ? t : `http://${t}`);
   } catch {
-    throw new StrataError('BAD_SETTING', `"${text}" is not a host address (e.g. http://octopi.local or http://192.168.1.20:7125)`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `"${text}" is not a host address (e.g. http://octopi.local or http://192.168.1.20:7125)`,
+    );
   }
-  if (url.protocol !== 'http:' && url.protocol !== 'https:') throw new StrataError('BAD_SETTING', `"${text}": a print host is reached over http:// or https://`);
+  if (url.protocol !== 'http:' && url.protocol !== 'https:')
+    throw new StrataError('BAD_SETTING', `"${text}": a print host is reached over http:// or https://`);
   if (!url.pathname.endsWith('/')) url.pathname += '/';
   url.search = '';
   url.hash = '';
@@ -64,7 +68,8 @@ export function hostUrl(text: string): URL {
 }
 
 export function checkHostKind(to: unknown): HostKind {
-  if (!(HOST_KINDS as readonly unknown[]).includes(to)) throw new StrataError('BAD_SETTING', `the host must be one of ${HOST_KINDS.join(', ')}, got ${JSON.stringify(to)}`);
+  if (!(HOST_KINDS as readonly unknown[]).includes(to))
+    throw new StrataError('BAD_SETTING', `the host must be one of ${HOST_KINDS.join(', ')}, got ${JSON.stringify(to)}`);
   return to as HostKind;
 }
 
@@ -74,7 +79,16 @@ export function hostMessage(body: string): string {
   try {
     const j = JSON.parse(body) as { error?: unknown; description?: unknown; message?: unknown };
     const e = j.error;
-    text = typeof e === 'string' ? e : e && typeof e === 'object' && typeof (e as { message?: unknown }).message === 'string' ? (e as { message: string }).message : typeof j.description === 'string' ? j.description : typeof j.message === 'string' ? j.message : '';
+    text =
+      typeof e === 'string'
+        ? e
+        : e && typeof e === 'object' && typeof (e as { message?: unknown }).message === 'string'
+          ? (e as { message: string }).message
+          : typeof j.description === 'string'
+            ? j.description
+            : typeof j.message === 'string'
+              ? j.message
+              : '';
   } catch {
     text = body.replace(/<[^>]*>/g, ' ');
   }
@@ -92,8 +106,11 @@ export function refusal(to: HostKind, url: string, reply: HttpReply, keyGiven: b
   const said = msg ? `: ${msg}` : '';
   switch (true) {
     // OctoPrint takes a POST whose key it does not know for a browser's, without its CSRF token
-    case reply.status === 401 || reply.status === 403 || (to === 'octoprint' && reply.status === 400 && /CSRF/i.test(msg)):
-      if (!keyGiven) return `${host} needs an API key (${status}): give one with ${keyName}${to === 'octoprint' ? " (OctoPrint: Settings › Application Keys, or the user's API key)" : ''}`;
+    case reply.status === 401 ||
+      reply.status === 403 ||
+      (to === 'octoprint' && reply.status === 400 && /CSRF/i.test(msg)):
+      if (!keyGiven)
+        return `${host} needs an API key (${status}): give one with ${keyName}${to === 'octoprint' ? " (OctoPrint: Settings › Application Keys, or the user's API key)" : ''}`;
       return `${host} refused the API key (${status}): check ${keyName}${to === 'octoprint' ? " (OctoPrint: Settings › Application Keys, or the user's API key)" : " (Moonraker's is at /access/api_key from a trusted client)"}`;
     case reply.status === 507 || DISK_FULL.test(msg):
       return `${host} has no room for the file (disk full, ${status}${said}): delete old files on it`;
@@ -121,7 +138,12 @@ function uploadRequest(to: HostKind, print: boolean): { path: string; fields: Re
 }
 
 /** What the host's reply to a successful upload says: the file's name there, and whether it prints. */
-function uploaded(to: HostKind, body: string, fallbackName: string, print: boolean): Pick<SendResult, 'name' | 'started' | 'queued' | 'notStarted'> {
+function uploaded(
+  to: HostKind,
+  body: string,
+  fallbackName: string,
+  print: boolean,
+): Pick<SendResult, 'name' | 'started' | 'queued' | 'notStarted'> {
   let j: Record<string, unknown> = {};
   try {
     j = JSON.parse(body) as Record<string, unknown>;
@@ -135,11 +157,20 @@ function uploaded(to: HostKind, body: string, fallbackName: string, print: boole
       name: local?.path ?? local?.name ?? fallbackName,
       started,
       queued: false,
-      ...(print && !started ? { notStarted: 'OctoPrint did not start the print: the printer is not connected, or is busy (connect it, then start the file in OctoPrint)' } : {}),
+      ...(print && !started
+        ? {
+            notStarted:
+              'OctoPrint did not start the print: the printer is not connected, or is busy (connect it, then start the file in OctoPrint)',
+          }
+        : {}),
     };
   }
   // Moonraker ≥ 0.8: { item: { path, root }, print_started, print_queued }; older: { result: … }
-  const r = (j.result && typeof j.result === 'object' ? j.result : j) as { item?: { path?: string }; print_started?: boolean; print_queued?: boolean };
+  const r = (j.result && typeof j.result === 'object' ? j.result : j) as {
+    item?: { path?: string };
+    print_started?: boolean;
+    print_queued?: boolean;
+  };
   const started = r.print_started === true;
   const queued = r.print_queued === true;
   return {
@@ -147,7 +178,11 @@ function uploaded(to: HostKind, body: string, fallbackName: string, print: boole
     started,
     queued,
     ...(print && !started
-      ? { notStarted: queued ? 'Moonraker put the file in its job queue (Klipper was busy or not ready): it prints when the queue runs' : 'Moonraker did not start the print: Klipper is not ready (is the printer on and connected?)' }
+      ? {
+          notStarted: queued
+            ? 'Moonraker put the file in its job queue (Klipper was busy or not ready): it prints when the queue runs'
+            : 'Moonraker did not start the print: Klipper is not ready (is the printer on and connected?)',
+        }
       : {}),
   };
 }
@@ -156,7 +191,11 @@ function uploaded(to: HostKind, body: string, fallbackName: string, print: boole
  * Upload G-code to a print host and, when asked, start printing it. Throws a one-line StrataError for a file
  * that is not G-code (before sending), an address that is not one, a host that cannot be reached or refuses.
  */
-export async function sendGcode(file: { name: string; bytes: Uint8Array }, opts: SendOptions, transport: Transport): Promise<SendResult> {
+export async function sendGcode(
+  file: { name: string; bytes: Uint8Array },
+  opts: SendOptions,
+  transport: Transport,
+): Promise<SendResult> {
   const to = checkHostKind(opts.to);
   const base = hostUrl(opts.url);
   const name = checkGcodeName(file.name);
@@ -167,7 +206,10 @@ export async function sendGcode(file: { name: string; bytes: Uint8Array }, opts:
   const print = opts.print === true;
   const { path, fields } = uploadRequest(to, print);
   const where = base.href.replace(/\/$/, '');
-  const unreachable = (e: unknown) => (e instanceof Unreachable ? new StrataError('WRITE_FAILED', `cannot reach ${HOST_NAMES[to]} at ${where}: ${e.reason}`) : e);
+  const unreachable = (e: unknown) =>
+    e instanceof Unreachable
+      ? new StrataError('WRITE_FAILED', `cannot reach ${HOST_NAMES[to]} at ${where}: ${e.reason}`)
+      : e;
   // First a small request with the key: a wrong key, a wrong address or a host that cannot be reached is
   // told before the file is sent (a host that refuses an upload may close the connection before its answer
   // arrives).
@@ -177,13 +219,22 @@ export async function sendGcode(file: { name: string; bytes: Uint8Array }, opts:
   } catch (e) {
     throw unreachable(e);
   }
-  if (probe.status === 401 || probe.status === 403 || probe.status === 404) throw new StrataError('WRITE_FAILED', refusal(to, where, probe, !!opts.apiKey, keyName));
+  if (probe.status === 401 || probe.status === 403 || probe.status === 404)
+    throw new StrataError('WRITE_FAILED', refusal(to, where, probe, !!opts.apiKey, keyName));
   let reply: HttpReply;
   try {
-    reply = await transport.upload(new URL(path, base).href, headers, fields, { field: 'file', name, type: 'application/octet-stream', bytes: file.bytes }, opts.onProgress && ((sent, total) => opts.onProgress!({ sent, total })), opts.signal);
+    reply = await transport.upload(
+      new URL(path, base).href,
+      headers,
+      fields,
+      { field: 'file', name, type: 'application/octet-stream', bytes: file.bytes },
+      opts.onProgress && ((sent, total) => opts.onProgress!({ sent, total })),
+      opts.signal,
+    );
   } catch (e) {
     throw unreachable(e);
   }
-  if (reply.status < 200 || reply.status >= 300) throw new StrataError('WRITE_FAILED', refusal(to, where, reply, !!opts.apiKey, keyName));
+  if (reply.status < 200 || reply.status >= 300)
+    throw new StrataError('WRITE_FAILED', refusal(to, where, reply, !!opts.apiKey, keyName));
   return { host: to, url: where, bytes: file.bytes.length, ...uploaded(to, reply.body, name, print) };
 }

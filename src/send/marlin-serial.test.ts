@@ -25,7 +25,7 @@ test('lines are numbered with their checksum (XOR of the bytes before *)', () =>
   assert.deepEqual(gcodeCommands('; header\nG28 ; home\n\n  M104 S200  \n;end\n'), ['G28', 'M104 S200']);
 });
 
-test("a Strata slice streams to Marlin: every command executed once, in order; progress to the end", async () => {
+test('a Strata slice streams to Marlin: every command executed once, in order; progress to the end', async () => {
   const progress: number[] = [];
   const { host, marlin } = connect({ busyEvery: 50 }, { onProgress: ({ done, total }) => progress.push(done / total) });
   await host.print(GCODE);
@@ -52,14 +52,17 @@ test('pause holds the stream after the line in flight; resume goes on', async ()
   const lines = Array.from({ length: 200 }, (_, i) => `G1 X${i} Y${i}`).join('\n');
   let host!: MarlinSender;
   let paused = -1;
-  const c = connect({}, {
-    onProgress: ({ done }) => {
-      if (done === 50 && paused < 0) {
-        host.pause();
-        paused = done;
-      }
+  const c = connect(
+    {},
+    {
+      onProgress: ({ done }) => {
+        if (done === 50 && paused < 0) {
+          host.pause();
+          paused = done;
+        }
+      },
     },
-  });
+  );
   host = c.host;
   const printing = host.print(lines);
   await wait(100);
@@ -82,9 +85,15 @@ test('cancel stops the stream and turns heaters, fan and motors off', async () =
 
 test('a printer that stops answering, reports a fault or restarts ends the print with one line', async () => {
   const hung = connect({ hangOn: /^G28/ }, { idleTimeoutMs: 100 });
-  await assert.rejects(hung.host.print('M105\nG28\nG1 X1\n'), /^StrataError: the printer stopped answering \(nothing for 0 s\)$|the printer stopped answering/);
+  await assert.rejects(
+    hung.host.print('M105\nG28\nG1 X1\n'),
+    /^StrataError: the printer stopped answering \(nothing for 0 s\)$|the printer stopped answering/,
+  );
   const fault = connect({ faultOn: { command: /^M109/, line: 'Error:Printer halted. kill() called!' } });
-  await assert.rejects(fault.host.print('G28\nM109 S210\nG1 X1\n'), (e) => e instanceof StrataError && e.message === 'the printer reported: Printer halted. kill() called!');
+  await assert.rejects(
+    fault.host.print('G28\nM109 S210\nG1 X1\n'),
+    (e) => e instanceof StrataError && e.message === 'the printer reported: Printer halted. kill() called!',
+  );
   assert.deepEqual(fault.marlin.executed, ['G28']);
   let host!: MarlinSender;
   host = new MarlinSender(async (data) => {
@@ -95,7 +104,8 @@ test('a printer that stops answering, reports a fault or restarts ends the print
   // a board that restarts as the port opens: the count is reset again once it has booted
   let booted = 0;
   const booting = new MarlinSender(async (data) => {
-    if (data.startsWith('N0 M110') && booted++ === 0) setTimeout(() => booting.receive('start\necho:Marlin 2.1.2\n'), 0);
+    if (data.startsWith('N0 M110') && booted++ === 0)
+      setTimeout(() => booting.receive('start\necho:Marlin 2.1.2\n'), 0);
     else setTimeout(() => booting.receive('ok\n'), 0);
   });
   await booting.print('G28\n');

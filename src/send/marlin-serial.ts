@@ -155,7 +155,8 @@ export class MarlinSender {
       }
       return this.#fail('the printer restarted (it sent "start"): the print is stopped');
     }
-    if (/^(?:Error|!!)/i.test(line) && !RECOVERABLE.test(line)) return this.#fail(`the printer reported: ${line.replace(/^(Error:|!!)\s*/i, '')}`);
+    if (/^(?:Error|!!)/i.test(line) && !RECOVERABLE.test(line))
+      return this.#fail(`the printer reported: ${line.replace(/^(Error:|!!)\s*/i, '')}`);
     // busy:, echo:, temperatures while heating, wait: the timer was reset above
   }
 
@@ -166,11 +167,13 @@ export class MarlinSender {
       // the ok answers the error: send again from the line the printer asked for (N0 is the M110)
       const from = this.#resendFrom - 1;
       this.#resendFrom = null;
-      if (from < -1 || from > this.#inFlight) return this.#fail(`the printer asked for line ${from + 1}, which was not sent yet`);
+      if (from < -1 || from > this.#inFlight)
+        return this.#fail(`the printer asked for line ${from + 1}, which was not sent yet`);
       this.#send(from);
       return;
     }
-    if (this.#inFlight >= 0) this.#opts.onProgress?.({ done: Math.min(this.#inFlight + 1, this.#total), total: this.#total });
+    if (this.#inFlight >= 0)
+      this.#opts.onProgress?.({ done: Math.min(this.#inFlight + 1, this.#total), total: this.#total });
     this.#next();
   }
 
@@ -186,14 +189,19 @@ export class MarlinSender {
     this.#waiting = true;
     const text = index < 0 ? numberedLine(0, 'M110 N0') : numberedLine(index + 1, this.#lines[index]!);
     this.#arm();
-    this.#write(text + '\n').catch((e) => this.#fail(`cannot write to the printer: ${e instanceof Error ? e.message : String(e)}`));
+    this.#write(text + '\n').catch((e) =>
+      this.#fail(`cannot write to the printer: ${e instanceof Error ? e.message : String(e)}`),
+    );
   }
 
   #arm(): void {
     clearTimeout(this.#timer);
     if (!this.#settle) return;
     const ms = this.#opts.idleTimeoutMs ?? 60_000;
-    this.#timer = setTimeout(() => this.#fail(`the printer stopped answering (nothing for ${Math.round(ms / 1000)} s)`), ms);
+    this.#timer = setTimeout(
+      () => this.#fail(`the printer stopped answering (nothing for ${Math.round(ms / 1000)} s)`),
+      ms,
+    );
   }
 
   #finish(): void {
@@ -201,7 +209,8 @@ export class MarlinSender {
     const s = this.#settle;
     this.#settle = null;
     this.#waiting = false;
-    if (this.#cancelled) s?.reject(new StrataError('CANCELLED', 'the print was cancelled (heaters, fan and motors turned off)'));
+    if (this.#cancelled)
+      s?.reject(new StrataError('CANCELLED', 'the print was cancelled (heaters, fan and motors turned off)'));
     else s?.resolve();
   }
 

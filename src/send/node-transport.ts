@@ -27,7 +27,13 @@ export function describeNetworkError(e: NodeJS.ErrnoException): string {
   return words[code] ? `${words[code]} (${code})` : e.message || code || 'unknown network error';
 }
 
-function send(url: URL, method: string, headers: Record<string, string>, writeBody: (req: http.ClientRequest, stop: () => boolean) => Promise<void>, signal?: AbortSignal): Promise<HttpReply> {
+function send(
+  url: URL,
+  method: string,
+  headers: Record<string, string>,
+  writeBody: (req: http.ClientRequest, stop: () => boolean) => Promise<void>,
+  signal?: AbortSignal,
+): Promise<HttpReply> {
   return new Promise<HttpReply>((resolve, reject) => {
     if (signal?.aborted) return reject(cancelled(signal));
     const lib = url.protocol === 'https:' ? https : http;
@@ -50,7 +56,15 @@ function send(url: URL, method: string, headers: Record<string, string>, writeBo
       answered = true;
       const chunks: Buffer[] = [];
       res.on('data', (c: Buffer) => chunks.push(c));
-      res.on('end', () => done(() => resolve({ status: res.statusCode ?? 0, statusText: res.statusMessage ?? '', body: Buffer.concat(chunks).toString('utf8') })));
+      res.on('end', () =>
+        done(() =>
+          resolve({
+            status: res.statusCode ?? 0,
+            statusText: res.statusMessage ?? '',
+            body: Buffer.concat(chunks).toString('utf8'),
+          }),
+        ),
+      );
       res.on('error', (e) => done(() => reject(new Unreachable(describeNetworkError(e)))));
     });
     // a host may answer (401, 413) and close before the whole body is sent: its answer is what counts
@@ -78,38 +92,55 @@ export const nodeTransport: Transport = {
   request(method, url, headers, body, signal) {
     const data = body === undefined ? undefined : Buffer.from(body, 'utf8');
     const h = data ? { ...headers, 'Content-Length': String(data.length) } : headers;
-    return send(new URL(url), method, h, async (req) => {
-      if (data) await write(req, data);
-    }, signal);
+    return send(
+      new URL(url),
+      method,
+      h,
+      async (req) => {
+        if (data) await write(req, data);
+      },
+      signal,
+    );
   },
 
   upload(url, headers, fields, file: FormFile, onProgress, signal) {
     const body = multipartBody(fields, file);
     // "Expect: 100-continue": a host that refuses the upload (a wrong key) answers before the body is sent,
     // instead of closing the connection while it arrives (which can lose its answer)
-    const h = { ...headers, 'Content-Type': body.contentType, 'Content-Length': String(body.total), Expect: '100-continue' };
-    return send(new URL(url), 'POST', h, async (req, stop) => {
-      req.flushHeaders();
-      await new Promise<void>((resolve) => {
-        const timer = setTimeout(resolve, CONTINUE_MS);
-        const go = () => {
-          clearTimeout(timer);
-          resolve();
+    const h = {
+      ...headers,
+      'Content-Type': body.contentType,
+      'Content-Length': String(body.total),
+      Expect: '100-continue',
+    };
+    return send(
+      new URL(url),
+      'POST',
+      h,
+      async (req, stop) => {
+        req.flushHeaders();
+        await new Promise<void>((resolve) => {
+          const timer = setTimeout(resolve, CONTINUE_MS);
+          const go = () => {
+            clearTimeout(timer);
+            resolve();
+          };
+          req.once('continue', go);
+          req.once('response', go);
+          req.once('close', go);
+        });
+        let sent = 0;
+        const put = async (chunk: Uint8Array) => {
+          if (stop()) throw new Error('answered');
+          await write(req, chunk);
+          sent += chunk.length;
+          onProgress?.(sent, body.total);
         };
-        req.once('continue', go);
-        req.once('response', go);
-        req.once('close', go);
-      });
-      let sent = 0;
-      const put = async (chunk: Uint8Array) => {
-        if (stop()) throw new Error('answered');
-        await write(req, chunk);
-        sent += chunk.length;
-        onProgress?.(sent, body.total);
-      };
-      await put(body.head);
-      for (let at = 0; at < file.bytes.length; at += PIECE) await put(file.bytes.subarray(at, at + PIECE));
-      await put(body.tail);
-    }, signal);
+        await put(body.head);
+        for (let at = 0; at < file.bytes.length; at += PIECE) await put(file.bytes.subarray(at, at + PIECE));
+        await put(body.tail);
+      },
+      signal,
+    );
   },
 };

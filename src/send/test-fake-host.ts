@@ -45,7 +45,9 @@ function parseForm(body: Buffer, contentType: string): Pick<Received, 'fields' |
   return out;
 }
 
-export async function fakeHost(answer: (r: Received) => Answer): Promise<{ url: string; received: Received[]; close: () => Promise<void> }> {
+export async function fakeHost(
+  answer: (r: Received) => Answer,
+): Promise<{ url: string; received: Received[]; close: () => Promise<void> }> {
   const received: Received[] = [];
   const handle = (req: IncomingMessage, res: ServerResponse, expectsContinue: boolean) => {
     const base = { method: req.method ?? '', path: req.url ?? '', headers: req.headers, fields: {}, complete: false };
@@ -65,7 +67,11 @@ export async function fakeHost(answer: (r: Received) => Answer): Promise<{ url: 
     const chunks: Buffer[] = [];
     req.on('data', (c: Buffer) => chunks.push(c));
     req.on('end', () => {
-      const r: Received = { ...base, complete: true, ...parseForm(Buffer.concat(chunks), String(req.headers['content-type'] ?? '')) };
+      const r: Received = {
+        ...base,
+        complete: true,
+        ...parseForm(Buffer.concat(chunks), String(req.headers['content-type'] ?? '')),
+      };
       received.push(r);
       reply(answer(r));
     });

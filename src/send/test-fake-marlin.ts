@@ -105,7 +105,8 @@ export class FakeMarlin {
         await new Promise((r) => setTimeout(r, this.#o.reportMs ?? 20));
       }
     }
-    if (this.#o.busyEvery && /^G1\b/.test(command) && this.executed.length % this.#o.busyEvery === 0) this.#say('echo:busy: processing');
+    if (this.#o.busyEvery && /^G1\b/.test(command) && this.executed.length % this.#o.busyEvery === 0)
+      this.#say('echo:busy: processing');
     this.#say('ok');
   }
 }

@@ -18,12 +18,27 @@ test('defaults resolve to Ender-3, PLA, 0.2 mm layers, 20 % grid, 2 walls, 4 ski
 });
 
 test('unknown settings, presets and out-of-range values are errors naming what is allowed', () => {
-  assert.throws(() => resolveConfig({ layerHieght: 0.2 } as never), (e: unknown) => e instanceof StrataError && /layerHeight/.test(e.message));
-  assert.throws(() => resolveConfig({ infillPattern: 'zigzag' } as never), (e: unknown) => e instanceof StrataError && /grid/.test(e.message));
-  assert.throws(() => resolveConfig({ infillDensity: 150 }), (e: unknown) => e instanceof StrataError && /0 to 100/.test(e.message));
+  assert.throws(
+    () => resolveConfig({ layerHieght: 0.2 } as never),
+    (e: unknown) => e instanceof StrataError && /layerHeight/.test(e.message),
+  );
+  assert.throws(
+    () => resolveConfig({ infillPattern: 'zigzag' } as never),
+    (e: unknown) => e instanceof StrataError && /grid/.test(e.message),
+  );
+  assert.throws(
+    () => resolveConfig({ infillDensity: 150 }),
+    (e: unknown) => e instanceof StrataError && /0 to 100/.test(e.message),
+  );
   assert.throws(() => resolveConfig({ layerHeight: Number.NaN }), StrataError);
-  assert.throws(() => resolveConfig({ printer: 'no-such-printer' }), (e: unknown) => e instanceof StrataError && e.code === 'UNKNOWN_PRESET');
-  assert.throws(() => resolveConfig({ layerHeight: 0.39 }), (e: unknown) => e instanceof StrataError && /too thick/.test(e.message));
+  assert.throws(
+    () => resolveConfig({ printer: 'no-such-printer' }),
+    (e: unknown) => e instanceof StrataError && e.code === 'UNKNOWN_PRESET',
+  );
+  assert.throws(
+    () => resolveConfig({ layerHeight: 0.39 }),
+    (e: unknown) => e instanceof StrataError && /too thick/.test(e.message),
+  );
 });
 
 test('the caller options object is never mutated', () => {

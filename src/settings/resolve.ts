@@ -87,7 +87,9 @@ function describeRange(def: SettingDef): string {
     case 'enum':
       return `one of ${def.values.join(', ')}`;
     case 'string':
-      return def.pattern ? `text of at most ${def.maxLength} characters in the form the setting describes (${def.description})` : `text of at most ${def.maxLength} characters`;
+      return def.pattern
+        ? `text of at most ${def.maxLength} characters in the form the setting describes (${def.description})`
+        : `text of at most ${def.maxLength} characters`;
   }
 }
 
@@ -95,7 +97,10 @@ function describeRange(def: SettingDef): string {
 export function validateValue(key: SettingKey, value: unknown, source = 'option'): unknown {
   const def: SettingDef = SCHEMA[key];
   const bad = (): never => {
-    throw new StrataError('BAD_SETTING', `${source} ${key} = ${JSON.stringify(value)} is not allowed: expected ${describeRange(def)}`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `${source} ${key} = ${JSON.stringify(value)} is not allowed: expected ${describeRange(def)}`,
+    );
   };
   switch (def.type) {
     case 'number':
@@ -111,7 +116,9 @@ export function validateValue(key: SettingKey, value: unknown, source = 'option'
     case 'enum':
       return typeof value === 'string' && def.values.includes(value) ? value : bad();
     case 'string':
-      return typeof value === 'string' && value.length <= def.maxLength && (!def.pattern || def.pattern.test(value)) ? value : bad();
+      return typeof value === 'string' && value.length <= def.maxLength && (!def.pattern || def.pattern.test(value))
+        ? value
+        : bad();
   }
 }
 
@@ -150,7 +157,10 @@ export function parseSettingText(key: SettingKey, text: string): unknown {
 export function checkKey(key: string, source = 'option'): SettingKey {
   if (Object.prototype.hasOwnProperty.call(SCHEMA, key)) return key as SettingKey;
   const s = suggest(key, SETTING_KEYS);
-  throw new StrataError('UNKNOWN_SETTING', `unknown ${source} "${key}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata settings\` lists them all`);
+  throw new StrataError(
+    'UNKNOWN_SETTING',
+    `unknown ${source} "${key}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata settings\` lists them all`,
+  );
 }
 
 function applyLayer(target: Record<string, unknown>, values: Readonly<Record<string, unknown>>, source: string): void {
@@ -172,8 +182,10 @@ export function resolveConfig(options: SliceOptions = {}): Config {
   const { printer: printerName, filament: filamentName, ...rest } = options as Record<string, unknown>;
   const printerId = typeof printerName === 'string' ? printerName : DEFAULT_PRINTER;
   const filamentId = typeof filamentName === 'string' ? filamentName : DEFAULT_FILAMENT;
-  if (printerName !== undefined && typeof printerName !== 'string') throw new StrataError('UNKNOWN_PRESET', 'printer must be a preset name');
-  if (filamentName !== undefined && typeof filamentName !== 'string') throw new StrataError('UNKNOWN_PRESET', 'filament must be a preset name');
+  if (printerName !== undefined && typeof printerName !== 'string')
+    throw new StrataError('UNKNOWN_PRESET', 'printer must be a preset name');
+  if (filamentName !== undefined && typeof filamentName !== 'string')
+    throw new StrataError('UNKNOWN_PRESET', 'filament must be a preset name');
   const printer = findPrinter(printerId);
   const presets = listPresets();
   if (!printer) {
@@ -181,15 +193,30 @@ export function resolveConfig(options: SliceOptions = {}): Config {
     if (gap) {
       const [x, y, z] = gap.size;
       const size = `buildPlateWidth ${x}, buildPlateLength ${y}, buildVolumeHeight ${z}`;
-      throw new StrataError('UNKNOWN_PRESET', `no printer preset for ${gap.name} ("${printerId}"): ${gap.why}${gap.kind === 'g-code' ? `; a generic Marlin printer with its size (${size}) slices for it` : ''}`);
+      throw new StrataError(
+        'UNKNOWN_PRESET',
+        `no printer preset for ${gap.name} ("${printerId}"): ${gap.why}${gap.kind === 'g-code' ? `; a generic Marlin printer with its size (${size}) slices for it` : ''}`,
+      );
     }
-    const s = suggest(printerId, presets.printers.map((p) => p.id));
-    throw new StrataError('UNKNOWN_PRESET', `unknown printer "${printerId}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata presets\` lists them`);
+    const s = suggest(
+      printerId,
+      presets.printers.map((p) => p.id),
+    );
+    throw new StrataError(
+      'UNKNOWN_PRESET',
+      `unknown printer "${printerId}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata presets\` lists them`,
+    );
   }
   const filament = findFilament(filamentId);
   if (!filament) {
-    const s = suggest(filamentId, presets.filaments.map((p) => p.id));
-    throw new StrataError('UNKNOWN_PRESET', `unknown filament "${filamentId}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata presets\` lists them`);
+    const s = suggest(
+      filamentId,
+      presets.filaments.map((p) => p.id),
+    );
+    throw new StrataError(
+      'UNKNOWN_PRESET',
+      `unknown filament "${filamentId}"${s ? ` (did you mean "${s}"?)` : ''}; \`strata presets\` lists them`,
+    );
   }
 
   const values: Record<string, unknown> = {};
@@ -200,7 +227,10 @@ export function resolveConfig(options: SliceOptions = {}): Config {
   applyLayer(values, rest, 'option');
   // A caller who sets the temperature but not the first-layer one means the first layer to follow it,
   // keeping the preset's first-layer offset (e.g. +5 °C).
-  const follow = (main: 'nozzleTemperature' | 'bedTemperature', first: 'firstLayerNozzleTemperature' | 'firstLayerBedTemperature') => {
+  const follow = (
+    main: 'nozzleTemperature' | 'bedTemperature',
+    first: 'firstLayerNozzleTemperature' | 'firstLayerBedTemperature',
+  ) => {
     if (rest[main] !== undefined && rest[first] === undefined && preset[first] !== null) {
       values[first] = Math.max(0, (values[main] as number) + ((preset[first] as number) - (preset[main] as number)));
     }
@@ -212,13 +242,22 @@ export function resolveConfig(options: SliceOptions = {}): Config {
   const lineWidthMm = s.lineWidth ?? s.nozzleDiameter;
   const firstLayerLineWidthMm = s.firstLayerLineWidth ?? lineWidthMm;
   if (s.layerHeight > s.nozzleDiameter * 0.85) {
-    throw new StrataError('BAD_SETTING', `layerHeight ${s.layerHeight} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most 85% of it: ${round3(s.nozzleDiameter * 0.85)} mm)`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `layerHeight ${s.layerHeight} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most 85% of it: ${round3(s.nozzleDiameter * 0.85)} mm)`,
+    );
   }
   if (s.firstLayerHeight > s.nozzleDiameter * 0.9) {
-    throw new StrataError('BAD_SETTING', `firstLayerHeight ${s.firstLayerHeight} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most ${round3(s.nozzleDiameter * 0.9)} mm)`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `firstLayerHeight ${s.firstLayerHeight} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most ${round3(s.nozzleDiameter * 0.9)} mm)`,
+    );
   }
   if (lineWidthMm < s.nozzleDiameter * 0.6 || lineWidthMm > s.nozzleDiameter * 2.5) {
-    throw new StrataError('BAD_SETTING', `lineWidth ${lineWidthMm} mm does not suit a ${s.nozzleDiameter} mm nozzle (allowed ${round3(s.nozzleDiameter * 0.6)} to ${round3(s.nozzleDiameter * 2.5)} mm)`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `lineWidth ${lineWidthMm} mm does not suit a ${s.nozzleDiameter} mm nozzle (allowed ${round3(s.nozzleDiameter * 0.6)} to ${round3(s.nozzleDiameter * 2.5)} mm)`,
+    );
   }
   const minLayerHeightMm = s.minLayerHeight ?? Math.min(s.layerHeight, round3(s.nozzleDiameter * 0.175));
   const maxLayerHeightMm = s.maxLayerHeight ?? Math.max(s.layerHeight, round3(s.nozzleDiameter * 0.75));
@@ -241,7 +280,9 @@ export function resolveConfig(options: SliceOptions = {}): Config {
     supportFloorLayerCount: s.supportFloorLayers ?? s.supportInterfaceLayers,
     supportWalls: s.supportWallCount ?? (s.supportType === 'tree' ? 1 : 0),
     supportColumnWalls: s.supportWallCount ?? 0,
-    supportTreeTipSpacingMm: s.supportTreeTipSpacing ?? (s.supportInterfaceLayers > 0 ? TREE_TIP_SPACING_UNDER_ROOF_MM : TREE_TIP_SPACING_NO_ROOF_MM),
+    supportTreeTipSpacingMm:
+      s.supportTreeTipSpacing ??
+      (s.supportInterfaceLayers > 0 ? TREE_TIP_SPACING_UNDER_ROOF_MM : TREE_TIP_SPACING_NO_ROOF_MM),
     raftBaseLineWidthMm: s.raftBaseLineWidth ?? 2 * s.nozzleDiameter,
     raftBaseLineSpacingMm: s.raftBaseLineSpacing ?? 2 * (s.raftBaseLineWidth ?? 2 * s.nozzleDiameter),
     raftInterfaceLineSpacingMm: s.raftInterfaceLineSpacing ?? 2.5 * lineWidthMm,
@@ -257,8 +298,12 @@ function checkAdaptiveLimits(min: number, max: number, s: Settings): void {
     throw new StrataError('BAD_SETTING', `adaptiveLayerHeight: ${why}`);
   };
   if (min > max) bad(`minLayerHeight ${min} mm is above maxLayerHeight ${max} mm`);
-  if (s.layerHeight < min || s.layerHeight > max) bad(`layerHeight ${s.layerHeight} mm must lie between minLayerHeight ${min} mm and maxLayerHeight ${max} mm`);
-  if (max > s.nozzleDiameter * 0.85) bad(`maxLayerHeight ${max} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most 85% of it: ${round3(s.nozzleDiameter * 0.85)} mm)`);
+  if (s.layerHeight < min || s.layerHeight > max)
+    bad(`layerHeight ${s.layerHeight} mm must lie between minLayerHeight ${min} mm and maxLayerHeight ${max} mm`);
+  if (max > s.nozzleDiameter * 0.85)
+    bad(
+      `maxLayerHeight ${max} mm is too thick for a ${s.nozzleDiameter} mm nozzle (at most 85% of it: ${round3(s.nozzleDiameter * 0.85)} mm)`,
+    );
 }
 
 /** A gap in mm as whole layers (rounded to the nearest). */

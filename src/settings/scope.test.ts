@@ -26,7 +26,10 @@ function settingsReadIn(folder: string): Map<SettingKey, string> {
 test('every setting has a scope', () => {
   for (const k of SETTING_KEYS) assert.ok(['print', 'layer', 'object', 'region'].includes(SETTING_SCOPE[k]), k);
   // one Z plan for the plate: the layer height varies by height only (layer ranges), never per object
-  assert.deepEqual(SETTING_KEYS.filter((k) => SETTING_SCOPE[k] === 'layer'), ['layerHeight']);
+  assert.deepEqual(
+    SETTING_KEYS.filter((k) => SETTING_SCOPE[k] === 'layer'),
+    ['layerHeight'],
+  );
   assert.equal(SETTING_SCOPE.nozzleTemperature, 'print');
   assert.equal(SETTING_SCOPE.infillDensity, 'region');
   assert.equal(SETTING_SCOPE.supportEnabled, 'object');
@@ -37,18 +40,32 @@ test('what the planner and the G-code writer read once per print is print-scoped
   for (const folder of ['plan', 'gcode']) {
     const read = settingsReadIn(folder);
     assert.ok(read.size > 10, `${folder} reads settings`);
-    for (const [key, file] of read) assert.equal(SETTING_SCOPE[key], 'print', `${key}, read in ${folder}/${file}, must be print-scoped`);
+    for (const [key, file] of read)
+      assert.equal(SETTING_SCOPE[key], 'print', `${key}, read in ${folder}/${file}, must be print-scoped`);
   }
 });
 
 test('scope misuse is refused naming the key and where it may be set', () => {
-  assert.throws(() => checkScope('bedTemperature', 'object', 'object "a"'), (e: unknown) => e instanceof StrataError && /object "a": bedTemperature is the same for the whole print/.test(e.message));
-  assert.throws(() => checkScope('supportType', 'modifier', 'modifier "m"'), /supportType may vary per object but not inside one/);
+  assert.throws(
+    () => checkScope('bedTemperature', 'object', 'object "a"'),
+    (e: unknown) =>
+      e instanceof StrataError && /object "a": bedTemperature is the same for the whole print/.test(e.message),
+  );
+  assert.throws(
+    () => checkScope('supportType', 'modifier', 'modifier "m"'),
+    /supportType may vary per object but not inside one/,
+  );
   assert.doesNotThrow(() => checkScope('supportType', 'object', 'x'));
   assert.doesNotThrow(() => checkScope('infillPattern', 'layer range', 'x'));
   assert.doesNotThrow(() => checkScope('layerHeight', 'layer range', 'x'));
-  assert.throws(() => checkScope('layerHeight', 'modifier', 'modifier "m"'), /modifier "m": layerHeight is the same for every object at one height, so it cannot be set for a modifier; set it for the print or a layer range instead/);
-  assert.throws(() => checkScope('firstLayerHeight', 'layer range', 'x'), /firstLayerHeight is the same for the whole print/);
+  assert.throws(
+    () => checkScope('layerHeight', 'modifier', 'modifier "m"'),
+    /modifier "m": layerHeight is the same for every object at one height, so it cannot be set for a modifier; set it for the print or a layer range instead/,
+  );
+  assert.throws(
+    () => checkScope('firstLayerHeight', 'layer range', 'x'),
+    /firstLayerHeight is the same for the whole print/,
+  );
 });
 
 test('configs that resolve the same are one config; the print config is the first', () => {
@@ -65,5 +82,8 @@ test('configs that resolve the same are one config; the print config is the firs
   assert.equal(table.configs.length, 2);
   assert.equal(table.configs[1].infillDensity, 60);
   assert.equal(table.configs[1].layerHeight, 0.2);
-  assert.throws(() => table.resolve([{ settings: { infillDensity: -3 }, use: 'object', where: 'object "e"' }]), /^StrataError: object "e" setting infillDensity|infillDensity = -3 is not allowed/);
+  assert.throws(
+    () => table.resolve([{ settings: { infillDensity: -3 }, use: 'object', where: 'object "e"' }]),
+    /^StrataError: object "e" setting infillDensity|infillDensity = -3 is not allowed/,
+  );
 });

@@ -59,7 +59,10 @@ const BY_STAGE: Record<Stage, Scope> = {
 
 /** Every setting's scope. */
 export const SETTING_SCOPE: Readonly<Record<SettingKey, Scope>> = Object.freeze(
-  Object.fromEntries(SETTING_KEYS.map((k) => [k, EXCEPTIONS[k] ?? BY_STAGE[SCHEMA[k].stage]])) as Record<SettingKey, Scope>,
+  Object.fromEntries(SETTING_KEYS.map((k) => [k, EXCEPTIONS[k] ?? BY_STAGE[SCHEMA[k].stage]])) as Record<
+    SettingKey,
+    Scope
+  >,
 );
 
 /** Where settings were given, for the scope check and its message. */
@@ -78,7 +81,15 @@ const ALLOWED: Record<ScopeUse, readonly Scope[]> = {
 export function checkScope(key: SettingKey, use: ScopeUse, where: string): void {
   const scope = SETTING_SCOPE[key];
   if (ALLOWED[use].includes(scope)) return;
-  const what = scope === 'print' ? 'is the same for the whole print' : scope === 'layer' ? 'is the same for every object at one height' : 'may vary per object but not inside one';
+  const what =
+    scope === 'print'
+      ? 'is the same for the whole print'
+      : scope === 'layer'
+        ? 'is the same for every object at one height'
+        : 'may vary per object but not inside one';
   const instead = scope === 'print' ? 'the print' : scope === 'layer' ? 'the print or a layer range' : 'the object';
-  throw new StrataError('BAD_SETTING', `${where}: ${key} ${what}, so it cannot be set for ${use === 'object' ? 'an' : 'a'} ${use}; set it for ${instead} instead`);
+  throw new StrataError(
+    'BAD_SETTING',
+    `${where}: ${key} ${what}, so it cannot be set for ${use === 'object' ? 'an' : 'a'} ${use}; set it for ${instead} instead`,
+  );
 }

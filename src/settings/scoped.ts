@@ -57,7 +57,10 @@ export class ConfigTable {
       return this.#add(resolveConfig(merged as SliceOptions));
     } catch (e) {
       if (e instanceof StrataError) {
-        const where = layers.filter((l) => l.settings).map((l) => l.where).join(', ');
+        const where = layers
+          .filter((l) => l.settings)
+          .map((l) => l.where)
+          .join(', ');
         throw new StrataError(e.code, `${where}: ${e.message}`);
       }
       throw e;

@@ -17,7 +17,11 @@ interface SetAside {
 
 const SET_ASIDE: readonly SetAside[] = [
   { key: 'wallCount', ignored: (v) => typeof v === 'number' && v !== 1, instead: 'one wall' },
-  { key: 'shellWallThickness', ignored: (v, cfg) => typeof v === 'number' && Math.round(v / cfg.lineWidthMm + 1e-9) !== 1, instead: 'one wall' },
+  {
+    key: 'shellWallThickness',
+    ignored: (v, cfg) => typeof v === 'number' && Math.round(v / cfg.lineWidthMm + 1e-9) !== 1,
+    instead: 'one wall',
+  },
   { key: 'infillDensity', ignored: (v) => typeof v === 'number' && v > 0, instead: 'no infill' },
   { key: 'topSkinThickness', ignored: (v) => typeof v === 'number' && v > 0, instead: 'no top skin' },
   { key: 'supportEnabled', ignored: (v) => v === true, instead: 'no support' },
@@ -34,7 +38,10 @@ const SET_ASIDE: readonly SetAside[] = [
  * own settings) a value the spiral vase sets aside above its bottom, or null when there are none or the vase
  * is off.
  */
-export function vaseWarning(given: ReadonlyArray<Readonly<Record<string, unknown>> | undefined>, cfg: Config): string | null {
+export function vaseWarning(
+  given: ReadonlyArray<Readonly<Record<string, unknown>> | undefined>,
+  cfg: Config,
+): string | null {
   if (!cfg.spiralVase) return null;
   const named: string[] = [];
   for (const s of SET_ASIDE) {

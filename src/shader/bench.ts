@@ -59,7 +59,9 @@ function bench(name: string, src: string, points = 1_000_000): void {
     best = Math.min(best, performance.now() - t);
   }
   const n = side * side;
-  console.log(`${name}: ${n} points in ${best.toFixed(0)} ms (${((n / best) * 1000 / 1e6).toFixed(2)} M points/s)${sink < 0 ? '' : ''}`);
+  console.log(
+    `${name}: ${n} points in ${best.toFixed(0)} ms (${(((n / best) * 1000) / 1e6).toFixed(2)} M points/s)${sink < 0 ? '' : ''}`,
+  );
 }
 
 for (const [name, hash] of CASES) bench(name, VORONOI(hash));

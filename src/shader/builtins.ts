@@ -49,7 +49,8 @@ function numeric(ctx: Ctx, name: string, v: Value): void {
 
 function arity(ctx: Ctx, name: string, args: Value[], n: number | number[]): void {
   const ok = typeof n === 'number' ? args.length === n : n.includes(args.length);
-  if (!ok) throw ctx.error(`${name}() takes ${typeof n === 'number' ? n : n.join(' or ')} argument(s), got ${args.length}`);
+  if (!ok)
+    throw ctx.error(`${name}() takes ${typeof n === 'number' ? n : n.join(' or ')} argument(s), got ${args.length}`);
 }
 
 /** The common shape of component-wise arguments: scalars splat to the one vector shape present. */
@@ -58,7 +59,8 @@ function shapeOf(ctx: Ctx, name: string, args: Value[]): GType {
   for (const a of args) {
     if (isScalar(a.t)) continue;
     if (shape === undefined) shape = a.t;
-    else if (shape.rows !== a.t.rows || shape.cols !== a.t.cols) throw ctx.error(`${name}(): argument sizes do not match`);
+    else if (shape.rows !== a.t.rows || shape.cols !== a.t.cols)
+      throw ctx.error(`${name}(): argument sizes do not match`);
   }
   return shape ?? FLOAT;
 }
@@ -67,7 +69,16 @@ function shapeOf(ctx: Ctx, name: string, args: Value[]): GType {
  * Apply `f` to each component. `reuse[i]` says argument i appears more than once in f's output
  * (it is then bound to temporaries first).
  */
-function mapComps(ctx: Ctx, name: string, args: Value[], base: Base, resultBase: Base, f: Comp, fold?: Fold, reuse: boolean[] = []): Value {
+function mapComps(
+  ctx: Ctx,
+  name: string,
+  args: Value[],
+  base: Base,
+  resultBase: Base,
+  f: Comp,
+  fold?: Fold,
+  reuse: boolean[] = [],
+): Value {
   const shape = shapeOf(ctx, name, args);
   const t = gtype(base, shape.rows, shape.cols);
   const conv = args.map((a) => convert(a, base));
@@ -96,7 +107,15 @@ function math1(ctx: Ctx, name: string, args: Value[], fn: PureMathName): Value {
   arity(ctx, name, args, 1);
   numeric(ctx, name, args[0]);
   const f = PURE_MATH[fn] as (x: number) => number;
-  return mapComps(ctx, name, args, 'float', 'float', (c) => `m_${fn}(${c[0]})`, (k) => f(k[0]));
+  return mapComps(
+    ctx,
+    name,
+    args,
+    'float',
+    'float',
+    (c) => `m_${fn}(${c[0]})`,
+    (k) => f(k[0]),
+  );
 }
 
 function dotComps(a: Value, b: Value): string {
@@ -118,7 +137,8 @@ function sameSize(ctx: Ctx, name: string, a: Value, b: Value): void {
 function vectorCompare(ctx: Ctx, name: string, args: Value[], op: string): Value {
   arity(ctx, name, args, 2);
   const [a, b] = args;
-  if (!isVector(a.t) || !isVector(b.t) || a.t.rows !== b.t.rows) throw ctx.error(`${name}() needs two vectors of the same size`);
+  if (!isVector(a.t) || !isVector(b.t) || a.t.rows !== b.t.rows)
+    throw ctx.error(`${name}() needs two vectors of the same size`);
   const numericOp = op !== '===' && op !== '!==';
   if (numericOp) {
     numeric(ctx, name, a);
@@ -182,29 +202,78 @@ export function callBuiltin(ctx: Ctx, name: string, args: Value[], host: HostOpt
       arity(ctx, name, args, 1);
       numeric(ctx, name, args[0]);
       const f = name === 'radians' ? Math.PI / 180 : 180 / Math.PI;
-      return mapComps(ctx, name, args, 'float', 'float', (c) => `(${c[0]} * ${f})`, (k) => k[0] * f);
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'float',
+        (c) => `(${c[0]} * ${f})`,
+        (k) => k[0] * f,
+      );
     }
     case 'exp2':
       arity(ctx, name, args, 1);
       numeric(ctx, name, args[0]);
-      return mapComps(ctx, name, args, 'float', 'float', (c) => `m_pow(2, ${c[0]})`, (k) => Math.pow(2, k[0]));
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'float',
+        (c) => `m_pow(2, ${c[0]})`,
+        (k) => Math.pow(2, k[0]),
+      );
     case 'inversesqrt':
       arity(ctx, name, args, 1);
       numeric(ctx, name, args[0]);
-      return mapComps(ctx, name, args, 'float', 'float', (c) => `(1 / m_sqrt(${c[0]}))`, (k) => 1 / Math.sqrt(k[0]));
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'float',
+        (c) => `(1 / m_sqrt(${c[0]}))`,
+        (k) => 1 / Math.sqrt(k[0]),
+      );
     case 'fract':
       arity(ctx, name, args, 1);
       numeric(ctx, name, args[0]);
-      return mapComps(ctx, name, args, 'float', 'float', (c) => `(${c[0]} - m_floor(${c[0]}))`, (k) => k[0] - Math.floor(k[0]), [true]);
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'float',
+        (c) => `(${c[0]} - m_floor(${c[0]}))`,
+        (k) => k[0] - Math.floor(k[0]),
+        [true],
+      );
     case 'atan':
       arity(ctx, name, args, [1, 2]);
       for (const a of args) numeric(ctx, name, a);
       if (args.length === 1) return math1(ctx, name, args, 'atan');
-      return mapComps(ctx, name, args, 'float', 'float', (c) => `m_atan2(${c[0]}, ${c[1]})`, (k) => Math.atan2(k[0], k[1]));
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'float',
+        (c) => `m_atan2(${c[0]}, ${c[1]})`,
+        (k) => Math.atan2(k[0], k[1]),
+      );
     case 'pow':
       arity(ctx, name, args, 2);
       for (const a of args) numeric(ctx, name, a);
-      return mapComps(ctx, name, args, 'float', 'float', (c) => `m_pow(${c[0]}, ${c[1]})`, (k) => Math.pow(k[0], k[1]));
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'float',
+        (c) => `m_pow(${c[0]}, ${c[1]})`,
+        (k) => Math.pow(k[0], k[1]),
+      );
     case 'mod':
       arity(ctx, name, args, 2);
       for (const a of args) numeric(ctx, name, a);
@@ -224,13 +293,29 @@ export function callBuiltin(ctx: Ctx, name: string, args: Value[], host: HostOpt
       const base = intOrFloat(args);
       if (base === 'uint') return args[0];
       const wrap = base === 'int' ? ' | 0' : '';
-      return mapComps(ctx, name, args, base, base, (c) => (wrap ? `(m_abs(${c[0]})${wrap})` : `m_abs(${c[0]})`), (k) => (base === 'int' ? Math.abs(k[0]) | 0 : Math.abs(k[0])));
+      return mapComps(
+        ctx,
+        name,
+        args,
+        base,
+        base,
+        (c) => (wrap ? `(m_abs(${c[0]})${wrap})` : `m_abs(${c[0]})`),
+        (k) => (base === 'int' ? Math.abs(k[0]) | 0 : Math.abs(k[0])),
+      );
     }
     case 'sign': {
       arity(ctx, name, args, 1);
       numeric(ctx, name, args[0]);
       const base = intOrFloat(args);
-      return mapComps(ctx, name, args, base, base, (c) => `m_sign(${c[0]})`, (k) => Math.sign(k[0]));
+      return mapComps(
+        ctx,
+        name,
+        args,
+        base,
+        base,
+        (c) => `m_sign(${c[0]})`,
+        (k) => Math.sign(k[0]),
+      );
     }
     case 'min':
     case 'max': {
@@ -268,7 +353,14 @@ export function callBuiltin(ctx: Ctx, name: string, args: Value[], host: HostOpt
       arity(ctx, name, args, 3);
       if (args[2].t.base === 'bool') {
         const base = args[0].t.base === args[1].t.base ? args[0].t.base : 'float';
-        return mapComps(ctx, name, [convert(args[0], base), convert(args[1], base), args[2]].map((a, i) => (i === 2 ? a : a)), base, base, (c) => `(${c[2]} ? ${c[1]} : ${c[0]})`);
+        return mapComps(
+          ctx,
+          name,
+          [convert(args[0], base), convert(args[1], base), args[2]].map((a, i) => (i === 2 ? a : a)),
+          base,
+          base,
+          (c) => `(${c[2]} ? ${c[1]} : ${c[0]})`,
+        );
       }
       for (const a of args) numeric(ctx, name, a);
       return mapComps(
@@ -285,22 +377,74 @@ export function callBuiltin(ctx: Ctx, name: string, args: Value[], host: HostOpt
     case 'step':
       arity(ctx, name, args, 2);
       for (const a of args) numeric(ctx, name, a);
-      return mapComps(ctx, name, args, 'float', 'float', (c) => `(${c[1]} < ${c[0]} ? 0 : 1)`, (k) => (k[1] < k[0] ? 0 : 1));
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'float',
+        (c) => `(${c[1]} < ${c[0]} ? 0 : 1)`,
+        (k) => (k[1] < k[0] ? 0 : 1),
+      );
     case 'smoothstep': {
       arity(ctx, name, args, 3);
       for (const a of args) numeric(ctx, name, a);
-      const q = mapComps(ctx, name, args, 'float', 'float', (c) => `((${c[2]} - ${c[0]}) / (${c[1]} - ${c[0]}))`, (k) => (k[2] - k[0]) / (k[1] - k[0]), [true, false, false]);
-      const clamped = mapComps(ctx, name, [q], 'float', 'float', (c) => `(${c[0]} < 0 ? 0 : ${c[0]} > 1 ? 1 : ${c[0]})`, (k) => Math.min(1, Math.max(0, k[0])), [true]);
-      return mapComps(ctx, name, [clamped], 'float', 'float', (c) => `(${c[0]} * ${c[0]} * (3 - 2 * ${c[0]}))`, (k) => k[0] * k[0] * (3 - 2 * k[0]), [true]);
+      const q = mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'float',
+        (c) => `((${c[2]} - ${c[0]}) / (${c[1]} - ${c[0]}))`,
+        (k) => (k[2] - k[0]) / (k[1] - k[0]),
+        [true, false, false],
+      );
+      const clamped = mapComps(
+        ctx,
+        name,
+        [q],
+        'float',
+        'float',
+        (c) => `(${c[0]} < 0 ? 0 : ${c[0]} > 1 ? 1 : ${c[0]})`,
+        (k) => Math.min(1, Math.max(0, k[0])),
+        [true],
+      );
+      return mapComps(
+        ctx,
+        name,
+        [clamped],
+        'float',
+        'float',
+        (c) => `(${c[0]} * ${c[0]} * (3 - 2 * ${c[0]}))`,
+        (k) => k[0] * k[0] * (3 - 2 * k[0]),
+        [true],
+      );
     }
     case 'isnan':
       arity(ctx, name, args, 1);
       numeric(ctx, name, args[0]);
-      return mapComps(ctx, name, args, 'float', 'bool', (c) => `(${c[0]} !== ${c[0]})`, (k) => Number.isNaN(k[0]), [true]);
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'bool',
+        (c) => `(${c[0]} !== ${c[0]})`,
+        (k) => Number.isNaN(k[0]),
+        [true],
+      );
     case 'isinf':
       arity(ctx, name, args, 1);
       numeric(ctx, name, args[0]);
-      return mapComps(ctx, name, args, 'float', 'bool', (c) => `(m_abs(${c[0]}) === (1/0))`, (k) => Math.abs(k[0]) === Infinity);
+      return mapComps(
+        ctx,
+        name,
+        args,
+        'float',
+        'bool',
+        (c) => `(m_abs(${c[0]}) === (1/0))`,
+        (k) => Math.abs(k[0]) === Infinity,
+      );
     case 'floatBitsToInt':
     case 'floatBitsToUint':
     case 'intBitsToFloat':
@@ -341,7 +485,11 @@ export function callBuiltin(ctx: Ctx, name: string, args: Value[], host: HostOpt
       const b = ctx.atomValue(b0).c;
       return {
         t: gtype('float', 3),
-        c: [`(${a[1]} * ${b[2]} - ${a[2]} * ${b[1]})`, `(${a[2]} * ${b[0]} - ${a[0]} * ${b[2]})`, `(${a[0]} * ${b[1]} - ${a[1]} * ${b[0]})`],
+        c: [
+          `(${a[1]} * ${b[2]} - ${a[2]} * ${b[1]})`,
+          `(${a[2]} * ${b[0]} - ${a[0]} * ${b[2]})`,
+          `(${a[0]} * ${b[1]} - ${a[1]} * ${b[0]})`,
+        ],
       };
     }
     case 'normalize': {
@@ -380,12 +528,14 @@ export function callBuiltin(ctx: Ctx, name: string, args: Value[], host: HostOpt
     case 'matrixCompMult': {
       arity(ctx, name, args, 2);
       const [a, b] = args;
-      if (!isMatrix(a.t) || a.t.rows !== b.t.rows || a.t.cols !== b.t.cols) throw ctx.error('matrixCompMult() needs two matrices of the same size');
+      if (!isMatrix(a.t) || a.t.rows !== b.t.rows || a.t.cols !== b.t.cols)
+        throw ctx.error('matrixCompMult() needs two matrices of the same size');
       return { t: a.t, c: a.c.map((c, i) => `(${c} * ${b.c[i]})`) };
     }
     case 'outerProduct': {
       const [c0, r0] = vecArgs(ctx, name, args, 2);
-      if (!isVector(c0.t) || c0.t.rows !== r0.t.rows) throw ctx.error('outerProduct() needs two vectors of the same size');
+      if (!isVector(c0.t) || c0.t.rows !== r0.t.rows)
+        throw ctx.error('outerProduct() needs two vectors of the same size');
       const c = ctx.atomValue(c0);
       const r = ctx.atomValue(r0);
       const n = c.t.rows;
@@ -418,7 +568,12 @@ export function callBuiltin(ctx: Ctx, name: string, args: Value[], host: HostOpt
       const at = (r: number, c: number) => m.c[c * n + r];
       const out: string[] = [];
       if (n === 2) {
-        out.push(`(${at(1, 1)} * ${inv})`, `(-${at(1, 0)} * ${inv})`, `(-${at(0, 1)} * ${inv})`, `(${at(0, 0)} * ${inv})`);
+        out.push(
+          `(${at(1, 1)} * ${inv})`,
+          `(-${at(1, 0)} * ${inv})`,
+          `(-${at(0, 1)} * ${inv})`,
+          `(${at(0, 0)} * ${inv})`,
+        );
       } else {
         for (let col = 0; col < 3; col++) {
           for (let row = 0; row < 3; row++) {
@@ -484,10 +639,71 @@ export function isBuiltinName(name: string): boolean {
 }
 
 const BUILTIN_NAMES = new Set([
-  'sin', 'cos', 'tan', 'asin', 'acos', 'atan', 'sinh', 'cosh', 'tanh', 'asinh', 'acosh', 'atanh', 'exp', 'log', 'exp2', 'log2',
-  'sqrt', 'inversesqrt', 'floor', 'ceil', 'trunc', 'round', 'roundEven', 'fract', 'radians', 'degrees', 'pow', 'mod', 'abs',
-  'sign', 'min', 'max', 'clamp', 'mix', 'step', 'smoothstep', 'isnan', 'isinf', 'floatBitsToInt', 'floatBitsToUint',
-  'intBitsToFloat', 'uintBitsToFloat', 'length', 'distance', 'dot', 'cross', 'normalize', 'faceforward', 'reflect', 'refract',
-  'matrixCompMult', 'outerProduct', 'transpose', 'determinant', 'inverse', 'lessThan', 'lessThanEqual', 'greaterThan',
-  'greaterThanEqual', 'equal', 'notEqual', 'any', 'all', 'not', 'density', 'nozzle_diameter', 'layer_height',
+  'sin',
+  'cos',
+  'tan',
+  'asin',
+  'acos',
+  'atan',
+  'sinh',
+  'cosh',
+  'tanh',
+  'asinh',
+  'acosh',
+  'atanh',
+  'exp',
+  'log',
+  'exp2',
+  'log2',
+  'sqrt',
+  'inversesqrt',
+  'floor',
+  'ceil',
+  'trunc',
+  'round',
+  'roundEven',
+  'fract',
+  'radians',
+  'degrees',
+  'pow',
+  'mod',
+  'abs',
+  'sign',
+  'min',
+  'max',
+  'clamp',
+  'mix',
+  'step',
+  'smoothstep',
+  'isnan',
+  'isinf',
+  'floatBitsToInt',
+  'floatBitsToUint',
+  'intBitsToFloat',
+  'uintBitsToFloat',
+  'length',
+  'distance',
+  'dot',
+  'cross',
+  'normalize',
+  'faceforward',
+  'reflect',
+  'refract',
+  'matrixCompMult',
+  'outerProduct',
+  'transpose',
+  'determinant',
+  'inverse',
+  'lessThan',
+  'lessThanEqual',
+  'greaterThan',
+  'greaterThanEqual',
+  'equal',
+  'notEqual',
+  'any',
+  'all',
+  'not',
+  'density',
+  'nozzle_diameter',
+  'layer_height',
 ]);

@@ -32,7 +32,9 @@ function rotateClosed(p: Polyline, at: Pt): Polyline {
 
 /** Order (and orient) paths from `start` so the travel between them is short. */
 export function orderPaths(paths: readonly Polyline[], start: Pt, joinGap = 5): Polyline[] {
-  const entries: Entry[] = paths.filter((p) => p.length >= 2).map((p) => ({ path: p, closed: isClosed(p), used: false }));
+  const entries: Entry[] = paths
+    .filter((p) => p.length >= 2)
+    .map((p) => ({ path: p, closed: isClosed(p), used: false }));
   if (entries.length === 0) return [];
   let minX = Infinity;
   let minY = Infinity;

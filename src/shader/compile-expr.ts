@@ -4,7 +4,19 @@
  * Side effects (assignments, ++/--, user calls) are emitted as statements in evaluation order.
  */
 import type { Base, GType } from './glsl-types.js';
-import { BOOL, FLOAT, INT, UINT, gtype, implicitlyConvertible, isMatrix, isScalar, parseTypeName, size, typeName } from './glsl-types.js';
+import {
+  BOOL,
+  FLOAT,
+  INT,
+  UINT,
+  gtype,
+  implicitlyConvertible,
+  isMatrix,
+  isScalar,
+  parseTypeName,
+  size,
+  typeName,
+} from './glsl-types.js';
 import type { ArraySym, Ctx, FnSym, LValue, Slot, Value } from './compiler-context.js';
 import { Buf, VOID_TYPE, isVoid, short } from './compiler-context.js';
 import { constValue, construct, convert, lit } from './values.js';
@@ -33,7 +45,11 @@ function parseIntToken(ctx: Ctx, token: string): Value {
   const m = /^(0[xX][0-9a-fA-F]+|0[0-7]*|[1-9][0-9]*)([uU]?)$/.exec(token);
   if (!m) throw ctx.error(`bad integer literal '${short(token)}'`);
   const body = m[1];
-  const v = /^0[xX]/.test(body) ? parseInt(body.slice(2), 16) : body.length > 1 && body[0] === '0' ? parseInt(body, 8) : Number(body);
+  const v = /^0[xX]/.test(body)
+    ? parseInt(body.slice(2), 16)
+    : body.length > 1 && body[0] === '0'
+      ? parseInt(body, 8)
+      : Number(body);
   if (!Number.isFinite(v) || v > 0xffffffff) throw ctx.error(`integer literal '${short(token)}' is too large`);
   return m[2] ? constValue(UINT, [v >>> 0]) : constValue(INT, [v | 0]);
 }
@@ -70,7 +86,8 @@ function writeSlotCode(s: Slot, expr: string): string {
       return `${s.arr}[${s.index}] = ${expr};`;
     case 'dyn': {
       let out = `{ ${writeSlotCode(s.options[s.options.length - 1], expr)} }`;
-      for (let i = s.options.length - 2; i >= 0; i--) out = `if (${s.index} === ${i}) { ${writeSlotCode(s.options[i], expr)} } else ${out}`;
+      for (let i = s.options.length - 2; i >= 0; i--)
+        out = `if (${s.index} === ${i}) { ${writeSlotCode(s.options[i], expr)} } else ${out}`;
       return out;
     }
   }
@@ -91,7 +108,8 @@ function mentions(expr: string, name: string): boolean {
   while (i >= 0) {
     const before = expr[i - 1];
     const after = expr[i + name.length];
-    if ((before === undefined || !/[A-Za-z0-9_]/.test(before)) && (after === undefined || !/[A-Za-z0-9_]/.test(after))) return true;
+    if ((before === undefined || !/[A-Za-z0-9_]/.test(before)) && (after === undefined || !/[A-Za-z0-9_]/.test(after)))
+      return true;
     i = expr.indexOf(name, i + 1);
   }
   return false;
@@ -151,7 +169,8 @@ function clampIndexConst(ctx: Ctx, i: number, n: number, what: string): number {
 
 function indexValue(ctx: Ctx, node: Node): Value {
   const v = compileExpr(ctx, node);
-  if (!isScalar(v.t) || (v.t.base !== 'int' && v.t.base !== 'uint')) throw ctx.error(`index must be an int, not ${isVoid(v) ? 'void' : typeName(v.t)}`);
+  if (!isScalar(v.t) || (v.t.base !== 'int' && v.t.base !== 'uint'))
+    throw ctx.error(`index must be an int, not ${isVoid(v) ? 'void' : typeName(v.t)}`);
   return v;
 }
 
@@ -185,16 +204,26 @@ function applySelector(ctx: Ctx, base: Ref, sel: Node): Ref {
     const name: string = sel.selection?.identifier ?? sel.selection?.literal ?? '';
     if (base.kind === 'arr') throw ctx.error(`arrays have no field '.${short(name)}' (only .length())`);
     const t = base.kind === 'lv' ? base.lv.t : base.v.t;
-    if (isMatrix(t) || t.rows === 0) throw ctx.error(`${t.rows === 0 ? 'void' : typeName(t)} has no field '.${short(name)}'`);
+    if (isMatrix(t) || t.rows === 0)
+      throw ctx.error(`${t.rows === 0 ? 'void' : typeName(t)} has no field '.${short(name)}'`);
     const idx = swizzleIndices(ctx, name, t.rows);
     const rt = gtype(t.base, idx.length);
     if (base.kind === 'lv') {
       const dup = new Set(idx).size !== idx.length;
-      const readOnly = base.lv.readOnly ?? (dup ? `cannot assign to swizzle '.${short(name)}' with repeated components` : undefined);
+      const readOnly =
+        base.lv.readOnly ?? (dup ? `cannot assign to swizzle '.${short(name)}' with repeated components` : undefined);
       return { kind: 'lv', lv: { t: rt, slots: idx.map((i) => base.lv.slots[i]), readOnly, root: base.lv.root } };
     }
     const v = base.v;
-    return { kind: 'val', v: v.k ? constValue(rt, idx.map((i) => (v.k as (number | boolean)[])[i])) : { t: rt, c: idx.map((i) => v.c[i]) } };
+    return {
+      kind: 'val',
+      v: v.k
+        ? constValue(
+            rt,
+            idx.map((i) => (v.k as (number | boolean)[])[i]),
+          )
+        : { t: rt, c: idx.map((i) => v.c[i]) },
+    };
   }
   if (sel.type === 'quantifier' || sel.type === 'array_specifier') {
     if (base.kind === 'arr') {
@@ -206,7 +235,14 @@ function applySelector(ctx: Ctx, base: Ref, sel: Node): Ref {
       else index = clampedIndex(ctx, iv, sym.length);
       const slots: Slot[] = [];
       for (let c = 0; c < n; c++) {
-        const ix = typeof index === 'number' ? lit(index * n + c) : n === 1 ? index : c === 0 ? `${index} * ${n}` : `${index} * ${n} + ${c}`;
+        const ix =
+          typeof index === 'number'
+            ? lit(index * n + c)
+            : n === 1
+              ? index
+              : c === 0
+                ? `${index} * ${n}`
+                : `${index} * ${n} + ${c}`;
         slots.push({ kind: 'elem', arr: sym.store, index: ix, base: sym.t.base });
       }
       return { kind: 'lv', lv: { t: sym.t, slots, readOnly: sym.readOnly, root: base.root } };
@@ -214,7 +250,11 @@ function applySelector(ctx: Ctx, base: Ref, sel: Node): Ref {
     if (base.kind === 'val') {
       // Index into a computed value: evaluate the index after it, copying the value if needed.
       const [v, iv] = ctx.sequence([() => base.v, () => indexValue(ctx, sel.expression)]);
-      const tmp: LValue = { t: v.t, slots: v.c.map((c) => ({ kind: 'name', name: ctx.atom(c, v.t.base), base: v.t.base })), root: '' };
+      const tmp: LValue = {
+        t: v.t,
+        slots: v.c.map((c) => ({ kind: 'name', name: ctx.atom(c, v.t.base), base: v.t.base })),
+        root: '',
+      };
       return { kind: 'val', v: readLValue(indexInto(ctx, tmp, iv)) };
     }
     const iv = indexValue(ctx, sel.expression);
@@ -230,7 +270,12 @@ function identifierRef(ctx: Ctx, name: string): Ref {
   if (sym.k !== undefined) return { kind: 'val', v: constValue(sym.t, sym.k) };
   return {
     kind: 'lv',
-    lv: { t: sym.t, slots: sym.names.map((n) => ({ kind: 'name', name: n, base: sym.t.base })), readOnly: sym.readOnly, root: name },
+    lv: {
+      t: sym.t,
+      slots: sym.names.map((n) => ({ kind: 'name', name: n, base: sym.t.base })),
+      readOnly: sym.readOnly,
+      root: name,
+    },
   };
 }
 
@@ -281,7 +326,11 @@ export function compileLValue(ctx: Ctx, node: Node, sels?: Node[]): LValue {
   if (r.kind === 'lv') return r.lv;
   if (r.kind === 'arr') throw ctx.error('cannot assign whole arrays');
   const root = rootIdentifier(node);
-  throw ctx.error(root !== undefined && ctx.lookup(root)?.readOnly ? (ctx.lookup(root)?.readOnly as string) : 'this expression cannot be assigned to');
+  throw ctx.error(
+    root !== undefined && ctx.lookup(root)?.readOnly
+      ? (ctx.lookup(root)?.readOnly as string)
+      : 'this expression cannot be assigned to',
+  );
 }
 
 // ── operators ────────────────────────────────────────────────────────────────
@@ -372,7 +421,10 @@ function compileBinary(ctx: Ctx, node: Node, depth: number): Value {
     void left;
     return compileExpr(ctx, node.right, depth + 1);
   }
-  const [a, b] = ctx.sequence([() => compileExpr(ctx, node.left, depth + 1), () => compileExpr(ctx, node.right, depth + 1)]);
+  const [a, b] = ctx.sequence([
+    () => compileExpr(ctx, node.left, depth + 1),
+    () => compileExpr(ctx, node.right, depth + 1),
+  ]);
   if (ARITH.has(op)) return arith(ctx, op as ArithOp, a, b);
   switch (op) {
     case '<':
@@ -449,7 +501,9 @@ function compileUserCall(ctx: Ctx, name: string, overloads: FnSym[], argNodes: N
     } else if (c === bestCost) tie = true;
   }
   if (best === undefined) {
-    throw ctx.error(`no version of ${short(name)}() takes (${args.map((a) => (isVoid(a) ? 'void' : typeName(a.t))).join(', ')})`);
+    throw ctx.error(
+      `no version of ${short(name)}() takes (${args.map((a) => (isVoid(a) ? 'void' : typeName(a.t))).join(', ')})`,
+    );
   }
   if (tie) throw ctx.error(`call to ${short(name)}() is ambiguous`);
   const fn = best;
@@ -520,8 +574,10 @@ function compileCall(ctx: Ctx, node: Node, depth: number): Value {
     }
     throw ctx.error('unsupported method call');
   }
-  if (id.type === 'type_specifier' && id.quantifier && id.quantifier.length > 0) return compileArrayConstructor(ctx, node);
-  const name: string | undefined = id.type === 'identifier' ? id.identifier : (id.identifier?.identifier ?? id.specifier?.identifier);
+  if (id.type === 'type_specifier' && id.quantifier && id.quantifier.length > 0)
+    return compileArrayConstructor(ctx, node);
+  const name: string | undefined =
+    id.type === 'identifier' ? id.identifier : (id.identifier?.identifier ?? id.specifier?.identifier);
   if (name === undefined) throw ctx.error('unsupported call');
   const user = ctx.functions.get(name);
   if (user !== undefined && user.length > 0) return compileUserCall(ctx, name, user, argNodes, depth);

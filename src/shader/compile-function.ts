@@ -25,7 +25,8 @@ export function paramsOf(ctx: Ctx, proto: Node): { params: FnParam[]; names: (st
     const tName: string = spec?.specifier?.token ?? spec?.specifier?.identifier ?? '?';
     if (tName === 'void' && (proto.parameters ?? []).length === 1 && !p.identifier) break;
     const t = typeSpecifierType(ctx, spec);
-    if ((spec.quantifier && spec.quantifier.length) || (p.quantifier && p.quantifier.length)) throw ctx.error('array parameters are not supported');
+    if ((spec.quantifier && spec.quantifier.length) || (p.quantifier && p.quantifier.length))
+      throw ctx.error('array parameters are not supported');
     const qs = qualifiers(p);
     const q: ParamQualifier = qs.includes('inout') ? 'inout' : qs.includes('out') ? 'out' : 'in';
     params.push({ t, q });
@@ -43,7 +44,10 @@ function returnType(ctx: Ctx, proto: Node): GType {
 }
 
 function sameParams(a: FnParam[], b: FnParam[]): boolean {
-  return a.length === b.length && a.every((p, i) => p.t.base === b[i].t.base && p.t.rows === b[i].t.rows && p.t.cols === b[i].t.cols);
+  return (
+    a.length === b.length &&
+    a.every((p, i) => p.t.base === b[i].t.base && p.t.rows === b[i].t.rows && p.t.cols === b[i].t.cols)
+  );
 }
 
 export function registerFunction(ctx: Ctx, proto: Node, isDefinition: boolean): FnSym {
@@ -144,7 +148,12 @@ export function compileFunction(ctx: Ctx, node: Node, fn: FnSym, isEntry: boolea
   }
 }
 
-export function wrapFunction(name: string, params: string[], locals: { name: string; base: string }[], lines: string[]): string {
+export function wrapFunction(
+  name: string,
+  params: string[],
+  locals: { name: string; base: string }[],
+  lines: string[],
+): string {
   const decl = locals.length > 0 ? `let ${locals.map((l) => `${l.name} = ${zeroOf(l.base)}`).join(', ')};\n` : '';
   return `function ${name}(${params.join(', ')}) {\n${decl}${lines.join('\n')}\n}`;
 }

@@ -9,7 +9,14 @@ import type { Ctx, FnSym, VarSym } from './compiler-context.js';
 import { Buf, newFnCtx, short } from './compiler-context.js';
 import { compileInitializer, nodeLine, rootIdentifier, typeSpecifierType } from './compile-expr.js';
 import { arrayLength, declareArray, initArray } from './compile-stmt.js';
-import { checkRecursion, compileFunction, qualifiers, registerFunction, wrapFunction, zeroOf } from './compile-function.js';
+import {
+  checkRecursion,
+  compileFunction,
+  qualifiers,
+  registerFunction,
+  wrapFunction,
+  zeroOf,
+} from './compile-function.js';
 import type { UiParamDecl } from './preprocess.js';
 import { TABLE_KEYS } from './math-table.js';
 import { lit } from './values.js';
@@ -66,9 +73,19 @@ function writtenNames(program: Node[], outFns: ReadonlySet<string>): Set<string>
       if (r !== undefined) out.add(r);
     };
     if (n.type === 'assignment') add(n.left);
-    else if ((n.type === 'unary' || n.type === 'postfix') && (n.operator?.literal === '++' || n.operator?.literal === '--' || n.postfix?.literal === '++' || n.postfix?.literal === '--')) {
+    else if (
+      (n.type === 'unary' || n.type === 'postfix') &&
+      (n.operator?.literal === '++' ||
+        n.operator?.literal === '--' ||
+        n.postfix?.literal === '++' ||
+        n.postfix?.literal === '--')
+    ) {
       add(n.expression);
-    } else if (n.type === 'function_call' && n.identifier?.type === 'identifier' && outFns.has(n.identifier.identifier)) {
+    } else if (
+      n.type === 'function_call' &&
+      n.identifier?.type === 'identifier' &&
+      outFns.has(n.identifier.identifier)
+    ) {
       for (const a of n.args ?? []) add(a);
     }
     for (const k of Object.keys(n)) {
@@ -140,7 +157,8 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
       functionsJs.push(compileFunction(ctx, st, fn, isEntry));
       continue;
     }
-    if (st.type !== 'declaration_statement') throw ctx.error(`unsupported top-level statement (${short(String(st.type))})`);
+    if (st.type !== 'declaration_statement')
+      throw ctx.error(`unsupported top-level statement (${short(String(st.type))})`);
     const d = st.declaration;
     if (d.type === 'precision' || d.type === 'function_prototype') continue;
     if (d.type === 'qualifier_declarator') continue; // `invariant x;` and the like
@@ -157,8 +175,16 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
       const len = arrayLength(ctx, spec.quantifier, decl.quantifier);
       const isUniform = quals.includes('uniform');
       const isConst = quals.includes('const');
-      if (quals.includes('in') || quals.includes('out') || quals.includes('varying') || quals.includes('attribute') || quals.includes('buffer')) {
-        ctx.warnings.push(`${ctx.fileName} line ${ctx.line}: '${short(name)}' is a shader input/output; it is treated as a plain global`);
+      if (
+        quals.includes('in') ||
+        quals.includes('out') ||
+        quals.includes('varying') ||
+        quals.includes('attribute') ||
+        quals.includes('buffer')
+      ) {
+        ctx.warnings.push(
+          `${ctx.fileName} line ${ctx.line}: '${short(name)}' is a shader input/output; it is treated as a plain global`,
+        );
       }
       if (len !== undefined) {
         if (isUniform) throw ctx.error('uniform arrays are not supported');
@@ -182,14 +208,22 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
           if (!v.k) throw ctx.error(`uniform '${short(name)}' needs a constant initialiser`);
           defaults = v.k;
         } else if (kind === 'other') {
-          ctx.warnings.push(`${ctx.fileName} line ${ctx.line}: uniform '${short(name)}' is not provided by Strata; it is ${typeName(t)}(0)`);
+          ctx.warnings.push(
+            `${ctx.fileName} line ${ctx.line}: uniform '${short(name)}' is not provided by Strata; it is ${typeName(t)}(0)`,
+          );
         }
         const names: string[] = [];
         for (let i = 0; i < size(t); i++) names.push(ctx.id('u'));
         uniforms.push({ name, kind, type: t, defaults });
         uniformNames.push(names);
         globalDecls.push(`let ${names.map((n, i) => `${n} = ${lit(defaults[i])}`).join(', ')};`);
-        const usym: VarSym = { kind: 'var', t, names, readOnly: `cannot assign to uniform '${short(name)}'`, global: true };
+        const usym: VarSym = {
+          kind: 'var',
+          t,
+          names,
+          readOnly: `cannot assign to uniform '${short(name)}'`,
+          global: true,
+        };
         ctx.declare(name, usym);
         if (name === 'numPasses') {
           numPassesSym = usym;
@@ -203,7 +237,14 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
       if (!isWritten && (value?.k !== undefined || (init === undefined && !isConst))) {
         // Never written with a constant (or default zero) value: fold it into the code.
         const k = value?.k ?? new Array<number | boolean>(size(t)).fill(t.base === 'bool' ? false : 0);
-        const sym: VarSym = { kind: 'var', t, names: [], k, readOnly: isConst ? `cannot assign to const '${short(name)}'` : undefined, global: true };
+        const sym: VarSym = {
+          kind: 'var',
+          t,
+          names: [],
+          k,
+          readOnly: isConst ? `cannot assign to const '${short(name)}'` : undefined,
+          global: true,
+        };
         ctx.declare(name, sym);
         if (name === 'numPasses') numPassesSym = sym;
         if (name === 'numPasses') numPassesDeclared = true;
@@ -224,7 +265,13 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
           emitInit(value);
         });
       }
-      const sym: VarSym = { kind: 'var', t, names, readOnly: isConst ? `cannot assign to const '${short(name)}'` : undefined, global: true };
+      const sym: VarSym = {
+        kind: 'var',
+        t,
+        names,
+        readOnly: isConst ? `cannot assign to const '${short(name)}'` : undefined,
+        global: true,
+      };
       ctx.declare(name, sym);
       if (name === 'numPasses') {
         numPassesSym = sym;
@@ -238,11 +285,25 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
     throw ctx.error(`the shader must define ${sig}`, 0);
   }
   const ef = entryFn;
-  if (ef.params.length !== 1 || ef.params[0].q !== 'in' || ef.params[0].t.base !== 'float' || ef.params[0].t.rows !== 3 || ef.params[0].t.cols !== 1) {
+  if (
+    ef.params.length !== 1 ||
+    ef.params[0].q !== 'in' ||
+    ef.params[0].t.base !== 'float' ||
+    ef.params[0].t.rows !== 3 ||
+    ef.params[0].t.cols !== 1
+  ) {
     throw ctx.error(`${opts.entry}() must take one vec3 argument`, ef.line);
   }
-  if (ef.ret.rows === 0 || ef.ret.cols !== 1 || ef.ret.base === 'bool' || (opts.entry === 'density' && ef.ret.rows !== 1)) {
-    throw ctx.error(opts.entry === 'cellular' ? 'cellular() must return a vec4' : 'density() must return a float', ef.line);
+  if (
+    ef.ret.rows === 0 ||
+    ef.ret.cols !== 1 ||
+    ef.ret.base === 'bool' ||
+    (opts.entry === 'density' && ef.ret.rows !== 1)
+  ) {
+    throw ctx.error(
+      opts.entry === 'cellular' ? 'cellular() must return a vec4' : 'density() must return a float',
+      ef.line,
+    );
   }
   for (const list of ctx.functions.values()) {
     for (const f of list) {
@@ -256,8 +317,10 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
   if (numPassesSym !== undefined && (numPassesSym.t.base !== 'int' || size(numPassesSym.t) !== 1)) {
     throw ctx.error('numPasses must be an int', 0);
   }
-  const numPassesConst = numPassesSym?.k !== undefined ? (numPassesSym.k[0] as number) : numPassesSym === undefined ? 1 : undefined;
-  const numPassesExpr = numPassesSym === undefined ? '1' : numPassesSym.k !== undefined ? lit(numPassesSym.k[0]) : numPassesSym.names[0];
+  const numPassesConst =
+    numPassesSym?.k !== undefined ? (numPassesSym.k[0] as number) : numPassesSym === undefined ? 1 : undefined;
+  const numPassesExpr =
+    numPassesSym === undefined ? '1' : numPassesSym.k !== undefined ? lit(numPassesSym.k[0]) : numPassesSym.names[0];
 
   const EB = opts.evalBudget;
   const lines: string[] = [];
@@ -278,21 +341,41 @@ export function compileProgram(ctx: Ctx, program: Node[], opts: ProgramOptions):
   if (opts.entry === 'density') {
     entryLines.push(`const r = ${call};`, `W += ${EB} - B;`, `if (W > ${opts.layerBudget}) m_wlim();`, 'return r;');
   } else if (retN === 1) {
-    entryLines.push(`const r = ${call};`, `W += ${EB} - B;`, `if (W > ${opts.layerBudget}) m_wlim();`, 'return m_key(r, 0, 0, 0);');
+    entryLines.push(
+      `const r = ${call};`,
+      `W += ${EB} - B;`,
+      `if (W > ${opts.layerBudget}) m_wlim();`,
+      'return m_key(r, 0, 0, 0);',
+    );
   } else {
     const ch = [0, 1, 2, 3].map((i) => (i < retN ? `R[${i}]` : '0'));
-    entryLines.push(`${call};`, `W += ${EB} - B;`, `if (W > ${opts.layerBudget}) m_wlim();`, `return m_key(${ch.join(', ')});`);
+    entryLines.push(
+      `${call};`,
+      `W += ${EB} - B;`,
+      `if (W > ${opts.layerBudget}) m_wlim();`,
+      `return m_key(${ch.join(', ')});`,
+    );
   }
   lines.push(`function E(X, Y, Z) {\n${entryLines.join('\n')}\n}`);
   const setLines: string[] = [];
   let k = 0;
   uniforms.forEach((u, i) => {
     for (const n of uniformNames[i]) {
-      setLines.push(u.type.base === 'bool' ? `${n} = A[${k}] !== 0;` : u.type.base === 'int' ? `${n} = A[${k}] | 0;` : u.type.base === 'uint' ? `${n} = A[${k}] >>> 0;` : `${n} = A[${k}];`);
+      setLines.push(
+        u.type.base === 'bool'
+          ? `${n} = A[${k}] !== 0;`
+          : u.type.base === 'int'
+            ? `${n} = A[${k}] | 0;`
+            : u.type.base === 'uint'
+              ? `${n} = A[${k}] >>> 0;`
+              : `${n} = A[${k}];`,
+      );
       k++;
     }
   });
-  lines.push(`function S(A, D, N, T) {\n${setLines.join('\n')}\nh_den = D;\nh_noz = N;\nh_lh = T;\nB = ${EB};\nI1();\n}`);
+  lines.push(
+    `function S(A, D, N, T) {\n${setLines.join('\n')}\nh_den = D;\nh_noz = N;\nh_lh = T;\nB = ${EB};\nI1();\n}`,
+  );
   lines.push(`function NP() { return ${numPassesExpr}; }`);
   lines.push('function WR(V) { W = V; }');
   lines.push('function WG() { return W; }');

@@ -7,7 +7,15 @@ import type { GType } from './glsl-types.js';
 import { size, typeName } from './glsl-types.js';
 import type { ArraySym, Ctx, Value, VarSym } from './compiler-context.js';
 import { isVoid, short } from './compiler-context.js';
-import { callArgs, compileCondition, compileDiscarded, compileExpr, compileInitializer, nodeLine, typeSpecifierType } from './compile-expr.js';
+import {
+  callArgs,
+  compileCondition,
+  compileDiscarded,
+  compileExpr,
+  compileInitializer,
+  nodeLine,
+  typeSpecifierType,
+} from './compile-expr.js';
 import { convert, lit } from './values.js';
 import { implicitlyConvertible } from './glsl-types.js';
 
@@ -38,7 +46,11 @@ export function constInt(ctx: Ctx, node: Node): number {
 }
 
 /** Array length from `float a[N]` / `float[N] a`, or undefined for non-arrays; 0 means unsized (`a[]`). */
-export function arrayLength(ctx: Ctx, typeQuantifier: Node[] | null, declQuantifier: Node[] | null): number | undefined {
+export function arrayLength(
+  ctx: Ctx,
+  typeQuantifier: Node[] | null,
+  declQuantifier: Node[] | null,
+): number | undefined {
   const q = [...(typeQuantifier ?? []), ...(declQuantifier ?? [])];
   if (q.length === 0) return undefined;
   if (q.length > 1) throw ctx.error('arrays of arrays are not supported');
@@ -52,19 +64,30 @@ export function arrayLength(ctx: Ctx, typeQuantifier: Node[] | null, declQuantif
 /** Elements of an array initialiser: `float[3](a, b, c)`, `float[](…)` or `{a, b, c}`. */
 function arrayInitElements(ctx: Ctx, node: Node): Node[] {
   if (node.type === 'initializer_list') return node.initializers ?? [];
-  if (node.type === 'function_call' && node.identifier?.type === 'type_specifier' && node.identifier.quantifier?.length) return callArgs(node);
+  if (node.type === 'function_call' && node.identifier?.type === 'type_specifier' && node.identifier.quantifier?.length)
+    return callArgs(node);
   throw ctx.error('an array must be initialised with an array constructor');
 }
 
 /** Allocate closure storage for an array and declare the symbol; emits its initialisation. */
-export function declareArray(ctx: Ctx, name: string, elem: GType, declared: number, init: Node | undefined, readOnly: string | undefined, global: boolean): ArraySym {
+export function declareArray(
+  ctx: Ctx,
+  name: string,
+  elem: GType,
+  declared: number,
+  init: Node | undefined,
+  readOnly: string | undefined,
+  global: boolean,
+): ArraySym {
   const elems = init !== undefined ? arrayInitElements(ctx, init) : undefined;
   const length = declared === 0 ? (elems?.length ?? 0) : declared;
   if (length <= 0) throw ctx.error(`array '${short(name)}' needs a size`);
-  if (elems !== undefined && elems.length !== length) throw ctx.error(`array '${short(name)}' has ${length} elements but ${elems.length} initialisers`);
+  if (elems !== undefined && elems.length !== length)
+    throw ctx.error(`array '${short(name)}' has ${length} elements but ${elems.length} initialisers`);
   const total = length * size(elem);
   ctx.arrayElements += total;
-  if (ctx.arrayElements > MAX_ARRAY_ELEMENTS) throw ctx.error(`arrays are too large (more than ${MAX_ARRAY_ELEMENTS} elements in total)`);
+  if (ctx.arrayElements > MAX_ARRAY_ELEMENTS)
+    throw ctx.error(`arrays are too large (more than ${MAX_ARRAY_ELEMENTS} elements in total)`);
   const store = ctx.id('a');
   ctx.closureDecls.push(`const ${store} = new m_F64(${total});`);
   const sym: ArraySym = { kind: 'array', t: elem, length, store, readOnly, global };
@@ -131,7 +154,16 @@ function compileDeclaratorList(ctx: Ctx, decl: Node): void {
     at(ctx, d);
     const name: string = d.identifier.identifier;
     const len = arrayLength(ctx, spec.quantifier, d.quantifier);
-    if (len !== undefined) declareArray(ctx, name, t, len, d.initializer ?? undefined, isConst ? `cannot assign to const array '${short(name)}'` : undefined, false);
+    if (len !== undefined)
+      declareArray(
+        ctx,
+        name,
+        t,
+        len,
+        d.initializer ?? undefined,
+        isConst ? `cannot assign to const array '${short(name)}'` : undefined,
+        false,
+      );
     else declareLocalVar(ctx, name, t, d.initializer ?? undefined, isConst);
   }
 }
@@ -231,7 +263,8 @@ function compileSwitch(ctx: Ctx, node: Node, depth: number): void {
     if (c.type === 'default_case') ctx.emit('default:');
     else {
       const k = compileExpr(ctx, c.test);
-      if (!k.k || k.t.rows !== 1 || k.t.base === 'float' || k.t.base === 'bool') throw ctx.error('case label must be a constant integer');
+      if (!k.k || k.t.rows !== 1 || k.t.base === 'float' || k.t.base === 'bool')
+        throw ctx.error('case label must be a constant integer');
       const n = k.k[0] as number;
       if (seen.has(n)) throw ctx.error(`duplicate case ${n}`);
       seen.add(n);
@@ -264,7 +297,8 @@ export function emitReturn(ctx: Ctx, value: Value | undefined): void {
   if (value === undefined || isVoid(value)) throw ctx.error(`this function must return a ${typeName(ret)}`);
   let v = value;
   if (v.t.base !== ret.base || v.t.rows !== ret.rows || v.t.cols !== ret.cols) {
-    if (!implicitlyConvertible(v.t, ret)) throw ctx.error(`cannot return ${typeName(v.t)} from a function returning ${typeName(ret)}`);
+    if (!implicitlyConvertible(v.t, ret))
+      throw ctx.error(`cannot return ${typeName(v.t)} from a function returning ${typeName(ret)}`);
     v = convert(v, ret.base);
   }
   if (v.c.length === 1) {
@@ -346,4 +380,3 @@ export function compileStatement(ctx: Ctx, node: Node, depth = 0): void {
   }
   throw ctx.error(`unsupported statement (${short(String(node.type))})`);
 }
-

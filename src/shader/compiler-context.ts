@@ -107,7 +107,8 @@ export interface FnCtx {
 }
 
 const STABLE = /^(?:t\d+|-?\d+(?:\.\d+)?(?:e[+-]?\d+)?|\(-\d+(?:\.\d+)?(?:e[+-]?\d+)?\)|true|false)$/;
-const ATOM = /^(?:[tvgu]\d+(?:_\d+)?|h_[a-z]+|-?\d+(?:\.\d+)?(?:e[+-]?\d+)?|\(-\d+(?:\.\d+)?(?:e[+-]?\d+)?\)|true|false)$/;
+const ATOM =
+  /^(?:[tvgu]\d+(?:_\d+)?|h_[a-z]+|-?\d+(?:\.\d+)?(?:e[+-]?\d+)?|\(-\d+(?:\.\d+)?(?:e[+-]?\d+)?\)|true|false)$/;
 
 /** Whether a component expression needs no temporary to be used twice. */
 export function isAtom(c: string): boolean {

@@ -22,7 +22,8 @@ export function densityResolver(input: DensityInput): (layerIndex: number) => De
     return (i) => list[Math.max(0, Math.min(list.length - 1, i))];
   }
   const shader = input as CompiledShader;
-  if (shader.entry !== 'density') throw new StrataError('BAD_SETTING', `${shader.fileName}: a density shader must define float density(vec3 world)`);
+  if (shader.entry !== 'density')
+    throw new StrataError('BAD_SETTING', `${shader.fileName}: a density shader must define float density(vec3 world)`);
   let inst: ShaderInstance | undefined;
   return () => {
     if (inst === undefined) {
@@ -37,5 +38,6 @@ export function densityResolver(input: DensityInput): (layerIndex: number) => De
 }
 
 function checkPercent(v: number): void {
-  if (!Number.isFinite(v) || v < 0 || v > 100) throw new StrataError('BAD_SETTING', `custom infill: density must be 0–100 %, got ${v}`);
+  if (!Number.isFinite(v) || v < 0 || v > 100)
+    throw new StrataError('BAD_SETTING', `custom infill: density must be 0–100 %, got ${v}`);
 }

@@ -4,7 +4,17 @@ import { compileShader } from './shader.js';
 import { StrataError } from '../errors.js';
 import { shaderPaths } from './paths.js';
 
-const square = [{ outer: [{ x: 0, y: 0 }, { x: 5000, y: 0 }, { x: 5000, y: 5000 }, { x: 0, y: 5000 }], holes: [] }];
+const square = [
+  {
+    outer: [
+      { x: 0, y: 0 },
+      { x: 5000, y: 0 },
+      { x: 5000, y: 5000 },
+      { x: 0, y: 5000 },
+    ],
+    holes: [],
+  },
+];
 
 function isError(code: string, re: RegExp) {
   return (e: unknown) => e instanceof StrataError && e.code === code && re.test(e.message);
@@ -18,18 +28,34 @@ function evaluate(src: string, opts = {}): number {
 test('endless and huge loops are stopped with LIMIT_EXCEEDED naming the line', { timeout: 20_000 }, () => {
   const loops: [string, number][] = [
     ['vec4 cellular(vec3 world) {\n  while (true) {}\n  return vec4(1.0);\n}', 2],
-    ['vec4 cellular(vec3 world) {\n  float s = 0.0;\n  for (int i = 0; i < 1000000000; i++) { s += 1.0; }\n  return vec4(s);\n}', 3],
+    [
+      'vec4 cellular(vec3 world) {\n  float s = 0.0;\n  for (int i = 0; i < 1000000000; i++) { s += 1.0; }\n  return vec4(s);\n}',
+      3,
+    ],
     ['vec4 cellular(vec3 world) {\n  do { } while (world.x < 1e30);\n  return vec4(1.0);\n}', 2],
     ['vec4 cellular(vec3 world) {\n  for (;;) { continue; }\n  return vec4(1.0);\n}', 2],
-    ['vec4 cellular(vec3 world) {\n  int n = 0;\n  for (int i = 0; i < 1000; i++)\n    for (int j = 0; j < 1000; j++) n++;\n  return vec4(n);\n}', 4],
+    [
+      'vec4 cellular(vec3 world) {\n  int n = 0;\n  for (int i = 0; i < 1000; i++)\n    for (int j = 0; j < 1000; j++) n++;\n  return vec4(n);\n}',
+      4,
+    ],
   ];
   for (const [src, line] of loops) {
     const t = performance.now();
-    assert.throws(() => evaluate(src), isError('LIMIT_EXCEEDED', new RegExp(`^shader\\.glsl line ${line}: loop ran more than 100000 iterations`)), src);
+    assert.throws(
+      () => evaluate(src),
+      isError('LIMIT_EXCEEDED', new RegExp(`^shader\\.glsl line ${line}: loop ran more than 100000 iterations`)),
+      src,
+    );
     assert.ok(performance.now() - t < 5000);
   }
   // A smaller budget is honoured.
-  assert.throws(() => evaluate('vec4 cellular(vec3 w) { int n = 0; for (int i = 0; i < 50; i++) n++; return vec4(n); }', { evalBudget: 10 }), /more than 10 iterations/);
+  assert.throws(
+    () =>
+      evaluate('vec4 cellular(vec3 w) { int n = 0; for (int i = 0; i < 50; i++) n++; return vec4(n); }', {
+        evalBudget: 10,
+      }),
+    /more than 10 iterations/,
+  );
 });
 
 test('exponential call trees are stopped by the call budget', { timeout: 20_000 }, () => {
@@ -40,9 +66,13 @@ test('exponential call trees are stopped by the call budget', { timeout: 20_000 
 });
 
 test('total work per layer is bounded', { timeout: 20_000 }, () => {
-  const src = 'vec4 cellular(vec3 world) { float s = 0.0; for (int i = 0; i < 5000; i++) s += world.x; return vec4(s > 1.0 ? 1.0 : 0.0); }';
+  const src =
+    'vec4 cellular(vec3 world) { float s = 0.0; for (int i = 0; i < 5000; i++) s += world.x; return vec4(s > 1.0 ? 1.0 : 0.0); }';
   const shader = compileShader(src, { layerBudget: 2_000_000 });
-  assert.throws(() => shaderPaths(shader, { region: square, z: 0.2 }), isError('LIMIT_EXCEEDED', /one layer needed more than 2000000 shader steps/));
+  assert.throws(
+    () => shaderPaths(shader, { region: square, z: 0.2 }),
+    isError('LIMIT_EXCEEDED', /one layer needed more than 2000000 shader steps/),
+  );
 });
 
 test('identifiers that name JS globals are plain shader variables', () => {
@@ -56,7 +86,17 @@ test('identifiers that name JS globals are plain shader variables', () => {
     '}',
   ].join('\n');
   const s = compileShader(src);
-  for (const word of ['process', 'globalThis', 'constructor', '__proto__', 'Function', 'eval', 'require', 'window', 'toString']) {
+  for (const word of [
+    'process',
+    'globalThis',
+    'constructor',
+    '__proto__',
+    'Function',
+    'eval',
+    'require',
+    'window',
+    'toString',
+  ]) {
     assert.ok(!new RegExp(`\\b${word}\\b`).test(s.js), `generated code mentions ${word}`);
   }
   const inst = s.instantiate();
@@ -72,8 +112,14 @@ test('undeclared JS globals are unknown identifiers', () => {
       name,
     );
   }
-  assert.throws(() => compileShader('vec4 cellular(vec3 world) { return vec4(process(1.0)); }'), isError('BAD_SHADER', /unknown function 'process'/));
-  assert.throws(() => compileShader('vec4 cellular(vec3 world) { return vec4(constructor(1.0)); }'), isError('BAD_SHADER', /unknown function 'constructor'/));
+  assert.throws(
+    () => compileShader('vec4 cellular(vec3 world) { return vec4(process(1.0)); }'),
+    isError('BAD_SHADER', /unknown function 'process'/),
+  );
+  assert.throws(
+    () => compileShader('vec4 cellular(vec3 world) { return vec4(constructor(1.0)); }'),
+    isError('BAD_SHADER', /unknown function 'constructor'/),
+  );
 });
 
 test('recursion is rejected', () => {
@@ -82,7 +128,10 @@ test('recursion is rejected', () => {
     isError('BAD_SHADER', /line 1: recursion is not allowed/),
   );
   assert.throws(
-    () => compileShader('float b(float x);\nfloat a(float x) { return b(x); }\nfloat b(float x) { return a(x); }\nvec4 cellular(vec3 w) { return vec4(a(1.0)); }'),
+    () =>
+      compileShader(
+        'float b(float x);\nfloat a(float x) { return b(x); }\nfloat b(float x) { return a(x); }\nvec4 cellular(vec3 w) { return vec4(a(1.0)); }',
+      ),
     isError('BAD_SHADER', /recursion is not allowed/),
   );
 });
@@ -98,12 +147,27 @@ test('pathological sources fail cleanly', { timeout: 20_000 }, () => {
   for (let i = 1; i <= 40; i++) quiet.push(`#define E${i}(x) E${i - 1}(x) E${i - 1}(x)`);
   quiet.push('E40(1)', 'vec4 cellular(vec3 w) { return vec4(1.0); }');
   assert.throws(() => compileShader(quiet.join('\n')), isError('BAD_SHADER', /macro expansion is too complex/));
-  assert.throws(() => compileShader(`uniform float ui_x = ${' '.repeat(200_000)}x\nvec4 cellular(vec3 w) { return vec4(1.0); }`), isError('BAD_SHADER', /default value/));
-  assert.throws(() => compileShader('float a[100000000];\nvec4 cellular(vec3 w) { return vec4(a[0]); }'), isError('BAD_SHADER', /arrays are too large/));
+  assert.throws(
+    () => compileShader(`uniform float ui_x = ${' '.repeat(200_000)}x\nvec4 cellular(vec3 w) { return vec4(1.0); }`),
+    isError('BAD_SHADER', /default value/),
+  );
+  assert.throws(
+    () => compileShader('float a[100000000];\nvec4 cellular(vec3 w) { return vec4(a[0]); }'),
+    isError('BAD_SHADER', /arrays are too large/),
+  );
   assert.throws(() => compileShader('x'.repeat(300_000)), isError('BAD_SHADER', /larger than/));
-  assert.throws(() => compileShader(`/* ${'c'.repeat(50_000)} */ ${'float x;'.repeat(14_000)}`), isError('BAD_SHADER', /characters of code/));
-  assert.throws(() => compileShader('#include "x"\nvec4 cellular(vec3 w) { return vec4(1.0); }'), isError('BAD_SHADER', /line 1: #include is not supported/));
-  assert.throws(() => compileShader('struct S { float a; };\nvec4 cellular(vec3 w) { return vec4(1.0); }'), isError('BAD_SHADER', /structs are not supported/));
+  assert.throws(
+    () => compileShader(`/* ${'c'.repeat(50_000)} */ ${'float x;'.repeat(14_000)}`),
+    isError('BAD_SHADER', /characters of code/),
+  );
+  assert.throws(
+    () => compileShader('#include "x"\nvec4 cellular(vec3 w) { return vec4(1.0); }'),
+    isError('BAD_SHADER', /line 1: #include is not supported/),
+  );
+  assert.throws(
+    () => compileShader('struct S { float a; };\nvec4 cellular(vec3 w) { return vec4(1.0); }'),
+    isError('BAD_SHADER', /structs are not supported/),
+  );
   const longExpr = `vec4 cellular(vec3 w) { float x = 0.0; x = ${Array.from({ length: 2000 }, () => 'w.x').join(' + ')}; return vec4(x); }`;
   assert.throws(() => compileShader(longExpr), isError('BAD_SHADER', /nested too deeply/));
 });

@@ -6,7 +6,17 @@ import { StrataError } from '../errors.js';
 import { decodeCellsPng, imageLabelFn, loadCellImage, mergeAntialiased } from './image.js';
 import { infillerFromImage } from './infiller.js';
 
-const SQUARE: ExPolygon[] = [{ outer: [{ x: 0, y: 0 }, { x: 10000, y: 0 }, { x: 10000, y: 10000 }, { x: 0, y: 10000 }], holes: [] }];
+const SQUARE: ExPolygon[] = [
+  {
+    outer: [
+      { x: 0, y: 0 },
+      { x: 10000, y: 0 },
+      { x: 10000, y: 10000 },
+      { x: 0, y: 10000 },
+    ],
+    holes: [],
+  },
+];
 const RED = [220, 30, 30];
 const BLUE = [30, 30, 220];
 
@@ -52,7 +62,17 @@ test('image infill: a small two-colour PNG tiles and gives boundary paths', () =
   const bytes = png(8, 8, (x) => (x < 4 ? RED : BLUE));
   const inf = infillerFromImage(bytes, 'halves');
   assert.equal(inf.kind, 'image');
-  const inner: ExPolygon[] = [{ outer: [{ x: 300, y: 0 }, { x: 9700, y: 0 }, { x: 9700, y: 10000 }, { x: 300, y: 10000 }], holes: [] }];
+  const inner: ExPolygon[] = [
+    {
+      outer: [
+        { x: 300, y: 0 },
+        { x: 9700, y: 0 },
+        { x: 9700, y: 10000 },
+        { x: 300, y: 10000 },
+      ],
+      holes: [],
+    },
+  ];
   const paths = inf.paths({ region: inner, z: 0.2 }, { pixelSize: 0.25 });
   // Tile width 2 mm: boundaries at x = 1, 2, 3, … 9 mm → 9 vertical lines across the region.
   assert.equal(paths.length, 9);
@@ -90,7 +110,10 @@ test('anti-aliased in-between colours are merged into their neighbours with a wa
   });
   const img = loadCellImage(bytes);
   assert.ok(img.mergedPixels === 16, `merged ${img.mergedPixels}`);
-  assert.ok(img.warnings.some((w) => /merged 16 anti-aliased pixel\(s\) in 2 in-between colour\(s\)/.test(w)), img.warnings.join('; '));
+  assert.ok(
+    img.warnings.some((w) => /merged 16 anti-aliased pixel\(s\) in 2 in-between colour\(s\)/.test(w)),
+    img.warnings.join('; '),
+  );
   const colours = new Set(img.pixels);
   assert.equal(colours.size, 3, 'red, blue and the (non-blend) grey blob remain');
   const inf = infillerFromImage(bytes, 'aa');
@@ -106,25 +129,37 @@ test('anti-aliased in-between colours are merged into their neighbours with a wa
 test('gradient blends between two colours are merged even in thick bands, real colours are not', () => {
   const m = mergeAntialiased(4, 1, Int32Array.from([0xff0000, 0x800080, 0x0000ff, 0x00ff00]));
   assert.equal(m.mergedPixels, 1);
-  assert.deepEqual([...m.pixels].filter((c) => c === 0x800080), []);
+  assert.deepEqual(
+    [...m.pixels].filter((c) => c === 0x800080),
+    [],
+  );
   const keep = mergeAntialiased(3, 1, Int32Array.from([0xff0000, 0x00ff00, 0x0000ff]));
   assert.equal(keep.mergedPixels, 0);
 });
 
 test('PNG formats: alpha refused, opaque alpha and grey accepted, garbage refused', () => {
   const transparent = png(4, 4, () => [10, 20, 30, 128], 4);
-  assert.throws(() => decodeCellsPng(transparent), (e: unknown) => e instanceof StrataError && e.code === 'BAD_IMAGE' && /transparent/.test(e.message));
+  assert.throws(
+    () => decodeCellsPng(transparent),
+    (e: unknown) => e instanceof StrataError && e.code === 'BAD_IMAGE' && /transparent/.test(e.message),
+  );
   const opaque = png(4, 4, () => [10, 20, 30, 255], 4);
   const d = decodeCellsPng(opaque);
   assert.equal(d.pixels[0], 0x0a141e);
   assert.ok(d.warnings.some((w) => /alpha/.test(w)));
   const grey = encode({ width: 2, height: 1, data: Uint8Array.from([0, 200]), channels: 1, depth: 8 });
   assert.deepEqual([...decodeCellsPng(grey).pixels], [0, 0xc8c8c8]);
-  assert.throws(() => decodeCellsPng(Uint8Array.from([1, 2, 3])), (e: unknown) => e instanceof StrataError && e.code === 'BAD_IMAGE' && /not a PNG/.test(e.message));
+  assert.throws(
+    () => decodeCellsPng(Uint8Array.from([1, 2, 3])),
+    (e: unknown) => e instanceof StrataError && e.code === 'BAD_IMAGE' && /not a PNG/.test(e.message),
+  );
   // A header claiming a huge image is refused before decoding.
   const huge = png(2, 2, () => RED);
   const dv = new DataView(huge.buffer, huge.byteOffset);
   dv.setUint32(16, 100000);
   dv.setUint32(20, 100000);
-  assert.throws(() => decodeCellsPng(huge), (e: unknown) => e instanceof StrataError && e.code === 'LIMIT_EXCEEDED');
+  assert.throws(
+    () => decodeCellsPng(huge),
+    (e: unknown) => e instanceof StrataError && e.code === 'LIMIT_EXCEEDED',
+  );
 });

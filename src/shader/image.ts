@@ -54,7 +54,10 @@ export function decodeCellsPng(
   const head = readPngHeader(bytes, fileName);
   if (head.width === 0 || head.height === 0) throw badImage(fileName, 'the image is empty');
   if (head.width * head.height > MAX_IMAGE_PIXELS) {
-    throw new StrataError('LIMIT_EXCEEDED', `${fileName}: ${head.width} × ${head.height} pixels is more than the ${MAX_IMAGE_PIXELS} allowed`);
+    throw new StrataError(
+      'LIMIT_EXCEEDED',
+      `${fileName}: ${head.width} × ${head.height} pixels is more than the ${MAX_IMAGE_PIXELS} allowed`,
+    );
   }
   const cost = imageDecodeBytes(bytes, fileName);
   if (cost > maxInflatedBytes) {
@@ -146,7 +149,7 @@ function isBlend(c: number, a: number, b: number): boolean {
   const lin = (x: number) => [toLinear(rOf(x)), toLinear(gOf(x)), toLinear(bOf(x))];
   for (const f of [srgb, lin]) {
     const { d, t } = segmentDistance(f(c), f(a), f(b));
-    const span = Math.sqrt(((f(b)[0] - f(a)[0]) ** 2 + (f(b)[1] - f(a)[1]) ** 2 + (f(b)[2] - f(a)[2]) ** 2));
+    const span = Math.sqrt((f(b)[0] - f(a)[0]) ** 2 + (f(b)[1] - f(a)[1]) ** 2 + (f(b)[2] - f(a)[2]) ** 2);
     if (t > 0.02 && t < 0.98 && d <= Math.max(6, 0.08 * span)) return true;
   }
   return false;
@@ -156,7 +159,12 @@ function isBlend(c: number, a: number, b: number): boolean {
  * Merge anti-aliased in-between colours into neighbouring cells. Returns the new pixels and how
  * many pixels and colours were merged. Neighbourhoods wrap around (the image tiles).
  */
-export function mergeAntialiased(width: number, height: number, src: Int32Array, maxCluster = 16): { pixels: Int32Array; mergedPixels: number; mergedColors: number } {
+export function mergeAntialiased(
+  width: number,
+  height: number,
+  src: Int32Array,
+  maxCluster = 16,
+): { pixels: Int32Array; mergedPixels: number; mergedColors: number } {
   const n = width * height;
   const comp = new Int32Array(n).fill(-1);
   const compColor: number[] = [];
@@ -222,7 +230,8 @@ export function mergeAntialiased(width: number, height: number, src: Int32Array,
   for (const [c, set] of neighbourColors) {
     const cols = [...set].filter((x) => x !== compColor[c]);
     let blend = false;
-    for (let a = 0; a < cols.length && !blend; a++) for (let b = a + 1; b < cols.length && !blend; b++) blend = isBlend(compColor[c], cols[a], cols[b]);
+    for (let a = 0; a < cols.length && !blend; a++)
+      for (let b = a + 1; b < cols.length && !blend; b++) blend = isBlend(compColor[c], cols[a], cols[b]);
     if (blend) {
       merged[c] = 1;
       mergedColorSet.add(compColor[c]);
@@ -303,7 +312,8 @@ export function loadCellImage(bytes: Uint8Array, opts: ImageLoadOptions = {}): C
 
 /** The image tiled over the plane as a label field: pixel (col, row) covers x ∈ [col·s, (col+1)·s), row 0 at the top. */
 export function imageLabelFn(img: CellImage, pixelSize: number): LabelFn {
-  if (!(pixelSize > 0) || !Number.isFinite(pixelSize)) throw new StrataError('BAD_SETTING', `${img.fileName}: pixel size must be a positive number of mm`);
+  if (!(pixelSize > 0) || !Number.isFinite(pixelSize))
+    throw new StrataError('BAD_SETTING', `${img.fileName}: pixel size must be a positive number of mm`);
   const w = img.width;
   const h = img.height;
   const px = img.pixels;

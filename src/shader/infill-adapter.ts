@@ -36,7 +36,10 @@ export function customInfillGenerator(infiller: Infiller, settings: CustomInfill
     for (const k of Object.keys(settings.params)) {
       if (findParam(infiller.params, k) === undefined) {
         const known = infiller.params.map((p) => p.name).join(', ') || 'none';
-        throw new StrataError('BAD_SETTING', `infiller ${infiller.name}: unknown parameter '${k.slice(0, 60)}' (parameters: ${known})`);
+        throw new StrataError(
+          'BAD_SETTING',
+          `infiller ${infiller.name}: unknown parameter '${k.slice(0, 60)}' (parameters: ${known})`,
+        );
       }
     }
   }
@@ -44,7 +47,13 @@ export function customInfillGenerator(infiller: Infiller, settings: CustomInfill
   return (layer, params, start) => {
     const density = densityFor !== undefined ? densityFor(layer.layerIndex) : params.density * 100;
     const lines = infiller.paths(
-      { region: layer.region, z: layer.z, layerHeight: layer.layerHeight, density, params: infiller.kind === 'shader' ? settings.params : undefined },
+      {
+        region: layer.region,
+        z: layer.z,
+        layerHeight: layer.layerHeight,
+        density,
+        params: infiller.kind === 'shader' ? settings.params : undefined,
+      },
       {
         nozzleDiameter: params.nozzleDiameter / 1000,
         resolution: settings.resolution,
@@ -58,7 +67,10 @@ export function customInfillGenerator(infiller: Infiller, settings: CustomInfill
 }
 
 /** Parse `NAME=VALUE` strings (CLI `--infill-param`) against an infiller's parameters. */
-export function parseInfillParams(params: readonly ShaderParam[], assignments: readonly string[]): Record<string, number | boolean> {
+export function parseInfillParams(
+  params: readonly ShaderParam[],
+  assignments: readonly string[],
+): Record<string, number | boolean> {
   const out: Record<string, number | boolean> = {};
   for (const a of assignments) {
     const eq = a.indexOf('=');

@@ -140,7 +140,10 @@ export function describeInfiller(inf: Infiller): InfillerInfo {
 }
 
 /** Load every entry; entries that fail are reported instead of thrown. */
-export function loadInfillers(entries: readonly InfillerFiles[]): { infillers: Infiller[]; errors: { name: string; error: StrataError }[] } {
+export function loadInfillers(entries: readonly InfillerFiles[]): {
+  infillers: Infiller[];
+  errors: { name: string; error: StrataError }[];
+} {
   const infillers: Infiller[] = [];
   const errors: { name: string; error: StrataError }[] = [];
   for (const e of [...entries].sort((a, b) => (a.name < b.name ? -1 : a.name > b.name ? 1 : 0))) {

@@ -11,12 +11,26 @@ import { imageLabelFn } from './image.js';
 import { polylineLength } from './polyline-tools.js';
 
 const SHADERS = ['voronoi-foam', 'tpms-gyroid', 'tpms-schwarz-p', 'tpms-schwarz-d', 'checker', 'hexagon-grid'];
-const SQUARE: ExPolygon[] = [{ outer: [{ x: 0, y: 0 }, { x: 20000, y: 0 }, { x: 20000, y: 20000 }, { x: 0, y: 20000 }], holes: [] }];
+const SQUARE: ExPolygon[] = [
+  {
+    outer: [
+      { x: 0, y: 0 },
+      { x: 20000, y: 0 },
+      { x: 20000, y: 20000 },
+      { x: 0, y: 20000 },
+    ],
+    holes: [],
+  },
+];
 /** Quarter of a 0.4 mm line, mm. */
 const QUARTER = 0.1;
 
 /** Length-weighted share of the paths whose two sides (±offset mm along the normal) have different labels. */
-export function boundaryShare(paths: readonly Polyline[], label: (x: number, y: number) => number, offset: number): number {
+export function boundaryShare(
+  paths: readonly Polyline[],
+  label: (x: number, y: number) => number,
+  offset: number,
+): number {
   let good = 0;
   let total = 0;
   for (const p of paths) {
@@ -51,7 +65,9 @@ function inside(paths: readonly Polyline[], minX: number, minY: number, maxX: nu
 }
 
 for (const name of SHADERS) {
-  test(`shipped infiller ${name}: compiles, paths lie on cell boundaries, density changes them`, { timeout: 120_000 }, () => {
+  test(`shipped infiller ${name}: compiles, paths lie on cell boundaries, density changes them`, {
+    timeout: 120_000,
+  }, () => {
     const src = readFileSync(join(shippedInfillersDir(), name, 'shader.glsl'), 'utf8');
     const shader = compileShader(src, { fileName: `${name}/shader.glsl` });
     assert.equal(shader.warnings.length, 0, shader.warnings.join('; '));
@@ -65,15 +81,24 @@ for (const name of SHADERS) {
         assert.ok(inside(paths, 0, 0, 20000, 20000), `${name}: paths leave the region`);
         inst.configure({ pass, density: () => 20, layerHeight: 0.2 });
         const share = boundaryShare(paths, (x, y) => inst.label(x, y, z), QUARTER);
-        assert.ok(share >= 0.99, `${name} z=${z} pass ${pass}: only ${(share * 100).toFixed(2)} % of the path length separates two labels`);
+        assert.ok(
+          share >= 0.99,
+          `${name} z=${z} pass ${pass}: only ${(share * 100).toFixed(2)} % of the path length separates two labels`,
+        );
       });
       // Near 20 % density the extracted line length is within a factor 1.6 of 0.2 * area / width.
       const len = totalLength(passes.flat());
-      assert.ok(len > 0.2 * 400 / 0.4 / 1.6 && len < 0.2 * 400 / 0.4 * 1.6, `${name} z=${z}: ${len.toFixed(1)} mm of paths at 20 %`);
+      assert.ok(
+        len > (0.2 * 400) / 0.4 / 1.6 && len < ((0.2 * 400) / 0.4) * 1.6,
+        `${name} z=${z}: ${len.toFixed(1)} mm of paths at 20 %`,
+      );
     }
     const sparse = totalLength(shaderPathsByPass(inst, { region: SQUARE, z: 1.3, density: 10 }).flat());
     const dense = totalLength(shaderPathsByPass(inst, { region: SQUARE, z: 1.3, density: 40 }).flat());
-    assert.ok(dense > 2.5 * sparse, `${name}: density 40 % gives ${dense.toFixed(1)} mm, 10 % gives ${sparse.toFixed(1)} mm`);
+    assert.ok(
+      dense > 2.5 * sparse,
+      `${name}: density 40 % gives ${dense.toFixed(1)} mm, 10 % gives ${sparse.toFixed(1)} mm`,
+    );
     // A density field: denser on the right half → more paths there.
     const field = shaderPathsByPass(inst, { region: SQUARE, z: 1.3, density: (x) => (x < 10 ? 10 : 40) }).flat();
     let left = 0;
@@ -119,7 +144,11 @@ test('shipped example image produces boundary paths', () => {
   const share = boundaryShare(paths, imageLabelFn(image, 0.1), QUARTER);
   assert.ok(share >= 0.99, `${(share * 100).toFixed(2)} %`);
   // Density scaling of images (opt-in): a denser layer gets a finer tiling.
-  const sparse = totalLength(inf.paths({ region: SQUARE, z: 0.2, density: 10 }, { pixelSize: 0.1, densityReference: 20 }));
-  const dense = totalLength(inf.paths({ region: SQUARE, z: 0.2, density: 40 }, { pixelSize: 0.1, densityReference: 20 }));
+  const sparse = totalLength(
+    inf.paths({ region: SQUARE, z: 0.2, density: 10 }, { pixelSize: 0.1, densityReference: 20 }),
+  );
+  const dense = totalLength(
+    inf.paths({ region: SQUARE, z: 0.2, density: 40 }, { pixelSize: 0.1, densityReference: 20 }),
+  );
   assert.ok(dense > 2.5 * sparse);
 });

@@ -48,7 +48,7 @@ function rowIntervals(region: readonly ExPolygon[], y: number, margin: number): 
     for (let i = 0, j = n - 1; i < n; j = i++) {
       const a = ring[i];
       const b = ring[j];
-      if ((a.y > yu) !== (b.y > yu)) xs.push((a.x + ((yu - a.y) * (b.x - a.x)) / (b.y - a.y)) / 1000);
+      if (a.y > yu !== b.y > yu) xs.push((a.x + ((yu - a.y) * (b.x - a.x)) / (b.y - a.y)) / 1000);
     }
   };
   for (const e of region) {
@@ -70,7 +70,12 @@ function rowIntervals(region: readonly ExPolygon[], y: number, margin: number): 
  * Sample labels over the region (grown by the margin) and find every crossing.
  * `regionGrown` is the region already offset by the margin (µm), used for the row mask.
  */
-export function sampleLabelGrid(label: LabelFn, regionGrown: readonly ExPolygon[], bounds: { minX: number; minY: number; maxX: number; maxY: number }, opts: GridOptions): LabelGrid {
+export function sampleLabelGrid(
+  label: LabelFn,
+  regionGrown: readonly ExPolygon[],
+  bounds: { minX: number; minY: number; maxX: number; maxY: number },
+  opts: GridOptions,
+): LabelGrid {
   const h = opts.h;
   const ph = opts.phase * h;
   const i0 = Math.floor((bounds.minX - ph) / h) - 1;
@@ -82,7 +87,7 @@ export function sampleLabelGrid(label: LabelFn, regionGrown: readonly ExPolygon[
   if (!(nx > 1 && ny > 1) || nx * ny > opts.maxSamples) {
     throw new StrataError(
       'LIMIT_EXCEEDED',
-      `custom infill: a ${((nx * h) | 0)} × ${((ny * h) | 0)} mm region at ${h} mm resolution needs ${nx * ny} samples (limit ${opts.maxSamples}); use a coarser resolution`,
+      `custom infill: a ${(nx * h) | 0} × ${(ny * h) | 0} mm region at ${h} mm resolution needs ${nx * ny} samples (limit ${opts.maxSamples}); use a coarser resolution`,
     );
   }
   const x0 = i0 * h + ph;

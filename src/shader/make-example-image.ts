@@ -49,7 +49,9 @@ export function exampleImagePng(): Uint8Array {
 }
 
 if (process.argv[1] !== undefined && import.meta.url === pathToFileURL(process.argv[1]).href) {
-  const out = process.argv[2] ?? join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'infillers', 'example-image', 'cells.png');
+  const out =
+    process.argv[2] ??
+    join(dirname(fileURLToPath(import.meta.url)), '..', '..', 'infillers', 'example-image', 'cells.png');
   writeFileSync(out, exampleImagePng());
   console.log(`wrote ${out}`);
 }

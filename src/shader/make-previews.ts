@@ -15,7 +15,17 @@ import { shaderPathsByPass } from './paths.js';
 
 const SIZE_MM = 20;
 const PX = 400;
-const REGION: ExPolygon[] = [{ outer: [{ x: 0, y: 0 }, { x: 20000, y: 0 }, { x: 20000, y: 20000 }, { x: 0, y: 20000 }], holes: [] }];
+const REGION: ExPolygon[] = [
+  {
+    outer: [
+      { x: 0, y: 0 },
+      { x: 20000, y: 0 },
+      { x: 20000, y: 20000 },
+      { x: 0, y: 20000 },
+    ],
+    holes: [],
+  },
+];
 const LINE_COLOURS = [
   [40, 40, 50],
   [200, 30, 40],

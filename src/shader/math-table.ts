@@ -104,7 +104,11 @@ export function makeMathTable(opts: TableOptions): Readonly<Record<string, unkno
     throw limitExceeded(opts.fileName, line, `loop ran more than ${opts.evalBudget} iterations in one evaluation`);
   };
   table.clim = (line: number) => {
-    throw limitExceeded(opts.fileName, line, `more than ${opts.evalBudget} function calls and loop iterations in one evaluation`);
+    throw limitExceeded(
+      opts.fileName,
+      line,
+      `more than ${opts.evalBudget} function calls and loop iterations in one evaluation`,
+    );
   };
   table.wlim = () => {
     throw limitExceeded(

@@ -72,14 +72,18 @@ export async function listInfillers(dir: string = shippedInfillersDir()): Promis
     try {
       return { ...describeInfiller(loadInfiller(f)), dir };
     } catch (e) {
-      if (e instanceof StrataError) return { name: f.name, kind: f.shader !== undefined ? 'shader' : 'image', dir, error: e.message };
+      if (e instanceof StrataError)
+        return { name: f.name, kind: f.shader !== undefined ? 'shader' : 'image', dir, error: e.message };
       throw e;
     }
   });
 }
 
 /** Load infiller NAME from the first folder that has it. */
-export async function findInfiller(name: string, dirs: readonly string[] = [shippedInfillersDir(), ...iceslInfillersDirs()]): Promise<Infiller> {
+export async function findInfiller(
+  name: string,
+  dirs: readonly string[] = [shippedInfillersDir(), ...iceslInfillersDirs()],
+): Promise<Infiller> {
   for (const dir of dirs) {
     const files = await readInfillersFolder(dir);
     const f = files.find((x) => x.name === name);
@@ -91,7 +95,15 @@ export async function findInfiller(name: string, dirs: readonly string[] = [ship
 /** Load a shader (`--infill-shader FILE`) or image (`--infill-image FILE`) file. */
 export async function loadInfillerFile(path: string, kind?: 'shader' | 'image'): Promise<Infiller> {
   const k = kind ?? (extname(path).toLowerCase() === '.png' ? 'image' : 'shader');
-  const name = basename(path) === 'shader.glsl' || basename(path) === 'cells.png' ? basename(dirname(path)) : basename(path, extname(path));
-  if (k === 'image') return infillerFromImage(new Uint8Array(await readLimited(path, MAX_IMAGE_BYTES)), name, { fileName: basename(path) });
-  return infillerFromShader((await readLimited(path, MAX_SOURCE_LENGTH * 4)).toString('utf8'), name, { fileName: basename(path) });
+  const name =
+    basename(path) === 'shader.glsl' || basename(path) === 'cells.png'
+      ? basename(dirname(path))
+      : basename(path, extname(path));
+  if (k === 'image')
+    return infillerFromImage(new Uint8Array(await readLimited(path, MAX_IMAGE_BYTES)), name, {
+      fileName: basename(path),
+    });
+  return infillerFromShader((await readLimited(path, MAX_SOURCE_LENGTH * 4)).toString('utf8'), name, {
+    fileName: basename(path),
+  });
 }

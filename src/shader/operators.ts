@@ -92,7 +92,10 @@ function componentwise(ctx: Ctx, op: ArithOp, a: Value, b: Value, base: Base): V
   if (x.k && y.k) {
     const xk = x.k as number[];
     const yk = y.k as number[];
-    return constValue(t, xk.map((v, i) => foldOp(op, base, v, yk[i])));
+    return constValue(
+      t,
+      xk.map((v, i) => foldOp(op, base, v, yk[i])),
+    );
   }
   return { t, c: x.c.map((c, i) => opCode(op, base, c, y.c[i])) };
 }
@@ -148,7 +151,8 @@ export function arith(ctx: Ctx, op: ArithOp, a: Value, b: Value): Value {
   checkNumeric(ctx, op, b);
   if (op === '<<' || op === '>>') {
     if (a.t.base === 'float' || b.t.base === 'float') throw ctx.error(`operator ${op} needs integers`);
-    if (!isScalar(b.t) && !sameShape(a.t, b.t)) throw ctx.error(`operator ${op}: ${typeName(a.t)} and ${typeName(b.t)} do not match`);
+    if (!isScalar(b.t) && !sameShape(a.t, b.t))
+      throw ctx.error(`operator ${op}: ${typeName(a.t)} and ${typeName(b.t)} do not match`);
     let y = b;
     if (!sameShape(a.t, b.t)) y = splat(ctx, b, gtype(b.t.base, a.t.rows, a.t.cols));
     if (isScalar(a.t) && !isScalar(b.t)) throw ctx.error(`operator ${op}: a scalar cannot be shifted by a vector`);
@@ -173,7 +177,8 @@ export type CompareOp = '<' | '>' | '<=' | '>=';
 export function compare(ctx: Ctx, op: CompareOp, a: Value, b: Value): Value {
   checkNumeric(ctx, op, a);
   checkNumeric(ctx, op, b);
-  if (!isScalar(a.t) || !isScalar(b.t)) throw ctx.error(`operator ${op} needs scalars (use lessThan() etc. for vectors)`);
+  if (!isScalar(a.t) || !isScalar(b.t))
+    throw ctx.error(`operator ${op} needs scalars (use lessThan() etc. for vectors)`);
   const base = commonBase(a.t.base, b.t.base) as Base;
   const x = convert(a, base);
   const y = convert(b, base);
@@ -189,7 +194,8 @@ export function compare(ctx: Ctx, op: CompareOp, a: Value, b: Value): Value {
 export function equality(ctx: Ctx, op: '==' | '!=', a: Value, b: Value): Value {
   if (a.t.rows === 0 || b.t.rows === 0) throw ctx.error(`operator ${op}: operand has no value`);
   const base = commonBase(a.t.base, b.t.base);
-  if (base === undefined || !sameShape(a.t, b.t)) throw ctx.error(`operator ${op}: ${typeName(a.t)} and ${typeName(b.t)} do not match`);
+  if (base === undefined || !sameShape(a.t, b.t))
+    throw ctx.error(`operator ${op}: ${typeName(a.t)} and ${typeName(b.t)} do not match`);
   const x = convert(a, base);
   const y = convert(b, base);
   if (x.k && y.k) {
@@ -204,7 +210,11 @@ export function equality(ctx: Ctx, op: '==' | '!=', a: Value, b: Value): Value {
 export function negate(ctx: Ctx, a: Value): Value {
   checkNumeric(ctx, '-', a);
   const base = a.t.base;
-  if (a.k) return constValue(a.t, (a.k as number[]).map((v) => (base === 'float' ? -v : base === 'int' ? -v | 0 : -v >>> 0)));
+  if (a.k)
+    return constValue(
+      a.t,
+      (a.k as number[]).map((v) => (base === 'float' ? -v : base === 'int' ? -v | 0 : -v >>> 0)),
+    );
   const c = a.c.map((x) => (base === 'float' ? `(-${x})` : base === 'int' ? `((-${x}) | 0)` : `((-${x}) >>> 0)`));
   return { t: a.t, c };
 }
@@ -219,7 +229,11 @@ export function bitNot(ctx: Ctx, a: Value): Value {
   checkNumeric(ctx, '~', a);
   if (a.t.base === 'float') throw ctx.error('operator ~ needs integers');
   const base = a.t.base;
-  if (a.k) return constValue(a.t, (a.k as number[]).map((v) => (base === 'int' ? ~v : ~v >>> 0)));
+  if (a.k)
+    return constValue(
+      a.t,
+      (a.k as number[]).map((v) => (base === 'int' ? ~v : ~v >>> 0)),
+    );
   return { t: a.t, c: a.c.map((x) => (base === 'int' ? `(~${x})` : `((~${x}) >>> 0)`)) };
 }
 

@@ -60,8 +60,10 @@ interface Resolved {
 function resolve(opts: ExtractOptions): Resolved {
   const nozzle = opts.nozzleDiameter ?? 0.4;
   const h = opts.resolution ?? nozzle / 4;
-  if (!(h > 0) || !Number.isFinite(h)) throw new StrataError('BAD_SETTING', `custom infill: resolution must be a positive number of mm, got ${h}`);
-  if (!(nozzle > 0)) throw new StrataError('BAD_SETTING', `custom infill: nozzle diameter must be positive, got ${nozzle}`);
+  if (!(h > 0) || !Number.isFinite(h))
+    throw new StrataError('BAD_SETTING', `custom infill: resolution must be a positive number of mm, got ${h}`);
+  if (!(nozzle > 0))
+    throw new StrataError('BAD_SETTING', `custom infill: nozzle diameter must be positive, got ${nozzle}`);
   return {
     h,
     tolerance: Math.max(1e-6, Math.min(opts.tolerance ?? 0.0005, h / 4)),
@@ -90,8 +92,19 @@ export function labelBoundaries(label: LabelFn, region: readonly ExPolygon[], op
     if (!(b.maxX > b.minX && b.maxY > b.minY)) continue;
     const marginMm = 2 * r.h;
     const grown = offset(part, Math.ceil(marginMm * 1000));
-    const bounds = { minX: b.minX / 1000 - marginMm, minY: b.minY / 1000 - marginMm, maxX: b.maxX / 1000 + marginMm, maxY: b.maxY / 1000 + marginMm };
-    const grid = sampleLabelGrid(label, grown, bounds, { h: r.h, tolerance: r.tolerance, margin: marginMm, maxSamples: budget, phase: r.phase });
+    const bounds = {
+      minX: b.minX / 1000 - marginMm,
+      minY: b.minY / 1000 - marginMm,
+      maxX: b.maxX / 1000 + marginMm,
+      maxY: b.maxY / 1000 + marginMm,
+    };
+    const grid = sampleLabelGrid(label, grown, bounds, {
+      h: r.h,
+      tolerance: r.tolerance,
+      margin: marginMm,
+      maxSamples: budget,
+      phase: r.phase,
+    });
     budget -= grid.nx * grid.ny;
     const lines: Polyline[] = [];
     for (const p of linkCrossings(grid, label)) {
@@ -108,7 +121,8 @@ export function labelBoundaries(label: LabelFn, region: readonly ExPolygon[], op
 function nearBoundary(px: number, py: number, region: readonly ExPolygon[], tol2: number): boolean {
   for (const e of region) {
     for (const ring of [e.outer, ...e.holes]) {
-      for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) if (segmentDistance2(px, py, ring[j].x, ring[j].y, ring[i].x, ring[i].y) <= tol2) return true;
+      for (let i = 0, j = ring.length - 1; i < ring.length; j = i++)
+        if (segmentDistance2(px, py, ring[j].x, ring[j].y, ring[i].x, ring[i].y) <= tol2) return true;
     }
   }
   return false;
@@ -147,7 +161,11 @@ function instanceOf(shader: CompiledShader | ShaderInstance): ShaderInstance {
  * Paths of an infill shader for one layer, one list per pass (pass 0 first). Each pass is
  * extracted and ordered separately; pass k+1 starts where pass k ended.
  */
-export function shaderPathsByPass(shader: CompiledShader | ShaderInstance, layer: ShaderLayerInput, opts: ExtractOptions = {}): Polyline[][] {
+export function shaderPathsByPass(
+  shader: CompiledShader | ShaderInstance,
+  layer: ShaderLayerInput,
+  opts: ExtractOptions = {},
+): Polyline[][] {
   const inst = instanceOf(shader);
   const env = {
     params: layer.params,
@@ -173,6 +191,10 @@ export function shaderPathsByPass(shader: CompiledShader | ShaderInstance, layer
 }
 
 /** All passes' paths of an infill shader for one layer, in print order. */
-export function shaderPaths(shader: CompiledShader | ShaderInstance, layer: ShaderLayerInput, opts: ExtractOptions = {}): Polyline[] {
+export function shaderPaths(
+  shader: CompiledShader | ShaderInstance,
+  layer: ShaderLayerInput,
+  opts: ExtractOptions = {},
+): Polyline[] {
   return shaderPathsByPass(shader, layer, opts).flat();
 }

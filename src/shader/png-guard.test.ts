@@ -48,26 +48,46 @@ function ihdr(w: number, h: number, colorType = 2, interlace = 0): Uint8Array {
   return chunk('IHDR', d);
 }
 
-const rgb = (w: number, h: number) => encode({ width: w, height: h, data: new Uint8Array(w * h * 3).fill(200), channels: 3, depth: 8 });
+const rgb = (w: number, h: number) =>
+  encode({ width: w, height: h, data: new Uint8Array(w * h * 3).fill(200), channels: 3, depth: 8 });
 
 function refused(fn: () => unknown, code: string, re: RegExp): void {
-  assert.throws(fn, (e: unknown) => e instanceof StrataError && e.code === code && re.test(e.message) && !e.message.includes('\n'));
+  assert.throws(
+    fn,
+    (e: unknown) => e instanceof StrataError && e.code === code && re.test(e.message) && !e.message.includes('\n'),
+  );
 }
 
 test('the unpacked size of the image data follows from the header (Adam7 passes when interlaced)', () => {
-  const head = (w: number, h: number, interlaced = false, colorType = 2) => ({ width: w, height: h, depth: 8, colorType, interlaced });
+  const head = (w: number, h: number, interlaced = false, colorType = 2) => ({
+    width: w,
+    height: h,
+    depth: 8,
+    colorType,
+    interlaced,
+  });
   assert.equal(pngDataBytes(head(3, 2)), 2 * (1 + 9));
   assert.equal(pngDataBytes(head(1, 1, true)), 1 + 3);
   // 8 × 8 interlaced: passes of 1×1, 1×1, 2×1, 2×2, 4×2, 4×4 and 8×4 pixels
   assert.equal(pngDataBytes(head(8, 8, true)), 4 + 4 + 7 + 14 + 26 + 52 + 100);
   assert.equal(pngDataBytes({ ...head(5, 1), depth: 1, colorType: 0 }), 1 + 1);
-  assert.deepEqual(readPngHeader(rgb(3, 2), 'x.png'), { width: 3, height: 2, depth: 8, colorType: 2, interlaced: false });
+  assert.deepEqual(readPngHeader(rgb(3, 2), 'x.png'), {
+    width: 3,
+    height: 2,
+    depth: 8,
+    colorType: 2,
+    interlaced: false,
+  });
 });
 
 test('image data that unpacks to more than its pixels need is refused after a few slices', () => {
   const bomb = concat([SIG, ihdr(1, 1), chunk('IDAT', zeros(16)), chunk('IEND', new Uint8Array(0))]);
   const before = process.memoryUsage().rss;
-  refused(() => decodeCellsPng(bomb, 'bomb.png'), 'BAD_IMAGE', /^bomb\.png: the image data unpacks to more than the 4 bytes its 1 × 1 pixels need/);
+  refused(
+    () => decodeCellsPng(bomb, 'bomb.png'),
+    'BAD_IMAGE',
+    /^bomb\.png: the image data unpacks to more than the 4 bytes its 1 × 1 pixels need/,
+  );
   assert.ok(process.memoryUsage().rss - before < 12 * 1024 * 1024, 'not inflated to the end');
 });
 
@@ -84,9 +104,20 @@ test('compressed side chunks are dropped unread: an ICC-profile bomb decodes as 
 
 test('an image that would take more than the budget to decode is refused, naming the setting', () => {
   const big = rgb(1024, 512);
-  refused(() => decodeCellsPng(big, 'big.png', 1024 * 1024), 'LIMIT_EXCEEDED', /^big\.png: decoding 1024 × 512 pixels takes \d+ MiB, more than the 1 MiB budget; raise inflateBudget/);
-  assert.throws(() => new Slicer({ inflateBudget: 1, customInfill: { name: 'big', image: big } }), (e: unknown) => e instanceof StrataError && /raise inflateBudget/.test(e.message));
+  refused(
+    () => decodeCellsPng(big, 'big.png', 1024 * 1024),
+    'LIMIT_EXCEEDED',
+    /^big\.png: decoding 1024 × 512 pixels takes \d+ MiB, more than the 1 MiB budget; raise inflateBudget/,
+  );
+  assert.throws(
+    () => new Slicer({ inflateBudget: 1, customInfill: { name: 'big', image: big } }),
+    (e: unknown) => e instanceof StrataError && /raise inflateBudget/.test(e.message),
+  );
   assert.doesNotThrow(() => new Slicer({ customInfill: { name: 'big', image: big } }));
   // broken files stay BAD_IMAGE
-  refused(() => decodeCellsPng(concat([SIG, ihdr(2, 2), chunk('IDAT', Uint8Array.of(1, 2, 3))]).subarray(0, 45)), 'BAD_IMAGE', /broken PNG|cannot decode/);
+  refused(
+    () => decodeCellsPng(concat([SIG, ihdr(2, 2), chunk('IDAT', Uint8Array.of(1, 2, 3))]).subarray(0, 45)),
+    'BAD_IMAGE',
+    /broken PNG|cannot decode/,
+  );
 });

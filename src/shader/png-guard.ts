@@ -36,7 +36,13 @@ export function readPngHeader(bytes: Uint8Array, fileName: string): PngHeader {
   const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
   const type = String.fromCharCode(bytes[12], bytes[13], bytes[14], bytes[15]);
   if (type !== 'IHDR') throw bad(fileName, 'broken PNG (no IHDR chunk)');
-  return { width: dv.getUint32(16), height: dv.getUint32(20), depth: bytes[24], colorType: bytes[25], interlaced: bytes[28] === 1 };
+  return {
+    width: dv.getUint32(16),
+    height: dv.getUint32(20),
+    depth: bytes[24],
+    colorType: bytes[25],
+    interlaced: bytes[28] === 1,
+  };
 }
 
 /** Bytes the image's scanlines take once inflated (one filter byte per row, Adam7 passes when interlaced). */
@@ -83,14 +89,20 @@ export function guardPng(bytes: Uint8Array, fileName: string, head: PngHeader): 
     const len = dv.getUint32(p);
     const type = String.fromCharCode(bytes[p + 4], bytes[p + 5], bytes[p + 6], bytes[p + 7]);
     const end = p + 12 + len;
-    if (len > bytes.length || end > bytes.length) throw bad(fileName, `broken PNG (the ${type.replace(/[^\x20-\x7e]/g, '?')} chunk runs past the end of the file)`);
+    if (len > bytes.length || end > bytes.length)
+      throw bad(fileName, `broken PNG (the ${type.replace(/[^\x20-\x7e]/g, '?')} chunk runs past the end of the file)`);
     if (type === 'IDAT') {
       try {
-        for (let at = p + 8; at < p + 8 + len && !over; at += slice) inflater.push(bytes.subarray(at, Math.min(p + 8 + len, at + slice)));
+        for (let at = p + 8; at < p + 8 + len && !over; at += slice)
+          inflater.push(bytes.subarray(at, Math.min(p + 8 + len, at + slice)));
       } catch (e) {
         throw bad(fileName, `cannot decode PNG (${String((e as Error)?.message ?? e).slice(0, 120)})`);
       }
-      if (over) throw bad(fileName, `the image data unpacks to more than the ${need} bytes its ${head.width} × ${head.height} pixels need: refused`);
+      if (over)
+        throw bad(
+          fileName,
+          `the image data unpacks to more than the ${need} bytes its ${head.width} × ${head.height} pixels need: refused`,
+        );
     }
     if (type === 'IEND') ended = true;
     if (!DROPPED.has(type)) kept.push(bytes.subarray(p, end));

@@ -3,7 +3,32 @@ import { badShader } from './shader-error.js';
 
 type Tok = { k: 'num'; v: number } | { k: 'op'; v: string };
 
-const OPS = ['<<', '>>', '<=', '>=', '==', '!=', '&&', '||', '+', '-', '*', '/', '%', '<', '>', '&', '|', '^', '!', '~', '(', ')', '?', ':'];
+const OPS = [
+  '<<',
+  '>>',
+  '<=',
+  '>=',
+  '==',
+  '!=',
+  '&&',
+  '||',
+  '+',
+  '-',
+  '*',
+  '/',
+  '%',
+  '<',
+  '>',
+  '&',
+  '|',
+  '^',
+  '!',
+  '~',
+  '(',
+  ')',
+  '?',
+  ':',
+];
 
 function tokenize(src: string, fileName: string, line: number): Tok[] {
   const toks: Tok[] = [];
@@ -91,7 +116,7 @@ function applyBinary(op: string, a: number, b: number, fail: (m: string) => neve
       return (a / b) | 0;
     case '%':
       if (b === 0) fail('division by zero in #if');
-      return a % b | 0;
+      return (a % b) | 0;
   }
   return fail(`unknown operator ${op}`);
 }
@@ -110,10 +135,13 @@ export function evalIfExpression(
   const fail = (m: string): never => {
     throw badShader(fileName, line, m);
   };
-  const withDefined = expr.replace(/\bdefined\s*(?:\(\s*([A-Za-z_][A-Za-z0-9_]*)\s*\)|([A-Za-z_][A-Za-z0-9_]*))/g, (_m, a?: string, b?: string) =>
-    macros.has((a ?? b) as string) ? ' 1 ' : ' 0 ',
+  const withDefined = expr.replace(
+    /\bdefined\s*(?:\(\s*([A-Za-z_][A-Za-z0-9_]*)\s*\)|([A-Za-z_][A-Za-z0-9_]*))/g,
+    (_m, a?: string, b?: string) => (macros.has((a ?? b) as string) ? ' 1 ' : ' 0 '),
   );
-  const expanded = expand(withDefined).replace(/\btrue\b/g, '1').replace(/\b[A-Za-z_][A-Za-z0-9_]*\b/g, '0');
+  const expanded = expand(withDefined)
+    .replace(/\btrue\b/g, '1')
+    .replace(/\b[A-Za-z_][A-Za-z0-9_]*\b/g, '0');
   const toks = tokenize(expanded, fileName, line);
   if (toks.length === 0) fail('#if needs an expression');
   let pos = 0;

@@ -192,7 +192,11 @@ function expand(src: string, hidden: readonly string[], st: ExpandState): string
         const { args, close } = splitArgs(src, k);
         const raw = m.params.length === 0 && args.length === 1 && args[0].trim() === '' ? [] : args;
         if (raw.length !== m.params.length) {
-          throw badShader(st.fileName, st.line, `macro ${name} takes ${m.params.length} argument(s), got ${raw.length}`);
+          throw badShader(
+            st.fileName,
+            st.line,
+            `macro ${name} takes ${m.params.length} argument(s), got ${raw.length}`,
+          );
         }
         const expandedArgs = raw.map((a) => expand(a.trim(), hidden, st));
         out += expand(substituteParams(m.body, m.params, expandedArgs), [...hidden, name], st);
@@ -220,7 +224,8 @@ function parseDefine(rest: string, fileName: string, line: number): { name: stri
     const list = m[3].trim();
     const params = list === '' ? [] : list.split(',').map((p) => p.trim());
     for (const p of params) {
-      if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(p)) throw badShader(fileName, line, `bad macro parameter '${p.slice(0, 40)}'`);
+      if (!/^[A-Za-z_][A-Za-z0-9_]*$/.test(p))
+        throw badShader(fileName, line, `bad macro parameter '${p.slice(0, 40)}'`);
     }
     return { name, macro: { params, body: m[4].trim() } };
   }
@@ -251,7 +256,11 @@ function parseUiDefault(type: UiParamType, text: string): number | boolean | und
 }
 
 /** Preprocess GLSL source; throws StrataError('BAD_SHADER') naming the line on errors. */
-export function preprocessGlsl(source: string, fileName: string, predefined: ReadonlyMap<string, string> = new Map()): Preprocessed {
+export function preprocessGlsl(
+  source: string,
+  fileName: string,
+  predefined: ReadonlyMap<string, string> = new Map(),
+): Preprocessed {
   const { code, lineComments } = stripComments(source.replace(/\r\n?/g, '\n'));
   const lines = code.split('\n');
   const out: string[] = new Array<string>(lines.length).fill('');
@@ -296,7 +305,7 @@ export function preprocessGlsl(source: string, fileName: string, predefined: Rea
         case 'ifndef': {
           const id = /^[A-Za-z_][A-Za-z0-9_]*/.exec(rest)?.[0];
           if (id === undefined) throw badShader(fileName, lineNo, `#${name} needs a macro name`);
-          const on = active() && (macros.has(id) === (name === 'ifdef'));
+          const on = active() && macros.has(id) === (name === 'ifdef');
           stack.push({ active: on, taken: on, parentActive: active(), sawElse: false, line: lineNo });
           break;
         }
@@ -339,7 +348,13 @@ export function preprocessGlsl(source: string, fileName: string, predefined: Rea
             throw badShader(fileName, lineNo, `#error ${rest.slice(0, 200)}`);
           } else if (name === 'include') {
             throw badShader(fileName, lineNo, '#include is not supported');
-          } else if (name === 'version' || name === 'extension' || name === 'pragma' || name === 'line' || name === '') {
+          } else if (
+            name === 'version' ||
+            name === 'extension' ||
+            name === 'pragma' ||
+            name === 'line' ||
+            name === ''
+          ) {
             // Ignored: Strata compiles one dialect.
           } else {
             throw badShader(fileName, lineNo, `unknown directive #${name.slice(0, 40)}`);
@@ -354,7 +369,8 @@ export function preprocessGlsl(source: string, fileName: string, predefined: Rea
     if (ui && uiText !== undefined) {
       const type = ui[1] as UiParamType;
       const value = parseUiDefault(type, expand(uiText, [], st));
-      if (value === undefined) throw badShader(fileName, lineNo, `${ui[2]}: default value '${uiText.slice(0, 40)}' is not a ${type}`);
+      if (value === undefined)
+        throw badShader(fileName, lineNo, `${ui[2]}: default value '${uiText.slice(0, 40)}' is not a ${type}`);
       let tooltip = (lineComments.get(i) ?? '').trim();
       if (tooltip.endsWith(';')) tooltip = tooltip.slice(0, -1).trim();
       uiParams.push({ name: ui[2], type, defaultValue: value, tooltip, line: lineNo });
@@ -393,7 +409,8 @@ export function preprocessGlsl(source: string, fileName: string, predefined: Rea
  * Names of Object.prototype members break the parser's scope tables (plain objects). GLSL reserves
  * identifiers containing '__', so appending `__s` cannot clash with a legal user identifier.
  */
-const HAZARDS = /(?<![A-Za-z0-9_])(constructor|__proto__|toString|toLocaleString|valueOf|hasOwnProperty|isPrototypeOf|propertyIsEnumerable|__defineGetter__|__defineSetter__|__lookupGetter__|__lookupSetter__)(?![A-Za-z0-9_])/g;
+const HAZARDS =
+  /(?<![A-Za-z0-9_])(constructor|__proto__|toString|toLocaleString|valueOf|hasOwnProperty|isPrototypeOf|propertyIsEnumerable|__defineGetter__|__defineSetter__|__lookupGetter__|__lookupSetter__)(?![A-Za-z0-9_])/g;
 
 function mangleHazards(line: string): string {
   return line.replace(HAZARDS, '$1__s');

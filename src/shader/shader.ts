@@ -109,7 +109,11 @@ function paramEntries(values: ParamValues | undefined): [string, number | boolea
 }
 
 /** Check and convert a parameter value for its declared type. */
-export function checkParamValue(fileName: string, p: { name: string; type: UiParamType }, v: unknown): number | boolean {
+export function checkParamValue(
+  fileName: string,
+  p: { name: string; type: UiParamType },
+  v: unknown,
+): number | boolean {
   if (p.type === 'bool') {
     if (typeof v === 'boolean') return v;
     if (v === 0 || v === 1) return v === 1;
@@ -117,7 +121,10 @@ export function checkParamValue(fileName: string, p: { name: string; type: UiPar
     if (p.type === 'float') return v;
     if (Number.isInteger(v) && Math.abs(v) <= 2147483647) return v;
   }
-  throw new StrataError('BAD_SETTING', `${fileName}: parameter ${p.name} must be ${p.type === 'bool' ? 'true or false' : `a${p.type === 'int' ? 'n integer' : ' number'}`}`);
+  throw new StrataError(
+    'BAD_SETTING',
+    `${fileName}: parameter ${p.name} must be ${p.type === 'bool' ? 'true or false' : `a${p.type === 'int' ? 'n integer' : ' number'}`}`,
+  );
 }
 
 /** Parse a CLI-style value (`--infill-param NAME=VALUE`) for a parameter. */
@@ -126,11 +133,17 @@ export function parseParamValue(p: ShaderParam, text: string): number | boolean 
   if (p.type === 'bool') {
     if (t === 'true' || t === '1' || t === 'yes' || t === 'on') return true;
     if (t === 'false' || t === '0' || t === 'no' || t === 'off') return false;
-    throw new StrataError('BAD_SETTING', `infill parameter ${p.name} must be true or false, got '${text.slice(0, 40)}'`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `infill parameter ${p.name} must be true or false, got '${text.slice(0, 40)}'`,
+    );
   }
   const n = Number(t);
   if (t === '' || !Number.isFinite(n) || (p.type === 'int' && !Number.isInteger(n))) {
-    throw new StrataError('BAD_SETTING', `infill parameter ${p.name} must be a${p.type === 'int' ? 'n integer' : ' number'}, got '${text.slice(0, 40)}'`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `infill parameter ${p.name} must be a${p.type === 'int' ? 'n integer' : ' number'}, got '${text.slice(0, 40)}'`,
+    );
   }
   return n;
 }
@@ -140,13 +153,21 @@ export function findParam(params: readonly ShaderParam[], name: string): ShaderP
   return params.find((p) => p.name === name) ?? params.find((p) => p.name === `ui_${name}`);
 }
 
-function uniformValues(fileName: string, uniforms: UniformSlot[], params: readonly ShaderParam[], env: ShaderEnv): Float64Array {
+function uniformValues(
+  fileName: string,
+  uniforms: UniformSlot[],
+  params: readonly ShaderParam[],
+  env: ShaderEnv,
+): Float64Array {
   const overrides = new Map<string, number | boolean>();
   for (const [k, v] of paramEntries(env.params)) {
     const p = findParam(params, k);
     if (p === undefined) {
       const known = params.map((q) => q.name).join(', ') || 'none';
-      throw new StrataError('BAD_SETTING', `${fileName}: unknown infill parameter '${k.slice(0, 60)}' (parameters: ${known})`);
+      throw new StrataError(
+        'BAD_SETTING',
+        `${fileName}: unknown infill parameter '${k.slice(0, 60)}' (parameters: ${known})`,
+      );
     }
     overrides.set(p.name, checkParamValue(fileName, p, v));
   }
@@ -161,7 +182,9 @@ function uniformValues(fileName: string, uniforms: UniformSlot[], params: readon
   return Float64Array.from(out);
 }
 
-type Factory = (table: Readonly<Record<string, unknown>>) => [
+type Factory = (
+  table: Readonly<Record<string, unknown>>,
+) => [
   (x: number, y: number, z: number) => number,
   (a: Float64Array, d: (x: number, y: number, z: number) => number, n: number, t: number) => void,
   () => number,
@@ -177,14 +200,20 @@ export function compileShader(source: string, options: CompileOptions = {}): Com
   const evalBudget = Math.max(1, Math.floor(options.evalBudget ?? DEFAULT_EVAL_BUDGET));
   const layerBudget = Math.max(evalBudget, Math.floor(options.layerBudget ?? DEFAULT_LAYER_BUDGET));
   if (typeof source !== 'string') throw badShader(fileName, undefined, 'shader source must be text');
-  if (source.length > MAX_SOURCE_LENGTH) throw badShader(fileName, undefined, `the shader is larger than ${MAX_SOURCE_LENGTH} characters`);
+  if (source.length > MAX_SOURCE_LENGTH)
+    throw badShader(fileName, undefined, `the shader is larger than ${MAX_SOURCE_LENGTH} characters`);
   const pre = preprocessGlsl(source, fileName);
   if (pre.text.replace(/\s+/g, ' ').length > MAX_CODE_LENGTH) {
     throw badShader(fileName, undefined, `the shader has more than ${MAX_CODE_LENGTH} characters of code`);
   }
   let ast: { program: unknown[] };
   try {
-    ast = parse(pre.text, { includeLocation: true, quiet: true, grammarSource: fileName, failOnWarn: false }) as unknown as { program: unknown[] };
+    ast = parse(pre.text, {
+      includeLocation: true,
+      quiet: true,
+      grammarSource: fileName,
+      failOnWarn: false,
+    }) as unknown as { program: unknown[] };
   } catch (e) {
     throw parseError(fileName, e);
   }
@@ -198,15 +227,25 @@ export function compileShader(source: string, options: CompileOptions = {}): Com
     if (e instanceof RangeError) throw badShader(fileName, ctx.line, 'the shader is too complex (nested too deeply)');
     throw badShader(fileName, ctx.line, `cannot compile: ${String((e as Error)?.message ?? e).slice(0, 200)}`);
   }
-  if (prog.body.length > MAX_JS_LENGTH) throw badShader(fileName, undefined, 'the shader is too complex (generated code too large)');
+  if (prog.body.length > MAX_JS_LENGTH)
+    throw badShader(fileName, undefined, 'the shader is too complex (generated code too large)');
   assertSafeJs(prog.body);
   let factory: Factory;
   try {
     factory = new Function('M', prog.body) as Factory;
   } catch (e) {
-    throw badShader(fileName, undefined, `internal compiler error: ${String((e as Error)?.message ?? e).slice(0, 200)}`);
+    throw badShader(
+      fileName,
+      undefined,
+      `internal compiler error: ${String((e as Error)?.message ?? e).slice(0, 200)}`,
+    );
   }
-  const params: ShaderParam[] = pre.uiParams.map((p) => ({ name: p.name, type: p.type, default: p.defaultValue, tooltip: p.tooltip }));
+  const params: ShaderParam[] = pre.uiParams.map((p) => ({
+    name: p.name,
+    type: p.type,
+    default: p.defaultValue,
+    tooltip: p.tooltip,
+  }));
   const uniforms = prog.uniforms;
   const body = prog.body;
   return {

@@ -57,7 +57,11 @@ export function convertComp(c: string, from: Base, to: Base): string {
 export function convert(v: Value, to: Base): Value {
   const t = gtype(to, v.t.rows, v.t.cols);
   if (v.t.base === to) return v.t === t ? v : { t, c: v.c, k: v.k };
-  if (v.k) return constValue(t, v.k.map((x) => coerceConst(x, to)));
+  if (v.k)
+    return constValue(
+      t,
+      v.k.map((x) => coerceConst(x, to)),
+    );
   return { t, c: v.c.map((c) => convertComp(c, v.t.base, to)) };
 }
 
@@ -75,7 +79,11 @@ export function comp(v: Value, i: number): Value {
 }
 
 export function fromComps(t: GType, comps: Value[]): Value {
-  if (comps.every((c) => c.k !== undefined)) return constValue(t, comps.map((c) => (c.k as (number | boolean)[])[0]));
+  if (comps.every((c) => c.k !== undefined))
+    return constValue(
+      t,
+      comps.map((c) => (c.k as (number | boolean)[])[0]),
+    );
   return { t, c: comps.map((c) => c.c[0]) };
 }
 

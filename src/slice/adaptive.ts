@@ -31,7 +31,8 @@ export interface AdaptiveSpec {
 
 /** The cusp depth allowed by a quality 0..1: maxLayerHeight's at 0, half of minLayerHeight's at 1, geometrically. */
 export function cuspFor(minMm: number, maxMm: number, quality: number): number {
-  const fine = minMm / 2, coarse = maxMm;
+  const fine = minMm / 2,
+    coarse = maxMm;
   return fine ** quality * coarse ** (1 - quality);
 }
 
@@ -39,27 +40,43 @@ export function cuspFor(minMm: number, maxMm: number, quality: number): number {
  * The next-layer height of an adaptive plan over these meshes (bed coordinates, mm, bottom at z = 0): a
  * function of the layer's bottom Z and the height of the layer below (µm), for `planVaryingLayers`.
  */
-export function adaptiveHeights(meshes: readonly Mesh[], spec: AdaptiveSpec): (bottomUm: number, prevUm: number) => number {
+export function adaptiveHeights(
+  meshes: readonly Mesh[],
+  spec: AdaptiveSpec,
+): (bottomUm: number, prevUm: number) => number {
   const { minUm, maxUm, stepUm } = spec;
   let topUm = 0;
-  for (const m of meshes) for (let i = 2; i < m.positions.length; i += 3) topUm = Math.max(topUm, m.positions[i] * 1000);
+  for (const m of meshes)
+    for (let i = 2; i < m.positions.length; i += 3) topUm = Math.max(topUm, m.positions[i] * 1000);
   const cells = Math.max(1, Math.ceil(topUm / GRID_UM) + 1);
   const limit = new Float64Array(cells).fill(maxUm);
   const flats: number[] = [];
   for (const m of meshes) {
-    const p = m.positions, idx = m.indices;
+    const p = m.positions,
+      idx = m.indices;
     for (let t = 0; t + 2 < idx.length; t += 3) {
-      const a = 3 * idx[t], b = 3 * idx[t + 1], c = 3 * idx[t + 2];
-      const az = p[a + 2] * 1000, bz = p[b + 2] * 1000, cz = p[c + 2] * 1000;
-      const lo = Math.min(az, bz, cz), hi = Math.max(az, bz, cz);
+      const a = 3 * idx[t],
+        b = 3 * idx[t + 1],
+        c = 3 * idx[t + 2];
+      const az = p[a + 2] * 1000,
+        bz = p[b + 2] * 1000,
+        cz = p[c + 2] * 1000;
+      const lo = Math.min(az, bz, cz),
+        hi = Math.max(az, bz, cz);
       if (hi - lo <= FLAT_UM) {
         flats.push(Math.round((lo + hi) / 2));
         continue;
       }
       // |n_z| of the facet: the cross product's z over its length (in mm, as the positions are)
-      const ux = p[b] - p[a], uy = p[b + 1] - p[a + 1], uz = p[b + 2] - p[a + 2];
-      const vx = p[c] - p[a], vy = p[c + 1] - p[a + 1], vz = p[c + 2] - p[a + 2];
-      const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+      const ux = p[b] - p[a],
+        uy = p[b + 1] - p[a + 1],
+        uz = p[b + 2] - p[a + 2];
+      const vx = p[c] - p[a],
+        vy = p[c + 1] - p[a + 1],
+        vz = p[c + 2] - p[a + 2];
+      const nx = uy * vz - uz * vy,
+        ny = uz * vx - ux * vz,
+        nz = ux * vy - uy * vx;
       const len = Math.hypot(nx, ny, nz);
       if (!(len > 0)) continue;
       const cos = Math.abs(nz) / len;
@@ -76,7 +93,8 @@ export function adaptiveHeights(meshes: readonly Mesh[], spec: AdaptiveSpec): (b
   const flatZ = [...new Set(flats)].sort((x, y) => x - y);
   return (bottomUm, prevUm) => {
     let h = Math.min(maxUm, prevUm + stepUm);
-    for (let k = Math.floor(bottomUm / GRID_UM); k < cells && k * GRID_UM < bottomUm + h; k++) h = Math.min(h, limit[k]);
+    for (let k = Math.floor(bottomUm / GRID_UM); k < cells && k * GRID_UM < bottomUm + h; k++)
+      h = Math.min(h, limit[k]);
     h = Math.max(minUm, Math.floor(h));
     // end the layer on a flat face inside it, if that keeps it within the limits
     const next = firstAbove(flatZ, bottomUm);
@@ -90,7 +108,8 @@ export function adaptiveHeights(meshes: readonly Mesh[], spec: AdaptiveSpec): (b
 
 /** The index of the first value above z in an ascending list (its length if none). */
 function firstAbove(sorted: readonly number[], z: number): number {
-  let lo = 0, hi = sorted.length;
+  let lo = 0,
+    hi = sorted.length;
   while (lo < hi) {
     const mid = (lo + hi) >> 1;
     if (sorted[mid] <= z) lo = mid + 1;

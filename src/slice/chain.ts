@@ -46,7 +46,8 @@ export function chainSegments(seg: LayerSegments): Chains {
   const arrivals: number[] = [];
   const departures: number[] = [];
   for (let slot = 0; slot < slotCount; slot++) {
-    const a = slotFirst[slot], b = slotFirst[slot + 1];
+    const a = slotFirst[slot],
+      b = slotFirst[slot + 1];
     if (b - a === 2) {
       partner[byslot[a]] = byslot[a + 1];
       partner[byslot[a + 1]] = byslot[a];
@@ -70,7 +71,8 @@ export function chainSegments(seg: LayerSegments): Chains {
 
   const slotOf = (ep: number): number => (ep & 1 ? segEnd[ep >> 1] : segStart[ep >> 1]);
   const segLength = (s: number): number => {
-    const dx = slotX[segEnd[s]] - slotX[segStart[s]], dy = slotY[segEnd[s]] - slotY[segStart[s]];
+    const dx = slotX[segEnd[s]] - slotX[segStart[s]],
+      dy = slotY[segEnd[s]] - slotY[segStart[s]];
     return Math.sqrt(dx * dx + dy * dy);
   };
 

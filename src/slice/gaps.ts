@@ -20,7 +20,10 @@ export function closeOpenChains(
 ): Int32Array[] {
   const n = open.length;
   if (n === 0) return [];
-  const headX = new Float64Array(n), headY = new Float64Array(n), tailX = new Float64Array(n), tailY = new Float64Array(n);
+  const headX = new Float64Array(n),
+    headY = new Float64Array(n),
+    tailX = new Float64Array(n),
+    tailY = new Float64Array(n);
   for (let i = 0; i < n; i++) {
     const c = open[i];
     headX[i] = slotX[c[0]];
@@ -32,7 +35,8 @@ export function closeOpenChains(
   const cand: number[] = []; // triples: distance², i, j
   const gap2 = maxGapUm * maxGapUm;
   const consider = (i: number, j: number): void => {
-    const dx = headX[j] - tailX[i], dy = headY[j] - tailY[i];
+    const dx = headX[j] - tailX[i],
+      dy = headY[j] - tailY[i];
     const d2 = dx * dx + dy * dy;
     if (d2 <= gap2) cand.push(d2, i, j);
   };
@@ -49,7 +53,8 @@ export function closeOpenChains(
       else grid.set(key, [j]);
     }
     for (let i = 0; i < n; i++) {
-      const cx = Math.floor(tailX[i] / cell), cy = Math.floor(tailY[i] / cell);
+      const cx = Math.floor(tailX[i] / cell),
+        cy = Math.floor(tailY[i] / cell);
       for (let dx = -1; dx <= 1; dx++) {
         for (let dy = -1; dy <= 1; dy++) {
           const list = grid.get(`${cx + dx},${cy + dy}`);
@@ -64,7 +69,8 @@ export function closeOpenChains(
   const next = new Int32Array(n).fill(-1);
   const prev = new Int32Array(n).fill(-1);
   for (let k = 0; k < pairs.length; k++) {
-    const i = cand[3 * pairs[k] + 1], j = cand[3 * pairs[k] + 2];
+    const i = cand[3 * pairs[k] + 1],
+      j = cand[3 * pairs[k] + 2];
     if (next[i] === -1 && prev[j] === -1) {
       next[i] = j;
       prev[j] = i;
@@ -100,13 +106,16 @@ export function closeOpenChains(
 
 /** Whether an open run closed on itself is kept: it encloses solid, or its ends are close next to its length. */
 function selfClosable(ring: Int32Array, slotX: Float64Array, slotY: Float64Array): boolean {
-  let length = 0, twiceArea = 0;
+  let length = 0,
+    twiceArea = 0;
   for (let k = 0; k < ring.length; k++) {
-    const p = ring[k], q = ring[(k + 1) % ring.length];
+    const p = ring[k],
+      q = ring[(k + 1) % ring.length];
     twiceArea += slotX[p] * slotY[q] - slotX[q] * slotY[p];
     if (k + 1 < ring.length) length += Math.hypot(slotX[q] - slotX[p], slotY[q] - slotY[p]);
   }
   if (twiceArea > 0) return true;
-  const a = ring[0], b = ring[ring.length - 1];
+  const a = ring[0],
+    b = ring[ring.length - 1];
   return Math.hypot(slotX[a] - slotX[b], slotY[a] - slotY[b]) <= MAX_SELF_CLOSE_SHARE * length;
 }

@@ -47,16 +47,29 @@ export function prepareMesh(mesh: Mesh): PreparedMesh {
   const zq = new Float64Array(vertexCount);
   const finite = new Uint8Array(vertexCount);
   for (let v = 0; v < vertexCount; v++) {
-    const x = positions[3 * v], y = positions[3 * v + 1], z = positions[3 * v + 2];
+    const x = positions[3 * v],
+      y = positions[3 * v + 1],
+      z = positions[3 * v + 2];
     finite[v] = Number.isFinite(x) && Number.isFinite(y) && Number.isFinite(z) ? 1 : 0;
     zq[v] = finite[v] ? Math.round(z * HALF_UM_PER_MM) : 0;
   }
   const valid = new Uint8Array(triCount);
   for (let t = 0; t < triCount; t++) {
-    const a = indices[3 * t], b = indices[3 * t + 1], c = indices[3 * t + 2];
+    const a = indices[3 * t],
+      b = indices[3 * t + 1],
+      c = indices[3 * t + 2];
     valid[t] =
-      a < vertexCount && b < vertexCount && c < vertexCount && a !== b && b !== c && a !== c &&
-      finite[a] && finite[b] && finite[c] ? 1 : 0;
+      a < vertexCount &&
+      b < vertexCount &&
+      c < vertexCount &&
+      a !== b &&
+      b !== c &&
+      a !== c &&
+      finite[a] &&
+      finite[b] &&
+      finite[c]
+        ? 1
+        : 0;
   }
   const edges = buildEdgeTable(indices, vertexCount, valid);
   const shells = findShells(positions, indices, valid);
@@ -69,7 +82,8 @@ export function prepareMesh(mesh: Mesh): PreparedMesh {
 
 /** Number of planes ≤ x in an ascending array. */
 function countAtOrBelow(planes: Float64Array, x: number): number {
-  let lo = 0, hi = planes.length;
+  let lo = 0,
+    hi = planes.length;
   while (lo < hi) {
     const mid = (lo + hi) >>> 1;
     if (planes[mid] <= x) lo = mid + 1;
@@ -109,7 +123,9 @@ export class PlaneSweep {
     if (L > 0) {
       for (let t = 0; t < triCount; t++) {
         if (!triMode[t]) continue;
-        const z0 = zq[indices[3 * t]], z1 = zq[indices[3 * t + 1]], z2 = zq[indices[3 * t + 2]];
+        const z0 = zq[indices[3 * t]],
+          z1 = zq[indices[3 * t + 1]],
+          z2 = zq[indices[3 * t + 2]];
         const lo = z0 < z1 ? (z0 < z2 ? z0 : z2) : z1 < z2 ? z1 : z2;
         const hi = z0 > z1 ? (z0 > z2 ? z0 : z2) : z1 > z2 ? z1 : z2;
         // Crosses plane p iff lo < p ≤ hi.
@@ -158,8 +174,13 @@ export class PlaneSweep {
     this.#k = k + 1;
     const { positions, indices, zq, triMode } = this.#prep;
     const { triEdge, edgeA, edgeB } = this.#prep.edges;
-    const lastOf = this.#lastOf, bucketStart = this.#bucketStart, order = this.#order, active = this.#active;
-    const edgeStamp = this.#edgeStamp, edgeSlot = this.#edgeSlot, seg = this.#seg;
+    const lastOf = this.#lastOf,
+      bucketStart = this.#bucketStart,
+      order = this.#order,
+      active = this.#active;
+    const edgeStamp = this.#edgeStamp,
+      edgeSlot = this.#edgeSlot,
+      seg = this.#seg;
 
     // Drop triangles that ended below this plane, add those starting here.
     let n = 0;
@@ -186,7 +207,9 @@ export class PlaneSweep {
     for (let i = 0; i < n; i++) {
       const t = active[i];
       const b = 3 * t;
-      const above0 = zq[indices[b]] >= p, above1 = zq[indices[b + 1]] >= p, above2 = zq[indices[b + 2]] >= p;
+      const above0 = zq[indices[b]] >= p,
+        above1 = zq[indices[b + 1]] >= p,
+        above2 = zq[indices[b + 2]] >= p;
       // The lone vertex j (on its own side); edge j runs j→j+1, edge prev runs j−1→j.
       const j = above0 === above1 ? 2 : above0 === above2 ? 1 : 0;
       const eOut = triEdge[b + j];
@@ -209,17 +232,20 @@ export class PlaneSweep {
           s = slots++;
           edgeStamp[e] = stamp;
           edgeSlot[e] = s;
-          let va = edgeA[e], vb = edgeB[e];
+          let va = edgeA[e],
+            vb = edgeB[e];
           if (zq[va] > zq[vb]) {
             const tmp = va;
             va = vb;
             vb = tmp;
           }
-          const za = positions[3 * va + 2], zb = positions[3 * vb + 2];
+          const za = positions[3 * va + 2],
+            zb = positions[3 * vb + 2];
           let u = zb > za ? (pMm - za) / (zb - za) : 0.5;
           if (!(u >= 0)) u = 0;
           else if (u > 1) u = 1;
-          const xa = positions[3 * va], ya = positions[3 * va + 1];
+          const xa = positions[3 * va],
+            ya = positions[3 * va + 1];
           slotX[s] = Math.round((xa + (positions[3 * vb] - xa) * u) * 1000);
           slotY[s] = Math.round((ya + (positions[3 * vb + 1] - ya) * u) * 1000);
         }

@@ -40,7 +40,10 @@ export function planLayers(modelHeight: number, firstLayerHeight: number, layerH
   const firstUm = Math.round(firstLayerHeight * 1000);
   const stepUm = Math.round(layerHeight * 1000);
   if (firstUm < 1 || stepUm < 1) {
-    throw new StrataError('BAD_SETTING', `Layer heights must be at least 0.001 mm (got ${firstLayerHeight} and ${layerHeight}).`);
+    throw new StrataError(
+      'BAD_SETTING',
+      `Layer heights must be at least 0.001 mm (got ${firstLayerHeight} and ${layerHeight}).`,
+    );
   }
   if (!Number.isFinite(modelHeight)) throw new StrataError('BAD_MESH', 'Model height is not a finite number.');
   const topHalf = toHalfUm(modelHeight);
@@ -72,15 +75,21 @@ export function planLayers(modelHeight: number, firstLayerHeight: number, layerH
  * number ≥ 1), asked with the Z of its bottom (the top of the layer before) and that layer's height, both µm.
  * Z is summed in whole µm, so no drift: layer i's z is exactly the sum of the heights up to it.
  */
-export function planVaryingLayers(modelHeight: number, firstLayerHeight: number, nextUm: (bottomUm: number, prevUm: number, index: number) => number): LayerZ[] {
+export function planVaryingLayers(
+  modelHeight: number,
+  firstLayerHeight: number,
+  nextUm: (bottomUm: number, prevUm: number, index: number) => number,
+): LayerZ[] {
   if (!Number.isFinite(firstLayerHeight)) throw new StrataError('BAD_SETTING', 'Layer heights must be finite numbers.');
   const firstUm = Math.round(firstLayerHeight * 1000);
-  if (firstUm < 1) throw new StrataError('BAD_SETTING', `Layer heights must be at least 0.001 mm (got ${firstLayerHeight}).`);
+  if (firstUm < 1)
+    throw new StrataError('BAD_SETTING', `Layer heights must be at least 0.001 mm (got ${firstLayerHeight}).`);
   if (!Number.isFinite(modelHeight)) throw new StrataError('BAD_MESH', 'Model height is not a finite number.');
   const topHalf = toHalfUm(modelHeight);
   if (topHalf < firstUm) return [];
   const layers: LayerZ[] = [{ index: 0, z: firstUm / 1000, height: firstUm / 1000, sliceZ: firstUm / 2000 }];
-  let zUm = firstUm, prevUm = firstUm;
+  let zUm = firstUm,
+    prevUm = firstUm;
   for (;;) {
     const i = layers.length;
     const hUm = nextUm(zUm, prevUm, i);

@@ -11,11 +11,17 @@ import type { LayerSection } from './types.js';
 const MM2 = 1e6;
 
 function meshVolume(mesh: Mesh): number {
-  const p = mesh.positions, ix = mesh.indices;
+  const p = mesh.positions,
+    ix = mesh.indices;
   let v = 0;
   for (let t = 0; t < ix.length; t += 3) {
-    const a = 3 * ix[t], b = 3 * ix[t + 1], c = 3 * ix[t + 2];
-    v += p[a] * (p[b + 1] * p[c + 2] - p[b + 2] * p[c + 1]) + p[a + 1] * (p[b + 2] * p[c] - p[b] * p[c + 2]) + p[a + 2] * (p[b] * p[c + 1] - p[b + 1] * p[c]);
+    const a = 3 * ix[t],
+      b = 3 * ix[t + 1],
+      c = 3 * ix[t + 2];
+    v +=
+      p[a] * (p[b + 1] * p[c + 2] - p[b + 2] * p[c + 1]) +
+      p[a + 1] * (p[b + 2] * p[c] - p[b] * p[c + 2]) +
+      p[a + 2] * (p[b] * p[c + 1] - p[b + 1] * p[c]);
   }
   return v / 6;
 }
@@ -93,7 +99,11 @@ test('3DBenchy: sensible island counts, volume matches, fast', (t) => {
   t.diagnostic(`3DBenchy: ${mesh.indices.length / 3} triangles, 240 layers, best of 3: ${best.toFixed(0)} ms`);
   assertEveryLayerSolid(sections);
   // Hull (z 12): hull + chimney/cabin pieces; cabin (z 24): roof pillars and walls; top (z 46): the chimney.
-  for (const [k, lo, hi] of [[60, 1, 4], [120, 3, 8], [230, 1, 1]]) {
+  for (const [k, lo, hi] of [
+    [60, 1, 4],
+    [120, 3, 8],
+    [230, 1, 1],
+  ]) {
     const n = sections[k].islands.length;
     assert.ok(n >= lo && n <= hi, `layer ${k} (z ${sections[k].sliceZ}): ${n} islands`);
   }

@@ -17,8 +17,12 @@ export function simplifySlotRings(
 ): Polygon[] {
   const out: Polygon[] = [];
   const tol2 = toleranceUm > 0 ? toleranceUm * toleranceUm : 0;
-  let xs = new Float64Array(256), ys = new Float64Array(256), rx = new Float64Array(256), ry = new Float64Array(256);
-  let keep = new Uint8Array(256), stack = new Int32Array(512);
+  let xs = new Float64Array(256),
+    ys = new Float64Array(256),
+    rx = new Float64Array(256),
+    ry = new Float64Array(256);
+  let keep = new Uint8Array(256),
+    stack = new Int32Array(512);
   for (const r of rings) {
     if (xs.length < r.length + 1) {
       const cap = 2 * r.length + 1;
@@ -32,7 +36,8 @@ export function simplifySlotRings(
     // Dedupe (including the wrap-around).
     let n = 0;
     for (let i = 0; i < r.length; i++) {
-      const x = slotX[r[i]], y = slotY[r[i]];
+      const x = slotX[r[i]],
+        y = slotY[r[i]];
       if (n > 0 && xs[n - 1] === x && ys[n - 1] === y) continue;
       xs[n] = x;
       ys[n] = y;
@@ -59,9 +64,11 @@ export function simplifySlotRings(
       xs.set(rx.subarray(0, n));
       ys.set(ry.subarray(0, n));
     }
-    let far = 0, farD = -1;
+    let far = 0,
+      farD = -1;
     for (let i = 1; i < n; i++) {
-      const dx = xs[i] - xs[0], dy = ys[i] - ys[0];
+      const dx = xs[i] - xs[0],
+        dy = ys[i] - ys[0];
       const d = dx * dx + dy * dy;
       if (d > farD) {
         farD = d;
@@ -78,10 +85,15 @@ export function simplifySlotRings(
     stack[sp++] = far;
     stack[sp++] = n;
     while (sp > 0) {
-      const b = stack[--sp], a = stack[--sp];
+      const b = stack[--sp],
+        a = stack[--sp];
       if (b - a < 2) continue;
-      let best = -1, bestD = tol2;
-      const ax = xs[a], ay = ys[a], bx = xs[b], by = ys[b];
+      let best = -1,
+        bestD = tol2;
+      const ax = xs[a],
+        ay = ys[a],
+        bx = xs[b],
+        by = ys[b];
       for (let i = a + 1; i < b; i++) {
         const d = segmentDistance2(xs[i], ys[i], ax, ay, bx, by);
         if (d > bestD) {

@@ -17,7 +17,11 @@ function assertEveryLayer(sections: LayerSection[], islands: number, holes: numb
   assert.ok(sections.length > 0);
   for (const s of sections) {
     assert.equal(s.islands.length, islands, `layer ${s.index}: islands`);
-    assert.equal(s.islands.reduce((n, i) => n + i.holes.length, 0), holes, `layer ${s.index}: holes`);
+    assert.equal(
+      s.islands.reduce((n, i) => n + i.holes.length, 0),
+      holes,
+      `layer ${s.index}: holes`,
+    );
     assert.ok(Math.abs(area(s.islands) / MM2 - areaMm2) < 1e-3, `layer ${s.index}: area ${area(s.islands) / MM2}`);
     for (const i of s.islands) {
       assert.ok(ringArea(i.outer) > 0, 'outer rings are counter-clockwise');
@@ -61,10 +65,25 @@ test('a cavity shell (facing inwards) stays a hole, also when the whole model is
   const outer = box(0, 0, 0, 20, 20, 10);
   const cavity = inverted(box(5, 5, 2, 15, 15, 8));
   const sections = slice(merge(outer, cavity), 10);
-  assertEveryLayer(sections.filter((s) => s.sliceZ > 2 && s.sliceZ < 8), 1, 1, 300);
-  assertEveryLayer(sections.filter((s) => s.sliceZ < 2 || s.sliceZ > 8), 1, 0, 400);
+  assertEveryLayer(
+    sections.filter((s) => s.sliceZ > 2 && s.sliceZ < 8),
+    1,
+    1,
+    300,
+  );
+  assertEveryLayer(
+    sections.filter((s) => s.sliceZ < 2 || s.sliceZ > 8),
+    1,
+    0,
+    400,
+  );
   const flipped = slice(inverted(merge(outer, cavity)), 10);
-  assertEveryLayer(flipped.filter((s) => s.sliceZ > 2 && s.sliceZ < 8), 1, 1, 300);
+  assertEveryLayer(
+    flipped.filter((s) => s.sliceZ > 2 && s.sliceZ < 8),
+    1,
+    1,
+    300,
+  );
 });
 
 test('a body embedded in another (separate positive shells) unions', () => {
@@ -90,7 +109,12 @@ test('open meshes: missing triangles are bridged or closed, nothing throws', () 
   // A triangle soup (nothing welded): every segment is its own open chain, joined end to end.
   const soup = new Float32Array(mesh.indices.length * 3);
   mesh.indices.forEach((v, i) => soup.set(mesh.positions.subarray(3 * v, 3 * v + 3), 3 * i));
-  assertEveryLayer(slice({ positions: soup, indices: Uint32Array.from(soup.subarray(0, soup.length / 3), (_, i) => i) }, 10), 1, 0, 100);
+  assertEveryLayer(
+    slice({ positions: soup, indices: Uint32Array.from(soup.subarray(0, soup.length / 3), (_, i) => i) }, 10),
+    1,
+    0,
+    100,
+  );
 });
 
 test('degenerate input does not throw', () => {
@@ -100,23 +124,49 @@ test('degenerate input does not throw', () => {
   const extra = [0, 0, 1, n, 1, 2, 0, 1, 999, 0, 1, 0xffffffff, n + 1, 2, 3];
   const sections = slice({ positions, indices: Uint32Array.from([...mesh.indices, ...extra]) }, 10);
   assertEveryLayer(sections, 1, 0, 100);
-  const odd = sliceMesh(mesh, [{ index: 0, z: 5, height: 0.2, sliceZ: NaN }, { index: 1, z: 5, height: 0.2, sliceZ: 4.9 }], 10);
-  assert.deepEqual(odd.map((s) => s.islands.length), [0, 1]);
-  assert.deepEqual(sliceMesh({ positions: new Float32Array(0), indices: new Uint32Array(0) }, planLayers(1, 0.2, 0.2), 10).map((s) => s.islands.length), [0, 0, 0, 0, 0]);
+  const odd = sliceMesh(
+    mesh,
+    [
+      { index: 0, z: 5, height: 0.2, sliceZ: NaN },
+      { index: 1, z: 5, height: 0.2, sliceZ: 4.9 },
+    ],
+    10,
+  );
+  assert.deepEqual(
+    odd.map((s) => s.islands.length),
+    [0, 1],
+  );
+  assert.deepEqual(
+    sliceMesh({ positions: new Float32Array(0), indices: new Uint32Array(0) }, planLayers(1, 0.2, 0.2), 10).map(
+      (s) => s.islands.length,
+    ),
+    [0, 0, 0, 0, 0],
+  );
 });
 
 test('vertices exactly on a slice plane: z ≥ plane counts as above', () => {
   // An octahedron with its equator at z = 5 cut exactly there, and a cube cut exactly at its top.
-  const r = 4, c = 5;
-  const v = [[r, 0, c], [0, r, c], [-r, 0, c], [0, -r, c], [0, 0, c + r], [0, 0, c - r]];
+  const r = 4,
+    c = 5;
+  const v = [
+    [r, 0, c],
+    [0, r, c],
+    [-r, 0, c],
+    [0, -r, c],
+    [0, 0, c + r],
+    [0, 0, c - r],
+  ];
   const tris: number[] = [];
   for (let k = 0; k < 4; k++) {
-    const a = v[k], b = v[(k + 1) % 4];
+    const a = v[k],
+      b = v[(k + 1) % 4];
     tris.push(...a, ...b, ...v[4], ...b, ...a, ...v[5]);
   }
   const octa = { positions: Float32Array.from(v.flat()), indices: new Uint32Array(0) };
   const index = (x: number, y: number, z: number): number => v.findIndex((p) => p[0] === x && p[1] === y && p[2] === z);
-  octa.indices = Uint32Array.from({ length: tris.length / 3 }, (_, i) => index(tris[3 * i], tris[3 * i + 1], tris[3 * i + 2]));
+  octa.indices = Uint32Array.from({ length: tris.length / 3 }, (_, i) =>
+    index(tris[3 * i], tris[3 * i + 1], tris[3 * i + 2]),
+  );
   const at = (z: number) => [{ index: 0, z: z + 0.1, height: 0.2, sliceZ: z }];
   const [mid] = sliceMesh(octa, at(5), 0);
   assert.equal(mid.islands.length, 1);
@@ -130,21 +180,32 @@ test('vertices exactly on a slice plane: z ≥ plane counts as above', () => {
 test('layers are returned in the order given, with their own fields', () => {
   const layers = planLayers(10, 0.2, 0.2).reverse();
   const sections = sliceMesh(merge(box(0, 0, 0, 10, 10, 5), box(0, 0, 5, 5, 5, 10)), layers, 10);
-  assert.deepEqual(sections.map((s) => s.index), layers.map((l) => l.index));
+  assert.deepEqual(
+    sections.map((s) => s.index),
+    layers.map((l) => l.index),
+  );
   for (const s of sections) assert.equal(area(s.islands) / MM2, s.sliceZ < 5 ? 100 : 25);
 });
 
 test('simplification stays within tolerance and drops slivers', () => {
   // A 160-gon cylinder of radius 10, as an unwelded soup (320 open chains per layer): at 10 µm tolerance it keeps its outline within 10 µm.
-  const n = 160, R = 10, tris: number[] = [];
+  const n = 160,
+    R = 10,
+    tris: number[] = [];
   for (let k = 0; k < n; k++) {
-    const a0 = (2 * Math.PI * k) / n, a1 = (2 * Math.PI * (k + 1)) / n;
-    const p = [R * Math.cos(a0), R * Math.sin(a0)], q = [R * Math.cos(a1), R * Math.sin(a1)];
+    const a0 = (2 * Math.PI * k) / n,
+      a1 = (2 * Math.PI * (k + 1)) / n;
+    const p = [R * Math.cos(a0), R * Math.sin(a0)],
+      q = [R * Math.cos(a1), R * Math.sin(a1)];
     tris.push(p[0], p[1], 0, q[0], q[1], 0, q[0], q[1], 5, p[0], p[1], 0, q[0], q[1], 5, p[0], p[1], 5);
     tris.push(0, 0, 5, p[0], p[1], 5, q[0], q[1], 5, 0, 0, 0, q[0], q[1], 0, p[0], p[1], 0);
   }
   const soup = Float32Array.from(tris);
-  const cyl = sliceMesh({ positions: soup, indices: Uint32Array.from({ length: soup.length / 3 }, (_, i) => i) }, planLayers(5, 0.2, 0.2), 10);
+  const cyl = sliceMesh(
+    { positions: soup, indices: Uint32Array.from({ length: soup.length / 3 }, (_, i) => i) },
+    planLayers(5, 0.2, 0.2),
+    10,
+  );
   const expected = (n / 2) * R * R * Math.sin((2 * Math.PI) / n);
   for (const s of cyl) {
     assert.equal(s.islands.length, 1);

@@ -50,7 +50,13 @@ export function slicePrepared(
   const planeOf = layers.map((l) => (Number.isFinite(l.sliceZ) ? toHalfUm(l.sliceZ) : Infinity)); // ∞ cuts nothing
   order.sort((a, b) => planeOf[a] - planeOf[b]);
   const planes = Float64Array.from(order, (i) => planeOf[i]);
-  const out: LayerSection[] = layers.map((l) => ({ index: l.index, z: l.z, height: l.height, sliceZ: l.sliceZ, islands: [] }));
+  const out: LayerSection[] = layers.map((l) => ({
+    index: l.index,
+    z: l.z,
+    height: l.height,
+    sliceZ: l.sliceZ,
+    islands: [],
+  }));
   sweepLayers(prep, planes, (k, seg) => {
     out[order[k]].islands = segmentsToIslands(seg, maxGapUm, tolerance, minArea);
   });
@@ -59,7 +65,9 @@ export function slicePrepared(
 
 function segmentsToIslands(seg: LayerSegments, maxGapUm: number, toleranceUm: number, minAreaUm2: number) {
   const chains = chainSegments(seg);
-  const loops = chains.open.length ? chains.closed.concat(closeOpenChains(chains.open, seg.slotX, seg.slotY, maxGapUm)) : chains.closed;
+  const loops = chains.open.length
+    ? chains.closed.concat(closeOpenChains(chains.open, seg.slotX, seg.slotY, maxGapUm))
+    : chains.closed;
   const rings = simplifySlotRings(loops, seg.slotX, seg.slotY, toleranceUm);
   return ringsToIslands(rings, minAreaUm2);
 }
@@ -86,7 +94,10 @@ export class SectionStream {
     this.#maxGapUm = (options.maxGapMm ?? DEFAULT_MAX_GAP_MM) * 1000;
     this.#minArea = options.minAreaUm2 ?? DEFAULT_MIN_AREA_UM2;
     this.#toleranceUm = Number.isFinite(toleranceUm) && toleranceUm > 0 ? toleranceUm : 0;
-    this.#sweep = new PlaneSweep(prep, Float64Array.from(layers, (l) => (Number.isFinite(l.sliceZ) ? toHalfUm(l.sliceZ) : Infinity)));
+    this.#sweep = new PlaneSweep(
+      prep,
+      Float64Array.from(layers, (l) => (Number.isFinite(l.sliceZ) ? toHalfUm(l.sliceZ) : Infinity)),
+    );
   }
 
   /** The section of the k-th layer of the run. */
@@ -113,6 +124,11 @@ export class SectionStream {
  * Cut a mesh (mm) at each layer's sliceZ. Never throws on broken geometry: open, non-manifold and
  * flipped meshes are sliced as well as their loops allow.
  */
-export function sliceMesh(mesh: Mesh, layers: readonly LayerZ[], toleranceUm: number, options: SliceOptions = {}): LayerSection[] {
+export function sliceMesh(
+  mesh: Mesh,
+  layers: readonly LayerZ[],
+  toleranceUm: number,
+  options: SliceOptions = {},
+): LayerSection[] {
   return slicePrepared(prepareMesh(mesh), layers, toleranceUm, options);
 }

@@ -22,7 +22,9 @@ export function weldSoup(soup: Float32Array): Mesh {
   const indices = new Uint32Array(corners);
   let count = 0;
   for (let c = 0; c < corners; c++) {
-    const a = bits[3 * c], b = bits[3 * c + 1], d = bits[3 * c + 2];
+    const a = bits[3 * c],
+      b = bits[3 * c + 1],
+      d = bits[3 * c + 2];
     let h = (Math.imul(a, 0x9e3779b1) ^ Math.imul(b, 0x85ebca77) ^ Math.imul(d, 0xc2b2ae3d)) >>> 0;
     h = (h ^ (h >>> 16)) & mask;
     for (;;) {
@@ -121,7 +123,8 @@ export function frame(
   const o = ring(outer);
   const tris: Tri[] = [];
   for (let k = 0; k < 4; k++) {
-    const p = o[k], q = o[(k + 1) % 4];
+    const p = o[k],
+      q = o[(k + 1) % 4];
     tris.push(...wall(p[0], p[1], q[0], q[1], z0, z1));
   }
   if (!inner) {
@@ -134,10 +137,14 @@ export function frame(
   const h = ring(inner);
   for (let k = 0; k < 4; k++) {
     // The hole's wall faces into the hole: walk the inner ring clockwise.
-    const p = h[(k + 1) % 4], q = h[k];
+    const p = h[(k + 1) % 4],
+      q = h[k];
     tris.push(...wall(p[0], p[1], q[0], q[1], z0, z1));
     // Caps: trapezoid O_k, O_k+1, I_k+1, I_k (counter-clockwise seen from above).
-    const a = o[k], b = o[(k + 1) % 4], c = h[(k + 1) % 4], d = h[k];
+    const a = o[k],
+      b = o[(k + 1) % 4],
+      c = h[(k + 1) % 4],
+      d = h[k];
     tris.push([a[0], a[1], z1, b[0], b[1], z1, c[0], c[1], z1]);
     tris.push([a[0], a[1], z1, c[0], c[1], z1, d[0], d[1], z1]);
     tris.push([a[0], a[1], z0, c[0], c[1], z0, b[0], b[1], z0]);
@@ -148,14 +155,16 @@ export function frame(
 
 /** Several meshes as one (shells stay separate). */
 export function merge(...meshes: Mesh[]): Mesh {
-  let nv = 0, ni = 0;
+  let nv = 0,
+    ni = 0;
   for (const m of meshes) {
     nv += m.positions.length;
     ni += m.indices.length;
   }
   const positions = new Float32Array(nv);
   const indices = new Uint32Array(ni);
-  let pv = 0, pi = 0;
+  let pv = 0,
+    pi = 0;
   for (const m of meshes) {
     positions.set(m.positions, pv);
     for (let i = 0; i < m.indices.length; i++) indices[pi + i] = m.indices[i] + pv / 3;

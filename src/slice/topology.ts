@@ -54,7 +54,8 @@ export function buildEdgeTable(indices: Uint32Array, vertexCount: number, valid:
   const triEdge = new Int32Array(sides).fill(-1);
   let edgeCount = 0;
   for (let a = 0; a < vertexCount; a++) {
-    const first = bucketStart[a], end = bucketStart[a + 1];
+    const first = bucketStart[a],
+      end = bucketStart[a + 1];
     if (end - first > LARGE_FAN) {
       // A fan centre with very many neighbours: look them up in a map instead of scanning.
       const seen = new Map<number, number>();
@@ -162,11 +163,20 @@ export function findShells(positions: Float32Array, indices: Uint32Array, valid:
   if (shellCount === 0) return { triShell, shellCount, shellFlip };
 
   // Signed volume (about the mesh centre, to keep open shells' volumes meaningful), boxes, counts.
-  let cx = 0, cy = 0, cz = 0;
+  let cx = 0,
+    cy = 0,
+    cz = 0;
   {
-    let minX = Infinity, minY = Infinity, minZ = Infinity, maxX = -Infinity, maxY = -Infinity, maxZ = -Infinity;
+    let minX = Infinity,
+      minY = Infinity,
+      minZ = Infinity,
+      maxX = -Infinity,
+      maxY = -Infinity,
+      maxZ = -Infinity;
     for (let v = 0; v < vertexCount; v++) {
-      const x = positions[3 * v], y = positions[3 * v + 1], z = positions[3 * v + 2];
+      const x = positions[3 * v],
+        y = positions[3 * v + 1],
+        z = positions[3 * v + 2];
       if (!(x > -Infinity && x < Infinity && y > -Infinity && y < Infinity && z > -Infinity && z < Infinity)) continue;
       if (x < minX) minX = x;
       if (x > maxX) maxX = x;
@@ -191,10 +201,18 @@ export function findShells(positions: Float32Array, indices: Uint32Array, valid:
   for (let t = 0; t < triCount; t++) {
     const s = triShell[t];
     if (s < 0) continue;
-    const i0 = 3 * indices[3 * t], i1 = 3 * indices[3 * t + 1], i2 = 3 * indices[3 * t + 2];
-    const ax = positions[i0] - cx, ay = positions[i0 + 1] - cy, az = positions[i0 + 2] - cz;
-    const bx = positions[i1] - cx, by = positions[i1 + 1] - cy, bz = positions[i1 + 2] - cz;
-    const qx = positions[i2] - cx, qy = positions[i2 + 1] - cy, qz = positions[i2 + 2] - cz;
+    const i0 = 3 * indices[3 * t],
+      i1 = 3 * indices[3 * t + 1],
+      i2 = 3 * indices[3 * t + 2];
+    const ax = positions[i0] - cx,
+      ay = positions[i0 + 1] - cy,
+      az = positions[i0 + 2] - cz;
+    const bx = positions[i1] - cx,
+      by = positions[i1 + 1] - cy,
+      bz = positions[i1 + 2] - cz;
+    const qx = positions[i2] - cx,
+      qy = positions[i2 + 1] - cy,
+      qz = positions[i2 + 2] - cz;
     volume[s] += (ax * (by * qz - bz * qy) + ay * (bz * qx - bx * qz) + az * (bx * qy - by * qx)) / 6;
     count[s]++;
     growBox(box, 6 * s, ax, ay, az);
@@ -211,8 +229,12 @@ export function findShells(positions: Float32Array, indices: Uint32Array, valid:
   const boxVolume = (s: number): number =>
     (box[6 * s + 3] - box[6 * s]) * (box[6 * s + 4] - box[6 * s + 1]) * (box[6 * s + 5] - box[6 * s + 2]);
   const contains = (p: number, c: number): boolean =>
-    box[6 * p] <= box[6 * c] && box[6 * p + 1] <= box[6 * c + 1] && box[6 * p + 2] <= box[6 * c + 2] &&
-    box[6 * p + 3] >= box[6 * c + 3] && box[6 * p + 4] >= box[6 * c + 4] && box[6 * p + 5] >= box[6 * c + 5];
+    box[6 * p] <= box[6 * c] &&
+    box[6 * p + 1] <= box[6 * c + 1] &&
+    box[6 * p + 2] <= box[6 * c + 2] &&
+    box[6 * p + 3] >= box[6 * c + 3] &&
+    box[6 * p + 4] >= box[6 * c + 4] &&
+    box[6 * p + 5] >= box[6 * c + 5];
   // Largest boxes first, so a container is decided before what it contains.
   big.sort((p, q) => boxVolume(q) - boxVolume(p) || Math.abs(volume[q]) - Math.abs(volume[p]));
   for (let i = 0; i < big.length; i++) {

@@ -38,22 +38,36 @@ export interface HeightRange {
  * Plan the layers of a plate whose parts are these meshes (bed coordinates, bottom at z = 0) and whose top
  * is at `modelHeight`. With adaptive off and no ranges this is `planLayers`, layer for layer.
  */
-export function planPlateLayers(modelHeight: number, cfg: ZPlanSettings, meshes: readonly Mesh[], ranges: readonly HeightRange[] = [], profile: readonly number[] | null = null): LayerZ[] {
-  if (!cfg.adaptiveLayerHeight && ranges.length === 0 && !profile) return planLayers(modelHeight, cfg.firstLayerHeight, cfg.layerHeight);
+export function planPlateLayers(
+  modelHeight: number,
+  cfg: ZPlanSettings,
+  meshes: readonly Mesh[],
+  ranges: readonly HeightRange[] = [],
+  profile: readonly number[] | null = null,
+): LayerZ[] {
+  if (!cfg.adaptiveLayerHeight && ranges.length === 0 && !profile)
+    return planLayers(modelHeight, cfg.firstLayerHeight, cfg.layerHeight);
   const um = (mm: number) => Math.round(mm * 1000);
   const stepUm = um(cfg.layerHeight);
-  const minUm = um(cfg.minLayerHeightMm), maxUm = um(cfg.maxLayerHeightMm);
+  const minUm = um(cfg.minLayerHeightMm),
+    maxUm = um(cfg.maxLayerHeightMm);
   // a profile is the layers' own heights (PrusaSlicer's variable layer height): it stands for adaptive
-  const fromProfile = profile ? (bottomUm: number) => Math.min(maxUm, Math.max(minUm, Math.round(profileAt(profile, bottomUm / 1000) * 1000))) : null;
-  const adaptive = fromProfile ?? (cfg.adaptiveLayerHeight
-    ? adaptiveHeights(meshes, {
-        minUm,
-        maxUm,
-        cuspUm: cuspFor(cfg.minLayerHeightMm, cfg.maxLayerHeightMm, cfg.adaptiveLayerQuality) * 1000,
-        stepUm: Math.max(1, um(cfg.adaptiveLayerStep)),
-      })
-    : null);
-  const rs = ranges.map((r) => ({ from: um(r.fromZ), to: um(r.toZ), h: um(r.layerHeight) })).filter((r) => r.to > r.from && r.h >= 1);
+  const fromProfile = profile
+    ? (bottomUm: number) => Math.min(maxUm, Math.max(minUm, Math.round(profileAt(profile, bottomUm / 1000) * 1000)))
+    : null;
+  const adaptive =
+    fromProfile ??
+    (cfg.adaptiveLayerHeight
+      ? adaptiveHeights(meshes, {
+          minUm,
+          maxUm,
+          cuspUm: cuspFor(cfg.minLayerHeightMm, cfg.maxLayerHeightMm, cfg.adaptiveLayerQuality) * 1000,
+          stepUm: Math.max(1, um(cfg.adaptiveLayerStep)),
+        })
+      : null);
+  const rs = ranges
+    .map((r) => ({ from: um(r.fromZ), to: um(r.toZ), h: um(r.layerHeight) }))
+    .filter((r) => r.to > r.from && r.h >= 1);
   const bounds = [...new Set(rs.flatMap((r) => [r.from, r.to]))].sort((a, b) => a - b);
   return planVaryingLayers(modelHeight, cfg.firstLayerHeight, (bottom, prev) => {
     let h = -1;
@@ -75,7 +89,9 @@ export function profileAt(profile: readonly number[], z: number): number {
   for (let k = 1; k < n; k++) {
     const z1 = profile[2 * k];
     if (z < z1) {
-      const z0 = profile[2 * k - 2], h0 = profile[2 * k - 1], h1 = profile[2 * k + 1];
+      const z0 = profile[2 * k - 2],
+        h0 = profile[2 * k - 1],
+        h1 = profile[2 * k + 1];
       return h0 + ((h1 - h0) * (z - z0)) / (z1 - z0);
     }
   }

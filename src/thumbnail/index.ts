@@ -26,7 +26,8 @@ export function renderThumbnail(mesh: Mesh | readonly Mesh[], spec: ThumbnailSpe
     return { width, height, format, data: encodeJpeg(image, JPEG_QUALITY) };
   }
   const image = renderMesh(mesh, width, height);
-  const data = format === 'QOI' ? encodeQoi(image) : encodePng({ width, height, data: image.data, channels: 4, depth: 8 });
+  const data =
+    format === 'QOI' ? encodeQoi(image) : encodePng({ width, height, data: image.data, channels: 4, depth: 8 });
   return { width, height, format, data };
 }
 

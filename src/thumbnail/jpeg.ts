@@ -10,6 +10,9 @@ import type { RgbaImage } from './types.js';
 
 /** Encode an RGBA image as a baseline JPEG (JFIF) of the given quality, 1..100. */
 export function encodeJpeg(image: RgbaImage, quality = 90): Uint8Array {
-  const { data } = encode({ width: image.width, height: image.height, data: image.data }, Math.min(100, Math.max(1, Math.round(quality))));
+  const { data } = encode(
+    { width: image.width, height: image.height, data: image.data },
+    Math.min(100, Math.max(1, Math.round(quality))),
+  );
   return new Uint8Array(data.buffer, data.byteOffset, data.byteLength);
 }

@@ -33,10 +33,16 @@ export function encodeQoi(image: RgbaImage): Uint8Array {
   out[o++] = 4; // channels
   out[o++] = 0; // sRGB with linear alpha
   const seen = new Uint8Array(64 * 4);
-  let pr = 0, pg = 0, pb = 0, pa = 255;
+  let pr = 0,
+    pg = 0,
+    pb = 0,
+    pa = 255;
   let run = 0;
   for (let p = 0; p < pixels; p++) {
-    const r = data[p * 4]!, g = data[p * 4 + 1]!, b = data[p * 4 + 2]!, a = data[p * 4 + 3]!;
+    const r = data[p * 4]!,
+      g = data[p * 4 + 1]!,
+      b = data[p * 4 + 2]!,
+      a = data[p * 4 + 3]!;
     if (r === pr && g === pg && b === pb && a === pa) {
       run++;
       if (run === MAX_RUN || p === pixels - 1) {
@@ -95,13 +101,17 @@ export function encodeQoi(image: RgbaImage): Uint8Array {
 
 /** Decode a QOI file (for tests and tools): the inverse of encodeQoi. Throws on a malformed file. */
 export function decodeQoi(bytes: Uint8Array): RgbaImage {
-  if (bytes.length < 22 || bytes[0] !== 0x71 || bytes[1] !== 0x6f || bytes[2] !== 0x69 || bytes[3] !== 0x66) throw new Error('not a QOI file');
+  if (bytes.length < 22 || bytes[0] !== 0x71 || bytes[1] !== 0x6f || bytes[2] !== 0x69 || bytes[3] !== 0x66)
+    throw new Error('not a QOI file');
   const u32 = (i: number) => ((bytes[i]! << 24) | (bytes[i + 1]! << 16) | (bytes[i + 2]! << 8) | bytes[i + 3]!) >>> 0;
   const width = u32(4);
   const height = u32(8);
   const data = new Uint8Array(width * height * 4);
   const seen = new Uint8Array(64 * 4);
-  let r = 0, g = 0, b = 0, a = 255;
+  let r = 0,
+    g = 0,
+    b = 0,
+    a = 255;
   let i = 14;
   const end = bytes.length - 8;
   for (let p = 0; p < width * height; ) {
@@ -109,12 +119,20 @@ export function decodeQoi(bytes: Uint8Array): RgbaImage {
     const op = bytes[i++]!;
     let run = 1;
     if (op === OP_RGB) {
-      r = bytes[i++]!; g = bytes[i++]!; b = bytes[i++]!;
+      r = bytes[i++]!;
+      g = bytes[i++]!;
+      b = bytes[i++]!;
     } else if (op === OP_RGBA) {
-      r = bytes[i++]!; g = bytes[i++]!; b = bytes[i++]!; a = bytes[i++]!;
+      r = bytes[i++]!;
+      g = bytes[i++]!;
+      b = bytes[i++]!;
+      a = bytes[i++]!;
     } else if ((op & 0xc0) === OP_INDEX) {
       const h = (op & 63) * 4;
-      r = seen[h]!; g = seen[h + 1]!; b = seen[h + 2]!; a = seen[h + 3]!;
+      r = seen[h]!;
+      g = seen[h + 1]!;
+      b = seen[h + 2]!;
+      a = seen[h + 3]!;
     } else if ((op & 0xc0) === OP_DIFF) {
       r = (r + ((op >> 4) & 3) - 2) & 255;
       g = (g + ((op >> 2) & 3) - 2) & 255;
@@ -129,9 +147,15 @@ export function decodeQoi(bytes: Uint8Array): RgbaImage {
       run = (op & 63) + 1;
     }
     const h = ((r * 3 + g * 5 + b * 7 + a * 11) % 64) * 4;
-    seen[h] = r; seen[h + 1] = g; seen[h + 2] = b; seen[h + 3] = a;
+    seen[h] = r;
+    seen[h + 1] = g;
+    seen[h + 2] = b;
+    seen[h + 3] = a;
     for (let k = 0; k < run && p < width * height; k++, p++) {
-      data[p * 4] = r; data[p * 4 + 1] = g; data[p * 4 + 2] = b; data[p * 4 + 3] = a;
+      data[p * 4] = r;
+      data[p * 4 + 1] = g;
+      data[p * 4 + 2] = b;
+      data[p * 4 + 3] = a;
     }
   }
   return { width, height, data };

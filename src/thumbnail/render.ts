@@ -55,14 +55,16 @@ function joined(meshes: Mesh | readonly Mesh[]): Mesh {
   if (!Array.isArray(meshes)) return meshes as Mesh;
   const list = meshes as readonly Mesh[];
   if (list.length === 1) return list[0]!;
-  let nv = 0, ni = 0;
+  let nv = 0,
+    ni = 0;
   for (const m of list) {
     nv += m.positions.length;
     ni += m.indices.length;
   }
   const positions = new Float32Array(nv);
   const indices = new Uint32Array(ni);
-  let pv = 0, pi = 0;
+  let pv = 0,
+    pi = 0;
   for (const m of list) {
     positions.set(m.positions, pv);
     for (let k = 0; k < m.indices.length; k++) indices[pi + k] = m.indices[k]! + pv / 3;
@@ -73,7 +75,12 @@ function joined(meshes: Mesh | readonly Mesh[]): Mesh {
 }
 
 /** Render the mesh or meshes (mm, Z up) into a width × height RGBA image. Nothing to draw gives a transparent image. */
-export function renderMesh(meshes: Mesh | readonly Mesh[], width: number, height: number, opts: RenderOptions = {}): RgbaImage {
+export function renderMesh(
+  meshes: Mesh | readonly Mesh[],
+  width: number,
+  height: number,
+  opts: RenderOptions = {},
+): RgbaImage {
   const mesh = joined(meshes);
   const ss = width * height < 4096 ? 4 : 2;
   const W = width * ss;
@@ -86,9 +93,14 @@ export function renderMesh(meshes: Mesh | readonly Mesh[], width: number, height
   const sx = new Float64Array(nv);
   const sy = new Float64Array(nv);
   const sz = new Float64Array(nv);
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   for (let v = 0; v < nv; v++) {
-    const x = pos[v * 3]!, y = pos[v * 3 + 1]!, z = pos[v * 3 + 2]!;
+    const x = pos[v * 3]!,
+      y = pos[v * 3 + 1]!,
+      z = pos[v * 3 + 2]!;
     const px = x * right[0] + y * right[1] + z * right[2];
     const py = x * up[0] + y * up[1] + z * up[2];
     sx[v] = px;
@@ -133,11 +145,19 @@ function rasterize(
   const pos = mesh.positions;
   const idx = mesh.indices;
   for (let t = 0; t < idx.length; t += 3) {
-    const a = idx[t]!, b = idx[t + 1]!, c = idx[t + 2]!;
+    const a = idx[t]!,
+      b = idx[t + 1]!,
+      c = idx[t + 2]!;
     // face normal in world space, for the shading
-    const ux = pos[b * 3]! - pos[a * 3]!, uy = pos[b * 3 + 1]! - pos[a * 3 + 1]!, uz = pos[b * 3 + 2]! - pos[a * 3 + 2]!;
-    const vx = pos[c * 3]! - pos[a * 3]!, vy = pos[c * 3 + 1]! - pos[a * 3 + 1]!, vz = pos[c * 3 + 2]! - pos[a * 3 + 2]!;
-    let nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const ux = pos[b * 3]! - pos[a * 3]!,
+      uy = pos[b * 3 + 1]! - pos[a * 3 + 1]!,
+      uz = pos[b * 3 + 2]! - pos[a * 3 + 2]!;
+    const vx = pos[c * 3]! - pos[a * 3]!,
+      vy = pos[c * 3 + 1]! - pos[a * 3 + 1]!,
+      vz = pos[c * 3 + 2]! - pos[a * 3 + 2]!;
+    let nx = uy * vz - uz * vy,
+      ny = uz * vx - ux * vz,
+      nz = ux * vy - uy * vx;
     const nl = Math.hypot(nx, ny, nz);
     if (!(nl > 0)) continue;
     nx /= nl;
@@ -158,14 +178,21 @@ function rasterize(
     const g = Math.min(255, BASE_RGB[1] * light);
     const bl = Math.min(255, BASE_RGB[2] * light);
 
-    const x0 = sx[a]!, y0 = sy[a]!, x1 = sx[b]!, y1 = sy[b]!, x2 = sx[c]!, y2 = sy[c]!;
+    const x0 = sx[a]!,
+      y0 = sy[a]!,
+      x1 = sx[b]!,
+      y1 = sy[b]!,
+      x2 = sx[c]!,
+      y2 = sy[c]!;
     const area = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
     if (area === 0) continue;
     const minPx = Math.max(0, Math.floor(Math.min(x0, x1, x2)));
     const maxPx = Math.min(W - 1, Math.ceil(Math.max(x0, x1, x2)));
     const minPy = Math.max(0, Math.floor(Math.min(y0, y1, y2)));
     const maxPy = Math.min(H - 1, Math.ceil(Math.max(y0, y1, y2)));
-    const z0 = sz[a]!, z1 = sz[b]!, z2 = sz[c]!;
+    const z0 = sz[a]!,
+      z1 = sz[b]!,
+      z2 = sz[c]!;
     const inv = 1 / area;
     for (let py = minPy; py <= maxPy; py++) {
       const cy = py + 0.5;
@@ -203,7 +230,10 @@ function downsample(
   const samples = ss * ss;
   for (let y = 0; y < height; y++) {
     for (let x = 0; x < width; x++) {
-      let r = 0, g = 0, b = 0, n = 0;
+      let r = 0,
+        g = 0,
+        b = 0,
+        n = 0;
       for (let dy = 0; dy < ss; dy++) {
         for (let dx = 0; dx < ss; dx++) {
           const i = (y * ss + dy) * W + x * ss + dx;

@@ -22,7 +22,10 @@ function sphere(cx: number, cy: number, r: number, rings = 24, segments = 48): M
   }
   for (let i = 0; i < rings; i++) {
     for (let j = 0; j < segments; j++) {
-      const a = i * segments + j, b = i * segments + ((j + 1) % segments), c = a + segments, d = b + segments;
+      const a = i * segments + j,
+        b = i * segments + ((j + 1) % segments),
+        c = a + segments,
+        d = b + segments;
       idx.push(a, c, b, b, c, d);
     }
   }
@@ -31,18 +34,36 @@ function sphere(cx: number, cy: number, r: number, rings = 24, segments = 48): M
 
 /** An axis-aligned box from (x0,y0,0) to (x1,y1,z1). */
 function box(x0: number, y0: number, x1: number, y1: number, z1: number): Mesh {
-  const v = [[x0, y0, 0], [x1, y0, 0], [x1, y1, 0], [x0, y1, 0], [x0, y0, z1], [x1, y0, z1], [x1, y1, z1], [x0, y1, z1]].flat();
-  const f = [0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7];
+  const v = [
+    [x0, y0, 0],
+    [x1, y0, 0],
+    [x1, y1, 0],
+    [x0, y1, 0],
+    [x0, y0, z1],
+    [x1, y0, z1],
+    [x1, y1, z1],
+    [x0, y1, z1],
+  ].flat();
+  const f = [
+    0, 2, 1, 0, 3, 2, 4, 5, 6, 4, 6, 7, 0, 1, 5, 0, 5, 4, 1, 2, 6, 1, 6, 5, 2, 3, 7, 2, 7, 6, 3, 0, 4, 3, 4, 7,
+  ];
   return { positions: new Float32Array(v), indices: new Uint32Array(f) };
 }
 
 /** Opaque share and number of distinct grey levels among opaque pixels. */
-function coverage(data: Uint8Array | Uint8ClampedArray, channels = 4, background?: number[]): { share: number; shades: number } {
+function coverage(
+  data: Uint8Array | Uint8ClampedArray,
+  channels = 4,
+  background?: number[],
+): { share: number; shades: number } {
   let opaque = 0;
   const shades = new Set<number>();
   for (let i = 0; i < data.length; i += channels) {
     const isModel = background
-      ? Math.abs(data[i]! - background[0]!) + Math.abs(data[i + 1]! - background[1]!) + Math.abs(data[i + 2]! - background[2]!) > 30
+      ? Math.abs(data[i]! - background[0]!) +
+          Math.abs(data[i + 1]! - background[1]!) +
+          Math.abs(data[i + 2]! - background[2]!) >
+        30
       : data[i + 3]! === 255;
     if (!isModel) continue;
     opaque++;
@@ -52,7 +73,12 @@ function coverage(data: Uint8Array | Uint8ClampedArray, channels = 4, background
 }
 
 test('PNG thumbnails decode at the declared size, show the model and its shading', () => {
-  for (const [w, h] of [[16, 16], [48, 48], [300, 300], [313, 173]] as const) {
+  for (const [w, h] of [
+    [16, 16],
+    [48, 48],
+    [300, 300],
+    [313, 173],
+  ] as const) {
     const img = renderThumbnail(box(90, 90, 130, 110, 30), { width: w, height: h, format: 'PNG' });
     const png = decodePng(img.data);
     assert.equal(png.width, w);
@@ -71,11 +97,20 @@ test('a sphere is round and shaded from light to dark; the background is transpa
   assert.ok(c.shades >= 6, `smooth shading: ${c.shades} shades`);
   assert.equal(data[3], 0, 'corner pixel transparent');
   // roughly a disc: the opaque area is close to π/4 of its bounding square
-  let minX = width, maxX = 0, minY = height, maxY = 0, n = 0;
-  for (let y = 0; y < height; y++) for (let x = 0; x < width; x++) if (data[(y * width + x) * 4 + 3]! > 127) {
-    n++;
-    minX = Math.min(minX, x); maxX = Math.max(maxX, x); minY = Math.min(minY, y); maxY = Math.max(maxY, y);
-  }
+  let minX = width,
+    maxX = 0,
+    minY = height,
+    maxY = 0,
+    n = 0;
+  for (let y = 0; y < height; y++)
+    for (let x = 0; x < width; x++)
+      if (data[(y * width + x) * 4 + 3]! > 127) {
+        n++;
+        minX = Math.min(minX, x);
+        maxX = Math.max(maxX, x);
+        minY = Math.min(minY, y);
+        maxY = Math.max(maxY, y);
+      }
   const fill = n / ((maxX - minX + 1) * (maxY - minY + 1));
   assert.ok(Math.abs(fill - Math.PI / 4) < 0.05, `disc fill ${fill}`);
 });
@@ -96,7 +131,11 @@ test('QOI round-trips exactly, and QOI thumbnails decode at their size', () => {
 });
 
 test('JPG thumbnails are baseline JPEGs that decode at their size, close to the rendered image', () => {
-  for (const [w, h] of [[16, 16], [100, 60], [300, 300]] as const) {
+  for (const [w, h] of [
+    [16, 16],
+    [100, 60],
+    [300, 300],
+  ] as const) {
     const img = renderThumbnail(sphere(50, 50, 15), { width: w, height: h, format: 'JPG' });
     assert.deepEqual([...img.data.subarray(0, 2)], [0xff, 0xd8]);
     const decoded = jpeg.decode(img.data, { useTArray: true });
@@ -109,7 +148,8 @@ test('JPG thumbnails are baseline JPEGs that decode at their size, close to the 
   const src = renderMesh(sphere(0, 0, 10), 64, 64, { background: [38, 38, 38] });
   const out = jpeg.decode(encodeJpeg(src, 90), { useTArray: true });
   let err = 0;
-  for (let i = 0; i < src.data.length; i += 4) for (let k = 0; k < 3; k++) err += Math.abs(src.data[i + k]! - out.data[i + k]!);
+  for (let i = 0; i < src.data.length; i += 4)
+    for (let k = 0; k < 3; k++) err += Math.abs(src.data[i + k]! - out.data[i + k]!);
   assert.ok(err / (64 * 64 * 3) < 4, `mean error ${err / (64 * 64 * 3)}`);
 });
 
@@ -123,11 +163,23 @@ test('the thumbnails setting: sizes and formats, empty means none, bad items are
     { width: 100, height: 50, format: 'JPG' },
   ]);
   assert.equal(formatThumbnailSpecs(parseThumbnailSpecs('16x16/QOI,32x32')), '16x16/QOI,32x32/PNG');
-  assert.throws(() => parseThumbnailSpecs('16x16/BMP'), (e: unknown) => e instanceof StrataError && /16x16\/BMP/.test(e.message));
-  assert.throws(() => parseThumbnailSpecs('2000x20'), (e: unknown) => e instanceof StrataError && /1024/.test(e.message));
+  assert.throws(
+    () => parseThumbnailSpecs('16x16/BMP'),
+    (e: unknown) => e instanceof StrataError && /16x16\/BMP/.test(e.message),
+  );
+  assert.throws(
+    () => parseThumbnailSpecs('2000x20'),
+    (e: unknown) => e instanceof StrataError && /1024/.test(e.message),
+  );
   assert.throws(() => parseThumbnailSpecs('0x20'), StrataError);
   assert.equal(renderThumbnails(box(0, 0, 1, 1, 1), '').length, 0);
-  assert.deepEqual(renderThumbnails(box(0, 0, 1, 1, 1), '8x8,9x7/QOI').map((t) => [t.width, t.height, t.format]), [[8, 8, 'PNG'], [9, 7, 'QOI']]);
+  assert.deepEqual(
+    renderThumbnails(box(0, 0, 1, 1, 1), '8x8,9x7/QOI').map((t) => [t.width, t.height, t.format]),
+    [
+      [8, 8, 'PNG'],
+      [9, 7, 'QOI'],
+    ],
+  );
 });
 
 test('rendering is deterministic, and an empty mesh gives a blank image', () => {

@@ -18,6 +18,9 @@ for (const id of PATTERN_IDS) {
   const { plan } = await slicer.slicePlan(model);
   // lightning only prints under top surfaces: show a layer just below the cube's top skin
   const index = id === 'lightning' ? plan.layers.length - 6 : Math.floor(plan.layers.length / 2);
-  writeFileSync(out + `${id}.svg`, layerToSvg(plan.layers[index], { widthPx: 240, title: `${id}, layer ${index}` }) + '\n');
+  writeFileSync(
+    out + `${id}.svg`,
+    layerToSvg(plan.layers[index], { widthPx: 240, title: `${id}, layer ${index}` }) + '\n',
+  );
   process.stdout.write(`docs/patterns/${id}.svg\n`);
 }

@@ -18,7 +18,10 @@ interface State {
  * `clock` (ms) times each job for the pool's scheduling: the thread's CPU time where the host can
  * tell, so that a loaded machine does not look like a big job.
  */
-export function makeHandler(post: (msg: FromWorker) => void, clock: () => number = () => performance.now()): (msg: ToWorker) => void {
+export function makeHandler(
+  post: (msg: FromWorker) => void,
+  clock: () => number = () => performance.now(),
+): (msg: ToWorker) => void {
   let state: Promise<State> = Promise.reject(new Error('worker used before init'));
   state.catch(() => {});
   return (msg) => {
@@ -26,7 +29,12 @@ export function makeHandler(post: (msg: FromWorker) => void, clock: () => number
       const { meshes, setup, custom } = msg;
       // the shader compiler loads only when a custom infill needs it
       state = custom
-        ? import('../pipeline/custom-infill.js').then((m) => ({ meshes, setup, custom: m.customGenerator(custom, setup.configs[0]), held: new Map() }))
+        ? import('../pipeline/custom-infill.js').then((m) => ({
+            meshes,
+            setup,
+            custom: m.customGenerator(custom, setup.configs[0]),
+            held: new Map(),
+          }))
         : Promise.resolve({ meshes, setup, held: new Map() });
       state.catch(() => {});
       return;

@@ -16,7 +16,10 @@ if (isNode) {
     port.on('message', (m: ToWorker) => handle(m));
   }
 } else {
-  const scope = globalThis as unknown as { postMessage(m: unknown): void; onmessage: ((e: { data: ToWorker }) => void) | null };
+  const scope = globalThis as unknown as {
+    postMessage(m: unknown): void;
+    onmessage: ((e: { data: ToWorker }) => void) | null;
+  };
   listenFirst(scope, async () => (await import('./handler.js')).makeHandler((m: FromWorker) => scope.postMessage(m)));
 }
 

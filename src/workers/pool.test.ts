@@ -36,7 +36,10 @@ function fakeWorker(mode: Mode, msPerLayer?: number) {
       if (m.type === 'result' && msPerLayer !== undefined) m.ms = msPerLayer * (this.#layers.get(m.id) ?? 0);
       this.#emit('message', { data: structuredClone(m) });
     });
-    constructor(readonly url: URL, readonly options: { type: 'module' }) {
+    constructor(
+      readonly url: URL,
+      readonly options: { type: 'module' },
+    ) {
       if (mode === 'no-script') setTimeout(() => this.#emit('error', { preventDefault() {} }), 0);
     }
     #emit(type: string, e: WebWorkerEvent) {
@@ -51,7 +54,8 @@ function fakeWorker(mode: Mode, msPerLayer?: number) {
       const msg = structuredClone(m) as ToWorker;
       if (mode === 'no-script') return;
       if (msg.type === 'range' && ++this.#posted > 1) {
-        if (mode === 'throws') return this.#emit('error', { message: 'Uncaught RangeError: boom', filename: 'layer-worker.js', lineno: 3 });
+        if (mode === 'throws')
+          return this.#emit('error', { message: 'Uncaught RangeError: boom', filename: 'layer-worker.js', lineno: 3 });
         if (mode === 'messageerror') return this.#emit('messageerror', {});
         if (mode === 'unclonable') throw new DOMException('could not be cloned', 'DataCloneError');
       }
@@ -66,16 +70,41 @@ const root = fileURLToPath(new URL('../../', import.meta.url));
 const cfg = resolveConfig({});
 const model = prepareModel(readFileSync(root + 'examples/calibration-cube.stl'), cfg);
 const layers = planLayers(20, cfg.firstLayerHeight, cfg.layerHeight);
-const params = { density: 0.2, lineWidth: 400, nozzleDiameter: 400, angle: 45, centering: 'object' as const, origin: { x: 0, y: 0 }, connect: false };
-const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({ kind: 'layers', layers, from: Math.floor((k * layers.length) / 6), to: Math.floor(((k + 1) * layers.length) / 6), infillParams: [params], zOffset: 0, adhesion: true }));
+const params = {
+  density: 0.2,
+  lineWidth: 400,
+  nozzleDiameter: 400,
+  angle: 45,
+  centering: 'object' as const,
+  origin: { x: 0, y: 0 },
+  connect: false,
+};
+const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({
+  kind: 'layers',
+  layers,
+  from: Math.floor((k * layers.length) / 6),
+  to: Math.floor(((k + 1) * layers.length) / 6),
+  infillParams: [params],
+  zOffset: 0,
+  adhesion: true,
+}));
 const prepared = [prepareMesh(model.mesh)];
 const local = (j: RangeJob) => computeRange(prepared, plainSetup(cfg), j);
 const url = new URL('./layer-worker.js', import.meta.url);
 const pool = (mode: Mode, workers = 1, msPerLayer?: number) =>
-  createPool(workers, () => prepared, plainSetup(cfg), undefined, undefined, () => webWorkerPort(fakeWorker(mode, msPerLayer), url));
+  createPool(
+    workers,
+    () => prepared,
+    plainSetup(cfg),
+    undefined,
+    undefined,
+    () => webWorkerPort(fakeWorker(mode, msPerLayer), url),
+  );
 const tick = () => new Promise((r) => setTimeout(r, 5));
 
-test('through Web Workers, results come back in job order and equal the calling thread’s', { timeout: 20_000 }, async () => {
+test('through Web Workers, results come back in job order and equal the calling thread’s', {
+  timeout: 20_000,
+}, async () => {
   const p = await pool('ok', 2);
   let locally = 0;
   const results: RangeResult[] = [];
@@ -89,10 +118,15 @@ test('through Web Workers, results come back in job order and equal the calling 
   assert.deepEqual(byWorkers, results);
 });
 
-test('a worker whose script does not load fails the next run with a clear message, not a stall', { timeout: 20_000 }, async () => {
+test('a worker whose script does not load fails the next run with a clear message, not a stall', {
+  timeout: 20_000,
+}, async () => {
   const p = await pool('no-script');
   await tick(); // the error arrives between runs (as between the two passes of lightning infill)
-  await assert.rejects(p.run(jobs, { local }), /layer-worker\.js could not be started: the script did not load as a module worker/);
+  await assert.rejects(
+    p.run(jobs, { local }),
+    /layer-worker\.js could not be started: the script did not load as a module worker/,
+  );
   await p.close();
 });
 
@@ -104,7 +138,9 @@ test('a worker started early that fails before the pool listens still fails the 
   await p.close();
 });
 
-test('an uncaught error in a worker, an unreadable message or an unclonable job fails the run', { timeout: 20_000 }, async () => {
+test('an uncaught error in a worker, an unreadable message or an unclonable job fails the run', {
+  timeout: 20_000,
+}, async () => {
   const cases: Array<[Mode, RegExp]> = [
     ['throws', /layer worker failed: Uncaught RangeError: boom \(layer-worker\.js:3\)/],
     ['messageerror', /could not be read/],
@@ -117,13 +153,19 @@ test('an uncaught error in a worker, an unreadable message or an unclonable job 
   }
 });
 
-test('the calling thread computes ranges only while the work left would keep the workers busy long enough', { timeout: 20_000 }, async () => {
+test('the calling thread computes ranges only while the work left would keep the workers busy long enough', {
+  timeout: 20_000,
+}, async () => {
   // 6 jobs of ~3-4 layers; the worker holds 2 at once and its first job does not count
   const run = async (msPerLayer: number, helpAboveMs: number) => {
     const p = await pool('ok', 1, msPerLayer);
     const byCaller: number[] = [];
     const results: RangeResult[] = [];
-    await p.run(jobs, { local: (j) => (byCaller.push(jobs.indexOf(j)), local(j)), onResult: (id, r) => (results[id] = r), helpAboveMs });
+    await p.run(jobs, {
+      local: (j) => (byCaller.push(jobs.indexOf(j)), local(j)),
+      onResult: (id, r) => (results[id] = r),
+      helpAboveMs,
+    });
     await p.close();
     assert.deepEqual(results, jobs.map(local));
     return byCaller;
@@ -136,7 +178,9 @@ test('the calling thread computes ranges only while the work left would keep the
   assert.ok((await run(0, 0)).length > 0, 'helpAboveMs 0: from the start');
 });
 
-test('regions held where they were made: the held jobs placed on those workers give the model paths the calling thread makes in one go', { timeout: 20_000 }, async () => {
+test('regions held where they were made: the held jobs placed on those workers give the model paths the calling thread makes in one go', {
+  timeout: 20_000,
+}, async () => {
   const modelPaths = { infillParams: [params], zOffset: 0, adhesion: false };
   const regionJobs: RangeJob[] = jobs.map((j) => ({ kind: 'regions', layers, from: j.from, to: j.to, hold: true }));
   const p = await pool('ok', 2);
@@ -149,11 +193,20 @@ test('regions held where they were made: the held jobs placed on those workers g
   await p.run(held, { placement: where, onResult: (id, r, w) => ((paths[id] = r), assert.equal(w, where[id])) });
   // what a regions job with model paths gives on the calling thread
   const inOneGo = jobs.map((j) => local({ kind: 'regions', layers, from: j.from, to: j.to, modelPaths }));
-  assert.deepEqual(paths.map((r) => r.paths), inOneGo.map((r) => r.paths));
-  assert.deepEqual(outlines.map((r) => r.regions), inOneGo.map((r) => r.regions));
+  assert.deepEqual(
+    paths.map((r) => r.paths),
+    inOneGo.map((r) => r.paths),
+  );
+  assert.deepEqual(
+    outlines.map((r) => r.regions),
+    inOneGo.map((r) => r.regions),
+  );
   assert.ok(inOneGo.every((r) => r.paths.length === r.regions.length && r.paths.length > 0));
   // held regions are used once: asked again, or on the other worker, there are none
-  await assert.rejects(p.run(held.slice(0, 1), { placement: [where[0]] }), new RegExp(`no regions held for layers ${jobs[0].from}-${jobs[0].to}`));
+  await assert.rejects(
+    p.run(held.slice(0, 1), { placement: [where[0]] }),
+    new RegExp(`no regions held for layers ${jobs[0].from}-${jobs[0].to}`),
+  );
   await assert.rejects(p.run(held.slice(0, 1), { placement: [2] }), /names no worker/);
   await p.close();
 });

@@ -83,7 +83,6 @@ export interface LayerPool {
 /** Jobs each worker holds at once, so it never waits for the busy main thread to hand out the next. */
 const IN_FLIGHT = 2;
 
-
 /**
  * Start `size` workers now, so they load while the caller still prepares the model; hand them to
  * `createPool`, or to `releaseWorkers` if it turns out they are not needed.
@@ -104,7 +103,14 @@ export async function releaseWorkers(started: Promise<Port[]>): Promise<void> {
  * object) on this thread while they load (`prepare`: best in shared memory, see `sharePrepared`) and send
  * them to the workers with the settings.
  */
-export async function createPool(size: number, prepare: () => PreparedMesh[], setup: PrintSetup, custom?: CustomInfillSpec, started?: Promise<Port[]>, spawn: Spawn = defaultSpawn): Promise<LayerPool> {
+export async function createPool(
+  size: number,
+  prepare: () => PreparedMesh[],
+  setup: PrintSetup,
+  custom?: CustomInfillSpec,
+  started?: Promise<Port[]>,
+  spawn: Spawn = defaultSpawn,
+): Promise<LayerPool> {
   const ready = started ? await started : [];
   await Promise.all(ready.slice(size).map((p) => p.terminate()));
   const ports = [...ready.slice(0, size), ...(await startWorkers(Math.max(0, size - ready.length), spawn))];
@@ -137,7 +143,9 @@ export async function createPool(size: number, prepare: () => PreparedMesh[], se
           return reject(new Error('a placed job names no worker of this pool'));
         }
         // with a placement, each worker's own jobs, in order
-        const queues = placement ? ports.map((_, w) => jobs.map((_, id) => id).filter((id) => placement[id] === w)) : null;
+        const queues = placement
+          ? ports.map((_, w) => jobs.map((_, id) => id).filter((id) => placement[id] === w))
+          : null;
         if (placement) local = undefined;
         let finished = false;
         let helping = !!local && helpAboveMs <= 0;

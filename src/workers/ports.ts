@@ -64,7 +64,9 @@ export function webWorkerPort(Ctor: WebWorkerCtor, url: URL): Port {
   const w = new Ctor(url, { type: 'module' });
   const r = relay();
   w.addEventListener('message', (e) => r.message(e.data as FromWorker));
-  w.addEventListener('messageerror', () => r.fail(new Error('a layer worker message could not be read (messageerror)')));
+  w.addEventListener('messageerror', () =>
+    r.fail(new Error('a layer worker message could not be read (messageerror)')),
+  );
   w.addEventListener('error', (e) => {
     e.preventDefault?.();
     r.fail(webWorkerError(e, url));

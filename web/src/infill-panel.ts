@@ -22,7 +22,13 @@ export class InfillPanel {
   shipped: ShippedInfiller[] = [];
   #files = new Map<string, { shader?: string; image?: Uint8Array }>();
   #select = h('select', { id: 'custom-infill', 'aria-label': 'Custom infill' });
-  #fileInput = h('input', { id: 'infill-file', type: 'file', class: 'visually-hidden', accept: '.glsl,.frag,.txt,.png,image/png', 'aria-label': 'Load infill shader or image' });
+  #fileInput = h('input', {
+    id: 'infill-file',
+    type: 'file',
+    class: 'visually-hidden',
+    accept: '.glsl,.frag,.txt,.png,image/png',
+    'aria-label': 'Load infill shader or image',
+  });
   #preview = h('img', { alt: '', hidden: true });
   #params = h('div', { class: 'grid2' });
   #status = h('p', { class: 'muted small', 'aria-live': 'polite' });
@@ -37,8 +43,18 @@ export class InfillPanel {
     private invalid?: InvalidFields,
   ) {
     slot.append(
-      h('label', { class: 'field', for: 'custom-infill' }, h('span', {}, 'Custom infill (IceSL infiller, replaces the pattern)')),
-      h('div', { class: 'row' }, this.#select, h('label', { class: 'button small', for: 'infill-file' }, 'Load shader.glsl or cells.png'), this.#fileInput),
+      h(
+        'label',
+        { class: 'field', for: 'custom-infill' },
+        h('span', {}, 'Custom infill (IceSL infiller, replaces the pattern)'),
+      ),
+      h(
+        'div',
+        { class: 'row' },
+        this.#select,
+        h('label', { class: 'button small', for: 'infill-file' }, 'Load shader.glsl or cells.png'),
+        this.#fileInput,
+      ),
       h('div', { class: 'row' }, this.#preview, this.#status),
       this.#params,
       this.#error,
@@ -66,9 +82,16 @@ export class InfillPanel {
     const c = this.store.custom;
     this.#select.replaceChildren(
       h('option', { value: '' }, 'None: the pattern above'),
-      h('optgroup', { label: 'Shipped with Strata' }, ...this.shipped.map((s) => h('option', { value: `shipped:${s.name}` }, s.name))),
+      h(
+        'optgroup',
+        { label: 'Shipped with Strata' },
+        ...this.shipped.map((s) => h('option', { value: `shipped:${s.name}` }, s.name)),
+      ),
     );
-    if (c?.source === 'file') this.#select.append(h('optgroup', { label: 'Loaded' }, h('option', { value: `file:${c.name}` }, c.fileName ?? c.name)));
+    if (c?.source === 'file')
+      this.#select.append(
+        h('optgroup', { label: 'Loaded' }, h('option', { value: `file:${c.name}` }, c.fileName ?? c.name)),
+      );
     this.#select.value = c ? `${c.source}:${c.name}` : '';
   }
 
@@ -87,7 +110,8 @@ export class InfillPanel {
     if (!s) throw new Error(`no shipped infiller is called "${name}"`);
     const r = await fetch(new URL(`./infillers/${name}/${s.file}`, import.meta.url));
     if (!r.ok) throw new Error(`the infiller ${name} could not be fetched (HTTP ${r.status})`);
-    const files = s.file === 'shader.glsl' ? { shader: await r.text() } : { image: new Uint8Array(await r.arrayBuffer()) };
+    const files =
+      s.file === 'shader.glsl' ? { shader: await r.text() } : { image: new Uint8Array(await r.arrayBuffer()) };
     this.#files.set(name, files);
     return files;
   }
@@ -127,7 +151,10 @@ export class InfillPanel {
     this.#status.textContent = `Loading ${choice.fileName ?? choice.name}…`;
     let info: InfillerDescription;
     try {
-      const files = choice.source === 'shipped' ? await this.#shippedFiles(choice.name) : { shader: choice.shader, image: choice.image };
+      const files =
+        choice.source === 'shipped'
+          ? await this.#shippedFiles(choice.name)
+          : { shader: choice.shader, image: choice.image };
       info = await this.describe({ name: choice.name, ...files, params: choice.params });
     } catch (e) {
       if (ticket !== this.#describing) return;
@@ -189,7 +216,9 @@ export class InfillPanel {
         else choice.params[p.name] = v;
         this.store.changed();
       });
-      this.#params.append(h('label', { class: 'field', for: id, title: p.tooltip }, h('span', {}, p.name.replace(/^ui_/, '')), input));
+      this.#params.append(
+        h('label', { class: 'field', for: id, title: p.tooltip }, h('span', {}, p.name.replace(/^ui_/, '')), input),
+      );
     }
   }
 }

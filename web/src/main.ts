@@ -86,10 +86,19 @@ const ONE_AT_A_TIME: ReadonlySet<Topic> = new Set(['slice']);
  */
 function message(kind: 'error' | 'warning' | 'info', text: string, topic?: Topic): void {
   for (const old of ui.messages.querySelectorAll<HTMLElement>('.msg')) {
-    if ((topic && ONE_AT_A_TIME.has(topic) && old.dataset.topic === topic) || (old.dataset.kind === kind && old.dataset.text === text)) old.remove();
+    if (
+      (topic && ONE_AT_A_TIME.has(topic) && old.dataset.topic === topic) ||
+      (old.dataset.kind === kind && old.dataset.text === text)
+    )
+      old.remove();
   }
   const close = h('button', { type: 'button', class: 'close', 'aria-label': 'Dismiss' }, '×');
-  const el = h('div', { class: `msg ${kind}`, role: kind === 'error' ? 'alert' : 'status', 'data-kind': kind, 'data-topic': topic }, h('span', {}, text), close);
+  const el = h(
+    'div',
+    { class: `msg ${kind}`, role: kind === 'error' ? 'alert' : 'status', 'data-kind': kind, 'data-topic': topic },
+    h('span', {}, text),
+    close,
+  );
   el.dataset.text = text;
   close.addEventListener('click', () => el.remove());
   ui.messages.append(el);
@@ -165,7 +174,10 @@ try {
   viewer.setBed(plate.bed);
   viewer.setMode('model');
 } catch (e) {
-  message('error', `The 3D view cannot start (${errorText(e)}): this browser has WebGL turned off. Opening, slicing and downloading still work.`);
+  message(
+    'error',
+    `The 3D view cannot start (${errorText(e)}): this browser has WebGL turned off. Opening, slicing and downloading still work.`,
+  );
 }
 
 function setView(mode: 'model' | 'preview'): void {
@@ -191,7 +203,9 @@ const objectPanel = new ObjectPanel(byId('object-card'), {
   loadMesh: async (file) => {
     try {
       const bytes = await file.arrayBuffer();
-      const { model } = await loader.request<'loaded'>({ type: 'load', fileName: file.name, bytes, mesh: true }, [bytes]);
+      const { model } = await loader.request<'loaded'>({ type: 'load', fileName: file.name, bytes, mesh: true }, [
+        bytes,
+      ]);
       for (const w of model!.warnings) message('warning', `${file.name}: ${w}`);
       return model;
     } catch (e) {
@@ -237,7 +251,8 @@ function viewObjects(): void {
 function frameObjects(): void {
   if (!viewer || plate.items.length === 0) return;
   viewer.home();
-  const min = new Vector3(Infinity, Infinity, 0), max = new Vector3(-Infinity, -Infinity, 0);
+  const min = new Vector3(Infinity, Infinity, 0),
+    max = new Vector3(-Infinity, -Infinity, 0);
   for (const it of plate.items) {
     const [sx, sy, sz] = plate.size(it);
     min.min(new Vector3(it.center[0] - sx / 2, it.center[1] - sy / 2, 0));
@@ -281,7 +296,14 @@ function refreshObjects(light = false): void {
         'button',
         { type: 'button', 'aria-current': String(it === plate.selected) },
         h('span', { class: 'name', title: it.fileName }, it.name),
-        own ? h('span', { class: 'own', title: own }, h('span', { 'aria-hidden': 'true' }, '●'), h('span', { class: 'visually-hidden' }, own)) : null,
+        own
+          ? h(
+              'span',
+              { class: 'own', title: own },
+              h('span', { 'aria-hidden': 'true' }, '●'),
+              h('span', { class: 'visually-hidden' }, own),
+            )
+          : null,
         h('span', { class: 'meta' }, `${mm1(sx)}×${mm1(sy)}×${mm1(sz)} mm`),
       );
       b.addEventListener('click', () => {
@@ -296,8 +318,14 @@ function refreshObjects(light = false): void {
 
 /** What an object has of its own, in words ('' for nothing). */
 function ownText(it: PlateItem): string {
-  const n = Object.keys(it.settings).length, v = it.volumes.length, r = it.layerRanges.length;
-  const words = [n && `${n} setting${n === 1 ? '' : 's'}`, v && `${v} volume${v === 1 ? '' : 's'}`, r && `${r} layer range${r === 1 ? '' : 's'}`].filter(Boolean);
+  const n = Object.keys(it.settings).length,
+    v = it.volumes.length,
+    r = it.layerRanges.length;
+  const words = [
+    n && `${n} setting${n === 1 ? '' : 's'}`,
+    v && `${v} volume${v === 1 ? '' : 's'}`,
+    r && `${r} layer range${r === 1 ? '' : 's'}`,
+  ].filter(Boolean);
   return words.length ? `Its own: ${words.join(', ')}` : '';
 }
 
@@ -318,14 +346,23 @@ function onObjectEdit(fn: (it: PlateItem) => void): () => void {
 function numberFrom(input: HTMLInputElement, min: number, max: number): number | null {
   const v = Number(input.value);
   if (input.value.trim() === '' || !Number.isFinite(v) || v < min || v > max) {
-    message('error', `${input.closest('label')?.querySelector('span')?.textContent?.trim() ?? 'Value'} must be a number from ${min} to ${max}`);
+    message(
+      'error',
+      `${input.closest('label')?.querySelector('span')?.textContent?.trim() ?? 'Value'} must be a number from ${min} to ${max}`,
+    );
     return null;
   }
   return v;
 }
 
-ui.objX.addEventListener('change', onObjectEdit((it) => (it.center = [numberFrom(ui.objX, -5000, 5000) ?? it.center[0], it.center[1]])));
-ui.objY.addEventListener('change', onObjectEdit((it) => (it.center = [it.center[0], numberFrom(ui.objY, -5000, 5000) ?? it.center[1]])));
+ui.objX.addEventListener(
+  'change',
+  onObjectEdit((it) => (it.center = [numberFrom(ui.objX, -5000, 5000) ?? it.center[0], it.center[1]])),
+);
+ui.objY.addEventListener(
+  'change',
+  onObjectEdit((it) => (it.center = [it.center[0], numberFrom(ui.objY, -5000, 5000) ?? it.center[1]])),
+);
 ui.objScale.addEventListener(
   'change',
   onObjectEdit((it) => {
@@ -344,9 +381,18 @@ ui.objTurn.addEventListener(
     plate.relinear(it);
   }),
 );
-ui.rotX.addEventListener('click', onObjectEdit((it) => plate.rotate(it, 'x', 90)));
-ui.rotY.addEventListener('click', onObjectEdit((it) => plate.rotate(it, 'y', 90)));
-ui.resetObj.addEventListener('click', onObjectEdit((it) => plate.reset(it)));
+ui.rotX.addEventListener(
+  'click',
+  onObjectEdit((it) => plate.rotate(it, 'x', 90)),
+);
+ui.rotY.addEventListener(
+  'click',
+  onObjectEdit((it) => plate.rotate(it, 'y', 90)),
+);
+ui.resetObj.addEventListener(
+  'click',
+  onObjectEdit((it) => plate.reset(it)),
+);
 ui.removeObj.addEventListener('click', () => {
   const it = selectedOrNull();
   if (!it) return;
@@ -401,7 +447,9 @@ async function openFiles(files: readonly File[]): Promise<void> {
     try {
       const bytes = await file.arrayBuffer();
       const copy = bytes.slice(0);
-      const { model, project } = await loader.request<'loaded'>({ type: 'load', fileName: file.name, bytes: copy }, [copy]);
+      const { model, project } = await loader.request<'loaded'>({ type: 'load', fileName: file.name, bytes: copy }, [
+        copy,
+      ]);
       const first = plate.items.length === 0;
       for (const el of earlier) el.remove();
       if (project) {
@@ -429,7 +477,10 @@ async function openFiles(files: readonly File[]): Promise<void> {
 async function openProject(fileName: string, p: LoadedProject): Promise<void> {
   if (p.printSettings) {
     try {
-      store.fromJson(p.printSettings, infill.shipped.map((s) => s.name));
+      store.fromJson(
+        p.printSettings,
+        infill.shipped.map((s) => s.name),
+      );
       await infill.init();
       message('info', `Print settings from ${fileName}`);
     } catch (e) {
@@ -442,7 +493,14 @@ async function openProject(fileName: string, p: LoadedProject): Promise<void> {
     if (o.layerHeightProfile) it.layerHeightProfile = o.layerHeightProfile;
     objectPanel.adopt(
       it,
-      o.volumes.map((v) => ({ kind: v.kind, name: v.name, shape: 'mesh' as const, ...boxOf(v.mesh), source: v.mesh, settings: { ...v.settings } })),
+      o.volumes.map((v) => ({
+        kind: v.kind,
+        name: v.name,
+        shape: 'mesh' as const,
+        ...boxOf(v.mesh),
+        source: v.mesh,
+        settings: { ...v.settings },
+      })),
       o.layerRanges.map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: { ...r.settings } })),
     );
     for (const w of o.model.warnings) message('warning', `${it.name}: ${w}`);
@@ -461,9 +519,15 @@ ui.saveProject.addEventListener('click', async () => {
   const printSettings = store.toJson();
   for (const k of PLACEMENT_KEYS) delete printSettings[k];
   try {
-    const { bytes } = await loader.request<'saved'>({ type: 'save', items: plate.sliceItems(), options: store.options(), printSettings });
+    const { bytes } = await loader.request<'saved'>({
+      type: 'save',
+      items: plate.sliceItems(),
+      options: store.options(),
+      printSettings,
+    });
     saveFile(`${plate.items[0].name}.3mf`, bytes, 'model/3mf');
-    if (store.custom?.source === 'file') message('info', `The loaded infiller ${store.custom.fileName ?? store.custom.name} is not part of the project.`);
+    if (store.custom?.source === 'file')
+      message('info', `The loaded infiller ${store.custom.fileName ?? store.custom.name} is not part of the project.`);
   } catch (e) {
     message('error', `Saving the project failed: ${errorText(e)}`);
   }
@@ -524,7 +588,12 @@ const panel = buildSettingsPanel(byId('settings'), byId<HTMLInputElement>('setti
 });
 invalidFields.onChange(() => updateSliceButton());
 store.onChange(panel.refresh);
-const infill = new InfillPanel(panel.infillSlot, store, async (spec) => (await loader.request<'infiller'>({ type: 'infiller', spec })).info, invalidFields);
+const infill = new InfillPanel(
+  panel.infillSlot,
+  store,
+  async (spec) => (await loader.request<'infiller'>({ type: 'infiller', spec })).info,
+  invalidFields,
+);
 void infill.init();
 
 let settingsError: string | null = null;
@@ -546,7 +615,11 @@ store.onChange(() => {
 
 ui.exportSettings.addEventListener('click', () => {
   saveFile('strata-settings.json', JSON.stringify(store.toJson(), null, 2) + '\n', 'application/json');
-  if (store.custom?.source === 'file') message('info', `The loaded infiller ${store.custom.fileName ?? store.custom.name} is not part of the settings file: give it to strata slice with --infill-shader or --infill-image.`);
+  if (store.custom?.source === 'file')
+    message(
+      'info',
+      `The loaded infiller ${store.custom.fileName ?? store.custom.name} is not part of the settings file: give it to strata slice with --infill-shader or --infill-image.`,
+    );
 });
 ui.importSettings.addEventListener('change', async () => {
   const file = ui.importSettings.files?.[0];
@@ -560,7 +633,10 @@ ui.importSettings.addEventListener('change', async () => {
     return;
   }
   try {
-    store.fromJson(obj, infill.shipped.map((s) => s.name));
+    store.fromJson(
+      obj,
+      infill.shipped.map((s) => s.name),
+    );
     panel.clearInvalid();
     await infill.init();
     message('info', `Settings from ${file.name}`);
@@ -592,7 +668,9 @@ function updateSliceButton(): void {
   ui.slice.disabled = slicing || plate.items.length === 0 || settingsError !== null;
   ui.saveProject.disabled = plate.items.length === 0;
   const bad = invalidFields.first();
-  ui.slice.title = settingsError ?? (plate.items.length === 0 ? 'Open a model first' : bad ? `A setting is not valid: ${bad.why}` : '');
+  ui.slice.title =
+    settingsError ??
+    (plate.items.length === 0 ? 'Open a model first' : bad ? `A setting is not valid: ${bad.why}` : '');
   ui.download.title = bad && result ? `A setting is not valid: ${bad.why}` : '';
 }
 
@@ -610,7 +688,11 @@ function refusedForInvalidField(what: string): boolean {
   return true;
 }
 
-const STAGE_WORDS: Readonly<Record<string, string>> = { slicing: 'Slicing', planning: 'Planning', writing: 'Writing G-code' };
+const STAGE_WORDS: Readonly<Record<string, string>> = {
+  slicing: 'Slicing',
+  planning: 'Planning',
+  writing: 'Writing G-code',
+};
 
 function setSlicing(on: boolean): void {
   slicing = on;
@@ -695,7 +777,10 @@ ui.download.addEventListener('click', () => {
   if (!result || refusedForInvalidField('Not downloaded')) return;
   saveFile(result.name, result.gcode, 'text/x-gcode');
 });
-setupSendPanel({ after: ui.download, current: () => (result && !refusedForInvalidField('Not sent') ? { name: result.name, gcode: result.gcode } : null) });
+setupSendPanel({
+  after: ui.download,
+  current: () => (result && !refusedForInvalidField('Not sent') ? { name: result.name, gcode: result.gcode } : null),
+});
 
 // the page is ready: tests and people can start
 refreshObjects();

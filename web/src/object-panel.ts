@@ -16,7 +16,16 @@ import type { Plate, PlateItem } from './plate.js';
 import type { LoadedModel } from './protocol.js';
 import { buildSettingsPanel, type InvalidFields, type PanelSource, type SettingsPanel } from './settings-panel.js';
 import type { Overrides, SettingsStore } from './settings.js';
-import { boxOf, KIND_INFO, SHAPE_LABELS, VOLUME_KINDS, type PlateRange, type PlateVolume, type VolumeKind, type VolumeShape } from './volumes.js';
+import {
+  boxOf,
+  KIND_INFO,
+  SHAPE_LABELS,
+  VOLUME_KINDS,
+  type PlateRange,
+  type PlateVolume,
+  type VolumeKind,
+  type VolumeShape,
+} from './volumes.js';
 
 /** Settings an object may have of its own, and those a modifier or a layer range may. */
 const OBJECT_KEYS = SETTING_KEYS.filter((k) => SETTING_SCOPE[k] === 'object' || SETTING_SCOPE[k] === 'region');
@@ -58,13 +67,32 @@ export class ObjectPanel {
   #settings = h('div', { class: 'settings' });
   #filter = h('input', { type: 'search', placeholder: 'Find a setting', 'aria-label': 'Find an object setting' });
   #note = h('p', { class: 'muted small' });
-  #kind = h('select', { 'aria-label': 'Volume type' }, ...VOLUME_KINDS.map((k) => h('option', { value: k }, KIND_INFO[k].label)));
-  #shape = h('select', { 'aria-label': 'Volume shape' }, h('option', { value: 'box' }, 'Box'), h('option', { value: 'cylinder' }, 'Cylinder'), h('option', { value: 'mesh' }, 'Mesh file…'));
-  #file = h('input', { type: 'file', class: 'visually-hidden', accept: '.stl,.obj,.3mf', 'aria-label': 'Volume mesh file', tabindex: -1 });
+  #kind = h(
+    'select',
+    { 'aria-label': 'Volume type' },
+    ...VOLUME_KINDS.map((k) => h('option', { value: k }, KIND_INFO[k].label)),
+  );
+  #shape = h(
+    'select',
+    { 'aria-label': 'Volume shape' },
+    h('option', { value: 'box' }, 'Box'),
+    h('option', { value: 'cylinder' }, 'Cylinder'),
+    h('option', { value: 'mesh' }, 'Mesh file…'),
+  );
+  #file = h('input', {
+    type: 'file',
+    class: 'visually-hidden',
+    accept: '.stl,.obj,.3mf',
+    'aria-label': 'Volume mesh file',
+    tabindex: -1,
+  });
   #panel: SettingsPanel | null = null;
   #shown = '';
 
-  constructor(card: HTMLElement, private host: ObjectPanelHost) {
+  constructor(
+    card: HTMLElement,
+    private host: ObjectPanelHost,
+  ) {
     this.#card = card;
     this.#title = h('span', { class: 'object-name' });
     const addVolume = h('button', { type: 'button', class: 'button small' }, 'Add volume');
@@ -117,7 +145,9 @@ export class ObjectPanel {
 
   /** Delete the volume or layer range being edited (the Delete key); false when the object's own settings are. */
   deleteSelected(): boolean {
-    const it = this.#item, v = this.#volume(), r = this.#range();
+    const it = this.#item,
+      v = this.#volume(),
+      r = this.#range();
     if (!it || (!v && !r)) return false;
     if (v) it.volumes = it.volumes.filter((x) => x !== v);
     if (r) it.layerRanges = it.layerRanges.filter((x) => x !== r);
@@ -152,18 +182,44 @@ export class ObjectPanel {
     const it = this.#item!;
     const count = (o: Overrides) => Object.keys(o).length;
     const entry = (target: PartTarget, current: boolean, swatch: string | null, name: string, meta: string) => {
-      const b = h('button', { type: 'button', 'aria-current': String(current) }, swatch ? h('span', { class: 'swatch', style: `background:${swatch}` }) : null, h('span', { class: 'name' }, name), h('span', { class: 'meta' }, meta));
+      const b = h(
+        'button',
+        { type: 'button', 'aria-current': String(current) },
+        swatch ? h('span', { class: 'swatch', style: `background:${swatch}` }) : null,
+        h('span', { class: 'name' }, name),
+        h('span', { class: 'meta' }, meta),
+      );
       b.addEventListener('click', () => this.#choose(target));
       return h('li', {}, b);
     };
     const settingsMeta = (n: number) => (n ? `${n} setting${n === 1 ? '' : 's'}` : '');
     const t = this.target;
     this.#list.replaceChildren(
-      entry({ kind: 'object' }, t.kind === 'object', null, 'Object', settingsMeta(count(it.settings)) || 'as the print'),
-      ...it.volumes.map((v) =>
-        entry({ kind: 'volume', id: v.id }, t.kind === 'volume' && t.id === v.id, KIND_INFO[v.kind].colour, v.name, [SHAPE_LABELS[v.shape], settingsMeta(count(v.settings))].filter(Boolean).join(', ')),
+      entry(
+        { kind: 'object' },
+        t.kind === 'object',
+        null,
+        'Object',
+        settingsMeta(count(it.settings)) || 'as the print',
       ),
-      ...it.layerRanges.map((r) => entry({ kind: 'range', id: r.id }, t.kind === 'range' && t.id === r.id, null, `Layers ${mm1(r.fromZ)}–${mm1(r.toZ)} mm`, settingsMeta(count(r.settings)))),
+      ...it.volumes.map((v) =>
+        entry(
+          { kind: 'volume', id: v.id },
+          t.kind === 'volume' && t.id === v.id,
+          KIND_INFO[v.kind].colour,
+          v.name,
+          [SHAPE_LABELS[v.shape], settingsMeta(count(v.settings))].filter(Boolean).join(', '),
+        ),
+      ),
+      ...it.layerRanges.map((r) =>
+        entry(
+          { kind: 'range', id: r.id },
+          t.kind === 'range' && t.id === r.id,
+          null,
+          `Layers ${mm1(r.fromZ)}–${mm1(r.toZ)} mm`,
+          settingsMeta(count(r.settings)),
+        ),
+      ),
     );
   }
 
@@ -174,7 +230,8 @@ export class ObjectPanel {
    */
   #renderEditor(): void {
     const it = this.#item!;
-    const v = this.#volume(), r = this.#range();
+    const v = this.#volume(),
+      r = this.#range();
     const shown = `${it.id}:${this.target.kind}:${v?.id ?? r?.id ?? ''}`;
     if (shown === this.#shown) {
       this.#panel?.refresh();
@@ -189,12 +246,26 @@ export class ObjectPanel {
     this.#settings.replaceChildren();
     this.#panel = null;
     // a new search box for the new list (the panel listens to the one it is given)
-    const filter = h('input', { type: 'search', placeholder: 'Find a setting', 'aria-label': 'Find an object setting' });
+    const filter = h('input', {
+      type: 'search',
+      placeholder: 'Find a setting',
+      'aria-label': 'Find an object setting',
+    });
     this.#filter.replaceWith(filter);
     this.#filter = filter;
-    const source = v ? (v.kind === 'modifier' ? this.#source(it, 'modifier', v) : null) : r ? this.#source(it, 'layer range', r) : this.#source(it, 'object', null);
+    const source = v
+      ? v.kind === 'modifier'
+        ? this.#source(it, 'modifier', v)
+        : null
+      : r
+        ? this.#source(it, 'layer range', r)
+        : this.#source(it, 'object', null);
     this.#filter.hidden = !source;
-    this.#note.textContent = v ? KIND_INFO[v.kind].help + (v.kind === 'modifier' ? ' Its settings (those that may vary inside an object):' : '') : r ? 'Settings for the layers whose height lies in the range (those that may vary inside an object):' : 'Settings for this object only, over the print’s (unchanged ones show what it inherits):';
+    this.#note.textContent = v
+      ? KIND_INFO[v.kind].help + (v.kind === 'modifier' ? ' Its settings (those that may vary inside an object):' : '')
+      : r
+        ? 'Settings for the layers whose height lies in the range (those that may vary inside an object):'
+        : 'Settings for this object only, over the print’s (unchanged ones show what it inherits):';
     if (!source) return;
     const suffix = v ? '(modifier)' : r ? '(layer range)' : '(object)';
     const panel = buildSettingsPanel(this.#settings, this.#filter, source, {
@@ -208,8 +279,22 @@ export class ObjectPanel {
   }
 
   /** A number field with a visible label (its accessible name) that calls `set` with valid numbers. */
-  #numberField(label: string, unit: string, value: number, min: number, max: number, set: (v: number) => void): HTMLElement {
-    const input = h('input', { type: 'number', step: 'any', inputmode: 'decimal', min, max, value: String(round3(value)) });
+  #numberField(
+    label: string,
+    unit: string,
+    value: number,
+    min: number,
+    max: number,
+    set: (v: number) => void,
+  ): HTMLElement {
+    const input = h('input', {
+      type: 'number',
+      step: 'any',
+      inputmode: 'decimal',
+      min,
+      max,
+      value: String(round3(value)),
+    });
     input.addEventListener('change', () => {
       const n = Number(input.value);
       if (input.value.trim() === '' || !Number.isFinite(n) || n < min || n > max) {
@@ -243,14 +328,34 @@ export class ObjectPanel {
       this.host.changed('volumes');
     };
     this.#editor.replaceChildren(
-      h('div', { class: 'row' }, h('span', { class: 'swatch', style: `background:${KIND_INFO[v.kind].colour}` }), h('strong', {}, `${KIND_INFO[v.kind].label}, ${SHAPE_LABELS[v.shape]}`)),
+      h(
+        'div',
+        { class: 'row' },
+        h('span', { class: 'swatch', style: `background:${KIND_INFO[v.kind].colour}` }),
+        h('strong', {}, `${KIND_INFO[v.kind].label}, ${SHAPE_LABELS[v.shape]}`),
+      ),
       h('label', { class: 'field' }, h('span', {}, 'Name'), name),
-      h('p', { class: 'muted small' }, 'Centre from the object’s centre (X, Y) and bottom (Z), in its own axes; it turns, scales and moves with the object.'),
+      h(
+        'p',
+        { class: 'muted small' },
+        'Centre from the object’s centre (X, Y) and bottom (Z), in its own axes; it turns, scales and moves with the object.',
+      ),
       h(
         'div',
         { class: 'grid3' },
-        ...axes.map((a, k) => this.#numberField(`Centre ${a}`, 'mm', v.centre[k] - o[k], -10000, 10000, (n) => ((v.centre[k] = o[k] + n), moved()))),
-        ...axes.map((a, k) => this.#numberField(`Size ${a}`, 'mm', v.size[k], MIN_SIZE, 10000, (n) => ((v.size[k] = n), moved()))),
+        ...axes.map((a, k) =>
+          this.#numberField(
+            `Centre ${a}`,
+            'mm',
+            v.centre[k] - o[k],
+            -10000,
+            10000,
+            (n) => ((v.centre[k] = o[k] + n), moved()),
+          ),
+        ),
+        ...axes.map((a, k) =>
+          this.#numberField(`Size ${a}`, 'mm', v.size[k], MIN_SIZE, 10000, (n) => ((v.size[k] = n), moved())),
+        ),
       ),
       h('div', { class: 'row' }, del),
     );
@@ -263,10 +368,13 @@ export class ObjectPanel {
       this.#choose({ kind: 'object' }, 'volumes');
     });
     const edited = (k: 'fromZ' | 'toZ') => (n: number) => {
-      const from = k === 'fromZ' ? n : r.fromZ, to = k === 'toZ' ? n : r.toZ;
+      const from = k === 'fromZ' ? n : r.fromZ,
+        to = k === 'toZ' ? n : r.toZ;
       const other = it.layerRanges.find((o) => o !== r && o.fromZ < to && from < o.toZ);
       if (from >= to || other) {
-        const why = other ? `it would overlap the range ${mm1(other.fromZ)}–${mm1(other.toZ)} mm` : 'it must start below where it ends';
+        const why = other
+          ? `it would overlap the range ${mm1(other.fromZ)}–${mm1(other.toZ)} mm`
+          : 'it must start below where it ends';
         this.host.message('error', `Layers ${from}–${to} mm: ${why}`);
         this.#rangeEditor(it, r);
         return;
@@ -278,7 +386,12 @@ export class ObjectPanel {
     };
     this.#editor.replaceChildren(
       h('p', { class: 'muted small' }, 'Heights above the bed, mm: the layers from the first to below the second.'),
-      h('div', { class: 'grid2' }, this.#numberField('From Z', 'mm', r.fromZ, 0, 10000, edited('fromZ')), this.#numberField('To Z', 'mm', r.toZ, 0, 10000, edited('toZ'))),
+      h(
+        'div',
+        { class: 'grid2' },
+        this.#numberField('From Z', 'mm', r.fromZ, 0, 10000, edited('fromZ')),
+        this.#numberField('To Z', 'mm', r.toZ, 0, 10000, edited('toZ')),
+      ),
       h('div', { class: 'row' }, del),
     );
   }
@@ -310,7 +423,9 @@ export class ObjectPanel {
         const inherited = { ...print, ...(part ? it.settings : {}) };
         try {
           const table = new ConfigTable(store.options(), print);
-          const layers: Array<{ settings: Overrides; use: ScopeUse; where: string }> = [{ settings: it.settings, use: 'object', where: `object "${it.name}"` }];
+          const layers: Array<{ settings: Overrides; use: ScopeUse; where: string }> = [
+            { settings: it.settings, use: 'object', where: `object "${it.name}"` },
+          ];
           if (part) layers.push({ settings: part.settings, use, where: where() });
           const id = table.resolve(layers);
           return { values: { ...table.configs[id], ...(part ? it.settings : {}), ...own }, problem: null };
@@ -352,7 +467,11 @@ export class ObjectPanel {
     if (!it) return;
     const o = this.host.plate.origin(it);
     const b = this.host.plate.modelBox(it);
-    const size = [0, 1, 2].map((k) => round3(Math.max(MIN_SIZE, (b.max[k] - b.min[k]) / 2))) as [number, number, number];
+    const size = [0, 1, 2].map((k) => round3(Math.max(MIN_SIZE, (b.max[k] - b.min[k]) / 2))) as [
+      number,
+      number,
+      number,
+    ];
     const centre: [number, number, number] = [o[0], o[1], o[2] + round3((b.max[2] - b.min[2]) / 2)];
     this.#add(it, { kind, shape, name: this.#nameFor(it, kind), centre, size });
   }
@@ -373,7 +492,9 @@ export class ObjectPanel {
     const source = { positions: model.vertices, indices: model.indices };
     const box = boxOf(source);
     const b = this.host.plate.modelBox(it);
-    const meets = [0, 1, 2].every((k) => box.centre[k] + box.size[k] / 2 >= b.min[k] && box.centre[k] - box.size[k] / 2 <= b.max[k]);
+    const meets = [0, 1, 2].every(
+      (k) => box.centre[k] + box.size[k] / 2 >= b.min[k] && box.centre[k] - box.size[k] / 2 <= b.max[k],
+    );
     const centre = meets ? box.centre : ([0, 1, 2].map((k) => (b.min[k] + b.max[k]) / 2) as [number, number, number]);
     const size = box.size.map((s) => Math.max(MIN_SIZE, s)) as [number, number, number];
     const base = file.name.replace(/\.[^.]*$/, '');

@@ -4,8 +4,24 @@
  * they stand. An object alone that the user has not moved stands where `strata slice` would put it, and
  * is sliced as read, so the G-code is the CLI's.
  */
-import { ARRANGE_GAP_MM, arrange, findSpot, footprintsOverlap, type Bed, type PlacedFootprint } from '../../src/mesh/arrange.js';
-import { IDENTITY_LINEAR, axisRotation, linearBounds, mul3, placementAffine, rotationBetween, type Box, type Placement } from '../../src/mesh/placement.js';
+import {
+  ARRANGE_GAP_MM,
+  arrange,
+  findSpot,
+  footprintsOverlap,
+  type Bed,
+  type PlacedFootprint,
+} from '../../src/mesh/arrange.js';
+import {
+  IDENTITY_LINEAR,
+  axisRotation,
+  linearBounds,
+  mul3,
+  placementAffine,
+  rotationBetween,
+  type Box,
+  type Placement,
+} from '../../src/mesh/placement.js';
 import type { Config } from '../../src/settings/resolve.js';
 import { mm1 } from './format.js';
 import type { LoadedModel, SliceItem, SliceVolume } from './protocol.js';
@@ -52,7 +68,14 @@ export interface BedShape {
 
 export function bedShape(cfg: Config): BedShape {
   const gap = cfg.sequentialPrinting ? Math.max(ARRANGE_GAP_MM, cfg.extruderClearanceRadius) : ARRANGE_GAP_MM;
-  return { width: cfg.buildPlateWidth, depth: cfg.buildPlateLength, height: cfg.buildVolumeHeight, originAtCenter: cfg.originAtCenter, centre: cfg.center, gap };
+  return {
+    width: cfg.buildPlateWidth,
+    depth: cfg.buildPlateLength,
+    height: cfg.buildVolumeHeight,
+    originAtCenter: cfg.originAtCenter,
+    centre: cfg.center,
+    gap,
+  };
 }
 
 export function bedCentre(b: BedShape): [number, number] {
@@ -114,7 +137,13 @@ export class Plate {
     else if (this.items.length === 0) it.center = this.defaultCentre(it);
     else {
       const size = this.#footprint(it);
-      it.center = findSpot(size, this.items.map((o) => this.#footprint(o)), this.#bedRect(), this.bed.gap) ?? bedCentre(this.bed);
+      it.center =
+        findSpot(
+          size,
+          this.items.map((o) => this.#footprint(o)),
+          this.#bedRect(),
+          this.bed.gap,
+        ) ?? bedCentre(this.bed);
     }
     this.items.push(it);
     this.selected = it;
@@ -129,7 +158,8 @@ export class Plate {
 
   /** A lone, unturned, unscaled object goes back to where the CLI would put it. */
   #toDefaultIfUntouched(it: PlateItem): void {
-    if (it.bytes && it.scale === 1 && it.turnZ === 0 && it.rotation.every((v, i) => v === IDENTITY_LINEAR[i])) it.center = this.defaultCentre(it);
+    if (it.bytes && it.scale === 1 && it.turnZ === 0 && it.rotation.every((v, i) => v === IDENTITY_LINEAR[i]))
+      it.center = this.defaultCentre(it);
   }
 
   /** Every object re-placed without overlap (one alone goes where the CLI puts it). */
@@ -139,7 +169,11 @@ export class Plate {
       it.center = this.isUntransformed(it) ? this.defaultCentre(it) : bedCentre(this.bed);
       return;
     }
-    const centres = arrange(this.items.map((it) => this.#footprint(it)), this.#bedRect(), this.bed.gap);
+    const centres = arrange(
+      this.items.map((it) => this.#footprint(it)),
+      this.#bedRect(),
+      this.bed.gap,
+    );
     this.items.forEach((it, i) => (it.center = centres[i]));
   }
 
@@ -157,7 +191,13 @@ export class Plate {
   /** Stands exactly where and as `strata slice` would put it: sliced from the file as read. */
   isDefault(it: PlateItem): boolean {
     const d = this.defaultCentre(it);
-    return this.items.length === 1 && it.bytes !== null && this.isUntransformed(it) && it.center[0] === d[0] && it.center[1] === d[1];
+    return (
+      this.items.length === 1 &&
+      it.bytes !== null &&
+      this.isUntransformed(it) &&
+      it.center[0] === d[0] &&
+      it.center[1] === d[1]
+    );
   }
 
   /** Rotation, scale or "lay on face" changed: bounds follow, the footprint centre stays. */
@@ -175,7 +215,13 @@ export class Plate {
     const r = it.rotation;
     const n = [0, 1, 2].map((i) => r[i * 3] * normal[0] + r[i * 3 + 1] * normal[1] + r[i * 3 + 2] * normal[2]);
     const len = Math.hypot(n[0], n[1], n[2]) || 1;
-    it.rotation = mul3(rotationBetween(n.map((v) => v / len), [0, 0, -1]), it.rotation);
+    it.rotation = mul3(
+      rotationBetween(
+        n.map((v) => v / len),
+        [0, 0, -1],
+      ),
+      it.rotation,
+    );
     this.relinear(it);
   }
 
@@ -205,11 +251,22 @@ export class Plate {
     const out: string[] = [];
     const [sx, sy, sz] = this.size(it);
     const [x0, y0] = this.bed.originAtCenter ? [-this.bed.width / 2, -this.bed.depth / 2] : [0, 0];
-    const minX = it.center[0] - sx / 2, maxX = it.center[0] + sx / 2, minY = it.center[1] - sy / 2, maxY = it.center[1] + sy / 2;
-    if (sx > this.bed.width + FIT_MM || sy > this.bed.depth + FIT_MM) out.push(`${mm1(sx)} × ${mm1(sy)} mm is larger than the ${this.bed.width} × ${this.bed.depth} mm bed`);
-    else if (minX < x0 - FIT_MM || maxX > x0 + this.bed.width + FIT_MM || minY < y0 - FIT_MM || maxY > y0 + this.bed.depth + FIT_MM) out.push('reaches off the bed');
+    const minX = it.center[0] - sx / 2,
+      maxX = it.center[0] + sx / 2,
+      minY = it.center[1] - sy / 2,
+      maxY = it.center[1] + sy / 2;
+    if (sx > this.bed.width + FIT_MM || sy > this.bed.depth + FIT_MM)
+      out.push(`${mm1(sx)} × ${mm1(sy)} mm is larger than the ${this.bed.width} × ${this.bed.depth} mm bed`);
+    else if (
+      minX < x0 - FIT_MM ||
+      maxX > x0 + this.bed.width + FIT_MM ||
+      minY < y0 - FIT_MM ||
+      maxY > y0 + this.bed.depth + FIT_MM
+    )
+      out.push('reaches off the bed');
     if (sz > this.bed.height + FIT_MM) out.push(`${mm1(sz)} mm tall, the printer reaches ${this.bed.height} mm`);
-    for (const o of this.items) if (o !== it && footprintsOverlap(this.#footprint(it), this.#footprint(o))) out.push(`overlaps ${o.name}`);
+    for (const o of this.items)
+      if (o !== it && footprintsOverlap(this.#footprint(it), this.#footprint(o))) out.push(`overlaps ${o.name}`);
     return out;
   }
 

@@ -63,7 +63,10 @@ export class PreviewPanel {
   #hidden = new Set<number>();
   #refine: ReturnType<typeof setTimeout> | null = null;
 
-  constructor(private view: ToolpathView, private host: PreviewHost) {
+  constructor(
+    private view: ToolpathView,
+    private host: PreviewHost,
+  ) {
     this.#top.addEventListener('input', () => this.#dragged(() => this.#layers('top')));
     this.#bottom.addEventListener('input', () => this.#dragged(() => this.#layers('bottom')));
     this.#move.addEventListener('input', () => this.#dragged(() => this.#moves()));
@@ -94,7 +97,13 @@ export class PreviewPanel {
         this.view.setFeatureVisible(i, !this.#hidden.has(i));
         const swatch = h('span', { class: 'swatch' });
         swatch.style.background = FEATURE_COLOURS[f];
-        return [h('li', {}, h('label', {}, box, swatch, legendName(i), h('span', { class: 'len' }, length(a.featureLengthMm[i]))))];
+        return [
+          h(
+            'li',
+            {},
+            h('label', {}, box, swatch, legendName(i), h('span', { class: 'len' }, length(a.featureLengthMm[i]))),
+          ),
+        ];
       }),
     );
     this.view.setData(a);
@@ -151,7 +160,10 @@ export class PreviewPanel {
     this.#rail.style.setProperty('--hi', String(n > 1 ? top / (n - 1) : 1));
     this.view.setRange(bottom, top);
     const z = (i: number) => `Z ${a.layerZ[i].toFixed(2)} mm`;
-    const text = n === 0 ? 'No layers' : `Layer ${top + 1} of ${n} · ${z(top)}${bottom > 0 && bottom < top ? ` (from layer ${bottom + 1})` : ''}`;
+    const text =
+      n === 0
+        ? 'No layers'
+        : `Layer ${top + 1} of ${n} · ${z(top)}${bottom > 0 && bottom < top ? ` (from layer ${bottom + 1})` : ''}`;
     this.#label.textContent = text;
     this.#topLabel.textContent = String(top + 1);
     this.#bottomLabel.textContent = String(bottom + 1);
@@ -193,7 +205,13 @@ export class PreviewPanel {
     bar.style.background = `linear-gradient(to right, ${RAMP.join(', ')})`;
     this.#scale.replaceChildren(
       bar,
-      h('div', { class: 'scale-ticks' }, h('span', {}, write(range.min)), h('span', {}, write((range.min + range.max) / 2)), h('span', {}, write(range.max))),
+      h(
+        'div',
+        { class: 'scale-ticks' },
+        h('span', {}, write(range.min)),
+        h('span', {}, write((range.min + range.max) / 2)),
+        h('span', {}, write(range.max)),
+      ),
     );
   }
 }

@@ -75,19 +75,42 @@ export interface SendPanelOptions {
 
 export function setupSendPanel(o: SendPanelOptions): void {
   const saved = load();
-  const open = h('button', { id: 'send', class: 'button', type: 'button', disabled: o.after.disabled }, 'Send to printer');
+  const open = h(
+    'button',
+    { id: 'send', class: 'button', type: 'button', disabled: o.after.disabled },
+    'Send to printer',
+  );
   o.after.insertAdjacentElement('afterend', open);
   // enabled and disabled with Download
-  new MutationObserver(() => (open.disabled = o.after.disabled)).observe(o.after, { attributes: true, attributeFilter: ['disabled'] });
+  new MutationObserver(() => (open.disabled = o.after.disabled)).observe(o.after, {
+    attributes: true,
+    attributeFilter: ['disabled'],
+  });
 
   const kinds = (['octoprint', 'moonraker', 'usb'] as const).map((k) =>
-    h('label', { class: 'send-kind' }, h('input', { type: 'radio', name: 'send-kind', value: k, checked: saved.kind === k }), k === 'usb' ? ' USB (Marlin)' : ` ${HOST_NAMES[k]}`),
+    h(
+      'label',
+      { class: 'send-kind' },
+      h('input', { type: 'radio', name: 'send-kind', value: k, checked: saved.kind === k }),
+      k === 'usb' ? ' USB (Marlin)' : ` ${HOST_NAMES[k]}`,
+    ),
   );
-  const url = h('input', { id: 'send-url', type: 'text', inputmode: 'url', placeholder: 'http://octopi.local', value: saved.url, autocomplete: 'url' });
+  const url = h('input', {
+    id: 'send-url',
+    type: 'text',
+    inputmode: 'url',
+    placeholder: 'http://octopi.local',
+    value: saved.url,
+    autocomplete: 'url',
+  });
   const key = h('input', { id: 'send-key', type: 'password', value: saved.apiKey ?? '', autocomplete: 'off' });
   const remember = h('input', { id: 'send-remember', type: 'checkbox', checked: saved.rememberKey });
   const print = h('input', { id: 'send-print', type: 'checkbox', checked: saved.print });
-  const baud = h('select', { id: 'send-baud' }, ...BAUDS.map((b) => h('option', { value: b, selected: b === saved.baud }, String(b))));
+  const baud = h(
+    'select',
+    { id: 'send-baud' },
+    ...BAUDS.map((b) => h('option', { value: b, selected: b === saved.baud }, String(b))),
+  );
   const progress = h('progress', { id: 'send-progress', max: 1, value: 0, hidden: true });
   const status = h('p', { id: 'send-status', role: 'status' });
   const go = h('button', { class: 'button primary', type: 'button' }, 'Send');
@@ -102,9 +125,23 @@ export function setupSendPanel(o: SendPanelOptions): void {
     h('label', { for: 'send-key' }, 'API key'),
     key,
     h('label', { class: 'send-check' }, remember, ' remember the key on this computer'),
-    h('p', { class: 'send-note' }, "The host must allow this page's origin (CORS): OctoPrint's Settings › API › Allow Cross Origin Resource Sharing, Moonraker's [authorization] cors_domains. A page on https:// cannot reach an http:// host."),
+    h(
+      'p',
+      { class: 'send-note' },
+      "The host must allow this page's origin (CORS): OctoPrint's Settings › API › Allow Cross Origin Resource Sharing, Moonraker's [authorization] cors_domains. A page on https:// cannot reach an http:// host.",
+    ),
   );
-  const usbFields = h('div', { class: 'send-usb' }, h('label', { for: 'send-baud' }, 'Baud rate'), baud, h('p', { class: 'send-note' }, 'Through Web Serial (Chrome, Edge, Opera): pick the printer when asked. Keep this page open until the print ends.'));
+  const usbFields = h(
+    'div',
+    { class: 'send-usb' },
+    h('label', { for: 'send-baud' }, 'Baud rate'),
+    baud,
+    h(
+      'p',
+      { class: 'send-note' },
+      'Through Web Serial (Chrome, Edge, Opera): pick the printer when asked. Keep this page open until the print ends.',
+    ),
+  );
   const dialog = h(
     'dialog',
     { id: 'send-dialog', 'aria-labelledby': 'send-title' },
@@ -119,7 +156,9 @@ export function setupSendPanel(o: SendPanelOptions): void {
   );
   document.body.append(dialog);
 
-  const kind = (): Kind => (dialog.querySelector<HTMLInputElement>('input[name="send-kind"]:checked')?.value as Kind | undefined) ?? 'octoprint';
+  const kind = (): Kind =>
+    (dialog.querySelector<HTMLInputElement>('input[name="send-kind"]:checked')?.value as Kind | undefined) ??
+    'octoprint';
   const showKind = () => {
     hostFields.hidden = kind() === 'usb';
     usbFields.hidden = kind() !== 'usb';
@@ -127,7 +166,14 @@ export function setupSendPanel(o: SendPanelOptions): void {
   };
   for (const k of kinds) k.addEventListener('change', showKind);
   showKind();
-  const state = (): Saved => ({ kind: kind(), url: url.value.trim(), apiKey: key.value.trim() || undefined, rememberKey: remember.checked, print: print.checked, baud: Number(baud.value) });
+  const state = (): Saved => ({
+    kind: kind(),
+    url: url.value.trim(),
+    apiKey: key.value.trim() || undefined,
+    rememberKey: remember.checked,
+    print: print.checked,
+    baud: Number(baud.value),
+  });
   remember.addEventListener('change', () => save(state()));
 
   let busy = false;
@@ -180,10 +226,21 @@ export function setupSendPanel(o: SendPanelOptions): void {
     try {
       const r = await sendGcode(
         { name: job.name, bytes: new Uint8Array(job.gcode) },
-        { to: s.kind, url: s.url, apiKey: s.apiKey, print: s.print, keyName: 'the API key field', signal: abort.signal, onProgress: ({ sent, total }) => (progress.value = total ? sent / total : 0) },
+        {
+          to: s.kind,
+          url: s.url,
+          apiKey: s.apiKey,
+          print: s.print,
+          keyName: 'the API key field',
+          signal: abort.signal,
+          onProgress: ({ sent, total }) => (progress.value = total ? sent / total : 0),
+        },
         xhrTransport,
       );
-      say(`Sent ${r.name} to ${HOST_NAMES[s.kind]} at ${r.url}${r.started ? ': printing.' : r.notStarted ? `. Not printing: ${r.notStarted}.` : '.'}`, !!r.notStarted);
+      say(
+        `Sent ${r.name} to ${HOST_NAMES[s.kind]} at ${r.url}${r.started ? ': printing.' : r.notStarted ? `. Not printing: ${r.notStarted}.` : '.'}`,
+        !!r.notStarted,
+      );
     } catch (e) {
       say(e instanceof StrataError && e.code === 'CANCELLED' ? 'Upload cancelled.' : message(e), true);
     } finally {
@@ -194,7 +251,11 @@ export function setupSendPanel(o: SendPanelOptions): void {
 
   async function usb(job: { name: string; gcode: ArrayBuffer }, s: Saved): Promise<void> {
     const serial = (navigator as Navigator & { serial?: SerialLike }).serial;
-    if (!serial) return say('This browser has no Web Serial: printing over USB needs Chrome, Edge or Opera (on http://localhost or https://).', true);
+    if (!serial)
+      return say(
+        'This browser has no Web Serial: printing over USB needs Chrome, Edge or Opera (on http://localhost or https://).',
+        true,
+      );
     let port: SerialPortLike;
     try {
       port = await serial.requestPort();
@@ -208,7 +269,9 @@ export function setupSendPanel(o: SendPanelOptions): void {
     const decoder = new TextDecoder();
     running(true, true);
     say('Printing over USB…');
-    sender = new MarlinSender((data) => writer.write(encoder.encode(data)), { onProgress: ({ done, total }) => (progress.value = done / total) });
+    sender = new MarlinSender((data) => writer.write(encoder.encode(data)), {
+      onProgress: ({ done, total }) => (progress.value = done / total),
+    });
     const current = sender;
     const reading = (async () => {
       for (;;) {
@@ -221,7 +284,12 @@ export function setupSendPanel(o: SendPanelOptions): void {
       await current.print(new TextDecoder().decode(job.gcode));
       say(`${job.name}: every line sent; the printer finishes the last moves.`);
     } catch (e) {
-      say(e instanceof StrataError && e.code === 'CANCELLED' ? 'Print cancelled: heaters, fan and motors turned off.' : message(e), true);
+      say(
+        e instanceof StrataError && e.code === 'CANCELLED'
+          ? 'Print cancelled: heaters, fan and motors turned off.'
+          : message(e),
+        true,
+      );
     } finally {
       sender = null;
       running(false);

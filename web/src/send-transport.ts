@@ -9,7 +9,14 @@ import { Unreachable, type HttpReply, type Transport } from '../../src/send/tran
 const BLOCKED =
   "no answer the page may read: the host is off or the address is wrong, or it does not allow this page's origin (CORS: OctoPrint needs Settings › API › Allow Cross Origin Resource Sharing; Moonraker an [authorization] cors_domains entry for this page), or it is http:// and this page https:// (mixed content)";
 
-function xhr(method: string, url: string, headers: Record<string, string>, body: XMLHttpRequestBodyInit | null, onProgress?: (sent: number, total: number) => void, signal?: AbortSignal): Promise<HttpReply> {
+function xhr(
+  method: string,
+  url: string,
+  headers: Record<string, string>,
+  body: XMLHttpRequestBodyInit | null,
+  onProgress?: (sent: number, total: number) => void,
+  signal?: AbortSignal,
+): Promise<HttpReply> {
   return new Promise((resolve, reject) => {
     if (signal?.aborted) return reject(cancelled(signal));
     const r = new XMLHttpRequest();

@@ -26,13 +26,27 @@ const STAGE_TITLES: Readonly<Record<string, string>> = {
 };
 
 /** Where known stages go in the panel (most used first); any other stage follows in schema order. */
-const STAGE_ORDER = ['slice', 'walls', 'skin', 'infill', 'support', 'adhesion', 'cooling', 'travel', 'machine', 'gcode', 'mesh', 'runtime'];
+const STAGE_ORDER = [
+  'slice',
+  'walls',
+  'skin',
+  'infill',
+  'support',
+  'adhesion',
+  'cooling',
+  'travel',
+  'machine',
+  'gcode',
+  'mesh',
+  'runtime',
+];
 
 /** Groups open at first. */
 const OPEN_STAGES = new Set(['slice', 'walls', 'infill', 'adhesion', 'support']);
 
 function rangeText(def: SettingDef): string {
-  if (def.type === 'number' || def.type === 'integer') return `${def.min}–${def.max}${def.unit && def.unit !== 'count' ? ' ' + def.unit : ''}`;
+  if (def.type === 'number' || def.type === 'integer')
+    return `${def.min}–${def.max}${def.unit && def.unit !== 'count' ? ' ' + def.unit : ''}`;
   return '';
 }
 
@@ -117,9 +131,17 @@ export interface SettingsPanel {
   infillSlot: HTMLElement;
 }
 
-export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElement, source: PanelSource, opts: PanelOptions): SettingsPanel {
+export function buildSettingsPanel(
+  container: HTMLElement,
+  filter: HTMLInputElement,
+  source: PanelSource,
+  opts: PanelOptions,
+): SettingsPanel {
   const fields: Field[] = [];
-  const groups = new Map<string, { details: HTMLDetailsElement; body: HTMLElement; count: HTMLElement; fields: Field[] }>();
+  const groups = new Map<
+    string,
+    { details: HTMLDetailsElement; body: HTMLElement; count: HTMLElement; fields: Field[] }
+  >();
   const problem = h('p', { class: 'settings-error', role: 'alert', hidden: true });
   container.append(problem);
   const infillSlot = h('div', { class: 'infill-custom' });
@@ -136,7 +158,12 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
     if (!g) {
       const count = h('span', { class: 'count' });
       const body = h('div', { class: 'group-body' });
-      const details = h('details', { class: 'group', open: isOpen(def.stage) }, h('summary', {}, STAGE_TITLES[def.stage] ?? labelOf(def.stage), count), body);
+      const details = h(
+        'details',
+        { class: 'group', open: isOpen(def.stage) },
+        h('summary', {}, STAGE_TITLES[def.stage] ?? labelOf(def.stage), count),
+        body,
+      );
       g = { details, body, count, fields: [] };
       groups.set(def.stage, g);
       container.append(details);
@@ -149,16 +176,52 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
     if (def.type === 'boolean') {
       input = h('input', { id, type: 'checkbox', 'aria-describedby': helpId, 'aria-label': name });
     } else if (def.type === 'enum') {
-      input = h('select', { id, 'aria-describedby': helpId, 'aria-label': name }, ...def.values.map((v) => h('option', { value: v }, v)));
+      input = h(
+        'select',
+        { id, 'aria-describedby': helpId, 'aria-label': name },
+        ...def.values.map((v) => h('option', { value: v }, v)),
+      );
     } else if (def.type === 'string') {
-      input = h('textarea', { id, 'aria-describedby': helpId, 'aria-label': name, spellcheck: 'false', rows: 6, maxlength: def.maxLength });
+      input = h('textarea', {
+        id,
+        'aria-describedby': helpId,
+        'aria-label': name,
+        spellcheck: 'false',
+        rows: 6,
+        maxlength: def.maxLength,
+      });
     } else {
-      input = h('input', { id, type: 'number', min: def.min, max: def.max, step: stepOf(def), inputmode: 'decimal', 'aria-describedby': helpId, 'aria-label': name, placeholder: def.nullable ? 'auto' : undefined });
+      input = h('input', {
+        id,
+        type: 'number',
+        min: def.min,
+        max: def.max,
+        step: stepOf(def),
+        inputmode: 'decimal',
+        'aria-describedby': helpId,
+        'aria-label': name,
+        placeholder: def.nullable ? 'auto' : undefined,
+      });
     }
-    const reset = h('button', { type: 'button', class: 'reset', title: opts.resetTitle, 'aria-label': `Reset ${label}${opts.nameSuffix ? ' ' + opts.nameSuffix : ''}` }, '↺');
-    const unit = def.unit && def.unit !== 'count' ? h('span', { class: 'unit' }, def.unit) : h('span', { class: 'unit' });
+    const reset = h(
+      'button',
+      {
+        type: 'button',
+        class: 'reset',
+        title: opts.resetTitle,
+        'aria-label': `Reset ${label}${opts.nameSuffix ? ' ' + opts.nameSuffix : ''}`,
+      },
+      '↺',
+    );
+    const unit =
+      def.unit && def.unit !== 'count' ? h('span', { class: 'unit' }, def.unit) : h('span', { class: 'unit' });
     const range = rangeText(def);
-    const help = h('p', { class: 'help', id: helpId }, def.description, range ? h('span', { class: 'range' }, ` (${range})`) : null);
+    const help = h(
+      'p',
+      { class: 'help', id: helpId },
+      def.description,
+      range ? h('span', { class: 'range' }, ` (${range})`) : null,
+    );
     const error = h('p', { class: 'error', role: 'alert', hidden: true });
     const wide = def.type === 'string';
     const row = h(
@@ -172,7 +235,14 @@ export function buildSettingsPanel(container: HTMLElement, filter: HTMLInputElem
     );
     g.body.append(row);
     if (key === 'infillPattern' && opts.infillSlot) g.body.append(infillSlot);
-    const field: Field = { key, row, input, error, searchText: `${key} ${label} ${def.description}`.toLowerCase(), valid: () => {} };
+    const field: Field = {
+      key,
+      row,
+      input,
+      error,
+      searchText: `${key} ${label} ${def.description}`.toLowerCase(),
+      valid: () => {},
+    };
     fields.push(field);
     g.fields.push(field);
 

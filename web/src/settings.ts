@@ -6,7 +6,14 @@
  */
 import { StrataError } from '../../src/errors.js';
 import { PATTERN_IDS } from '../../src/infill/types.js';
-import { DEFAULT_FILAMENT, DEFAULT_PRINTER, checkKey, resolveConfig, validateValue, type Config } from '../../src/settings/resolve.js';
+import {
+  DEFAULT_FILAMENT,
+  DEFAULT_PRINTER,
+  checkKey,
+  resolveConfig,
+  validateValue,
+  type Config,
+} from '../../src/settings/resolve.js';
 import { SCHEMA, type SettingKey, type SliceOptions } from '../../src/settings/schema.js';
 import type { CustomInfillSpec } from '../../src/pipeline/custom-infill.js';
 
@@ -110,15 +117,22 @@ export class SettingsStore {
    * the shipped infillers' names, which `infillPattern` may name as the CLI allows.
    */
   fromJson(obj: unknown, shipped: readonly string[]): void {
-    if (!obj || typeof obj !== 'object' || Array.isArray(obj)) throw new StrataError('BAD_FILE', 'a settings file must hold a JSON object of settings');
+    if (!obj || typeof obj !== 'object' || Array.isArray(obj))
+      throw new StrataError('BAD_FILE', 'a settings file must hold a JSON object of settings');
     const { printer, filament, ...rest } = obj as Record<string, unknown>;
-    if (printer !== undefined && typeof printer !== 'string') throw new StrataError('UNKNOWN_PRESET', 'printer must be a preset name');
-    if (filament !== undefined && typeof filament !== 'string') throw new StrataError('UNKNOWN_PRESET', 'filament must be a preset name');
+    if (printer !== undefined && typeof printer !== 'string')
+      throw new StrataError('UNKNOWN_PRESET', 'printer must be a preset name');
+    if (filament !== undefined && typeof filament !== 'string')
+      throw new StrataError('UNKNOWN_PRESET', 'filament must be a preset name');
     const overrides: Overrides = {};
     let custom: CustomChoice | null = null;
     for (const [k, v] of Object.entries(rest)) {
       if (k === 'infillPattern' && typeof v === 'string' && !(PATTERN_IDS as readonly string[]).includes(v)) {
-        if (!shipped.includes(v)) throw new StrataError('BAD_SETTING', `infillPattern "${v}" is neither a built-in pattern (${PATTERN_IDS.join(', ')}) nor a shipped infiller (${shipped.join(', ')})`);
+        if (!shipped.includes(v))
+          throw new StrataError(
+            'BAD_SETTING',
+            `infillPattern "${v}" is neither a built-in pattern (${PATTERN_IDS.join(', ')}) nor a shipped infiller (${shipped.join(', ')})`,
+          );
         custom = { source: 'shipped', name: v, params: {} };
         continue;
       }
@@ -140,8 +154,14 @@ export class SettingsStore {
   save(): void {
     try {
       const c = this.custom;
-      const custom = c && (!c.image || c.image.length <= MAX_STORED_IMAGE) ? { ...c, image: c.image ? toBase64(c.image) : undefined } : null;
-      localStorage.setItem(STORAGE_KEY, JSON.stringify({ printer: this.printer, filament: this.filament, overrides: this.overrides, custom }));
+      const custom =
+        c && (!c.image || c.image.length <= MAX_STORED_IMAGE)
+          ? { ...c, image: c.image ? toBase64(c.image) : undefined }
+          : null;
+      localStorage.setItem(
+        STORAGE_KEY,
+        JSON.stringify({ printer: this.printer, filament: this.filament, overrides: this.overrides, custom }),
+      );
     } catch {
       // storage full or off: the settings last until the page closes
     }

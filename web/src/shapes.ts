@@ -22,7 +22,44 @@ export function boxMesh(centre: Vec3, size: Vec3): ShapeMesh {
     for (let k = 0; k < 3; k++) positions[i * 3 + k] = centre[k] + (i & (1 << k) ? size[k] / 2 : -size[k] / 2);
   }
   // two triangles per face: bottom, top, front (−Y), back (+Y), left (−X), right (+X)
-  const indices = Uint32Array.of(0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5);
+  const indices = Uint32Array.of(
+    0,
+    2,
+    1,
+    1,
+    2,
+    3,
+    4,
+    5,
+    6,
+    5,
+    7,
+    6,
+    0,
+    1,
+    4,
+    1,
+    5,
+    4,
+    2,
+    6,
+    3,
+    3,
+    6,
+    7,
+    0,
+    4,
+    2,
+    2,
+    4,
+    6,
+    1,
+    3,
+    5,
+    3,
+    7,
+    5,
+  );
   return { positions, indices };
 }
 
@@ -33,10 +70,12 @@ export function boxMesh(centre: Vec3, size: Vec3): ShapeMesh {
 export function cylinderMesh(centre: Vec3, size: Vec3, sides = CYLINDER_SIDES): ShapeMesh {
   const n = Math.max(3, Math.floor(sides));
   const positions = new Float32Array((2 * n + 2) * 3);
-  const z0 = centre[2] - size[2] / 2, z1 = centre[2] + size[2] / 2;
+  const z0 = centre[2] - size[2] / 2,
+    z1 = centre[2] + size[2] / 2;
   for (let k = 0; k < n; k++) {
     const a = (2 * Math.PI * k) / n;
-    const x = centre[0] + (Math.cos(a) * size[0]) / 2, y = centre[1] + (Math.sin(a) * size[1]) / 2;
+    const x = centre[0] + (Math.cos(a) * size[0]) / 2,
+      y = centre[1] + (Math.sin(a) * size[1]) / 2;
     positions.set([x, y, z0], k * 3);
     positions.set([x, y, z1], (n + k) * 3);
   }
@@ -88,15 +127,25 @@ export function drawArrays(m: ShapeMesh): { positions: Float32Array; normals: Fl
   const tris = m.indices.length / 3;
   const positions = new Float32Array(tris * 9);
   const normals = new Float32Array(tris * 9);
-  const p = m.positions, ix = m.indices;
+  const p = m.positions,
+    ix = m.indices;
   for (let t = 0; t < tris; t++) {
-    const a = ix[t * 3] * 3, b = ix[t * 3 + 1] * 3, c = ix[t * 3 + 2] * 3;
-    const ux = p[b] - p[a], uy = p[b + 1] - p[a + 1], uz = p[b + 2] - p[a + 2];
-    const vx = p[c] - p[a], vy = p[c + 1] - p[a + 1], vz = p[c + 2] - p[a + 2];
-    const nx = uy * vz - uz * vy, ny = uz * vx - ux * vz, nz = ux * vy - uy * vx;
+    const a = ix[t * 3] * 3,
+      b = ix[t * 3 + 1] * 3,
+      c = ix[t * 3 + 2] * 3;
+    const ux = p[b] - p[a],
+      uy = p[b + 1] - p[a + 1],
+      uz = p[b + 2] - p[a + 2];
+    const vx = p[c] - p[a],
+      vy = p[c + 1] - p[a + 1],
+      vz = p[c + 2] - p[a + 2];
+    const nx = uy * vz - uz * vy,
+      ny = uz * vx - ux * vz,
+      nz = ux * vy - uy * vx;
     const len = Math.hypot(nx, ny, nz) || 1;
     for (let k = 0; k < 3; k++) {
-      const src = ix[t * 3 + k] * 3, o = t * 9 + k * 3;
+      const src = ix[t * 3 + k] * 3,
+        o = t * 9 + k * 3;
       positions[o] = p[src];
       positions[o + 1] = p[src + 1];
       positions[o + 2] = p[src + 2];

@@ -3,7 +3,15 @@
  * pool runs inside it when more threads are asked for), and builds the preview arrays, so the page thread
  * only draws. The page cancels a slice by ending the worker.
  */
-import { Slicer, StrataError, loadCustomInfill, loadModelBytes, prepareMesh, prepareModel, resolveConfig } from '../../src/browser.js';
+import {
+  Slicer,
+  StrataError,
+  loadCustomInfill,
+  loadModelBytes,
+  prepareMesh,
+  prepareModel,
+  resolveConfig,
+} from '../../src/browser.js';
 import { loadModelFile } from '../../src/mesh/load.js';
 import { mergeObjects } from '../../src/mesh/place.js';
 import { writeProject3mf } from '../../src/mesh/threemf-write.js';
@@ -16,7 +24,16 @@ import { determinant, transformPoints, type Affine } from '../../src/mesh/transf
 import type { MeshObject, SettingsSource } from '../../src/mesh/types.js';
 import { estimatePlan } from '../../src/plan/estimate.js';
 import { planToArrays, transferList } from '../../src/preview/plan-arrays.js';
-import type { FromWorker, LoadedModel, LoadedProject, MeshArrays, ProjectObject, SliceItem, SliceVolume, ToWorker } from './protocol.js';
+import type {
+  FromWorker,
+  LoadedModel,
+  LoadedProject,
+  MeshArrays,
+  ProjectObject,
+  SliceItem,
+  SliceVolume,
+  ToWorker,
+} from './protocol.js';
 import { drawArrays } from './shapes.js';
 
 const scope = globalThis as unknown as {
@@ -39,10 +56,16 @@ function describe(e: unknown): string {
  * settings of objects, layer ranges, print settings), its objects one by one with their data. `asMesh`
  * reads any file as one mesh (a volume's).
  */
-function load(fileName: string, bytes: ArrayBuffer, asMesh: boolean): { model: LoadedModel | null; project: LoadedProject | null } {
+function load(
+  fileName: string,
+  bytes: ArrayBuffer,
+  asMesh: boolean,
+): { model: LoadedModel | null; project: LoadedProject | null } {
   const file = loadModelFile(new Uint8Array(bytes), fileName);
   if (file.objects.length === 0) throw new StrataError('EMPTY_MODEL', `${fileName} holds no mesh`);
-  const isProject = file.projectSettings !== undefined || file.objects.some((o) => o.volumes?.length || o.settings || o.layerRanges?.length || o.layerHeightProfile);
+  const isProject =
+    file.projectSettings !== undefined ||
+    file.objects.some((o) => o.volumes?.length || o.settings || o.layerRanges?.length || o.layerHeightProfile);
   if (asMesh || !isProject) {
     const model = modelOf(fileName, file.objects);
     model.warnings.unshift(...file.warnings);
@@ -74,8 +97,14 @@ function modelOf(fileName: string, objects: readonly MeshObject[]): LoadedModel 
  * project's print settings, as the library reads them); settings that cannot vary where the project sets
  * them (Strata keeps them per print, or per object) are left to the print, with a warning.
  */
-function projectOf(fileName: string, objects: readonly MeshObject[], print: SettingsSource | undefined, warnings: string[]): LoadedProject {
-  const ignored = new Set<string>(), outOfScope = new Set<string>();
+function projectOf(
+  fileName: string,
+  objects: readonly MeshObject[],
+  print: SettingsSource | undefined,
+  warnings: string[],
+): LoadedProject {
+  const ignored = new Set<string>(),
+    outOfScope = new Set<string>();
   const read = (src: SettingsSource | undefined, use: ScopeUse): Partial<Record<SettingKey, unknown>> => {
     const out: Partial<Record<SettingKey, unknown>> = {};
     if (!src) return out;
@@ -84,7 +113,8 @@ function projectOf(fileName: string, objects: readonly MeshObject[], print: Sett
     for (const r of mapped.rejected) warnings.push(`object settings: ${r.key} = ${r.value} not taken: ${r.reason}`);
     for (const [k, v] of Object.entries(mapped.settings)) {
       const scope = SETTING_SCOPE[k as SettingKey];
-      if (scope === 'print' || (scope === 'layer' && use !== 'layer range') || (scope === 'object' && use !== 'object')) outOfScope.add(k);
+      if (scope === 'print' || (scope === 'layer' && use !== 'layer range') || (scope === 'object' && use !== 'object'))
+        outOfScope.add(k);
       else out[k as SettingKey] = v;
     }
     return out;
@@ -93,18 +123,33 @@ function projectOf(fileName: string, objects: readonly MeshObject[], print: Sett
     name: o.name,
     model: modelOf(fileName, [o]),
     settings: read(o.settings, 'object'),
-    volumes: (o.volumes ?? []).map((v) => ({ kind: v.kind, name: v.name, mesh: { positions: v.mesh.positions, indices: v.mesh.indices }, settings: v.kind === 'modifier' ? read(v.settings, 'modifier') : {} })),
-    layerRanges: (o.layerRanges ?? []).map((r) => ({ fromZ: r.fromZ, toZ: r.toZ, settings: read(r.settings, 'layer range') })),
+    volumes: (o.volumes ?? []).map((v) => ({
+      kind: v.kind,
+      name: v.name,
+      mesh: { positions: v.mesh.positions, indices: v.mesh.indices },
+      settings: v.kind === 'modifier' ? read(v.settings, 'modifier') : {},
+    })),
+    layerRanges: (o.layerRanges ?? []).map((r) => ({
+      fromZ: r.fromZ,
+      toZ: r.toZ,
+      settings: read(r.settings, 'layer range'),
+    })),
     ...(o.layerHeightProfile ? { layerHeightProfile: [...o.layerHeightProfile] } : {}),
   }));
   if (ignored.size) warnings.push(`object settings not used by Strata, ignored: ${[...ignored].sort().join(', ')}`);
-  if (outOfScope.size) warnings.push(`object settings that Strata keeps the same for the whole print (or object), left to the print: ${[...outOfScope].sort().join(', ')}`);
+  if (outOfScope.size)
+    warnings.push(
+      `object settings that Strata keeps the same for the whole print (or object), left to the print: ${[...outOfScope].sort().join(', ')}`,
+    );
   let printSettings: Record<string, unknown> | null = null;
   if (print?.format === 'strata') printSettings = { ...print.values };
   else if (print) {
     const mapped = settingsFromSource(print);
     printSettings = mapped.settings;
-    if (mapped.rejected.length) warnings.push(`print settings not taken: ${mapped.rejected.map((r) => `${r.key} = ${r.value} (${r.reason})`).join('; ')}`);
+    if (mapped.rejected.length)
+      warnings.push(
+        `print settings not taken: ${mapped.rejected.map((r) => `${r.key} = ${r.value} (${r.reason})`).join('; ')}`,
+      );
   }
   return { objects: out, printSettings, warnings };
 }
@@ -113,7 +158,8 @@ function projectOf(fileName: string, objects: readonly MeshObject[], print: Sett
 function projectBuffers(p: LoadedProject): ArrayBuffer[] {
   const out = new Set<ArrayBuffer>();
   for (const o of p.objects) {
-    for (const a of [o.model.vertices, o.model.indices, o.model.positions, o.model.normals]) out.add(a.buffer as ArrayBuffer);
+    for (const a of [o.model.vertices, o.model.indices, o.model.positions, o.model.normals])
+      out.add(a.buffer as ArrayBuffer);
     for (const v of o.volumes) for (const a of [v.mesh.positions, v.mesh.indices]) out.add(a.buffer as ArrayBuffer);
   }
   return [...out];
@@ -128,18 +174,28 @@ function projectBuffers(p: LoadedProject): ArrayBuffer[] {
 function sliceInput(items: readonly SliceItem[]): { input: unknown[]; placed: boolean } {
   let placed = false;
   const input = items.map((it): unknown => {
-    const own = it.volumes.length > 0 || it.layerRanges.length > 0 || Object.keys(it.settings).length > 0 || !!it.layerHeightProfile;
+    const own =
+      it.volumes.length > 0 ||
+      it.layerRanges.length > 0 ||
+      Object.keys(it.settings).length > 0 ||
+      !!it.layerHeightProfile;
     if (!it.placement && it.bytes) {
       if (!own) return { name: it.fileName, objects: loadModelBytes(new Uint8Array(it.bytes), it.fileName) };
       return describeObject(it, new Uint8Array(it.bytes), it.volumes);
     }
-    const objects: MeshObject[] = it.bytes ? loadModelBytes(new Uint8Array(it.bytes), it.fileName) : [{ name: it.name, mesh: it.mesh! }];
+    const objects: MeshObject[] = it.bytes
+      ? loadModelBytes(new Uint8Array(it.bytes), it.fileName)
+      : [{ name: it.name, mesh: it.mesh! }];
     if (!it.placement) return own ? describeObject(it, objects, it.volumes) : { name: it.fileName, objects };
     placed = true;
     if (!own) return { name: it.fileName, objects: placeObjects(objects, it.placement) };
     // the volumes take the transform of the object's parts
     const affine = placementAffine(it.placement, linearBounds(objects, it.placement.linear));
-    return describeObject(it, placeObjects(objects, it.placement), it.volumes.map((v) => ({ ...v, mesh: transformed(v.mesh, affine) })));
+    return describeObject(
+      it,
+      placeObjects(objects, it.placement),
+      it.volumes.map((v) => ({ ...v, mesh: transformed(v.mesh, affine) })),
+    );
   });
   return { input, placed };
 }
@@ -148,7 +204,10 @@ function sliceInput(items: readonly SliceItem[]): { input: unknown[]; placed: bo
 function describeObject(it: SliceItem, mesh: unknown, volumes: readonly SliceVolume[]): Record<string, unknown> {
   const out: Record<string, unknown> = { mesh, name: it.name };
   if (Object.keys(it.settings).length) out.settings = it.settings;
-  if (volumes.length) out.volumes = volumes.map((v) => (v.settings && Object.keys(v.settings).length ? v : { type: v.type, name: v.name, mesh: v.mesh }));
+  if (volumes.length)
+    out.volumes = volumes.map((v) =>
+      v.settings && Object.keys(v.settings).length ? v : { type: v.type, name: v.name, mesh: v.mesh },
+    );
   if (it.layerRanges.length) out.layerRanges = it.layerRanges;
   if (it.layerHeightProfile) out.layerHeightProfile = it.layerHeightProfile;
   return out;
@@ -169,7 +228,9 @@ async function handle(msg: ToWorker): Promise<void> {
   switch (msg.type) {
     case 'load': {
       const { model, project } = load(msg.fileName, msg.bytes, msg.mesh === true);
-      const transfer = model ? ([model.vertices.buffer, model.indices.buffer, model.positions.buffer, model.normals.buffer] as ArrayBuffer[]) : projectBuffers(project!);
+      const transfer = model
+        ? ([model.vertices.buffer, model.indices.buffer, model.positions.buffer, model.normals.buffer] as ArrayBuffer[])
+        : projectBuffers(project!);
       post({ type: 'loaded', id: msg.id, model, project }, transfer);
       return;
     }
@@ -180,7 +241,10 @@ async function handle(msg: ToWorker): Promise<void> {
       const prepared = prepareModel(input, cfg);
       // PrusaSlicer's copy of the print settings: every one resolved, in its keys
       const resolved: Record<string, unknown> = { ...cfg };
-      const bytes = writeProject3mf(prepared.objects, { printSettings: msg.printSettings, slic3rPrintSettings: toSlic3rKeys(resolved, cfg.layerHeight) });
+      const bytes = writeProject3mf(prepared.objects, {
+        printSettings: msg.printSettings,
+        slic3rPrintSettings: toSlic3rKeys(resolved, cfg.layerHeight),
+      });
       post({ type: 'saved', id: msg.id, bytes: bytes.buffer as ArrayBuffer }, [bytes.buffer as ArrayBuffer]);
       return;
     }
@@ -190,7 +254,11 @@ async function handle(msg: ToWorker): Promise<void> {
       const shader = await import('../../src/shader/index.js');
       const info = shader.describeInfiller(shader.loadInfiller(msg.spec));
       compiler.customGenerator(msg.spec, new Slicer().config);
-      post({ type: 'infiller', id: msg.id, info: { kind: info.kind, params: info.params.map((p) => ({ ...p })), warnings: info.warnings } });
+      post({
+        type: 'infiller',
+        id: msg.id,
+        info: { kind: info.kind, params: info.params.map((p) => ({ ...p })), warnings: info.warnings },
+      });
       return;
     }
     case 'slice': {
@@ -199,9 +267,13 @@ async function handle(msg: ToWorker): Promise<void> {
       const slicer = new Slicer(placed ? { ...msg.options, center: false } : msg.options);
       if (msg.custom) slicer.setCustomInfill(msg.custom);
       const chunks: string[] = [];
-      const { plan, stats, warnings } = await slicer.slicePlan(input, {
-        onProgress: (p) => post({ type: 'progress', id: msg.id, stage: p.stage, fraction: p.fraction }),
-      }, (c) => chunks.push(c));
+      const { plan, stats, warnings } = await slicer.slicePlan(
+        input,
+        {
+          onProgress: (p) => post({ type: 'progress', id: msg.id, stage: p.stage, fraction: p.fraction }),
+        },
+        (c) => chunks.push(c),
+      );
       const gcode = new TextEncoder().encode(chunks.join('')).buffer as ArrayBuffer;
       // the estimate's time per layer, to colour the preview by (the G-code's estimate, made again here)
       const preview = planToArrays(plan, estimatePlan(plan, slicer.config).layerSeconds);

@@ -130,17 +130,70 @@ void main() {
 
 /** The bead's cross-section swept along x from 0 to 1: a top and two sides leaning in. */
 function beadGeometry(): { position: BufferAttribute; normal: BufferAttribute; index: BufferAttribute } {
-  const s = 0.5, b = 0.36;
+  const s = 0.5,
+    b = 0.36;
   // prettier-ignore
   const position = [
-    0, -s, 0, 1, -s, 0, 1, s, 0, 0, s, 0, // top
-    0, s, 0, 1, s, 0, 1, b, -1, 0, b, -1, // left side
-    0, -b, -1, 1, -b, -1, 1, -s, 0, 0, -s, 0, // right side
+    0,
+    -s,
+    0,
+    1,
+    -s,
+    0,
+    1,
+    s,
+    0,
+    0,
+    s,
+    0, // top
+    0,
+    s,
+    0,
+    1,
+    s,
+    0,
+    1,
+    b,
+    -1,
+    0,
+    b,
+    -1, // left side
+    0,
+    -b,
+    -1,
+    1,
+    -b,
+    -1,
+    1,
+    -s,
+    0,
+    0,
+    -s,
+    0, // right side
   ];
-  const up = [0, 0, 1], left = [0, 0.94, 0.34], right = [0, -0.94, 0.34];
-  const normal = [...up, ...up, ...up, ...up, ...left, ...left, ...left, ...left, ...right, ...right, ...right, ...right];
+  const up = [0, 0, 1],
+    left = [0, 0.94, 0.34],
+    right = [0, -0.94, 0.34];
+  const normal = [
+    ...up,
+    ...up,
+    ...up,
+    ...up,
+    ...left,
+    ...left,
+    ...left,
+    ...left,
+    ...right,
+    ...right,
+    ...right,
+    ...right,
+  ];
   const index = [0, 1, 2, 0, 2, 3, 4, 5, 6, 4, 6, 7, 8, 9, 10, 8, 10, 11];
-  return { position: new Float32BufferAttribute(position, 3), normal: new Float32BufferAttribute(normal, 3), index: new BufferAttribute(new Uint16Array(index), 1) };
+  return {
+    position: new Float32BufferAttribute(position, 3),
+    normal: new Float32BufferAttribute(normal, 3),
+    index: new BufferAttribute(new Uint16Array(index), 1),
+  };
 }
 
 type Kind = 'bead' | 'coarse' | 'travel' | 'retract';
@@ -178,7 +231,8 @@ export function coarseCopy(a: PreviewArrays, budget = COARSE_BUDGET): Coarse {
   const outside = COARSE_INDEX;
   const perLayer = new Uint32Array(n);
   for (let i = 0; i < n; i++) {
-    for (let s = a.layerSegments[i]; s < a.layerSegments[i + 1]; s++) if (outside[a.segments[s * SEGMENT_STRIDE + 7]]) perLayer[i]++;
+    for (let s = a.layerSegments[i]; s < a.layerSegments[i + 1]; s++)
+      if (outside[a.segments[s * SEGMENT_STRIDE + 7]]) perLayer[i]++;
   }
   // runs of rising layers: the whole print, or in sequential printing each object (Z goes down between them)
   const runStart = new Uint32Array(n);
@@ -197,7 +251,8 @@ export function coarseCopy(a: PreviewArrays, budget = COARSE_BUDGET): Coarse {
   for (let i = 0; i < n; i++) {
     offsets[i] = source.length;
     if (!kept(k, i)) continue;
-    for (let s = a.layerSegments[i]; s < a.layerSegments[i + 1]; s++) if (outside[a.segments[s * SEGMENT_STRIDE + 7]]) source.push(s);
+    for (let s = a.layerSegments[i]; s < a.layerSegments[i + 1]; s++)
+      if (outside[a.segments[s * SEGMENT_STRIDE + 7]]) source.push(s);
   }
   offsets[n] = source.length;
   const data = new Float32Array(source.length * SEGMENT_STRIDE);
@@ -214,7 +269,8 @@ export function coarseCopy(a: PreviewArrays, budget = COARSE_BUDGET): Coarse {
 
 /** The first index in [from, to) whose move is at least `move` (moves increase along a layer). */
 function firstAtLeast(moves: Uint32Array, from: number, to: number, move: number): number {
-  let lo = from, hi = to;
+  let lo = from,
+    hi = to;
   while (lo < hi) {
     const mid = (lo + hi) >> 1;
     if (moves[mid] < move) lo = mid + 1;
@@ -255,9 +311,17 @@ export class ToolpathView {
   /** The numbers coloured by, per segment (for the draft's copy of the top layers). */
   #valueCache: Float32Array = new Float32Array(0);
   /** The draft's copy of the top layers: its mesh, data and values, grown as needed. */
-  #window: { mesh: Mesh; geometry: InstancedBufferGeometry; data: InstancedInterleavedBuffer; value: InstancedBufferAttribute } | null = null;
+  #window: {
+    mesh: Mesh;
+    geometry: InstancedBufferGeometry;
+    data: InstancedInterleavedBuffer;
+    value: InstancedBufferAttribute;
+  } | null = null;
   /** Where the nozzle is after the last move shown, when the top layer is cut short. */
-  #tool = new Mesh(new ConeGeometry(0.45, 1.6, 16).rotateX(-Math.PI / 2).translate(0, 0, 0.8), new MeshBasicMaterial({ color: '#111827' }));
+  #tool = new Mesh(
+    new ConeGeometry(0.45, 1.6, 16).rotateX(-Math.PI / 2).translate(0, 0, 0.8),
+    new MeshBasicMaterial({ color: '#111827' }),
+  );
   readonly beadMaterial = this.#makeBeadMaterial();
   readonly coarseMaterial = this.#makeBeadMaterial();
   readonly travelMaterial = this.#lineMaterial('#9467bd', 1);
@@ -310,7 +374,12 @@ export class ToolpathView {
     return new ShaderMaterial({
       vertexShader: LINE_VERTEX,
       fragmentShader: FLAT_FRAGMENT,
-      uniforms: { uLo: { value: 0 }, uHi: { value: 0 }, uSize: { value: size * Math.min(window.devicePixelRatio || 1, 2) }, uTint: { value: new Color(colour) } },
+      uniforms: {
+        uLo: { value: 0 },
+        uHi: { value: 0 },
+        uSize: { value: size * Math.min(window.devicePixelRatio || 1, 2) },
+        uTint: { value: new Color(colour) },
+      },
     });
   }
 
@@ -333,11 +402,27 @@ export class ToolpathView {
     this.#coarse = coarseCopy(a);
     const values = this.#values(this.#colourBy);
     this.#valueCache = values;
-    const plan = (kind: Kind, data: Float32Array, stride: number, offsets: Uint32Array, moves: Uint32Array | null, perInstance?: Float32Array) => {
+    const plan = (
+      kind: Kind,
+      data: Float32Array,
+      stride: number,
+      offsets: Uint32Array,
+      moves: Uint32Array | null,
+      perInstance?: Float32Array,
+    ) => {
       const total = data.length / stride;
       for (let start = 0; start < total; start += CHUNK) {
         const count = Math.min(CHUNK, total - start);
-        this.#addChunk(kind, data.subarray(start * stride, (start + count) * stride), stride, start, count, offsets, moves, perInstance?.subarray(start, start + count));
+        this.#addChunk(
+          kind,
+          data.subarray(start * stride, (start + count) * stride),
+          stride,
+          start,
+          count,
+          offsets,
+          moves,
+          perInstance?.subarray(start, start + count),
+        );
       }
     };
     plan('bead', a.segments, SEGMENT_STRIDE, a.layerSegments, a.segmentMove, values);
@@ -348,7 +433,16 @@ export class ToolpathView {
     this.requestRender();
   }
 
-  #addChunk(kind: Kind, data: Float32Array, stride: number, start: number, count: number, offsets: Uint32Array, moves: Uint32Array | null, values?: Float32Array): void {
+  #addChunk(
+    kind: Kind,
+    data: Float32Array,
+    stride: number,
+    start: number,
+    count: number,
+    offsets: Uint32Array,
+    moves: Uint32Array | null,
+    values?: Float32Array,
+  ): void {
     const g = new InstancedBufferGeometry();
     const buf = new InstancedInterleavedBuffer(data, stride, 1);
     let object: Object3D;
@@ -386,7 +480,18 @@ export class ToolpathView {
     g.instanceCount = count;
     object.frustumCulled = false;
     object.matrixAutoUpdate = false;
-    this.#chunks.push({ object, geometry: g, start, count, firstLayer: data[layerAt], lastLayer: data[(count - 1) * stride + layerAt], offsets, moves, value, kind });
+    this.#chunks.push({
+      object,
+      geometry: g,
+      start,
+      count,
+      firstLayer: data[layerAt],
+      lastLayer: data[(count - 1) * stride + layerAt],
+      offsets,
+      moves,
+      value,
+      kind,
+    });
   }
 
   /** Show layers lo..hi (inclusive); the move limit is dropped. */
@@ -442,7 +547,8 @@ export class ToolpathView {
       c.object.visible = inRange;
       if (!inRange) continue;
       let end = c.offsets[Math.min(to + 1, c.offsets.length - 1)];
-      if (this.#moveLimit !== null && c.moves && to === hi) end = firstAtLeast(c.moves, c.offsets[hi], c.offsets[hi + 1], this.#moveLimit);
+      if (this.#moveLimit !== null && c.moves && to === hi)
+        end = firstAtLeast(c.moves, c.offsets[hi], c.offsets[hi + 1], this.#moveLimit);
       c.geometry.instanceCount = Math.max(0, Math.min(c.count, end - c.start));
     }
     this.#placeTool();
@@ -459,7 +565,8 @@ export class ToolpathView {
       return;
     }
     const picked: number[] = [];
-    for (let s = a.layerSegments[from]; s < a.layerSegments[to]; s++) if (COARSE_INDEX[a.segments[s * SEGMENT_STRIDE + 7]]) picked.push(s);
+    for (let s = a.layerSegments[from]; s < a.layerSegments[to]; s++)
+      if (COARSE_INDEX[a.segments[s * SEGMENT_STRIDE + 7]]) picked.push(s);
     const topStart = a.layerSegments[to];
     let end = a.layerSegments[to + 1];
     if (this.#moveLimit !== null) end = firstAtLeast(a.segmentMove, topStart, end, this.#moveLimit);
@@ -487,7 +594,9 @@ export class ToolpathView {
       this.group.add(mesh);
       w = this.#window = { mesh, geometry, data, value };
     }
-    const data = w.data.array as Float32Array, values = w.value.array as Float32Array, v = this.#valueCache;
+    const data = w.data.array as Float32Array,
+      values = w.value.array as Float32Array,
+      v = this.#valueCache;
     picked.forEach((s, r) => {
       data.set(a.segments.subarray(s * SEGMENT_STRIDE, (s + 1) * SEGMENT_STRIDE), r * SEGMENT_STRIDE);
       if (v.length) values[r] = v[s];
@@ -521,12 +630,22 @@ export class ToolpathView {
     if (!a || li < 0 || li >= a.layerZ.length) return null;
     const s = firstAtLeast(a.segmentMove, a.layerSegments[li], a.layerSegments[li + 1], k);
     if (s < a.layerSegments[li + 1] && a.segmentMove[s] === k) {
-      const o = s * SEGMENT_STRIDE, d = a.segments;
-      return { kind: 'extrude', feature: d[o + 7], widthMm: d[o + 5], speed: a.segmentSpeed[s], fan: a.segmentFan[s], from: [d[o], d[o + 1], d[o + 4]], to: [d[o + 2], d[o + 3], d[o + 4]] };
+      const o = s * SEGMENT_STRIDE,
+        d = a.segments;
+      return {
+        kind: 'extrude',
+        feature: d[o + 7],
+        widthMm: d[o + 5],
+        speed: a.segmentSpeed[s],
+        fan: a.segmentFan[s],
+        from: [d[o], d[o + 1], d[o + 4]],
+        to: [d[o + 2], d[o + 3], d[o + 4]],
+      };
     }
     const t = firstAtLeast(a.travelMove, a.layerTravels[li], a.layerTravels[li + 1], k);
     if (t < a.layerTravels[li + 1] && a.travelMove[t] === k) {
-      const o = t * TRAVEL_STRIDE, d = a.travels;
+      const o = t * TRAVEL_STRIDE,
+        d = a.travels;
       return { kind: 'travel', from: [d[o], d[o + 1], d[o + 2]], to: [d[o + 3], d[o + 4], d[o + 5]] };
     }
     return null;
@@ -536,10 +655,14 @@ export class ToolpathView {
   layerBounds(li: number): { min: Vector3; max: Vector3 } | null {
     const a = this.#data;
     if (!a || li < 0 || li >= a.layerZ.length || a.layerSegments[li] === a.layerSegments[li + 1]) return null;
-    const min = new Vector3(Infinity, Infinity, a.layerZ[li]), max = new Vector3(-Infinity, -Infinity, a.layerZ[li]);
+    const min = new Vector3(Infinity, Infinity, a.layerZ[li]),
+      max = new Vector3(-Infinity, -Infinity, a.layerZ[li]);
     for (let s = a.layerSegments[li]; s < a.layerSegments[li + 1]; s++) {
       const o = s * SEGMENT_STRIDE;
-      for (const [x, y] of [[a.segments[o], a.segments[o + 1]], [a.segments[o + 2], a.segments[o + 3]]]) {
+      for (const [x, y] of [
+        [a.segments[o], a.segments[o + 1]],
+        [a.segments[o + 2], a.segments[o + 3]],
+      ]) {
         min.x = Math.min(min.x, x);
         min.y = Math.min(min.y, y);
         max.x = Math.max(max.x, x);
@@ -583,7 +706,8 @@ export class ToolpathView {
     if (mode === 'fan') return a.segmentFan.map((v) => v * 100);
     const out = new Float32Array(n);
     if (mode === 'width') for (let s = 0; s < n; s++) out[s] = a.segments[s * SEGMENT_STRIDE + 5];
-    else if (mode === 'layer-time') for (let s = 0; s < n; s++) out[s] = a.layerSeconds[a.segments[s * SEGMENT_STRIDE + 8]];
+    else if (mode === 'layer-time')
+      for (let s = 0; s < n; s++) out[s] = a.layerSeconds[a.segments[s * SEGMENT_STRIDE + 8]];
     return out;
   }
 
@@ -594,7 +718,8 @@ export class ToolpathView {
   }
 
   setFeatureVisible(index: number, on: boolean): void {
-    for (const m of [this.beadMaterial, this.coarseMaterial]) (m.uniforms.uVisible.value as number[])[index] = on ? 1 : 0;
+    for (const m of [this.beadMaterial, this.coarseMaterial])
+      (m.uniforms.uVisible.value as number[])[index] = on ? 1 : 0;
     this.requestRender();
   }
 
@@ -611,7 +736,8 @@ export class ToolpathView {
 
 /** The smallest and largest of some numbers. */
 function rangeOf(values: Float32Array): { min: number; max: number } {
-  let min = Infinity, max = -Infinity;
+  let min = Infinity,
+    max = -Infinity;
   for (const v of values) {
     if (v < min) min = v;
     if (v > max) max = v;

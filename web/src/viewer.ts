@@ -96,7 +96,10 @@ export class Viewer {
   #faceMode = false;
   #bedShape: BedShape | null = null;
 
-  constructor(private container: HTMLElement, private events: ViewerEvents) {
+  constructor(
+    private container: HTMLElement,
+    private events: ViewerEvents,
+  ) {
     this.renderer = new WebGLRenderer({ antialias: true, powerPreference: 'high-performance' });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     this.renderer.setClearColor(0x000000, 0);
@@ -145,7 +148,8 @@ export class Viewer {
   }
 
   #resize(): void {
-    const w = Math.max(1, this.container.clientWidth), h = Math.max(1, this.container.clientHeight);
+    const w = Math.max(1, this.container.clientWidth),
+      h = Math.max(1, this.container.clientHeight);
     this.renderer.setSize(w, h, false);
     this.camera.aspect = w / h;
     this.camera.updateProjectionMatrix();
@@ -166,7 +170,11 @@ export class Viewer {
   /** Show this bed; returns whether it changed (the view then looks at the whole bed). */
   setBed(b: BedShape): boolean {
     const first = this.#bedShape === null;
-    const changed = !this.#bedShape || ['width', 'depth', 'height', 'originAtCenter'].some((k) => this.#bedShape![k as keyof BedShape] !== b[k as keyof BedShape]);
+    const changed =
+      !this.#bedShape ||
+      ['width', 'depth', 'height', 'originAtCenter'].some(
+        (k) => this.#bedShape![k as keyof BedShape] !== b[k as keyof BedShape],
+      );
     this.#bedShape = b;
     if (!changed) return false;
     for (const c of [...this.#bed.children]) {
@@ -174,20 +182,33 @@ export class Viewer {
       const m = c as Mesh;
       m.geometry?.dispose();
     }
-    const x0 = b.originAtCenter ? -b.width / 2 : 0, y0 = b.originAtCenter ? -b.depth / 2 : 0;
-    const plate = new Mesh(new PlaneGeometry(b.width, b.depth), new MeshStandardMaterial({ color: COLOURS.bed, roughness: 0.95 }));
+    const x0 = b.originAtCenter ? -b.width / 2 : 0,
+      y0 = b.originAtCenter ? -b.depth / 2 : 0;
+    const plate = new Mesh(
+      new PlaneGeometry(b.width, b.depth),
+      new MeshStandardMaterial({ color: COLOURS.bed, roughness: 0.95 }),
+    );
     plate.position.set(x0 + b.width / 2, y0 + b.depth / 2, -0.05);
     this.#bed.add(plate);
     // grid: 10 mm lines, darker every 50 mm, from the origin
-    const minor: number[] = [], major: number[] = [];
-    for (let x = Math.ceil(x0 / 10) * 10; x <= x0 + b.width + 1e-6; x += 10) (Math.round(x) % 50 === 0 ? major : minor).push(x, y0, 0, x, y0 + b.depth, 0);
-    for (let y = Math.ceil(y0 / 10) * 10; y <= y0 + b.depth + 1e-6; y += 10) (Math.round(y) % 50 === 0 ? major : minor).push(x0, y, 0, x0 + b.width, y, 0);
-    for (const [pts, colour] of [[minor, COLOURS.grid], [major, COLOURS.gridMajor]] as const) {
+    const minor: number[] = [],
+      major: number[] = [];
+    for (let x = Math.ceil(x0 / 10) * 10; x <= x0 + b.width + 1e-6; x += 10)
+      (Math.round(x) % 50 === 0 ? major : minor).push(x, y0, 0, x, y0 + b.depth, 0);
+    for (let y = Math.ceil(y0 / 10) * 10; y <= y0 + b.depth + 1e-6; y += 10)
+      (Math.round(y) % 50 === 0 ? major : minor).push(x0, y, 0, x0 + b.width, y, 0);
+    for (const [pts, colour] of [
+      [minor, COLOURS.grid],
+      [major, COLOURS.gridMajor],
+    ] as const) {
       const g = new BufferGeometry();
       g.setAttribute('position', new BufferAttribute(new Float32Array(pts), 3));
       this.#bed.add(new LineSegments(g, new LineBasicMaterial({ color: colour })));
     }
-    const volume = new LineSegments(new EdgesGeometry(new BoxGeometry(b.width, b.depth, b.height)), new LineBasicMaterial({ color: COLOURS.volume, transparent: true, opacity: 0.55 }));
+    const volume = new LineSegments(
+      new EdgesGeometry(new BoxGeometry(b.width, b.depth, b.height)),
+      new LineBasicMaterial({ color: COLOURS.volume, transparent: true, opacity: 0.55 }),
+    );
     volume.position.set(x0 + b.width / 2, y0 + b.depth / 2, b.height / 2);
     this.#bed.add(volume);
     if (first || changed) this.home();
@@ -198,7 +219,8 @@ export class Viewer {
   home(): void {
     const b = this.#bedShape;
     if (!b) return;
-    const cx = b.originAtCenter ? 0 : b.width / 2, cy = b.originAtCenter ? 0 : b.depth / 2;
+    const cx = b.originAtCenter ? 0 : b.width / 2,
+      cy = b.originAtCenter ? 0 : b.depth / 2;
     const span = Math.max(b.width, b.depth);
     this.controls.target.set(cx, cy, Math.min(b.height, span) * 0.12);
     this.camera.position.set(cx, cy - span * 1.15, span * 0.8);
@@ -211,7 +233,7 @@ export class Viewer {
     const centre = min.clone().add(max).multiplyScalar(0.5);
     const r = Math.max(minRadius, min.distanceTo(max) / 2);
     const dir = this.camera.position.clone().sub(this.controls.target).normalize();
-    const dist = r / Math.sin((this.camera.fov * Math.PI) / 360) * 1.15;
+    const dist = (r / Math.sin((this.camera.fov * Math.PI) / 360)) * 1.15;
     this.controls.target.copy(centre);
     this.camera.position.copy(centre).addScaledVector(dir, dist);
     this.controls.update();
@@ -234,7 +256,10 @@ export class Viewer {
     for (const o of list) {
       let mesh = this.#meshes.get(o.id);
       if (!mesh) {
-        mesh = new Mesh(geometry(o.positions, o.normals), new MeshStandardMaterial({ color: COLOURS.object, roughness: 0.6, metalness: 0.05 }));
+        mesh = new Mesh(
+          geometry(o.positions, o.normals),
+          new MeshStandardMaterial({ color: COLOURS.object, roughness: 0.6, metalness: 0.05 }),
+        );
         mesh.matrixAutoUpdate = false;
         mesh.userData.id = o.id;
         this.#meshes.set(o.id, mesh);
@@ -263,7 +288,10 @@ export class Viewer {
     for (const v of list) {
       let mesh = this.#volumes.get(key(v));
       if (!mesh) {
-        mesh = new Mesh(new BufferGeometry(), new MeshStandardMaterial({ transparent: true, depthWrite: false, roughness: 0.7 }));
+        mesh = new Mesh(
+          new BufferGeometry(),
+          new MeshStandardMaterial({ transparent: true, depthWrite: false, roughness: 0.7 }),
+        );
         mesh.matrixAutoUpdate = false;
         mesh.renderOrder = 1;
         mesh.userData = { objectId: v.objectId, volumeId: v.volumeId };
@@ -339,7 +367,13 @@ export class Viewer {
       const p = this.#bedPoint(e);
       if (!p) return;
       const centre = this.#meshes.get(id)!.userData.centre as [number, number];
-      drag = { id, grab: p.sub(new Vector3(centre[0], centre[1], 0)), start: centre, moved: false, pointer: e.pointerId };
+      drag = {
+        id,
+        grab: p.sub(new Vector3(centre[0], centre[1], 0)),
+        start: centre,
+        moved: false,
+        pointer: e.pointerId,
+      };
       this.controls.enabled = false;
       el.setPointerCapture(e.pointerId);
     });
@@ -362,7 +396,8 @@ export class Viewer {
     };
     el.addEventListener('pointerup', (e) => {
       const click = down && Math.hypot(e.clientX - down.x, e.clientY - down.y) < 4;
-      if (click && !drag && !this.#faceMode && e.button === 0 && !this.#hit(e) && !this.#hitVolume(e)) this.events.pick(null);
+      if (click && !drag && !this.#faceMode && e.button === 0 && !this.#hit(e) && !this.#hitVolume(e))
+        this.events.pick(null);
       end(e);
     });
     el.addEventListener('pointercancel', end);

@@ -38,10 +38,18 @@ export const VOLUME_KINDS: readonly VolumeKind[] = ['modifier', 'negative', 'sup
 
 /** Words and colours per kind (the 3D view draws volumes translucent in these). */
 export const KIND_INFO: Readonly<Record<VolumeKind, { label: string; colour: string; help: string }>> = {
-  modifier: { label: 'Modifier', colour: '#e9b824', help: 'Inside it, the object prints with the modifier’s settings.' },
+  modifier: {
+    label: 'Modifier',
+    colour: '#e9b824',
+    help: 'Inside it, the object prints with the modifier’s settings.',
+  },
   negative: { label: 'Negative volume', colour: '#8c939c', help: 'Cut out of the object: nothing prints inside it.' },
   'support-blocker': { label: 'Support blocker', colour: '#e0473d', help: 'No support is generated inside it.' },
-  'support-enforcer': { label: 'Support enforcer', colour: '#2f7fe0', help: 'Overhangs inside it get support, even with support turned off.' },
+  'support-enforcer': {
+    label: 'Support enforcer',
+    colour: '#2f7fe0',
+    help: 'Overhangs inside it get support, even with support turned off.',
+  },
 };
 
 export const SHAPE_LABELS: Readonly<Record<VolumeShape, string>> = { box: 'box', cylinder: 'cylinder', mesh: 'mesh' };

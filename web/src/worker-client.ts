@@ -13,7 +13,10 @@ export class Cancelled extends Error {
 export class WorkerClient {
   #worker: Worker | null = null;
   #nextId = 1;
-  #pending = new Map<number, { resolve(r: Reply): void; reject(e: Error): void; progress?: (stage: string, fraction: number) => void }>();
+  #pending = new Map<
+    number,
+    { resolve(r: Reply): void; reject(e: Error): void; progress?: (stage: string, fraction: number) => void }
+  >();
 
   #spawn(): Worker {
     const w = new Worker(new URL('./slice-worker.js', import.meta.url), { type: 'module', name: 'strata' });
@@ -44,7 +47,11 @@ export class WorkerClient {
     for (const p of pending) p.reject(e);
   }
 
-  request<T extends Reply['type']>(msg: Request, transfer: Transferable[] = [], progress?: (stage: string, fraction: number) => void): Promise<Extract<Reply, { type: T }>> {
+  request<T extends Reply['type']>(
+    msg: Request,
+    transfer: Transferable[] = [],
+    progress?: (stage: string, fraction: number) => void,
+  ): Promise<Extract<Reply, { type: T }>> {
     this.#worker ??= this.#spawn();
     const id = this.#nextId++;
     return new Promise((resolve, reject) => {

@@ -5,4 +5,7 @@
 import { listenFirst } from '../../src/workers/listen-first.js';
 import type { ToWorker } from './protocol.js';
 
-listenFirst(globalThis as unknown as { onmessage: ((e: { data: ToWorker }) => void) | null }, async () => (await import('./slice-work.js')).onMessage);
+listenFirst(
+  globalThis as unknown as { onmessage: ((e: { data: ToWorker }) => void) | null },
+  async () => (await import('./slice-work.js')).onMessage,
+);

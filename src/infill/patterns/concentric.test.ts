@@ -14,7 +14,11 @@ test('concentric: loops keep at least ~0.4 spacings from the boundary and are li
       const nb = nearestBoundary(ix, p.x, p.y, 0.3 * s);
       assert.equal(nb, null, `(${p.x}, ${p.y}) is ${nb?.dist} µm from the boundary`);
     }
-    const unlinked = generateInfill('concentric', { layerIndex: 0, z: 0.2, layerHeight: 0.2, region }, testParams(0.3, { connect: false }));
+    const unlinked = generateInfill(
+      'concentric',
+      { layerIndex: 0, z: 0.2, layerHeight: 0.2, region },
+      testParams(0.3, { connect: false }),
+    );
     assert.ok(r.lines.length + r.loops.length < unlinked.lines.length + unlinked.loops.length);
   }
 });

@@ -49,8 +49,11 @@ function depths(sp: number, phase: number, maxDepth: number): number[] {
 
 /** Field maximum over the 6×6 nodes around each cell (±2 nodes beyond its corners): how deep it gets nearby. */
 function nearbyMax(f: DistanceField): Float64Array {
-  const W = f.nx + 1, H = f.ny + 1, R = 2;
-  const rows = new Float64Array(W * H), out = new Float64Array(f.nx * f.ny);
+  const W = f.nx + 1,
+    H = f.ny + 1,
+    R = 2;
+  const rows = new Float64Array(W * H),
+    out = new Float64Array(f.nx * f.ny);
   for (let j = 0; j < H; j++) {
     for (let i = 0; i < W; i++) {
       let m = -Infinity;
@@ -80,11 +83,16 @@ function predictedLength(f: DistanceField, near: Float64Array, sp: number, phase
   for (let j = 0; j < ny; j++) {
     for (let i = 0; i < nx; i++) {
       const n = j * W + i;
-      const a = v[n], b = v[n + 1], c = v[n + W + 1], d = v[n + W];
-      const lo = Math.min(a, b, c, d), hi = Math.max(a, b, c, d);
+      const a = v[n],
+        b = v[n + 1],
+        c = v[n + W + 1],
+        d = v[n + W];
+      const lo = Math.min(a, b, c, d),
+        hi = Math.max(a, b, c, d);
       if (hi <= 0) continue;
       // depths t_k = (k − phase)·sp with lo < t_k ≤ hi
-      const k0 = Math.max(1, Math.floor(lo / sp + phase) + 1), k1 = Math.floor(hi / sp + phase);
+      const k0 = Math.max(1, Math.floor(lo / sp + phase) + 1),
+        k1 = Math.floor(hi / sp + phase);
       for (let k = k0; k <= k1; k++) {
         const t = (k - phase) * sp;
         total += cellLength(a - t, b - t, c - t, d - t) * f.h * (near[j * nx + i] - t < sp / 4 ? 0.5 : 1);
@@ -102,10 +110,15 @@ function cellsByDepth(f: DistanceField, count: number, sp: number, phase: number
   for (let j = 0; j < ny; j++) {
     for (let i = 0; i < nx; i++) {
       const n = j * W + i;
-      const a = v[n], b = v[n + 1], c = v[n + W + 1], d = v[n + W];
-      const lo = Math.min(a, b, c, d), hi = Math.max(a, b, c, d);
+      const a = v[n],
+        b = v[n + 1],
+        c = v[n + W + 1],
+        d = v[n + W];
+      const lo = Math.min(a, b, c, d),
+        hi = Math.max(a, b, c, d);
       if (hi <= 0) continue;
-      const k0 = Math.max(1, Math.floor(lo / sp + phase)), k1 = Math.min(count, Math.floor(hi / sp + phase) + 1);
+      const k0 = Math.max(1, Math.floor(lo / sp + phase)),
+        k1 = Math.min(count, Math.floor(hi / sp + phase) + 1);
       for (let k = k0; k <= k1; k++) out[k - 1].push(j * nx + i);
     }
   }
@@ -117,7 +130,10 @@ const CROSSINGS = new Float64Array(8);
 
 /** Length of the zero set in a unit cell with corner values a (0,0), b (1,0), c (1,1), d (0,1). */
 function cellLength(a: number, b: number, c: number, d: number): number {
-  const sa = a >= 0, sb = b >= 0, sc = c >= 0, sd = d >= 0;
+  const sa = a >= 0,
+    sb = b >= 0,
+    sc = c >= 0,
+    sd = d >= 0;
   const p = CROSSINGS;
   let n = 0;
   if (sa !== sb) {
@@ -150,7 +166,8 @@ function ringLength(pts: readonly Pt[]): number {
 /** One side of a thin loop: from its farthest-apart pair of vertices, the first arc. */
 function oneSide(ring: readonly Pt[]): Pt[] {
   const far = (from: Pt) => {
-    let bi = 0, bd = -1;
+    let bi = 0,
+      bd = -1;
     ring.forEach((p, i) => {
       const d = (p.x - from.x) ** 2 + (p.y - from.y) ** 2;
       if (d > bd) {
@@ -170,7 +187,8 @@ function oneSide(ring: readonly Pt[]): Pt[] {
 function nearestOnRing(ring: readonly Pt[], p: Pt): { i: number; x: number; y: number; d: number } {
   let best = { i: 0, x: ring[0].x, y: ring[0].y, d: Infinity };
   for (let i = 0; i < ring.length; i++) {
-    const a = ring[i], b = ring[(i + 1) % ring.length];
+    const a = ring[i],
+      b = ring[(i + 1) % ring.length];
     const q = closestOnSegment(a.x, a.y, b.x, b.y, p.x, p.y);
     if (q.d2 < best.d * best.d) best = { i, x: q.x, y: q.y, d: Math.sqrt(q.d2) };
   }
@@ -299,7 +317,14 @@ export const concentric: InfillPattern = {
       for (let li = 0; li < ts.length; li++) {
         const t = ts[li];
         const rings: Polygon[] = [];
-        for (const c of traceContours(field, t, centre, (x, y, a, b) => refineToDepth(ix, field, x, y, a, b, t), buckets[li], scratch)) {
+        for (const c of traceContours(
+          field,
+          t,
+          centre,
+          (x, y, a, b) => refineToDepth(ix, field, x, y, a, b, t),
+          buckets[li],
+          scratch,
+        )) {
           const pts: Pt[] = [];
           for (const q of restoreCorners(ix, c.pts, c.closed, 1.5 * field.h)) {
             const p = { x: Math.round(q.x), y: Math.round(q.y) };
@@ -343,7 +368,9 @@ export const concentric: InfillPattern = {
       if (Number.isNaN(c.err)) c.err = Math.abs(predictedLength(field, near, c.sp, c.phase) - target);
       return c.err;
     };
-    const first = cands.find((c) => predict(c) <= GOOD_ENOUGH * target) ?? cands.reduce((a, b) => (predict(b) < predict(a) ? b : a));
+    const first =
+      cands.find((c) => predict(c) <= GOOD_ENOUGH * target) ??
+      cands.reduce((a, b) => (predict(b) < predict(a) ? b : a));
     let chosen = build(first.sp, first.phase);
     if (Math.abs(chosen.printed - target) > TRACED_GOOD_ENOUGH * target) {
       const ranked = cands.filter((c) => c !== first).sort((a, b) => predict(a) - predict(b));

@@ -39,17 +39,24 @@ export const gyroid: InfillPattern = {
   generate(layer, params) {
     const L = gyroidPeriod(params);
     const k = (2 * Math.PI) / L;
-    const phi = ((params.angle - 45) * Math.PI) / 180, c = Math.cos(phi), s = Math.sin(phi);
+    const phi = ((params.angle - 45) * Math.PI) / 180,
+      c = Math.cos(phi),
+      s = Math.sin(phi);
     const o = params.origin;
     const Z = k * (layer.z - layer.layerHeight / 2) * UM_PER_MM;
-    const sz = Math.sin(Z), cz = Math.cos(Z);
+    const sz = Math.sin(Z),
+      cz = Math.cos(Z);
     const { uMin, uMax, vMin, vMax } = frameBounds(layer.region, o, phi);
     if (!(uMin <= uMax)) return { lines: [], loops: [] };
     const h = L / CELLS_PER_PERIOD;
-    const u0 = (Math.floor(uMin / h) - 1) * h, v0 = (Math.floor(vMin / h) - 1) * h;
-    const nx = Math.ceil((uMax - u0) / h) + 1, ny = Math.ceil((vMax - v0) / h) + 1; // cells
-    const sinX = new Float64Array(nx + 1), cosX = new Float64Array(nx + 1);
-    const sinY = new Float64Array(ny + 1), cosY = new Float64Array(ny + 1);
+    const u0 = (Math.floor(uMin / h) - 1) * h,
+      v0 = (Math.floor(vMin / h) - 1) * h;
+    const nx = Math.ceil((uMax - u0) / h) + 1,
+      ny = Math.ceil((vMax - v0) / h) + 1; // cells
+    const sinX = new Float64Array(nx + 1),
+      cosX = new Float64Array(nx + 1);
+    const sinY = new Float64Array(ny + 1),
+      cosY = new Float64Array(ny + 1);
     for (let i = 0; i <= nx; i++) {
       sinX[i] = Math.sin(k * (u0 + i * h));
       cosX[i] = Math.cos(k * (u0 + i * h));
@@ -63,17 +70,25 @@ export const gyroid: InfillPattern = {
     for (let j = 0; j <= ny; j++) {
       for (let i = 0; i <= nx; i++) F[j * W + i] = sinX[i] * cosY[j] + sinY[j] * cz + sz * cosX[i];
     }
-    const field = (u: number, v: number) => Math.sin(k * u) * Math.cos(k * v) + Math.sin(k * v) * cz + sz * Math.cos(k * u);
+    const field = (u: number, v: number) =>
+      Math.sin(k * u) * Math.cos(k * v) + Math.sin(k * v) * cz + sz * Math.cos(k * u);
     const newton = (u0n: number, v0n: number) => {
-      let u = u0n, v = v0n;
+      let u = u0n,
+        v = v0n;
       for (let it = 0; it < NEWTON_STEPS; it++) {
-        const X = k * u, Y = k * v;
-        const sX = Math.sin(X), cX = Math.cos(X), sY = Math.sin(Y), cY = Math.cos(Y);
+        const X = k * u,
+          Y = k * v;
+        const sX = Math.sin(X),
+          cX = Math.cos(X),
+          sY = Math.sin(Y),
+          cY = Math.cos(Y);
         const g = sX * cY + sY * cz + sz * cX;
-        const gu = k * (cX * cY - sz * sX), gv = k * (cY * cz - sX * sY);
+        const gu = k * (cX * cY - sz * sX),
+          gv = k * (cY * cz - sX * sY);
         const g2 = gu * gu + gv * gv;
         if (g2 < 1e-30) break;
-        let du = (g * gu) / g2, dv = (g * gv) / g2;
+        let du = (g * gu) / g2,
+          dv = (g * gv) / g2;
         const step = hypot(du, dv);
         if (step > h / 2) {
           du *= h / 2 / step;

@@ -38,25 +38,31 @@ export const hexagons: InfillPattern = {
     const a = hexSide(params.density, w);
     const A = (a * Math.sqrt(3)) / 4;
     const Ap = Math.max(0, A - w / 2);
-    const th = (params.angle * Math.PI) / 180, c = Math.cos(th), s = Math.sin(th);
+    const th = (params.angle * Math.PI) / 180,
+      c = Math.cos(th),
+      s = Math.sin(th);
     const o = params.origin;
     const { uMin, uMax, vMin, vMax } = frameBounds(layer.region, o, th);
     const lines: Pt[][] = [];
     if (!(uMin <= uMax)) return { lines, loops: [] };
     // put a cell centre on the origin: cells sit at (2a, A) in chain-0 coordinates
-    const u0 = -2 * a, v0 = -A;
-    const kLo = Math.floor((vMin - v0 - 2 * A) / (2 * A)), kHi = Math.ceil((vMax - v0 + 2 * A) / (2 * A));
+    const u0 = -2 * a,
+      v0 = -A;
+    const kLo = Math.floor((vMin - v0 - 2 * A) / (2 * A)),
+      kHi = Math.ceil((vMax - v0 + 2 * A) / (2 * A));
     const P = 3 * a;
     const du = [0, a, 1.5 * a, 2.5 * a];
     const dv = [Ap, Ap, -Ap, -Ap];
     for (let k = kLo; k <= kHi; k++) {
       const vk = v0 + 2 * A * k;
       const uk = u0 + 1.5 * a * k;
-      const jLo = Math.floor((uMin - uk) / P) - 1, jHi = Math.ceil((uMax - uk) / P) + 1;
+      const jLo = Math.floor((uMin - uk) / P) - 1,
+        jHi = Math.ceil((uMax - uk) / P) + 1;
       const pts: Pt[] = [];
       for (let j = jLo; j <= jHi; j++) {
         for (let q = 0; q < 4; q++) {
-          const u = uk + j * P + du[q], v = vk + dv[q];
+          const u = uk + j * P + du[q],
+            v = vk + dv[q];
           pts.push({ x: o.x + u * c - v * s, y: o.y + u * s + v * c });
         }
       }

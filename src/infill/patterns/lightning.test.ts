@@ -14,7 +14,17 @@ const PATCH_LAYER = 40;
 const H = 0.2;
 
 function rect(x0: number, y0: number, x1: number, y1: number): ExPolygon[] {
-  return [{ outer: [{ x: x0, y: y0 }, { x: x1, y: y0 }, { x: x1, y: y1 }, { x: x0, y: y1 }], holes: [] }];
+  return [
+    {
+      outer: [
+        { x: x0, y: y0 },
+        { x: x1, y: y0 },
+        { x: x1, y: y1 },
+        { x: x0, y: y1 },
+      ],
+      holes: [],
+    },
+  ];
 }
 
 function model(need: (i: number) => ExPolygon[]): InfillModelInput {
@@ -27,8 +37,11 @@ function distToSegments(p: Pt, lines: readonly Pt[][]): number {
   let best = Infinity;
   for (const l of lines) {
     for (let i = 1; i < l.length; i++) {
-      const a = l[i - 1], b = l[i];
-      const ux = b.x - a.x, uy = b.y - a.y, l2 = ux * ux + uy * uy;
+      const a = l[i - 1],
+        b = l[i];
+      const ux = b.x - a.x,
+        uy = b.y - a.y,
+        l2 = ux * ux + uy * uy;
       const t = l2 > 0 ? Math.max(0, Math.min(1, ((p.x - a.x) * ux + (p.y - a.y) * uy) / l2)) : 0;
       best = Math.min(best, Math.hypot(a.x + t * ux - p.x, a.y + t * uy - p.y));
     }
@@ -80,17 +93,20 @@ test('lightning is confined to the patch support cone: it shrinks going down, ea
       }
     }
     // and near the patch: within the reach of its branches to the wall (the patch's left edge is 6 mm in)
-    for (const p of points(results[i].lines)) assert.ok(p.x <= c.x - 3_000 + R && Math.abs(p.y - c.y) <= 2_000 + 2 * R, `layer ${i}: (${p.x}, ${p.y})`);
+    for (const p of points(results[i].lines))
+      assert.ok(p.x <= c.x - 3_000 + R && Math.abs(p.y - c.y) <= 2_000 + 2 * R, `layer ${i}: (${p.x}, ${p.y})`);
   }
   // the cone closes towards the wall: 40 layers down, the tips have retracted by 40 prune steps at least
-  const top = pathLength(results[PATCH_LAYER]), bottom = pathLength(results[0]);
+  const top = pathLength(results[PATCH_LAYER]),
+    bottom = pathLength(results[0]);
   assert.ok(bottom <= top - PATCH_LAYER * prune && bottom < 0.5 * top, `${bottom} vs ${top}`);
 });
 
 test('lightning uses much less material than grid under a full top skin', () => {
   const full = model((i) => (i === LAYERS - 1 ? square() : []));
   const prep = PATTERNS.lightning.prepare!(full, params);
-  let lightning = 0, grid = 0;
+  let lightning = 0,
+    grid = 0;
   full.layers.forEach((l, i) => {
     lightning += pathLength(generateInfill('lightning', l, params, prep[i]));
     grid += pathLength(generateInfill('grid', l, params));
@@ -101,12 +117,26 @@ test('lightning uses much less material than grid under a full top skin', () => 
 test('lightning branches stay inside a region with holes and follow a shrinking region', () => {
   const region = (i: number): ExPolygon[] => {
     const shrink = i * 100;
-    return [{
-      outer: rect(c.x - 15_000 + shrink, c.y - 15_000, c.x + 15_000 - shrink, c.y + 15_000)[0].outer,
-      holes: [[{ x: c.x - 3_000, y: c.y - 3_000 }, { x: c.x - 3_000, y: c.y + 3_000 }, { x: c.x + 3_000, y: c.y + 3_000 }, { x: c.x + 3_000, y: c.y - 3_000 }]],
-    }];
+    return [
+      {
+        outer: rect(c.x - 15_000 + shrink, c.y - 15_000, c.x + 15_000 - shrink, c.y + 15_000)[0].outer,
+        holes: [
+          [
+            { x: c.x - 3_000, y: c.y - 3_000 },
+            { x: c.x - 3_000, y: c.y + 3_000 },
+            { x: c.x + 3_000, y: c.y + 3_000 },
+            { x: c.x + 3_000, y: c.y - 3_000 },
+          ],
+        ],
+      },
+    ];
   };
-  const layers = Array.from({ length: 30 }, (_, i) => ({ layerIndex: i, z: H * (i + 1), layerHeight: H, region: region(i) }));
+  const layers = Array.from({ length: 30 }, (_, i) => ({
+    layerIndex: i,
+    z: H * (i + 1),
+    layerHeight: H,
+    region: region(i),
+  }));
   const m: InfillModelInput = { layers, supportNeeded: layers.map((l, i) => (i === 29 ? l.region : [])) };
   const prep = PATTERNS.lightning.prepare!(m, params);
   for (let i = 0; i < 30; i++) {

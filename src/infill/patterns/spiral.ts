@@ -14,12 +14,16 @@ const CHORD_TOLERANCE_UM = 5;
 
 /** Area centroid of an island (outer minus holes). */
 export function islandCentroid(outer: readonly Pt[], holes: readonly (readonly Pt[])[]): Pt {
-  let A = 0, cx = 0, cy = 0;
+  let A = 0,
+    cx = 0,
+    cy = 0;
   for (const ring of [outer, ...holes]) {
     const sign = ring === outer ? 1 : -1;
     const a = Math.abs(ringArea(ring));
     if (a === 0) continue;
-    let rx = 0, ry = 0, ra = 0;
+    let rx = 0,
+      ry = 0,
+      ra = 0;
     for (let i = 0, j = ring.length - 1; i < ring.length; j = i++) {
       const cr = ring[j].x * ring[i].y - ring[i].x * ring[j].y;
       ra += cr;
@@ -52,7 +56,8 @@ export const spiral: InfillPattern = {
       while (th < thetaMax) {
         const r = (sp * th) / (2 * Math.PI);
         // sagitta of a chord over dθ at radius r is r(1 − cos(dθ/2)) ≈ r·dθ²/8
-        const dth = r > CHORD_TOLERANCE_UM ? Math.min(Math.PI / 8, Math.sqrt((8 * CHORD_TOLERANCE_UM) / r)) : Math.PI / 8;
+        const dth =
+          r > CHORD_TOLERANCE_UM ? Math.min(Math.PI / 8, Math.sqrt((8 * CHORD_TOLERANCE_UM) / r)) : Math.PI / 8;
         th = Math.min(thetaMax, th + dth);
         const rr = (sp * th) / (2 * Math.PI);
         pts.push({ x: c.x + rr * Math.cos(th + a0), y: c.y + rr * Math.sin(th + a0) });

@@ -32,7 +32,11 @@ function* supportAreas(layers: readonly LayerRegions[], cfg: Config): Generator<
  * has overhangs only where its support is on or enforced (the regions stage), so this holds up exactly those.
  * One object: `support` as before. Several: `supports[o]` per object and `support` all of them together.
  */
-export function* objectsSupportPass(layers: LayerRegions[], configs: readonly Config[], objectConfigs: readonly number[]): Generator<void, void> {
+export function* objectsSupportPass(
+  layers: LayerRegions[],
+  configs: readonly Config[],
+  objectConfigs: readonly number[],
+): Generator<void, void> {
   if (!layers.some((l) => l.overhangs)) {
     const areas = yield* supportAreas(layers, configs[objectConfigs[0] ?? 0]);
     if (areas) for (let j = 0; j < layers.length; j++) layers[j].support = areas[j];

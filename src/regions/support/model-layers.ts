@@ -51,9 +51,12 @@ export class ModelLayers {
     }
     // a gap given in mm is as many layers as fit (a layer counts when its middle lies within it); none given is one layer
     const heights = Int32Array.from(layers, (l) => Math.round(l.height * 1000));
-    const topMm = cfg.supportZGap, bottomMm = cfg.supportBottomZGap ?? cfg.supportZGap;
+    const topMm = cfg.supportZGap,
+      bottomMm = cfg.supportBottomZGap ?? cfg.supportZGap;
     const n = layers.length;
-    const top = new Int32Array(n), topOf = new Int32Array(n), bottom = new Int32Array(n);
+    const top = new Int32Array(n),
+      topOf = new Int32Array(n),
+      bottom = new Int32Array(n);
     for (let j = 0; j < n; j++) {
       top[j] = topMm === null ? 1 : gapLayers(heights, j, topMm, 1);
       topOf[j] = j - 1 - (topMm === null ? 1 : gapLayers(heights, j, topMm, -1));
@@ -65,12 +68,16 @@ export class ModelLayers {
 
   /** Layers of the top Z gap over support layer j (between its top and the part). */
   topGap(j: number): number {
-    return this.#gaps ? this.#gaps.top[Math.max(0, Math.min(j, this.#gaps.top.length - 1))] : this.cfg.supportTopGapLayers;
+    return this.#gaps
+      ? this.#gaps.top[Math.max(0, Math.min(j, this.#gaps.top.length - 1))]
+      : this.cfg.supportTopGapLayers;
   }
 
   /** The layer support under the overhang of layer m reaches up to, below its top Z gap (negative: none fits). */
   supportTop(m: number): number {
-    return this.#gaps && m >= 0 && m < this.#gaps.topOf.length ? this.#gaps.topOf[m] : m - 1 - this.cfg.supportTopGapLayers;
+    return this.#gaps && m >= 0 && m < this.#gaps.topOf.length
+      ? this.#gaps.topOf[m]
+      : m - 1 - this.cfg.supportTopGapLayers;
   }
 
   /**
@@ -90,7 +97,9 @@ export class ModelLayers {
 
   /** Layers of the bottom Z gap under support layer j (between the part below and the support). */
   bottomGap(j: number): number {
-    return this.#gaps ? this.#gaps.bottom[Math.max(0, Math.min(j, this.#gaps.bottom.length - 1))] : this.cfg.supportBottomGapLayers;
+    return this.#gaps
+      ? this.#gaps.bottom[Math.max(0, Math.min(j, this.#gaps.bottom.length - 1))]
+      : this.cfg.supportBottomGapLayers;
   }
 
   get count(): number {
@@ -145,7 +154,8 @@ export class ModelLayers {
     if (o.length === 0 || span <= 0) return o;
     const below = this.section(m - 1);
     // the overhang starts this far out from the layer below: anchors are sought a line width beyond that
-    const reach = this.layers[m].height * UM_PER_MM * Math.tan((this.cfg.supportThreshold * Math.PI) / 180) + this.widthUm;
+    const reach =
+      this.layers[m].height * UM_PER_MM * Math.tan((this.cfg.supportThreshold * Math.PI) / 180) + this.widthUm;
     return o.filter((piece) => !isShortBridge(piece, below, span, reach));
   }
 
@@ -174,7 +184,8 @@ export class ModelLayers {
   gapOverhang(): ExPolygon[] {
     if (!this.#gapOver) {
       this.#gapOver = [];
-      for (let m = 1; m < this.count && this.supportTop(m) < 0; m++) for (const p of this.overhang(m)) this.#gapOver.push(p);
+      for (let m = 1; m < this.count && this.supportTop(m) < 0; m++)
+        for (const p of this.overhang(m)) this.#gapOver.push(p);
     }
     return this.#gapOver;
   }
@@ -214,10 +225,14 @@ export class ModelLayers {
     const cfg = this.cfg;
     if (s.length === 0) return { body: [], roof: [], floor: [] };
     const top = this.topGap(j);
-    const roofAbove = cfg.supportInterfaceLayers > 0 ? this.sectionsBetween(j, 1, top + cfg.supportInterfaceLayers) : [];
+    const roofAbove =
+      cfg.supportInterfaceLayers > 0 ? this.sectionsBetween(j, 1, top + cfg.supportInterfaceLayers) : [];
     const roof = roofAbove.length ? intersection(s, roofAbove) : [];
     const bottom = this.bottomGap(j);
-    const floorBelow = cfg.supportFloorLayerCount > 0 && cfg.supportPlacement === 'everywhere' ? this.sectionsBetween(j, -(bottom + cfg.supportFloorLayerCount), -(bottom + 1)) : [];
+    const floorBelow =
+      cfg.supportFloorLayerCount > 0 && cfg.supportPlacement === 'everywhere'
+        ? this.sectionsBetween(j, -(bottom + cfg.supportFloorLayerCount), -(bottom + 1))
+        : [];
     let floor = floorBelow.length ? intersection(s, floorBelow) : [];
     if (roof.length && floor.length) floor = difference(floor, roof);
     const dense = roof.length && floor.length ? union(roof, floor) : roof.length ? roof : floor;
@@ -232,7 +247,8 @@ export class ModelLayers {
  */
 function gapLayers(heightsUm: Int32Array, j: number, gapMm: number, dir: 1 | -1): number {
   const gap = gapMm * 1000 + 1e-6;
-  let k = 0, below = 0;
+  let k = 0,
+    below = 0;
   for (let i = j + dir; i >= 0 && i < heightsUm.length; i += dir) {
     if (below + heightsUm[i] / 2 > gap) return k;
     below += heightsUm[i];

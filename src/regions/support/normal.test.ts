@@ -30,7 +30,10 @@ test('normal support: columns under the overhang, the XY gap from the post, the 
     const s = all(layers[j]);
     // holds up the table top all round the post (and half a line beyond its edge), keeps 0.6 mm from it
     const expected = area(offset([top], 200)) - area(offset([post], 600));
-    assert.ok(Math.abs(area(s) - expected) / expected < 0.03, `layer ${j}: support ${area(s) / 1e6} mm², expected ${expected / 1e6}`);
+    assert.ok(
+      Math.abs(area(s) - expected) / expected < 0.03,
+      `layer ${j}: support ${area(s) / 1e6} mm², expected ${expected / 1e6}`,
+    );
     assert.equal(area(intersection(s, offset([post], 590))), 0, `layer ${j}: XY gap`);
     assert.ok(layers[j].support!.body.length > 0, `layer ${j}: body`);
   }
@@ -54,7 +57,10 @@ test('support stands on the part in everywhere placement (bottom gap and floor),
   const plate = resolveConfig({ supportEnabled: true, supportPlacement: 'buildPlate' });
   const b = layersOf(40, at, plate);
   drain(supportPass(b, plate));
-  assert.ok(b.every((l) => l.support === null), 'buildPlate: the ledge stands over the step, so nothing reaches the bed');
+  assert.ok(
+    b.every((l) => l.support === null),
+    'buildPlate: the ledge stands over the step, so nothing reaches the bed',
+  );
 });
 
 test('support reaches under a sloping surface (a cone standing on its tip), close to it but never inside', () => {
@@ -63,7 +69,8 @@ test('support reaches under a sloping surface (a cone standing on its tip), clos
   const cfg = resolveConfig({ supportEnabled: true });
   const layers = layersOf(40, cone, cfg);
   drain(supportPass(layers, cfg));
-  let over = 0, held = 0;
+  let over = 0,
+    held = 0;
   for (let j = 2; j < 40; j++) {
     const o = layers[j].overhang;
     over += area(o);
@@ -85,7 +92,10 @@ test('short bridges are left unsupported when supportSkipBridges allows their sp
   const skip = resolveConfig({ supportEnabled: true, supportSkipBridges: 8 });
   const b = layersOf(25, at, skip);
   drain(supportPass(b, skip));
-  assert.ok(b.every((l) => l.support === null), 'a 6 mm bridge is left to bridge at supportSkipBridges 8');
+  assert.ok(
+    b.every((l) => l.support === null),
+    'a 6 mm bridge is left to bridge at supportSkipBridges 8',
+  );
   const short = resolveConfig({ supportEnabled: true, supportSkipBridges: 4 });
   const c = layersOf(25, at, short);
   drain(supportPass(c, short));
@@ -105,9 +115,13 @@ test('the overhang of the second layer (a part whose first layer is smaller) get
     const s = all(layers[0]);
     // under the ledge, from half a line off the first layer out to its edge: the zero Z gap the first layer allows
     const ledge = difference([big], offset([small], 200));
-    assert.ok(area(intersection(s, ledge)) > 0.95 * area(ledge), `${supportType}: ledge held ${(area(intersection(s, ledge)) / 1e6).toFixed(1)} of ${(area(ledge) / 1e6).toFixed(1)} mm²`);
+    assert.ok(
+      area(intersection(s, ledge)) > 0.95 * area(ledge),
+      `${supportType}: ledge held ${(area(intersection(s, ledge)) / 1e6).toFixed(1)} of ${(area(ledge) / 1e6).toFixed(1)} mm²`,
+    );
     assert.equal(area(intersection(s, offset([small], 190))), 0, `${supportType}: support keeps off the first layer`);
-    for (let j = 1; j < 20; j++) assert.equal(layers[j].support, null, `${supportType}: nothing above the first layer (layer ${j})`);
+    for (let j = 1; j < 20; j++)
+      assert.equal(layers[j].support, null, `${supportType}: nothing above the first layer (layer ${j})`);
   }
 });
 
@@ -115,11 +129,18 @@ test('with uneven layers the Z gaps are in mm: 0.3 mm over 0.1 mm layers is thre
   // layers of 0.3 mm up to layer 29, then 0.1 mm ones; the table top from layer 40 (a gap of 0.2 mm would round to 2 layers of 0.2)
   const heightOf = (j: number) => (j === 0 ? 0.2 : j < 30 ? 0.3 : 0.1);
   for (const supportType of ['normal', 'tree'] as const) {
-    const cfg = resolveConfig({ supportEnabled: true, supportType, supportZGap: 0.3, supportBottomZGap: 0.3, supportInterfaceLayers: 2 });
+    const cfg = resolveConfig({
+      supportEnabled: true,
+      supportType,
+      supportZGap: 0.3,
+      supportBottomZGap: 0.3,
+      supportInterfaceLayers: 2,
+    });
     assert.equal(cfg.supportTopGapLayers, 2, 'the config counts layers of layerHeight');
     const layers = layersOf(50, table, cfg, heightOf);
     drain(supportPass(layers, cfg));
-    for (const j of [37, 38, 39]) assert.equal(layers[j].support, null, `${supportType}: layer ${j} in the 0.3 mm top gap`);
+    for (const j of [37, 38, 39])
+      assert.equal(layers[j].support, null, `${supportType}: layer ${j} in the 0.3 mm top gap`);
     assert.ok(area(all(layers[36])) > 0, `${supportType}: support right under the gap`);
     assert.ok(area(layers[36].support!.roof) > 0, `${supportType}: roof`);
   }

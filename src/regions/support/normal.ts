@@ -28,7 +28,12 @@ export function* normalSupport(model: ModelLayers): Generator<void, SupportAreas
     // the first layer also holds the overhang within the top Z gap over it, with no gap (there is no room for one)
     // (with uneven layers, the overhang of every layer whose top Z gap ends at j: none, one or several)
     const over = model.overhangLayersOver(j);
-    const rawFresh = j > 0 ? (over.length === 1 ? model.overhang(over[0]) : over.flatMap((m) => model.overhang(m))) : [...model.gapOverhang(), ...over.flatMap((m) => model.overhang(m))];
+    const rawFresh =
+      j > 0
+        ? over.length === 1
+          ? model.overhang(over[0])
+          : over.flatMap((m) => model.overhang(m))
+        : [...model.gapOverhang(), ...over.flatMap((m) => model.overhang(m))];
     const fresh = rawFresh.length && EXPAND_WIDTHS > 0 ? offset(rawFresh, EXPAND_WIDTHS * w) : rawFresh;
     // merging columns closer than the join distance also unions the fresh overhang into them
     let s = fresh.length ? closing(carried.length ? [...carried, ...fresh] : fresh, join) : carried;

@@ -5,11 +5,27 @@ import { overhangOf } from '../overhang.js';
 import type { IslandRegions, LayerRegions } from '../types.js';
 
 const island = (outline: ExPolygon): IslandRegions => ({
-  object: 0, region: 0, outline, walls: [], lostMm2: 0, topSkin: [], bottomSkin: [], exposed: [], bridge: [], bridgeAngle: null, sparse: [], unsupported: [],
+  object: 0,
+  region: 0,
+  outline,
+  walls: [],
+  lostMm2: 0,
+  topSkin: [],
+  bottomSkin: [],
+  exposed: [],
+  bridge: [],
+  bridgeAngle: null,
+  sparse: [],
+  unsupported: [],
 });
 
 /** `sectionAt(j)` for layers 0..count-1, heights from the config, overhangs found as the regions stage does. */
-export function layersOf(count: number, sectionAt: (j: number) => ExPolygon[], cfg: Config, heightOf?: (j: number) => number): LayerRegions[] {
+export function layersOf(
+  count: number,
+  sectionAt: (j: number) => ExPolygon[],
+  cfg: Config,
+  heightOf?: (j: number) => number,
+): LayerRegions[] {
   const out: LayerRegions[] = [];
   let zUm = 0;
   for (let j = 0; j < count; j++) {
@@ -18,7 +34,15 @@ export function layersOf(count: number, sectionAt: (j: number) => ExPolygon[], c
     zUm += Math.round(h * 1000);
     const z = heightOf ? zUm / 1000 : cfg.firstLayerHeight + j * cfg.layerHeight;
     const s = sectionAt(j);
-    out.push({ index: j, z, height: h, sliceZ: z - h / 2, islands: s.map(island), overhang: overhangOf(s, j > 0 ? sectionAt(j - 1) : [], h, cfg, j === 0), support: null });
+    out.push({
+      index: j,
+      z,
+      height: h,
+      sliceZ: z - h / 2,
+      islands: s.map(island),
+      overhang: overhangOf(s, j > 0 ? sectionAt(j - 1) : [], h, cfg, j === 0),
+      support: null,
+    });
   }
   return out;
 }

@@ -20,7 +20,6 @@ export interface Box {
   z: [number, number];
 }
 
-
 /** A box on a thin post: a 16 mm square plate 3 mm thick on a 4 mm square post 10 mm high. It overhangs all round. */
 export const BOX_ON_POST: Box[] = [
   { x: [-2, 2], y: [-2, 2], z: [0, 10] },
@@ -49,7 +48,9 @@ export const LEDGE_OVER_WIDE_STEP: Box[] = [
 
 /** The model's section at height z (mm), µm. */
 export function sectionAt(boxes: readonly Box[], z: number): ExPolygon[] {
-  const pieces = boxes.filter((b) => z > b.z[0] && z < b.z[1]).map((b) => rect(b.x[0] * UM_PER_MM, b.y[0] * UM_PER_MM, b.x[1] * UM_PER_MM, b.y[1] * UM_PER_MM));
+  const pieces = boxes
+    .filter((b) => z > b.z[0] && z < b.z[1])
+    .map((b) => rect(b.x[0] * UM_PER_MM, b.y[0] * UM_PER_MM, b.x[1] * UM_PER_MM, b.y[1] * UM_PER_MM));
   return pieces.length ? union(pieces) : [];
 }
 
@@ -57,7 +58,11 @@ export function sectionAt(boxes: readonly Box[], z: number): ExPolygon[] {
 export function boxLayers(boxes: readonly Box[], cfg: Config): LayerRegions[] {
   const height = Math.max(...boxes.map((b) => b.z[1]));
   const count = Math.round((height - cfg.firstLayerHeight) / cfg.layerHeight) + 1;
-  return layersOf(count, (j) => sectionAt(boxes, j === 0 ? cfg.firstLayerHeight / 2 : cfg.firstLayerHeight + (j - 0.5) * cfg.layerHeight), cfg);
+  return layersOf(
+    count,
+    (j) => sectionAt(boxes, j === 0 ? cfg.firstLayerHeight / 2 : cfg.firstLayerHeight + (j - 0.5) * cfg.layerHeight),
+    cfg,
+  );
 }
 
 export function supportConfig(options: SliceOptions = {}): Config {
@@ -82,7 +87,10 @@ export function supportArea(layer: LayerRegions): ExPolygon[] {
 export function samplePoints(areas: readonly ExPolygon[], stepUm: number): Pt[] {
   const out: Pt[] = [];
   for (const a of areas) {
-    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    let minX = Infinity,
+      minY = Infinity,
+      maxX = -Infinity,
+      maxY = -Infinity;
     for (const p of a.outer) {
       minX = Math.min(minX, p.x);
       maxX = Math.max(maxX, p.x);
@@ -102,8 +110,14 @@ export function samplePoints(areas: readonly ExPolygon[], stepUm: number): Pt[] 
  * The share of the overhang points (lattice 0.5 mm) that have support right under the top Z gap (within
  * `tolUm`), counting only points support may reach: outside the part's collision on that layer.
  */
-export function heldShare(layers: readonly LayerRegions[], cfg: Config, collision: (j: number) => ExPolygon[], tolUm: number): { held: number; total: number; missed: Pt[] } {
-  let held = 0, total = 0;
+export function heldShare(
+  layers: readonly LayerRegions[],
+  cfg: Config,
+  collision: (j: number) => ExPolygon[],
+  tolUm: number,
+): { held: number; total: number; missed: Pt[] } {
+  let held = 0,
+    total = 0;
   const missed: Pt[] = [];
   for (let m = 1; m < layers.length; m++) {
     if (layers[m].overhang.length === 0) continue;

@@ -4,7 +4,16 @@ import { AreaIndex } from '../../geometry/area-index.js';
 import { drawLayer, type Disc } from './tree-draw.js';
 
 function draw(discs: Disc[]) {
-  const steps = drawLayer({ discs, roof: [], base: null, roofReachUm: 0, collision: [], gapBelow: [], gapIndex: () => new AreaIndex([]), widthUm: 400 });
+  const steps = drawLayer({
+    discs,
+    roof: [],
+    base: null,
+    roofReachUm: 0,
+    collision: [],
+    gapBelow: [],
+    gapIndex: () => new AreaIndex([]),
+    widthUm: 400,
+  });
   for (;;) {
     const s = steps.next();
     if (s.done) return s.value;

@@ -71,7 +71,8 @@ export function meetsAny(box: Bounds, boxes: readonly Bounds[]): boolean {
 export function cutAway(a: readonly ExPolygon[], b: readonly ExPolygon[]): ExPolygon[] {
   if (a.length === 0 || b.length === 0) return a.slice();
   const boxes = b.map((x) => boundsOf([x]));
-  const near: ExPolygon[] = [], far: ExPolygon[] = [];
+  const near: ExPolygon[] = [],
+    far: ExPolygon[] = [];
   for (const x of a) (meetsAny(boundsOf([x]), boxes) ? near : far).push(x);
   return near.length ? [...difference(near, b), ...far] : far;
 }
@@ -97,7 +98,9 @@ export function carried(roof: readonly ExPolygon[], base: readonly ExPolygon[], 
     else if (index.meets(r) || r.outer.some((p) => index.edgeWithin(p.x, p.y, reach))) out.push(r);
   }
   if (large.length) {
-    const boxes = large.map((x) => boundsOf([x])).map((b) => ({ minX: b.minX - reach, minY: b.minY - reach, maxX: b.maxX + reach, maxY: b.maxY + reach }));
+    const boxes = large
+      .map((x) => boundsOf([x]))
+      .map((b) => ({ minX: b.minX - reach, minY: b.minY - reach, maxX: b.maxX + reach, maxY: b.maxY + reach }));
     const under = base.filter((_, i) => meetsAny(baseBoxes[i], boxes));
     if (under.length) for (const a of intersection(large, offset(under, reach))) out.push(a);
   }
@@ -153,7 +156,12 @@ function drawClusters(w: Drawing, groups: readonly Disc[][], g: number, counted:
     let fine = true;
     for (let k = 0; k < cluster.length && fine; k++) {
       const c = cluster[k];
-      fine = c.clear && c.r >= w.minR && Math.PI * c.r * c.r >= d.widthUm * d.widthUm && !w.roofIndex?.meetsDisc(c.x, c.y, c.r) && !w.onPart(c);
+      fine =
+        c.clear &&
+        c.r >= w.minR &&
+        Math.PI * c.r * c.r >= d.widthUm * d.widthUm &&
+        !w.roofIndex?.meetsDisc(c.x, c.y, c.r) &&
+        !w.onPart(c);
     }
     if (cluster.length === 1) {
       // a lone branch (most of them): its circle as it is
@@ -164,7 +172,8 @@ function drawClusters(w: Drawing, groups: readonly Disc[][], g: number, counted:
       continue;
     }
     // a circle inside another of its cluster adds nothing to their union
-    let left = 0, last = cluster[0];
+    let left = 0,
+      last = cluster[0];
     for (let k = 0; k < cluster.length; k++) {
       if (insideAnother(cluster[k], cluster)) continue;
       left++;
@@ -192,12 +201,20 @@ export function* drawLayer(d: DrawLayer): Generator<void, DrawnLayer> {
   const gapBoxes = d.gapBelow.map((x) => boundsOf([x]));
   let gapIndex: AreaIndex | null = null;
   const onPart = (c: Disc) =>
-    meetsAny({ minX: c.x - c.r, minY: c.y - c.r, maxX: c.x + c.r, maxY: c.y + c.r }, gapBoxes) && (gapIndex ??= d.gapIndex()).meetsDisc(c.x, c.y, c.r);
+    meetsAny({ minX: c.x - c.r, minY: c.y - c.r, maxX: c.x + c.r, maxY: c.y + c.r }, gapBoxes) &&
+    (gapIndex ??= d.gapIndex()).meetsDisc(c.x, c.y, c.r);
   // clusters of overlapping circles clear of the collision, printable, and touching neither the roof nor
   // the part below need only their union; the rest are cut to what may and can be printed
   const w: Drawing = {
-    d, roofIndex: roof.length ? new AreaIndex(roof) : null, onPart, minR: (MIN_SUPPORT_WIDTHS * d.widthUm) / 2,
-    free: [], circles: [], freeRings: [], rest: [], count: 0,
+    d,
+    roofIndex: roof.length ? new AreaIndex(roof) : null,
+    onPart,
+    minR: (MIN_SUPPORT_WIDTHS * d.widthUm) / 2,
+    free: [],
+    circles: [],
+    freeRings: [],
+    rest: [],
+    count: 0,
   };
   const groups = clusters(d.discs);
   for (let g = drawClusters(w, groups, 0, false); g < groups.length; g = drawClusters(w, groups, g, true)) yield;
@@ -223,7 +240,8 @@ function insideAnother(c: Disc, cluster: readonly Disc[]): boolean {
 /** The discs in groups that overlap (each group in the discs' order, groups by their first disc). */
 export function clusters(discs: readonly Disc[]): Disc[][] {
   const widest = discs.reduce((w, c) => Math.max(w, c.r), 0);
-  const xs = new Float64Array(discs.length), ys = new Float64Array(discs.length);
+  const xs = new Float64Array(discs.length),
+    ys = new Float64Array(discs.length);
   for (let i = 0; i < discs.length; i++) {
     xs[i] = discs[i].x;
     ys[i] = discs[i].y;
@@ -242,7 +260,8 @@ export function clusters(discs: readonly Disc[]): Disc[][] {
     for (let f = 0; f < count; f++) {
       const k = found[f];
       if (k <= i || hypot(discs[k].x - c.x, discs[k].y - c.y) > c.r + discs[k].r) continue;
-      const a = find(i), b = find(k);
+      const a = find(i),
+        b = find(k);
       if (a !== b) root[Math.max(a, b)] = Math.min(a, b);
     }
   }

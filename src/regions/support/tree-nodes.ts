@@ -79,9 +79,14 @@ function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
 }
 
 /** Pairs of nearby nodes of one group (each node with its nearest few within range) as [a, b, distance], shortest first. */
-export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], rangeUm: number): [number, number, number][] {
+export function nearPairs(
+  nodes: readonly TreeNode[],
+  ids: readonly number[],
+  rangeUm: number,
+): [number, number, number][] {
   if (ids.length < 2 || rangeUm <= 0) return [];
-  const xs = new Float64Array(ids.length), ys = new Float64Array(ids.length);
+  const xs = new Float64Array(ids.length),
+    ys = new Float64Array(ids.length);
   for (let k = 0; k < ids.length; k++) {
     xs[k] = nodes[ids[k]].x;
     ys[k] = nodes[ids[k]].y;
@@ -94,7 +99,8 @@ export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], ra
   const bestId = new Int32Array(NEAR_COUNT);
   const bestD = new Float64Array(NEAR_COUNT);
   for (let a = 0; a < ids.length; a++) {
-    const x = grid.xs[a], y = grid.ys[a];
+    const x = grid.xs[a],
+      y = grid.ys[a];
     // the nearest few are usually close: look further only when they are not
     let count = grid.near(x, y, Math.min(rangeUm, NEAR_FIRST_UM), found);
     if (count <= NEAR_COUNT && rangeUm > NEAR_FIRST_UM) count = grid.near(x, y, rangeUm, found);
@@ -115,7 +121,8 @@ export function nearPairs(nodes: readonly TreeNode[], ids: readonly number[], ra
     }
     for (let k = 0; k < kept; k++) {
       const b = bestId[k];
-      const lo = Math.min(a, b), hi = Math.max(a, b);
+      const lo = Math.min(a, b),
+        hi = Math.max(a, b);
       const key = lo * ids.length + hi;
       if (seen.has(key)) continue;
       seen.add(key);
@@ -179,10 +186,23 @@ interface Descent {
  * Take the nodes of layer j + 1 down to layer j; yields every ITEMS_PER_STEP branches. The work is in small
  * plain functions, which the engine optimises early, rather than in this generator.
  */
-export function* descend(upper: readonly TreeNode[], j: number, vol: TreeVolumes, rules: TreeRules): Generator<void, DescendResult> {
+export function* descend(
+  upper: readonly TreeNode[],
+  j: number,
+  vol: TreeVolumes,
+  rules: TreeRules,
+): Generator<void, DescendResult> {
   const d: Descent = {
-    upper, j, vol, rules, m: rules.step(j + 1), lower: [], stuck: [],
-    done: new Uint8Array(upper.length), toward: new Int32Array(upper.length).fill(-1), paired: new Uint8Array(upper.length),
+    upper,
+    j,
+    vol,
+    rules,
+    m: rules.step(j + 1),
+    lower: [],
+    stuck: [],
+    done: new Uint8Array(upper.length),
+    toward: new Int32Array(upper.length).fill(-1),
+    paired: new Uint8Array(upper.length),
   };
   const range = Math.min(ATTRACT_MAX_UM, rules.zUm(j));
   for (const keep of ['bed', 'model'] as const) {
@@ -213,7 +233,9 @@ function mergePairs(d: Descent, pairs: readonly [number, number, number][], from
   const { upper, done, m } = d;
   for (let k = from; k < to; k++) {
     const pair = pairs[k];
-    const a = pair[0], b = pair[1], dist = pair[2];
+    const a = pair[0],
+      b = pair[1],
+      dist = pair[2];
     if (done[a] || done[b] || !(dist <= 2 * m || absorbs(upper[a], upper[b], dist, m))) continue;
     const merged = merge(upper[a], upper[b], a, b, dist, m, d.j, d.vol, d.rules);
     if (!merged) continue;
@@ -230,20 +252,23 @@ function leanTowards(d: Descent, pairs: readonly [number, number, number][]): vo
   const between = new Uint8Array(pairs.length);
   const clear = (k: number) => {
     if (between[k] === 0) {
-      const a = upper[pairs[k][0]], b = upper[pairs[k][1]];
+      const a = upper[pairs[k][0]],
+        b = upper[pairs[k][1]];
       between[k] = barrier.crosses(a.x, a.y, b.x, b.y) ? 2 : 1;
     }
     return between[k] === 1;
   };
   for (let k = 0; k < pairs.length; k++) {
-    const a = pairs[k][0], b = pairs[k][1];
+    const a = pairs[k][0],
+      b = pairs[k][1];
     if (done[a] || done[b] || paired[a] || paired[b] || !clear(k)) continue;
     paired[a] = paired[b] = 1;
     toward[a] = b;
     toward[b] = a;
   }
   for (let k = 0; k < pairs.length; k++) {
-    const a = pairs[k][0], b = pairs[k][1];
+    const a = pairs[k][0],
+      b = pairs[k][1];
     if (done[a] || done[b]) continue;
     if (toward[a] < 0 && clear(k)) toward[a] = b;
     if (toward[b] < 0 && clear(k)) toward[b] = a;
@@ -262,10 +287,12 @@ function stepDown(d: Descent, from: number, to: number): void {
       else if (next) lower.push(next);
       continue;
     }
-    let vx = 0, vy = 0;
+    let vx = 0,
+      vy = 0;
     const t = toward[i];
     if (t >= 0) {
-      const dx = upper[t].x - n.x, dy = upper[t].y - n.y;
+      const dx = upper[t].x - n.x,
+        dy = upper[t].y - n.y;
       const len = hypot(dx, dy);
       const go = Math.min(m, len / 2);
       if (len > 0) {
@@ -293,7 +320,16 @@ function stepDown(d: Descent, from: number, to: number): void {
 }
 
 /** The node at `at` on layer j, its radius grown as far as its class (or a wider one that fits) allows. */
-function grown(n: TreeNode, i: number, at: Found, keep: Keep, m: number, j: number, vol: TreeVolumes, rules: TreeRules): TreeNode {
+function grown(
+  n: TreeNode,
+  i: number,
+  at: Found,
+  keep: Keep,
+  m: number,
+  j: number,
+  vol: TreeVolumes,
+  rules: TreeRules,
+): TreeNode {
   const want = wantRadius(n, rules, j);
   let c = n.c;
   let r = want;
@@ -321,24 +357,49 @@ function absorbs(a: TreeNode, b: TreeNode, d: number, m: number): boolean {
  * Two nodes of layer j + 1 into one on layer j, or null when that does not fit: between them and within a
  * move of each, nearer the wider; or, when the wider holds the other within a move, where the wider is.
  */
-function merge(a: TreeNode, b: TreeNode, ia: number, ib: number, d: number, m: number, j: number, vol: TreeVolumes, rules: TreeRules): TreeNode | null {
-  const big = a.r >= b.r ? a : b, small = big === a ? b : a;
+function merge(
+  a: TreeNode,
+  b: TreeNode,
+  ia: number,
+  ib: number,
+  d: number,
+  m: number,
+  j: number,
+  vol: TreeVolumes,
+  rules: TreeRules,
+): TreeNode | null {
+  const big = a.r >= b.r ? a : b,
+    small = big === a ? b : a;
   const want = Math.max(wantRadius({ ...big, merged: true, topUm: Math.max(a.topUm, b.topUm) }, rules, j), a.r, b.r);
   let t: number;
   if (d <= 2 * m) {
-    const wa = a.r * a.r, wb = b.r * b.r;
+    const wa = a.r * a.r,
+      wb = b.r * b.r;
     t = wb / (wa + wb);
     if (d > 0) t = Math.min(Math.min(1, m / d), Math.max(Math.max(0, 1 - m / d), t));
   } else t = big === a ? 0 : 1;
-  const x = Math.round(a.x + t * (b.x - a.x)), y = Math.round(a.y + t * (b.y - a.y));
+  const x = Math.round(a.x + t * (b.x - a.x)),
+    y = Math.round(a.y + t * (b.y - a.y));
   const reach = m + MOVE_SLACK_UM;
   for (const r of [want, Math.max(a.r, b.r)]) {
     const c = classOf(rules.radii, r);
     const q = vol.index(a.keep, c, j).nearestOutside(x, y, m);
     if (!q) continue;
-    const toBig = dist(q.x, q.y, big.x, big.y), toSmall = dist(q.x, q.y, small.x, small.y);
+    const toBig = dist(q.x, q.y, big.x, big.y),
+      toSmall = dist(q.x, q.y, small.x, small.y);
     if (toBig > reach || (toSmall > reach && toSmall + small.r > r + reach)) continue;
-    return { x: q.x, y: q.y, r, c, keep: a.keep, merged: true, topUm: Math.max(a.topUm, b.topUm), landing: false, parents: [ia, ib], dead: false };
+    return {
+      x: q.x,
+      y: q.y,
+      r,
+      c,
+      keep: a.keep,
+      merged: true,
+      topUm: Math.max(a.topUm, b.topUm),
+      landing: false,
+      parents: [ia, ib],
+      dead: false,
+    };
   }
   return null;
 }

@@ -33,17 +33,25 @@ for (const floor of [8, 6.5]) {
       const total = area(s);
       const inside = area(intersection(s, [RECESS]));
       // before pockets, tips at the recess's mouth went down outside the face to the bed
-      assert.ok(total - inside < 0.01e6, `layer ${j}: ${((total - inside) / 1e6).toFixed(2)} mm² of support outside the recess`);
+      assert.ok(
+        total - inside < 0.01e6,
+        `layer ${j}: ${((total - inside) / 1e6).toFixed(2)} mm² of support outside the recess`,
+      );
       inRecess += inside;
       const z = layers[j].z;
-      if (z > 10 - (cfg.supportTopGapLayers + cfg.supportInterfaceLayers + 1) * cfg.layerHeight && z < 10) tops += inside;
+      if (z > 10 - (cfg.supportTopGapLayers + cfg.supportInterfaceLayers + 1) * cfg.layerHeight && z < 10)
+        tops += inside;
     }
     assert.ok(inRecess > 0, 'no support in the recess');
     assert.ok(tops > 0, 'nothing right under the top of the recess');
     // the same as normal support there, layer by layer
     for (let j = 0; j < layers.length; j++) {
-      const a = area(supportArea(layers[j])), b = area(supportArea(normal.layers[j]));
-      assert.ok(Math.abs(a - b) < 0.01e6, `layer ${j}: tree ${(a / 1e6).toFixed(2)} mm², normal ${(b / 1e6).toFixed(2)} mm²`);
+      const a = area(supportArea(layers[j])),
+        b = area(supportArea(normal.layers[j]));
+      assert.ok(
+        Math.abs(a - b) < 0.01e6,
+        `layer ${j}: tree ${(a / 1e6).toFixed(2)} mm², normal ${(b / 1e6).toFixed(2)} mm²`,
+      );
     }
   });
 }
@@ -54,7 +62,11 @@ for (const [why, options] of [
 ] as const) {
   test(`${why}, a recess gets no column`, () => {
     const { layers } = supported(recessed(8), { supportType: 'tree', ...options });
-    for (let j = 0; j < layers.length; j++) assert.equal(layers[j].support?.columnBody?.length ?? 0, 0, `a column on layer ${j}`);
-    assert.ok(layers.some((l) => l.support), 'no support at all');
+    for (let j = 0; j < layers.length; j++)
+      assert.equal(layers[j].support?.columnBody?.length ?? 0, 0, `a column on layer ${j}`);
+    assert.ok(
+      layers.some((l) => l.support),
+      'no support at all',
+    );
   });
 }

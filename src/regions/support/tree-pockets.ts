@@ -53,7 +53,8 @@ export function* findPockets(src: PocketModel, overhangs: readonly ExPolygon[][]
   const columns: ExPolygon[][] = [];
   for (let j = 0; j < n; j++) columns.push([]);
   // with no roof the tips hold the part themselves, touching it: a column's sparse lines would not
-  if (model.cfg.supportPlacement !== 'everywhere' || model.cfg.supportInterfaceLayers === 0) return { overhangs: overhangs.slice(), columns };
+  if (model.cfg.supportPlacement !== 'everywhere' || model.cfg.supportInterfaceLayers === 0)
+    return { overhangs: overhangs.slice(), columns };
   const kept: ExPolygon[][] = [];
   for (let m = 0; m < n; m++) {
     const over = overhangs[m];
@@ -129,8 +130,10 @@ function survives(src: PocketModel, column: readonly ExPolygon[], top: number, l
 function cornerSurvives(src: PocketModel, ring: readonly Pt[], top: number, lowest: number): boolean {
   const step = Math.max(1, Math.floor(ring.length / SURVIVOR_SAMPLES));
   for (let i = 0; i < ring.length; i += step) {
-    const a = ring[i], b = ring[(i + 1) % ring.length];
-    if (pointSurvives(src, a.x, a.y, top, lowest) || pointSurvives(src, (a.x + b.x) / 2, (a.y + b.y) / 2, top, lowest)) return true;
+    const a = ring[i],
+      b = ring[(i + 1) % ring.length];
+    if (pointSurvives(src, a.x, a.y, top, lowest) || pointSurvives(src, (a.x + b.x) / 2, (a.y + b.y) / 2, top, lowest))
+      return true;
   }
   return false;
 }
@@ -162,7 +165,12 @@ function hasRoom(src: PocketModel, piece: ExPolygon, j: number): boolean {
  * Layer j's pocket columns as support areas: off the tree's own areas `tree`, cut to what a line prints; their
  * body printed as normal support's.
  */
-export function pocketAreas(model: ModelLayers, j: number, columns: readonly ExPolygon[], tree: readonly ExPolygon[]): SupportAreas | null {
+export function pocketAreas(
+  model: ModelLayers,
+  j: number,
+  columns: readonly ExPolygon[],
+  tree: readonly ExPolygon[],
+): SupportAreas | null {
   if (columns.length === 0) return null;
   let s = union(columns);
   if (tree.length) s = difference(s, tree);

@@ -25,7 +25,10 @@ export const TIP_MIN_GAP_SHARE = 0.6;
 export function tipCandidates(area: readonly ExPolygon[], spacingUm: number, edgeInsetUm: number, gapUm: number): Pt[] {
   if (area.length === 0) return [];
   const index = new AreaIndex(area);
-  let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+  let minX = Infinity,
+    minY = Infinity,
+    maxX = -Infinity,
+    maxY = -Infinity;
   for (const a of area) {
     for (const p of a.outer) {
       if (p.x < minX) minX = p.x;
@@ -67,7 +70,8 @@ export function alongRing(ring: readonly Pt[], step: number): Pt[] {
   const out: Pt[] = [];
   let carry = 0;
   for (let i = 0; i < ring.length; i++) {
-    const a = ring[i], b = ring[(i + 1) % ring.length];
+    const a = ring[i],
+      b = ring[(i + 1) % ring.length];
     const len = hypot(b.x - a.x, b.y - a.y);
     let t = carry;
     while (t < len) {

@@ -88,7 +88,10 @@ export class TreeVolumes {
   /** The tip class's avoidance per layer. */
   readonly #avoid: ExPolygon[][] = [];
   /** Per layer, made on first use: the avoidance and the collision as point indexes, and what each class keeps out of. */
-  readonly #layer: ({ avoid: AreaIndex | null; part: AreaIndex | null; blocked: (Blocked | undefined)[] } | undefined)[] = [];
+  readonly #layer: (
+    | { avoid: AreaIndex | null; part: AreaIndex | null; blocked: (Blocked | undefined)[] }
+    | undefined
+  )[] = [];
   #built = -1;
   #avoidTop = -1;
   /** The share of the move the avoidance is built for. */

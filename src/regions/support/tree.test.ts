@@ -7,7 +7,17 @@ import type { LayerRegions } from '../types.js';
 import type { SliceOptions } from '../../settings/schema.js';
 import { ModelLayers } from './model-layers.js';
 import {
-  BOX_ON_POST, LEDGE_OVER_STEP, LEDGE_OVER_WIDE_STEP, T_SHAPE, boxLayers, heldShare, intoPart, supportArea, supportConfig, supported, type Box,
+  BOX_ON_POST,
+  LEDGE_OVER_STEP,
+  LEDGE_OVER_WIDE_STEP,
+  T_SHAPE,
+  boxLayers,
+  heldShare,
+  intoPart,
+  supportArea,
+  supportConfig,
+  supported,
+  type Box,
 } from './test-models.js';
 import { CIRCLE_TOLERANCE_UM, circle } from './tree-draw.js';
 import { BRANCH_SLENDERNESS, planTree, type TreePlan } from './tree.js';
@@ -62,7 +72,10 @@ for (const [name, boxes] of MODELS) {
   test(`tree support under ${name} uses less than normal support`, () => {
     const tree = totalArea(supported(boxes, { supportType: 'tree' }).layers);
     const normal = totalArea(supported(boxes, { supportType: 'normal' }).layers);
-    assert.ok(tree > 0 && tree < normal, `tree ${(tree / 1e6).toFixed(0)} mm², normal ${(normal / 1e6).toFixed(0)} mm²`);
+    assert.ok(
+      tree > 0 && tree < normal,
+      `tree ${(tree / 1e6).toFixed(0)} mm², normal ${(normal / 1e6).toFixed(0)} mm²`,
+    );
   });
 
   test(`branches under ${name} lean at most one move a layer and stand on what is below them`, () => {
@@ -77,18 +90,33 @@ for (const [name, boxes] of MODELS) {
       for (const child of nodes[j]) {
         if (child.dead) continue;
         // centres and radii in whole µm, as the part's points are
-        assert.ok(Number.isInteger(child.x) && Number.isInteger(child.y) && Number.isInteger(child.r), `layer ${j}: a branch at (${child.x}, ${child.y}) r ${child.r}`);
+        assert.ok(
+          Number.isInteger(child.x) && Number.isInteger(child.y) && Number.isInteger(child.r),
+          `layer ${j}: a branch at (${child.x}, ${child.y}) r ${child.r}`,
+        );
         // every cross-section of a free branch is clear of the part grown by the XY gap
-        const into = child.landing ? 0 : area(intersection([{ outer: circle(child.x, child.y, child.r), holes: [] }], collision));
-        assert.equal(into, 0, `layer ${j}: a branch cross-section ${(into / 1e6).toFixed(3)} mm² into the part's XY gap`);
+        const into = child.landing
+          ? 0
+          : area(intersection([{ outer: circle(child.x, child.y, child.r), holes: [] }], collision));
+        assert.equal(
+          into,
+          0,
+          `layer ${j}: a branch cross-section ${(into / 1e6).toFixed(3)} mm² into the part's XY gap`,
+        );
         for (const p of child.parents.map((i) => nodes[j + 1][i])) {
           links++;
           const d = Math.hypot(p.x - child.x, p.y - child.y);
           assert.ok(!p.dead, `a live branch on layer ${j} continues a dropped one`);
           // the cross-section above reaches at most a move beyond the one below it: the branch moved at most a
           // move, or (a thin branch taken into a wide one) lies within a move of the wide one
-          assert.ok(d + p.r <= child.r + m + 2, `layer ${j + 1}: overhangs the branch below by ${(d + p.r - child.r).toFixed(0)} µm`);
-          assert.ok(d <= m + 2 || child.parents.length > 1, `layer ${j}: moved ${d.toFixed(0)} µm, more than ${m.toFixed(0)}`);
+          assert.ok(
+            d + p.r <= child.r + m + 2,
+            `layer ${j + 1}: overhangs the branch below by ${(d + p.r - child.r).toFixed(0)} µm`,
+          );
+          assert.ok(
+            d <= m + 2 || child.parents.length > 1,
+            `layer ${j}: moved ${d.toFixed(0)} µm, more than ${m.toFixed(0)}`,
+          );
         }
       }
     }
@@ -104,7 +132,8 @@ for (const [name, boxes] of MODELS) {
     const grow = Math.max(rules.tipGrowth, rules.trunkGrowth(1));
     let checked = 0;
     for (let j = 0; j + 1 < lowestTip; j++) {
-      const here = supportArea(layers[j]), above = supportArea(layers[j + 1]);
+      const here = supportArea(layers[j]),
+        above = supportArea(layers[j + 1]);
       if (here.length === 0) continue;
       const m = rules.step(j + 1);
       const spread = area(difference(here, offset(above, m + grow + STACK_TOL_UM)));
@@ -140,7 +169,10 @@ test('under a ledge over a lower step, tree support stands on the step, the bott
   }
 });
 
-for (const [name, boxes] of [['a ledge over a lower step', LEDGE_OVER_STEP], ['a ledge over a wider step', LEDGE_OVER_WIDE_STEP]] as const) {
+for (const [name, boxes] of [
+  ['a ledge over a lower step', LEDGE_OVER_STEP],
+  ['a ledge over a wider step', LEDGE_OVER_WIDE_STEP],
+] as const) {
   test(`with build-plate placement, nothing of the tree support under ${name} stands on the part`, () => {
     const options = { supportType: 'tree', supportPlacement: 'buildPlate' } as const;
     const { layers, cfg } = supported(boxes, options);
@@ -162,7 +194,21 @@ for (const [name, boxes] of [['a ledge over a lower step', LEDGE_OVER_STEP], ['a
 test('with build-plate placement, the ledge over a lower step is still held where the bed is within reach', () => {
   const { layers } = supported(LEDGE_OVER_STEP, { supportType: 'tree', supportPlacement: 'buildPlate' });
   // the ledge reaches 12 mm beyond the step's edge: a branch under it has room to reach the bed
-  const beyond = layers.map((l) => area(intersection(supportArea(l), [{ outer: [{ x: 2000, y: -20000 }, { x: 20000, y: -20000 }, { x: 20000, y: 20000 }, { x: 2000, y: 20000 }], holes: [] }])));
+  const beyond = layers.map((l) =>
+    area(
+      intersection(supportArea(l), [
+        {
+          outer: [
+            { x: 2000, y: -20000 },
+            { x: 20000, y: -20000 },
+            { x: 20000, y: 20000 },
+            { x: 2000, y: 20000 },
+          ],
+          holes: [],
+        },
+      ]),
+    ),
+  );
   assert.ok(beyond[0] > 0, 'no branch reaches the bed beyond the step');
 });
 
@@ -187,10 +233,17 @@ test('branches widen with their height: tips 4 mm up stay a tip wide, tips 12 mm
     return { w, rules, cfg };
   };
   const low = widest(4);
-  assert.equal(low.w, low.rules.tipR, `under a 4 mm overhang the widest branch is ${low.w} µm in radius, a tip ${low.rules.tipR}`);
+  assert.equal(
+    low.w,
+    low.rules.tipR,
+    `under a 4 mm overhang the widest branch is ${low.w} µm in radius, a tip ${low.rules.tipR}`,
+  );
   // tips 12 mm up (the roof and gap below the slab) allow 12 / 5 mm: more than the 2 mm branch diameter
   const high = widest(12);
-  assert.ok(high.w >= high.rules.branchR, `under a 12 mm overhang the widest branch is ${high.w} µm in radius, the branch radius ${high.rules.branchR}`);
+  assert.ok(
+    high.w >= high.rules.branchR,
+    `under a 12 mm overhang the widest branch is ${high.w} µm in radius, the branch radius ${high.rules.branchR}`,
+  );
   assert.ok(high.cfg.supportTreeBranchDiameter * UM_PER_MM < (12 * UM_PER_MM) / BRANCH_SLENDERNESS);
 });
 
@@ -213,7 +266,8 @@ test('a slope stepping out less than half a line beyond what holds itself gets t
   // a 10 mm post 6 mm high, then fifteen 0.2 mm layers each stepping out `step` mm further in x
   const roofUnder = (step: number) => {
     const boxes: Box[] = [{ x: [-5, 5], y: [-5, 5], z: [0, 6] }];
-    for (let k = 0; k < 15; k++) boxes.push({ x: [-5, 5 + (k + 1) * step], y: [-5, 5], z: [6 + 0.2 * k, 6 + 0.2 * (k + 1)] });
+    for (let k = 0; k < 15; k++)
+      boxes.push({ x: [-5, 5 + (k + 1) * step], y: [-5, 5], z: [6 + 0.2 * k, 6 + 0.2 * (k + 1)] });
     const { layers } = supported(boxes, { supportType: 'tree' });
     // the first band stands right over the post's wall, where no tip that is to reach the bed has room: it
     // gets a column beside the wall, with its roof, as normal support gives it (tree-pockets.ts)
@@ -229,7 +283,10 @@ test('a slope stepping out less than half a line beyond what holds itself gets t
   // what roof there is off the column: the tops of tips right under the part (92 mm² when every band had its roof)
   assert.ok(steep.roof < 2, `no roof under bands a line cannot print: ${steep.roof.toFixed(2)} mm²`);
   const flat = roofUnder(0.8);
-  assert.ok(flat.roof > 2 * 15 * 0.56 * 10, `a roof under the flatter slope's bands, two layers each: ${flat.roof.toFixed(1)} mm²`);
+  assert.ok(
+    flat.roof > 2 * 15 * 0.56 * 10,
+    `a roof under the flatter slope's bands, two layers each: ${flat.roof.toFixed(1)} mm²`,
+  );
 });
 
 test('with build-plate placement, branches lean round a slab to the bed and hold the whole plate above it; none stands on the slab', () => {
@@ -249,7 +306,8 @@ test('with build-plate placement, branches lean round a slab to the bed and hold
   const slab = rect(0, -6000, 30000, 6000);
   // the slab's top is layer 9's: the two layers above it have no support over it (higher up, a branch leaning
   // out may pass over its edge)
-  for (let j = 10; j < 12; j++) assert.equal(area(intersection(supportArea(layers[j]), [slab])), 0, `support over the slab on layer ${j}`);
+  for (let j = 10; j < 12; j++)
+    assert.equal(area(intersection(supportArea(layers[j]), [slab])), 0, `support over the slab on layer ${j}`);
 });
 
 test('under a bridge 5 mm wide with a roof, the tips stand in one row (none nearer another than the roof reaches) and hold every overhang point', () => {
@@ -267,7 +325,8 @@ test('under a bridge 5 mm wide with a roof, the tips stand in one row (none near
   const tips = plan.nodes[top];
   // 30 mm of overhang, tips 3 mm apart: one row is 11 to 13; with edge tips 0.6 of the spacing apart there were 31
   assert.ok(tips.length >= 10 && tips.length <= 15, `${tips.length} tips`);
-  for (const a of tips) for (const b of tips) if (a !== b) assert.ok(Math.hypot(a.x - b.x, a.y - b.y) >= plan.rules.tipGap - 1);
+  for (const a of tips)
+    for (const b of tips) if (a !== b) assert.ok(Math.hypot(a.x - b.x, a.y - b.y) >= plan.rules.tipGap - 1);
   const { held, total } = heldShare(layers, cfg, (j) => model.collision(j), (cfg.supportLineWidthMm * UM_PER_MM) / 2);
   assert.ok(total > 500);
   assert.equal(held, total);

@@ -87,7 +87,8 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
   // the overhang each layer must hold; its tips start under the top gap and the roof
   const all: ExPolygon[][] = [];
   // the highest layer support reaches up to (under the top Z gap of the highest overhang)
-  let highest = -1, highestTop = -Infinity;
+  let highest = -1,
+    highestTop = -Infinity;
   for (let m = 0; m < n; m++) {
     all.push(model.overhang(m));
     if (all[m].length) {
@@ -100,12 +101,22 @@ export function* planTree(model: ModelLayers): Generator<void, TreePlan> {
   const roofTop = Math.min(n - 1, highestTop);
   yield* vol.build(Math.max(roofTop, tipTop), tipTop);
   const spacing = cfg.supportTreeTipSpacingMm * UM_PER_MM;
-  const { overhangs, columns: pockets } = yield* findPockets({ model, collision: (j) => vol.collision(j), collisionIndex: (j) => vol.partIndex(j), avoidance: (j) => vol.avoidance(j), tipRUm: rules.tipR }, all);
+  const { overhangs, columns: pockets } = yield* findPockets(
+    {
+      model,
+      collision: (j) => vol.collision(j),
+      collisionIndex: (j) => vol.partIndex(j),
+      avoidance: (j) => vol.avoidance(j),
+      tipRUm: rules.tipR,
+    },
+    all,
+  );
 
   for (let j = tipTop; j >= 0; j--) {
     const { lower, stuck } = j < tipTop ? yield* descend(nodes[j + 1], j, vol, rules) : { lower: [], stuck: [] };
     for (const i of stuck) kill(nodes, j + 1, i);
-    for (const m of model.overhangLayersOver(j + roofLayers)) if (m < n && overhangs[m].length) yield* addTips(lower, overhangs[m], j, spacing, vol, rules);
+    for (const m of model.overhangLayersOver(j + roofLayers))
+      if (m < n && overhangs[m].length) yield* addTips(lower, overhangs[m], j, spacing, vol, rules);
     nodes[j] = lower;
     vol.release(j);
     yield;
@@ -131,8 +142,10 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     const roofWanted: ExPolygon[] = [];
     // the first layer also holds the overhang within the top Z gap over it, with no gap (ModelLayers.gapOverhang)
     // (the overhang layers whose support reaches up to layers j .. j + roofLayers − 1)
-    if (j === 0) for (let m = 1; m < n && model.supportTop(m) < 0; m++) for (const p of overhangs[m]) roofWanted.push(p);
-    for (let t = j; t < j + roofLayers; t++) for (const m of model.overhangLayersOver(t)) if (m < n) for (const p of overhangs[m]) roofWanted.push(p);
+    if (j === 0)
+      for (let m = 1; m < n && model.supportTop(m) < 0; m++) for (const p of overhangs[m]) roofWanted.push(p);
+    for (let t = j; t < j + roofLayers; t++)
+      for (const m of model.overhangLayersOver(t)) if (m < n) for (const p of overhangs[m]) roofWanted.push(p);
     if (discs.length === 0 && roofWanted.length === 0) {
       below = [];
       out[j] = pocketAreas(model, j, pockets[j], []) ?? out[j];
@@ -148,12 +161,25 @@ export function* drawTree(model: ModelLayers, plan: TreePlan): Generator<void, S
     const roof = steps.length ? cutAway(offset(steps, open + ROOF_GROW_WIDTHS * w), collision) : [];
     // what may carry the roof: last layer's support, and in 'everywhere' placement the part within the gap below
     const bottom = model.bottomGap(j);
-    const base = j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
+    const base =
+      j > 0 && roof.length ? [...below, ...(everywhere ? model.sectionsBetween(j, -(bottom + 1), -1) : [])] : null;
     const gapBelow = everywhere && bottom > 0 ? model.sectionsBetween(j, -bottom, -1) : [];
     const gapIndex = () => model.indexBetween(j, -bottom, -1);
-    const { areas: s, circles } = yield* drawLayer({ discs, roof, base, roofReachUm: ROOF_REACH_SHARE * spacing, collision, gapBelow, gapIndex, widthUm: w });
+    const { areas: s, circles } = yield* drawLayer({
+      discs,
+      roof,
+      base,
+      roofReachUm: ROOF_REACH_SHARE * spacing,
+      collision,
+      gapBelow,
+      gapIndex,
+      widthUm: w,
+    });
     below = s;
-    out[j] = withPockets({ ...(yield* splitNear(model, j, s, circles)), whole: s, circles }, pocketAreas(model, j, pockets[j], s));
+    out[j] = withPockets(
+      { ...(yield* splitNear(model, j, s, circles)), whole: s, circles },
+      pocketAreas(model, j, pockets[j], s),
+    );
     yield;
   }
   return out;
@@ -184,8 +210,14 @@ function discsOf(nodes: readonly TreeNode[], rules: TreeRules): Disc[] {
 }
 
 /** The islands of s that meet the part on one of the `nearby` layers (near), and the rest (far). */
-function nearOrFar(model: ModelLayers, nearby: readonly number[], s: readonly ExPolygon[], circles: readonly (RegularPolygon | null)[]): { near: ExPolygon[]; far: ExPolygon[] } {
-  const near: ExPolygon[] = [], far: ExPolygon[] = [];
+function nearOrFar(
+  model: ModelLayers,
+  nearby: readonly number[],
+  s: readonly ExPolygon[],
+  circles: readonly (RegularPolygon | null)[],
+): { near: ExPolygon[]; far: ExPolygon[] } {
+  const near: ExPolygon[] = [],
+    far: ExPolygon[] = [];
   for (let i = 0; i < s.length; i++) {
     const a = s[i];
     // an island whose bounds meet no island of a layer's section cannot meet that section
@@ -208,14 +240,21 @@ function nearOrFar(model: ModelLayers, nearby: readonly number[], s: readonly Ex
  * model.split, run only on the islands that meet the part within the roof layers above or the floor layers
  * below: the others are body. `circles[i]`, when set, is the regular polygon island i is drawn as.
  */
-function* splitNear(model: ModelLayers, j: number, s: ExPolygon[], circles: readonly (RegularPolygon | null)[]): Generator<void, SupportAreas> {
+function* splitNear(
+  model: ModelLayers,
+  j: number,
+  s: ExPolygon[],
+  circles: readonly (RegularPolygon | null)[],
+): Generator<void, SupportAreas> {
   const cfg = model.cfg;
   const nearby: number[] = [];
-  const top = model.topGap(j), bottom = model.bottomGap(j);
+  const top = model.topGap(j),
+    bottom = model.bottomGap(j);
   for (let k = j + 1; k <= j + top + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
   // floors only where support may stand on the part (model.split makes none in 'buildPlate' placement)
   if (cfg.supportPlacement === 'everywhere') {
-    for (let k = j - bottom - cfg.supportFloorLayerCount; k < j - bottom; k++) if (model.section(k).length) nearby.push(k);
+    for (let k = j - bottom - cfg.supportFloorLayerCount; k < j - bottom; k++)
+      if (model.section(k).length) nearby.push(k);
   }
   model.releaseBelow(j - bottom - cfg.supportFloorLayerCount);
   if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
@@ -252,7 +291,8 @@ export function treeRules(model: ModelLayers): TreeRules {
     maxR,
     heightCapR: (topUm) => Math.max(tipR, Math.round(topUm / (2 * BRANCH_SLENDERNESS))),
     tipGrowth: cfg.layerHeight * UM_PER_MM * Math.tan(rad(TIP_WIDEN_DEG)),
-    tipGap: (cfg.supportInterfaceLayers > 0 ? ROOF_REACH_SHARE : TIP_MIN_GAP_SHARE) * cfg.supportTreeTipSpacingMm * UM_PER_MM,
+    tipGap:
+      (cfg.supportInterfaceLayers > 0 ? ROOF_REACH_SHARE : TIP_MIN_GAP_SHARE) * cfg.supportTreeTipSpacingMm * UM_PER_MM,
     trunkGrowth: (j) => height(j) * tanGrow,
     step: (j) => (j > 0 && j < model.count ? height(j) * tanMove : 0),
     zUm: (j) => model.layers[j].z * UM_PER_MM,
@@ -284,11 +324,26 @@ interface TipPlacing {
 const tipStepEnd = (from: number) => (from < ITEMS_PER_STEP - 1 ? ITEMS_PER_STEP - 1 : from + ITEMS_PER_STEP);
 
 /** Tips under the overhang `over`, on layer j, where no branch already passes. */
-function* addTips(lower: TreeNode[], over: readonly ExPolygon[], j: number, spacing: number, vol: TreeVolumes, rules: TreeRules): Generator<void, void> {
+function* addTips(
+  lower: TreeNode[],
+  over: readonly ExPolygon[],
+  j: number,
+  spacing: number,
+  vol: TreeVolumes,
+  rules: TreeRules,
+): Generator<void, void> {
   const existing = new PointGrid(spacing);
   const t: TipPlacing = {
-    lower, candidates: tipCandidates(over, spacing, rules.tipR, rules.tipGap), existing, found: [], widest: gridOfNodes(existing, lower),
-    keeps: rules.everywhere ? ['bed', 'model'] : ['bed'], j, spacing, vol, rules,
+    lower,
+    candidates: tipCandidates(over, spacing, rules.tipR, rules.tipGap),
+    existing,
+    found: [],
+    widest: gridOfNodes(existing, lower),
+    keeps: rules.everywhere ? ['bed', 'model'] : ['bed'],
+    j,
+    spacing,
+    vol,
+    rules,
   };
   const n = t.candidates.length;
   for (let from = 0; from < n; from = tipStepEnd(from)) {
@@ -317,7 +372,18 @@ function placeTips(t: TipPlacing, from: number, to: number): void {
     for (const keep of t.keeps) {
       const q = vol.index(keep, 0, t.j).nearestOutside(p.x, p.y, TIP_SHIFT_SHARE * t.spacing);
       if (!q) continue;
-      lower.push({ x: q.x, y: q.y, r: rules.tipR, c: 0, keep, merged: false, topUm: rules.zUm(t.j), landing: false, parents: [], dead: false });
+      lower.push({
+        x: q.x,
+        y: q.y,
+        r: rules.tipR,
+        c: 0,
+        keep,
+        merged: false,
+        topUm: rules.zUm(t.j),
+        landing: false,
+        parents: [],
+        dead: false,
+      });
       existing.add(q.x, q.y);
       break;
     }
@@ -325,7 +391,14 @@ function placeTips(t: TipPlacing, from: number, to: number): void {
 }
 
 /** Whether any of the first `count` ids in `found` is a node nearer p than the gap or its own radius. */
-function tooClose(grid: PointGrid, found: readonly number[], count: number, p: Pt, gap: number, nodes: readonly TreeNode[]): boolean {
+function tooClose(
+  grid: PointGrid,
+  found: readonly number[],
+  count: number,
+  p: Pt,
+  gap: number,
+  nodes: readonly TreeNode[],
+): boolean {
   for (let f = 0; f < count; f++) {
     const k = found[f];
     if (hypot(grid.xs[k] - p.x, grid.ys[k] - p.y) < Math.max(gap, nodes[k].r)) return true;

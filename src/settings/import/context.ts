@@ -42,7 +42,12 @@ export class ImportContext {
   }
 
   /** Take `value` for `setting` when it fits the schema; otherwise record it as rejected. */
-  set<K extends SettingKey>(setting: K, value: Settings[K] | undefined, fromKey: string, reasonIfUndefined?: string): void {
+  set<K extends SettingKey>(
+    setting: K,
+    value: Settings[K] | undefined,
+    fromKey: string,
+    reasonIfUndefined?: string,
+  ): void {
     if (value === undefined) {
       if (reasonIfUndefined) this.reject(fromKey, reasonIfUndefined);
       return;
@@ -51,7 +56,10 @@ export class ImportContext {
       (this.settings as Record<string, unknown>)[setting] = validateValue(setting, value, `${fromKey} →`);
     } catch (e) {
       if (!(e instanceof StrataError)) throw e;
-      this.reject(fromKey, e.message.replace(/^.*? is not allowed: /, `${setting} ${JSON.stringify(value)} is not allowed: `));
+      this.reject(
+        fromKey,
+        e.message.replace(/^.*? is not allowed: /, `${setting} ${JSON.stringify(value)} is not allowed: `),
+      );
     }
   }
 

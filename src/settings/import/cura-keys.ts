@@ -24,14 +24,42 @@ import { importTemplate } from './templates.js';
 import { bool, percentOfNozzle, tipSpacingOfDensity } from './values.js';
 
 const INFILL: Readonly<Record<string, PatternId>> = {
-  grid: 'grid', lines: 'lines', zigzag: 'lines', triangles: 'triangles', trihexagon: 'triangles', cubic: 'cubic', cubicsubdiv: 'cubic',
-  tetrahedral: 'cubic', quarter_cubic: 'cubic', concentric: 'concentric', gyroid: 'gyroid', lightning: 'lightning', cross: 'grid', cross_3d: 'grid',
+  grid: 'grid',
+  lines: 'lines',
+  zigzag: 'lines',
+  triangles: 'triangles',
+  trihexagon: 'triangles',
+  cubic: 'cubic',
+  cubicsubdiv: 'cubic',
+  tetrahedral: 'cubic',
+  quarter_cubic: 'cubic',
+  concentric: 'concentric',
+  gyroid: 'gyroid',
+  lightning: 'lightning',
+  cross: 'grid',
+  cross_3d: 'grid',
 };
-const CURA_SKIN: Readonly<Record<string, Settings['topSkinPattern']>> = { lines: 'lines', zigzag: 'lines', concentric: 'concentric' };
-const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = { zigzag: 'zigzag', lines: 'lines', grid: 'grid' };
-const SEAM: Readonly<Record<string, Settings['seamPosition']>> = { back: 'rear', shortest: 'nearest', random: 'random', sharpest_corner: 'aligned' };
+const CURA_SKIN: Readonly<Record<string, Settings['topSkinPattern']>> = {
+  lines: 'lines',
+  zigzag: 'lines',
+  concentric: 'concentric',
+};
+const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = {
+  zigzag: 'zigzag',
+  lines: 'lines',
+  grid: 'grid',
+};
+const SEAM: Readonly<Record<string, Settings['seamPosition']>> = {
+  back: 'rear',
+  shortest: 'nearest',
+  random: 'random',
+  sharpest_corner: 'aligned',
+};
 const FLAVOR: Readonly<Record<string, Settings['gcodeFlavor']>> = {
-  'RepRap (Marlin/Sprinter)': 'marlin', 'RepRap (Volumetric)': 'marlin', 'RepRap (RepRap)': 'reprap', Repetier: 'marlin',
+  'RepRap (Marlin/Sprinter)': 'marlin',
+  'RepRap (Volumetric)': 'marlin',
+  'RepRap (RepRap)': 'reprap',
+  Repetier: 'marlin',
 };
 
 /** Keys a Cura key falls back to (Cura's `value` formulas that are plain copies or scalings). */
@@ -80,7 +108,12 @@ function evaluate(expr: string, lookup: (name: string) => number | undefined): n
     return v;
   };
   const FUNCTIONS: Record<string, (...a: number[]) => number> = {
-    min: Math.min, max: Math.max, round: (x, d = 0) => Math.round(x * 10 ** d) / 10 ** d, 'math.ceil': Math.ceil, 'math.floor': Math.floor, abs: Math.abs,
+    min: Math.min,
+    max: Math.max,
+    round: (x, d = 0) => Math.round(x * 10 ** d) / 10 ** d,
+    'math.ceil': Math.ceil,
+    'math.floor': Math.floor,
+    abs: Math.abs,
   };
   const factor = (): number | undefined => {
     const t = tokens[i++];
@@ -123,11 +156,24 @@ function evaluate(expr: string, lookup: (name: string) => number | undefined): n
  * of Strata's steps (a quarter, half, three quarters and all of the line over nothing) takes the speed Cura
  * gives the least overhanging line of that step, as a share of the outer wall's speed.
  */
-function overhangSpeeds(c: ImportContext, str: (key: string) => string | undefined, value: (key: string) => number | undefined, layerHeight: number): void {
+function overhangSpeeds(
+  c: ImportContext,
+  str: (key: string) => string | undefined,
+  value: (key: string) => number | undefined,
+  layerHeight: number,
+): void {
   const angle = value('wall_overhang_angle');
   const list = str('wall_overhang_speed_factors');
   const single = list === undefined ? value('wall_overhang_speed_factor') : undefined;
-  const shares = list !== undefined ? (/^\[([\d.\s,]*)\]$/.exec(list)?.[1] ?? '').split(',').filter((v) => v.trim() !== '').map(Number) : single !== undefined ? [single] : [];
+  const shares =
+    list !== undefined
+      ? (/^\[([\d.\s,]*)\]$/.exec(list)?.[1] ?? '')
+          .split(',')
+          .filter((v) => v.trim() !== '')
+          .map(Number)
+      : single !== undefined
+        ? [single]
+        : [];
   if (angle === undefined || angle >= 90) return;
   const from = c.has('wall_overhang_speed_factors') ? 'wall_overhang_speed_factors' : 'wall_overhang_speed_factor';
   if (shares.length === 0 || shares.some((v) => !(v > 0))) return c.reject(from, 'not a list of speed factors (%)');
@@ -180,7 +226,11 @@ export function mapCuraKeys(c: ImportContext): void {
     return raw === undefined || raw.startsWith('=') ? undefined : raw;
   };
   /** Set `setting` from the first of `keys` that has a value (given or by fallback). */
-  const take = <K extends keyof Settings>(setting: K, keys: string[], convert: (v: number) => Settings[K] = (v) => v as Settings[K]) => {
+  const take = <K extends keyof Settings>(
+    setting: K,
+    keys: string[],
+    convert: (v: number) => Settings[K] = (v) => v as Settings[K],
+  ) => {
     for (const key of keys) {
       const present = c.has(key);
       const v = value(key);
@@ -196,16 +246,24 @@ export function mapCuraKeys(c: ImportContext): void {
   take('buildVolumeHeight', ['machine_height']);
   take('nozzleDiameter', ['machine_nozzle_size']);
   take('filamentDiameter', ['material_diameter']);
-  for (const [key, setting] of [['machine_center_is_zero', 'originAtCenter'], ['machine_heated_bed', 'heatedBed'], ['machine_firmware_retract', 'firmwareRetraction']] as const) {
+  for (const [key, setting] of [
+    ['machine_center_is_zero', 'originAtCenter'],
+    ['machine_heated_bed', 'heatedBed'],
+    ['machine_firmware_retract', 'firmwareRetraction'],
+  ] as const) {
     const v = str(key);
     if (v !== undefined) c.set(setting, bool(v), key, 'not True or False');
   }
   const rel = str('relative_extrusion');
   if (rel !== undefined) c.set('extruderMode', bool(rel) ? 'relative' : 'absolute', 'relative_extrusion');
   const flavor = str('machine_gcode_flavor');
-  if (flavor !== undefined) c.set('gcodeFlavor', FLAVOR[flavor], 'machine_gcode_flavor', `G-code flavour "${flavor}" has no Strata equivalent`);
+  if (flavor !== undefined)
+    c.set('gcodeFlavor', FLAVOR[flavor], 'machine_gcode_flavor', `G-code flavour "${flavor}" has no Strata equivalent`);
   // templates, kept as written (templates.ts)
-  for (const [key, setting] of [['machine_start_gcode', 'startGcode'], ['machine_end_gcode', 'endGcode']] as const) {
+  for (const [key, setting] of [
+    ['machine_start_gcode', 'startGcode'],
+    ['machine_end_gcode', 'endGcode'],
+  ] as const) {
     importTemplate(c, [key], setting, (v) => v.replace(/^"""|"""$/g, ''));
   }
   take('maxSpeedX', ['machine_max_feedrate_x']);
@@ -231,17 +289,30 @@ export function mapCuraKeys(c: ImportContext): void {
   const layerHeight = c.settings.layerHeight ?? (SCHEMA.layerHeight.default as number);
   // adaptive layers: up to `variation` thinner or thicker than the layer height, changing by at most the step
   const adaptive = str('adaptive_layer_height_enabled');
-  if (adaptive !== undefined) c.set('adaptiveLayerHeight', bool(adaptive), 'adaptive_layer_height_enabled', 'not true or false');
+  if (adaptive !== undefined)
+    c.set('adaptiveLayerHeight', bool(adaptive), 'adaptive_layer_height_enabled', 'not true or false');
   const variation = value('adaptive_layer_height_variation');
   if (variation !== undefined) {
-    c.set('minLayerHeight', round(Math.max(0.02, layerHeight - variation)), 'adaptive_layer_height_variation layer_height');
+    c.set(
+      'minLayerHeight',
+      round(Math.max(0.02, layerHeight - variation)),
+      'adaptive_layer_height_variation layer_height',
+    );
     // (within what the nozzle allows: Cura does not cap it)
     const nozzle = c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number);
-    c.set('maxLayerHeight', round(Math.min(layerHeight + variation, 0.85 * nozzle)), 'adaptive_layer_height_variation layer_height');
+    c.set(
+      'maxLayerHeight',
+      round(Math.min(layerHeight + variation, 0.85 * nozzle)),
+      'adaptive_layer_height_variation layer_height',
+    );
   }
   take('adaptiveLayerStep', ['adaptive_layer_height_variation_step']);
   // Cura's threshold is the horizontal distance between layer edges it aims for: no Strata equivalent
-  if (c.has('adaptive_layer_height_threshold')) c.reject('adaptive_layer_height_threshold', "Cura's target distance between layer edges has no Strata equivalent (adaptiveLayerQuality sets the stair-step depth)");
+  if (c.has('adaptive_layer_height_threshold'))
+    c.reject(
+      'adaptive_layer_height_threshold',
+      "Cura's target distance between layer edges has no Strata equivalent (adaptiveLayerQuality sets the stair-step depth)",
+    );
   take('lineWidth', ['line_width', 'wall_line_width', 'wall_line_width_0']);
   const factor = value('initial_layer_line_width_factor');
   if (factor !== undefined) {
@@ -250,12 +321,16 @@ export function mapCuraKeys(c: ImportContext): void {
   }
   if (c.has('wall_line_count')) take('wallCount', ['wall_line_count'], (v) => Math.round(v));
   else take('shellWallThickness', ['wall_thickness']);
-  for (const [side, setting] of [['top', 'topSkinThickness'], ['bottom', 'bottomSkinThickness']] as const) {
+  for (const [side, setting] of [
+    ['top', 'topSkinThickness'],
+    ['bottom', 'bottomSkinThickness'],
+  ] as const) {
     if (c.has(`${side}_layers`)) take(setting, [`${side}_layers`], (n) => round(n * layerHeight));
     else take(setting, [`${side}_thickness`]);
   }
   const outerFirst = str('outer_inset_first');
-  if (outerFirst !== undefined) c.set('wallOrder', bool(outerFirst) ? 'outer-first' : 'inner-first', 'outer_inset_first');
+  if (outerFirst !== undefined)
+    c.set('wallOrder', bool(outerFirst) ? 'outer-first' : 'inner-first', 'outer_inset_first');
   const seam = str('z_seam_type');
   if (seam !== undefined) c.set('seamPosition', SEAM[seam], 'z_seam_type', `seam "${seam}" has no Strata equivalent`);
   take('skinOverlap', ['skin_overlap']);
@@ -269,12 +344,21 @@ export function mapCuraKeys(c: ImportContext): void {
   const split = value('scarf_split_distance');
   if (split !== undefined && split > 0) {
     const length = c.settings.scarfLength ?? (SCHEMA.scarfLength.default as number);
-    c.set('scarfSteps', Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(length / split - 1e-9))), 'scarf_split_distance');
+    c.set(
+      'scarfSteps',
+      Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(length / split - 1e-9))),
+      'scarf_split_distance',
+    );
   }
   const fuzzy = str('magic_fuzzy_skin_enabled');
   if (fuzzy !== undefined) {
     const outside = bool(str('magic_fuzzy_skin_outside_only'));
-    c.set('fuzzySkin', bool(fuzzy) === undefined ? undefined : bool(fuzzy) ? (outside ? 'outer' : 'all') : 'off', 'magic_fuzzy_skin_enabled', 'not True or False');
+    c.set(
+      'fuzzySkin',
+      bool(fuzzy) === undefined ? undefined : bool(fuzzy) ? (outside ? 'outer' : 'all') : 'off',
+      'magic_fuzzy_skin_enabled',
+      'not True or False',
+    );
   }
   // spiralize: Cura's spiral vase mode
   const spiral = str('magic_spiralize');
@@ -283,7 +367,13 @@ export function mapCuraKeys(c: ImportContext): void {
   if (c.has('magic_fuzzy_skin_point_dist')) take('fuzzySkinPointDistance', ['magic_fuzzy_skin_point_dist']);
   else take('fuzzySkinPointDistance', ['magic_fuzzy_skin_point_density'], (perMm) => round(1 / perMm));
   // variable-width walls (Cura 5): mm → % of the nozzle
-  const arachne = ['min_feature_size', 'min_bead_width', 'wall_transition_length', 'wall_transition_angle', 'wall_distribution_count'].find((k) => c.has(k));
+  const arachne = [
+    'min_feature_size',
+    'min_bead_width',
+    'wall_transition_length',
+    'wall_transition_angle',
+    'wall_distribution_count',
+  ].find((k) => c.has(k));
   if (arachne !== undefined) c.set('wallGenerator', 'variable', arachne);
   const nozzle = c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number);
   take('minFeatureSize', ['min_feature_size'], (mm) => percentOfNozzle(mm, nozzle));
@@ -296,7 +386,8 @@ export function mapCuraKeys(c: ImportContext): void {
   take('infillDensity', ['infill_sparse_density']);
   const pattern = str('infill_pattern');
   if (pattern !== undefined) {
-    const id = INFILL[pattern] ?? ((PATTERN_IDS as readonly string[]).includes(pattern) ? (pattern as PatternId) : undefined);
+    const id =
+      INFILL[pattern] ?? ((PATTERN_IDS as readonly string[]).includes(pattern) ? (pattern as PatternId) : undefined);
     c.set('infillPattern', id, 'infill_pattern', `pattern "${pattern}" has no Strata equivalent`);
   }
   take('infillAngle', ['infill_angles']);
@@ -304,35 +395,67 @@ export function mapCuraKeys(c: ImportContext): void {
 
   // skin patterns: lines and zigzag are lines (monotonic with skin_monotonic), concentric concentric; the top
   // skin takes the roofing's (Cura's topmost skin layers) unless the profile has no roofing layers
-  const skinPattern = (pattern: string | undefined, monotonic: string | undefined): Settings['topSkinPattern'] | undefined => {
+  const skinPattern = (
+    pattern: string | undefined,
+    monotonic: string | undefined,
+  ): Settings['topSkinPattern'] | undefined => {
     const id = CURA_SKIN[pattern ?? 'lines'];
     return id === 'lines' && bool(monotonic) ? 'monotonic' : id;
   };
   const bottomKey = ['top_bottom_pattern', 'skin_monotonic'].find((k) => c.has(k));
-  const base = str('top_bottom_pattern'), monotonic = str('skin_monotonic');
-  if (bottomKey) c.set('bottomSkinPattern', skinPattern(base, monotonic), bottomKey, `pattern "${base}" has no Strata skin equivalent (lines, zigzag, concentric)`);
+  const base = str('top_bottom_pattern'),
+    monotonic = str('skin_monotonic');
+  if (bottomKey)
+    c.set(
+      'bottomSkinPattern',
+      skinPattern(base, monotonic),
+      bottomKey,
+      `pattern "${base}" has no Strata skin equivalent (lines, zigzag, concentric)`,
+    );
   const roofKeys = ['roofing_pattern', 'roofing_monotonic'].filter((k) => c.has(k));
   const roofing = value('roofing_layer_count') !== 0;
   if (roofing && roofKeys.length) {
     const roof = str('roofing_pattern') ?? base;
-    c.set('topSkinPattern', skinPattern(roof, str('roofing_monotonic') ?? monotonic), roofKeys[0]!, `pattern "${roof}" has no Strata skin equivalent (lines, zigzag, concentric)`);
+    c.set(
+      'topSkinPattern',
+      skinPattern(roof, str('roofing_monotonic') ?? monotonic),
+      roofKeys[0]!,
+      `pattern "${roof}" has no Strata skin equivalent (lines, zigzag, concentric)`,
+    );
   } else if (bottomKey) c.set('topSkinPattern', c.settings.bottomSkinPattern, bottomKey);
   for (const k of roofing ? [] : roofKeys) c.reject(k, 'roofing_layer_count is 0: no layer is roofing');
   const initial = str('top_bottom_pattern_0');
-  if (initial !== undefined && CURA_SKIN[initial] !== (c.settings.bottomSkinPattern === 'monotonic' ? 'lines' : c.settings.bottomSkinPattern ?? 'lines')) {
-    c.reject('top_bottom_pattern_0', "Strata's bottom skin has one pattern on every layer (bottomSkinPattern, from top_bottom_pattern)");
+  if (
+    initial !== undefined &&
+    CURA_SKIN[initial] !==
+      (c.settings.bottomSkinPattern === 'monotonic' ? 'lines' : (c.settings.bottomSkinPattern ?? 'lines'))
+  ) {
+    c.reject(
+      'top_bottom_pattern_0',
+      "Strata's bottom skin has one pattern on every layer (bottomSkinPattern, from top_bottom_pattern)",
+    );
   }
 
   // ironing: its flow is a share of a skin line's in Cura, of a line as wide as the ironing's spacing in Strata
   const ironing = str('ironing_enabled');
   if (ironing !== undefined) c.set('ironingEnabled', bool(ironing), 'ironing_enabled', 'not True or False');
   const highest = str('ironing_only_highest_layer');
-  if (highest !== undefined) c.set('ironingType', bool(highest) === undefined ? undefined : bool(highest) ? 'topmost' : 'top', 'ironing_only_highest_layer', 'not True or False');
+  if (highest !== undefined)
+    c.set(
+      'ironingType',
+      bool(highest) === undefined ? undefined : bool(highest) ? 'topmost' : 'top',
+      'ironing_only_highest_layer',
+      'not True or False',
+    );
   take('ironingSpacing', ['ironing_line_spacing']);
   take('ironingSpeed', ['speed_ironing']);
   const ironingFlow = value('ironing_flow');
   if (ironingFlow !== undefined) {
-    const skinWidth = value('skin_line_width') ?? c.settings.lineWidth ?? c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number);
+    const skinWidth =
+      value('skin_line_width') ??
+      c.settings.lineWidth ??
+      c.settings.nozzleDiameter ??
+      (SCHEMA.nozzleDiameter.default as number);
     const spacing = c.settings.ironingSpacing ?? (SCHEMA.ironingSpacing.default as number);
     c.set('ironingFlow', round((ironingFlow * skinWidth) / spacing, 2), 'ironing_flow');
   } else if (c.has('ironing_flow')) c.reject('ironing_flow', 'a formula Strata cannot evaluate');
@@ -349,8 +472,10 @@ export function mapCuraKeys(c: ImportContext): void {
 
   // temperatures and cooling
   take('nozzleTemperature', ['material_print_temperature']);
-  if (c.has('material_print_temperature_layer_0')) take('firstLayerNozzleTemperature', ['material_print_temperature_layer_0']);
-  else if (c.has('material_initial_print_temperature')) take('firstLayerNozzleTemperature', ['material_initial_print_temperature']);
+  if (c.has('material_print_temperature_layer_0'))
+    take('firstLayerNozzleTemperature', ['material_print_temperature_layer_0']);
+  else if (c.has('material_initial_print_temperature'))
+    take('firstLayerNozzleTemperature', ['material_initial_print_temperature']);
   take('bedTemperature', ['material_bed_temperature']);
   if (c.has('material_bed_temperature_layer_0')) take('firstLayerBedTemperature', ['material_bed_temperature_layer_0']);
   const fanOn = str('cool_fan_enabled');
@@ -386,16 +511,22 @@ export function mapCuraKeys(c: ImportContext): void {
   }
   take('combingMaxDistance', ['retraction_combing_max_distance']);
   const layerChange = str('retract_at_layer_change');
-  if (layerChange !== undefined) c.set('retractOnLayerChange', bool(layerChange), 'retract_at_layer_change', 'not True or False');
+  if (layerChange !== undefined)
+    c.set('retractOnLayerChange', bool(layerChange), 'retract_at_layer_change', 'not True or False');
   const hop = str('retraction_hop_enabled');
   if (hop !== undefined && bool(hop) === false) c.set('zHop', 0, 'retraction_hop_enabled');
   else if (hop !== undefined || c.has('retraction_hop')) take('zHop', ['retraction_hop']);
   take('zHopSpeed', ['speed_z_hop']);
   const hopOver = str('retraction_hop_only_when_collides');
-  if (hopOver !== undefined) c.set('zHopOnlyOverParts', bool(hopOver), 'retraction_hop_only_when_collides', 'not True or False');
+  if (hopOver !== undefined)
+    c.set('zHopOnlyOverParts', bool(hopOver), 'retraction_hop_only_when_collides', 'not True or False');
   // Cura's count 0 means no retraction but the forced ones; Strata's 0 means no limit
   const countMax = value('retraction_count_max');
-  if (countMax === 0) c.reject('retraction_count_max', 'Cura retracts only where it must with 0; Strata has no such setting (its 0 is no limit)');
+  if (countMax === 0)
+    c.reject(
+      'retraction_count_max',
+      'Cura retracts only where it must with 0; Strata has no such setting (its 0 is no limit)',
+    );
   else if (countMax !== undefined) c.set('retractionCountMax', Math.round(countMax), 'retraction_count_max');
   else if (c.has('retraction_count_max')) c.reject('retraction_count_max', 'a formula Strata cannot evaluate');
   take('retractionExtrusionWindow', ['retraction_extrusion_window']);
@@ -409,7 +540,12 @@ export function mapCuraKeys(c: ImportContext): void {
   const adhesion = str('adhesion_type');
   if (adhesion !== undefined) {
     const map: Record<string, Settings['adhesionType']> = { skirt: 'skirt', brim: 'brim', raft: 'raft', none: 'none' };
-    c.set('adhesionType', map[adhesion], 'adhesion_type', `adhesion "${adhesion}" has no Strata equivalent (skirt, brim, raft, none)`);
+    c.set(
+      'adhesionType',
+      map[adhesion],
+      'adhesion_type',
+      `adhesion "${adhesion}" has no Strata equivalent (skirt, brim, raft, none)`,
+    );
   }
   take('skirtLoops', ['skirt_line_count'], (v) => Math.round(v));
   take('skirtDistance', ['skirt_gap']);
@@ -421,12 +557,19 @@ export function mapCuraKeys(c: ImportContext): void {
   const sequence = str('print_sequence');
   if (sequence !== undefined) {
     const on = sequence === 'one_at_a_time' ? true : sequence === 'all_at_once' ? false : undefined;
-    c.set('sequentialPrinting', on, 'print_sequence', `print sequence "${sequence}" has no Strata equivalent (all_at_once, one_at_a_time)`);
+    c.set(
+      'sequentialPrinting',
+      on,
+      'print_sequence',
+      `print sequence "${sequence}" has no Strata equivalent (all_at_once, one_at_a_time)`,
+    );
   }
   take('extruderClearanceHeight', ['gantry_height']);
   const head = str('machine_head_with_fans_polygon');
   if (head !== undefined) {
-    const corners = [...head.matchAll(/\[\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\]/g)].map((m) => Math.hypot(Number(m[1]), Number(m[2])));
+    const corners = [...head.matchAll(/\[\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\]/g)].map((m) =>
+      Math.hypot(Number(m[1]), Number(m[2])),
+    );
     const reach = corners.length >= 3 && corners.every(Number.isFinite) ? round(Math.max(...corners), 2) : undefined;
     c.set('extruderClearanceRadius', reach, 'machine_head_with_fans_polygon', 'not a list of [x, y] corners');
   }
@@ -440,22 +583,41 @@ export function mapCuraKeys(c: ImportContext): void {
   flag('support_enable', 'supportEnabled');
   const structure = str('support_structure');
   if (structure !== undefined) {
-    c.set('supportType', structure === 'tree' || structure === 'normal' ? structure : undefined, 'support_structure', `support structure "${structure}" has no Strata equivalent (normal, tree)`);
+    c.set(
+      'supportType',
+      structure === 'tree' || structure === 'normal' ? structure : undefined,
+      'support_structure',
+      `support structure "${structure}" has no Strata equivalent (normal, tree)`,
+    );
   }
   const placement = str('support_type');
   if (placement !== undefined) {
     const map: Record<string, Settings['supportPlacement']> = { buildplate: 'buildPlate', everywhere: 'everywhere' };
-    c.set('supportPlacement', map[placement], 'support_type', `support placement "${placement}" has no Strata equivalent (buildplate, everywhere)`);
+    c.set(
+      'supportPlacement',
+      map[placement],
+      'support_type',
+      `support placement "${placement}" has no Strata equivalent (buildplate, everywhere)`,
+    );
   }
   take('supportThreshold', ['support_angle']);
   const supportPattern = str('support_pattern');
-  if (supportPattern !== undefined) c.set('supportPattern', SUPPORT_PATTERN[supportPattern], 'support_pattern', `support pattern "${supportPattern}" has no Strata equivalent (zigzag, lines, grid)`);
+  if (supportPattern !== undefined)
+    c.set(
+      'supportPattern',
+      SUPPORT_PATTERN[supportPattern],
+      'support_pattern',
+      `support pattern "${supportPattern}" has no Strata equivalent (zigzag, lines, grid)`,
+    );
   take('supportDensity', ['support_infill_rate']);
   take('supportZGap', ['support_top_distance', 'support_z_distance']);
   take('supportBottomZGap', ['support_bottom_distance']);
   take('supportXYGap', ['support_xy_distance']);
   // roof and floor: on (Cura's default is off) for their height in layers, else none
-  for (const [side, setting] of [['roof', 'supportInterfaceLayers'], ['bottom', 'supportFloorLayers']] as const) {
+  for (const [side, setting] of [
+    ['roof', 'supportInterfaceLayers'],
+    ['bottom', 'supportFloorLayers'],
+  ] as const) {
     const key = c.has(`support_${side}_enable`) ? `support_${side}_enable` : 'support_interface_enable';
     const on = str(key);
     if (on !== undefined && bool(on) === false) c.set(setting, 0, key);
@@ -477,7 +639,11 @@ export function mapCuraKeys(c: ImportContext): void {
   // Cura 5's branch density
   if (!c.has('support_tree_branch_distance')) {
     const lw = c.settings.supportLineWidth ?? c.settings.lineWidth ?? 0.4;
-    take('supportTreeTipSpacing', ['support_tree_top_rate'], (v) => tipSpacingOfDensity(lw, v) as Settings['supportTreeTipSpacing']);
+    take(
+      'supportTreeTipSpacing',
+      ['support_tree_top_rate'],
+      (v) => tipSpacingOfDensity(lw, v) as Settings['supportTreeTipSpacing'],
+    );
   }
   flag('limit_support_retractions', 'supportLimitRetractions');
 }

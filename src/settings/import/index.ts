@@ -35,14 +35,23 @@ const CURA_META_SECTIONS = new Set(['general', 'metadata']);
 
 function describe(source: string, unused: string[], rejected: RejectedValue[]): string[] {
   const out: string[] = [];
-  if (unused.length) out.push(`${source}: ${unused.length} setting${unused.length === 1 ? '' : 's'} with no Strata equivalent, not used: ${unused.join(', ')}`);
+  if (unused.length)
+    out.push(
+      `${source}: ${unused.length} setting${unused.length === 1 ? '' : 's'} with no Strata equivalent, not used: ${unused.join(', ')}`,
+    );
   if (rejected.length) out.push(`${source}: not taken: ${rejected.map((r) => `${r.key} (${r.reason})`).join('; ')}`);
   return out;
 }
 
 function finish(format: ProfileFormat, c: ImportContext, ignore: ReadonlySet<string>, source: string): ImportedProfile {
   const unused = c.unused(ignore);
-  return { format, settings: { ...c.settings }, unused, rejected: c.rejected, warnings: describe(source, unused, c.rejected) };
+  return {
+    format,
+    settings: { ...c.settings },
+    unused,
+    rejected: c.rejected,
+    warnings: describe(source, unused, c.rejected),
+  };
 }
 
 /** Which Slic3r-family slicer wrote a file, from its generator line or its keys. */
@@ -52,8 +61,22 @@ function slic3rFlavor(generator: string | undefined, keys: Iterable<string>): Sl
   if (g.includes('orca') || g.includes('bambu')) return 'orcaslicer';
   if (g.includes('prusaslicer') || g.includes('slic3r')) return 'prusaslicer';
   const set = new Set(keys);
-  if (['sparse_infill_density', 'wall_loops', 'outer_wall_speed', 'printable_area', 'initial_layer_print_height'].some((k) => set.has(k))) return 'orcaslicer';
-  if (['thin_walls_min_width', 'perimeter_round_corners', 'top_fan_speed', 'external_perimeter_cut_corners', 'start_gcode_manual'].some((k) => set.has(k))) return 'superslicer';
+  if (
+    ['sparse_infill_density', 'wall_loops', 'outer_wall_speed', 'printable_area', 'initial_layer_print_height'].some(
+      (k) => set.has(k),
+    )
+  )
+    return 'orcaslicer';
+  if (
+    [
+      'thin_walls_min_width',
+      'perimeter_round_corners',
+      'top_fan_speed',
+      'external_perimeter_cut_corners',
+      'start_gcode_manual',
+    ].some((k) => set.has(k))
+  )
+    return 'superslicer';
   return 'prusaslicer';
 }
 
@@ -65,9 +88,16 @@ function bundleSections(ini: IniFile, kind: string): Map<string, Map<string, str
 }
 
 /** A bundle section's values with its `inherits` chain (inside the bundle) applied under it. */
-function withParents(sections: Map<string, Map<string, string>>, name: string, seen = new Set<string>()): Map<string, string> {
+function withParents(
+  sections: Map<string, Map<string, string>>,
+  name: string,
+  seen = new Set<string>(),
+): Map<string, string> {
   const own = sections.get(name)!;
-  const parents = (own.get('inherits') ?? '').split(';').map((s) => s.trim()).filter((p) => p && sections.has(p) && !seen.has(p));
+  const parents = (own.get('inherits') ?? '')
+    .split(';')
+    .map((s) => s.trim())
+    .filter((p) => p && sections.has(p) && !seen.has(p));
   const merged = new Map<string, string>();
   seen.add(name);
   for (const p of parents) for (const [k, v] of withParents(sections, p, seen)) merged.set(k, v);
@@ -87,7 +117,9 @@ function slic3rValues(ini: IniFile): Map<string, string> {
   const merged = new Map<string, string>();
   for (const kind of kinds) {
     const sections = bundleSections(ini, kind);
-    const name = [chosen?.get(kind), ...sections.keys()].find((n) => n !== undefined && sections.has(n) && !n.startsWith('*'));
+    const name = [chosen?.get(kind), ...sections.keys()].find(
+      (n) => n !== undefined && sections.has(n) && !n.startsWith('*'),
+    );
     if (name === undefined) continue;
     for (const [k, v] of withParents(sections, name)) merged.set(k, v);
   }
@@ -96,7 +128,8 @@ function slic3rValues(ini: IniFile): Map<string, string> {
 
 function importIni(text: string, source: string, cura: boolean): ImportedProfile {
   const ini = parseIni(text);
-  const isCura = cura || ini.sections.some((s) => s.name === 'values') && ini.sections.some((s) => s.name === 'general');
+  const isCura =
+    cura || (ini.sections.some((s) => s.name === 'values') && ini.sections.some((s) => s.name === 'general'));
   if (isCura) {
     const values = new Map<string, string>();
     for (const s of ini.sections) {
@@ -122,11 +155,16 @@ function importJson(text: string, source: string): ImportedProfile {
   } catch (e) {
     throw new StrataError('BAD_FILE', `${source} is not valid JSON: ${(e as Error).message}`);
   }
-  if (!obj || typeof obj !== 'object' || Array.isArray(obj)) throw new StrataError('BAD_FILE', `${source} must hold a JSON object of settings`);
+  if (!obj || typeof obj !== 'object' || Array.isArray(obj))
+    throw new StrataError('BAD_FILE', `${source} must hold a JSON object of settings`);
   const record = obj as Record<string, unknown>;
   // JSON.parse keeps "__proto__" as a key, but copying it (Object.assign, a spread into a setter) would
   // drop it or change a prototype: refused here, as the Slicer and the page refuse it
-  if (Object.hasOwn(record, '__proto__')) throw new StrataError('UNKNOWN_SETTING', `${source}: unknown setting "__proto__"; \`strata settings\` lists them all`);
+  if (Object.hasOwn(record, '__proto__'))
+    throw new StrataError(
+      'UNKNOWN_SETTING',
+      `${source}: unknown setting "__proto__"; \`strata settings\` lists them all`,
+    );
   const keys = Object.keys(record);
   const strataKeys = keys.filter((k) => Object.hasOwn(SCHEMA, k) || k === 'printer' || k === 'filament');
   // an OrcaSlicer / Bambu Studio preset: their keys, values as strings or lists of strings
@@ -153,10 +191,14 @@ function importJson(text: string, source: string): ImportedProfile {
 export function importProfile(text: string, fileName = 'profile'): ImportedProfile {
   const name = fileName.toLowerCase();
   const trimmed = text.replace(/^\uFEFF/, '').trimStart();
-  if (name.endsWith('.json') || (!/\.(ini|cfg|gcode|txt)$/.test(name) && trimmed.startsWith('{'))) return importJson(trimmed, fileName);
+  if (name.endsWith('.json') || (!/\.(ini|cfg|gcode|txt)$/.test(name) && trimmed.startsWith('{')))
+    return importJson(trimmed, fileName);
   if (trimmed.startsWith('{')) return importJson(trimmed, fileName);
   if (!/^\s*([#;[]|[A-Za-z_][\w.]*\s*=)/m.test(text)) {
-    throw new StrataError('BAD_FILE', `${fileName} is neither JSON nor a PrusaSlicer/SuperSlicer/OrcaSlicer .ini or Cura .cfg profile`);
+    throw new StrataError(
+      'BAD_FILE',
+      `${fileName} is neither JSON nor a PrusaSlicer/SuperSlicer/OrcaSlicer .ini or Cura .cfg profile`,
+    );
   }
   return importIni(text, fileName, name.endsWith('.cfg'));
 }

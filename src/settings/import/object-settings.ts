@@ -27,7 +27,12 @@ export interface ObjectSettings {
 /** An import that remembers which of the source's keys each setting was computed from. */
 class TracingContext extends ImportContext {
   readonly from = new Map<string, string>();
-  override set<K extends SettingKey>(setting: K, value: Settings[K] | undefined, fromKey: string, reasonIfUndefined?: string): void {
+  override set<K extends SettingKey>(
+    setting: K,
+    value: Settings[K] | undefined,
+    fromKey: string,
+    reasonIfUndefined?: string,
+  ): void {
     if (value !== undefined) this.from.set(setting, fromKey);
     super.set(setting, value, fromKey, reasonIfUndefined);
   }
@@ -86,7 +91,11 @@ function strataSettings(values: Readonly<Record<string, unknown>>): ObjectSettin
       out.settings[k] = validateValue(k as SettingKey, v, 'project setting');
     } catch (e) {
       if (!(e instanceof StrataError)) throw e;
-      out.rejected.push({ key: k, value: JSON.stringify(v) ?? String(v), reason: e.message.replace(/^.*? is not allowed: /, '') });
+      out.rejected.push({
+        key: k,
+        value: JSON.stringify(v) ?? String(v),
+        reason: e.message.replace(/^.*? is not allowed: /, ''),
+      });
     }
   }
   return out;

@@ -58,42 +58,133 @@ import type { Settings } from '../schema.js';
 import { SCHEMA } from '../schema.js';
 import type { ImportContext } from './context.js';
 import { importTemplate, listEntries } from './templates.js';
-import { bool, first, num, numOrPercent, percent, percentOfNozzle, points, text, tipSpacingOfDensity } from './values.js';
+import {
+  bool,
+  first,
+  num,
+  numOrPercent,
+  percent,
+  percentOfNozzle,
+  points,
+  text,
+  tipSpacingOfDensity,
+} from './values.js';
 
 export type Slic3rFlavor = 'prusaslicer' | 'superslicer' | 'orcaslicer';
 
 /** Keys that describe the profile rather than set anything (never reported as unused). */
 export const SLIC3R_METADATA = new Set([
-  'inherits', 'compatible_printers', 'compatible_printers_condition', 'compatible_prints', 'compatible_prints_condition',
-  'print_settings_id', 'filament_settings_id', 'printer_settings_id', 'printer_model', 'printer_variant', 'printer_vendor',
-  'printer_technology', 'name', 'from', 'type', 'setting_id', 'instantiation', 'version', 'is_custom_defined', 'renamed_from',
-  'alias', 'notes', 'printer_notes', 'filament_notes', 'default_print_profile', 'default_filament_profile', 'filament_vendor',
-  'filament_type', 'filament_colour', 'extruder_colour', 'filament_settings_id', 'print_host', 'printhost_apikey', 'printhost_cafile',
-  'host_type', 'preset_name', 'preset_names', 'upward_compatible_machine', 'printer_structure', 'bed_custom_texture', 'bed_custom_model',
-  'thumbnails_with_bed', 'thumbnails_color', 'thumbnails_custom_color', 'wipe_tower_x', 'wipe_tower_y', 'post_process', 'threads',
+  'inherits',
+  'compatible_printers',
+  'compatible_printers_condition',
+  'compatible_prints',
+  'compatible_prints_condition',
+  'print_settings_id',
+  'filament_settings_id',
+  'printer_settings_id',
+  'printer_model',
+  'printer_variant',
+  'printer_vendor',
+  'printer_technology',
+  'name',
+  'from',
+  'type',
+  'setting_id',
+  'instantiation',
+  'version',
+  'is_custom_defined',
+  'renamed_from',
+  'alias',
+  'notes',
+  'printer_notes',
+  'filament_notes',
+  'default_print_profile',
+  'default_filament_profile',
+  'filament_vendor',
+  'filament_type',
+  'filament_colour',
+  'extruder_colour',
+  'filament_settings_id',
+  'print_host',
+  'printhost_apikey',
+  'printhost_cafile',
+  'host_type',
+  'preset_name',
+  'preset_names',
+  'upward_compatible_machine',
+  'printer_structure',
+  'bed_custom_texture',
+  'bed_custom_model',
+  'thumbnails_with_bed',
+  'thumbnails_color',
+  'thumbnails_custom_color',
+  'wipe_tower_x',
+  'wipe_tower_y',
+  'post_process',
+  'threads',
 ]);
 
 const INFILL: Readonly<Record<string, PatternId>> = {
-  rectilinear: 'lines', alignedrectilinear: 'lines', 'zig-zag': 'lines', line: 'lines', monotonic: 'lines', monotonicline: 'lines',
-  grid: 'grid', triangles: 'triangles', stars: 'triangles', 'tri-hexagon': 'triangles', cubic: 'cubic', adaptivecubic: 'cubic',
-  supportcubic: 'cubic', honeycomb: 'hexagons', '3dhoneycomb': 'hexagons', gyroid: 'gyroid', concentric: 'concentric',
-  archimedeanchords: 'spiral', octagramspiral: 'spiral', lightning: 'lightning',
+  rectilinear: 'lines',
+  alignedrectilinear: 'lines',
+  'zig-zag': 'lines',
+  line: 'lines',
+  monotonic: 'lines',
+  monotonicline: 'lines',
+  grid: 'grid',
+  triangles: 'triangles',
+  stars: 'triangles',
+  'tri-hexagon': 'triangles',
+  cubic: 'cubic',
+  adaptivecubic: 'cubic',
+  supportcubic: 'cubic',
+  honeycomb: 'hexagons',
+  '3dhoneycomb': 'hexagons',
+  gyroid: 'gyroid',
+  concentric: 'concentric',
+  archimedeanchords: 'spiral',
+  octagramspiral: 'spiral',
+  lightning: 'lightning',
 };
 const SKIN_PATTERN: Readonly<Record<string, Settings['topSkinPattern']>> = {
-  rectilinear: 'lines', alignedrectilinear: 'lines', 'zig-zag': 'lines', line: 'lines', monotonic: 'monotonic', monotonicline: 'monotonic',
-  monotoniclines: 'monotonic', concentric: 'concentric',
+  rectilinear: 'lines',
+  alignedrectilinear: 'lines',
+  'zig-zag': 'lines',
+  line: 'lines',
+  monotonic: 'monotonic',
+  monotonicline: 'monotonic',
+  monotoniclines: 'monotonic',
+  concentric: 'concentric',
 };
 const IRONING: Readonly<Record<string, Settings['ironingType']>> = { top: 'top', topmost: 'topmost', solid: 'all' };
 const WALL_GENERATOR: Readonly<Record<string, Settings['wallGenerator']>> = { arachne: 'variable', classic: 'classic' };
-const SEAM: Readonly<Record<string, Settings['seamPosition']>> = { aligned: 'aligned', nearest: 'nearest', rear: 'rear', back: 'rear', random: 'random' };
+const SEAM: Readonly<Record<string, Settings['seamPosition']>> = {
+  aligned: 'aligned',
+  nearest: 'nearest',
+  rear: 'rear',
+  back: 'rear',
+  random: 'random',
+};
 const FLAVOR: Readonly<Record<string, Settings['gcodeFlavor']>> = {
-  marlin: 'marlin', marlin2: 'marlin', marlinlegacy: 'marlin', marlinfirmware: 'marlin', reprap: 'marlin', sprinter: 'marlin', smoothie: 'marlin',
-  repetier: 'marlin', klipper: 'klipper', reprapfirmware: 'reprap',
+  marlin: 'marlin',
+  marlin2: 'marlin',
+  marlinlegacy: 'marlin',
+  marlinfirmware: 'marlin',
+  reprap: 'marlin',
+  sprinter: 'marlin',
+  smoothie: 'marlin',
+  repetier: 'marlin',
+  klipper: 'klipper',
+  reprapfirmware: 'reprap',
 };
 /** OrcaSlicer plate type → its bed temperature keys. */
 const PLATES: Readonly<Record<string, string>> = {
-  'Cool Plate': 'cool_plate_temp', 'Engineering Plate': 'eng_plate_temp', 'High Temp Plate': 'hot_plate_temp',
-  'Textured PEI Plate': 'textured_plate_temp', 'Textured Cool Plate': 'textured_cool_plate_temp', 'SuperTack Plate': 'supertack_plate_temp',
+  'Cool Plate': 'cool_plate_temp',
+  'Engineering Plate': 'eng_plate_temp',
+  'High Temp Plate': 'hot_plate_temp',
+  'Textured PEI Plate': 'textured_plate_temp',
+  'Textured Cool Plate': 'textured_cool_plate_temp',
+  'SuperTack Plate': 'supertack_plate_temp',
 };
 
 const round = (v: number, digits = 4) => Math.round(v * 10 ** digits) / 10 ** digits;
@@ -136,7 +227,10 @@ export function mapSlic3rKeys(c: ImportContext, flavor: Slic3rFlavor): void {
 function adaptiveLayers(c: ImportContext): void {
   const on = c.get('adaptive_layer_height');
   if (on !== undefined) c.set('adaptiveLayerHeight', bool(on), 'adaptive_layer_height', 'not a yes/no');
-  for (const [key, setting] of [['min_layer_height', 'minLayerHeight'], ['max_layer_height', 'maxLayerHeight']] as const) {
+  for (const [key, setting] of [
+    ['min_layer_height', 'minLayerHeight'],
+    ['max_layer_height', 'maxLayerHeight'],
+  ] as const) {
     const raw = c.get(key);
     if (raw === undefined) continue;
     const v = num(raw);
@@ -154,7 +248,8 @@ function machine(c: ImportContext, nozzle: number): void {
     const pts = points(bed.value);
     if (!pts) c.reject(bed.key, 'not a bed outline (XxY points)');
     else {
-      const xs = pts.map((p) => p[0]), ys = pts.map((p) => p[1]);
+      const xs = pts.map((p) => p[0]),
+        ys = pts.map((p) => p[1]);
       const [x0, x1, y0, y1] = [Math.min(...xs), Math.max(...xs), Math.min(...ys), Math.max(...ys)];
       c.set('buildPlateWidth', round(x1 - x0, 3), bed.key);
       c.set('buildPlateLength', round(y1 - y0, 3), bed.key);
@@ -169,7 +264,13 @@ function machine(c: ImportContext, nozzle: number): void {
     c.set('gcodeFlavor', FLAVOR[v], fl.key, `G-code flavour "${v}" has no Strata equivalent (marlin, klipper, reprap)`);
   }
   const rel = c.getAny('use_relative_e_distances');
-  if (rel) c.set('extruderMode', bool(rel.value) === undefined ? undefined : bool(rel.value) ? 'relative' : 'absolute', rel.key, 'not 0 or 1');
+  if (rel)
+    c.set(
+      'extruderMode',
+      bool(rel.value) === undefined ? undefined : bool(rel.value) ? 'relative' : 'absolute',
+      rel.key,
+      'not 0 or 1',
+    );
   const fw = c.getAny('use_firmware_retraction');
   if (fw) c.set('firmwareRetraction', bool(fw.value), fw.key, 'not 0 or 1');
   // templates, kept as written (templates.ts); PrusaSlicer's names, then OrcaSlicer's
@@ -205,20 +306,36 @@ function limits(c: ImportContext): void {
     const v = c.getAny(prusa, ...(orca ? [orca] : []));
     if (v) c.set(setting, num(v.value), v.key, 'not a number');
   }
-  const sx = c.settings.maxSpeedX, sy = c.settings.maxSpeedY;
-  if (sx !== undefined && sx !== null && sy !== undefined && sy !== null) c.set('maxSpeed', Math.min(sx, sy), 'machine_max_feedrate_x');
+  const sx = c.settings.maxSpeedX,
+    sy = c.settings.maxSpeedY;
+  if (sx !== undefined && sx !== null && sy !== undefined && sy !== null)
+    c.set('maxSpeed', Math.min(sx, sy), 'machine_max_feedrate_x');
   const jerk = c.getAny('machine_max_jerk_x');
   if (jerk) c.set('cornerVelocity', num(jerk.value), jerk.key, 'not a number');
   // and Marlin's classic jerk itself, per axis, for the Marlin estimate (a Prusa firmware's junctions)
-  for (const [key, setting] of [['machine_max_jerk_x', 'jerkX'], ['machine_max_jerk_y', 'jerkY'], ['machine_max_jerk_z', 'jerkZ'], ['machine_max_jerk_e', 'jerkE']] as const) {
+  for (const [key, setting] of [
+    ['machine_max_jerk_x', 'jerkX'],
+    ['machine_max_jerk_y', 'jerkY'],
+    ['machine_max_jerk_z', 'jerkZ'],
+    ['machine_max_jerk_e', 'jerkE'],
+  ] as const) {
     const v = c.getAny(key);
     if (v) c.set(setting, num(v.value), v.key, 'not a number');
   }
   const usage = c.getAny('machine_limits_usage');
   if (usage) {
     const v = first(usage.value);
-    const map: Record<string, Settings['machineLimits']> = { emit_to_gcode: 'write', time_estimate_only: 'estimate', ignore: 'ignore' };
-    c.set('machineLimits', v === undefined ? undefined : map[v], usage.key, 'not emit_to_gcode, time_estimate_only or ignore');
+    const map: Record<string, Settings['machineLimits']> = {
+      emit_to_gcode: 'write',
+      time_estimate_only: 'estimate',
+      ignore: 'ignore',
+    };
+    c.set(
+      'machineLimits',
+      v === undefined ? undefined : map[v],
+      usage.key,
+      'not emit_to_gcode, time_estimate_only or ignore',
+    );
   }
   // OrcaSlicer's Klipper "accel to decel" (SET_VELOCITY_LIMIT ACCEL_TO_DECEL = acceleration × factor):
   // Klipper's minimum_cruise_ratio is 1 − factor
@@ -227,7 +344,12 @@ function limits(c: ImportContext): void {
   if (a2d && bool(a2d.value) && factor) {
     const f = numOrPercent(first(factor.value));
     const ratio = f ? 1 - (f.percent ? f.value / 100 : f.value) : undefined;
-    c.set('minimumCruiseRatio', ratio !== undefined && ratio >= 0 && ratio <= 0.99 ? Math.round(ratio * 1000) / 1000 : undefined, factor.key, 'not a factor between 1 % and 100 %');
+    c.set(
+      'minimumCruiseRatio',
+      ratio !== undefined && ratio >= 0 && ratio <= 0.99 ? Math.round(ratio * 1000) / 1000 : undefined,
+      factor.key,
+      'not a factor between 1 % and 100 %',
+    );
   }
   const emit = c.getAny('emit_machine_limits_to_gcode');
   if (emit) c.set('machineLimits', bool(emit.value) ? 'write' : 'estimate', emit.key);
@@ -253,12 +375,23 @@ function width(raw: string | undefined, flavor: Slic3rFlavor, nozzle: number, he
   return round((nozzle * v.value) / 100);
 }
 
-function widths(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHeight: number, firstLayerHeight: number): void {
+function widths(
+  c: ImportContext,
+  flavor: Slic3rFlavor,
+  nozzle: number,
+  layerHeight: number,
+  firstLayerHeight: number,
+): void {
   const main = c.getAny('extrusion_width', 'line_width');
   let w = main ? width(main.value, flavor, nozzle, layerHeight) : undefined;
   let from = main?.key;
   if (w === undefined) {
-    const other = c.getAny('perimeter_extrusion_width', 'inner_wall_line_width', 'external_perimeter_extrusion_width', 'outer_wall_line_width');
+    const other = c.getAny(
+      'perimeter_extrusion_width',
+      'inner_wall_line_width',
+      'external_perimeter_extrusion_width',
+      'outer_wall_line_width',
+    );
     if (other) {
       w = width(other.value, flavor, nozzle, layerHeight);
       from = other.key;
@@ -276,22 +409,42 @@ function walls(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHeig
   const p = c.getAny('perimeters', 'wall_loops');
   if (p) c.set('wallCount', num(p.value), p.key, 'not a count');
   for (const [side, countKeys, thickKeys, setting] of [
-    ['top', ['top_solid_layers', 'top_shell_layers'], ['top_solid_min_thickness', 'top_shell_thickness'], 'topSkinThickness'],
-    ['bottom', ['bottom_solid_layers', 'bottom_shell_layers'], ['bottom_solid_min_thickness', 'bottom_shell_thickness'], 'bottomSkinThickness'],
+    [
+      'top',
+      ['top_solid_layers', 'top_shell_layers'],
+      ['top_solid_min_thickness', 'top_shell_thickness'],
+      'topSkinThickness',
+    ],
+    [
+      'bottom',
+      ['bottom_solid_layers', 'bottom_shell_layers'],
+      ['bottom_solid_min_thickness', 'bottom_shell_thickness'],
+      'bottomSkinThickness',
+    ],
   ] as const) {
     const n = c.getAny(...countKeys);
     const t = c.getAny(...thickKeys);
     const layers = n ? num(n.value) : undefined;
-    const minimum = t ? num(t.value) ?? 0 : 0;
+    const minimum = t ? (num(t.value) ?? 0) : 0;
     if (layers === undefined && !t) continue;
-    c.set(setting, round(Math.max((layers ?? 0) * layerHeight, minimum), 4), `${n?.key ?? t!.key}${n && t ? ' + ' + t.key : ''}`, `no ${side} layer count`);
+    c.set(
+      setting,
+      round(Math.max((layers ?? 0) * layerHeight, minimum), 4),
+      `${n?.key ?? t!.key}${n && t ? ' + ' + t.key : ''}`,
+      `no ${side} layer count`,
+    );
   }
   const order = c.getAny('external_perimeters_first');
   if (order) c.set('wallOrder', bool(order.value) ? 'outer-first' : 'inner-first', order.key);
   const seq = c.getAny('wall_sequence', 'wall_infill_order');
   if (seq) {
     const v = first(seq.value) ?? '';
-    c.set('wallOrder', v.startsWith('outer') ? 'outer-first' : v.startsWith('inner') ? 'inner-first' : undefined, seq.key, `"${v}" has no Strata equivalent`);
+    c.set(
+      'wallOrder',
+      v.startsWith('outer') ? 'outer-first' : v.startsWith('inner') ? 'inner-first' : undefined,
+      seq.key,
+      `"${v}" has no Strata equivalent`,
+    );
   }
   const seam = c.getAny('seam_position');
   if (seam) {
@@ -306,7 +459,12 @@ function variableWalls(c: ImportContext, flavor: Slic3rFlavor, nozzle: number): 
   const generator = c.getAny('perimeter_generator', 'wall_generator');
   if (generator) {
     const v = first(generator.value)?.toLowerCase() ?? '';
-    c.set('wallGenerator', WALL_GENERATOR[v], generator.key, `wall generator "${v}" has no Strata equivalent (arachne, classic)`);
+    c.set(
+      'wallGenerator',
+      WALL_GENERATOR[v],
+      generator.key,
+      `wall generator "${v}" has no Strata equivalent (arachne, classic)`,
+    );
   }
   for (const [key, setting] of [
     ['min_feature_size', 'minFeatureSize'],
@@ -317,7 +475,8 @@ function variableWalls(c: ImportContext, flavor: Slic3rFlavor, nozzle: number): 
     if (raw === undefined) continue;
     const v = numOrPercent(raw);
     // OrcaSlicer's are percentages only: a bare number is one too
-    const pct = v === undefined ? undefined : v.percent || flavor === 'orcaslicer' ? v.value : percentOfNozzle(v.value, nozzle);
+    const pct =
+      v === undefined ? undefined : v.percent || flavor === 'orcaslicer' ? v.value : percentOfNozzle(v.value, nozzle);
     c.set(setting, pct, key, 'not a length or percentage');
   }
   const angle = c.getAny('wall_transition_angle');
@@ -342,7 +501,12 @@ function infill(c: ImportContext): void {
     const v = numOrPercent(o.value);
     const w = c.settings.lineWidth ?? null;
     // a length in mm is turned into % of the line width
-    const pct = v === undefined ? undefined : v.percent ? v.value : round((100 * v.value) / (w ?? (c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number))), 2);
+    const pct =
+      v === undefined
+        ? undefined
+        : v.percent
+          ? v.value
+          : round((100 * v.value) / (w ?? c.settings.nozzleDiameter ?? (SCHEMA.nozzleDiameter.default as number)), 2);
     c.set('infillOverlap', pct, o.key, 'not a length or percentage');
   }
 }
@@ -364,17 +528,30 @@ function speed(raw: string | undefined, base: number | undefined): number | unde
  * direction, or -1 for its fill direction, which Strata's default (across the skin lines) stands for.
  */
 function surfaces(c: ImportContext): void {
-  for (const [side, setting] of [['top', 'topSkinPattern'], ['bottom', 'bottomSkinPattern']] as const) {
+  for (const [side, setting] of [
+    ['top', 'topSkinPattern'],
+    ['bottom', 'bottomSkinPattern'],
+  ] as const) {
     const p = c.getAny(`${side}_fill_pattern`, `${side}_surface_pattern`);
     if (!p) continue;
     const v = first(p.value)?.toLowerCase();
-    c.set(setting, v === undefined ? undefined : SKIN_PATTERN[v], p.key, `pattern "${v}" has no Strata skin equivalent (lines, monotonic, concentric)`);
+    c.set(
+      setting,
+      v === undefined ? undefined : SKIN_PATTERN[v],
+      p.key,
+      `pattern "${v}" has no Strata skin equivalent (lines, monotonic, concentric)`,
+    );
   }
   // PrusaSlicer's bridge_flow_ratio, OrcaSlicer's bridge_flow: a ratio (1 = 100 %) of the same round bridge bead
   const bridgeFlow = c.getAny('bridge_flow_ratio', 'bridge_flow');
   if (bridgeFlow) {
     const p = numOrPercent(first(bridgeFlow.value));
-    c.set('bridgeFlow', p === undefined ? undefined : p.percent ? p.value : p.value * 100, bridgeFlow.key, 'not a ratio');
+    c.set(
+      'bridgeFlow',
+      p === undefined ? undefined : p.percent ? p.value : p.value * 100,
+      bridgeFlow.key,
+      'not a ratio',
+    );
   }
   const on = c.getAny('ironing');
   if (on) c.set('ironingEnabled', bool(on.value), on.key, 'not 0 or 1');
@@ -396,7 +573,12 @@ function surfaces(c: ImportContext): void {
   const angle = c.getAny('ironing_angle');
   const a = angle ? num(angle.value) : undefined;
   if (angle && a !== -1) {
-    c.set('ironingAngle', a === undefined || a < 0 ? undefined : a > 180 ? a - 360 : a, angle.key, 'not an angle from 0 to 360 (or -1)');
+    c.set(
+      'ironingAngle',
+      a === undefined || a < 0 ? undefined : a > 180 ? a - 360 : a,
+      angle.key,
+      'not an angle from 0 to 360 (or -1)',
+    );
   }
 }
 
@@ -405,7 +587,13 @@ function speeds(c: ImportContext): void {
   const perimeterSpeed = perimeter ? speed(perimeter.value, undefined) : undefined;
   if (perimeter) c.set('innerWallSpeed', perimeterSpeed, perimeter.key, 'not a speed');
   const external = c.getAny('external_perimeter_speed', 'outer_wall_speed');
-  if (external) c.set('perimeterSpeed', speed(external.value, perimeterSpeed), external.key, 'not a speed (or a % without the perimeter speed)');
+  if (external)
+    c.set(
+      'perimeterSpeed',
+      speed(external.value, perimeterSpeed),
+      external.key,
+      'not a speed (or a % without the perimeter speed)',
+    );
   const inf = c.getAny('infill_speed', 'sparse_infill_speed');
   const infillSpeed = inf ? speed(inf.value, undefined) : undefined;
   if (inf) c.set('infillSpeed', infillSpeed, inf.key, 'not a speed');
@@ -440,7 +628,13 @@ function overhangs(c: ImportContext, flavor: Slic3rFlavor): void {
     if (!v || v.value < 0) return undefined;
     return v.value === 0 ? outer : v.percent ? round((outer * v.value) / 100, 2) : v.value;
   };
-  const take = (on: boolean, steps: readonly (readonly [string, 'overhangSpeed25' | 'overhangSpeed50' | 'overhangSpeed75' | 'overhangWallSpeed'])[]) => {
+  const take = (
+    on: boolean,
+    steps: readonly (readonly [
+      string,
+      'overhangSpeed25' | 'overhangSpeed50' | 'overhangSpeed75' | 'overhangWallSpeed',
+    ])[],
+  ) => {
     for (const [key, setting] of steps) {
       const raw = c.get(key);
       if (raw !== undefined && on) c.set(setting, stepSpeed(raw), key, 'not a speed');
@@ -450,15 +644,25 @@ function overhangs(c: ImportContext, flavor: Slic3rFlavor): void {
   if (prusa) {
     const on = bool(prusa.value);
     c.set('dynamicOverhangSpeeds', on, prusa.key, 'not 0 or 1');
-    take(on === true, [['overhang_speed_3', 'overhangSpeed25'], ['overhang_speed_2', 'overhangSpeed50'], ['overhang_speed_1', 'overhangSpeed75'], ['overhang_speed_0', 'overhangWallSpeed']]);
+    take(on === true, [
+      ['overhang_speed_3', 'overhangSpeed25'],
+      ['overhang_speed_2', 'overhangSpeed50'],
+      ['overhang_speed_1', 'overhangSpeed75'],
+      ['overhang_speed_0', 'overhangWallSpeed'],
+    ]);
   }
   const orca = c.getAny('enable_overhang_speed');
   if (orca) {
     const on = bool(orca.value);
     c.set('dynamicOverhangSpeeds', on, orca.key, 'not 0 or 1');
-    take(on === true, [['overhang_2_4_speed', 'overhangSpeed25'], ['overhang_3_4_speed', 'overhangSpeed50'], ['overhang_4_4_speed', 'overhangSpeed75']]);
+    take(on === true, [
+      ['overhang_2_4_speed', 'overhangSpeed25'],
+      ['overhang_3_4_speed', 'overhangSpeed50'],
+      ['overhang_4_4_speed', 'overhangSpeed75'],
+    ]);
     const quarter = c.get('overhang_1_4_speed');
-    if (on && quarter !== undefined && numOrPercent(quarter)?.value !== 0) c.reject('overhang_1_4_speed', 'Strata slows walls from a quarter of the line over nothing (overhangSpeed25)');
+    if (on && quarter !== undefined && numOrPercent(quarter)?.value !== 0)
+      c.reject('overhang_1_4_speed', 'Strata slows walls from a quarter of the line over nothing (overhangSpeed25)');
     // OrcaSlicer prints walls wholly over nothing at its bridge speed
     const bridge = on && flavor === 'orcaslicer' ? c.get('bridge_speed') : undefined;
     if (bridge !== undefined) c.set('overhangWallSpeed', stepSpeed(bridge), 'bridge_speed', 'not a speed');
@@ -476,18 +680,24 @@ function overhangs(c: ImportContext, flavor: Slic3rFlavor): void {
     // Strata's overhang fan runs from a quarter of the line over nothing with dynamic speeds, else on walls wholly over it
     const from = (c.settings.dynamicOverhangSpeeds ?? false) ? ['0%', '10%', '25%'] : ['95%'];
     if (on && threshold !== undefined && !from.includes(threshold)) {
-      c.reject('overhang_fan_threshold', `Strata runs the overhang fan on ${c.settings.dynamicOverhangSpeeds ? 'walls with a quarter of the line or more' : 'walls wholly'} over nothing`);
+      c.reject(
+        'overhang_fan_threshold',
+        `Strata runs the overhang fan on ${c.settings.dynamicOverhangSpeeds ? 'walls with a quarter of the line or more' : 'walls wholly'} over nothing`,
+      );
     }
   }
   // PrusaSlicer raises the fan towards these at 0, 25, 50 and 75 % of the line over the layer below
   const dynamicFan = c.getAny('enable_dynamic_fan_speeds');
-  const fans = ['overhang_fan_speed_0', 'overhang_fan_speed_1', 'overhang_fan_speed_2', 'overhang_fan_speed_3'].map((k) => c.get(k));
+  const fans = ['overhang_fan_speed_0', 'overhang_fan_speed_1', 'overhang_fan_speed_2', 'overhang_fan_speed_3'].map(
+    (k) => c.get(k),
+  );
   if (dynamicFan && bool(dynamicFan.value)) {
     const values = fans.map(num).filter((v): v is number => v !== undefined);
     const top = values.length ? Math.max(...values) : undefined;
     if (top !== undefined && top > (c.settings.fanSpeed ?? 0)) {
       c.set('overhangFanSpeed', top, 'overhang_fan_speed_0');
-      if (values.some((v) => v !== top)) c.reject('overhang_fan_speed_1', `Strata runs one overhang fan speed (${top} %) on every overhanging wall`);
+      if (values.some((v) => v !== top))
+        c.reject('overhang_fan_speed_1', `Strata runs one overhang fan speed (${top} %) on every overhanging wall`);
     }
   }
   const extra = c.getAny('extra_perimeters_on_overhangs');
@@ -505,11 +715,14 @@ function temperatures(c: ImportContext): void {
   if (fb) c.set('firstLayerBedTemperature', num(fb.value), fb.key, 'not a temperature');
   // OrcaSlicer: per plate type
   const plate = first(c.get('curr_bed_type'));
-  const plateKey = (plate && PLATES[plate]) ?? ['textured_plate_temp', 'hot_plate_temp', 'eng_plate_temp', 'cool_plate_temp'].find((k) => c.has(k));
+  const plateKey =
+    (plate && PLATES[plate]) ??
+    ['textured_plate_temp', 'hot_plate_temp', 'eng_plate_temp', 'cool_plate_temp'].find((k) => c.has(k));
   if (plateKey && c.has(plateKey) && !b) {
     c.set('bedTemperature', num(c.get(plateKey)), plateKey, 'not a temperature');
     const initial = c.get(`${plateKey}_initial_layer`);
-    if (initial !== undefined) c.set('firstLayerBedTemperature', num(initial), `${plateKey}_initial_layer`, 'not a temperature');
+    if (initial !== undefined)
+      c.set('firstLayerBedTemperature', num(initial), `${plateKey}_initial_layer`, 'not a temperature');
   }
 }
 
@@ -524,14 +737,14 @@ function cooling(c: ImportContext): void {
   const orcaMax = c.getAny('fan_max_speed');
   if (orcaMin || orcaMax) {
     const keepOn = bool(c.get('reduce_fan_stop_start_freq')) ?? true;
-    const v = keepOn ? num(orcaMin?.value) ?? num(orcaMax?.value) : num(orcaMax?.value);
+    const v = keepOn ? (num(orcaMin?.value) ?? num(orcaMax?.value)) : num(orcaMax?.value);
     c.set('fanSpeed', v, orcaMin?.key ?? orcaMax!.key, 'no fan speed');
   }
   const off = c.getAny('disable_fan_first_layers', 'close_fan_the_first_x_layers');
   if (off) {
     const n = num(off.value);
     const fan = c.settings.fanSpeed;
-    c.set('firstLayerFanSpeed', n === undefined ? undefined : n >= 1 ? 0 : fan ?? undefined, off.key, 'not a count');
+    c.set('firstLayerFanSpeed', n === undefined ? undefined : n >= 1 ? 0 : (fan ?? undefined), off.key, 'not a count');
     if (n !== undefined) c.set('fanOffLayers', Math.max(0, Math.round(n)), off.key);
   }
   const full = c.getAny('full_fan_speed_layer');
@@ -558,7 +771,10 @@ function cooling(c: ImportContext): void {
   if (pa && bool(enabled) !== false) c.set('pressureAdvance', num(pa.value), pa.key, 'not a number');
   const startFilament = c.getAny('start_filament_gcode', 'filament_start_gcode');
   if (startFilament) {
-    const m = /(?:^|\n)\s*(?:M900\s+K|M572\s+(?:D\d+\s+)?S|SET_PRESSURE_ADVANCE\s+(?:EXTRUDER=\S+\s+)?ADVANCE=)([\d.]+)/i.exec(text(startFilament.value) ?? '');
+    const m =
+      /(?:^|\n)\s*(?:M900\s+K|M572\s+(?:D\d+\s+)?S|SET_PRESSURE_ADVANCE\s+(?:EXTRUDER=\S+\s+)?ADVANCE=)([\d.]+)/i.exec(
+        text(startFilament.value) ?? '',
+      );
     if (m) c.set('pressureAdvance', Number(m[1]), startFilament.key);
     else c.used.delete(startFilament.key);
   }
@@ -586,12 +802,20 @@ function retraction(c: ImportContext): void {
   if (extra) c.set('retractionExtraPrime', num(extra.value), extra.key, 'not a length');
   const minTravel = pick('filament_retraction_minimum_travel', 'retract_before_travel', 'retraction_minimum_travel');
   if (minTravel) c.set('retractionMinTravel', num(minTravel.value), minTravel.key, 'not a length');
-  const layerChange = pick('filament_retract_when_changing_layer', 'retract_layer_change', 'retract_when_changing_layer');
+  const layerChange = pick(
+    'filament_retract_when_changing_layer',
+    'retract_layer_change',
+    'retract_when_changing_layer',
+  );
   if (layerChange) c.set('retractOnLayerChange', bool(layerChange.value), layerChange.key, 'not 0 or 1');
   const lift = pick('filament_z_hop', 'retract_lift', 'z_hop');
   if (lift) c.set('zHop', num(lift.value), lift.key, 'not a length');
   // PrusaSlicer: no retraction for travels inside the infill that cross no perimeter; OrcaSlicer's is the same idea
-  const crossing = pick('filament_retract_only_when_crossing_perimeters', 'only_retract_when_crossing_perimeters', 'reduce_infill_retraction');
+  const crossing = pick(
+    'filament_retract_only_when_crossing_perimeters',
+    'only_retract_when_crossing_perimeters',
+    'reduce_infill_retraction',
+  );
   if (crossing) c.set('retractCrossingWallsOnly', bool(crossing.value), crossing.key, 'not 0 or 1');
   wipe(c, pick);
 }
@@ -602,7 +826,10 @@ function retraction(c: ImportContext): void {
  * (its GCode Wipe); that length becomes wipeDistance. OrcaSlicer's (and its filament override's)
  * `wipe_distance` is the length itself.
  */
-function wipe(c: ImportContext, pick: (filament: string, ...printer: string[]) => { key: string; value: string } | undefined): void {
+function wipe(
+  c: ImportContext,
+  pick: (filament: string, ...printer: string[]) => { key: string; value: string } | undefined,
+): void {
   const on = pick('filament_wipe', 'wipe');
   const before = pick('filament_retract_before_wipe', 'retract_before_wipe');
   const beforePercent = before ? percent(first(before.value)) : 0;
@@ -659,7 +886,13 @@ function output(c: ImportContext): void {
   if (labels) {
     const v = first(labels.value) ?? '';
     const mode: Settings['labelObjects'] | undefined =
-      v === 'firmware' || exclude ? 'firmware' : v === 'octoprint' || bool(v) === true ? 'comments' : v === 'disabled' || bool(v) === false ? 'off' : undefined;
+      v === 'firmware' || exclude
+        ? 'firmware'
+        : v === 'octoprint' || bool(v) === true
+          ? 'comments'
+          : v === 'disabled' || bool(v) === false
+            ? 'off'
+            : undefined;
     c.set('labelObjects', mode, labels.key, 'not disabled, octoprint or firmware');
   } else if (exclude !== undefined) c.set('labelObjects', exclude ? 'firmware' : 'off', 'exclude_object');
   const m73 = c.getAny('remaining_times');
@@ -672,7 +905,12 @@ function sequential(c: ImportContext): void {
   if (complete) c.set('sequentialPrinting', bool(complete.value), complete.key, 'not 0 or 1');
   else if (sequence) {
     const v = (first(sequence.value) ?? '').replace(/_/g, ' ');
-    c.set('sequentialPrinting', v === 'by object' ? true : v === 'by layer' ? false : undefined, sequence.key, `print sequence "${v}" has no Strata equivalent (by layer, by object)`);
+    c.set(
+      'sequentialPrinting',
+      v === 'by object' ? true : v === 'by layer' ? false : undefined,
+      sequence.key,
+      `print sequence "${v}" has no Strata equivalent (by layer, by object)`,
+    );
   }
   const radius = c.getAny('extruder_clearance_radius');
   if (radius) c.set('extruderClearanceRadius', num(radius.value), radius.key, 'not a length');
@@ -680,7 +918,11 @@ function sequential(c: ImportContext): void {
   if (height) c.set('extruderClearanceHeight', num(height.value), height.key, 'not a length');
 }
 
-const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = { rectilinear: 'lines', 'rectilinear-grid': 'grid', default: 'zigzag' };
+const SUPPORT_PATTERN: Readonly<Record<string, Settings['supportPattern']>> = {
+  rectilinear: 'lines',
+  'rectilinear-grid': 'grid',
+  default: 'zigzag',
+};
 
 function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHeight: number): void {
   const on = c.getAny('support_material', 'enable_support');
@@ -688,11 +930,22 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
   const style = c.getAny('support_material_style', 'support_type', 'support_style');
   if (style) {
     const v = first(style.value) ?? '';
-    const type: Settings['supportType'] | undefined = v === 'organic' || v.startsWith('tree') ? 'tree' : v === 'grid' || v === 'snug' || v.startsWith('normal') || v === 'default' ? 'normal' : undefined;
+    const type: Settings['supportType'] | undefined =
+      v === 'organic' || v.startsWith('tree')
+        ? 'tree'
+        : v === 'grid' || v === 'snug' || v.startsWith('normal') || v === 'default'
+          ? 'normal'
+          : undefined;
     c.set('supportType', type, style.key, `support style "${v}" has no Strata equivalent (normal, tree)`);
   }
   const plate = c.getAny('support_material_buildplate_only', 'support_on_build_plate_only');
-  if (plate) c.set('supportPlacement', bool(plate.value) === undefined ? undefined : bool(plate.value) ? 'buildPlate' : 'everywhere', plate.key, 'not 0 or 1');
+  if (plate)
+    c.set(
+      'supportPlacement',
+      bool(plate.value) === undefined ? undefined : bool(plate.value) ? 'buildPlate' : 'everywhere',
+      plate.key,
+      'not 0 or 1',
+    );
   const threshold = c.getAny('support_material_threshold', 'support_threshold_angle');
   if (threshold) {
     const v = num(threshold.value);
@@ -721,7 +974,12 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
   const pattern = c.getAny('support_material_pattern', 'support_base_pattern');
   if (pattern) {
     const v = first(pattern.value) ?? '';
-    c.set('supportPattern', SUPPORT_PATTERN[v], pattern.key, `support pattern "${v}" has no Strata equivalent (zigzag, lines, grid)`);
+    c.set(
+      'supportPattern',
+      SUPPORT_PATTERN[v],
+      pattern.key,
+      `support pattern "${v}" has no Strata equivalent (zigzag, lines, grid)`,
+    );
   }
   // a width of 0 is automatic: Strata's default stands
   const lineWidth = c.getAny('support_material_extrusion_width', 'support_line_width');
@@ -732,7 +990,12 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
     // the gap between lines: density is a line's share of its pitch
     const v = num(spacing.value);
     const lw = c.settings.supportLineWidth ?? c.settings.lineWidth ?? nozzle;
-    c.set('supportDensity', v === undefined ? undefined : round((100 * lw) / (lw + v), 1), spacing.key, 'not a distance');
+    c.set(
+      'supportDensity',
+      v === undefined ? undefined : round((100 * lw) / (lw + v), 1),
+      spacing.key,
+      'not a distance',
+    );
   }
   const angle = c.getAny('support_material_angle', 'support_angle');
   if (angle) c.set('supportAngle', num(angle.value), angle.key, 'not an angle');
@@ -740,7 +1003,13 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
   const supportSpeed = body ? speed(body.value, undefined) : undefined;
   if (body) c.set('supportSpeed', supportSpeed, body.key, 'not a speed');
   const iface = c.getAny('support_material_interface_speed', 'support_interface_speed');
-  if (iface) c.set('supportInterfaceSpeed', speed(iface.value, supportSpeed ?? (SCHEMA.supportSpeed.default as number)), iface.key, 'not a speed');
+  if (iface)
+    c.set(
+      'supportInterfaceSpeed',
+      speed(iface.value, supportSpeed ?? (SCHEMA.supportSpeed.default as number)),
+      iface.key,
+      'not a speed',
+    );
   for (const [setting, keys] of [
     ['supportTreeBranchAngle', ['support_tree_angle', 'tree_support_branch_angle']],
     ['supportTreeBranchDiameter', ['support_tree_branch_diameter', 'tree_support_branch_diameter']],
@@ -758,7 +1027,11 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
     c.set('supportTreeTipSpacing', v && tipSpacingOfDensity(lw, v.value), rate.key, 'not a density');
   }
   const bridges = c.getAny('dont_support_bridges');
-  if (bridges && bool(bridges.value)) c.reject(bridges.key, 'Strata bridges spans up to supportSkipBridges mm instead (0, every overhang supported, by default)');
+  if (bridges && bool(bridges.value))
+    c.reject(
+      bridges.key,
+      'Strata bridges spans up to supportSkipBridges mm instead (0, every overhang supported, by default)',
+    );
   // raft
   const raft = c.getAny('raft_layers');
   const layers = raft ? num(raft.value) : undefined;
@@ -769,7 +1042,12 @@ function support(c: ImportContext, flavor: Slic3rFlavor, nozzle: number, layerHe
   if (margin) c.set('raftMargin', num(margin.value), margin.key, 'not a distance');
 }
 
-const FUZZY: Readonly<Record<string, Settings['fuzzySkin']>> = { none: 'off', external: 'outer', all: 'all', allwalls: 'all' };
+const FUZZY: Readonly<Record<string, Settings['fuzzySkin']>> = {
+  none: 'off',
+  external: 'outer',
+  all: 'all',
+  allwalls: 'all',
+};
 
 /** Scarf seams (PrusaSlicer 2.9, OrcaSlicer) and fuzzy skin. */
 function seamsAndSurface(c: ImportContext, layerHeight: number): void {
@@ -780,14 +1058,26 @@ function seamsAndSurface(c: ImportContext, layerHeight: number): void {
   if (placement) {
     const v = first(placement.value) ?? '';
     const on = v === 'contours' || v === 'everywhere' || v === 'external' || v === 'all';
-    const type: Settings['scarfSeam'] | undefined = v === 'nowhere' || v === 'none' || lengthMm === 0 ? 'off' : on ? (inner && bool(inner.value) ? 'all' : 'outer') : undefined;
+    const type: Settings['scarfSeam'] | undefined =
+      v === 'nowhere' || v === 'none' || lengthMm === 0
+        ? 'off'
+        : on
+          ? inner && bool(inner.value)
+            ? 'all'
+            : 'outer'
+          : undefined;
     c.set('scarfSeam', type, placement.key, `scarf placement "${v}" has no Strata equivalent`);
   }
   if (length && lengthMm !== 0) c.set('scarfLength', lengthMm, length.key, 'not a length');
   const start = c.getAny('scarf_seam_start_height', 'seam_slope_start_height');
   if (start) {
     const v = numOrPercent(start.value);
-    c.set('scarfStartHeight', v && round(v.percent ? v.value : (100 * v.value) / layerHeight, 2), start.key, 'not a height or percentage');
+    c.set(
+      'scarfStartHeight',
+      v && round(v.percent ? v.value : (100 * v.value) / layerHeight, 2),
+      start.key,
+      'not a height or percentage',
+    );
   }
   const steps = c.getAny('seam_slope_steps');
   if (steps) c.set('scarfSteps', num(steps.value), steps.key, 'not a count');
@@ -795,15 +1085,24 @@ function seamsAndSurface(c: ImportContext, layerHeight: number): void {
   if (segment) {
     const v = num(segment.value);
     const over = c.settings.scarfLength ?? (SCHEMA.scarfLength.default as number);
-    c.set('scarfSteps', v && v > 0 ? Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(over / v - 1e-9))) : undefined, segment.key, 'not a length');
+    c.set(
+      'scarfSteps',
+      v && v > 0 ? Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(over / v - 1e-9))) : undefined,
+      segment.key,
+      'not a length',
+    );
   }
   const smooth = c.getAny('scarf_seam_only_on_smooth', 'seam_slope_conditional');
   if (smooth) c.set('scarfConditional', bool(smooth.value), smooth.key, 'not 0 or 1');
   const whole = c.getAny('scarf_seam_entire_loop', 'seam_slope_entire_loop');
-  if (whole && bool(whole.value) && c.settings.scarfSeam !== 'off') c.reject(whole.key, "Strata's scarf is scarfLength long, not round the entire loop");
+  if (whole && bool(whole.value) && c.settings.scarfSeam !== 'off')
+    c.reject(whole.key, "Strata's scarf is scarfLength long, not round the entire loop");
   const angle = c.getAny('scarf_angle_threshold');
   if (angle && c.settings.scarfConditional && num(angle.value) !== 140) {
-    c.reject(angle.key, 'a conditional scarf in Strata leaves out seams in corners turning 40° or more (an angle of 140° or less)');
+    c.reject(
+      angle.key,
+      'a conditional scarf in Strata leaves out seams in corners turning 40° or more (an angle of 140° or less)',
+    );
   }
   // spiral vase: PrusaSlicer's and SuperSlicer's spiral_vase, OrcaSlicer's spiral_mode
   const vase = c.getAny('spiral_vase', 'spiral_mode');

@@ -14,7 +14,9 @@ import { keepTemplate, listEntries } from './templates.js';
 /** A 20 × 20 × 4 mm block as raw arrays. */
 const BLOCK = {
   positions: new Float32Array([0, 0, 0, 20, 0, 0, 0, 20, 0, 20, 20, 0, 0, 0, 4, 20, 0, 4, 0, 20, 4, 20, 20, 4]),
-  indices: new Uint32Array([0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5]),
+  indices: new Uint32Array([
+    0, 2, 3, 0, 3, 1, 4, 5, 7, 4, 7, 6, 0, 1, 5, 0, 5, 4, 2, 6, 7, 2, 7, 3, 0, 4, 6, 0, 6, 2, 1, 3, 7, 1, 7, 5,
+  ]),
 };
 
 const MK3_START =
@@ -101,36 +103,52 @@ test("PrusaSlicer MK3: templates are kept as written, run with the profile's val
   assert.equal(s.colorChangeGcode, 'M600\nG1 E0.4 F1500 ; prime after color change');
   assert.equal(s.pauseGcode, 'M601');
   assert.equal(s.filamentType, 'PLA');
-  for (const k of ['printer_model', 'print_settings_id', 'filament_settings_id']) assert.ok(!p.unused.includes(k), `${k} is used by the templates`);
+  for (const k of ['printer_model', 'print_settings_id', 'filament_settings_id'])
+    assert.ok(!p.unused.includes(k), `${k} is used by the templates`);
 
   const { gcode } = await sliceWith({ ...s, colorChangeAt: '2', pauseAt: '3' });
   const { start, end } = ends(gcode);
   assertFilledIn(start, 'start');
   assertFilledIn(end, 'end');
   assert.match(start, /^M862\.3 P "MK3S" ; printer model check\nM862\.1 P0\.4 ; nozzle diameter check$/m);
-  assert.match(start, /^M104 S215 ; set extruder temp\nM140 S60 ; set bed temp\nM190 S60 ; wait for bed temp\nM109 S215 ; wait for extruder temp$/m);
+  assert.match(
+    start,
+    /^M104 S215 ; set extruder temp\nM140 S60 ; set bed temp\nM190 S60 ; wait for bed temp\nM109 S215 ; wait for extruder temp$/m,
+  );
   const g80 = /^G80 X([\d.]+) Y([\d.]+) W([\d.]+) H([\d.]+) ; mesh bed levelling$/m.exec(start);
-  assert.ok(g80 && Number(g80[3]) > 20 && Number(g80[3]) < 30 && Number(g80[4]) > 20 && Number(g80[4]) < 30, 'the first layer, skirt included');
+  assert.ok(
+    g80 && Number(g80[3]) > 20 && Number(g80[3]) < 30 && Number(g80[4]) > 20 && Number(g80[4]) < 30,
+    'the first layer, skirt included',
+  );
   assert.match(start, /^G1 X100 E12\.5 F1000 ; intro line\nG92 E0\nM221 S95$/m, 'not PA11; 0.15 mm layers');
   assert.match(start, /^M907 E430 ; set extruder motor current$/m);
   assert.doesNotMatch(start, /M907 E538/);
-  assert.doesNotMatch(start, /^M10[49] S\d+$/m, 'no heating of Strata\'s own: the template heats');
+  assert.doesNotMatch(start, /^M10[49] S\d+$/m, "no heating of Strata's own: the template heats");
   const top = Number(/^; max_layer_z = ([\d.]+)$/m.exec(end)![1]);
   assert.ok(top > 3.8 && top <= 4.1, `the print's top, ${top}`);
   const z = (v: number) => String(Math.round(v * 1000) / 1000);
-  assert.ok(end.includes(`G1 Z${z(top + 1)} F720 ; Move print head up\nG1 X0 Y200 F3600 ; park\nG1 Z${z(top + 49)} F720 ; Move print head further up\n`), end);
+  assert.ok(
+    end.includes(
+      `G1 Z${z(top + 1)} F720 ; Move print head up\nG1 X0 Y200 F3600 ; park\nG1 Z${z(top + 49)} F720 ; Move print head further up\n`,
+    ),
+    end,
+  );
   assert.match(end, /^M907 E538 ; reset extruder motor current$/m);
   // per layer: before and after the layer change, the colour change and the pause
   const layers = gcode.split(';LAYER:').length - 1;
   assert.equal(gcode.split(';AFTER_LAYER_CHANGE\n').length - 1, layers);
   assert.equal(gcode.split(';BEFORE_LAYER_CHANGE\nG92 E0.0\n').length - 1, layers);
-  const change = /;Z:([\d.]+)\n(?:(?!;Z:)[\s\S])*?;COLOR_CHANGE,T0\nM600\nG1 E0\.4 F1500 ; prime after color change\n/.exec(gcode);
-  assert.ok(change && Number(change[1]) >= 2 && Number(change[1]) < 2.15, 'the colour change before the first layer at or above 2 mm');
+  const change =
+    /;Z:([\d.]+)\n(?:(?!;Z:)[\s\S])*?;COLOR_CHANGE,T0\nM600\nG1 E0\.4 F1500 ; prime after color change\n/.exec(gcode);
+  assert.ok(
+    change && Number(change[1]) >= 2 && Number(change[1]) < 2.15,
+    'the colour change before the first layer at or above 2 mm',
+  );
   assert.match(gcode, /^;PAUSE_PRINT\nM601$/m);
   assert.equal(gcode.split('\nM600\n').length, 2);
 });
 
-test('PrusaSlicer MK4: conditions on the profile\'s filament, nozzle and notes; the bed and first-layer extents; extruded weight per layer', async () => {
+test("PrusaSlicer MK4: conditions on the profile's filament, nozzle and notes; the bed and first-layer extents; extruded weight per layer", async () => {
   const p = importProfile(MK4, 'mk4.ini');
   assert.deepEqual(p.rejected, []);
   const { gcode } = await sliceWith(p.settings);
@@ -143,12 +161,18 @@ test('PrusaSlicer MK4: conditions on the profile\'s filament, nozzle and notes; 
   // HT_MBL10 in the notes: the first layer's temperature less 10 while probing
   assert.match(start, /^M104 T0 S220 ; set extruder temp for bed leveling\nM109 T0 R220 ; wait for temp$/m);
   // the M106 line's condition is false: an empty line, as PrusaSlicer leaves it
-  assert.match(start, /^G28 ; home all without mesh bed level\nG1 E-2 F2400 ; retraction\n\nM190 S85 ; wait for bed temp\nM104 S230\nM109 S230$/m);
+  assert.match(
+    start,
+    /^G28 ; home all without mesh bed level\nG1 E-2 F2400 ; retraction\n\nM190 S85 ; wait for bed temp\nM104 S230\nM109 S230$/m,
+  );
   assert.match(start, /^G1 E2 F2400 ; deretraction/m);
   assert.doesNotMatch(start, /M106 S100/, 'the bed is over 60 °C');
   const weights = [...gcode.matchAll(/^M74 W([\d.]+)$/gm)].map((w) => Number(w[1]));
   assert.equal(weights.length, gcode.split(';LAYER:').length - 1, 'M74 at every layer');
-  assert.ok(weights.every((w, i) => i === 0 || w >= weights[i - 1]!) && weights[0] === 0 && weights[weights.length - 1]! > 0.3, 'the weight printed so far');
+  assert.ok(
+    weights.every((w, i) => i === 0 || w >= weights[i - 1]!) && weights[0] === 0 && weights[weights.length - 1]! > 0.3,
+    'the weight printed so far',
+  );
   assert.match(gcode, /^M201 X4000 Y4000$/m);
   // a FLEX filament takes the other branches
   const flex = await sliceWith({ ...p.settings, filamentType: 'FLEX' });
@@ -167,7 +191,8 @@ test('OrcaSlicer Klipper printer: [names] of its own, PAUSE, layer change G-code
     nozzle_temperature: ['240'],
     hot_plate_temp_initial_layer: ['100'],
     hot_plate_temp: ['100'],
-    machine_start_gcode: 'M190 S[bed_temperature_initial_layer_single]\nM109 S[nozzle_temperature_initial_layer]\nPRINT_START EXTRUDER=[nozzle_temperature_initial_layer] BED=[bed_temperature_initial_layer_single]\n',
+    machine_start_gcode:
+      'M190 S[bed_temperature_initial_layer_single]\nM109 S[nozzle_temperature_initial_layer]\nPRINT_START EXTRUDER=[nozzle_temperature_initial_layer] BED=[bed_temperature_initial_layer_single]\n',
     machine_end_gcode: 'PRINT_END',
     before_layer_change_gcode: ';BEFORE_LAYER_CHANGE\n;[layer_z]\nG92 E0\n',
     layer_change_gcode: ';AFTER_LAYER_CHANGE\n;[layer_z]',
@@ -192,23 +217,43 @@ test("Cura: {key} and {key, 0}, and Cura 5's {if}…{elif}…{else}…{endif} on
   const { gcode } = await sliceWith(p.settings);
   const { start: out } = ends(gcode);
   assertFilledIn(out, 'start');
-  assert.match(out, /^M140 S65 ; Set Heat Bed temperature\nM190 S65 ; Wait for Heat Bed temperature\nM104 S160; start warming extruder to 160\nG28 ; Home all axes\nG29 ; Auto bed-level \(BL-Touch\)\nG92 E0 ; Reset Extruder\nM104 S205 ; Set Extruder temperature$/m);
+  assert.match(
+    out,
+    /^M140 S65 ; Set Heat Bed temperature\nM190 S65 ; Wait for Heat Bed temperature\nM104 S160; start warming extruder to 160\nG28 ; Home all axes\nG29 ; Auto bed-level \(BL-Touch\)\nG92 E0 ; Reset Extruder\nM104 S205 ; Set Extruder temperature$/m,
+  );
   assert.match(out, /^M109 S205 ; Wait for Extruder temperature$/m);
   assert.match(out, /^G1 F9000 ; travel \d\d:\d\d:\d\d$/m);
 });
 
 test('a template that names what neither Strata nor the profile has, or does not read, is left out with the reason', () => {
-  const p = importProfile('layer_height = 0.2\nstart_gcode = G28\\nM117 [chamber_temperature] {if has_chamber}M141{endif}\nend_gcode = M104 S{first_layer_temperature[0] +}\n', 'odd.ini');
+  const p = importProfile(
+    'layer_height = 0.2\nstart_gcode = G28\\nM117 [chamber_temperature] {if has_chamber}M141{endif}\nend_gcode = M104 S{first_layer_temperature[0] +}\n',
+    'odd.ini',
+  );
   const start = p.rejected.find((r) => r.key === 'start_gcode')!;
-  assert.match(start.reason, /uses placeholders Strata cannot fill \(chamber_temperature, has_chamber\); the preset's is kept/);
-  assert.match(p.rejected.find((r) => r.key === 'end_gcode')!.reason, /^cannot be read \(line 1: the expression ends where a value was expected in \{first_layer_temperature\[0\] \+\}\); the preset's is kept$/);
+  assert.match(
+    start.reason,
+    /uses placeholders Strata cannot fill \(chamber_temperature, has_chamber\); the preset's is kept/,
+  );
+  assert.match(
+    p.rejected.find((r) => r.key === 'end_gcode')!.reason,
+    /^cannot be read \(line 1: the expression ends where a value was expected in \{first_layer_temperature\[0\] \+\}\); the preset's is kept$/,
+  );
   assert.equal(p.settings.startGcode, undefined);
   assert.equal(p.settings.endGcode, undefined);
 });
 
 test('keepTemplate: a profile value is a literal in an expression and text where [name] stands; lists by index', () => {
-  const values: Record<string, string> = { printer_model: 'MK4', nozzle_high_flow: '0,1', filament_notes: '"first\\nline";"second"', odd: 'a {b}' };
-  const kept = keepTemplate('[printer_model] {nozzle_high_flow[1]} {filament_notes[0] =~ /first.*/} [odd] {first_layer_temperature[0]}', (k) => values[k]);
+  const values: Record<string, string> = {
+    printer_model: 'MK4',
+    nozzle_high_flow: '0,1',
+    filament_notes: '"first\\nline";"second"',
+    odd: 'a {b}',
+  };
+  const kept = keepTemplate(
+    '[printer_model] {nozzle_high_flow[1]} {filament_notes[0] =~ /first.*/} [odd] {first_layer_temperature[0]}',
+    (k) => values[k],
+  );
   assert.deepEqual(kept, { text: 'MK4 {1} {"first line" =~ /first.*/} {"a {b}"} {first_layer_temperature[0]}' });
   assert.deepEqual(listEntries('"a";"b c"'), ['a', 'b c']);
   assert.deepEqual(listEntries('0.4,0.6'), ['0.4', '0.6']);

@@ -26,7 +26,8 @@ export function listEntries(raw: string): string[] {
     const out: string[] = [];
     const re = /"((?:[^"\\]|\\.)*)"\s*[;,]?\s*/gy;
     let m: RegExpExecArray | null;
-    while ((m = re.exec(v))) out.push(m[1]!.replace(/\\(.)/g, (_w, c: string) => (c === 'n' ? '\n' : c === 't' ? '\t' : c)));
+    while ((m = re.exec(v)))
+      out.push(m[1]!.replace(/\\(.)/g, (_w, c: string) => (c === 'n' ? '\n' : c === 't' ? '\t' : c)));
     if (re.lastIndex === 0 && out.length === 0) return [v];
     return out;
   }
@@ -58,7 +59,10 @@ function indexOf(use: VariableUse): number {
  * values; or why it cannot be kept (`unknown`: names neither Strata nor the profile has; `error`: it does
  * not parse).
  */
-export function keepTemplate(template: string, profile: ProfileLookup): { text: string } | { unknown: string[] } | { error: string } {
+export function keepTemplate(
+  template: string,
+  profile: ProfileLookup,
+): { text: string } | { unknown: string[] } | { error: string } {
   let uses: VariableUse[];
   try {
     uses = variableUses(parseTemplate('template', template));
@@ -103,17 +107,32 @@ export function keepTemplate(template: string, profile: ProfileLookup): { text: 
 }
 
 /** The template settings an import can set. */
-export type TemplateSetting = 'startGcode' | 'endGcode' | 'beforeLayerChangeGcode' | 'layerChangeGcode' | 'colorChangeGcode' | 'pauseGcode';
+export type TemplateSetting =
+  | 'startGcode'
+  | 'endGcode'
+  | 'beforeLayerChangeGcode'
+  | 'layerChangeGcode'
+  | 'colorChangeGcode'
+  | 'pauseGcode';
 
 /**
  * Take the template under the first of `keys` the profile has for `setting`, kept as written (see
  * keepTemplate), or report why not. `unwrap` takes off a quoting of the whole value (Cura's `"""`).
  */
-export function importTemplate(c: ImportContext, keys: readonly string[], setting: TemplateSetting, unwrap = (v: string) => v): void {
+export function importTemplate(
+  c: ImportContext,
+  keys: readonly string[],
+  setting: TemplateSetting,
+  unwrap = (v: string) => v,
+): void {
   const t = c.getAny(...keys);
   if (!t) return;
   const kept = keepTemplate(text(unwrap(t.value)) ?? '', (k) => c.get(k));
   if ('text' in kept) c.set(setting, kept.text, t.key);
-  else if ('unknown' in kept) c.reject(t.key, `uses placeholders Strata cannot fill (${kept.unknown.slice(0, 6).join(', ')}); the preset's is kept`);
+  else if ('unknown' in kept)
+    c.reject(
+      t.key,
+      `uses placeholders Strata cannot fill (${kept.unknown.slice(0, 6).join(', ')}); the preset's is kept`,
+    );
   else c.reject(t.key, `cannot be read (${kept.error}); the preset's is kept`);
 }

@@ -29,11 +29,15 @@ export function toSlic3rKeys(settings: Readonly<Record<string, unknown>>, layerH
   const s = settings;
   if (num(s.layerHeight) !== undefined) out.layer_height = String(s.layerHeight);
   if (num(s.infillDensity) !== undefined) out.fill_density = `${s.infillDensity}%`;
-  if (typeof s.infillPattern === 'string' && Object.hasOwn(PATTERNS, s.infillPattern)) out.fill_pattern = PATTERNS[s.infillPattern as PatternId];
+  if (typeof s.infillPattern === 'string' && Object.hasOwn(PATTERNS, s.infillPattern))
+    out.fill_pattern = PATTERNS[s.infillPattern as PatternId];
   if (num(s.infillAngle) !== undefined) out.fill_angle = String(s.infillAngle);
   if (num(s.wallCount) !== undefined) out.perimeters = String(s.wallCount);
   const lh = num(s.layerHeight) ?? layerHeight;
-  for (const [setting, side] of [['topSkinThickness', 'top'], ['bottomSkinThickness', 'bottom']] as const) {
+  for (const [setting, side] of [
+    ['topSkinThickness', 'top'],
+    ['bottomSkinThickness', 'bottom'],
+  ] as const) {
     const t = num(s[setting]);
     if (t === undefined) continue;
     // whole layers that fit, the thickness as the minimum: slic3r-keys.ts reads back max(layers × height, minimum)

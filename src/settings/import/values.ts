@@ -6,7 +6,10 @@
 /** The first entry of a comma-separated list (or the value itself); `nil` (Orca's "not set") is nothing. */
 export function first(value: string | undefined): string | undefined {
   if (value === undefined) return undefined;
-  const v = value.split(',')[0]!.trim().replace(/^"(.*)"$/, '$1');
+  const v = value
+    .split(',')[0]!
+    .trim()
+    .replace(/^"(.*)"$/, '$1');
   return v === '' || v === 'nil' ? undefined : v;
 }
 
@@ -64,7 +67,9 @@ export function text(value: string | undefined): string | undefined {
   if (value === undefined) return undefined;
   let v = value;
   if (v.length >= 2 && v.startsWith('"') && v.endsWith('"')) v = v.slice(1, -1);
-  return v.replace(/\\r\\n/g, '\n').replace(/\\(.)/g, (_w, c: string) => (c === 'n' ? '\n' : c === 'r' ? '\r' : c === 't' ? '\t' : c));
+  return v
+    .replace(/\\r\\n/g, '\n')
+    .replace(/\\(.)/g, (_w, c: string) => (c === 'n' ? '\n' : c === 'r' ? '\r' : c === 't' ? '\t' : c));
 }
 
 /** Points `0x0,250x0,250x210,0x210` (a bed outline) → [x, y] pairs. */

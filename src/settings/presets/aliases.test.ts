@@ -7,19 +7,87 @@ import { StrataError } from '../../errors.js';
 
 /** The seeds' library's printer names (its printers.coffee) and filament names (filaments.coffee), as listed there. */
 const SEED_PRINTERS = [
-  'Ender3', 'Ender3V2', 'Ender5', 'PrusaI3MK3S', 'PrusaMini', 'AnycubicI3Mega', 'CR10', 'ArtillerySidewinderX1', 'UltimakerS5',
-  'FlashForgeCreatorPro', 'Raise3DPro2', 'Ender3Pro', 'Ender3S1', 'CR10S5', 'PrusaXL', 'BambuLabX1Carbon', 'BambuLabP1P',
-  'AnycubicKobra', 'AnycubicVyper', 'ElegooNeptune3', 'ElegooNeptune3Pro', 'SovolSV06', 'Voron24', 'MakerbotReplicatorPlus',
-  'QidiXPlus', 'FlashforgeAdventurer3', 'MonopriceSelectMiniV2', 'ArtilleryGenius', 'LulzBotMini2', 'LulzBotTAZ6', 'Ender6',
-  'CR6SE', 'AnycubicPhotonMonoX', 'PrusaMK4', 'BambuLabA1Mini', 'BambuLabA1', 'KingroonKP3S', 'CrealityK1', 'CrealityK1Max',
-  'AnkerMakeM5', 'ElegooNeptune4', 'ElegooNeptune4Pro', 'ArtillerySidewinderX2', 'SovolSV06Plus',
+  'Ender3',
+  'Ender3V2',
+  'Ender5',
+  'PrusaI3MK3S',
+  'PrusaMini',
+  'AnycubicI3Mega',
+  'CR10',
+  'ArtillerySidewinderX1',
+  'UltimakerS5',
+  'FlashForgeCreatorPro',
+  'Raise3DPro2',
+  'Ender3Pro',
+  'Ender3S1',
+  'CR10S5',
+  'PrusaXL',
+  'BambuLabX1Carbon',
+  'BambuLabP1P',
+  'AnycubicKobra',
+  'AnycubicVyper',
+  'ElegooNeptune3',
+  'ElegooNeptune3Pro',
+  'SovolSV06',
+  'Voron24',
+  'MakerbotReplicatorPlus',
+  'QidiXPlus',
+  'FlashforgeAdventurer3',
+  'MonopriceSelectMiniV2',
+  'ArtilleryGenius',
+  'LulzBotMini2',
+  'LulzBotTAZ6',
+  'Ender6',
+  'CR6SE',
+  'AnycubicPhotonMonoX',
+  'PrusaMK4',
+  'BambuLabA1Mini',
+  'BambuLabA1',
+  'KingroonKP3S',
+  'CrealityK1',
+  'CrealityK1Max',
+  'AnkerMakeM5',
+  'ElegooNeptune4',
+  'ElegooNeptune4Pro',
+  'ArtillerySidewinderX2',
+  'SovolSV06Plus',
 ];
 const SEED_FILAMENTS = [
-  'GenericPLA', 'GenericPETG', 'GenericABS', 'GenericTPU', 'GenericNylon', 'HatchboxPLA', 'eSunPLAPlus', 'OverturePLA',
-  'PrusamentPLA', 'PrusamentPETG', 'PolymakerPolyLitePLA', 'PolymakerPolyTerraPLA', 'BambuLabPLABasic', 'BambuLabPETGHF',
-  'SunluPLA', 'ColorFabbPLAPHA', 'NinjaFlexTPU', 'SainSmartTPU', '3DXTechCarbonX', 'UltimakerPLA', 'UltimakerToughPLA',
-  'BambuLabPLAMatte', 'BambuLabABS', 'PolymakerPolyLitePETG', 'PolymakerPolyMaxPLA', 'eSunABSPlus', 'eSunPETG', 'OverturePETG',
-  'HatchboxPETG', 'HatchboxABS', 'SunluPETG', 'PolymakerPolyFlexTPU95', 'ColorFabbNGen', 'PrusaPETG', 'GenericASA',
+  'GenericPLA',
+  'GenericPETG',
+  'GenericABS',
+  'GenericTPU',
+  'GenericNylon',
+  'HatchboxPLA',
+  'eSunPLAPlus',
+  'OverturePLA',
+  'PrusamentPLA',
+  'PrusamentPETG',
+  'PolymakerPolyLitePLA',
+  'PolymakerPolyTerraPLA',
+  'BambuLabPLABasic',
+  'BambuLabPETGHF',
+  'SunluPLA',
+  'ColorFabbPLAPHA',
+  'NinjaFlexTPU',
+  'SainSmartTPU',
+  '3DXTechCarbonX',
+  'UltimakerPLA',
+  'UltimakerToughPLA',
+  'BambuLabPLAMatte',
+  'BambuLabABS',
+  'PolymakerPolyLitePETG',
+  'PolymakerPolyMaxPLA',
+  'eSunABSPlus',
+  'eSunPETG',
+  'OverturePETG',
+  'HatchboxPETG',
+  'HatchboxABS',
+  'SunluPETG',
+  'PolymakerPolyFlexTPU95',
+  'ColorFabbNGen',
+  'PrusaPETG',
+  'GenericASA',
 ];
 
 test("every printer the seeds' library names has a preset, or is listed with its size and why there is none", () => {
@@ -29,7 +97,10 @@ test("every printer the seeds' library names has a preset, or is listed with its
     assert.ok(!!preset !== !!gap, `${name}: a preset (${preset?.id}) or a reason (${gap?.why}), not both`);
     if (preset) assert.equal(preset.id, POLYSLICE_NAMES.printers[name], name);
   }
-  assert.equal(Object.keys(POLYSLICE_NAMES.printers).length + Object.keys(PRINTERS_WITHOUT_PRESET).length, SEED_PRINTERS.length);
+  assert.equal(
+    Object.keys(POLYSLICE_NAMES.printers).length + Object.keys(PRINTERS_WITHOUT_PRESET).length,
+    SEED_PRINTERS.length,
+  );
   // most of them print with a preset of ours
   assert.ok(Object.keys(POLYSLICE_NAMES.printers).length >= 32);
 });
@@ -38,21 +109,37 @@ test("every filament the seeds' library names finds a preset of its material", (
   for (const name of SEED_FILAMENTS) {
     const f = findFilament(name);
     assert.ok(f, name);
-    const material = /PLA/i.test(name) ? 'PLA' : /PETG|nGen/i.test(name) ? 'PETG' : /ABS/.test(name) ? 'ABS' : /ASA/.test(name) ? 'ASA' : /TPU/.test(name) ? 'TPU' : 'PA';
+    const material = /PLA/i.test(name)
+      ? 'PLA'
+      : /PETG|nGen/i.test(name)
+        ? 'PETG'
+        : /ABS/.test(name)
+          ? 'ABS'
+          : /ASA/.test(name)
+            ? 'ASA'
+            : /TPU/.test(name)
+              ? 'TPU'
+              : 'PA';
     assert.equal(f.material, material, `${name} → ${f.id}`);
   }
   assert.equal(Object.keys(POLYSLICE_NAMES.filaments).length, SEED_FILAMENTS.length);
 });
 
-test('branded filaments print at their own temperatures with their material\'s cooling, keeping the first-layer offsets', () => {
+test("branded filaments print at their own temperatures with their material's cooling, keeping the first-layer offsets", () => {
   const prusament = findFilament('PrusamentPLA')!;
   const pla = FILAMENT_PRESETS['pla']!;
   assert.equal(prusament.settings.nozzleTemperature, 215);
-  assert.equal(prusament.settings.firstLayerNozzleTemperature! - prusament.settings.nozzleTemperature!, pla.settings.firstLayerNozzleTemperature! - pla.settings.nozzleTemperature!);
+  assert.equal(
+    prusament.settings.firstLayerNozzleTemperature! - prusament.settings.nozzleTemperature!,
+    pla.settings.firstLayerNozzleTemperature! - pla.settings.nozzleTemperature!,
+  );
   assert.equal(prusament.settings.fanSpeed, pla.settings.fanSpeed);
   assert.equal(prusament.settings.filamentDensity, pla.settings.filamentDensity);
   assert.equal(findFilament('3DXTechCarbonX')!.abrasive, true);
-  assert.equal(findFilament('NinjaFlexTPU')!.settings.retractionDistance, FILAMENT_PRESETS['tpu-85a']!.settings.retractionDistance);
+  assert.equal(
+    findFilament('NinjaFlexTPU')!.settings.retractionDistance,
+    FILAMENT_PRESETS['tpu-85a']!.settings.retractionDistance,
+  );
 });
 
 test("PrusaSlicer's and Cura's names, and preset names ending in the nozzle size", () => {
@@ -94,7 +181,10 @@ test('the names resolve into configs, and a printer without a preset is one clea
     }
     assert.fail(`${printer} resolved`);
   };
-  assert.match(why('UltimakerS5'), /^no printer preset for UltiMaker S5 \("UltimakerS5"\): it prints Griffin-flavour G-code/);
+  assert.match(
+    why('UltimakerS5'),
+    /^no printer preset for UltiMaker S5 \("UltimakerS5"\): it prints Griffin-flavour G-code/,
+  );
   assert.match(why('ultimaker_s5'), /UltiMaker S5/);
   assert.match(why('AnycubicVyper'), /buildPlateWidth 245, buildPlateLength 245, buildVolumeHeight 260/);
   assert.match(why('AnycubicPhotonMonoX'), /resin/);

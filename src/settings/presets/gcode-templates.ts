@@ -28,7 +28,12 @@ export function primeLineGcode(line: PrimeLine): string[] {
   const feed = line.feed ?? 1500;
   const [first, ...rest] = line.points;
   if (!first) return [];
-  const out = ['M82 ; absolute extrusion for the prime line', 'G92 E0', 'G1 Z2 F3000', `G1 X${n(first[0])} Y${n(first[1])} Z${n(z)} F5000 ; prime line start`];
+  const out = [
+    'M82 ; absolute extrusion for the prime line',
+    'G92 E0',
+    'G1 Z2 F3000',
+    `G1 X${n(first[0])} Y${n(first[1])} Z${n(z)} F5000 ; prime line start`,
+  ];
   let e = 0;
   let prev = first;
   for (const p of rest) {
@@ -42,12 +47,25 @@ export function primeLineGcode(line: PrimeLine): string[] {
 
 /** The two parallel lines along the left edge that Creality-style printers draw (as the schema's default). */
 export function leftEdgePrime(fromY: number, toY: number, x = 0.1): PrimeLine {
-  return { points: [[x, fromY], [x, toY], [x + 0.3, toY], [x + 0.3, fromY]] };
+  return {
+    points: [
+      [x, fromY],
+      [x, toY],
+      [x + 0.3, toY],
+      [x + 0.3, fromY],
+    ],
+  };
 }
 
 /** One line along the front edge, from x0 to x1 at y. */
 export function frontEdgePrime(y: number, x0: number, x1: number, z = 0.3): PrimeLine {
-  return { points: [[x0, y], [x1, y]], z };
+  return {
+    points: [
+      [x0, y],
+      [x1, y],
+    ],
+    z,
+  };
 }
 
 export interface MarlinStartOptions {
@@ -64,15 +82,24 @@ export interface MarlinStartOptions {
 
 /** Plain Marlin-style start: heat (bed and nozzle in parallel), home, level, wait, prime. */
 export function marlinStart(o: MarlinStartOptions): string {
-  const lines = [...(o.preamble ?? []), 'G90 ; absolute positioning', 'M82 ; absolute extrusion', 'M140 S{firstLayerBedTemperature} ; bed heat, no wait'];
+  const lines = [
+    ...(o.preamble ?? []),
+    'G90 ; absolute positioning',
+    'M82 ; absolute extrusion',
+    'M140 S{firstLayerBedTemperature} ; bed heat, no wait',
+  ];
   lines.push(
     o.probeNozzleTemperature === undefined
       ? 'M104 S{firstLayerNozzleTemperature} ; nozzle heat, no wait'
       : `M104 S${o.probeNozzleTemperature} ; nozzle warm but not oozing while homing and probing`,
   );
   lines.push(o.home ?? 'G28 ; home all axes', ...(o.afterHome ?? []));
-  if (o.probeNozzleTemperature !== undefined) lines.push('M104 S{firstLayerNozzleTemperature} ; nozzle to printing temperature');
-  lines.push('M190 S{firstLayerBedTemperature} ; wait for bed', 'M109 S{firstLayerNozzleTemperature} ; wait for nozzle');
+  if (o.probeNozzleTemperature !== undefined)
+    lines.push('M104 S{firstLayerNozzleTemperature} ; nozzle to printing temperature');
+  lines.push(
+    'M190 S{firstLayerBedTemperature} ; wait for bed',
+    'M109 S{firstLayerNozzleTemperature} ; wait for nozzle',
+  );
   if (o.prime) lines.push(...primeLineGcode(o.prime));
   else lines.push('G92 E0');
   return lines.join('\n');
@@ -116,13 +143,24 @@ const PRESENT_MOVES = Object.freeze({
 
 /** End: retract, lift, present the print, fan and heaters off, motors off. */
 export function marlinEnd(o: EndOptions): string {
-  const lines = ['G91 ; relative positioning', 'G1 E-2 F2700 ; retract', 'G1 Z10 F3000 ; lift', 'G90 ; absolute positioning'];
+  const lines = [
+    'G91 ; relative positioning',
+    'G1 E-2 F2700 ; retract',
+    'G1 Z10 F3000 ; lift',
+    'G90 ; absolute positioning',
+  ];
   if (typeof o.present === 'object') {
     lines.push(`G1 X${n(o.present.x)} Y${n(o.present.y)} F3000 ; present the print`);
   } else {
     lines.push(PRESENT_MOVES[o.present]);
   }
-  lines.push(...(o.extra ?? []), 'M106 S0 ; fan off', 'M104 S0 ; nozzle off', 'M140 S0 ; bed off', 'M84 X Y E ; motors off');
+  lines.push(
+    ...(o.extra ?? []),
+    'M106 S0 ; fan off',
+    'M104 S0 ; nozzle off',
+    'M140 S0 ; bed off',
+    'M84 X Y E ; motors off',
+  );
   return lines.join('\n');
 }
 

@@ -30,7 +30,10 @@ export const FILAMENT_PRESETS: Readonly<Record<string, FilamentPreset>> = byId(F
 
 /** The form ids, names and aliases are compared in: trimmed, lower-case, spaces/underscores → one hyphen. */
 export function normalizePresetName(name: string): string {
-  return name.trim().toLowerCase().replace(/[\s_]+/g, '-');
+  return name
+    .trim()
+    .toLowerCase()
+    .replace(/[\s_]+/g, '-');
 }
 
 /**
@@ -51,7 +54,8 @@ function lookupIndex(
   for (const p of list) for (const name of [p.id, p.name, ...p.aliases]) add(name, p.id);
   for (const table of foreign) {
     for (const [name, id] of Object.entries(table)) {
-      if (!list.some((p) => p.id === id)) throw new Error(`preset tables: "${name}" names ${id}, which is not a preset`);
+      if (!list.some((p) => p.id === id))
+        throw new Error(`preset tables: "${name}" names ${id}, which is not a preset`);
       add(name, id);
     }
   }
@@ -59,8 +63,14 @@ function lookupIndex(
 }
 
 const SOURCES = Object.values(FOREIGN_NAMES);
-const PRINTER_INDEX = lookupIndex(PRINTERS, SOURCES.map((s) => s.printers));
-const FILAMENT_INDEX = lookupIndex(FILAMENTS, SOURCES.map((s) => s.filaments));
+const PRINTER_INDEX = lookupIndex(
+  PRINTERS,
+  SOURCES.map((s) => s.printers),
+);
+const FILAMENT_INDEX = lookupIndex(
+  FILAMENTS,
+  SOURCES.map((s) => s.filaments),
+);
 
 /** PrusaSlicer's and OrcaSlicer's preset names end in the nozzle size: "Original Prusa MK4S 0.4 nozzle". */
 const NOZZLE_SUFFIX = /[-\s]*\(?0\.4\s*(?:mm)?[-\s]*nozzle\)?$/i;
@@ -68,7 +78,9 @@ const NOZZLE_SUFFIX = /[-\s]*\(?0\.4\s*(?:mm)?[-\s]*nozzle\)?$/i;
 /** The printer preset with this id, name or alias (case-insensitive), or undefined. */
 export function findPrinter(idOrName: string): PrinterPreset | undefined {
   if (typeof idOrName !== 'string') return undefined;
-  const id = PRINTER_INDEX[normalizePresetName(idOrName)] ?? PRINTER_INDEX[normalizePresetName(idOrName.trim().replace(NOZZLE_SUFFIX, ''))];
+  const id =
+    PRINTER_INDEX[normalizePresetName(idOrName)] ??
+    PRINTER_INDEX[normalizePresetName(idOrName.trim().replace(NOZZLE_SUFFIX, ''))];
   return id === undefined ? undefined : PRINTER_PRESETS[id];
 }
 
@@ -83,8 +95,14 @@ const WITHOUT_PRESET_INDEX: Readonly<Record<string, PrinterWithoutPreset>> = Obj
   Object.assign(
     Object.create(null) as Record<string, PrinterWithoutPreset>,
     Object.fromEntries([
-      ...Object.entries(PRINTERS_WITHOUT_PRESET).flatMap(([key, p]) => [[normalizePresetName(key), p], [normalizePresetName(p.name), p]]),
-      ...Object.entries(CURA_WITHOUT_PRESET).map(([cura, key]) => [normalizePresetName(cura), PRINTERS_WITHOUT_PRESET[key]!]),
+      ...Object.entries(PRINTERS_WITHOUT_PRESET).flatMap(([key, p]) => [
+        [normalizePresetName(key), p],
+        [normalizePresetName(p.name), p],
+      ]),
+      ...Object.entries(CURA_WITHOUT_PRESET).map(([cura, key]) => [
+        normalizePresetName(cura),
+        PRINTERS_WITHOUT_PRESET[key]!,
+      ]),
     ]),
   ),
 );
@@ -103,6 +121,10 @@ export interface PresetSummary {
 
 /** Every preset's id, name and aliases, in table order (for `strata presets` and error messages). */
 export function listPresets(): { printers: PresetSummary[]; filaments: PresetSummary[] } {
-  const summary = (p: { id: string; name: string; aliases: readonly string[] }): PresetSummary => ({ id: p.id, name: p.name, aliases: [...p.aliases] });
+  const summary = (p: { id: string; name: string; aliases: readonly string[] }): PresetSummary => ({
+    id: p.id,
+    name: p.name,
+    aliases: [...p.aliases],
+  });
   return { printers: PRINTERS.map(summary), filaments: FILAMENTS.map(summary) };
 }

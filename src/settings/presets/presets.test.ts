@@ -14,7 +14,10 @@ import {
 import { FILAMENTS } from './filaments.js';
 import { PRINTERS } from './printers.js';
 
-const ALL = [...PRINTERS.map((p) => ({ kind: 'printer', ...p })), ...FILAMENTS.map((p) => ({ kind: 'filament', ...p }))];
+const ALL = [
+  ...PRINTERS.map((p) => ({ kind: 'printer', ...p })),
+  ...FILAMENTS.map((p) => ({ kind: 'filament', ...p })),
+];
 
 /** Why a value does not fit its schema definition, or '' when it does. */
 function misfit(def: SettingDef, value: unknown): string {
@@ -22,14 +25,17 @@ function misfit(def: SettingDef, value: unknown): string {
     case 'number':
     case 'integer':
       if (value === null) return def.nullable ? '' : 'null is not allowed';
-      if (typeof value !== 'number' || !Number.isFinite(value)) return `expected a number, got ${JSON.stringify(value)}`;
+      if (typeof value !== 'number' || !Number.isFinite(value))
+        return `expected a number, got ${JSON.stringify(value)}`;
       if (def.type === 'integer' && !Number.isInteger(value)) return `expected an integer, got ${value}`;
       if (value < def.min || value > def.max) return `${value} is outside ${def.min}..${def.max}`;
       return '';
     case 'boolean':
       return typeof value === 'boolean' ? '' : `expected a boolean, got ${JSON.stringify(value)}`;
     case 'enum':
-      return typeof value === 'string' && def.values.includes(value) ? '' : `${JSON.stringify(value)} is not one of ${def.values.join(', ')}`;
+      return typeof value === 'string' && def.values.includes(value)
+        ? ''
+        : `${JSON.stringify(value)} is not one of ${def.values.join(', ')}`;
     case 'string':
       if (typeof value !== 'string') return `expected a string, got ${JSON.stringify(value)}`;
       return value.length <= def.maxLength ? '' : `longer than ${def.maxLength}`;
@@ -52,7 +58,8 @@ test('every {placeholder} in start and end G-code is a schema key', () => {
       const text = p.settings[key];
       assert.equal(typeof text, 'string', `${p.id}: ${key} is set`);
       const placeholders = [...text!.matchAll(/\{([^{}]*)\}/g)].map((m) => m[1]!);
-      for (const name of placeholders) assert.ok(Object.hasOwn(SCHEMA, name), `${p.id} ${key}: {${name}} is not a setting`);
+      for (const name of placeholders)
+        assert.ok(Object.hasOwn(SCHEMA, name), `${p.id} ${key}: {${name}} is not a setting`);
       assert.ok(!/[{}]/.test(text!.replace(/\{[A-Za-z]\w*\}/g, '')), `${p.id} ${key}: stray brace`);
     }
   }
@@ -67,7 +74,10 @@ test('start G-code heats and leaves absolute extrusion with E reset, like the sc
     const lines = start.split('\n');
     const lastG92 = lines.map((l) => l.trim()).lastIndexOf('G92 E0');
     assert.ok(lastG92 >= 0, `${p.id}: E reset`);
-    assert.ok(!lines.slice(lastG92 + 1).some((l) => /\bE-?\d/.test(l)), `${p.id}: nothing extrudes after the last E reset`);
+    assert.ok(
+      !lines.slice(lastG92 + 1).some((l) => /\bE-?\d/.test(l)),
+      `${p.id}: nothing extrudes after the last E reset`,
+    );
   }
 });
 
@@ -95,11 +105,35 @@ function effective(settings: Readonly<Partial<Settings>>): Settings {
 }
 
 test('printers carry their machine facts', () => {
-  const required = ['buildPlateWidth', 'buildPlateLength', 'buildVolumeHeight', 'nozzleDiameter', 'filamentDiameter', 'originAtCenter', 'gcodeFlavor', 'heatedBed', 'acceleration', 'cornerVelocity', 'maxSpeed', 'retractionDistance', 'retractionSpeed', 'startGcode', 'endGcode'] as const;
+  const required = [
+    'buildPlateWidth',
+    'buildPlateLength',
+    'buildVolumeHeight',
+    'nozzleDiameter',
+    'filamentDiameter',
+    'originAtCenter',
+    'gcodeFlavor',
+    'heatedBed',
+    'acceleration',
+    'cornerVelocity',
+    'maxSpeed',
+    'retractionDistance',
+    'retractionSpeed',
+    'startGcode',
+    'endGcode',
+  ] as const;
   for (const p of PRINTERS) {
     for (const key of required) assert.ok(p.settings[key] !== undefined, `${p.id}: ${key} is set`);
     const s = effective(p.settings);
-    for (const speed of ['perimeterSpeed', 'innerWallSpeed', 'skinSpeed', 'infillSpeed', 'firstLayerSpeed', 'travelSpeed', 'firstLayerTravelSpeed'] as const) {
+    for (const speed of [
+      'perimeterSpeed',
+      'innerWallSpeed',
+      'skinSpeed',
+      'infillSpeed',
+      'firstLayerSpeed',
+      'travelSpeed',
+      'firstLayerTravelSpeed',
+    ] as const) {
       assert.ok(s[speed] <= s.maxSpeed, `${p.id}: ${speed} ${s[speed]} exceeds maxSpeed ${s.maxSpeed}`);
     }
     const r = p.settings.retractionDistance!;
@@ -109,10 +143,24 @@ test('printers carry their machine facts', () => {
 });
 
 test('flavours and origins of well-known printers', () => {
-  for (const id of ['creality-k1', 'creality-k1-max', 'voron-2.4-350', 'voron-trident-300', 'sovol-sv07', 'elegoo-neptune-4']) {
+  for (const id of [
+    'creality-k1',
+    'creality-k1-max',
+    'voron-2.4-350',
+    'voron-trident-300',
+    'sovol-sv07',
+    'elegoo-neptune-4',
+  ]) {
     assert.equal(PRINTER_PRESETS[id]?.settings.gcodeFlavor, 'klipper', id);
   }
-  for (const id of ['bambu-lab-a1', 'bambu-lab-a1-mini', 'bambu-lab-p1s', 'bambu-lab-x1c', 'creality-ender-3', 'prusa-mk4']) {
+  for (const id of [
+    'bambu-lab-a1',
+    'bambu-lab-a1-mini',
+    'bambu-lab-p1s',
+    'bambu-lab-x1c',
+    'creality-ender-3',
+    'prusa-mk4',
+  ]) {
     assert.equal(PRINTER_PRESETS[id]?.settings.gcodeFlavor, 'marlin', id);
   }
   assert.equal(PRINTER_PRESETS['flsun-q5']?.settings.originAtCenter, true);
@@ -124,28 +172,66 @@ test('flavours and origins of well-known printers', () => {
 
 test('the printers the brief names are all there', () => {
   const wanted = [
-    'creality-ender-3', 'creality-ender-3-v2', 'creality-ender-3-s1', 'creality-ender-3-v3-se', 'creality-ender-5', 'creality-cr-10',
-    'creality-k1', 'creality-k1-max', 'prusa-i3-mk3s', 'prusa-mk4', 'prusa-mini', 'prusa-xl', 'bambu-lab-a1', 'bambu-lab-a1-mini',
-    'bambu-lab-p1s', 'bambu-lab-x1c', 'voron-2.4-350', 'voron-trident-300', 'anycubic-kobra-2', 'anycubic-i3-mega',
-    'elegoo-neptune-4', 'elegoo-neptune-3-pro', 'artillery-sidewinder-x2', 'sovol-sv06', 'flsun-q5',
+    'creality-ender-3',
+    'creality-ender-3-v2',
+    'creality-ender-3-s1',
+    'creality-ender-3-v3-se',
+    'creality-ender-5',
+    'creality-cr-10',
+    'creality-k1',
+    'creality-k1-max',
+    'prusa-i3-mk3s',
+    'prusa-mk4',
+    'prusa-mini',
+    'prusa-xl',
+    'bambu-lab-a1',
+    'bambu-lab-a1-mini',
+    'bambu-lab-p1s',
+    'bambu-lab-x1c',
+    'voron-2.4-350',
+    'voron-trident-300',
+    'anycubic-kobra-2',
+    'anycubic-i3-mega',
+    'elegoo-neptune-4',
+    'elegoo-neptune-3-pro',
+    'artillery-sidewinder-x2',
+    'sovol-sv06',
+    'flsun-q5',
   ];
   for (const id of wanted) assert.ok(PRINTER_PRESETS[id], id);
 });
 
 test('filaments carry temperatures, cooling and density; only flexible ones set retraction distance', () => {
-  const required = ['nozzleTemperature', 'firstLayerNozzleTemperature', 'bedTemperature', 'firstLayerBedTemperature', 'fanSpeed', 'firstLayerFanSpeed', 'minLayerTime', 'filamentDensity'] as const;
+  const required = [
+    'nozzleTemperature',
+    'firstLayerNozzleTemperature',
+    'bedTemperature',
+    'firstLayerBedTemperature',
+    'fanSpeed',
+    'firstLayerFanSpeed',
+    'minLayerTime',
+    'filamentDensity',
+  ] as const;
   for (const f of FILAMENTS) {
     for (const key of required) assert.ok(f.settings[key] !== undefined, `${f.id}: ${key} is set`);
-    if (f.material !== 'TPU') assert.equal(f.settings.retractionDistance, undefined, `${f.id}: retraction distance belongs to the printer`);
+    if (f.material !== 'TPU')
+      assert.equal(f.settings.retractionDistance, undefined, `${f.id}: retraction distance belongs to the printer`);
     for (const key of Object.keys(f.settings)) {
       assert.notEqual(SCHEMA[key as keyof typeof SCHEMA].stage, 'machine', `${f.id}: ${key} is a machine setting`);
     }
   }
   const tpu = findFilament('tpu')!;
-  assert.ok(tpu.settings.retractionDistance! <= 2 && tpu.settings.retractionSpeed! <= 30, 'TPU retracts short and slow');
-  assert.ok(findFilament('petg')!.settings.retractionSpeed! < (SCHEMA.retractionSpeed.default as number), 'PETG retracts slower');
+  assert.ok(
+    tpu.settings.retractionDistance! <= 2 && tpu.settings.retractionSpeed! <= 30,
+    'TPU retracts short and slow',
+  );
+  assert.ok(
+    findFilament('petg')!.settings.retractionSpeed! < (SCHEMA.retractionSpeed.default as number),
+    'PETG retracts slower',
+  );
   assert.ok(findFilament('abs')!.settings.bedTemperature! >= 90);
-  for (const id of ['pla-cf', 'petg-cf', 'pa-cf', 'pet-cf', 'asa-cf', 'pc-cf', 'pa-gf', 'pla-glow']) assert.equal(FILAMENT_PRESETS[id]?.abrasive, true, id);
+  for (const id of ['pla-cf', 'petg-cf', 'pa-cf', 'pet-cf', 'asa-cf', 'pc-cf', 'pa-gf', 'pla-glow'])
+    assert.equal(FILAMENT_PRESETS[id]?.abrasive, true, id);
 });
 
 test('ids are unique, presets are frozen, and there are enough of them', () => {
@@ -155,10 +241,14 @@ test('ids are unique, presets are frozen, and there are enough of them', () => {
   assert.equal(new Set(FILAMENTS.map((p) => p.id)).size, FILAMENTS.length);
   for (const p of ALL) {
     assert.match(p.id, /^[a-z0-9][a-z0-9.-]*$/, `${p.id}: lower-case id`);
-    assert.ok(p.aliases.every((a) => a === a.toLowerCase()), `${p.id}: aliases are lower-case`);
+    assert.ok(
+      p.aliases.every((a) => a === a.toLowerCase()),
+      `${p.id}: aliases are lower-case`,
+    );
   }
   assert.ok(Object.isFrozen(PRINTER_PRESETS) && Object.isFrozen(FILAMENT_PRESETS));
-  for (const p of [...PRINTERS, ...FILAMENTS]) assert.ok(Object.isFrozen(p) && Object.isFrozen(p.settings) && Object.isFrozen(p.aliases), p.id);
+  for (const p of [...PRINTERS, ...FILAMENTS])
+    assert.ok(Object.isFrozen(p) && Object.isFrozen(p.settings) && Object.isFrozen(p.aliases), p.id);
   assert.throws(() => {
     (PRINTER_PRESETS['creality-ender-3']!.settings as Record<string, unknown>).maxSpeed = 1;
   }, TypeError);
@@ -193,8 +283,10 @@ test('unknown lookups return undefined, also for Object.prototype names', () => 
 });
 
 test('every id, name and alias finds its own preset', () => {
-  for (const p of PRINTERS) for (const key of [p.id, p.name, ...p.aliases]) assert.equal(findPrinter(key)?.id, p.id, key);
-  for (const f of FILAMENTS) for (const key of [f.id, f.name, ...f.aliases]) assert.equal(findFilament(key)?.id, f.id, key);
+  for (const p of PRINTERS)
+    for (const key of [p.id, p.name, ...p.aliases]) assert.equal(findPrinter(key)?.id, p.id, key);
+  for (const f of FILAMENTS)
+    for (const key of [f.id, f.name, ...f.aliases]) assert.equal(findFilament(key)?.id, f.id, key);
 });
 
 test('defaults and listPresets', () => {
@@ -202,8 +294,14 @@ test('defaults and listPresets', () => {
   assert.equal(DEFAULT_FILAMENT_ID, 'pla');
   assert.ok(findPrinter(DEFAULT_PRINTER_ID) && findFilament(DEFAULT_FILAMENT_ID));
   const list = listPresets();
-  assert.deepEqual(list.printers.map((p) => p.id), PRINTERS.map((p) => p.id));
-  assert.deepEqual(list.filaments.map((p) => p.id), FILAMENTS.map((p) => p.id));
+  assert.deepEqual(
+    list.printers.map((p) => p.id),
+    PRINTERS.map((p) => p.id),
+  );
+  assert.deepEqual(
+    list.filaments.map((p) => p.id),
+    FILAMENTS.map((p) => p.id),
+  );
   assert.ok(list.printers.every((p) => typeof p.name === 'string' && Array.isArray(p.aliases)));
   // A fresh copy each call: callers may not change the tables through it.
   list.printers[0]!.aliases.push('x');
@@ -214,12 +312,17 @@ test('host features: thumbnails the printers show, arcs where the firmware runs 
   const { PRINTER_HOST_FEATURES } = await import('./printer-host-features.js');
   const { parseThumbnailSpecs } = await import('../../thumbnail/spec.js');
   for (const id of Object.keys(PRINTER_HOST_FEATURES)) assert.ok(PRINTER_PRESETS[id], `${id} is a printer`);
-  for (const p of PRINTERS) if (p.settings.thumbnails) assert.ok(parseThumbnailSpecs(p.settings.thumbnails).length > 0, p.id);
+  for (const p of PRINTERS)
+    if (p.settings.thumbnails) assert.ok(parseThumbnailSpecs(p.settings.thumbnails).length > 0, p.id);
   assert.match(PRINTER_PRESETS['prusa-mk4']!.settings.thumbnails!, /16x16\/QOI/);
   assert.equal(PRINTER_PRESETS['prusa-mk4']!.settings.arcFitting, true);
   assert.equal(PRINTER_PRESETS['creality-k1']!.settings.thumbnails, '96x96/PNG,300x300/PNG');
   assert.equal(PRINTER_PRESETS['bambu-lab-x1c']!.settings.arcFitting, true);
-  assert.notEqual(PRINTER_PRESETS['creality-ender-3']!.settings.arcFitting, true, 'stock Ender-3 Marlin has no ARC_SUPPORT');
+  assert.notEqual(
+    PRINTER_PRESETS['creality-ender-3']!.settings.arcFitting,
+    true,
+    'stock Ender-3 Marlin has no ARC_SUPPORT',
+  );
   assert.equal(PRINTER_PRESETS['prusa-i3-mk3s']!.settings.machineLimits, 'write');
   assert.equal(PRINTER_PRESETS['creality-ender-3']!.settings.maxAccelerationX, 500);
   // the preset's own settings win over the table's
@@ -228,6 +331,8 @@ test('host features: thumbnails the printers show, arcs where the firmware runs 
 
 test('a slice with every printer preset resolves (limits, thumbnails and templates fit together)', async () => {
   const { resolveConfig } = await import('../resolve.js');
-  for (const p of PRINTERS) for (const f of ['pla', 'petg']) assert.doesNotThrow(() => resolveConfig({ printer: p.id, filament: f }), `${p.id} + ${f}`);
+  for (const p of PRINTERS)
+    for (const f of ['pla', 'petg'])
+      assert.doesNotThrow(() => resolveConfig({ printer: p.id, filament: f }), `${p.id} + ${f}`);
   for (const f of FILAMENTS) assert.doesNotThrow(() => resolveConfig({ filament: f.id }), f.id);
 });

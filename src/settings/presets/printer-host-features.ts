@@ -29,27 +29,56 @@ const RATRIG_THUMBS = '16x16/PNG,220x220/PNG';
 /** Machine limits of Prusa's MK3S firmware, which PrusaSlicer writes into its G-code (emit_to_gcode). */
 const PRUSA_MK3_LIMITS: Partial<Settings> = {
   machineLimits: 'write',
-  maxSpeedX: 200, maxSpeedY: 200, maxSpeedZ: 12, maxSpeedE: 120,
-  maxAccelerationX: 1000, maxAccelerationY: 1000, maxAccelerationZ: 200, maxAccelerationE: 5000,
+  maxSpeedX: 200,
+  maxSpeedY: 200,
+  maxSpeedZ: 12,
+  maxSpeedE: 120,
+  maxAccelerationX: 1000,
+  maxAccelerationY: 1000,
+  maxAccelerationZ: 200,
+  maxAccelerationE: 5000,
   retractAcceleration: 1250,
 };
 const PRUSA_MINI_LIMITS: Partial<Settings> = {
   machineLimits: 'write',
-  maxSpeedX: 180, maxSpeedY: 180, maxSpeedZ: 12, maxSpeedE: 80,
-  maxAccelerationX: 2500, maxAccelerationY: 2500, maxAccelerationZ: 400, maxAccelerationE: 5000,
-  travelAcceleration: 2500, retractAcceleration: 1250,
+  maxSpeedX: 180,
+  maxSpeedY: 180,
+  maxSpeedZ: 12,
+  maxSpeedE: 80,
+  maxAccelerationX: 2500,
+  maxAccelerationY: 2500,
+  maxAccelerationZ: 400,
+  maxAccelerationE: 5000,
+  travelAcceleration: 2500,
+  retractAcceleration: 1250,
 };
 /** Creality's stock Marlin (PrusaSlicer's Creality profiles). */
 const CREALITY_MARLIN_LIMITS: Partial<Settings> = {
-  maxSpeedX: 500, maxSpeedY: 500, maxSpeedZ: 10, maxSpeedE: 60,
-  maxAccelerationX: 500, maxAccelerationY: 500, maxAccelerationZ: 100, maxAccelerationE: 5000,
+  maxSpeedX: 500,
+  maxSpeedY: 500,
+  maxSpeedZ: 10,
+  maxSpeedE: 60,
+  maxAccelerationX: 500,
+  maxAccelerationY: 500,
+  maxAccelerationZ: 100,
+  maxAccelerationE: 5000,
   retractAcceleration: 1000,
 };
 const VORON_LIMITS: Partial<Settings> = {
-  maxSpeedZ: 12, maxSpeedE: 120, maxAccelerationX: 9000, maxAccelerationY: 9000, maxAccelerationZ: 500, maxAccelerationE: 10000,
+  maxSpeedZ: 12,
+  maxSpeedE: 120,
+  maxAccelerationX: 9000,
+  maxAccelerationY: 9000,
+  maxAccelerationZ: 500,
+  maxAccelerationE: 10000,
 };
 const RATRIG_LIMITS: Partial<Settings> = {
-  maxSpeedZ: 10, maxSpeedE: 60, maxAccelerationX: 9000, maxAccelerationY: 9000, maxAccelerationZ: 100, maxAccelerationE: 5000,
+  maxSpeedZ: 10,
+  maxSpeedE: 60,
+  maxAccelerationX: 9000,
+  maxAccelerationY: 9000,
+  maxAccelerationZ: 100,
+  maxAccelerationE: 5000,
   travelAcceleration: 9000,
 };
 
