@@ -212,104 +212,6 @@ export function klipperLimits(s: EstimateSettings): KlipperLimits {
 }
 
 /**
- * The Klipper flavour's motion timer: the plan's moves, in mm, into Klipper's planner; each layer's moves
- * timed into that layer. Arcs are split as Klipper's gcode_arcs does (⌊length / resolution⌋ segments).
- */
-class KlipperTimer implements MoveSink {
-  readonly planner: KlipperPlanner;
-  /** Position: X, Y µm; Z mm (NaN until known). */
-  private px = 0;
-  private py = 0;
-  private pz = NaN;
-  private layers = 0;
-  filament = 0;
-
-  constructor(limits: KlipperLimits) {
-    this.planner = new KlipperPlanner(limits);
-  }
-
-  layerSeconds(): number[] {
-    this.planner.flush();
-    const out = this.planner.seconds.slice(0, this.layers);
-    while (out.length < this.layers) out.push(0);
-    for (let i = 0; i < out.length; i++) out[i] = out[i] || 0;
-    return out;
-  }
-
-  private xy(x: number, y: number, length: number, dz: number, filament: number, speed: number): void {
-    if (!(length > 0)) {
-      // from an unknown position: no time can be given
-      this.planner.flush();
-    } else this.planner.move((x - this.px) / 1000, (y - this.py) / 1000, dz, filament, speed);
-    this.px = x;
-    this.py = y;
-  }
-
-  layerStart(): void {
-    this.planner.tag = this.layers++;
-  }
-  layerEnd(): void {}
-  zMove(z: number, distance: number, speed: number): void {
-    if (distance > 0 && !Number.isNaN(this.pz)) this.planner.move(0, 0, z - this.pz, 0, speed);
-    this.pz = z;
-  }
-  travel(x: number, y: number, length: number, speed: number): void {
-    this.xy(x, y, length, 0, 0, speed);
-  }
-  extrudeStart(): void {}
-  extrude(x: number, y: number, length: number, filament: number, speed: number): void {
-    this.filament += filament;
-    this.xy(x, y, length, 0, filament, speed);
-  }
-  extrudeZ(x: number, y: number, z: number, length: number, filament: number, speed: number): void {
-    this.filament += filament;
-    const dz = Number.isNaN(this.pz) ? 0 : z - this.pz;
-    this.pz = z;
-    this.xy(x, y, length, dz, filament, speed);
-  }
-  arc(
-    x: number,
-    y: number,
-    cx: number,
-    cy: number,
-    clockwise: boolean,
-    length: number,
-    filament: number,
-    speed: number,
-  ): void {
-    this.filament += filament;
-    const r = hypot(this.px - cx, this.py - cy);
-    const segments = Math.max(1, Math.floor(length / ARC_SEGMENT_MM));
-    if (!(r > 0) || segments === 1) {
-      this.xy(x, y, length, 0, filament, speed);
-      return;
-    }
-    const a0 = Math.atan2(this.py - cy, this.px - cx);
-    const step = ((clockwise ? -1 : 1) * (length * 1000)) / r / segments;
-    const e = filament / segments;
-    for (let k = 1; k < segments; k++) {
-      const a = a0 + step * k;
-      this.xy(cx + r * Math.cos(a), cy + r * Math.sin(a), 1, 0, e, speed);
-    }
-    this.xy(x, y, 1, 0, e, speed);
-  }
-  retract(filament: number, speed: number): void {
-    this.filament -= filament;
-    this.planner.move(0, 0, 0, -filament, speed);
-  }
-  prime(filament: number, speed: number): void {
-    this.filament += filament;
-    this.planner.move(0, 0, 0, filament, speed);
-  }
-  wipe(x: number, y: number, length: number, filament: number, speed: number): void {
-    this.filament -= filament;
-    this.xy(x, y, length, 0, -filament, speed);
-  }
-  objectStart(): void {}
-  objectEnd(): void {}
-}
-
-/**
  * Time of one trapezoidal segment of `length` mm: enter at speed v0, cruise at most at vc, leave at v1
  * (mm/s). Assumes v0 and v1 are reachable from each other within `length` (the lookahead guarantees it).
  */
@@ -331,12 +233,24 @@ export function pointToPointSeconds(distance: number, speed: number, accel: numb
   return distance > 0 ? segmentSeconds(distance, 0, speed, 0, accel) : 0;
 }
 
+/** What the timer needs of a look-ahead planner (Klipper's and Marlin's both). */
+interface TimedPlanner {
+  /** The tag (layer) the next moves are timed into. */
+  tag: number;
+  /** Seconds by tag. */
+  readonly seconds: number[];
+  /** A move, relative mm, at a feed rate in mm/s. */
+  move(dx: number, dy: number, dz: number, de: number, speed: number): void;
+  /** Plan out every move queued (the head comes to rest). */
+  flush(): void;
+}
+
 /**
- * The Marlin and RepRap flavours' motion timer: the plan's moves, in mm, into Marlin's planner; each
- * layer's moves timed into that layer. Arcs are split into chords of ARC_SEGMENT_MM.
+ * The motion timer: the plan's moves, in mm, into the firmware's planner (klipper-planner.ts for Klipper,
+ * marlin-planner.ts for Marlin and RepRapFirmware); each layer's moves timed into that layer. Arcs are split
+ * into chords as the firmware splits them (`arcChords`: the count for an arc's length).
  */
-class MarlinTimer implements MoveSink {
-  readonly planner: MarlinPlanner;
+class PlannerTimer implements MoveSink {
   /** Position: X, Y µm; Z mm (NaN until known). */
   private px = 0;
   private py = 0;
@@ -344,9 +258,10 @@ class MarlinTimer implements MoveSink {
   private layers = 0;
   filament = 0;
 
-  constructor(limits: MarlinLimits) {
-    this.planner = new MarlinPlanner(limits);
-  }
+  constructor(
+    readonly planner: TimedPlanner,
+    private readonly arcChords: (lengthMm: number) => number,
+  ) {}
 
   layerSeconds(): number[] {
     this.planner.flush();
@@ -398,15 +313,15 @@ class MarlinTimer implements MoveSink {
   ): void {
     this.filament += filament;
     const r = hypot(this.px - cx, this.py - cy);
-    const pieces = Math.max(1, Math.ceil(length / ARC_SEGMENT_MM));
-    if (!(r > 0) || pieces === 1) {
+    const chords = this.arcChords(length);
+    if (!(r > 0) || chords === 1) {
       this.xy(x, y, length, 0, filament, speed);
       return;
     }
     const a0 = Math.atan2(this.py - cy, this.px - cx);
-    const step = ((clockwise ? -1 : 1) * (length * 1000)) / r / pieces;
-    const e = filament / pieces;
-    for (let k = 1; k < pieces; k++) {
+    const step = ((clockwise ? -1 : 1) * (length * 1000)) / r / chords;
+    const e = filament / chords;
+    for (let k = 1; k < chords; k++) {
       const a = a0 + step * k;
       this.xy(cx + r * Math.cos(a), cy + r * Math.sin(a), 1, 0, e, speed);
     }
@@ -432,6 +347,11 @@ class MarlinTimer implements MoveSink {
   objectEnd(): void {}
 }
 
+/** Klipper's gcode_arcs: ⌊length / resolution⌋ segments. */
+const klipperArcChords = (length: number) => Math.max(1, Math.floor(length / ARC_SEGMENT_MM));
+/** Marlin's: ⌈length / MM_PER_ARC_SEGMENT⌉ chords. */
+const marlinArcChords = (length: number) => Math.max(1, Math.ceil(length / ARC_SEGMENT_MM));
+
 /** Estimate print time (per layer and total) and filament use of a plan. */
 export function estimatePlan(plan: PrintPlan, s: EstimateSettings): PlanEstimate {
   const steps = estimatePlanSteps(plan, s);
@@ -445,17 +365,13 @@ export function estimatePlan(plan: PrintPlan, s: EstimateSettings): PlanEstimate
 export function* estimatePlanSteps(plan: PrintPlan, s: EstimateSettings): Generator<void, PlanEstimate> {
   let layerSeconds: number[];
   let filament: number;
-  if (s.gcodeFlavor === 'klipper') {
-    const timer = new KlipperTimer(klipperLimits(s));
-    yield* walkPlanSteps(plan, s, timer);
-    layerSeconds = timer.layerSeconds();
-    filament = timer.filament;
-  } else {
-    const timer = new MarlinTimer(marlinLimits(s));
-    yield* walkPlanSteps(plan, s, timer);
-    layerSeconds = timer.layerSeconds();
-    filament = timer.filament;
-  }
+  const timer =
+    s.gcodeFlavor === 'klipper'
+      ? new PlannerTimer(new KlipperPlanner(klipperLimits(s)), klipperArcChords)
+      : new PlannerTimer(new MarlinPlanner(marlinLimits(s)), marlinArcChords);
+  yield* walkPlanSteps(plan, s, timer);
+  layerSeconds = timer.layerSeconds();
+  filament = timer.filament;
   let printTimeSeconds = 0;
   for (const t of layerSeconds) printTimeSeconds += t;
   const volumeCm3 = (filament * filamentArea(s.filamentDiameter)) / 1000;
