@@ -180,7 +180,13 @@ export function combRoute(a: Pt, b: Pt, area: CombArea): Pt[] | null {
  * holes) or within `tolerance` µm of one (a travel that starts where a loop of the rings ended).
  */
 export function insideRings(p: Pt, area: CombArea, tolerance: number): boolean {
+  // inside by parity first (most travels are): the distances to the rings only for a point outside them
   let inside = false;
+  for (const ring of area.rings) {
+    if (p.x < ring.minX || p.x > ring.maxX || p.y < ring.minY || p.y > ring.maxY) continue;
+    if (pointInRing(p, ring.pts)) inside = !inside;
+  }
+  if (inside) return true;
   const t2 = tolerance * tolerance;
   for (const ring of area.rings) {
     if (
@@ -190,11 +196,10 @@ export function insideRings(p: Pt, area: CombArea, tolerance: number): boolean {
       p.y > ring.maxY + tolerance
     )
       continue;
-    if (pointInRing(p, ring.pts)) inside = !inside;
     const pts = ring.pts;
     for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) {
       if (segmentDistance2(p.x, p.y, pts[j].x, pts[j].y, pts[i].x, pts[i].y) <= t2) return true;
     }
   }
-  return inside;
+  return false;
 }
