@@ -8,7 +8,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { Slicer } from '../api/slicer.js';
 import type { SliceOptions } from '../settings/schema.js';
-import { KLIPPER_CONFIG_SETTINGS, runKlipper, skipWithoutKlipper } from './klipper.js';
+import { assertKlipperAgrees, KLIPPER_CONFIG_SETTINGS, skipWithoutKlipper } from './klipper.js';
 import { box } from './test-meshes.js';
 
 const skip = skipWithoutKlipper();
@@ -16,14 +16,7 @@ const PRINTER: SliceOptions = { ...KLIPPER_CONFIG_SETTINGS, maxSpeedE: null, max
 
 async function accepted(name: string, input: unknown, options: SliceOptions): Promise<string> {
   const { gcode, stats } = new Slicer({ ...PRINTER, ...options }).sliceSync(input);
-  const klipper = await runKlipper(gcode, { timeoutMs: 60_000 });
-  assert.deepEqual(klipper.errors, [], `${name}: Klipper reported errors`);
-  assert.ok(klipper.accepted, `${name}: Klipper did not accept the file:\n${klipper.log.slice(-3000)}`);
-  const ratio = stats.printTimeSeconds / klipper.printTimeSeconds;
-  assert.ok(
-    Math.abs(ratio - 1) <= 0.02,
-    `${name}: Strata ${stats.printTimeSeconds.toFixed(1)} s, Klipper ${klipper.printTimeSeconds.toFixed(1)} s`,
-  );
+  await assertKlipperAgrees(name, gcode, stats.printTimeSeconds);
   return gcode;
 }
 

@@ -23,6 +23,7 @@ import { homedir, tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { inCi } from './models-dir.js';
+import assert from 'node:assert/strict';
 
 export const KLIPPER_DIR = process.env.STRATA_KLIPPER || join(homedir(), '.cache', 'strata', 'klipper');
 export const KLIPPER_PYTHON = join(KLIPPER_DIR, 'venv', 'bin', 'python');
@@ -142,4 +143,20 @@ export function parseKlipperLog(log: string, code: number | null): KlipperResult
     totalSeconds,
     log,
   };
+}
+
+/**
+ * Run Klipper on `gcode` and assert what the tests hold it to: no command unknown and no move refused, the
+ * whole file accepted, and Strata's estimate (`strataSeconds`) within 2 % of Klipper's print time.
+ */
+export async function assertKlipperAgrees(name: string, gcode: string, strataSeconds: number): Promise<KlipperResult> {
+  const klipper = await runKlipper(gcode, { timeoutMs: 60_000 });
+  assert.deepEqual(klipper.errors, [], `${name}: Klipper reported errors`);
+  assert.ok(klipper.accepted, `${name}: Klipper did not accept the file:\n${klipper.log.slice(-3000)}`);
+  const ratio = strataSeconds / klipper.printTimeSeconds;
+  assert.ok(
+    Math.abs(ratio - 1) <= 0.02,
+    `${name}: Strata ${strataSeconds.toFixed(1)} s, Klipper ${klipper.printTimeSeconds.toFixed(1)} s (${((ratio - 1) * 100).toFixed(2)} %)`,
+  );
+  return klipper;
 }

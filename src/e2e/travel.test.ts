@@ -13,6 +13,7 @@ import assert from 'node:assert/strict';
 import { Slicer, prepareModel } from '../api/slicer.js';
 import { createSectioner } from '../analysis/section.js';
 import type { SectionSegments } from '../analysis/section.js';
+import { segmentDistance2 } from '../geometry/types.js';
 import type { PrintPlan } from '../plan/types.js';
 import { readModel, skipWithoutModels } from './models.js';
 
@@ -43,18 +44,10 @@ class SectionIndex {
     if (winding !== 0) return true;
     for (let r = Math.floor(y - near); r <= Math.floor(y + near); r++) {
       for (const i of this.rows.get(r) ?? [])
-        if (segDist(x, y, s.x0[i], s.y0[i], s.x1[i], s.y1[i]) <= near) return true;
+        if (segmentDistance2(x, y, s.x0[i], s.y0[i], s.x1[i], s.y1[i]) <= near * near) return true;
     }
     return false;
   }
-}
-
-function segDist(px: number, py: number, ax: number, ay: number, bx: number, by: number): number {
-  const dx = bx - ax,
-    dy = by - ay;
-  const l2 = dx * dx + dy * dy;
-  const t = l2 > 0 ? Math.max(0, Math.min(1, ((px - ax) * dx + (py - ay) * dy) / l2)) : 0;
-  return Math.hypot(px - ax - t * dx, py - ay - t * dy);
 }
 
 /** Retracting travels, and the points of unretracted travels (sampled every 0.5 mm) outside the part's section. */

@@ -5,7 +5,7 @@
  * overhang walls). Travels are combed inside the group, retracted when they leave it or are long.
  */
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
-import { pointInRing } from '../geometry/contain.js';
+import { pointInArea } from '../geometry/clip.js';
 import { orderNearest } from '../geometry/nearest-order.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
@@ -420,7 +420,7 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
     !ctx.cfg.retractOnLayerChange &&
     group.kind === 'island' &&
     group.area &&
-    inArea(ctx.at, group.area)
+    pointInArea(ctx.at, group.area)
   ) {
     ctx.comb = group;
     combed = true;
@@ -496,13 +496,6 @@ function printMixed(ctx: Ctx, entries: readonly PathEntry[]): void {
     if (entry.closed) printLoop(ctx, entry, style, i, chooseSeam(entry.paths[i], 'nearest', ctx.at, 0, 0, 0));
     else extrudeFlagged(ctx, style, lineRun(entry, i, c !== 0));
   }
-}
-
-/** Whether a point is inside an area (its outer ring and none of its holes). */
-function inArea(p: Pt, area: ExPolygon): boolean {
-  if (!pointInRing(p, area.outer)) return false;
-  for (const h of area.holes) if (pointInRing(p, h)) return false;
-  return true;
 }
 
 /**
