@@ -467,7 +467,7 @@ export function vaseFlatWarning(flat: readonly VaseFlat[]): string | null {
     flat.length === 1
       ? `layer ${first.layer} (Z ${first.z.toFixed(2)} mm)`
       : `${flat.length} layers between ${first.layer} and ${last.layer} (Z ${first.z.toFixed(2)}–${last.z.toFixed(2)} mm)`;
-  return `spiral vase: ${where} ${flat.length === 1 ? 'is' : 'are'} not one single wall loop (several islands, a hole, or a part too thin for a loop) and ${flat.length === 1 ? 'prints' : 'print'} flat, with a layer change; the spiral starts again above`;
+  return `spiral vase: ${where} ${flat.length === 1 ? 'is' : 'are'} not one single wall loop (several islands, or a part too thin for a loop) and ${flat.length === 1 ? 'prints' : 'print'} flat, with a layer change; the spiral starts again above`;
 }
 
 /** One line naming the spiral vase layers whose specks beside the main island were left out, or null. */

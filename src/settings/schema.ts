@@ -1487,7 +1487,7 @@ export const SCHEMA = {
   spiralVase: bool(
     false,
     'walls',
-    "Spiral vase mode: after the bottom layers (bottomSkinThickness, printed as set) every layer is one outer wall whose Z rises steadily round the turn from the layer below's height to its own, so the print is one continuous spiral with no seam, no layer-change travel and no retraction. Above the bottom there is one wall, no infill, no top skin, no support, no ironing and no scarf; settings that ask for those are reported as ignored. The first turn grows its flow from nothing and a last flat turn at the top shrinks it to nothing, so the spiral starts and ends level. A layer that is not one single loop (several islands, a hole) is printed flat, and reported.",
+    "Spiral vase mode: after the bottom layers (bottomSkinThickness, printed as set) every layer is one outer wall whose Z rises steadily round the turn from the layer below's height to its own, so the print is one continuous spiral with no seam, no layer-change travel and no retraction. Above the bottom there is one wall, no infill, no top skin, no support, no ironing and no scarf; settings that ask for those are reported as ignored. The first turn grows its flow from nothing and a last flat turn at the top shrinks it to nothing, so the spiral starts and ends level. Holes are dropped (a vase modelled hollow spirals on its outside) and specks under 1 mm² beside the main island left out; a layer that is still not one single loop (several islands of size) is printed flat, and reported.",
   ),
 
   // ── runtime ──────────────────────────────────────────────────────────────────
