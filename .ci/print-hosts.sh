@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The print hosts the end-to-end tests send G-code to (src/e2e/print-hosts.ts), from PyPI, pinned: OctoPrint
+# The print hosts the end-to-end tests send G-code to (test/e2e/print-hosts.ts), from PyPI, pinned: OctoPrint
 # (with its virtual printer) and Moonraker, one virtualenv each (their dependencies conflict), under
 # $STRATA_PRINT_HOSTS (default ~/.cache/strata/print-hosts). Kept between runs: a venv is made again only
 # when its pinned version changes. Needs python3 with venv (tested: 3.11) and libsodium (Moonraker's libnacl).

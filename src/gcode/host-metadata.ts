@@ -5,7 +5,7 @@
  * height, first-layer height, estimated time, filament length and weight, temperatures, nozzle, layer count)
  * and, per layer, `;BEFORE_LAYER_CHANGE` followed by the layer's Z (the object height). Without them it
  * called Strata's files "Unknown" and took the start G-code's `G1 Z2` lift for a 2 mm first layer.
- * (Read from Moonraker's file_manager/metadata.py, and checked against it: src/e2e/print-hosts.test.ts.)
+ * (Read from Moonraker's file_manager/metadata.py, and checked against it: test/e2e/print-hosts.test.ts.)
  *
  * The writer never reads the clock, so that a slice gives the same bytes every time: the date is the caller's
  * (`GcodeMeta.date`, an ISO date and time) or, when none is given, 0000-00-00 at 00:00:00, which says "no

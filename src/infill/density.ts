@@ -3,7 +3,7 @@
  * over the region's area, where two lines crossing both count (the material is there twice). That is the
  * seed's rule (grid: spacing = 2 · width / density, "each direction provides 10 %"), the one CuraEngine and
  * PrusaSlicer turn the setting into line distances with, and what the G-code analyser measures from E
- * (src/analysis/infill-density.ts). The footprint is smaller wherever lines cross: grid at 20 % covers
+ * (tools/analysis/infill-density.ts). The footprint is smaller wherever lines cross: grid at 20 % covers
  * 2x − x² = 19 % of the area (x = w/s), triangles at 20 % about 18.7 %.
  * F families of parallel lines at spacing s, width w: density = F · w / s.
  */

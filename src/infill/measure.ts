@@ -159,7 +159,7 @@ export function pathLength(result: InfillResult): number {
 /**
  * Density as the setting means it (density.ts): the length × width of the lines and loops inside the region,
  * over its area; lines that cross count twice. Connectors run on the region's edge, in the innermost wall's
- * overlap, and are left out, as the G-code analyser leaves them out (src/analysis/infill-density.ts): only
+ * overlap, and are left out, as the G-code analyser leaves them out (tools/analysis/infill-density.ts): only
  * what lies deeper than `insetUm` (default a tenth of the line width) counts, over the area that deep.
  */
 export function lineDensity(
