@@ -10,8 +10,8 @@ export type { Settings, SliceOptions, SettingKey, SettingDef } from './settings/
 export { SETTING_SCOPE } from './settings/scope.js';
 export type { Scope } from './settings/scope.js';
 export { resolveConfig } from './settings/resolve.js';
-export { importProfile } from './settings/import/index.js';
-export type { ImportedProfile, ProfileFormat } from './settings/import/index.js';
+export { importProfile } from './profiles/index.js';
+export type { ImportedProfile, ProfileFormat } from './profiles/index.js';
 export type { Config } from './settings/resolve.js';
 export { listPresets, findPrinter, findFilament, PRINTER_PRESETS, FILAMENT_PRESETS } from './settings/presets/index.js';
 export {

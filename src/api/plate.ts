@@ -10,7 +10,7 @@ import { plateSetup, type PlacedObject, type PlateSetup } from '../pipeline/prin
 import type { Config } from '../settings/resolve.js';
 import type { SettingKey, SliceOptions } from '../settings/schema.js';
 import type { ScopedSettings } from '../settings/scoped.js';
-import { settingsFromSource } from '../settings/import/object-settings.js';
+import { settingsFromSource } from '../profiles/object-settings.js';
 import { SETTING_SCOPE, type ScopeUse } from '../settings/scope.js';
 
 /** The plate of these objects over the print's options; `warnings` gets what was ignored or merged. */

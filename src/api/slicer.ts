@@ -9,7 +9,7 @@ import { imageDecodeBytes } from '../shader/image.js';
 import { StrataError } from '../errors.js';
 import { MiB, prepareModel, prepareModelSteps, type PreparedModel } from './prepare-model.js';
 import type { SettingsSource } from '../mesh/types.js';
-import { settingsFromSource } from '../settings/import/object-settings.js';
+import { settingsFromSource } from '../profiles/object-settings.js';
 import { Pacer, paced, wait, type Steps } from '../pipeline/pacer.js';
 import { runPipelineSteps, type Progress, type RunResult, type ThinLoss, type VaseFlat } from '../pipeline/run.js';
 import { VASE_SPECK_MM2 } from '../regions/layer-regions.js';
@@ -265,8 +265,8 @@ export class Slicer {
     Object.assign(print, PLACED);
     // loaded when first used: a slice that saves no project does not load the writer
     const [{ writeProject3mf }, { toSlic3rKeys }] = await Promise.all([
-      import('../mesh/threemf-write.js'),
-      import('../settings/import/to-slic3r.js'),
+      import('../profiles/threemf-write.js'),
+      import('../profiles/to-slic3r.js'),
     ]);
     return writeProject3mf(model.objects, {
       printSettings: print,

@@ -10,7 +10,7 @@ import type { MeshObject, MeshVolume } from '../mesh/types.js';
 import type { ModelInput } from '../mesh/place.js';
 import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
 import type { Config } from '../settings/resolve.js';
-import { importProfile } from '../settings/import/index.js';
+import { importProfile } from '../profiles/index.js';
 import type { SliceOptions } from '../settings/schema.js';
 import { iceslInfillersDirs, shippedInfillersDir } from '../shader/infiller-dirs.js';
 import { FLAG_TO_KEY, type ParsedArgs } from './args.js';

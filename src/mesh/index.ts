@@ -1,4 +1,4 @@
-/** Mesh input: file parsers, three.js and raw-array adapters, preparation and bed placement. */
+/** Mesh input: file parsers, three.js and raw-array adapters, preparation and bed placement (writing a 3MF project with its settings is profiles/threemf-write.ts). */
 export type {
   LayerRangeSettings,
   Mesh,
@@ -13,7 +13,6 @@ export { parseStl } from './stl.js';
 export { parseObj } from './obj.js';
 export { parse3mf } from './threemf.js';
 export { parse3mfProject, type ThreeMfProject } from './threemf-project.js';
-export { writeProject3mf, type WriteProjectOptions } from './threemf-write.js';
 export { fromThree } from './three.js';
 export { fromArrays } from './arrays.js';
 export { prepareMesh, positionBounds, type PreparedMesh } from './prepare.js';

@@ -19,7 +19,7 @@ import { planSequential } from '../plan/sequential-plan.js';
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
 import { layerSparse, layerTopSkin } from '../regions/layer-regions.js';
 import { raftUnder } from '../regions/raft.js';
-import { objectsSupportPass } from '../regions/support/index.js';
+import { objectsSupportPass } from '../support/index.js';
 import type { LayerRegions } from '../regions/types.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { Config } from '../settings/resolve.js';

@@ -22,7 +22,7 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { Slicer } from '#strata/api/slicer.js';
 import { StrataError } from '#strata/errors.js';
-import { importProfile } from '#strata/settings/import/index.js';
+import { importProfile } from '#strata/profiles/index.js';
 import { HEAVY_SHADER } from '../shader/test-heavy-shader.js';
 
 const CLI = fileURLToPath(new URL('../../../dist/cli/main.js', import.meta.url));

@@ -5,7 +5,7 @@ import { StrataError } from '#strata/errors.js';
 import { loadModelFile, toModels } from '#strata/mesh/load.js';
 import { parse3mf } from '#strata/mesh/threemf.js';
 import { parse3mfProject } from '#strata/mesh/threemf-project.js';
-import { writeProject3mf } from '#strata/mesh/threemf-write.js';
+import { writeProject3mf } from '#strata/profiles/threemf-write.js';
 import type { Mesh, MeshObject } from '#strata/mesh/types.js';
 import { weld } from '#strata/mesh/weld.js';
 

@@ -4,7 +4,7 @@ import { area, difference, offset } from '#strata/geometry/clip.js';
 import { rect, square } from '../geometry/test-shapes.js';
 import { resolveConfig } from '#strata/settings/resolve.js';
 import { raftUnder } from '#strata/regions/raft.js';
-import { layersOf } from './support/test-layers.js';
+import { layersOf } from '../support/test-layers.js';
 
 test('a raft: base, interface and surface layers under the first layer and its support, grown by the margin, holes filled', () => {
   const cfg = resolveConfig({

@@ -14,9 +14,9 @@ import {
 } from '../../src/browser.js';
 import { loadModelFile } from '../../src/mesh/load.js';
 import { mergeObjects } from '../../src/mesh/place.js';
-import { writeProject3mf } from '../../src/mesh/threemf-write.js';
-import { settingsFromSource } from '../../src/settings/import/object-settings.js';
-import { toSlic3rKeys } from '../../src/settings/import/to-slic3r.js';
+import { writeProject3mf } from '../../src/profiles/threemf-write.js';
+import { settingsFromSource } from '../../src/profiles/object-settings.js';
+import { toSlic3rKeys } from '../../src/profiles/to-slic3r.js';
 import type { SettingKey } from '../../src/settings/schema.js';
 import { SETTING_SCOPE, type ScopeUse } from '../../src/settings/scope.js';
 import { linearBounds, placeObjects, placementAffine } from '../../src/mesh/placement.js';

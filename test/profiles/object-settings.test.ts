@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { settingsFromSource } from '#strata/settings/import/index.js';
+import { settingsFromSource } from '#strata/profiles/index.js';
 
 test('PrusaSlicer per-object keys: fill_density %, perimeters, unknown keys listed', () => {
   const r = settingsFromSource({

@@ -4,13 +4,13 @@
  * not go (the part grown by the XY gap, less under overhangs), the shadow of the part for build-plate-only
  * support, and the split of a support area into roof, body and floor.
  */
-import { area, boundsOf, difference, intersection, offset, union } from '../../geometry/clip.js';
-import { UM_PER_MM, type Bounds, type ExPolygon } from '../../geometry/types.js';
-import type { Config } from '../../settings/resolve.js';
-import type { LayerRegions, SupportAreas } from '../types.js';
-import { sectionOf } from '../types.js';
-import { evenLayers } from '../../slice/layers.js';
-import { AreaIndex } from '../../geometry/area-index.js';
+import { area, boundsOf, difference, intersection, offset, union } from '../geometry/clip.js';
+import { UM_PER_MM, type Bounds, type ExPolygon } from '../geometry/types.js';
+import type { Config } from '../settings/resolve.js';
+import type { LayerRegions, SupportAreas } from '../regions/types.js';
+import { sectionOf } from '../regions/types.js';
+import { evenLayers } from '../slice/layers.js';
+import { AreaIndex } from '../geometry/area-index.js';
 
 /** Under an overhang, support may come this close to the part, in support line widths ("Z overrides XY"). */
 export const OVERHANG_XY_WIDTHS = 0.5;

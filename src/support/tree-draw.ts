@@ -5,12 +5,12 @@
  * they are, and only the rest (overlapping circles, roofs, circles that may touch the part) go through
  * the clipper.
  */
-import { boundsOf, difference, intersection, offset, union, unionRings } from '../../geometry/clip.js';
-import { hypot, type Bounds, type ExPolygon, type Polygon } from '../../geometry/types.js';
-import { regularPolygon, type RegularPolygon } from '../../geometry/regular-polygon.js';
+import { boundsOf, difference, intersection, offset, union, unionRings } from '../geometry/clip.js';
+import { hypot, type Bounds, type ExPolygon, type Polygon } from '../geometry/types.js';
+import { regularPolygon, type RegularPolygon } from '../geometry/regular-polygon.js';
 import { MIN_SUPPORT_WIDTHS, printable } from './model-layers.js';
-import { AreaIndex } from '../../geometry/area-index.js';
-import { FixedPointGrid } from '../../geometry/point-grid.js';
+import { AreaIndex } from '../geometry/area-index.js';
+import { FixedPointGrid } from '../geometry/point-grid.js';
 import { ITEMS_PER_STEP } from './tree-nodes.js';
 
 /**

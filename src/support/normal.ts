@@ -5,9 +5,9 @@
  * placement a column stops on the part, the bottom Z gap above it; in 'buildPlate' placement a column that
  * would meet the part anywhere below is not printed at all.
  */
-import { closing, difference, offset } from '../../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon } from '../../geometry/types.js';
-import type { SupportAreas } from '../types.js';
+import { closing, difference, offset } from '../geometry/clip.js';
+import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
+import type { SupportAreas } from '../regions/types.js';
 import { printable, type ModelLayers } from './model-layers.js';
 
 /** Columns closer than this (mm) are merged into one support area. */

@@ -53,9 +53,9 @@
  *   lift), its travel ramping and OrcaSlicer's `z_hop_types` (slope, spiral) have no Strata equivalent
  *   and are left unread.
  */
-import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
-import type { Settings } from '../schema.js';
-import { SCHEMA } from '../schema.js';
+import { PATTERN_IDS, type PatternId } from '../infill/types.js';
+import type { Settings } from '../settings/schema.js';
+import { SCHEMA } from '../settings/schema.js';
 import type { ImportContext } from './context.js';
 import { importTemplate, listEntries } from './templates.js';
 import {

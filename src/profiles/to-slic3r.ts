@@ -4,7 +4,7 @@
  * each read back by slic3r-keys.ts as the value it came from; Strata's own copy in the project keeps
  * everything else.
  */
-import type { PatternId } from '../../infill/types.js';
+import type { PatternId } from '../infill/types.js';
 
 const PATTERNS: Readonly<Record<PatternId, string>> = {
   grid: 'grid',

@@ -16,9 +16,9 @@
  * turned into % of `machine_nozzle_size` (Strata's default nozzle when the profile has none). Cura 4
  * has none of these keys.
  */
-import { PATTERN_IDS, type PatternId } from '../../infill/types.js';
-import type { Settings } from '../schema.js';
-import { SCHEMA } from '../schema.js';
+import { PATTERN_IDS, type PatternId } from '../infill/types.js';
+import type { Settings } from '../settings/schema.js';
+import { SCHEMA } from '../settings/schema.js';
 import type { ImportContext } from './context.js';
 import { importTemplate } from './templates.js';
 import { bool, percentOfNozzle, tipSpacingOfDensity } from './values.js';

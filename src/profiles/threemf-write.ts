@@ -13,11 +13,11 @@
 import { strToU8, zipSync } from 'fflate';
 import { StrataError } from '../errors.js';
 import { SCHEMA } from '../settings/schema.js';
-import { settingsFromSource } from '../settings/import/object-settings.js';
-import { toSlic3rKeys } from '../settings/import/to-slic3r.js';
-import { PRUSA_LAYER_RANGES, PRUSA_MODEL_CONFIG, PRUSA_PRINT_CONFIG, STRATA_PROJECT } from './threemf-configs.js';
-import { STRATA_PROJECT_VERSION, type StrataProject, type StrataProjectObject } from './threemf-strata.js';
-import type { Mesh, MeshObject, SettingsSource, VolumeKind } from './types.js';
+import { settingsFromSource } from './object-settings.js';
+import { toSlic3rKeys } from './to-slic3r.js';
+import { PRUSA_LAYER_RANGES, PRUSA_MODEL_CONFIG, PRUSA_PRINT_CONFIG, STRATA_PROJECT } from '../mesh/threemf-configs.js';
+import { STRATA_PROJECT_VERSION, type StrataProject, type StrataProjectObject } from '../mesh/threemf-strata.js';
+import type { Mesh, MeshObject, SettingsSource, VolumeKind } from '../mesh/types.js';
 
 export interface WriteProjectOptions {
   /** The print's settings in Strata's keys (kept in Strata's copy). */

@@ -7,10 +7,10 @@
  * is of the print's nozzle. So the overrides are mapped over `context` (the project's print settings, same
  * slicer), and only the Strata settings that some override went into are kept.
  */
-import { SCHEMA, type SettingKey, type Settings } from '../schema.js';
-import { validateValue } from '../resolve.js';
-import { StrataError } from '../../errors.js';
-import type { SettingsSource } from '../../mesh/types.js';
+import { SCHEMA, type SettingKey, type Settings } from '../settings/schema.js';
+import { validateValue } from '../settings/resolve.js';
+import { StrataError } from '../errors.js';
+import type { SettingsSource } from '../mesh/types.js';
 import { ImportContext, type RejectedValue } from './context.js';
 import { mapCuraKeys } from './cura-keys.js';
 import { mapSlic3rKeys, SLIC3R_METADATA } from './slic3r-keys.js';

@@ -9,8 +9,8 @@
  * Every key that maps onto a Strata setting is converted (units, percentages); what is left is listed
  * in one warning, and values that map but cannot be taken in another. No I/O: callers pass the text.
  */
-import { StrataError } from '../../errors.js';
-import { SCHEMA, type SliceOptions } from '../schema.js';
+import { StrataError } from '../errors.js';
+import { SCHEMA, type SliceOptions } from '../settings/schema.js';
 import { ImportContext, type RejectedValue } from './context.js';
 import { mapCuraKeys } from './cura-keys.js';
 import { parseIni, type IniFile } from './ini.js';

@@ -1,7 +1,7 @@
 /** Wipe, coasting, z-hop and retraction-count settings imported from PrusaSlicer, OrcaSlicer and Cura. */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { importProfile } from '#strata/settings/import/index.js';
+import { importProfile } from '#strata/profiles/index.js';
 
 test('PrusaSlicer wipe: a length from the retraction left after retract_before_wipe; OrcaSlicer wipe_distance as written', () => {
   const prusa = importProfile(

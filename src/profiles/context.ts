@@ -2,9 +2,9 @@
  * What an import collects: the Strata settings a profile's keys map onto (each checked against the
  * schema), the keys read, and the values that map onto a setting but could not be taken (with why).
  */
-import { StrataError } from '../../errors.js';
-import { validateValue } from '../resolve.js';
-import type { SettingKey, Settings } from '../schema.js';
+import { StrataError } from '../errors.js';
+import { validateValue } from '../settings/resolve.js';
+import type { SettingKey, Settings } from '../settings/schema.js';
 
 export interface RejectedValue {
   /** The profile's key(s). */

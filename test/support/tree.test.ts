@@ -2,10 +2,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { area, difference, intersection, offset, union } from '#strata/geometry/clip.js';
 import { UM_PER_MM, type ExPolygon } from '#strata/geometry/types.js';
-import { rect } from '../../geometry/test-shapes.js';
+import { rect } from '../geometry/test-shapes.js';
 import type { LayerRegions } from '#strata/regions/types.js';
 import type { SliceOptions } from '#strata/settings/schema.js';
-import { ModelLayers } from '#strata/regions/support/model-layers.js';
+import { ModelLayers } from '#strata/support/model-layers.js';
 import {
   BOX_ON_POST,
   LEDGE_OVER_STEP,
@@ -19,8 +19,8 @@ import {
   supported,
   type Box,
 } from './test-models.js';
-import { CIRCLE_TOLERANCE_UM, circle } from '#strata/regions/support/tree-draw.js';
-import { BRANCH_SLENDERNESS, planTree, type TreePlan } from '#strata/regions/support/tree.js';
+import { CIRCLE_TOLERANCE_UM, circle } from '#strata/support/tree-draw.js';
+import { BRANCH_SLENDERNESS, planTree, type TreePlan } from '#strata/support/tree.js';
 
 const MODELS: [string, Box[]][] = [
   ['a box on a thin post', BOX_ON_POST],

@@ -9,13 +9,13 @@
  * In 'buildPlate' placement there are none: a column there must reach the bed, which the tree does better.
  * Nor with no roof (supportInterfaceLayers 0), where the tips hold the part themselves, 1.5 mm apart.
  */
-import { area, boundsOf, difference, offset, union } from '../../geometry/clip.js';
-import { UM_PER_MM, type Bounds, type ExPolygon, type Pt } from '../../geometry/types.js';
-import type { SupportAreas } from '../types.js';
+import { area, boundsOf, difference, offset, union } from '../geometry/clip.js';
+import { UM_PER_MM, type Bounds, type ExPolygon, type Pt } from '../geometry/types.js';
+import type { SupportAreas } from '../regions/types.js';
 import { printable, type ModelLayers } from './model-layers.js';
 import { EXPAND_WIDTHS } from './normal.js';
 import { meetsAny } from './tree-draw.js';
-import type { AreaIndex } from '../../geometry/area-index.js';
+import type { AreaIndex } from '../geometry/area-index.js';
 
 /** An overhang piece whose column ends within this height (mm) below it is a pocket. */
 export const POCKET_MAX_MM = 4;

@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { area, intersection } from '#strata/geometry/clip.js';
-import { rect } from '../../geometry/test-shapes.js';
+import { rect } from '../geometry/test-shapes.js';
 import { supportArea, supported, type Box } from './test-models.js';
 
 /**

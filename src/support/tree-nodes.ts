@@ -6,10 +6,10 @@
  * radius, and then goes straight down onto the part); radii grow from the tip to the branch radius, and
  * merged trunks further.
  */
-import type { Found } from '../../geometry/area-index.js';
-import { FixedPointGrid } from '../../geometry/point-grid.js';
+import type { Found } from '../geometry/area-index.js';
+import { FixedPointGrid } from '../geometry/point-grid.js';
 import { classOf, type Blocked, type Keep, type TreeVolumes } from './tree-volumes.js';
-import { hypot } from '../../geometry/types.js';
+import { hypot } from '../geometry/types.js';
 
 /** Neighbours further apart than this are not drawn together, µm. */
 export const ATTRACT_MAX_UM = 10000;

@@ -3,14 +3,14 @@
  * list of boxes, overhangs as the regions stage finds them), the support pass run to its end, and checks of
  * the result. Not exported from the package.
  */
-import { rect } from '../../geometry/test-shapes.js';
+import { rect } from '../geometry/test-shapes.js';
 import { area, difference, intersection, offset, pointInArea, union } from '#strata/geometry/clip.js';
 import { UM_PER_MM, type ExPolygon, type Pt } from '#strata/geometry/types.js';
 import { resolveConfig, type Config } from '#strata/settings/resolve.js';
 import type { SliceOptions } from '#strata/settings/schema.js';
 import type { LayerRegions } from '#strata/regions/types.js';
-import { supportPass } from '#strata/regions/support/index.js';
-import { OVERHANG_XY_WIDTHS } from '#strata/regions/support/model-layers.js';
+import { supportPass } from '#strata/support/index.js';
+import { OVERHANG_XY_WIDTHS } from '#strata/support/model-layers.js';
 import { drain, layersOf } from './test-layers.js';
 
 /** An axis-aligned box, mm: x, y extents and the z range it fills. */

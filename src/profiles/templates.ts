@@ -10,9 +10,9 @@
  * becomes `MK4`, `{filament_notes[0] =~ /HT_MBL10/}` compares the profile's notes. A template naming
  * anything else, or that does not parse, cannot be kept: the caller keeps Strata's and says why.
  */
-import { legacyIsText, parseTemplate, variableUses, type Expr, type VariableUse } from '../../gcode/template-parse.js';
-import { isTemplateVariable } from '../../gcode/template-vars.js';
-import { StrataError } from '../../errors.js';
+import { legacyIsText, parseTemplate, variableUses, type Expr, type VariableUse } from '../gcode/template-parse.js';
+import { isTemplateVariable } from '../gcode/template-vars.js';
+import { StrataError } from '../errors.js';
 import type { ImportContext } from './context.js';
 import { text } from './values.js';
 

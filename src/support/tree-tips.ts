@@ -3,10 +3,10 @@
  * the lattices of neighbouring layers line up rather than crowd), and points along the area's edges, so that
  * the rim of a roof and overhangs too thin for a lattice point are held too.
  */
-import { offset } from '../../geometry/clip.js';
-import { hypot, type ExPolygon, type Pt } from '../../geometry/types.js';
-import { AreaIndex } from '../../geometry/area-index.js';
-import { PointGrid } from '../../geometry/point-grid.js';
+import { offset } from '../geometry/clip.js';
+import { hypot, type ExPolygon, type Pt } from '../geometry/types.js';
+import { AreaIndex } from '../geometry/area-index.js';
+import { PointGrid } from '../geometry/point-grid.js';
 
 /**
  * With no roof (the tips hold the part themselves), edge points closer than this share of the spacing to a

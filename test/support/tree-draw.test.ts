@@ -1,7 +1,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { AreaIndex } from '#strata/geometry/area-index.js';
-import { drawLayer, type Disc } from '#strata/regions/support/tree-draw.js';
+import { drawLayer, type Disc } from '#strata/support/tree-draw.js';
 
 function draw(discs: Disc[]) {
   const steps = drawLayer({

@@ -14,9 +14,9 @@
  * Both are asked as distances from two point indexes a layer, so no area is made per radius: a branch is
  * checked against the smallest class at least as wide as it is.
  */
-import { offset, union } from '../../geometry/clip.js';
-import type { ExPolygon } from '../../geometry/types.js';
-import { AreaIndex, type Found } from '../../geometry/area-index.js';
+import { offset, union } from '../geometry/clip.js';
+import type { ExPolygon } from '../geometry/types.js';
+import { AreaIndex, type Found } from '../geometry/area-index.js';
 import type { ModelLayers } from './model-layers.js';
 
 /**

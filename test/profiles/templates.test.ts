@@ -8,8 +8,8 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { Slicer } from '#strata/api/slicer.js';
 import type { SliceOptions } from '#strata/settings/schema.js';
-import { importProfile } from '#strata/settings/import/index.js';
-import { keepTemplate, listEntries } from '#strata/settings/import/templates.js';
+import { importProfile } from '#strata/profiles/index.js';
+import { keepTemplate, listEntries } from '#strata/profiles/templates.js';
 
 /** A 20 × 20 × 4 mm block as raw arrays. */
 const BLOCK = {

@@ -3,8 +3,8 @@
  * in each layer's support areas, normal or tree. With several objects each object's support is its own,
  * made with the object's settings, so that it prints (and is cancelled) with the object.
  */
-import type { Config } from '../../settings/resolve.js';
-import type { LayerRegions, SupportAreas } from '../types.js';
+import type { Config } from '../settings/resolve.js';
+import type { LayerRegions, SupportAreas } from '../regions/types.js';
 import { ModelLayers } from './model-layers.js';
 import { normalSupport } from './normal.js';
 import { treeSupport } from './tree.js';

@@ -14,13 +14,13 @@
  * 3. from the bed up (tree-draw.ts), each layer's branch cross-sections and roof, the roof only where what is
  *    below holds it, off the part, split into body, roof and floor.
  */
-import { area, boundsOf, intersection, offset, union } from '../../geometry/clip.js';
-import { hypot, UM_PER_MM, type ExPolygon, type Pt } from '../../geometry/types.js';
-import type { SupportAreas } from '../types.js';
+import { area, boundsOf, intersection, offset, union } from '../geometry/clip.js';
+import { hypot, UM_PER_MM, type ExPolygon, type Pt } from '../geometry/types.js';
+import type { SupportAreas } from '../regions/types.js';
 import type { ModelLayers } from './model-layers.js';
-import { PointGrid } from '../../geometry/point-grid.js';
+import { PointGrid } from '../geometry/point-grid.js';
 import { circle, cutAway, drawLayer, meetsAny, type Disc } from './tree-draw.js';
-import { VERTEX_ROUNDING_UM, type RegularPolygon } from '../../geometry/regular-polygon.js';
+import { VERTEX_ROUNDING_UM, type RegularPolygon } from '../geometry/regular-polygon.js';
 import { descend, ITEMS_PER_STEP, type TreeNode, type TreeRules } from './tree-nodes.js';
 import { TIP_MIN_GAP_SHARE, tipCandidates } from './tree-tips.js';
 import { findPockets, pocketAreas } from './tree-pockets.js';

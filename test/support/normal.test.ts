@@ -1,10 +1,10 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { area, difference, intersection, offset, union } from '#strata/geometry/clip.js';
-import { disc, rect, square } from '../../geometry/test-shapes.js';
+import { disc, rect, square } from '../geometry/test-shapes.js';
 import type { ExPolygon } from '#strata/geometry/types.js';
 import { resolveConfig } from '#strata/settings/resolve.js';
-import { supportPass } from '#strata/regions/support/index.js';
+import { supportPass } from '#strata/support/index.js';
 import { drain, layersOf } from './test-layers.js';
 
 const all = (l: { support: { body: ExPolygon[]; roof: ExPolygon[]; floor: ExPolygon[] } | null }) =>
