@@ -4,6 +4,12 @@
  * asks for an element's text (textContent).
  * It does not build a tree or allocate per element: callers compare names and read attribute
  * values (numbers straight from the bytes) through the scanner. DTDs are refused (no entity expansion).
+ *
+ * Why not an XML library: a 3MF mesh is millions of <vertex>/<triangle> elements, and the parsers that
+ * build objects or strings per element (fast-xml-parser, the DOMParser) take several times the time and
+ * memory; the streaming ones (saxes, sax) still decode every attribute to a string. This scanner reads
+ * numbers from the bytes, refuses DTDs outright and bounds its work by the input's length: its limits
+ * are why it stays.
  */
 import { StrataError } from '../errors.js';
 import { printable } from './printable.js';

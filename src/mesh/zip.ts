@@ -6,6 +6,11 @@
  * unpacked-to-packed ratio stays believable. Inflation streams in small slices and stops as soon as
  * an entry produces more than it declared, so a lying or hostile archive ("zip bomb") costs at most
  * a few slices of work and memory before it is refused. No I/O here.
+ *
+ * Why not a zip library: fflate does the inflating (above), but its archive readers (unzip, Unzip) unpack
+ * whole entries or trust the declared sizes, and none of the small, well-kept zip readers for browsers
+ * enforces a budget and a packing ratio per entry. Those limits are the point of this reader, so the
+ * directory walk (about a hundred lines) stays here.
  */
 import { Inflate } from 'fflate';
 import { StrataError } from '../errors.js';
