@@ -64,7 +64,7 @@ export function trapezoidSeconds(length: number, v0: number, vc: number, v1: num
 }
 
 /** Marlin's limit_value_by_axis_maximum: `value` cut so that no axis of `unit` exceeds its maximum. */
-function limitByAxes(value: number, unit: readonly number[], max: readonly number[]): number {
+function limitByAxes(value: number, unit: Float64Array, max: readonly number[]): number {
   for (let i = 0; i < 4; i++) {
     const c = unit[i] < 0 ? -unit[i] : unit[i];
     if (c > 0 && value * c > max[i]) value = max[i] / c;
@@ -87,10 +87,15 @@ export class MarlinPlanner {
   #accel: number[] = [];
   #maxEntry2: number[] = [];
   #tags: number[] = [];
-  // the previous block, for junctions
-  #prevUnit = [0, 0, 0, 0];
-  #prevSpeed = [0, 0, 0, 0];
+  // the previous block, for junctions; and this block's (swapped in once it is queued): no allocation per move
+  #prevUnit = new Float64Array(4);
+  #prevSpeed = new Float64Array(4);
   #prevNominal = 0;
+  #unit = new Float64Array(4);
+  #current = new Float64Array(4);
+  readonly #d = new Float64Array(4);
+  readonly #j = new Float64Array(4);
+  readonly #diff = new Float64Array(4);
 
   constructor(limits: MarlinLimits) {
     this.#L = limits;
@@ -103,7 +108,11 @@ export class MarlinPlanner {
     const eOnly = xyz < 1e-6;
     const length = eOnly ? Math.abs(de) : xyz;
     if (!(length > 1e-6) || !(speed > 0)) return;
-    const d = [dx, dy, dz, de];
+    const d = this.#d;
+    d[0] = dx;
+    d[1] = dy;
+    d[2] = dz;
+    d[3] = de;
     // nominal speed, cut by the axes' max feed rates
     const inv = speed / length;
     let factor = 1;
@@ -112,7 +121,8 @@ export class MarlinPlanner {
       if (cs > L.maxFeedrate[i] && L.maxFeedrate[i] / cs < factor) factor = L.maxFeedrate[i] / cs;
     }
     const nominal = speed * factor;
-    const current = [d[0] * inv * factor, d[1] * inv * factor, d[2] * inv * factor, d[3] * inv * factor];
+    const current = this.#current;
+    for (let i = 0; i < 4; i++) current[i] = d[i] * inv * factor;
     // acceleration, cut by the axes' max accelerations
     let accel: number;
     if (eOnly) accel = L.retractAccel;
@@ -127,18 +137,27 @@ export class MarlinPlanner {
     let v2: number;
     if (L.jerk === null) {
       // junction deviation
-      let unit: number[];
+      const unit = this.#unit;
       if (de !== 0) {
         const n = Math.sqrt(dx * dx + dy * dy + dz * dz + de * de);
-        unit = [dx / n, dy / n, dz / n, de / n];
-      } else unit = [dx / xyz, dy / xyz, dz / xyz, 0];
+        unit[0] = dx / n;
+        unit[1] = dy / n;
+        unit[2] = dz / n;
+        unit[3] = de / n;
+      } else {
+        unit[0] = dx / xyz;
+        unit[1] = dy / xyz;
+        unit[2] = dz / xyz;
+        unit[3] = 0;
+      }
       if (first) v2 = MIN_SPEED2;
       else {
         const p = this.#prevUnit;
         let cos = -(p[0] * unit[0] + p[1] * unit[1] + p[2] * unit[2] + p[3] * unit[3]);
         if (cos > 0.999999) v2 = MIN_SPEED2;
         else {
-          const j = [unit[0] - p[0], unit[1] - p[1], unit[2] - p[2], unit[3] - p[3]];
+          const j = this.#j;
+          for (let i = 0; i < 4; i++) j[i] = unit[i] - p[i];
           const jn = Math.sqrt(j[0] * j[0] + j[1] * j[1] + j[2] * j[2] + j[3] * j[3]);
           for (let i = 0; i < 4; i++) j[i] /= jn;
           const ja = limitByAxes(accel, j, L.maxAccel);
@@ -154,11 +173,13 @@ export class MarlinPlanner {
         const slower = Math.min(nominal, this.#prevNominal);
         if (slower * slower < v2) v2 = slower * slower;
       }
+      this.#unit = this.#prevUnit;
       this.#prevUnit = unit;
     } else {
       // classic jerk
       const jerk = L.jerk;
-      const diff = current.slice();
+      const diff = this.#diff;
+      diff.set(current);
       let vj: number;
       if (first) vj = nominal;
       else if (nominal < this.#prevNominal) {
@@ -185,6 +206,7 @@ export class MarlinPlanner {
     this.#accel.push(accel);
     this.#maxEntry2.push(v2);
     this.#tags.push(this.tag);
+    this.#current = this.#prevSpeed;
     this.#prevSpeed = current;
     this.#prevNominal = nominal;
   }
