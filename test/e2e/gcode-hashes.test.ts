@@ -13,15 +13,16 @@ import { createHash } from 'node:crypto';
 import { readFileSync, writeFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { Slicer } from '#strata/api/slicer.js';
-import type { SliceOptions } from '#strata/settings/schema.js';
+import type { CustomInfillSpec, SliceOptions } from '#strata/index.js';
 import { readModel, skipWithoutModels } from './models.js';
 
 const skip = skipWithoutModels();
+const INFILLERS = fileURLToPath(new URL('../../../infillers/', import.meta.url));
 const HASH_FILE = fileURLToPath(new URL('../../../test/e2e/gcode-hashes.json', import.meta.url));
 const update = process.env.STRATA_UPDATE_HASHES === '1';
 
 /** Each case: a name, the models on the plate, the settings. */
-const CASES: Array<[string, string[], SliceOptions]> = [
+const CASES: Array<[string, string[], SliceOptions & { customInfill?: CustomInfillSpec }]> = [
   ['CalibrationCube', ['CalibrationCube.stl'], {}],
   ['HollowCalibrationCube', ['HollowCalibrationCube.stl'], {}],
   ['HoleTest', ['HoleTest.stl'], {}],
@@ -42,6 +43,24 @@ const CASES: Array<[string, string[], SliceOptions]> = [
     { infillPattern: 'gyroid', adhesionType: 'brim', wallGenerator: 'classic' },
   ],
   ['two objects', ['BridgeTest.stl', 'CalibrationCube.stl'], { supportEnabled: true, labelObjects: 'firmware' }],
+  [
+    'CalibrationCube voronoi-foam shader',
+    ['CalibrationCube.stl'],
+    {
+      infillDensity: 15,
+      customInfill: { name: 'voronoi-foam', shader: readFileSync(`${INFILLERS}voronoi-foam/shader.glsl`, 'utf8') },
+    },
+  ],
+  [
+    'CalibrationCube image cells',
+    ['CalibrationCube.stl'],
+    {
+      customInfill: {
+        name: 'example-image',
+        image: new Uint8Array(readFileSync(`${INFILLERS}example-image/cells.png`)),
+      },
+    },
+  ],
 ];
 
 function sha256(text: string): string {
