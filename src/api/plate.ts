@@ -1,6 +1,6 @@
 /**
  * From the prepared model's objects to the plate the pipeline slices: each object's, volume's and layer
- * range's settings read into Strata's keys (another slicer's project keys mapped by settings/import over
+ * range's settings read into Strata's keys (another slicer's project keys mapped by profiles/ over
  * the project's print settings; those we do not use, and those that cannot vary there in Strata, named in
  * warnings), then resolved with their scopes into deduplicated configs. The caller's own settings (format
  * 'strata') that cannot vary where they are given are refused instead, one clear error each.

@@ -125,7 +125,7 @@ export class InputReader {
     return out;
   }
 
-  /** Settings from a Strata JSON file or another slicer's profile (settings/import); what is left out is in `warnings`. */
+  /** Settings from a Strata JSON file or another slicer's profile (profiles/); what is left out is in `warnings`. */
   async config(path: string): Promise<{ settings: Record<string, unknown>; warnings: string[] }> {
     const profile = importProfile(await this.text(path, 'config file', 'config'), path);
     return { settings: profile.settings, warnings: profile.warnings };

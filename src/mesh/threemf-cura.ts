@@ -182,7 +182,7 @@ export function curaProjectSettings(
 
 /**
  * Cura's container files: `[section]` headers, `key = value` lines, indented lines continuing a value (a
- * start G-code's lines, which settings/import/ini.ts would take for keys of their own).
+ * start G-code's lines, which profiles/ini.ts would take for keys of their own).
  */
 function parseCuraIni(text: string): Map<string, Map<string, string>> {
   const out = new Map<string, Map<string, string>>();

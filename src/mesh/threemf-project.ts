@@ -4,7 +4,7 @@
  * its own settings and its layer ranges; and the project's print settings. Read from, in this order:
  * Strata's own data over PrusaSlicer's layout (threemf-strata.ts), PrusaSlicer (and SuperSlicer),
  * OrcaSlicer / Bambu Studio (threemf-slic3r.ts), Cura (threemf-cura.ts); any other 3MF is plain objects.
- * Settings stay raw, in the writing slicer's keys (settings/import maps them). Config parts are read through
+ * Settings stay raw, in the writing slicer's keys (profiles/ maps them). Config parts are read through
  * the same unpack budget as the model, each within MAX_CONFIG_BYTES.
  */
 import { StrataError } from '../errors.js';

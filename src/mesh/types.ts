@@ -17,7 +17,7 @@ export interface RawMeshArrays {
 /**
  * Settings as a file or a caller gave them, before they are checked against the schema: Strata's own keys
  * and values, or another slicer's (PrusaSlicer/OrcaSlicer config keys, Cura setting keys, values as text),
- * which settings/import maps onto ours.
+ * which profiles/ maps onto ours.
  */
 export interface SettingsSource {
   format: 'strata' | 'prusaslicer' | 'orcaslicer' | 'cura';

@@ -5,7 +5,7 @@
  *   item each and no transform (the meshes are already where they stand on the bed);
  * - `Metadata/Slic3r_PE_model.config`: each object's name and settings, its volumes as inclusive triangle
  *   ranges with their type (ModelPart for the mesh) and settings, in PrusaSlicer's keys where Strata's have
- *   one (settings/import/to-slic3r.ts; raw PrusaSlicer settings are written as they are);
+ *   one (profiles/to-slic3r.ts; raw PrusaSlicer settings are written as they are);
  * - `Metadata/Prusa_Slicer_layer_config_ranges.xml` when an object has layer ranges;
  * - `Metadata/Slic3r_PE.config` when PrusaSlicer print settings are given;
  * - `Metadata/Strata_project.json`: every setting in Strata's keys.
