@@ -7,6 +7,7 @@
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import { pointInArea } from '../geometry/clip.js';
 import { orderNearest } from '../geometry/nearest-order.js';
+import { shortenTour, type TourStop } from '../geometry/tour.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
 import { combRoute, insideRings, makeCombArea, pathLength, type CombArea } from './comb.js';
@@ -331,70 +332,143 @@ function printLoop(ctx: Ctx, entry: PathEntry, style: EntryStyle, i: number, s: 
   for (const r of runs) extrudeFlagged(ctx, style, r);
 }
 
-/** Closed loops nearest-first, each starting at its seam (by the seam setting) or wherever is nearest. */
-function printLoops(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
-  const loops = entry.paths;
-  if (loops.length === 0) return;
-  const mode = entry.style.seam === 'nearest' ? 'nearest' : ctx.cfg.seamPosition;
-  if (loops.length === 1) {
-    // one loop (a tree branch's wall, most of a layer's support): no order to find
-    const loop = loops[0];
-    const s =
-      mode === 'nearest'
-        ? chooseSeam(loop, 'nearest', ctx.at, 0, 0, 0)
-        : chooseSeam(loop, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo);
-    printLoop(ctx, entry, style, 0, s);
-    ctx.loopNo += 1;
-    return;
-  }
-  // For ordering purposes a loop is entered at its seam (or, for 'nearest', at any vertex: use the first).
-  const seams = loops.map((l, i) =>
-    mode === 'nearest' ? -1 : chooseSeam(l, mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo + i),
-  );
-  const order = orderNearest(
-    loops.length,
-    (i) => [seams[i] >= 0 ? loops[i][seams[i]] : loops[i][0]],
-    (i) => (seams[i] >= 0 ? loops[i][seams[i]] : loops[i][0]),
-    ctx.at,
-  );
-  for (let k = 0; k < order.length; k++) {
-    const i = order[k][0];
-    const s = seams[i] >= 0 ? seams[i] : chooseSeam(loops[i], 'nearest', ctx.at, 0, 0, 0);
-    printLoop(ctx, entry, style, i, s);
-  }
-  ctx.loopNo += loops.length;
+/** A path of a group as the planner prints it: entry e's path i, entered at its candidate c (see `candidates`). */
+type Visit = [e: number, i: number, c: number];
+
+/**
+ * Entries printed as one tour (a block of the group): infill and skin lines with the skin's gap fill loops
+ * beside them (see `mixable`), or one entry of another role (a wall's loops, skin walls, support lines), or an
+ * entry whose paths keep their given order (PathEntry.ordered).
+ */
+interface Block {
+  entries: readonly PathEntry[];
+  /** Each entry's loops' seams (vertex), or -1 where the loop is entered at whichever vertex is nearest. */
+  seams: Int32Array[];
+  /** The paths in print order. */
+  visits: Visit[];
+  /** Where the nearest-first visits were found from. */
+  from: Pt | null;
+  /** The paths keep the order the entry gives them (lines from their first point). */
+  ordered: boolean;
+  /**
+   * The tour is shortened (mixable fill inside the innermost wall, where a travel goes straight; not walls,
+   * whose travels comb round holes the straight distance does not see).
+   */
+  shorten: boolean;
 }
 
-/** Open lines nearest-first, each from whichever end is nearer. */
-function printLines(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
-  const lines = entry.paths;
-  if (lines.length === 1) {
-    // one line (a tree branch's chord): from its nearer end, the first on a tie
-    const line = lines[0];
-    const a = line[0],
-      b = line[line.length - 1];
-    const ax = a.x - ctx.at.x,
-      ay = a.y - ctx.at.y,
-      bx = b.x - ctx.at.x,
-      by = b.y - ctx.at.y;
-    extrudeFlagged(ctx, style, lineRun(entry, 0, bx * bx + by * by < ax * ax + ay * ay));
-    return;
-  }
-  const order = orderNearest(
-    lines.length,
-    (i) => [lines[i][0], lines[i][lines[i].length - 1]],
-    (i, s) => (s === 0 ? lines[i][lines[i].length - 1] : lines[i][0]),
-    ctx.at,
-  );
-  for (let k = 0; k < order.length; k++) extrudeFlagged(ctx, style, lineRun(entry, order[k][0], order[k][1] !== 0));
+/** Vertices of a loop entered anywhere that the ordering considers (evenly spread; all of a small loop). */
+const LOOP_ENTRIES = 16;
+
+/** Where a block's path can be entered: a line at either end, a loop at its seam or (no seam) at some of its vertices. */
+function candidates(block: Block, e: number, i: number): readonly Pt[] {
+  const path = block.entries[e].paths[i];
+  if (!block.entries[e].closed) return [path[0], path[path.length - 1]];
+  const s = block.seams[e][i];
+  return s >= 0 ? [path[s]] : spreadPoints(path, LOOP_ENTRIES);
 }
 
-/** Paths in the order the entry gives them (PathEntry.ordered): lines from their first point, loops from their nearest point. */
-function printInOrder(ctx: Ctx, entry: PathEntry, style: EntryStyle): void {
-  for (let i = 0; i < entry.paths.length; i++) {
-    if (entry.closed)
-      extrudeFlagged(ctx, style, loopRun(entry, i, chooseSeam(entry.paths[i], 'nearest', ctx.at, 0, 0, 0)));
-    else extrudeFlagged(ctx, style, lineRun(entry, i, false));
+/** Where a visit enters its path and where it leaves it (a loop where it was entered). */
+function visitStop(block: Block, [e, i, c]: Visit): TourStop {
+  const path = block.entries[e].paths[i];
+  if (block.entries[e].closed) {
+    const at = candidates(block, e, i)[c];
+    return { in: at, out: at };
+  }
+  const a = path[0],
+    b = path[path.length - 1];
+  return c === 0 ? { in: a, out: b } : { in: b, out: a };
+}
+
+/**
+ * The group's entries as blocks: consecutive mixable entries one block, every other entry a block of its own;
+ * each loop's seam chosen by the seam setting (nearest: where the nozzle comes to it).
+ */
+function groupBlocks(ctx: Ctx, entries: readonly PathEntry[]): Block[] {
+  const blocks: Block[] = [];
+  for (let k = 0; k < entries.length; k++) {
+    let last = k;
+    while (mixable(entries[k]) && last + 1 < entries.length && mixable(entries[last + 1])) last++;
+    const members = entries.slice(k, last + 1).filter((e) => e.paths.length > 0);
+    k = last;
+    if (members.length === 0) continue;
+    const seams = members.map((entry) => {
+      const s = new Int32Array(entry.closed ? entry.paths.length : 0).fill(-1);
+      const mode = entry.style.seam === 'nearest' ? 'nearest' : ctx.cfg.seamPosition;
+      if (entry.closed && !entry.ordered && mode !== 'nearest')
+        for (let i = 0; i < s.length; i++)
+          s[i] = chooseSeam(entry.paths[i], mode, ctx.at, ctx.cfg.randomSeed, ctx.layer.index, ctx.loopNo + i);
+      if (entry.closed && !entry.ordered) ctx.loopNo += s.length;
+      return s;
+    });
+    const ordered = members.length === 1 && !!members[0].ordered;
+    blocks.push({ entries: members, seams, visits: [], from: null, ordered, shorten: !ordered && mixable(members[0]) });
+  }
+  return blocks;
+}
+
+/** A block's paths nearest-first from `from`: lines from whichever end is nearer, loops from their nearest candidate. */
+function nearestVisits(block: Block, from: Pt): Visit[] {
+  const items: Array<[number, number]> = [];
+  for (let e = 0; e < block.entries.length; e++)
+    for (let i = 0; i < block.entries[e].paths.length; i++) items.push([e, i]);
+  if (block.ordered) return items.map(([e, i]) => [e, i, 0]);
+  const order = orderNearest(
+    items.length,
+    (n) => candidates(block, items[n][0], items[n][1]),
+    (n, c) => visitStop(block, [items[n][0], items[n][1], c]).out,
+    from,
+  );
+  return order.map(([n, c]) => [items[n][0], items[n][1], c]);
+}
+
+/**
+ * The order of a group's blocks' paths: nearest-first, block after block; then, block after block again, each
+ * fill block nearest-first from where the block before it now ends, its tour shortened (geometry/tour.ts) on
+ * to where the block after it starts (after the last block: `to`, where the nozzle goes next), so that it also
+ * ends near where the next begins.
+ */
+function orderBlocks(blocks: readonly Block[], from: Pt, to: Pt | null): void {
+  let at = from;
+  for (const b of blocks) {
+    b.visits = nearestVisits(b, at);
+    b.from = at;
+    at = visitStop(b, b.visits[b.visits.length - 1]).out;
+  }
+  at = from;
+  for (let k = 0; k < blocks.length; k++) {
+    const b = blocks[k];
+    const next = k + 1 < blocks.length ? visitStop(blocks[k + 1], blocks[k + 1].visits[0]).in : to;
+    if (b.from !== at) {
+      b.visits = nearestVisits(b, at);
+      b.from = at;
+    }
+    if (b.shorten && (b.visits.length > 1 || next)) {
+      const stops = b.visits.map((v) => visitStop(b, v));
+      const t = shortenTour(stops, at, next);
+      const visits: Visit[] = new Array(stops.length);
+      for (let q = 0; q < stops.length; q++) {
+        const [e, i, c] = b.visits[t.order[q]];
+        // a line turned round is entered at its other end; a loop is left where it was entered either way
+        visits[q] = [e, i, t.reversed[q] && !b.entries[e].closed ? 1 - c : c];
+      }
+      b.visits = visits;
+    }
+    at = visitStop(b, b.visits[b.visits.length - 1]).out;
+  }
+}
+
+/** A block's paths in their order: loops from their seam (or the vertex nearest the nozzle), lines from the end visited. */
+function printBlock(ctx: Ctx, block: Block): void {
+  for (const [e, i, c] of block.visits) {
+    const entry = block.entries[e];
+    const style = layerStyle(ctx, entry.style);
+    if (entry.closed) {
+      const s = block.seams[e][i];
+      const start = s >= 0 ? s : chooseSeam(entry.paths[i], 'nearest', ctx.at, 0, 0, 0);
+      if (entry.ordered) extrudeFlagged(ctx, style, loopRun(entry, i, start));
+      else printLoop(ctx, entry, style, i, start);
+    } else extrudeFlagged(ctx, style, lineRun(entry, i, c !== 0));
   }
 }
 
@@ -404,14 +478,16 @@ function comb(group: PathGroup): CombArea | null {
   return makeCombArea(group.area, boundary);
 }
 
-function printGroup(ctx: Ctx, group: PathGroup): void {
+/** Print a group, its last path ending near `next` (where the nozzle goes after it) when given. */
+function printGroup(ctx: Ctx, group: PathGroup, next: Pt | null): void {
   ctx.comb = null; // arriving from elsewhere: the first travel leaves the previous group
   ctx.combArea = undefined;
   ctx.innerArea = undefined;
   ctx.kind = group.kind;
   ctx.object = group.object;
   ctx.groupArea = group.area ?? null;
-  const entries = sortEntries(group.entries, ctx.cfg.wallOrder);
+  const blocks = groupBlocks(ctx, sortEntries(group.entries, ctx.cfg.wallOrder));
+  orderBlocks(blocks, ctx.at, next);
   let combed = false;
   // without a retraction on the layer change, a layer that starts over the island the nozzle is already
   // above travels into it as within it (retracting only as such a travel would)
@@ -425,27 +501,15 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
     ctx.comb = group;
     combed = true;
   }
-  for (let k = 0; k < entries.length; k++) {
-    const entry = entries[k];
+  for (const block of blocks) {
     // walls: once the first wall is printed the nozzle is inside the island, and later travels comb;
     // any other entry starts combed
-    if (!combed && entry.role !== 'wall') {
+    if (!combed && block.entries[0].role !== 'wall') {
       ctx.comb = group;
       combed = true;
     }
-    // skin lines and the skin's gap fill loops beside them: one tour, each gap loop printed as the nozzle passes
-    let mixed = k;
-    while (mixed + 1 < entries.length && mixable(entries[mixed + 1])) mixed++;
-    if (mixable(entry) && mixed > k) {
-      printMixed(ctx, entries.slice(k, mixed + 1));
-      k = mixed;
-      continue;
-    }
-    const style = layerStyle(ctx, entry.style);
-    if (entry.ordered) printInOrder(ctx, entry, style);
-    else if (entry.closed) printLoops(ctx, entry, style);
-    else printLines(ctx, entry, style);
-    if (!combed && entry.paths.length) {
+    printBlock(ctx, block);
+    if (!combed) {
       ctx.comb = group;
       combed = true;
     }
@@ -454,48 +518,13 @@ function printGroup(ctx: Ctx, group: PathGroup): void {
   ctx.object = undefined;
 }
 
-/** Skin lines in no fixed order, and the skin's gap fill loops (entered anywhere): printed as one tour. */
+/** Infill and skin lines in no fixed order, and the skin's gap fill loops (entered anywhere): printed as one tour. */
 function mixable(entry: PathEntry): boolean {
   return (
     !entry.ordered &&
     (((entry.role === 'skin' || entry.role === 'infill') && !entry.closed) ||
       (entry.role === 'skin-gap' && entry.closed && entry.style.seam === 'nearest'))
   );
-}
-
-/** Vertices of a loop entered anywhere that the ordering considers (evenly spread; all of a small loop). */
-const LOOP_ENTRIES = 16;
-
-/**
- * Several entries' paths nearest-first as one tour, each with its own entry's style: lines from whichever
- * end is nearer, loops from their vertex nearest the nozzle.
- */
-function printMixed(ctx: Ctx, entries: readonly PathEntry[]): void {
-  const items: Array<[number, number]> = [];
-  for (let e = 0; e < entries.length; e++) for (let i = 0; i < entries[e].paths.length; i++) items.push([e, i]);
-  const candidates = (n: number): readonly Pt[] => {
-    const [e, i] = items[n];
-    const path = entries[e].paths[i];
-    if (!entries[e].closed) return [path[0], path[path.length - 1]];
-    return spreadPoints(path, LOOP_ENTRIES);
-  };
-  const order = orderNearest(
-    items.length,
-    candidates,
-    (n, c) => {
-      const [e, i] = items[n];
-      const path = entries[e].paths[i];
-      return entries[e].closed ? candidates(n)[c] : c === 0 ? path[path.length - 1] : path[0];
-    },
-    ctx.at,
-  );
-  for (const [n, c] of order) {
-    const [e, i] = items[n];
-    const entry = entries[e];
-    const style = layerStyle(ctx, entry.style);
-    if (entry.closed) printLoop(ctx, entry, style, i, chooseSeam(entry.paths[i], 'nearest', ctx.at, 0, 0, 0));
-    else extrudeFlagged(ctx, style, lineRun(entry, i, c !== 0));
-  }
 }
 
 /**
@@ -649,7 +678,12 @@ export function planLayer(
         (i, k) => entries[i][k],
         ctx.at,
       );
-      for (let k = 0; k < order.length; k++) printGroup(ctx, groups[order[k][0]]);
+      for (let k = 0; k < order.length; k++) {
+        // each group ends near the next one's entry; the layer's last island near its own (the next layer's
+        // walls start above it)
+        const [g, c] = k + 1 < order.length ? order[k + 1] : order[k];
+        printGroup(ctx, groups[order[k][0]], k + 1 < order.length || kind === 'island' ? entries[g][c] : null);
+      }
     }
   }
   state.at = ctx.at;
