@@ -336,9 +336,9 @@ function printLoop(ctx: Ctx, entry: PathEntry, style: EntryStyle, i: number, s: 
 type Visit = [e: number, i: number, c: number];
 
 /**
- * Entries printed as one tour (a block of the group): infill and skin lines with the skin's gap fill loops
- * beside them (see `mixable`), or one entry of another role (a wall's loops, skin walls, support lines), or an
- * entry whose paths keep their given order (PathEntry.ordered).
+ * Entries printed as one tour (a block of the group): the fill inside the walls (see `mixable`), or one entry
+ * of another role (a wall's loops, support lines), or an entry whose paths keep their given order
+ * (PathEntry.ordered).
  */
 interface Block {
   entries: readonly PathEntry[];
@@ -351,8 +351,8 @@ interface Block {
   /** The paths keep the order the entry gives them (lines from their first point). */
   ordered: boolean;
   /**
-   * The tour is shortened (mixable fill inside the innermost wall, where a travel goes straight; not walls,
-   * whose travels comb round holes the straight distance does not see).
+   * The tour is shortened (fill inside the innermost wall, where a travel goes straight; not walls, whose
+   * travels comb round holes the straight distance does not see).
    */
   shorten: boolean;
 }
@@ -381,14 +381,22 @@ function visitStop(block: Block, [e, i, c]: Visit): TourStop {
 }
 
 /**
- * The group's entries as blocks: consecutive mixable entries one block, every other entry a block of its own;
- * each loop's seam chosen by the seam setting (nearest: where the nozzle comes to it).
+ * The group's entries as blocks: consecutive mixable entries one block (but skin lines a block after their
+ * skin walls), every other entry a block of its own; each loop's seam chosen by the seam setting (nearest:
+ * where the nozzle comes to it).
  */
 function groupBlocks(ctx: Ctx, entries: readonly PathEntry[]): Block[] {
   const blocks: Block[] = [];
   for (let k = 0; k < entries.length; k++) {
     let last = k;
-    while (mixable(entries[k]) && last + 1 < entries.length && mixable(entries[last + 1])) last++;
+    let walled = entries[k].role === 'skin-wall';
+    while (mixable(entries[k]) && last + 1 < entries.length && mixable(entries[last + 1])) {
+      const next = entries[last + 1];
+      // skin lines after their skin walls
+      if (walled && next.role === 'skin' && next.paths.length > 0) break;
+      if (next.role === 'skin-wall') walled = true;
+      last++;
+    }
     const members = entries.slice(k, last + 1).filter((e) => e.paths.length > 0);
     k = last;
     if (members.length === 0) continue;
@@ -518,12 +526,16 @@ function printGroup(ctx: Ctx, group: PathGroup, next: Pt | null): void {
   ctx.object = undefined;
 }
 
-/** Infill and skin lines in no fixed order, and the skin's gap fill loops (entered anywhere): printed as one tour. */
+/**
+ * The fill inside the walls, printed as one tour: infill and skin lines in no fixed order, the skin's walls
+ * (from their seams) and its gap fill loops (entered anywhere).
+ */
 function mixable(entry: PathEntry): boolean {
   return (
     !entry.ordered &&
     (((entry.role === 'skin' || entry.role === 'infill') && !entry.closed) ||
-      (entry.role === 'skin-gap' && entry.closed && entry.style.seam === 'nearest'))
+      (entry.role === 'skin-gap' && entry.closed && entry.style.seam === 'nearest') ||
+      (entry.role === 'skin-wall' && entry.closed))
   );
 }
 
