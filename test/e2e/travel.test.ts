@@ -6,7 +6,8 @@
  *
  * PrusaSlicer 2.5.0 (`prusa-slicer --export-gcode` with those settings; retractions = G1 moves with E < 0
  * and no XY; travel = XY length of moves without extrusion): HoleTest 1645 and 24.6 m, spot 2067 and 25.1 m,
- * 3DBenchy 1774 and 22.8 m. Travel is held to 1.1 × PrusaSlicer's, except spot's (1.15 ×: not yet there).
+ * 3DBenchy 1774 and 22.8 m. Travel is held to 1.1 × PrusaSlicer's (with the fill tours shortened and ending
+ * near where the nozzle goes next, Strata travels 7.2, 23.7 and 20.0 m here: 0.29, 0.94 and 0.88 × its).
  */
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
@@ -90,7 +91,7 @@ function travels(
 
 for (const [name, prusaRetractions, prusaTravelM, travelRatio] of [
   ['HoleTest.stl', 1645, 24.6, 1.1],
-  ['spot.stl', 2067, 25.1, 1.15],
+  ['spot.stl', 2067, 25.1, 1.1],
   ['3DBenchy.stl.gz', 1774, 22.8, 1.1],
 ] as const) {
   test(`${name}: fewer retractions than PrusaSlicer (${prusaRetractions}), travel within ${travelRatio} × its ${prusaTravelM} m, and no unretracted travel outside the part`, {
