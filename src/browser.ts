@@ -7,3 +7,6 @@
  * worker pool: it is loaded as `new URL('./layer-worker.js', import.meta.url)`, a module worker.
  */
 export * from './exports.js';
+// sending G-code to OctoPrint or Moonraker (XMLHttpRequest; the Node entry's uses node:http)
+export { sendToPrinter, HOST_KINDS } from './send/browser.js';
+export type { HostKind, SendOptions, SendResult } from './send/browser.js';

@@ -31,13 +31,24 @@ const common = {
   absWorkingDir: root,
 };
 
+/**
+ * The source of one of the package's public entries (package.json "exports": dist/x.js, or the types'
+ * dist/x.d.ts, is built from src/x.ts). The page imports the library by its package name, which
+ * web/tsconfig.json maps to these sources for esbuild and tsc alike.
+ */
+function entrySource(subpath) {
+  const target = JSON.parse(readFileSync(at('package.json'), 'utf8')).exports[subpath];
+  const built = typeof target === 'string' ? target : target.types.replace(/\.d\.ts$/, '.js');
+  return at(built.replace(/^\.\/dist\//, 'src/').replace(/\.js$/, '.ts'));
+}
+
 /** The library for browsers: strata.js, layer-worker.js beside it, the shader compiler in a chunk. */
 async function libraryBuild() {
   const out = at('dist/browser');
   rmSync(out, { recursive: true, force: true });
   return build({
     ...common,
-    entryPoints: { strata: at('src/browser.ts'), 'layer-worker': at('src/workers/layer-worker.ts') },
+    entryPoints: { strata: entrySource('./browser'), 'layer-worker': entrySource('./layer-worker') },
     outdir: out,
   }).then((r) => (copyClipperWasm(out), r));
 }
@@ -47,19 +58,38 @@ function copyClipperWasm(out) {
   cpSync(at('node_modules/clipper2-wasm/dist/es/clipper2z.wasm'), join(out, 'clipper2z.wasm'));
 }
 
-/** The page: app.js (page thread), slice-worker.js (module worker), layer-worker.js (the pool's). */
+/**
+ * The page: app.js (page thread), slice-worker.js (module worker), layer-worker.js (the pool's). The page
+ * thread is bundled apart from the workers: both import the library's one entry, and esbuild's code
+ * splitting puts every module that entry re-exports in chunks that both load (it splits by files reached,
+ * not by names used), so a shared build would load the whole slicer, and wait for its WebAssembly, on the
+ * page thread. Bundled alone, the page thread keeps only what it uses (package.json "sideEffects").
+ */
 async function pageBuild() {
   const out = at('dist/web');
   rmSync(out, { recursive: true, force: true });
-  const result = await build({
+  // one file: with splitting, esbuild would also emit (and share chunks with) the library's dynamic imports
+  const pageThread = await build({
+    ...common,
+    splitting: false,
+    entryPoints: { app: at('web/src/main.ts') },
+    outdir: out,
+  });
+  const workers = await build({
     ...common,
     entryPoints: {
-      app: at('web/src/main.ts'),
       'slice-worker': at('web/src/worker.ts'),
-      'layer-worker': at('src/workers/layer-worker.ts'),
+      // the library's worker pool, started by the library inside slice-worker.js
+      'layer-worker': entrySource('./layer-worker'),
     },
     outdir: out,
   });
+  const result = {
+    metafile: {
+      inputs: { ...pageThread.metafile.inputs, ...workers.metafile.inputs },
+      outputs: { ...pageThread.metafile.outputs, ...workers.metafile.outputs },
+    },
+  };
   copyClipperWasm(out);
   cpSync(at('web/index.html'), join(out, 'index.html'));
   cpSync(at('web/style.css'), join(out, 'style.css'));

@@ -60,6 +60,15 @@ export interface ObjectOptions {
   layerHeightProfile?: number[];
 }
 
+/** How `Slicer.saveProject` writes the project. */
+export interface SaveProjectOptions {
+  /**
+   * The print settings of Strata's copy in the project (Strata's keys, with `printer` and `filament` preset
+   * names), instead of every setting as resolved.
+   */
+  printSettings?: Readonly<Record<string, unknown>>;
+}
+
 export interface SliceCallOptions {
   onProgress?: (p: Progress) => void;
   signal?: AbortSignal;
@@ -253,8 +262,13 @@ export class Slicer {
    * The plate as a project 3MF (PrusaSlicer's layout, which PrusaSlicer opens, with Strata's own copy of every
    * setting): the objects placed as a slice would place them, their volumes, settings and layer ranges, and
    * this slicer's options as the print settings. `input` as for `slice` (default: the objects added).
+   * `options.printSettings` chooses the print settings of Strata's copy (Strata's keys, `printer` and
+   * `filament`), e.g. only those a user changed, so that the project keeps following its presets; by default
+   * it holds every setting as resolved. Either way the objects are saved turned and scaled already, so the
+   * placement settings (`upAxis`, `rotateX`…, `scale`…) are saved as doing nothing more; PrusaSlicer's copy
+   * has every setting as resolved.
    */
-  async saveProject(input?: unknown): Promise<Uint8Array> {
+  async saveProject(input?: unknown, options: SaveProjectOptions = {}): Promise<Uint8Array> {
     const source = input === undefined && this.#objects.length ? this.#objects : input;
     const model = prepareModel(source, this.#config);
     // every setting as resolved (presets included), so that the project slices the same anywhere
@@ -263,13 +277,14 @@ export class Slicer {
     for (const k of SETTING_KEYS) if (!RUNTIME_KEYS.has(k)) print[k] = cfg[k];
     // the objects are saved as placed: turned, scaled and stood up already
     Object.assign(print, PLACED);
+    const own = options.printSettings ? { ...options.printSettings, ...PLACED } : print;
     // loaded when first used: a slice that saves no project does not load the writer
     const [{ writeProject3mf }, { toSlic3rKeys }] = await Promise.all([
       import('../profiles/threemf-write.js'),
       import('../profiles/to-slic3r.js'),
     ]);
     return writeProject3mf(model.objects, {
-      printSettings: print,
+      printSettings: own,
       slic3rPrintSettings: toSlic3rKeys(print, this.#config.layerHeight),
     });
   }

@@ -4,12 +4,14 @@
  * One object alone goes to the bed centre, where `strata slice` puts a model.
  */
 
+/** What arranging knows of an object: the size of its bounding rectangle on the bed. */
 export interface Footprint {
   /** Size in X and Y, mm. */
   width: number;
   depth: number;
 }
 
+/** The bed's rectangle, to arrange on. */
 export interface Bed {
   /** Centre of the bed, mm (bed coordinates). */
   center: [number, number];
@@ -17,6 +19,7 @@ export interface Bed {
   depth: number;
 }
 
+/** A footprint where it stands: its middle on the bed, mm. */
 export interface PlacedFootprint extends Footprint {
   center: [number, number];
 }

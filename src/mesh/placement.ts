@@ -7,6 +7,7 @@
 import { transformPoints, type Affine } from './transform.js';
 import type { MeshObject } from './types.js';
 
+/** Where an object stands: its turn and scale, and where on the bed. */
 export interface Placement {
   /** Row-major 3×3 matrix: rotation and scale, applied first. */
   linear: readonly number[];
@@ -14,12 +15,14 @@ export interface Placement {
   center: readonly [number, number];
 }
 
+/** The row-major 3×3 identity: no turn, no scale. */
 export const IDENTITY_LINEAR: readonly number[] = Object.freeze([1, 0, 0, 0, 1, 0, 0, 0, 1]);
 
 export function isIdentityLinear(m: readonly number[]): boolean {
   return m.every((v, i) => v === IDENTITY_LINEAR[i]);
 }
 
+/** Bounds in X, Y and Z, mm. */
 export interface Box {
   min: [number, number, number];
   max: [number, number, number];

@@ -197,7 +197,7 @@ export function planToArrays(plan: PrintPlan, layerSeconds?: readonly number[]):
   };
 }
 
-/** The arrays' buffers, for `postMessage(arrays, transferList(arrays))`. */
+/** The arrays' buffers: `postMessage`'s transfer list, to move the arrays to another thread rather than copy them. */
 export function transferList(a: PreviewArrays): ArrayBuffer[] {
   return [
     a.layerZ,

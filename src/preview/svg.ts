@@ -5,6 +5,7 @@
 import type { Pt } from '../geometry/types.js';
 import type { FeatureType, LayerPlan } from '../plan/types.js';
 
+/** A colour (`#rrggbb`) for each feature type, as the previews draw them (the web page's too). */
 export const FEATURE_COLOURS: Readonly<Record<FeatureType, string>> = {
   'WALL-OUTER': '#d62728',
   'WALL-INNER': '#2ca02c',

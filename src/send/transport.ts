@@ -1,6 +1,6 @@
 /**
  * How a print host is reached: two HTTP operations, a small request and a multipart upload with progress.
- * Node uses node:http (node-transport.ts), a page XMLHttpRequest (web/src/send-transport.ts); the hosts'
+ * Node uses node:http (node-transport.ts), a page XMLHttpRequest (browser.ts); the hosts'
  * logic (hosts.ts) is the same for both.
  */
 

@@ -3,9 +3,8 @@
  * a shader.glsl / cells.png the user loads, with the infiller's ui_ parameters. The shader compiler
  * loads in the worker the first time one is chosen; a shader that does not compile is shown in words.
  */
-import type { CustomInfillSpec } from '../../src/pipeline/custom-infill.js';
+import type { CustomInfillInfo, CustomInfillSpec } from 'strata-slicer';
 import { h } from './dom.js';
-import type { InfillerDescription } from './protocol.js';
 import type { CustomChoice, SettingsStore } from './settings.js';
 import type { InvalidFields } from './settings-panel.js';
 
@@ -38,7 +37,7 @@ export class InfillPanel {
   constructor(
     slot: HTMLElement,
     private store: SettingsStore,
-    private describe: (spec: CustomInfillSpec) => Promise<InfillerDescription>,
+    private describe: (spec: CustomInfillSpec) => Promise<CustomInfillInfo>,
     /** Where a refused parameter field is told (Slice and Download wait for it). */
     private invalid?: InvalidFields,
   ) {
@@ -149,7 +148,7 @@ export class InfillPanel {
     const ticket = ++this.#describing;
     this.#error.hidden = true;
     this.#status.textContent = `Loading ${choice.fileName ?? choice.name}…`;
-    let info: InfillerDescription;
+    let info: CustomInfillInfo;
     try {
       const files =
         choice.source === 'shipped'
@@ -178,7 +177,7 @@ export class InfillPanel {
     this.#fillSelect();
   }
 
-  #show(choice: CustomChoice | null, info: InfillerDescription | null): void {
+  #show(choice: CustomChoice | null, info: CustomInfillInfo | null): void {
     // the fields replaced take what was typed into them along
     for (const old of this.#params.querySelectorAll('input')) this.invalid?.set(old, null);
     this.#error.hidden = true;

@@ -4,8 +4,7 @@
  * reading, slicing and building the preview data happen in the worker.
  */
 import { Matrix4, Vector3 } from 'three';
-import { listPresets } from '../../src/settings/presets/index.js';
-import type { Config } from '../../src/settings/resolve.js';
+import { listPresets, type Config } from 'strata-slicer';
 import { byId, h, saveFile } from './dom.js';
 import { duration, grams, metres, mm1 } from './format.js';
 import { InfillPanel } from './infill-panel.js';
@@ -511,13 +510,10 @@ async function openProject(fileName: string, p: LoadedProject): Promise<void> {
   refreshObjects();
 }
 
-/** Print settings the saved objects have already taken (they are saved turned and scaled): not saved again. */
-const PLACEMENT_KEYS = ['upAxis', 'rotateX', 'rotateY', 'rotateZ', 'scale', 'scaleX', 'scaleY', 'scaleZ'];
-
 ui.saveProject.addEventListener('click', async () => {
   if (plate.items.length === 0) return;
+  // the settings file's: the presets and the settings changed (the library saves the placement ones as done)
   const printSettings = store.toJson();
-  for (const k of PLACEMENT_KEYS) delete printSettings[k];
   try {
     const { bytes } = await loader.request<'saved'>({
       type: 'save',

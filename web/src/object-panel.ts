@@ -6,10 +6,15 @@
  * showing what they inherit and marking what is set here. Volumes are added as a box, a cylinder or
  * a mesh file.
  */
-import { validateValue } from '../../src/settings/resolve.js';
-import { SETTING_KEYS, type SettingKey } from '../../src/settings/schema.js';
-import { checkScope, SETTING_SCOPE, type ScopeUse } from '../../src/settings/scope.js';
-import { ConfigTable } from '../../src/settings/scoped.js';
+import {
+  SETTING_KEYS,
+  SETTING_SCOPE,
+  checkSettingScope,
+  resolveScopedConfig,
+  validateSetting,
+  type ScopeUse,
+  type SettingKey,
+} from 'strata-slicer';
 import { h } from './dom.js';
 import { mm1 } from './format.js';
 import type { Plate, PlateItem } from './plate.js';
@@ -422,20 +427,19 @@ export class ObjectPanel {
         }
         const inherited = { ...print, ...(part ? it.settings : {}) };
         try {
-          const table = new ConfigTable(store.options(), print);
           const layers: Array<{ settings: Overrides; use: ScopeUse; where: string }> = [
             { settings: it.settings, use: 'object', where: `object "${it.name}"` },
           ];
           if (part) layers.push({ settings: part.settings, use, where: where() });
-          const id = table.resolve(layers);
-          return { values: { ...table.configs[id], ...(part ? it.settings : {}), ...own }, problem: null };
+          const config = resolveScopedConfig(store.options(), layers);
+          return { values: { ...config, ...(part ? it.settings : {}), ...own }, problem: null };
         } catch (e) {
           return { values: { ...inherited, ...own }, problem: e instanceof Error ? e.message : String(e) };
         }
       },
       set: (key: SettingKey, value: unknown) => {
-        checkScope(key, use, where());
-        own[key] = validateValue(key, value, 'setting');
+        checkSettingScope(key, use, where());
+        own[key] = validateSetting(key, value, 'setting');
         this.#renderList();
         this.host.changed('settings');
       },

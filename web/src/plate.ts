@@ -6,23 +6,21 @@
  */
 import {
   ARRANGE_GAP_MM,
+  IDENTITY_LINEAR,
   arrange,
+  axisRotation,
   findSpot,
   footprintsOverlap,
-  type Bed,
-  type PlacedFootprint,
-} from '../../src/mesh/arrange.js';
-import {
-  IDENTITY_LINEAR,
-  axisRotation,
   linearBounds,
-  mul3,
+  multiplyLinear,
   placementAffine,
   rotationBetween,
+  type Bed,
   type Box,
+  type Config,
+  type PlacedFootprint,
   type Placement,
-} from '../../src/mesh/placement.js';
-import type { Config } from '../../src/settings/resolve.js';
+} from 'strata-slicer';
 import { mm1 } from './format.js';
 import type { LoadedModel, SliceItem, SliceVolume } from './protocol.js';
 import type { Overrides } from './settings.js';
@@ -92,7 +90,7 @@ export class Plate {
   constructor(public bed: BedShape) {}
 
   linear(it: PlateItem): number[] {
-    const m = it.turnZ === 0 ? it.rotation : mul3(axisRotation('z', it.turnZ), it.rotation);
+    const m = it.turnZ === 0 ? it.rotation : multiplyLinear(axisRotation('z', it.turnZ), it.rotation);
     return it.scale === 1 ? [...m] : m.map((v) => v * it.scale);
   }
 
@@ -206,7 +204,7 @@ export class Plate {
   }
 
   rotate(it: PlateItem, axis: 'x' | 'y', deg: number): void {
-    it.rotation = mul3(axisRotation(axis, deg), it.rotation);
+    it.rotation = multiplyLinear(axisRotation(axis, deg), it.rotation);
     this.relinear(it);
   }
 
@@ -215,7 +213,7 @@ export class Plate {
     const r = it.rotation;
     const n = [0, 1, 2].map((i) => r[i * 3] * normal[0] + r[i * 3 + 1] * normal[1] + r[i * 3 + 2] * normal[2]);
     const len = Math.hypot(n[0], n[1], n[2]) || 1;
-    it.rotation = mul3(
+    it.rotation = multiplyLinear(
       rotationBetween(
         n.map((v) => v / len),
         [0, 0, -1],

@@ -9,10 +9,7 @@
  * Dragging a slider draws draft frames (the layers below the top one coarse, at half the resolution),
  * so each step stays quick without a GPU; the full drawing follows once the slider rests.
  */
-import { TYPE_MARKERS } from '../../src/gcode/move-writer.js';
-import { FEATURE_TYPES } from '../../src/plan/types.js';
-import { FEATURE_COLOURS } from '../../src/preview/svg.js';
-import type { PreviewArrays } from '../../src/preview/plan-arrays.js';
+import { FEATURE_COLOURS, FEATURE_TYPES, TYPE_MARKERS, type PreviewArrays } from 'strata-slicer';
 import { byId, h } from './dom.js';
 import { length } from './format.js';
 import { RAMP, type ColourBy, type ToolpathView } from './toolpath.js';

@@ -1,9 +1,13 @@
 /** Messages between the page and its slicing worker: plain data, big arrays transferred. */
-import type { SettingKey, SliceOptions } from '../../src/settings/schema.js';
-import type { VolumeKind } from '../../src/mesh/types.js';
-import type { PreviewArrays } from '../../src/preview/plan-arrays.js';
-import type { Placement } from '../../src/mesh/placement.js';
-import type { CustomInfillSpec } from '../../src/pipeline/custom-infill.js';
+import type {
+  CustomInfillInfo,
+  CustomInfillSpec,
+  Placement,
+  PreviewArrays,
+  SettingKey,
+  SliceOptions,
+  VolumeKind,
+} from 'strata-slicer';
 
 /** Triangles as the slicer takes them (in the object's coordinates for a volume). */
 export interface MeshArrays {
@@ -90,17 +94,11 @@ export interface SliceSummary {
   threads: number;
 }
 
-export interface InfillerDescription {
-  kind: 'shader' | 'image';
-  params: { name: string; type: string; default: number | boolean; tooltip: string }[];
-  warnings: string[];
-}
-
 export type FromWorker =
   /** A model (`project` null), or a project's objects (`model` null). */
   | { type: 'loaded'; id: number; model: LoadedModel | null; project: LoadedProject | null }
   | { type: 'saved'; id: number; bytes: ArrayBuffer }
   | { type: 'progress'; id: number; stage: string; fraction: number }
   | { type: 'sliced'; id: number; gcode: ArrayBuffer; stats: SliceSummary; warnings: string[]; preview: PreviewArrays }
-  | { type: 'infiller'; id: number; info: InfillerDescription }
+  | { type: 'infiller'; id: number; info: CustomInfillInfo }
   | { type: 'error'; id: number; message: string };

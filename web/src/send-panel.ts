@@ -5,11 +5,8 @@
  * The browser's rules apply to the network hosts: the host must allow this page's origin (CORS), and a page
  * served over https:// cannot call an http:// host.
  */
-import { StrataError } from '../../src/errors.js';
-import { sendGcode, type HostKind } from '../../src/send/hosts.js';
-import { MarlinSender } from '../../src/send/marlin-serial.js';
+import { MarlinSender, StrataError, sendToPrinter, type HostKind } from 'strata-slicer';
 import { h } from './dom.js';
-import { xhrTransport } from './send-transport.js';
 
 /** The Web Serial API, as far as the page uses it (TypeScript's DOM types do not have it yet). */
 interface SerialPortLike {
@@ -224,19 +221,16 @@ export function setupSendPanel(o: SendPanelOptions): void {
     abort = new AbortController();
     say(`Uploading ${job.name} to ${HOST_NAMES[s.kind]}…`);
     try {
-      const r = await sendGcode(
-        { name: job.name, bytes: new Uint8Array(job.gcode) },
-        {
-          to: s.kind,
-          url: s.url,
-          apiKey: s.apiKey,
-          print: s.print,
-          keyName: 'the API key field',
-          signal: abort.signal,
-          onProgress: ({ sent, total }) => (progress.value = total ? sent / total : 0),
-        },
-        xhrTransport,
-      );
+      const r = await sendToPrinter(new Uint8Array(job.gcode), {
+        name: job.name,
+        to: s.kind,
+        url: s.url,
+        apiKey: s.apiKey,
+        print: s.print,
+        keyName: 'the API key field',
+        signal: abort.signal,
+        onProgress: ({ sent, total }) => (progress.value = total ? sent / total : 0),
+      });
       say(
         `Sent ${r.name} to ${HOST_NAMES[s.kind]} at ${r.url}${r.started ? ': printing.' : r.notStarted ? `. Not printing: ${r.notStarted}.` : '.'}`,
         !!r.notStarted,

@@ -2,9 +2,9 @@
  * A settings panel, built from the schema: one collapsible group per stage (most used first), one
  * field per setting with its unit, range and description; settings set here are marked and can be
  * reset. The print's panel lists every setting; an object's, a modifier's or a layer range's lists
- * those that may vary there (settings/scope.ts). A new setting in the schema appears with no edit.
+ * those that may vary there (the library's SETTING_SCOPE). A new setting in the schema appears with no edit.
  */
-import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey } from '../../src/settings/schema.js';
+import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey } from 'strata-slicer';
 import { h } from './dom.js';
 import { labelOf } from './format.js';
 import type { SettingsStore } from './settings.js';

@@ -4,18 +4,18 @@
  * object `strata slice --config FILE.json` reads (printer, filament and setting keys; a shipped
  * custom infiller as its `infillPattern` name).
  */
-import { StrataError } from '../../src/errors.js';
-import { PATTERN_IDS } from '../../src/infill/types.js';
 import {
-  DEFAULT_FILAMENT,
-  DEFAULT_PRINTER,
-  checkKey,
+  PATTERN_IDS,
+  SCHEMA,
+  StrataError,
+  checkSettingKey,
   resolveConfig,
-  validateValue,
+  validateSetting,
   type Config,
-} from '../../src/settings/resolve.js';
-import { SCHEMA, type SettingKey, type SliceOptions } from '../../src/settings/schema.js';
-import type { CustomInfillSpec } from '../../src/pipeline/custom-infill.js';
+  type CustomInfillSpec,
+  type SettingKey,
+  type SliceOptions,
+} from 'strata-slicer';
 
 /** A custom infiller: one shipped with Strata (by name) or a file the user loaded. */
 export interface CustomChoice {
@@ -29,6 +29,8 @@ export interface CustomChoice {
 }
 
 const STORAGE_KEY = 'strata.settings.v1';
+/** The settings with no preset named: the library's default printer and filament. */
+const DEFAULTS = resolveConfig();
 /** Largest loaded image kept in localStorage (bytes); bigger ones last until the page closes. */
 const MAX_STORED_IMAGE = 512 * 1024;
 
@@ -55,8 +57,8 @@ function fromBase64(text: string): Uint8Array {
 }
 
 export class SettingsStore {
-  printer = DEFAULT_PRINTER;
-  filament = DEFAULT_FILAMENT;
+  printer = DEFAULTS.printerId;
+  filament = DEFAULTS.filamentId;
   overrides: Overrides = {};
   custom: CustomChoice | null = null;
   #listeners: Array<() => void> = [];
@@ -87,7 +89,7 @@ export class SettingsStore {
 
   /** Set one setting (validated; throws naming the allowed values); a value equal to the preset's is dropped. */
   set(key: SettingKey, value: unknown): void {
-    const v = validateValue(key, value, 'setting');
+    const v = validateSetting(key, value, 'setting');
     if (v === this.base()[key]) delete this.overrides[key];
     else this.overrides[key] = v;
     this.changed();
@@ -136,8 +138,8 @@ export class SettingsStore {
         custom = { source: 'shipped', name: v, params: {} };
         continue;
       }
-      const key = checkKey(k, 'setting');
-      overrides[key] = validateValue(key, v, 'setting');
+      const key = checkSettingKey(k, 'setting');
+      overrides[key] = validateSetting(key, v, 'setting');
     }
     const next = { printer: printer ?? this.printer, filament: filament ?? this.filament };
     // the presets and values must resolve together before anything is replaced
@@ -185,7 +187,7 @@ export class SettingsStore {
       for (const [k, v] of Object.entries(saved.overrides)) {
         if (!Object.prototype.hasOwnProperty.call(SCHEMA, k)) continue;
         try {
-          this.overrides[k as SettingKey] = validateValue(k as SettingKey, v, 'setting');
+          this.overrides[k as SettingKey] = validateSetting(k as SettingKey, v, 'setting');
         } catch {
           // no longer valid: dropped
         }

@@ -4,31 +4,31 @@
  * only draws. The page cancels a slice by ending the worker.
  */
 import {
+  SETTING_SCOPE,
   Slicer,
   StrataError,
-  loadCustomInfill,
+  describeCustomInfill,
+  estimatePlan,
+  linearBounds,
   loadModelBytes,
+  loadModelFile,
+  mergeObjects,
+  placeObjects,
+  placementAffine,
+  planToArrays,
   prepareMesh,
-  prepareModel,
-  resolveConfig,
-} from '../../src/browser.js';
-import { loadModelFile } from '../../src/mesh/load.js';
-import { mergeObjects } from '../../src/mesh/place.js';
-import { writeProject3mf } from '../../src/profiles/threemf-write.js';
-import { settingsFromSource } from '../../src/profiles/object-settings.js';
-import { toSlic3rKeys } from '../../src/profiles/to-slic3r.js';
-import type { SettingKey } from '../../src/settings/schema.js';
-import { SETTING_SCOPE, type ScopeUse } from '../../src/settings/scope.js';
-import { linearBounds, placeObjects, placementAffine } from '../../src/mesh/placement.js';
-import { determinant, transformPoints, type Affine } from '../../src/mesh/transform.js';
-import type { MeshObject, SettingsSource } from '../../src/mesh/types.js';
-import { estimatePlan } from '../../src/plan/estimate.js';
-import { planToArrays, transferList } from '../../src/preview/plan-arrays.js';
+  previewTransferList,
+  settingsFromSource,
+  transformMesh,
+  type MeshObject,
+  type ScopeUse,
+  type SettingKey,
+  type SettingsSource,
+} from 'strata-slicer';
 import type {
   FromWorker,
   LoadedModel,
   LoadedProject,
-  MeshArrays,
   ProjectObject,
   SliceItem,
   SliceVolume,
@@ -194,7 +194,7 @@ function sliceInput(items: readonly SliceItem[]): { input: unknown[]; placed: bo
     return describeObject(
       it,
       placeObjects(objects, it.placement),
-      it.volumes.map((v) => ({ ...v, mesh: transformed(v.mesh, affine) })),
+      it.volumes.map((v) => ({ ...v, mesh: transformMesh(v.mesh, affine) })),
     );
   });
   return { input, placed };
@@ -213,17 +213,6 @@ function describeObject(it: SliceItem, mesh: unknown, volumes: readonly SliceVol
   return out;
 }
 
-/** A volume's mesh under an affine transform (corners swapped where it mirrors, to keep it facing out). */
-function transformed(m: MeshArrays, affine: Affine): MeshArrays {
-  const n = m.positions.length / 3;
-  const positions = new Float32Array(n * 3);
-  transformPoints(affine, m.positions, n, positions, 0);
-  if (determinant(affine) >= 0) return { positions, indices: m.indices };
-  const indices = m.indices.slice();
-  for (let t = 0; t < indices.length; t += 3) [indices[t + 1], indices[t + 2]] = [indices[t + 2], indices[t + 1]];
-  return { positions, indices };
-}
-
 async function handle(msg: ToWorker): Promise<void> {
   switch (msg.type) {
     case 'load': {
@@ -235,30 +224,17 @@ async function handle(msg: ToWorker): Promise<void> {
       return;
     }
     case 'save': {
-      // the objects as the slice places them (volumes with them), so the project slices to the same G-code
+      // the objects as the slice places them (volumes with them), so the project slices to the same G-code;
+      // the print settings the user chose (the presets' own are left to the presets)
       const { input, placed } = sliceInput(msg.items);
-      const cfg = resolveConfig(placed ? { ...msg.options, center: false } : msg.options);
-      const prepared = prepareModel(input, cfg);
-      // PrusaSlicer's copy of the print settings: every one resolved, in its keys
-      const resolved: Record<string, unknown> = { ...cfg };
-      const bytes = writeProject3mf(prepared.objects, {
-        printSettings: msg.printSettings,
-        slic3rPrintSettings: toSlic3rKeys(resolved, cfg.layerHeight),
-      });
+      const slicer = new Slicer(placed ? { ...msg.options, center: false } : msg.options);
+      const bytes = await slicer.saveProject(input, { printSettings: msg.printSettings });
       post({ type: 'saved', id: msg.id, bytes: bytes.buffer as ArrayBuffer }, [bytes.buffer as ArrayBuffer]);
       return;
     }
     case 'infiller': {
       // the shader compiler loads here, the first time a custom infill is chosen
-      const compiler = await loadCustomInfill();
-      const shader = await import('../../src/shader/index.js');
-      const info = shader.describeInfiller(shader.loadInfiller(msg.spec));
-      compiler.customGenerator(msg.spec, new Slicer().config);
-      post({
-        type: 'infiller',
-        id: msg.id,
-        info: { kind: info.kind, params: info.params.map((p) => ({ ...p })), warnings: info.warnings },
-      });
+      post({ type: 'infiller', id: msg.id, info: await describeCustomInfill(msg.spec) });
       return;
     }
     case 'slice': {
@@ -278,7 +254,10 @@ async function handle(msg: ToWorker): Promise<void> {
       // the estimate's time per layer, to colour the preview by (the G-code's estimate, made again here)
       const preview = planToArrays(plan, estimatePlan(plan, slicer.config).layerSeconds);
       const { bounds: _bounds, ...summary } = stats;
-      post({ type: 'sliced', id: msg.id, gcode, stats: summary, warnings, preview }, [gcode, ...transferList(preview)]);
+      post({ type: 'sliced', id: msg.id, gcode, stats: summary, warnings, preview }, [
+        gcode,
+        ...previewTransferList(preview),
+      ]);
       return;
     }
   }

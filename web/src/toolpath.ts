@@ -34,9 +34,14 @@ import {
   type Object3D,
   type WebGLRenderer,
 } from 'three';
-import { FEATURE_TYPES } from '../../src/plan/types.js';
-import { FEATURE_COLOURS } from '../../src/preview/svg.js';
-import { RETRACTION_STRIDE, SEGMENT_STRIDE, TRAVEL_STRIDE, type PreviewArrays } from '../../src/preview/plan-arrays.js';
+import {
+  FEATURE_COLOURS,
+  FEATURE_TYPES,
+  RETRACTION_STRIDE,
+  SEGMENT_STRIDE,
+  TRAVEL_STRIDE,
+  type PreviewArrays,
+} from 'strata-slicer';
 
 /** Instances per draw call (and per upload). */
 const CHUNK = 1 << 16;

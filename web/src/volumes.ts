@@ -4,7 +4,7 @@
  * cylinder or a mesh from a file, kept as the centre and size of its bounding box in the object's own
  * coordinates (the model file's), so it turns, scales and moves with the object.
  */
-import type { VolumeKind } from '../../src/mesh/types.js';
+import type { VolumeKind } from 'strata-slicer';
 import type { Overrides } from './settings.js';
 import { boxMesh, cylinderMesh, fitMesh, meshBox, type ShapeMesh } from './shapes.js';
 

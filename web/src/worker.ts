@@ -1,8 +1,8 @@
 /**
  * The page's module worker entry: it listens at once and loads the slicer behind a dynamic import
- * (slice-work.ts), keeping what arrives meanwhile (see listen-first.ts).
+ * (slice-work.ts), keeping what arrives meanwhile (the library's `listenFirst`).
  */
-import { listenFirst } from '../../src/workers/listen-first.js';
+import { listenFirst } from 'strata-slicer/worker';
 import type { ToWorker } from './protocol.js';
 
 listenFirst(
