@@ -44,6 +44,49 @@ test('lines nearest-first: every line once, turned round when entered at its far
   assert.equal(new Set(out.map((l) => l[0].y)).size, 50);
 });
 
+/** `n` short lines at random places and angles, µm. */
+function shuffled(n: number, seed: number): Pt[][] {
+  let s = seed;
+  const rnd = () => (s = (s * 1103515245 + 12345) % 2147483648) / 2147483648;
+  const out: Pt[][] = [];
+  for (let i = 0; i < n; i++) {
+    const x = Math.round(rnd() * 200_000),
+      y = Math.round(rnd() * 200_000);
+    out.push([
+      { x, y },
+      { x: x + Math.round((rnd() - 0.5) * 3_000), y: y + Math.round((rnd() - 0.5) * 3_000) },
+    ]);
+  }
+  return out;
+}
+
+test('ordering lines keeps every line once (possibly reversed) and cuts travel', () => {
+  const lines = shuffled(2_000, 7);
+  const start = { x: 0, y: 0 };
+  const out = orderLines(lines, start);
+  assert.equal(out.length, lines.length);
+  const key = (l: Pt[]) => {
+    const a = `${l[0].x},${l[0].y}`,
+      b = `${l[l.length - 1].x},${l[l.length - 1].y}`;
+    return a < b ? a + '|' + b : b + '|' + a;
+  };
+  assert.deepEqual(out.map(key).sort(), lines.map(key).sort());
+  assert.ok(travelLength(out, start) < 0.1 * travelLength(lines, start));
+});
+
+test('ordering is about linear: 16× the lines cost well under 64× the time', () => {
+  const time = (n: number) => {
+    const lines = shuffled(n, 3);
+    const t = performance.now();
+    orderLines(lines, { x: 0, y: 0 });
+    return performance.now() - t;
+  };
+  time(2_000);
+  const small = Math.max(0.5, time(2_000)),
+    big = time(32_000);
+  assert.ok(big < 64 * small, `${big} ms vs ${small} ms`);
+});
+
 test('loops are entered at their nearest vertex and started there; the end is where the last one starts', () => {
   const sq = (x: number) => [
     { x, y: 0 },
@@ -56,6 +99,8 @@ test('loops are entered at their nearest vertex and started there; the end is wh
   assert.equal(loops[1][0].x >= 10000, true);
   assert.deepEqual(end, loops[1][0]);
   assert.deepEqual(orderLoops([], { x: 5, y: 5 }), { loops: [], end: { x: 5, y: 5 } });
+  // one loop: started at the vertex nearest the nozzle
+  assert.deepEqual(orderLoops([sq(0)], { x: 1100, y: 1100 }).loops[0][0], { x: 1000, y: 1000 });
 });
 
 test('a shortened order visits every path once and never travels further than the nearest-first one', () => {
