@@ -42,14 +42,17 @@ export interface PathSet {
 
 /** With `'lowest'` ties, up to this many entry points are scanned rather than put in a grid. */
 const SCAN_BELOW = 24;
-/** With `'lowest'` ties, the grid is made again of the entry points still to be used when they are fewer than its own over this. */
+/**
+ * With `'lowest'` ties, the grid is made again of the entry points still to be used when they are fewer than its
+ * own over this.
+ */
 const REGRID_SHARE = 4;
 /** With `'grid'` ties, the smallest grid cell, µm. */
 const GRID_TIES_CELL = 100;
 
 /**
- * Entry points bucketed by cell in flat arrays: cell c's entries are items[start[c] … start[c] + live[c]), in the
- * order they were added, the used ones dropped as the search passes them.
+ * Entry points bucketed by cell in flat arrays: cell c's live entries are items[start[c] … start[c] + live[c]),
+ * added in entry order; as the search passes a used one, the cell's last takes its place.
  */
 interface Grid {
   cell: number;
@@ -62,7 +65,10 @@ interface Grid {
   items: Int32Array;
 }
 
-/** A grid of the entries `ids` (indices into `ends`, two coordinates each), `across` cells across its longer side, cells at least `minCell` wide. */
+/**
+ * A grid of the entries `ids` (indices into `ends`, two coordinates each): √`across` cells (rounded up) across its
+ * longer side, but none narrower than `minCell`.
+ */
 function buildGrid(ends: Float64Array, ids: Int32Array, across: number, minCell: number): Grid {
   const count = ids.length;
   let minX = Infinity,
@@ -93,7 +99,7 @@ function buildGrid(ends: Float64Array, ids: Int32Array, across: number, minCell:
   return { cell, minX, minY, cols, rows, start, live, items };
 }
 
-/** One search for the nearest live entry: where from, how ties go, and the nearest found so far (squared distance, entry). */
+/** A search for the nearest live entry: from where, how ties go, the nearest found so far (squared distance, entry). */
 interface Search {
   x: number;
   y: number;

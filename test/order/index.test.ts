@@ -130,7 +130,7 @@ test('a shortened order visits every path once and never travels further than th
   }
 });
 
-test('with an end point the shortened order ends near it; a line is turned round by entering it at its other end', () => {
+test('with an end point the shortened order ends near it; a line turned round is entered at its other end', () => {
   // a line 1 mm above the start, 10 mm long; a loop's entry under its far end; the end point 2 mm above the start
   const ends = [
     [

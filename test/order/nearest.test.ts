@@ -8,7 +8,7 @@ function pathSet(items: readonly Pt[][], lines: boolean): PathSet {
   return { count: items.length, entries: (i) => items[i], line: () => lines };
 }
 
-/** The plain nearest-first order: every remaining entry scanned from where the last path was left; ties: the lower path, then entry. */
+/** The plain nearest-first order: every entry left scanned from where the last path was left; ties: lower path, entry. */
 function reference(items: readonly Pt[][], lines: boolean, from: Pt): Visit[] {
   const used = new Set<number>();
   const out: Visit[] = [];
@@ -46,7 +46,7 @@ function lattice(count: number, seed: number): { items: Pt[][]; from: Pt } {
 // 400 and 1500: the grid is made again of the rest several times as it thins out
 const COUNTS = [1, 2, 5, 11, 12, 13, 30, 80, 400, 1500];
 
-test("'lowest' ties: the order is the plain nearest-first order (ties: lower path, then entry), for few and many paths", () => {
+test("'lowest' ties: the plain nearest-first order (ties: lower path, then entry), for few and many paths", () => {
   for (const count of COUNTS)
     for (const lines of [true, false]) {
       const { items, from } = lattice(count, 7 + count);
