@@ -23,7 +23,7 @@ import { clipSweep } from './sweep.js';
 import { clipPolylines } from './clip-polylines.js';
 import { linkPieces } from './link.js';
 import { cleanPaths } from './cleanup.js';
-import { orderPaths } from './order.js';
+import { orderLines, orderLoops } from '../order/index.js';
 import { type Piece, polylineLength } from './piece.js';
 
 /** Ends are joined along the boundary when at most this many line spacings apart. */
@@ -163,5 +163,7 @@ export function generateInfill(
   const run = runCorrected(pattern, layer, params, prepared, ctx);
   const lines = run.linkReach > 0 ? linkPieces(geom, run.pieces, run.linkReach).lines : run.pieces.map((pc) => pc.pts);
   const clean = cleanPaths(lines, run.loops, MIN_PRINTABLE_WIDTHS * params.lineWidth);
-  return orderPaths(clean.lines, clean.loops, start ?? { x: geom.minX, y: geom.minY });
+  // loops first, nearest-first, then lines from where the loops end
+  const loops = orderLoops(clean.loops, start ?? { x: geom.minX, y: geom.minY });
+  return { loops: loops.loops, lines: orderLines(clean.lines, loops.end) };
 }

@@ -11,7 +11,6 @@ export { extrudedArea, lineDensity, measuredDensity, pathLength } from './measur
 export { clipSweep } from './sweep.js';
 export { clipPolylines, clipToRegion } from './clip-polylines.js';
 export { linkPieces } from './link.js';
-export { orderPaths, travelLength } from './order.js';
 export { regionGeom, indexRegion } from './region-index.js';
 export { PATTERN_IDS, SKIN_PATTERN_IDS } from './types.js';
 export type {

@@ -7,7 +7,7 @@ import { regionGeom } from './region-index.js';
 import { clipSweep } from './sweep.js';
 import { linkPieces } from './link.js';
 import { cleanPaths } from './cleanup.js';
-import { orderPaths } from './order.js';
+import { orderLines } from '../order/index.js';
 import type { Piece } from './piece.js';
 import { LINK_REACH } from './generate.js';
 
@@ -39,5 +39,5 @@ export function solidFill(
     options.connect === false ? pieces.map((p) => p.pts) : linkPieces(geom, pieces, LINK_REACH * spacingUm).lines;
   const clean = cleanPaths(lines, [], 0);
   if (options.order === false) return clean.lines;
-  return orderPaths(clean.lines, [], options.start ?? { x: geom.minX, y: geom.minY }).lines;
+  return orderLines(clean.lines, options.start ?? { x: geom.minX, y: geom.minY });
 }

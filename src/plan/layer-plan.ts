@@ -6,8 +6,7 @@
  */
 import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import { pointInArea } from '../geometry/clip.js';
-import { orderNearest } from '../geometry/nearest-order.js';
-import { shortenTour, type TourStop } from '../geometry/tour.js';
+import { entryPoint, exitPoint, orderPaths, shortenOrder, type PathSet, type Visit } from '../order/index.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
 import { combRoute, insideRings, makeCombArea, pathLength, type CombArea } from './comb.js';
@@ -332,9 +331,6 @@ function printLoop(ctx: Ctx, entry: PathEntry, style: EntryStyle, i: number, s: 
   for (const r of runs) extrudeFlagged(ctx, style, r);
 }
 
-/** A path of a group as the planner prints it: entry e's path i, entered at its candidate c (see `candidates`). */
-type Visit = [e: number, i: number, c: number];
-
 /**
  * Entries printed as one tour (a block of the group): the fill inside the walls (see `mixable`), or one entry
  * of another role (a wall's loops, support lines), or an entry whose paths keep their given order
@@ -344,7 +340,11 @@ interface Block {
   entries: readonly PathEntry[];
   /** Each entry's loops' seams (vertex), or -1 where the loop is entered at whichever vertex is nearest. */
   seams: Int32Array[];
-  /** The paths in print order. */
+  /** The block's paths, entry after entry: path n is entry items[n][0]'s path items[n][1]. */
+  items: Array<[e: number, i: number]>;
+  /** The paths as the ordering takes them: lines entered at either end, loops at their `candidates`. */
+  paths: PathSet;
+  /** The paths in print order, each entered at its candidate (see `candidates`). */
   visits: Visit[];
   /** Where the nearest-first visits were found from. */
   from: Pt | null;
@@ -366,18 +366,6 @@ function candidates(block: Block, e: number, i: number): readonly Pt[] {
   if (!block.entries[e].closed) return [path[0], path[path.length - 1]];
   const s = block.seams[e][i];
   return s >= 0 ? [path[s]] : spreadPoints(path, LOOP_ENTRIES);
-}
-
-/** Where a visit enters its path and where it leaves it (a loop where it was entered). */
-function visitStop(block: Block, [e, i, c]: Visit): TourStop {
-  const path = block.entries[e].paths[i];
-  if (block.entries[e].closed) {
-    const at = candidates(block, e, i)[c];
-    return { in: at, out: at };
-  }
-  const a = path[0],
-    b = path[path.length - 1];
-  return c === 0 ? { in: a, out: b } : { in: b, out: a };
 }
 
 /**
@@ -410,29 +398,36 @@ function groupBlocks(ctx: Ctx, entries: readonly PathEntry[]): Block[] {
       return s;
     });
     const ordered = members.length === 1 && !!members[0].ordered;
-    blocks.push({ entries: members, seams, visits: [], from: null, ordered, shorten: !ordered && mixable(members[0]) });
+    const items: Array<[number, number]> = [];
+    for (let e = 0; e < members.length; e++) for (let i = 0; i < members[e].paths.length; i++) items.push([e, i]);
+    const block: Block = {
+      entries: members,
+      seams,
+      items,
+      paths: {
+        count: items.length,
+        entries: (n) => candidates(block, items[n][0], items[n][1]),
+        line: (n) => !members[items[n][0]].closed,
+      },
+      visits: [],
+      from: null,
+      ordered,
+      shorten: !ordered && mixable(members[0]),
+    };
+    blocks.push(block);
   }
   return blocks;
 }
 
 /** A block's paths nearest-first from `from`: lines from whichever end is nearer, loops from their nearest candidate. */
 function nearestVisits(block: Block, from: Pt): Visit[] {
-  const items: Array<[number, number]> = [];
-  for (let e = 0; e < block.entries.length; e++)
-    for (let i = 0; i < block.entries[e].paths.length; i++) items.push([e, i]);
-  if (block.ordered) return items.map(([e, i]) => [e, i, 0]);
-  const order = orderNearest(
-    items.length,
-    (n) => candidates(block, items[n][0], items[n][1]),
-    (n, c) => visitStop(block, [items[n][0], items[n][1], c]).out,
-    from,
-  );
-  return order.map(([n, c]) => [items[n][0], items[n][1], c]);
+  if (block.ordered) return block.items.map((_, n) => [n, 0]);
+  return orderPaths(block.paths, { from });
 }
 
 /**
  * The order of a group's blocks' paths: nearest-first, block after block; then, block after block again, each
- * fill block nearest-first from where the block before it now ends, its tour shortened (geometry/tour.ts) on
+ * fill block nearest-first from where the block before it now ends, its tour shortened (order/shorten.ts) on
  * to where the block after it starts (after the last block: `to`, where the nozzle goes next), so that it also
  * ends near where the next begins.
  */
@@ -441,34 +436,25 @@ function orderBlocks(blocks: readonly Block[], from: Pt, to: Pt | null): void {
   for (const b of blocks) {
     b.visits = nearestVisits(b, at);
     b.from = at;
-    at = visitStop(b, b.visits[b.visits.length - 1]).out;
+    at = exitPoint(b.paths, b.visits[b.visits.length - 1]);
   }
   at = from;
   for (let k = 0; k < blocks.length; k++) {
     const b = blocks[k];
-    const next = k + 1 < blocks.length ? visitStop(blocks[k + 1], blocks[k + 1].visits[0]).in : to;
+    const next = k + 1 < blocks.length ? entryPoint(blocks[k + 1].paths, blocks[k + 1].visits[0]) : to;
     if (b.from !== at) {
       b.visits = nearestVisits(b, at);
       b.from = at;
     }
-    if (b.shorten && (b.visits.length > 1 || next)) {
-      const stops = b.visits.map((v) => visitStop(b, v));
-      const t = shortenTour(stops, at, next);
-      const visits: Visit[] = new Array(stops.length);
-      for (let q = 0; q < stops.length; q++) {
-        const [e, i, c] = b.visits[t.order[q]];
-        // a line turned round is entered at its other end; a loop is left where it was entered either way
-        visits[q] = [e, i, t.reversed[q] && !b.entries[e].closed ? 1 - c : c];
-      }
-      b.visits = visits;
-    }
-    at = visitStop(b, b.visits[b.visits.length - 1]).out;
+    if (b.shorten) b.visits = shortenOrder(b.paths, b.visits, at, next);
+    at = exitPoint(b.paths, b.visits[b.visits.length - 1]);
   }
 }
 
 /** A block's paths in their order: loops from their seam (or the vertex nearest the nozzle), lines from the end visited. */
 function printBlock(ctx: Ctx, block: Block): void {
-  for (const [e, i, c] of block.visits) {
+  for (const [n, c] of block.visits) {
+    const [e, i] = block.items[n];
     const entry = block.entries[e];
     const style = layerStyle(ctx, entry.style);
     if (entry.closed) {
@@ -684,11 +670,9 @@ export function planLayer(
       const groups = layer.groups.filter((g) => g.kind === kind && hasPaths(g));
       // travels into another group are not combed (printGroup starts each group without a comb area)
       const entries = groups.map((g) => groupEntries(g, cfg, position));
-      const order = orderNearest(
-        groups.length,
-        (i) => entries[i],
-        (i, k) => entries[i][k],
-        ctx.at,
+      const order = orderPaths(
+        { count: groups.length, entries: (i) => entries[i], line: () => false },
+        { from: ctx.at },
       );
       for (let k = 0; k < order.length; k++) {
         // each group ends near the next one's entry; the layer's last island near its own (the next layer's

@@ -6,11 +6,11 @@
 import { segmentDistance2, type ExPolygon, type Polyline, type Pt } from '../geometry/types.js';
 import { boundsOf, clipLines, offset } from '../geometry/clip.js';
 import { StrataError } from '../errors.js';
-import { orderPaths } from './chain.js';
+import { orderPaths } from '../order/index.js';
 import { linkCrossings } from './contour-link.js';
 import type { LabelFn } from './label-grid.js';
 import { sampleLabelGrid } from './label-grid.js';
-import { polylineLength, simplifyMmPath, toMicrons } from './polyline-tools.js';
+import { isClosed, polylineLength, simplifyMmPath, toMicrons } from './polyline-tools.js';
 import type { CompiledShader, ParamValues, ShaderInstance } from './shader.js';
 
 /** Density: a constant percentage, or a field of (x, y, z) in mm → percentage (0–100). */
@@ -115,7 +115,74 @@ export function labelBoundaries(label: LabelFn, region: readonly ExPolygon[], op
       if (p.length >= 2 && polylineLength(p) >= r.minLength * 1000 && !alongBoundary(p, part)) out.push(p);
     }
   }
-  return orderPaths(out, opts.start ?? { x: all.minX, y: all.minY });
+  return chainPaths(out, opts.start ?? { x: all.minX, y: all.minY });
+}
+
+/** Consecutive open paths whose ends are at most this far apart are joined into one, µm. */
+const JOIN_GAP = 5;
+
+/**
+ * Paths in print order from `start` (nearest-first, ties as the grid search finds them: see order/nearest.ts):
+ * an open path entered at either end, turned round when at its last; a closed one (its first point repeated
+ * last) found by its first point and started at its vertex nearest the nozzle. Consecutive open paths whose ends
+ * touch (within JOIN_GAP) are joined into one.
+ */
+export function chainPaths(paths: readonly Polyline[], start: Pt): Polyline[] {
+  const kept = paths.filter((p) => p.length >= 2);
+  const closed = kept.map(isClosed);
+  // the vertex each closed path starts at, found as the order comes to it
+  const startAt = new Int32Array(kept.length);
+  const order = orderPaths(
+    {
+      count: kept.length,
+      entries: (i) => (closed[i] ? [kept[i][0]] : [kept[i][0], kept[i][kept[i].length - 1]]),
+      line: (i) => !closed[i],
+      exit: (i, entry, at) => {
+        const p = kept[i];
+        if (!closed[i]) return entry === 0 ? p[p.length - 1] : p[0];
+        startAt[i] = nearestVertex(p, at);
+        return p[startAt[i]];
+      },
+    },
+    { from: start, ties: 'grid' },
+  );
+  const out: Polyline[] = [];
+  let at = start;
+  for (const [i, entry] of order) {
+    let p = kept[i];
+    if (closed[i]) p = startClosedAt(p, startAt[i]);
+    else if (entry === 1) p = p.slice().reverse();
+    const prev = out[out.length - 1];
+    const gap = prev === undefined ? Infinity : Math.hypot(p[0].x - at.x, p[0].y - at.y);
+    if (prev !== undefined && gap <= JOIN_GAP && !isClosed(prev) && !closed[i]) {
+      out[out.length - 1] = prev.concat(gap === 0 ? p.slice(1) : p);
+    } else out.push(p);
+    at = p[p.length - 1];
+  }
+  return out;
+}
+
+/** The vertex of a closed path (its first point repeated last) nearest `at`, the first on a tie. */
+function nearestVertex(p: Polyline, at: Pt): number {
+  let best = 0;
+  let bestD = Infinity;
+  for (let i = 0; i < p.length - 1; i++) {
+    const d = (p[i].x - at.x) ** 2 + (p[i].y - at.y) ** 2;
+    if (d < bestD) {
+      bestD = d;
+      best = i;
+    }
+  }
+  return best;
+}
+
+/** A closed path (its first point repeated last) started at its vertex k. */
+function startClosedAt(p: Polyline, k: number): Polyline {
+  if (k === 0) return p;
+  const ring = p.slice(0, -1);
+  const out = [...ring.slice(k), ...ring.slice(0, k)];
+  out.push(out[0]);
+  return out;
 }
 
 function nearBoundary(px: number, py: number, region: readonly ExPolygon[], tol2: number): boolean {

@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { shortenTour, type TourStop } from '#strata/geometry/tour.js';
+import { shortenTour, type TourStop } from '#strata/order/shorten.js';
 import type { Pt } from '#strata/geometry/types.js';
 
 /** Travel of stops in the order given, from `from` and on to `to` (µm). */

@@ -1,13 +1,13 @@
 /**
- * Shortening a tour found nearest-first (nearest-order.ts): 2-opt (a stretch of the tour printed the other way
- * round, each line in it reversed) and or-opt (one to three paths moved elsewhere in the tour, either way
- * round), repeated while a move shortens the travel. Each stop of the tour is entered at one point and left at
- * another (a line's two ends; a loop's entry twice) and may be printed backwards (entered where it was left).
- * The travel counted runs from the start point through every stop and, when one is given, on to the end point
- * (where the nozzle goes next), so the tour also ends near where it is followed. Long tours are shortened a
- * window at a time, so the work grows with the number of stops times the window, not its square.
+ * Shortening a tour found nearest-first (nearest.ts): 2-opt (a stretch of the tour printed the other way round,
+ * each line in it reversed) and or-opt (one to three paths moved elsewhere in the tour, either way round),
+ * repeated while a move shortens the travel. Each stop of the tour is entered at one point and left at another (a
+ * line's two ends; a loop's entry twice) and may be printed backwards (entered where it was left). The travel
+ * counted runs from the start point through every stop and, when one is given, on to the end point (where the
+ * nozzle goes next), so the tour also ends near where it is followed. Long tours are shortened a window at a time,
+ * so the work grows with the number of stops times the window, not its square.
  */
-import type { Pt } from './types.js';
+import type { Pt } from '../geometry/types.js';
 
 /** A stop of the tour as it is printed: entered at `in`, left at `out`. */
 export interface TourStop {
