@@ -146,16 +146,18 @@ const MAX_CORRECTION = 1.5;
  * One layer's (or one island's) infill: clipped to `layer.region`, linked (if `params.connect`), free of
  * zero-length and duplicate segments, ordered from `start` (default: the region's lower-left corner):
  * loops first, then lines. `prepared` is this layer's entry of the pattern's `prepare` result, if it has one.
+ * A pattern that draws finished paths (custom infill) is taken as it is.
  */
 export function generateInfill(
-  patternId: PatternId,
+  patternOrId: PatternId | InfillPattern,
   layer: InfillLayerInput,
   params: InfillParams,
   prepared?: unknown,
   start?: Pt,
 ): InfillResult {
-  const pattern: InfillPattern | undefined = PATTERNS[patternId];
-  if (!pattern) throw new Error(`unknown infill pattern '${String(patternId)}'`);
+  const pattern: InfillPattern | undefined = typeof patternOrId === 'string' ? PATTERNS[patternOrId] : patternOrId;
+  if (!pattern) throw new Error(`unknown infill pattern '${String(patternOrId)}'`);
+  if (pattern.finished) return pattern.generate(layer, params, prepared);
   if (!(params.density > 0) || layer.region.length === 0) return { lines: [], loops: [] };
   const geom = regionGeom(layer.region);
   if (!(geom.area > 0)) return { lines: [], loops: [] };

@@ -3,11 +3,10 @@
  * skirt or brim (first layer), the support, and every island's walls, skin and infill.
  */
 import type { ExPolygon } from '../geometry/types.js';
-import type { InfillParams } from '../infill/types.js';
+import type { InfillParams, InfillPattern } from '../infill/types.js';
 import { lineWidthUm } from '../regions/layer-regions.js';
 import type { LayerRegions } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
-import type { CustomInfillGenerator } from '../shader/index.js';
 import { raftGroups, skirtOrBrim } from './adhesion-paths.js';
 import { islandGroup } from './island-paths.js';
 import { supportGroups } from './support-paths.js';
@@ -24,7 +23,8 @@ export interface LayerPathsContext {
   params: readonly InfillParams[];
   /** The pattern's whole-model data for this layer (lightning). */
   prepared?: unknown;
-  custom?: CustomInfillGenerator;
+  /** The slice's custom infill, which fills every region in place of its pattern. */
+  custom?: InfillPattern;
   /** Support areas of the layer below (skin resting on them is no bridge), µm. */
   supportBelow: readonly ExPolygon[];
   /** Added to the layer's Z (the raft under the model), mm. */

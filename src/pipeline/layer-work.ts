@@ -10,13 +10,12 @@
  * generator that yields after every layer, so the calling thread can report progress and stay responsive.
  */
 import type { ExPolygon } from '../geometry/types.js';
-import type { InfillParams } from '../infill/types.js';
+import type { InfillParams, InfillPattern } from '../infill/types.js';
 import { layerPaths, modelPaths, type LayerPathsContext } from '../paths/layer-paths.js';
 import type { LayerPaths } from '../paths/types.js';
 import { RegionsRun } from '../regions/layer-regions.js';
 import { outlinesOnly, type LayerRegions } from '../regions/types.js';
 import type { PrintSetup } from '../regions/objects.js';
-import type { CustomInfillGenerator } from '../shader/index.js';
 import type { PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
 
@@ -81,7 +80,7 @@ export function pathsContext(
   regions: LayerRegions,
   setup: PrintSetup,
   job: PathsParams,
-  custom: CustomInfillGenerator | undefined,
+  custom: InfillPattern | undefined,
   supportBelow: ExPolygon[],
   prepared?: unknown,
 ): LayerPathsContext {
@@ -103,7 +102,7 @@ export function pathsOf(
   regions: LayerRegions,
   setup: PrintSetup,
   job: PathsParams,
-  custom: CustomInfillGenerator | undefined,
+  custom: InfillPattern | undefined,
   supportBelow: ExPolygon[],
   prepared?: unknown,
 ): LayerPaths {
@@ -115,7 +114,7 @@ export function* rangeSteps(
   meshes: readonly PreparedMesh[],
   setup: PrintSetup,
   job: RangeJob,
-  custom?: CustomInfillGenerator,
+  custom?: InfillPattern,
   held?: RegionsHeld,
 ): Generator<void, RangeResult> {
   const regions: LayerRegions[] = [];
@@ -164,7 +163,7 @@ export function computeRange(
   meshes: readonly PreparedMesh[],
   setup: PrintSetup,
   job: RangeJob,
-  custom?: CustomInfillGenerator,
+  custom?: InfillPattern,
   held?: RegionsHeld,
 ): RangeResult {
   const steps = rangeSteps(meshes, setup, job, custom, held);

@@ -8,7 +8,8 @@
 import { StrataError } from '../errors.js';
 import { UM_PER_MM, type ExPolygon, type Pt } from '../geometry/types.js';
 import { writeGcodeSteps } from '../gcode/writer.js';
-import { PATTERNS } from '../infill/registry.js';
+import { isTransferable, loadCustomInfill, loadedCustomInfill, PATTERNS } from '../infill/registry.js';
+import type { CustomInfillSpec } from '../infill/patterns/custom.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import { withSharedGroups } from '../paths/layer-paths.js';
 import type { LayerPaths } from '../paths/types.js';
@@ -40,8 +41,6 @@ import {
   type RegionsHeld,
   type RegionsJob,
 } from './layer-work.js';
-import type { CustomInfillSpec } from './custom-infill.js';
-import { isTransferable, loadCustomInfill, loadedCustomInfill } from './custom-infill-loader.js';
 import { planObjects } from './objects.js';
 import type { PlacedObject, PlateSetup } from './print-setup.js';
 import { Pacer, paced, wait, type Steps } from './pacer.js';
@@ -297,7 +296,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
   const report = (stage: Progress['stage'], fraction: number) => opts.onProgress?.({ stage, fraction });
   try {
     const custom = opts.custom
-      ? (loadedCustomInfill() ?? (yield* wait(loadCustomInfill()))).customGenerator(opts.custom, cfg)
+      ? (loadedCustomInfill() ?? (yield* wait(loadCustomInfill()))).customPattern(opts.custom, cfg)
       : undefined;
     const twoPhase = needsRegionsFirst(setup, opts.custom);
     // progress: the layer work is 80 % of the run (regions and paths halves when there are two phases)

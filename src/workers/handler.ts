@@ -2,14 +2,16 @@
 import { StrataError } from '../errors.js';
 import type { PreparedMesh } from '../slice/index.js';
 import { computeRange, type RegionsHeld } from '../pipeline/layer-work.js';
-import type { CustomInfillGenerator } from '../shader/index.js';
+import { loadCustomInfill } from '../infill/registry.js';
+import type { InfillPattern } from '../infill/types.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { FromWorker, ToWorker } from './protocol.js';
 
 interface State {
   meshes: PreparedMesh[];
   setup: PrintSetup;
-  custom?: CustomInfillGenerator;
+  /** The slice's custom infill, compiled on this thread. */
+  custom?: InfillPattern;
   /** Regions kept for this worker's later 'held' jobs. */
   held: RegionsHeld;
 }
@@ -29,10 +31,10 @@ export function makeHandler(
       const { meshes, setup, custom } = msg;
       // the shader compiler loads only when a custom infill needs it
       state = custom
-        ? import('../pipeline/custom-infill.js').then((m) => ({
+        ? loadCustomInfill().then((m) => ({
             meshes,
             setup,
-            custom: m.customGenerator(custom, setup.configs[0]),
+            custom: m.customPattern(custom, setup.configs[0]),
             held: new Map(),
           }))
         : Promise.resolve({ meshes, setup, held: new Map() });

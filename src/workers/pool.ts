@@ -10,7 +10,7 @@ import type { PreparedMesh } from '../slice/index.js';
 import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { FromWorker } from './protocol.js';
-import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../infill/patterns/custom.js';
 import { nodeWorkerPort, webWorkerPort, type Port, type WebWorkerCtor } from './ports.js';
 
 /** Start one worker. */

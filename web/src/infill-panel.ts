@@ -3,7 +3,7 @@
  * a shader.glsl / cells.png the user loads, with the infiller's ui_ parameters. The shader compiler
  * loads in the worker the first time one is chosen; a shader that does not compile is shown in words.
  */
-import type { CustomInfillSpec } from '../../src/pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../../src/infill/patterns/custom.js';
 import { h } from './dom.js';
 import type { InfillerDescription } from './protocol.js';
 import type { CustomChoice, SettingsStore } from './settings.js';

@@ -3,7 +3,7 @@ import type { SettingKey, SliceOptions } from '../../src/settings/schema.js';
 import type { VolumeKind } from '../../src/mesh/types.js';
 import type { PreviewArrays } from '../../src/preview/plan-arrays.js';
 import type { Placement } from '../../src/mesh/placement.js';
-import type { CustomInfillSpec } from '../../src/pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../../src/infill/patterns/custom.js';
 
 /** Triangles as the slicer takes them (in the object's coordinates for a volume). */
 export interface MeshArrays {

@@ -15,7 +15,7 @@ import {
   type Config,
 } from '../../src/settings/resolve.js';
 import { SCHEMA, type SettingKey, type SliceOptions } from '../../src/settings/schema.js';
-import type { CustomInfillSpec } from '../../src/pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../../src/infill/patterns/custom.js';
 
 /** A custom infiller: one shipped with Strata (by name) or a file the user loaded. */
 export interface CustomChoice {
@@ -183,7 +183,7 @@ export class SettingsStore {
     }
     if (saved.overrides && typeof saved.overrides === 'object') {
       for (const [k, v] of Object.entries(saved.overrides)) {
-        if (!Object.prototype.hasOwnProperty.call(SCHEMA, k)) continue;
+        if (!Object.hasOwn(SCHEMA, k)) continue;
         try {
           this.overrides[k as SettingKey] = validateValue(k as SettingKey, v, 'setting');
         } catch {
