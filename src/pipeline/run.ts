@@ -40,7 +40,7 @@ import {
   type RangeResult,
   type RegionsHeld,
   type RegionsJob,
-} from './layer-work.js';
+} from '../workers/layer-work.js';
 import { planObjects } from './objects.js';
 import type { PlacedObject, PlateSetup } from './print-setup.js';
 import { Pacer, paced, wait, type Steps } from './pacer.js';

@@ -1,7 +1,7 @@
 /** The worker side, independent of the host: keeps the mesh and config, runs range jobs. */
 import { StrataError } from '../errors.js';
 import type { PreparedMesh } from '../slice/index.js';
-import { computeRange, type RegionsHeld } from '../pipeline/layer-work.js';
+import { computeRange, type RegionsHeld } from './layer-work.js';
 import { loadCustomInfill } from '../infill/registry.js';
 import type { InfillPattern } from '../infill/types.js';
 import type { PrintSetup } from '../regions/objects.js';

@@ -7,7 +7,7 @@
 import { cancelled, StrataError } from '../errors.js';
 import { isNode, soon } from '../runtime.js';
 import type { PreparedMesh } from '../slice/index.js';
-import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
+import type { RangeJob, RangeResult } from './layer-work.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { FromWorker } from './protocol.js';
 import type { CustomInfillSpec } from '../infill/patterns/custom.js';

@@ -12,7 +12,7 @@ import { prepareModel } from '#strata/api/slicer.js';
 import { resolveConfig } from '#strata/settings/resolve.js';
 import { plainSetup } from '#strata/regions/objects.js';
 import { planLayers, prepareMesh } from '#strata/slice/index.js';
-import { computeRange, type RangeJob, type RangeResult } from '#strata/pipeline/layer-work.js';
+import { computeRange, type RangeJob, type RangeResult } from '#strata/workers/layer-work.js';
 import { makeHandler } from '#strata/workers/handler.js';
 import { createPool, startWorkers } from '#strata/workers/pool.js';
 import { webWorkerPort, type WebWorkerEvent, type WebWorkerLike } from '#strata/workers/ports.js';

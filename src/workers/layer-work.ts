@@ -1,5 +1,6 @@
 /**
- * The per-layer work of the pipeline, as jobs over ranges of layers that run the same inline or in a worker:
+ * The per-layer work of the pipeline, as jobs over ranges of layers that run the same on the calling thread
+ * or in a worker (it lives here, with the workers, so that the pipeline reads the workers and not back):
  * - 'regions': slice the objects and compute every layer's regions (for the whole-model passes), and with
  *   `modelPaths` each layer's model paths too, when they do not wait for those passes (support alone);
  * - 'paths': turn regions (after support, lightning and raft passes) into path groups;
