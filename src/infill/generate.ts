@@ -15,7 +15,7 @@
  * them thinned the lines of small regions by 10–15 %. Patterns that change with Z on purpose ('volume':
  * gyroid, cubic) run once, so their period stays the same from layer to layer and the 3D structure is kept.
  */
-import { hypot, type Pt } from '../geometry/types.js';
+import { hypot, type Polyline, type Pt } from '../geometry/types.js';
 import type { InfillLayerInput, InfillParams, InfillPattern, InfillResult, PatternId } from './types.js';
 import { PATTERNS } from './registry.js';
 import { type RegionGeom, type RegionIndex, indexRegion, regionGeom } from './region-index.js';
@@ -66,7 +66,7 @@ function runPattern(
   pattern: InfillPattern,
   layer: InfillLayerInput,
   params: InfillParams,
-  prepared: unknown,
+  prepared: Polyline[] | undefined,
   ctx: Ctx,
   factor: number,
 ): Run {
@@ -101,7 +101,7 @@ function runCorrected(
   pattern: InfillPattern,
   layer: InfillLayerInput,
   params: InfillParams,
-  prepared: unknown,
+  prepared: Polyline[] | undefined,
   ctx: Ctx,
 ): Run {
   const d = params.density;
@@ -152,7 +152,7 @@ export function generateInfill(
   patternOrId: PatternId | InfillPattern,
   layer: InfillLayerInput,
   params: InfillParams,
-  prepared?: unknown,
+  prepared?: Polyline[],
   start?: Pt,
 ): InfillResult {
   const pattern: InfillPattern | undefined = typeof patternOrId === 'string' ? PATTERNS[patternOrId] : patternOrId;

@@ -115,9 +115,9 @@ export interface InfillPattern {
   /** Z period of a 'volume' pattern, mm. */
   zPeriod?(params: InfillParams): number;
   /**
-   * Optional whole-object pass run once before the per-layer calls (lightning's trees).
-   * Returns one plain-data value per layer, handed back to `generate` as `prepared`.
+   * Optional whole-model pass run once before the per-layer calls (lightning's trees): the lines it draws
+   * on each layer, handed back to `generate` as that layer's `prepared`.
    */
-  prepare?(model: InfillModelInput, params: InfillParams): unknown[];
-  generate(layer: InfillLayerInput, params: InfillParams, prepared?: unknown): PatternOutput;
+  prepare?(model: InfillModelInput, params: InfillParams): Polyline[][];
+  generate(layer: InfillLayerInput, params: InfillParams, prepared?: Polyline[]): PatternOutput;
 }

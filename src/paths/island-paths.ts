@@ -5,7 +5,7 @@
  * flagged so the planner slows them / prints them as bridges.
  */
 import { area, difference, flatten, offset, opening } from '../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
+import { UM_PER_MM, type ExPolygon, type Polygon, type Polyline, type Pt } from '../geometry/types.js';
 import { generateInfill, regionPattern } from '../infill/index.js';
 import type { InfillParams, InfillPattern, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
@@ -31,7 +31,7 @@ export interface IslandContext {
   /** The object's infill parameters (a region's config changes their density, angle and linking). */
   params: InfillParams;
   /** The pattern's whole-model data for this layer (lightning), if any. */
-  prepared?: unknown;
+  prepared?: Polyline[];
   /** The slice's custom infill, which fills every region in place of its pattern. */
   custom?: InfillPattern;
   /** Area of the layer below that support holds up (its bottom skin there is not a bridge), µm. */

@@ -6,7 +6,7 @@
  * one go. The calling thread paces its own work (progress per layer, an abort acts within a time slice).
  */
 import { StrataError } from '../errors.js';
-import { UM_PER_MM, type ExPolygon, type Pt } from '../geometry/types.js';
+import { UM_PER_MM, type ExPolygon, type Polyline, type Pt } from '../geometry/types.js';
 import { writeGcodeSteps } from '../gcode/writer.js';
 import { isTransferable, loadCustomInfill, loadedCustomInfill, PATTERNS } from '../infill/registry.js';
 import type { CustomInfillSpec } from '../infill/patterns/custom.js';
@@ -21,7 +21,7 @@ import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
 import { layerSparse, layerTopSkin } from '../regions/layer-regions.js';
 import { raftUnder } from '../regions/raft.js';
 import { objectsSupportPass } from '../support/index.js';
-import type { LayerRegions } from '../regions/types.js';
+import type { LayerOutlines } from '../regions/types.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { Config } from '../settings/resolve.js';
 import { evenLayers, prepareMesh as prepareForSlicing, type PreparedMesh } from '../slice/index.js';
@@ -35,11 +35,17 @@ import {
   pathsOf,
   rangeSteps,
   type HeldJob,
+  type LayerWork,
+  type OutlinesJob,
   type PathsParams,
   type RangeJob,
-  type RangeResult,
-  type RegionsHeld,
+  type LayersJob,
+  type OutlinesResult,
+  type PathsJob,
+  type PathsResult,
   type RegionsJob,
+  type RegionsResult,
+  type ResultOf,
 } from '../workers/layer-work.js';
 import { planObjects } from './objects.js';
 import type { PlacedObject, PlateSetup } from './print-setup.js';
@@ -164,7 +170,7 @@ interface Runner {
   /** The calling thread computes no range (they all go to the pool). */
   plansOnly: boolean;
   /** Computes a job on the calling thread, step by step (a pause after each layer). */
-  local: (job: RangeJob) => Steps<RangeResult>;
+  local: <J extends RangeJob>(job: J) => Steps<ResultOf<J>>;
   pacer: Pacer;
   signal?: AbortSignal;
 }
@@ -173,10 +179,10 @@ interface Runner {
  * Run the jobs; `onResult` sees each result as it arrives (in any order with a pool), with where it was
  * computed (a worker's index, or -1 on this thread).
  */
-function* runJobs(
-  jobs: RangeJob[],
+function* runJobs<J extends RangeJob>(
+  jobs: J[],
   runner: Runner,
-  onResult: (id: number, r: RangeResult, where: number) => void,
+  onResult: (id: number, r: ResultOf<J>, where: number) => void,
 ): Steps<void> {
   const { pool, local, pacer } = runner;
   pacer.check();
@@ -307,21 +313,14 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       report('slicing', (0.8 * doneLayers) / total);
     };
     // regions this thread keeps for its own 'held' jobs
-    const heldHere: RegionsHeld = new Map();
+    const work: LayerWork = { meshes: prepared, setup, custom, held: new Map() };
     const runner: Runner = {
       pool,
       plansOnly: plansOnly && pool !== null,
       pacer,
       signal,
-      local: function* (job) {
-        // a paths or held job reads its regions, not the meshes
-        const steps = rangeSteps(
-          job.kind === 'paths' || job.kind === 'held' ? [] : prepared(),
-          setup,
-          job,
-          custom,
-          heldHere,
-        );
+      local: function* <J extends RangeJob>(job: J): Steps<ResultOf<J>> {
+        const steps = rangeSteps(work, job);
         for (;;) {
           const s = steps.next();
           if (s.done) return s.value;
@@ -363,7 +362,7 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       if (lp.vase && lp.index > 0 && !layerPlan.spiral) vaseFlat.push({ layer: planned.length, z: lp.z });
       planned.push(layerPlan);
     };
-    let jobs: RangeJob[] = [];
+    let jobs: Array<LayersJob | PathsJob> = [];
     if (twoPhase) {
       const lightningCfg = wholeModelInfill(setup, opts.custom);
       const lightning = !!lightningCfg;
@@ -376,22 +375,24 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       // With workers and support, each range keeps its regions where they were made, and the workers make
       // their ranges' model paths while this thread runs the support pass (which they would wait for idle).
       const hold = !!modelPaths && !!pool && anySupport(setup);
-      const regionJobs: RegionsJob[] = split.map(([from, to]) => ({
-        kind: 'regions',
-        layers,
-        from,
-        to,
-        modelPaths: hold ? undefined : modelPaths,
-        hold,
-      }));
-      const regionResults: RangeResult[] = [];
+      const regionJobs: Array<RegionsJob | OutlinesJob> = split.map(([from, to]) =>
+        !modelPaths
+          ? { kind: 'regions', layers, from, to }
+          : hold
+            ? { kind: 'outlines', layers, from, to, then: 'hold' }
+            : { kind: 'outlines', layers, from, to, then: 'paths', modelPaths },
+      );
+      const regionResults: Array<RegionsResult | OutlinesResult> = [];
       const where: number[] = [];
       yield* runJobs(regionJobs, runner, (id, r, w) => {
         regionResults[id] = r;
         where[id] = w;
         jobDone(regionJobs[id]);
       });
-      const regions = regionResults.flatMap((r) => r.regions);
+      // every layer's full regions (for the paths jobs), or only their outlines (the model paths are made)
+      const full = early ? null : regionResults.flatMap((r) => (r as RegionsResult).regions);
+      const regions: LayerOutlines[] = full ?? regionResults.flatMap((r) => (r as OutlinesResult).outlines);
+      const modelMade = early ? regionResults.map((r) => (r as OutlinesResult).paths) : [];
       // every layer is sliced: the meshes' slicing structures go (the calling thread's copy; the pool's with it)
       meshes = null;
       report('support', 0.4);
@@ -425,10 +426,10 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
         for (let id = 0; id < regionJobs.length; id++)
           if (where[id] < 0) heldPaths[id] = (yield* runner.local(heldJob(id))).paths;
         yield* wait(heldRun!);
-        for (let id = 0; id < regionJobs.length; id++) regionResults[id].paths = heldPaths[id];
+        for (let id = 0; id < regionJobs.length; id++) modelMade[id] = heldPaths[id];
       }
-      let preparedInfill: unknown[] | undefined;
-      if (lightningCfg) {
+      let preparedInfill: Polyline[][] | undefined;
+      if (lightningCfg && full) {
         // every region printed with the pattern, with the first such region's density
         const pattern = lightningCfg.infillPattern;
         const ofPattern =
@@ -436,13 +437,13 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
         const density = lightningCfg.infillDensity / 100;
         preparedInfill = PATTERNS[pattern as PatternId].prepare!(
           {
-            layers: regions.map((r) => ({
+            layers: full.map((r) => ({
               layerIndex: r.index,
               z: r.z,
               layerHeight: r.height,
               region: layerSparse(r, ofPattern),
             })),
-            supportNeeded: regions.map((_, i) => (i + 1 < regions.length ? layerTopSkin(regions[i + 1]) : [])),
+            supportNeeded: full.map((_, i) => (i + 1 < full.length ? layerTopSkin(full[i + 1]) : [])),
           },
           infillParams[0].density === density ? infillParams[0] : { ...infillParams[0], density },
         );
@@ -454,15 +455,15 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
         for (const r of raft.layers) plan(pathsOf(r, setup, raftParams, custom, []));
       }
       if (early) {
-        const model = regionResults.flatMap((r) => r.paths);
+        const model = modelMade.flat();
         for (let i = 0; i < regions.length; i++) {
           plan(withSharedGroups(model[i], regions[i], pathsContext(regions[i], setup, common, custom, [])));
           layerDone(1);
           yield;
         }
-      } else {
+      } else if (full) {
         // the support of layer i − 1 where it holds layer i with no gap
-        const supportOf = (r: LayerRegions | undefined, i: number): ExPolygon[] => {
+        const supportOf = (r: LayerOutlines | undefined, i: number): ExPolygon[] => {
           if (!r?.support) return [];
           const held = (o: number) => noTopGap(setup.configs[setup.objects[o].config], layers, uneven, i);
           if (!r.supports) return held(0) ? [...r.support.body, ...r.support.roof] : [];
@@ -474,16 +475,16 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
           from,
           to,
           ...common,
-          regions: regions.slice(from, to),
-          supportBelow: regions.slice(from, to).map((_, k) => supportOf(regions[from + k - 1], from + k)),
-          prepared: preparedInfill?.slice(from, to),
+          regions: full.slice(from, to),
+          supportBelow: full.slice(from, to).map((_, k) => supportOf(full[from + k - 1], from + k)),
+          infillLines: preparedInfill?.slice(from, to),
         }));
       }
     } else {
       jobs = split.map(([from, to]) => ({ kind: 'layers', layers, from, to, ...common }));
     }
 
-    const arrived: Array<RangeResult | undefined> = new Array(jobs.length);
+    const arrived: Array<PathsResult | undefined> = new Array(jobs.length);
     let nextToPlan = 0;
     if (jobs.length) {
       yield* runJobs(jobs, runner, (id, r) => {

@@ -4,20 +4,20 @@
  * made with the object's settings, so that it prints (and is cancelled) with the object.
  */
 import type { Config } from '../settings/resolve.js';
-import type { LayerRegions, SupportAreas } from '../regions/types.js';
+import type { LayerOutlines, SupportAreas } from '../regions/types.js';
 import { ModelLayers } from './model-layers.js';
 import { normalSupport } from './normal.js';
 import { treeSupport } from './tree.js';
 
 /** Compute every layer's support (written to `layers[j].support`); yields between layers. */
-export function* supportPass(layers: LayerRegions[], cfg: Config): Generator<void, void> {
+export function* supportPass(layers: LayerOutlines[], cfg: Config): Generator<void, void> {
   if (!cfg.supportEnabled) return;
   const areas = yield* supportAreas(layers, cfg);
   if (areas) for (let j = 0; j < layers.length; j++) layers[j].support = areas[j];
 }
 
 /** The support of the layers' overhangs with one config (null when nothing overhangs). */
-function* supportAreas(layers: readonly LayerRegions[], cfg: Config): Generator<void, (SupportAreas | null)[] | null> {
+function* supportAreas(layers: readonly LayerOutlines[], cfg: Config): Generator<void, (SupportAreas | null)[] | null> {
   if (layers.length === 0 || !layers.some((l) => l.overhang.length > 0)) return null;
   const model = new ModelLayers(layers, cfg);
   const areas: SupportAreas[] = yield* cfg.supportType === 'tree' ? treeSupport(model) : normalSupport(model);
@@ -33,7 +33,7 @@ function* supportAreas(layers: readonly LayerRegions[], cfg: Config): Generator<
  * One object: `support` as before. Several: `supports[o]` per object and `support` all of them together.
  */
 export function* objectsSupportPass(
-  layers: LayerRegions[],
+  layers: LayerOutlines[],
   configs: readonly Config[],
   objectConfigs: readonly number[],
 ): Generator<void, void> {

@@ -1,21 +1,24 @@
 /**
  * The per-layer work of the pipeline, as jobs over ranges of layers that run the same on the calling thread
  * or in a worker (it lives here, with the workers, so that the pipeline reads the workers and not back):
- * - 'regions': slice the objects and compute every layer's regions (for the whole-model passes), and with
- *   `modelPaths` each layer's model paths too, when they do not wait for those passes (support alone);
- * - 'paths': turn regions (after support, lightning and raft passes) into path groups;
- * - 'held': the model paths of a range whose 'regions' job (with `hold`) left its regions on the same thread,
- *   so that they are made while the calling thread runs the support pass;
- * - 'layers': both at once, when no whole-model pass needs the regions of every layer first.
+ * - 'layers': slice the objects, make each layer's regions and at once its paths, when no whole-model pass
+ *   needs every layer's regions first;
+ * - 'regions': every layer's regions, for the whole-model passes and then a 'paths' job;
+ * - 'outlines': every layer's regions, of which only the outlines come back (what the support and raft
+ *   passes and the skirt read), after each layer's model paths are made with them (`then: 'paths'`), or
+ *   with the regions kept on this thread for a 'held' job (`then: 'hold'`);
+ * - 'held': the model paths of the regions an 'outlines' job kept on this thread, made while the calling
+ *   thread runs the support pass;
+ * - 'paths': the paths of every layer from its regions and what the whole-model passes made for it.
  * This file only orchestrates: the regions stage is in regions/, the paths stage in paths/. Each job is a
  * generator that yields after every layer, so the calling thread can report progress and stay responsive.
  */
-import type { ExPolygon } from '../geometry/types.js';
+import type { ExPolygon, Polyline } from '../geometry/types.js';
 import type { InfillParams, InfillPattern } from '../infill/types.js';
 import { layerPaths, modelPaths, type LayerPathsContext } from '../paths/layer-paths.js';
 import type { LayerPaths } from '../paths/types.js';
 import { RegionsRun } from '../regions/layer-regions.js';
-import { outlinesOnly, type LayerRegions } from '../regions/types.js';
+import { outlinesOf, type LayerOutlines, type LayerRegions } from '../regions/types.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { PreparedMesh } from '../slice/index.js';
 import type { LayerZ } from '../slice/types.js';
@@ -25,23 +28,6 @@ interface JobBase {
   from: number;
   to: number;
 }
-
-export interface RegionsJob extends JobBase {
-  kind: 'regions';
-  /** Also make each layer's model paths (without support and skirt, which follow the support pass). */
-  modelPaths?: PathsParams;
-  /** Keep each layer's regions on this thread for a later 'held' job of the same range (outlines are returned). */
-  hold?: boolean;
-}
-
-/** The model paths of the regions a 'regions' job with `hold` kept on this thread. */
-export interface HeldJob extends JobBase {
-  kind: 'held';
-  modelPaths: PathsParams;
-}
-
-/** Regions kept by 'regions' jobs with `hold`, by the first layer of their range. */
-export type RegionsHeld = Map<number, LayerRegions[]>;
 
 /** What the paths stage needs besides the regions. */
 export interface PathsParams {
@@ -53,48 +39,100 @@ export interface PathsParams {
   adhesion: boolean;
 }
 
-export interface PathsJob extends JobBase, PathsParams {
-  kind: 'paths';
-  /** Regions of layers [from, to). */
-  regions: LayerRegions[];
-  /** Per layer of the range: support areas of the layer below, µm. */
-  supportBelow: ExPolygon[][];
-  /** Per layer of the range: the pattern's whole-model data (lightning). */
-  prepared?: unknown[];
-}
-
 export interface LayersJob extends JobBase, PathsParams {
   kind: 'layers';
 }
 
-export type RangeJob = RegionsJob | PathsJob | LayersJob | HeldJob;
+export interface RegionsJob extends JobBase {
+  kind: 'regions';
+}
 
-export interface RangeResult {
-  /** For 'regions' jobs. */
+export type OutlinesJob = JobBase & { kind: 'outlines' } & (
+    | {
+        /** Make each layer's model paths (without support and skirt, which follow the support pass). */
+        then: 'paths';
+        modelPaths: PathsParams;
+      }
+    | {
+        /** Keep each layer's regions on this thread for a later 'held' job of the same range. */
+        then: 'hold';
+      }
+  );
+
+/** The model paths of the regions an 'outlines' job with `then: 'hold'` kept on this thread. */
+export interface HeldJob extends JobBase {
+  kind: 'held';
+  modelPaths: PathsParams;
+}
+
+export interface PathsJob extends JobBase, PathsParams {
+  kind: 'paths';
+  /** Regions of layers [from, to). */
   regions: LayerRegions[];
-  /** For 'paths', 'layers' and 'held' jobs, and 'regions' jobs with `modelPaths`. */
+  /** Per layer of the range: support areas of the layer below where they hold it with no gap, µm. */
+  supportBelow: ExPolygon[][];
+  /** Per layer of the range: the whole-model infill's lines on it (lightning's trees), µm. */
+  infillLines?: Polyline[][];
+}
+
+export type RangeJob = LayersJob | RegionsJob | OutlinesJob | HeldJob | PathsJob;
+
+export interface RegionsResult {
+  regions: LayerRegions[];
+}
+
+export interface OutlinesResult {
+  outlines: LayerOutlines[];
+  /** The model paths made with the regions ([] when they are held). */
   paths: LayerPaths[];
+}
+
+export interface PathsResult {
+  paths: LayerPaths[];
+}
+
+/** What a job gives back. */
+export type ResultOf<J extends RangeJob> = J extends RegionsJob
+  ? RegionsResult
+  : J extends OutlinesJob
+    ? OutlinesResult
+    : PathsResult;
+
+export type RangeResult = ResultOf<RangeJob>;
+
+/** Regions kept by 'outlines' jobs that hold them, by the first layer of their range. */
+export type RegionsHeld = Map<number, LayerRegions[]>;
+
+/** What a thread (a worker, or the calling thread) keeps for the jobs of one slice. */
+export interface LayerWork {
+  /** The objects' meshes prepared for slicing (asked for only by the jobs that slice). */
+  meshes(): readonly PreparedMesh[];
+  setup: PrintSetup;
+  /** The slice's custom infill, compiled on this thread. */
+  custom?: InfillPattern;
+  /** Regions kept on this thread for its 'held' jobs. */
+  held: RegionsHeld;
 }
 
 /** What the paths stage of one layer is given. */
 export function pathsContext(
-  regions: LayerRegions,
+  layer: LayerZ,
   setup: PrintSetup,
   job: PathsParams,
   custom: InfillPattern | undefined,
   supportBelow: ExPolygon[],
-  prepared?: unknown,
+  infillLines?: Polyline[],
 ): LayerPathsContext {
   return {
     cfg: setup.configs[0],
     configs: setup.configs,
     objectConfigs: setup.objects.map((o) => o.config),
     params: job.infillParams,
-    prepared,
+    prepared: infillLines,
     custom,
     supportBelow,
     zOffset: job.zOffset,
-    adhesion: job.adhesion && regions.index === 0,
+    adhesion: job.adhesion && layer.index === 0,
   };
 }
 
@@ -105,69 +143,64 @@ export function pathsOf(
   job: PathsParams,
   custom: InfillPattern | undefined,
   supportBelow: ExPolygon[],
-  prepared?: unknown,
+  infillLines?: Polyline[],
 ): LayerPaths {
-  return layerPaths(regions, pathsContext(regions, setup, job, custom, supportBelow, prepared));
+  return layerPaths(regions, pathsContext(regions, setup, job, custom, supportBelow, infillLines));
 }
 
-/** Run a job, yielding after each layer; returns its result. `held` keeps the thread's held regions. */
-export function* rangeSteps(
-  meshes: readonly PreparedMesh[],
-  setup: PrintSetup,
-  job: RangeJob,
-  custom?: InfillPattern,
-  held?: RegionsHeld,
-): Generator<void, RangeResult> {
-  const regions: LayerRegions[] = [];
+/** The model paths of one layer (no support, no skirt: they join after the support pass). */
+function modelPathsOf(regions: LayerRegions, work: LayerWork, params: PathsParams): LayerPaths {
+  return modelPaths(regions, pathsContext(regions, work.setup, params, work.custom, []));
+}
+
+/** Run a job, yielding after each layer; returns its result. */
+export function rangeSteps<J extends RangeJob>(work: LayerWork, job: J): Generator<void, ResultOf<J>>;
+export function* rangeSteps(work: LayerWork, job: RangeJob): Generator<void, RangeResult> {
+  const { setup, custom } = work;
   const paths: LayerPaths[] = [];
   if (job.kind === 'held') {
-    const kept = held?.get(job.from);
+    const kept = work.held.get(job.from);
     if (!kept || kept.length !== job.to - job.from) throw new Error(`no regions held for layers ${job.from}-${job.to}`);
-    held!.delete(job.from);
+    work.held.delete(job.from);
     for (let k = 0; k < kept.length; k++) {
-      paths.push(modelPaths(kept[k], pathsContext(kept[k], setup, job.modelPaths, custom, [])));
+      paths.push(modelPathsOf(kept[k], work, job.modelPaths));
       yield;
     }
-    return { regions, paths };
+    return { paths };
   }
   if (job.kind === 'paths') {
     for (let k = 0; k < job.regions.length; k++) {
-      paths.push(pathsOf(job.regions[k], setup, job, custom, job.supportBelow[k] ?? [], job.prepared?.[k]));
+      paths.push(pathsOf(job.regions[k], setup, job, custom, job.supportBelow[k] ?? [], job.infillLines?.[k]));
       yield;
     }
-    return { regions, paths };
+    return { paths };
   }
-  const run = new RegionsRun(meshes, setup, job.layers, job.from, job.to);
+  const regions: LayerRegions[] = [];
+  const outlines: LayerOutlines[] = [];
+  let kept: LayerRegions[] | undefined;
+  if (job.kind === 'outlines' && job.then === 'hold') work.held.set(job.from, (kept = []));
+  const run = new RegionsRun(work.meshes(), setup, job.layers, job.from, job.to);
   for (let i = job.from; i < job.to; i++) {
     const r = run.layer(i);
-    if (job.kind === 'regions') {
-      if (job.hold) {
-        if (!held) throw new Error('a regions job that holds its regions needs somewhere to keep them');
-        let kept = held.get(job.from);
-        if (!kept) held.set(job.from, (kept = []));
-        kept.push(r);
-        regions.push(outlinesOnly(r));
-      } else if (job.modelPaths) {
-        // made while the layer's regions are at hand, after which only the outlines are kept
-        paths.push(modelPaths(r, pathsContext(r, setup, job.modelPaths, custom, [])));
-        regions.push(outlinesOnly(r));
-      } else regions.push(r);
-    } else paths.push(pathsOf(r, setup, job, custom, []));
+    if (job.kind === 'layers') paths.push(pathsOf(r, setup, job, custom, []));
+    else if (job.kind === 'regions') regions.push(r);
+    else {
+      // the model paths made while the layer's regions are at hand, or the regions kept here for them
+      if (job.then === 'paths') paths.push(modelPathsOf(r, work, job.modelPaths));
+      else kept!.push(r);
+      outlines.push(outlinesOf(r));
+    }
     run.release(i);
     yield;
   }
-  return { regions, paths };
+  if (job.kind === 'layers') return { paths };
+  if (job.kind === 'regions') return { regions };
+  return { outlines, paths };
 }
 
 /** Run a job to its end. */
-export function computeRange(
-  meshes: readonly PreparedMesh[],
-  setup: PrintSetup,
-  job: RangeJob,
-  custom?: InfillPattern,
-  held?: RegionsHeld,
-): RangeResult {
-  const steps = rangeSteps(meshes, setup, job, custom, held);
+export function computeRange<J extends RangeJob>(work: LayerWork, job: J): ResultOf<J> {
+  const steps = rangeSteps(work, job);
   for (;;) {
     const s = steps.next();
     if (s.done) return s.value;
