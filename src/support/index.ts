@@ -1,7 +1,8 @@
 /**
- * The support pass: a whole-model pass over the layers' regions (their sections and overhangs) that fills
- * in each layer's support areas, normal or tree. With several objects each object's support is its own,
- * made with the object's settings, so that it prints (and is cancelled) with the object.
+ * The support pass: a whole-model pass over the layers' outlines (their sections and overhangs) that finds
+ * each layer's support areas, normal or tree (the pipeline runs it: pipeline/passes.ts). With several
+ * objects each object's support is its own, made with the object's settings, so that it prints (and is
+ * cancelled) with the object.
  */
 import type { Config } from '../settings/resolve.js';
 import type { LayerOutlines, SupportAreas } from '../regions/types.js';
@@ -27,20 +28,28 @@ function* supportAreas(layers: readonly LayerOutlines[], cfg: Config): Generator
   });
 }
 
+/** What the support pass gives one layer: its support areas, and with several objects each one's. */
+export interface LayerSupport {
+  /** The layer's support (with several objects, all of theirs together), or null: none. */
+  support: SupportAreas | null;
+  /** With several objects: per object, its own support (which prints, and is cancelled, with it). */
+  supports?: (SupportAreas | null)[];
+}
+
 /**
- * The support of every object, each with its own config (`objectConfigs[o]` indexes `configs`). An object
- * has overhangs only where its support is on or enforced (the regions stage), so this holds up exactly those.
- * One object: `support` as before. Several: `supports[o]` per object and `support` all of them together.
+ * The support of every object, each with its own config (`objectConfigs[o]` indexes `configs`), per layer
+ * (null: the layer keeps what it has). An object has overhangs only where its support is on or enforced (the
+ * regions stage), so this holds up exactly those. One object: `support`. Several: `supports[o]` per object
+ * and `support` all of them together.
  */
-export function* objectsSupportPass(
-  layers: LayerOutlines[],
+export function* objectsSupport(
+  layers: readonly LayerOutlines[],
   configs: readonly Config[],
   objectConfigs: readonly number[],
-): Generator<void, void> {
+): Generator<void, (LayerSupport | null)[]> {
   if (!layers.some((l) => l.overhangs)) {
     const areas = yield* supportAreas(layers, configs[objectConfigs[0] ?? 0]);
-    if (areas) for (let j = 0; j < layers.length; j++) layers[j].support = areas[j];
-    return;
+    return layers.map((_, j) => (areas ? { support: areas[j] } : null));
   }
   const perObject: ((SupportAreas | null)[] | null)[] = [];
   for (let o = 0; o < objectConfigs.length; o++) {
@@ -48,12 +57,19 @@ export function* objectsSupportPass(
     const view = layers.map((l) => ({ ...l, overhang: l.overhangs?.[o] ?? [] }));
     perObject.push(yield* supportAreas(view, configs[objectConfigs[o]]));
   }
-  if (perObject.every((p) => p === null)) return;
-  for (let j = 0; j < layers.length; j++) {
+  return layers.map((_, j) => {
     const own = perObject.map((p) => p?.[j] ?? null);
-    if (own.every((a) => a === null)) continue;
-    layers[j].supports = own;
-    layers[j].support = mergeAreas(own);
+    return own.every((a) => a === null) ? null : { support: mergeAreas(own), supports: own };
+  });
+}
+
+/** Write what the support pass gave each layer onto it, where the raft, the skirt and the paths read it. */
+export function attachSupport(layers: readonly LayerOutlines[], support: readonly (LayerSupport | null)[]): void {
+  for (let j = 0; j < layers.length; j++) {
+    const s = support[j];
+    if (!s) continue;
+    layers[j].support = s.support;
+    if (s.supports) layers[j].supports = s.supports;
   }
 }
 

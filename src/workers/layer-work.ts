@@ -5,8 +5,8 @@
  *   needs every layer's regions first;
  * - 'regions': every layer's regions, for the whole-model passes and then a 'paths' job;
  * - 'outlines': every layer's regions, of which only the outlines come back (what the support and raft
- *   passes and the skirt read), after each layer's model paths are made with them (`then: 'paths'`), or
- *   with the regions kept on this thread for a 'held' job (`then: 'hold'`);
+ *   passes and the skirt read), after each layer's model paths are made with them, or with the regions kept
+ *   on this thread for a 'held' job (`hold`);
  * - 'held': the model paths of the regions an 'outlines' job kept on this thread, made while the calling
  *   thread runs the support pass;
  * - 'paths': the paths of every layer from its regions and what the whole-model passes made for it.
@@ -47,19 +47,13 @@ export interface RegionsJob extends JobBase {
   kind: 'regions';
 }
 
-export type OutlinesJob = JobBase & { kind: 'outlines' } & (
-    | {
-        /** Make each layer's model paths (without support and skirt, which follow the support pass). */
-        then: 'paths';
-        modelPaths: PathsParams;
-      }
-    | {
-        /** Keep each layer's regions on this thread for a later 'held' job of the same range. */
-        then: 'hold';
-      }
-  );
+/**
+ * Every layer's outlines, after making its model paths (without support and skirt, which follow the support
+ * pass) with `modelPaths`, or with its regions kept on this thread for a later 'held' job of the range (`hold`).
+ */
+export type OutlinesJob = JobBase & { kind: 'outlines' } & ({ hold: false; modelPaths: PathsParams } | { hold: true });
 
-/** The model paths of the regions an 'outlines' job with `then: 'hold'` kept on this thread. */
+/** The model paths of the regions an 'outlines' job with `hold` kept on this thread. */
 export interface HeldJob extends JobBase {
   kind: 'held';
   modelPaths: PathsParams;
@@ -178,7 +172,7 @@ export function* rangeSteps(work: LayerWork, job: RangeJob): Generator<void, Ran
   const regions: LayerRegions[] = [];
   const outlines: LayerOutlines[] = [];
   let kept: LayerRegions[] | undefined;
-  if (job.kind === 'outlines' && job.then === 'hold') work.held.set(job.from, (kept = []));
+  if (job.kind === 'outlines' && job.hold) work.held.set(job.from, (kept = []));
   const run = new RegionsRun(work.meshes(), setup, job.layers, job.from, job.to);
   for (let i = job.from; i < job.to; i++) {
     const r = run.layer(i);
@@ -186,7 +180,7 @@ export function* rangeSteps(work: LayerWork, job: RangeJob): Generator<void, Ran
     else if (job.kind === 'regions') regions.push(r);
     else {
       // the model paths made while the layer's regions are at hand, or the regions kept here for them
-      if (job.then === 'paths') paths.push(modelPathsOf(r, work, job.modelPaths));
+      if (!job.hold) paths.push(modelPathsOf(r, work, job.modelPaths));
       else kept!.push(r);
       outlines.push(outlinesOf(r));
     }

@@ -199,7 +199,7 @@ test('regions held where they were made: the held jobs placed on those workers g
     layers,
     from: j.from,
     to: j.to,
-    then: 'hold',
+    hold: true,
   }));
   const p = await pool('ok', 2);
   const where: number[] = [];
@@ -211,7 +211,7 @@ test('regions held where they were made: the held jobs placed on those workers g
   await p.run(held, { placement: where, onResult: (id, r, w) => ((paths[id] = r), assert.equal(w, where[id])) });
   // what an outlines job that makes the model paths gives on the calling thread
   const inOneGo = jobs.map((j) =>
-    local<OutlinesJob>({ kind: 'outlines', layers, from: j.from, to: j.to, then: 'paths', modelPaths }),
+    local<OutlinesJob>({ kind: 'outlines', layers, from: j.from, to: j.to, hold: false, modelPaths }),
   );
   assert.deepEqual(
     paths.map((r) => r.paths),
