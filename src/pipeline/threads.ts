@@ -163,11 +163,10 @@ export function* startThreads(
     opts.signal,
   );
   try {
-    if (opts.custom)
-      threads.here.custom = (loadedCustomInfill() ?? (yield* wait(loadCustomInfill()))).customPattern(
-        opts.custom,
-        s.cfg,
-      );
+    if (opts.custom) {
+      const custom = loadedCustomInfill() ?? (yield* wait(loadCustomInfill()));
+      threads.here.custom = custom.customPattern(opts.custom, s.cfg);
+    }
   } catch (e) {
     yield* threads.close();
     throw e;
