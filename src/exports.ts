@@ -79,8 +79,8 @@ export { VERSION } from './pipeline/run.js';
 // streaming G-code to a Marlin printer over a serial line (Web Serial in a page, a serial port in Node)
 export { MarlinSender, gcodeCommands, numberedLine, CANCEL_GCODE } from './send/marlin-serial.js';
 export type { MarlinOptions } from './send/marlin-serial.js';
-export { loadCustomInfill } from './pipeline/custom-infill-loader.js';
-export type { CustomInfillSpec, CustomDensity } from './pipeline/custom-infill.js';
+export { loadCustomInfill } from './infill/registry.js';
+export type { CustomInfillSpec, CustomDensity } from './infill/patterns/custom.js';
 export { describeCustomInfill } from './api/custom-infill-info.js';
 export type { CustomInfillInfo } from './api/custom-infill-info.js';
 export { FEATURE_TYPES } from './plan/types.js';

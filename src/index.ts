@@ -10,6 +10,6 @@ export { sendToPrinter, HOST_KINDS } from './send/node.js';
 export type { HostKind, SendOptions, SendResult } from './send/node.js';
 
 // In Node the shader compiler loads with the library, so `setCustomInfill` reports a broken shader at once.
-import * as customInfill from './pipeline/custom-infill.js';
-import { provideCustomInfill } from './pipeline/custom-infill-loader.js';
+import * as customInfill from './infill/patterns/custom.js';
+import { provideCustomInfill } from './infill/registry.js';
 provideCustomInfill(customInfill);

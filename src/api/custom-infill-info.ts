@@ -1,7 +1,7 @@
 /**
  * What a custom infiller is, for a page that lets a user choose one and set its parameters.
  */
-import { loadCustomInfill } from '../pipeline/custom-infill-loader.js';
+import { loadCustomInfill } from '../infill/registry.js';
 import { resolveConfig } from '../settings/resolve.js';
 import type { CustomInfillSpec } from '../exports.js';
 

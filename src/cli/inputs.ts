@@ -8,7 +8,7 @@ import { PATTERN_IDS } from '../infill/types.js';
 import { loadModelFile, mergeObjects, type LoadedFile } from '../mesh/index.js';
 import type { MeshObject, MeshVolume } from '../mesh/types.js';
 import type { ModelInput } from '../mesh/place.js';
-import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../infill/patterns/custom.js';
 import type { Config } from '../settings/resolve.js';
 import { importProfile } from '../profiles/index.js';
 import type { SliceOptions } from '../settings/schema.js';

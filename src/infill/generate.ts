@@ -15,7 +15,7 @@
  * them thinned the lines of small regions by 10–15 %. Patterns that change with Z on purpose ('volume':
  * gyroid, cubic) run once, so their period stays the same from layer to layer and the 3D structure is kept.
  */
-import { hypot, type Pt } from '../geometry/types.js';
+import { hypot, type Polyline, type Pt } from '../geometry/types.js';
 import type { InfillLayerInput, InfillParams, InfillPattern, InfillResult, PatternId } from './types.js';
 import { PATTERNS } from './registry.js';
 import { type RegionGeom, type RegionIndex, indexRegion, regionGeom } from './region-index.js';
@@ -66,7 +66,7 @@ function runPattern(
   pattern: InfillPattern,
   layer: InfillLayerInput,
   params: InfillParams,
-  prepared: unknown,
+  prepared: Polyline[] | undefined,
   ctx: Ctx,
   factor: number,
 ): Run {
@@ -101,7 +101,7 @@ function runCorrected(
   pattern: InfillPattern,
   layer: InfillLayerInput,
   params: InfillParams,
-  prepared: unknown,
+  prepared: Polyline[] | undefined,
   ctx: Ctx,
 ): Run {
   const d = params.density;
@@ -146,16 +146,18 @@ const MAX_CORRECTION = 1.5;
  * One layer's (or one island's) infill: clipped to `layer.region`, linked (if `params.connect`), free of
  * zero-length and duplicate segments, ordered from `start` (default: the region's lower-left corner):
  * loops first, then lines. `prepared` is this layer's entry of the pattern's `prepare` result, if it has one.
+ * A pattern that draws finished paths (custom infill) is taken as it is.
  */
 export function generateInfill(
-  patternId: PatternId,
+  patternOrId: PatternId | InfillPattern,
   layer: InfillLayerInput,
   params: InfillParams,
-  prepared?: unknown,
+  prepared?: Polyline[],
   start?: Pt,
 ): InfillResult {
-  const pattern: InfillPattern | undefined = PATTERNS[patternId];
-  if (!pattern) throw new Error(`unknown infill pattern '${String(patternId)}'`);
+  const pattern: InfillPattern | undefined = typeof patternOrId === 'string' ? PATTERNS[patternOrId] : patternOrId;
+  if (!pattern) throw new Error(`unknown infill pattern '${String(patternOrId)}'`);
+  if (pattern.finished) return pattern.generate(layer, params, prepared);
   if (!(params.density > 0) || layer.region.length === 0) return { lines: [], loops: [] };
   const geom = regionGeom(layer.region);
   if (!(geom.area > 0)) return { lines: [], loops: [] };

@@ -100,8 +100,14 @@ export interface PatternOutput extends InfillResult {
 export type DensityModel = 'layer' | 'volume' | 'support';
 
 export interface InfillPattern {
-  readonly id: PatternId;
+  /** A built-in pattern's id, or 'custom': the slice's custom infill (patterns/custom.ts). */
+  readonly id: PatternId | 'custom';
   readonly description: string;
+  /**
+   * true: `generate` draws finished paths, clipped to the region, ordered, at the density it reads itself
+   * (custom infill); the shared code takes them as they are, even where the density setting is 0.
+   */
+  readonly finished?: boolean;
   /** Defaults to 'layer'. */
   readonly densityModel?: DensityModel;
   /** true: the pattern follows the region (or the skins), so `params.origin` / centering has no effect. */
@@ -109,9 +115,9 @@ export interface InfillPattern {
   /** Z period of a 'volume' pattern, mm. */
   zPeriod?(params: InfillParams): number;
   /**
-   * Optional whole-object pass run once before the per-layer calls (lightning's trees).
-   * Returns one plain-data value per layer, handed back to `generate` as `prepared`.
+   * Optional whole-model pass run once before the per-layer calls (lightning's trees): the lines it draws
+   * on each layer, handed back to `generate` as that layer's `prepared`.
    */
-  prepare?(model: InfillModelInput, params: InfillParams): unknown[];
-  generate(layer: InfillLayerInput, params: InfillParams, prepared?: unknown): PatternOutput;
+  prepare?(model: InfillModelInput, params: InfillParams): Polyline[][];
+  generate(layer: InfillLayerInput, params: InfillParams, prepared?: Polyline[]): PatternOutput;
 }

@@ -5,15 +5,14 @@
  * flagged so the planner slows them / prints them as bridges.
  */
 import { area, difference, flatten, offset, opening } from '../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
-import { generateInfill } from '../infill/index.js';
-import type { InfillParams, PatternId } from '../infill/types.js';
+import { UM_PER_MM, type ExPolygon, type Polygon, type Polyline, type Pt } from '../geometry/types.js';
+import { generateInfill, regionPattern } from '../infill/index.js';
+import type { InfillParams, InfillPattern, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
 import { allSkin } from '../regions/skin-areas.js';
 import { gapLoopWidths, type GapLoop } from '../regions/gap-loops.js';
 import type { IslandRegions, RegionFill, WallSet } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
-import type { CustomInfillGenerator } from '../shader/index.js';
 import type { LayerZ } from '../slice/types.js';
 import { makeEntry } from './entry.js';
 import { solidFill } from '../infill/solid-fill.js';
@@ -32,8 +31,9 @@ export interface IslandContext {
   /** The object's infill parameters (a region's config changes their density, angle and linking). */
   params: InfillParams;
   /** The pattern's whole-model data for this layer (lightning), if any. */
-  prepared?: unknown;
-  custom?: CustomInfillGenerator;
+  prepared?: Polyline[];
+  /** The slice's custom infill, which fills every region in place of its pattern. */
+  custom?: InfillPattern;
   /** Area of the layer below that support holds up (its bottom skin there is not a bridge), µm. */
   supportBelow: readonly ExPolygon[];
 }
@@ -196,9 +196,7 @@ function infillEntries(island: RegionFill, ctx: FillContext): PathEntry[] {
   const { cfg, layer, widthUm } = ctx;
   const input = { layerIndex: layer.index, z: layer.z, layerHeight: layer.height, region: island.sparse };
   const params = { ...ctx.params, lineWidth: widthUm };
-  const res = ctx.custom
-    ? ctx.custom(input, params)
-    : generateInfill(cfg.infillPattern as PatternId, input, params, ctx.prepared);
+  const res = generateInfill(regionPattern(cfg.infillPattern as PatternId, ctx.custom), input, params, ctx.prepared);
   const out: PathEntry[] = [];
   const width = widthUm / UM_PER_MM;
   if (res.loops.length) out.push(makeEntry(cfg, 'infill', true, res.loops, width));

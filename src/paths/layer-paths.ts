@@ -2,12 +2,11 @@
  * The paths stage for one layer: its regions become path groups — raft lines on raft layers; otherwise the
  * skirt or brim (first layer), the support, and every island's walls, skin and infill.
  */
-import type { ExPolygon } from '../geometry/types.js';
-import type { InfillParams } from '../infill/types.js';
+import type { ExPolygon, Polyline } from '../geometry/types.js';
+import type { InfillParams, InfillPattern } from '../infill/types.js';
 import { lineWidthUm } from '../regions/layer-regions.js';
-import type { LayerRegions } from '../regions/types.js';
+import type { LayerOutlines, LayerRegions } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
-import type { CustomInfillGenerator } from '../shader/index.js';
 import { raftGroups, skirtOrBrim } from './adhesion-paths.js';
 import { islandGroup } from './island-paths.js';
 import { supportGroups } from './support-paths.js';
@@ -23,8 +22,9 @@ export interface LayerPathsContext {
   /** Infill parameters of each object (its pattern origin), by object index. */
   params: readonly InfillParams[];
   /** The pattern's whole-model data for this layer (lightning). */
-  prepared?: unknown;
-  custom?: CustomInfillGenerator;
+  prepared?: Polyline[];
+  /** The slice's custom infill, which fills every region in place of its pattern. */
+  custom?: InfillPattern;
   /** Support areas of the layer below (skin resting on them is no bridge), µm. */
   supportBelow: readonly ExPolygon[];
   /** Added to the layer's Z (the raft under the model), mm. */
@@ -83,7 +83,7 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
  * The model paths of a layer with what is shared by the layer's objects put first: the skirt or brim (on
  * the print's first layer, round the support too) and the support. `paths` is changed and returned.
  */
-export function withSharedGroups(paths: LayerPaths, regions: LayerRegions, ctx: LayerPathsContext): LayerPaths {
+export function withSharedGroups(paths: LayerPaths, regions: LayerOutlines, ctx: LayerPathsContext): LayerPaths {
   if (regions.raft) return paths;
   const { cfg } = ctx;
   const shared: PathGroup[] = [];
@@ -113,6 +113,6 @@ export function withSharedGroups(paths: LayerPaths, regions: LayerRegions, ctx: 
   return paths;
 }
 
-function widthOf(regions: LayerRegions, cfg: Config): number {
+function widthOf(regions: LayerOutlines, cfg: Config): number {
   return regions.raft ? Math.round(cfg.lineWidthMm * 1000) : lineWidthUm(cfg, regions.index);
 }

@@ -75,13 +75,52 @@ function plain(o: PlacedObject): boolean {
  */
 export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions, print: Config): PlateSetup {
   const table = new ConfigTable(base, print);
-  const objectConfig = objects.map((o) =>
-    table.resolve([{ settings: o.settings, use: 'object', where: `object "${o.name}"` }]),
-  );
-  // overlapping twins print as one object
+  const objectConfig = objects.map((o) => table.resolve([objectLayer(o)]));
+  const { groupOf, overlapPairs } = overlapGroups(objects, objectConfig);
+  const warnings: string[] = [];
+  const vase = print.spiralVase ? vaseSettingsWarning(objects, base, print) : null;
+  if (vase) warnings.push(vase);
+  const { printed, printedIndex, firsts } = printedObjects(objects, groupOf, warnings);
+  const meshes: Mesh[] = [];
+  const add = (m: Mesh) => meshes.push(m) - 1;
+  const setups = printed.map((o, k) => objectSetup(o, objectConfig[firsts[k]], table, add));
+  const heightRanges = layerHeightRanges(printed, setups, table.configs, print, warnings);
+  // one Z plan: the first object's layer height profile
+  const profiled = printed.filter((o) => o.layerHeightProfile);
+  if (profiled.length > 1)
+    warnings.push(
+      `objects ${profiled.map((o) => `"${o.name}"`).join(', ')} have layer height profiles: the plate has one Z plan, so the first one's ("${profiled[0].name}") holds for every object`,
+    );
+  const heightProfile = profiled[0]?.layerHeightProfile ?? null;
+  const pairs = overlapPairs
+    .map(([a, b]): [number, number] => [printedIndex[a], printedIndex[b]])
+    .filter(([a, b]) => a !== b);
+  return {
+    setup: { configs: table.configs, objects: setups, overlapPairs: pairs },
+    meshes,
+    objects: printed,
+    warnings,
+    heightRanges,
+    heightProfile,
+  };
+}
+
+/** An object's own settings, as the config table reads them. */
+function objectLayer(o: PlacedObject) {
+  return { settings: o.settings, use: 'object' as const, where: `object "${o.name}"` };
+}
+
+/**
+ * Overlapping twins (objects whose bounds overlap, with the same settings and nothing else of their own) print
+ * as one object: `groupOf[i]`, the first object of i's group. Objects that overlap otherwise are `overlapPairs`.
+ */
+function overlapGroups(
+  objects: readonly PlacedObject[],
+  objectConfig: readonly number[],
+): { groupOf: number[]; overlapPairs: Array<[number, number]> } {
   const boxes: Box[] = objects.map((o) => positionBounds(o.mesh.positions));
-  const groupOf = objects.map((_, i) => i);
-  const find = (i: number): number => (groupOf[i] === i ? i : (groupOf[i] = find(groupOf[i])));
+  const parent = objects.map((_, i) => i);
+  const find = (i: number): number => (parent[i] === i ? i : (parent[i] = find(parent[i])));
   const overlapPairs: Array<[number, number]> = [];
   for (let i = 0; i < objects.length; i++) {
     for (let j = i + 1; j < objects.length; j++) {
@@ -89,35 +128,45 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
       if (plain(objects[i]) && plain(objects[j]) && objectConfig[i] === objectConfig[j]) {
         const a = find(i),
           b = find(j);
-        if (a !== b) groupOf[Math.max(a, b)] = Math.min(a, b);
+        if (a !== b) parent[Math.max(a, b)] = Math.min(a, b);
       } else overlapPairs.push([i, j]);
     }
   }
-  const warnings: string[] = [];
-  // settings given a value the spiral vase sets aside, wherever they were given
-  const vase = print.spiralVase
-    ? vaseWarning(
-        [
-          base,
-          ...objects.flatMap((o) => [
-            o.settings,
-            ...(o.volumes ?? []).map((v) => v.settings),
-            ...(o.layerRanges ?? []).map((r) => r.settings),
-          ]),
-        ],
-        print,
-      )
-    : null;
-  if (vase) warnings.push(vase);
+  return { groupOf: objects.map((_, i) => find(i)), overlapPairs };
+}
+
+/** Settings given a value the spiral vase sets aside, wherever they were given: one warning, or null. */
+function vaseSettingsWarning(objects: readonly PlacedObject[], base: SliceOptions, print: Config): string | null {
+  return vaseWarning(
+    [
+      base,
+      ...objects.flatMap((o) => [
+        o.settings,
+        ...(o.volumes ?? []).map((v) => v.settings),
+        ...(o.layerRanges ?? []).map((r) => r.settings),
+      ]),
+    ],
+    print,
+  );
+}
+
+/**
+ * The objects as printed, each group of twins as one (their union, with a warning); for each printed object
+ * the first object of its group (`firsts`), and for each object the index of the printed object it is in.
+ */
+function printedObjects(
+  objects: readonly PlacedObject[],
+  groupOf: readonly number[],
+  warnings: string[],
+): { printed: PlacedObject[]; printedIndex: number[]; firsts: number[] } {
   const printed: PlacedObject[] = [];
-  const printedIndex = new Map<number, number>();
-  const settingsOf: number[] = [];
+  const printedIndex: number[] = [];
+  const firsts: number[] = [];
   for (let i = 0; i < objects.length; i++) {
-    const root = find(i);
-    if (root !== i) continue;
-    const members = objects.map((_, j) => j).filter((j) => find(j) === i);
-    printedIndex.set(i, printed.length);
-    settingsOf.push(objectConfig[i]);
+    if (groupOf[i] !== i) continue;
+    const members = objects.map((_, j) => j).filter((j) => groupOf[j] === i);
+    printedIndex[i] = printed.length;
+    firsts.push(i);
     if (members.length === 1) printed.push(objects[i]);
     else {
       const names = members.map((j) => objects[j].name);
@@ -131,84 +180,67 @@ export function plateSetup(objects: readonly PlacedObject[], base: SliceOptions,
       });
     }
   }
-  for (let i = 0; i < objects.length; i++) if (find(i) !== i) printedIndex.set(i, printedIndex.get(find(i))!);
+  for (let i = 0; i < objects.length; i++) printedIndex[i] = printedIndex[groupOf[i]];
+  return { printed, printedIndex, firsts };
+}
 
-  const meshes: Mesh[] = [];
-  const add = (m: Mesh) => meshes.push(m) - 1;
-  const setups = printed.map((o, k): ObjectSetup => {
-    const volumes = o.volumes ?? [];
-    const of = (kind: VolumeKind) => volumes.filter((v) => v.kind === kind);
-    const modifiers = of('modifier');
-    const ranges = (o.layerRanges ?? []).map((r) => ({ fromZ: r.fromZ, toZ: r.toZ }));
-    if ((ranges.length + 1) * (modifiers.length + 1) > MAX_REGIONS) {
-      throw new StrataError(
-        'LIMIT_EXCEEDED',
-        `object "${o.name}" has ${modifiers.length} modifiers and ${ranges.length} layer ranges: more than ${MAX_REGIONS} combinations of them to resolve`,
-      );
-    }
-    const objectLayer = { settings: o.settings, use: 'object' as const, where: `object "${o.name}"` };
-    const regions: number[][] = [];
-    for (let r = 0; r <= ranges.length; r++) {
-      const range = r === 0 ? null : o.layerRanges![r - 1];
-      const rangeLayer = range
-        ? [
-            {
-              settings: range.settings,
-              use: 'layer range' as const,
-              where: `object "${o.name}" layers ${range.fromZ}–${range.toZ} mm`,
-            },
-          ]
-        : [];
-      const row: number[] = [];
-      for (let m = 0; m <= modifiers.length; m++) {
-        if (r === 0 && m === 0) {
-          row.push(settingsOf[k]);
-          continue;
-        }
-        const mod =
-          m === 0
-            ? []
-            : [
-                {
-                  settings: modifiers[m - 1].settings,
-                  use: 'modifier' as const,
-                  where: `modifier "${modifiers[m - 1].name}" of "${o.name}"`,
-                },
-              ];
-        row.push(table.resolve([objectLayer, ...rangeLayer, ...mod]));
-      }
-      regions.push(row);
-    }
-    return {
-      name: o.name,
-      parts: add(o.mesh),
-      negatives: of('negative').map((v) => add(v.mesh)),
-      modifiers: modifiers.map((v) => add(v.mesh)),
-      blockers: of('support-blocker').map((v) => add(v.mesh)),
-      enforcers: of('support-enforcer').map((v) => add(v.mesh)),
-      config: settingsOf[k],
-      ranges,
-      regions,
-    };
-  });
-  const heightRanges = layerHeightRanges(printed, setups, table.configs, print, warnings);
-  // one Z plan: the first object's layer height profile
-  const profiled = printed.filter((o) => o.layerHeightProfile);
-  if (profiled.length > 1)
-    warnings.push(
-      `objects ${profiled.map((o) => `"${o.name}"`).join(', ')} have layer height profiles: the plate has one Z plan, so the first one's ("${profiled[0].name}") holds for every object`,
+/**
+ * One printed object's setup: its meshes (added with `add`, which gives their index) and the config of each
+ * of its regions, a layer range (0: none) by a modifier (0: none); `config` is the object's own.
+ */
+function objectSetup(o: PlacedObject, config: number, table: ConfigTable, add: (m: Mesh) => number): ObjectSetup {
+  const volumes = o.volumes ?? [];
+  const of = (kind: VolumeKind) => volumes.filter((v) => v.kind === kind);
+  const modifiers = of('modifier');
+  const ranges = (o.layerRanges ?? []).map((r) => ({ fromZ: r.fromZ, toZ: r.toZ }));
+  if ((ranges.length + 1) * (modifiers.length + 1) > MAX_REGIONS) {
+    throw new StrataError(
+      'LIMIT_EXCEEDED',
+      `object "${o.name}" has ${modifiers.length} modifiers and ${ranges.length} layer ranges: more than ${MAX_REGIONS} combinations of them to resolve`,
     );
-  const heightProfile = profiled[0]?.layerHeightProfile ?? null;
-  const pairs = overlapPairs
-    .map(([a, b]): [number, number] => [printedIndex.get(a)!, printedIndex.get(b)!])
-    .filter(([a, b]) => a !== b);
+  }
+  const regions: number[][] = [];
+  for (let r = 0; r <= ranges.length; r++) {
+    const range = r === 0 ? null : o.layerRanges![r - 1];
+    const rangeLayer = range
+      ? [
+          {
+            settings: range.settings,
+            use: 'layer range' as const,
+            where: `object "${o.name}" layers ${range.fromZ}–${range.toZ} mm`,
+          },
+        ]
+      : [];
+    const row: number[] = [];
+    for (let m = 0; m <= modifiers.length; m++) {
+      if (r === 0 && m === 0) {
+        row.push(config);
+        continue;
+      }
+      const mod =
+        m === 0
+          ? []
+          : [
+              {
+                settings: modifiers[m - 1].settings,
+                use: 'modifier' as const,
+                where: `modifier "${modifiers[m - 1].name}" of "${o.name}"`,
+              },
+            ];
+      row.push(table.resolve([objectLayer(o), ...rangeLayer, ...mod]));
+    }
+    regions.push(row);
+  }
   return {
-    setup: { configs: table.configs, objects: setups, overlapPairs: pairs },
-    meshes,
-    objects: printed,
-    warnings,
-    heightRanges,
-    heightProfile,
+    name: o.name,
+    parts: add(o.mesh),
+    negatives: of('negative').map((v) => add(v.mesh)),
+    modifiers: modifiers.map((v) => add(v.mesh)),
+    blockers: of('support-blocker').map((v) => add(v.mesh)),
+    enforcers: of('support-enforcer').map((v) => add(v.mesh)),
+    config,
+    ranges,
+    regions,
   };
 }
 

@@ -6,7 +6,7 @@
 import { offset, union } from '../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
-import type { LayerRegions, RaftArea } from './types.js';
+import type { LayerOutlines, LayerRegions, RaftArea } from './types.js';
 
 export interface Raft {
   /** The raft's layers, bottom up (Z in print coordinates). */
@@ -16,7 +16,7 @@ export interface Raft {
 }
 
 /** The raft under a model whose first layer has these regions ([] layers when adhesion is not a raft). */
-export function raftUnder(first: LayerRegions | undefined, cfg: Config): Raft {
+export function raftUnder(first: LayerOutlines | undefined, cfg: Config): Raft {
   if (cfg.adhesionType !== 'raft' || !first) return { layers: [], zOffset: 0 };
   const footprint: ExPolygon[] = first.islands.map((i) => ({ outer: i.outline.outer, holes: [] }));
   if (first.support)

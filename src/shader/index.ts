@@ -5,6 +5,7 @@
 export {
   compileShader,
   parseParamValue,
+  parseInfillParams,
   findParam,
   checkParamValue,
   DEFAULT_EVAL_BUDGET,
@@ -25,8 +26,6 @@ export {
   DEFAULT_PIXEL_SIZE,
 } from './infiller.js';
 export type { Infiller, InfillerFiles, InfillerInfo, InfillerKind, InfillerOptions } from './infiller.js';
-export { customInfillGenerator, parseInfillParams } from './infill-adapter.js';
-export type { CustomInfillSettings, CustomInfillGenerator } from './infill-adapter.js';
 export { densityResolver } from './density-source.js';
 export type { DensityInput } from './density-source.js';
 export type { LabelFn } from './label-grid.js';

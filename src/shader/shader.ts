@@ -153,6 +153,26 @@ export function findParam(params: readonly ShaderParam[], name: string): ShaderP
   return params.find((p) => p.name === name) ?? params.find((p) => p.name === `ui_${name}`);
 }
 
+/** Parse `NAME=VALUE` strings (CLI `--infill-param`) against an infiller's parameters. */
+export function parseInfillParams(
+  params: readonly ShaderParam[],
+  assignments: readonly string[],
+): Record<string, number | boolean> {
+  const out: Record<string, number | boolean> = {};
+  for (const a of assignments) {
+    const eq = a.indexOf('=');
+    if (eq <= 0) throw new StrataError('BAD_SETTING', `--infill-param expects NAME=VALUE, got '${a.slice(0, 60)}'`);
+    const name = a.slice(0, eq).trim();
+    const p = findParam(params, name);
+    if (p === undefined) {
+      const known = params.map((q) => q.name).join(', ') || 'none';
+      throw new StrataError('BAD_SETTING', `unknown infill parameter '${name.slice(0, 60)}' (parameters: ${known})`);
+    }
+    out[p.name] = parseParamValue(p, a.slice(eq + 1));
+  }
+  return out;
+}
+
 function uniformValues(
   fileName: string,
   uniforms: UniformSlot[],

@@ -7,7 +7,7 @@
 import { area, boundsOf, difference, intersection, offset, union } from '../geometry/clip.js';
 import { UM_PER_MM, type Bounds, type ExPolygon } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
-import type { LayerRegions, SupportAreas } from '../regions/types.js';
+import type { LayerOutlines, SupportAreas } from '../regions/types.js';
 import { sectionOf } from '../regions/types.js';
 import { evenLayers } from '../slice/layers.js';
 import { AreaIndex } from '../geometry/area-index.js';
@@ -18,7 +18,7 @@ export const OVERHANG_XY_WIDTHS = 0.5;
 export const MIN_SUPPORT_WIDTHS = 1;
 
 export class ModelLayers {
-  readonly layers: readonly LayerRegions[];
+  readonly layers: readonly LayerOutlines[];
   readonly cfg: Config;
   readonly #sections = new Map<number, ExPolygon[]>();
   /** Per layer, the section as a point index (made on first use). */
@@ -41,7 +41,7 @@ export class ModelLayers {
   /** The most layers of a top Z gap anywhere. */
   readonly maxTopGap: number;
 
-  constructor(layers: readonly LayerRegions[], cfg: Config) {
+  constructor(layers: readonly LayerOutlines[], cfg: Config) {
     this.layers = layers;
     this.cfg = cfg;
     if (evenLayers(layers, cfg.layerHeight)) {

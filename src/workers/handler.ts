@@ -1,18 +1,8 @@
 /** The worker side, independent of the host: keeps the mesh and config, runs range jobs. */
 import { StrataError } from '../errors.js';
-import type { PreparedMesh } from '../slice/index.js';
-import { computeRange, type RegionsHeld } from '../pipeline/layer-work.js';
-import type { CustomInfillGenerator } from '../shader/index.js';
-import type { PrintSetup } from '../regions/objects.js';
+import { loadCustomInfill } from '../infill/registry.js';
+import { computeRange, type LayerWork } from './layer-work.js';
 import type { FromWorker, ToWorker } from './protocol.js';
-
-interface State {
-  meshes: PreparedMesh[];
-  setup: PrintSetup;
-  custom?: CustomInfillGenerator;
-  /** Regions kept for this worker's later 'held' jobs. */
-  held: RegionsHeld;
-}
 
 /**
  * `clock` (ms) times each job for the pool's scheduling: the thread's CPU time where the host can
@@ -22,27 +12,23 @@ export function makeHandler(
   post: (msg: FromWorker) => void,
   clock: () => number = () => performance.now(),
 ): (msg: ToWorker) => void {
-  let state: Promise<State> = Promise.reject(new Error('worker used before init'));
+  let state: Promise<LayerWork> = Promise.reject(new Error('worker used before init'));
   state.catch(() => {});
   return (msg) => {
     if (msg.type === 'init') {
       const { meshes, setup, custom } = msg;
+      const work: LayerWork = { meshes: () => meshes, setup, held: new Map() };
       // the shader compiler loads only when a custom infill needs it
       state = custom
-        ? import('../pipeline/custom-infill.js').then((m) => ({
-            meshes,
-            setup,
-            custom: m.customGenerator(custom, setup.configs[0]),
-            held: new Map(),
-          }))
-        : Promise.resolve({ meshes, setup, held: new Map() });
+        ? loadCustomInfill().then((m) => ({ ...work, custom: m.customPattern(custom, setup.configs[0]) }))
+        : Promise.resolve(work);
       state.catch(() => {});
       return;
     }
     state
-      .then((s) => {
+      .then((work) => {
         const t0 = clock();
-        const result = computeRange(s.meshes, s.setup, msg.job, s.custom, s.held);
+        const result = computeRange(work, msg.job);
         post({ type: 'result', id: msg.id, result, ms: clock() - t0 });
       })
       .catch((e: unknown) => {

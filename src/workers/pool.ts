@@ -7,10 +7,10 @@
 import { cancelled, StrataError } from '../errors.js';
 import { isNode, soon } from '../runtime.js';
 import type { PreparedMesh } from '../slice/index.js';
-import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
+import type { RangeJob, ResultOf } from './layer-work.js';
 import type { PrintSetup } from '../regions/objects.js';
 import type { FromWorker } from './protocol.js';
-import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../infill/patterns/custom.js';
 import { nodeWorkerPort, webWorkerPort, type Port, type WebWorkerCtor } from './ports.js';
 
 /** Start one worker. */
@@ -49,12 +49,12 @@ export function sharePrepared(m: PreparedMesh): PreparedMesh {
   };
 }
 
-export interface RunOptions {
+export interface RunOptions<J extends RangeJob> {
   /**
    * Computes a job on the calling thread (at once, or stepping with pauses), which then takes jobs whenever it
    * is free (see `helpAboveMs`); without it only the workers do.
    */
-  local?: (job: RangeJob) => RangeResult | Promise<RangeResult>;
+  local?: (job: J) => ResultOf<J> | Promise<ResultOf<J>>;
   /**
    * The calling thread starts taking jobs only once the work not yet handed out would keep the workers
    * busy longer than this (ms, estimated from their last job, not counting each one's first): its first jobs are slow, and on a machine
@@ -65,7 +65,7 @@ export interface RunOptions {
    * Each result as it arrives (in any order), with where it was computed: the worker's index, or -1 on the
    * calling thread; an exception fails the run.
    */
-  onResult?: (id: number, result: RangeResult, where: number) => void;
+  onResult?: (id: number, result: ResultOf<J>, where: number) => void;
   /**
    * Job i runs on worker `placement[i]` (a job that reads what an earlier job left on that worker); with it
    * there is no `local` work and no balancing between workers.
@@ -76,7 +76,7 @@ export interface RunOptions {
 
 export interface LayerPool {
   /** Run jobs on the workers (and the calling thread, see `local`); resolves when all are done. */
-  run(jobs: RangeJob[], options?: RunOptions): Promise<void>;
+  run<J extends RangeJob>(jobs: J[], options?: RunOptions<J>): Promise<void>;
   close(): Promise<void>;
 }
 
@@ -135,7 +135,7 @@ export async function createPool(
     throw e;
   }
   return {
-    run(jobs, { local, onResult, signal, helpAboveMs = 0, placement } = {}) {
+    run<J extends RangeJob>(jobs: J[], { local, onResult, signal, helpAboveMs = 0, placement }: RunOptions<J> = {}) {
       return new Promise<void>((resolve, reject) => {
         let next = 0;
         let done = 0;
@@ -165,7 +165,7 @@ export async function createPool(
           if (e) reject(e);
           else resolve();
         };
-        const complete = (id: number, r: RangeResult, where: number) => {
+        const complete = (id: number, r: ResultOf<J>, where: number) => {
           try {
             onResult?.(id, r, where);
           } catch (e) {
@@ -188,7 +188,7 @@ export async function createPool(
         const work = () => {
           if (!local || finished || next >= jobs.length) return;
           const id = take();
-          let r: RangeResult | Promise<RangeResult>;
+          let r: ResultOf<J> | Promise<ResultOf<J>>;
           try {
             r = local(jobs[id]);
           } catch (e) {
@@ -223,7 +223,8 @@ export async function createPool(
             const warm = answered.has(p);
             answered.add(p);
             if (warm) msPerLayer = m.ms / Math.max(1, jobs[m.id].to - jobs[m.id].from);
-            complete(m.id, m.result, ports.indexOf(p));
+            // the answer to job m.id, of its kind
+            complete(m.id, m.result as ResultOf<J>, ports.indexOf(p));
             feed(p);
             if (local && !helping && warm && (unassigned * msPerLayer) / ports.length > helpAboveMs) {
               helping = true;

@@ -1,8 +1,8 @@
 /** Messages between the pipeline and its layer workers: plain data only. */
 import type { PreparedMesh } from '../slice/index.js';
-import type { RangeJob, RangeResult } from '../pipeline/layer-work.js';
+import type { RangeJob, RangeResult } from './layer-work.js';
 import type { PrintSetup } from '../regions/objects.js';
-import type { CustomInfillSpec } from '../pipeline/custom-infill.js';
+import type { CustomInfillSpec } from '../infill/patterns/custom.js';
 
 export type ToWorker =
   | { type: 'init'; meshes: PreparedMesh[]; setup: PrintSetup; custom?: CustomInfillSpec }

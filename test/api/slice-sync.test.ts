@@ -3,7 +3,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { Slicer } from '#strata/api/slicer.js';
 import { StrataError } from '#strata/errors.js';
-import { loadCustomInfill } from '#strata/pipeline/custom-infill-loader.js';
+import { loadCustomInfill } from '#strata/infill/registry.js';
 
 const cube = readFileSync(new URL('../../../examples/calibration-cube.stl', import.meta.url));
 

@@ -9,8 +9,15 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import type { ExPolygon, Pt } from '#strata/geometry/types.js';
 import { clipLinesOutside, offset } from '#strata/geometry/clip.js';
-import { PATTERN_IDS, type InfillLayerInput, type InfillResult, type PatternId } from '#strata/infill/types.js';
-import { PATTERNS } from '#strata/infill/registry.js';
+import {
+  PATTERN_IDS,
+  type InfillLayerInput,
+  type InfillPattern,
+  type InfillResult,
+  type PatternId,
+} from '#strata/infill/types.js';
+import { loadCustomInfill, PATTERNS, regionPattern } from '#strata/infill/registry.js';
+import { resolveConfig } from '#strata/settings/resolve.js';
 import { generateInfill } from '#strata/infill/generate.js';
 import { lineDensity } from '#strata/infill/measure.js';
 import { TEST_SHAPES, testParams } from './test-shapes.js';
@@ -115,3 +122,35 @@ for (const id of PATTERN_IDS) {
     assert.deepEqual(generateInfill(id, layerAt(region, 1.4), testParams(0)), { lines: [], loops: [] });
   });
 }
+
+test('custom infill takes every region’s place and its paths are taken as drawn, at any density setting', () => {
+  const drawn: InfillResult = {
+    lines: [
+      [
+        { x: 0, y: 0 },
+        { x: 9_000, y: 0 },
+      ],
+    ],
+    loops: [],
+  };
+  const custom: InfillPattern = { id: 'custom', description: 'a test', finished: true, generate: () => drawn };
+  for (const id of PATTERN_IDS) {
+    assert.equal(regionPattern(id, undefined), PATTERNS[id]);
+    assert.equal(regionPattern(id, custom), custom);
+  }
+  const region = TEST_SHAPES.square();
+  // not clipped, linked or ordered by the shared code, and drawn even where the setting is 0 (its own density)
+  assert.equal(generateInfill(custom, layerAt(region, 1.4), testParams(0)), drawn);
+});
+
+test('the registry loads the custom infill module, which compiles an IceSL shader into a pattern', async () => {
+  const { customPattern } = await loadCustomInfill();
+  const stripes = 'vec4 cellular(vec3 world) { return vec4(mod(floor(world.x / 3.0), 2.0), 0.0, 0.0, 1.0); }';
+  const pattern = customPattern({ name: 'stripes', shader: stripes }, resolveConfig({}));
+  assert.equal(pattern.id, 'custom');
+  assert.ok(pattern.finished);
+  const region = TEST_SHAPES.square();
+  const r = generateInfill(pattern, layerAt(region, 1.4), testParams(0.2));
+  assert.ok(r.lines.length > 5, `stripes drawn: ${r.lines.length}`);
+  assert.ok(outsideLength(r, region, 3) < 5, 'inside the region');
+});

@@ -7,9 +7,9 @@ import { encode } from 'fast-png';
 import { StrataError } from '#strata/errors.js';
 import type { InfillParams } from '#strata/infill/types.js';
 import { findInfiller, listInfillers, loadInfillerFile, shippedInfillersDir } from '#strata/shader/node-folder.js';
-import { customInfillGenerator, parseInfillParams } from '#strata/shader/infill-adapter.js';
+import { customInfillGenerator } from '#strata/infill/patterns/custom.js';
 import { loadInfillers } from '#strata/shader/infiller.js';
-import { compileShader } from '#strata/shader/shader.js';
+import { compileShader, parseInfillParams } from '#strata/shader/shader.js';
 
 const SQUARE = [
   {

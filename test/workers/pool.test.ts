@@ -12,7 +12,17 @@ import { prepareModel } from '#strata/api/slicer.js';
 import { resolveConfig } from '#strata/settings/resolve.js';
 import { plainSetup } from '#strata/regions/objects.js';
 import { planLayers, prepareMesh } from '#strata/slice/index.js';
-import { computeRange, type RangeJob, type RangeResult } from '#strata/pipeline/layer-work.js';
+import {
+  computeRange,
+  type HeldJob,
+  type LayersJob,
+  type LayerWork,
+  type OutlinesJob,
+  type OutlinesResult,
+  type PathsResult,
+  type RangeJob,
+  type ResultOf,
+} from '#strata/workers/layer-work.js';
 import { makeHandler } from '#strata/workers/handler.js';
 import { createPool, startWorkers } from '#strata/workers/pool.js';
 import { webWorkerPort, type WebWorkerEvent, type WebWorkerLike } from '#strata/workers/ports.js';
@@ -79,7 +89,7 @@ const params = {
   origin: { x: 0, y: 0 },
   connect: false,
 };
-const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({
+const jobs: LayersJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({
   kind: 'layers',
   layers,
   from: Math.floor((k * layers.length) / 6),
@@ -89,7 +99,9 @@ const jobs: RangeJob[] = [0, 1, 2, 3, 4, 5].map((k) => ({
   adhesion: true,
 }));
 const prepared = [prepareMesh(model.mesh)];
-const local = (j: RangeJob) => computeRange(prepared, plainSetup(cfg), j);
+/** The calling thread's work (a fresh one per call: held regions are kept per thread). */
+const here = (): LayerWork => ({ meshes: () => prepared, setup: plainSetup(cfg), held: new Map() });
+const local = <J extends RangeJob>(j: J): ResultOf<J> => computeRange(here(), j);
 const url = new URL('../../../dist/workers/layer-worker.js', import.meta.url);
 const pool = (mode: Mode, workers = 1, msPerLayer?: number) =>
   createPool(
@@ -107,12 +119,12 @@ test('through Web Workers, results come back in job order and equal the calling 
 }, async () => {
   const p = await pool('ok', 2);
   let locally = 0;
-  const results: RangeResult[] = [];
+  const results: PathsResult[] = [];
   await p.run(jobs, { local: (j) => (locally++, local(j)), onResult: (id, r) => (results[id] = r) });
   assert.ok(locally < jobs.length, 'the workers took some jobs');
   assert.deepEqual(results, jobs.map(local));
   // and without the calling thread
-  const byWorkers: RangeResult[] = [];
+  const byWorkers: PathsResult[] = [];
   await p.run(jobs, { onResult: (id, r) => (byWorkers[id] = r) });
   await p.close();
   assert.deepEqual(byWorkers, results);
@@ -160,7 +172,7 @@ test('the calling thread computes ranges only while the work left would keep the
   const run = async (msPerLayer: number, helpAboveMs: number) => {
     const p = await pool('ok', 1, msPerLayer);
     const byCaller: number[] = [];
-    const results: RangeResult[] = [];
+    const results: PathsResult[] = [];
     await p.run(jobs, {
       local: (j) => (byCaller.push(jobs.indexOf(j)), local(j)),
       onResult: (id, r) => (results[id] = r),
@@ -182,26 +194,38 @@ test('regions held where they were made: the held jobs placed on those workers g
   timeout: 20_000,
 }, async () => {
   const modelPaths = { infillParams: [params], zOffset: 0, adhesion: false };
-  const regionJobs: RangeJob[] = jobs.map((j) => ({ kind: 'regions', layers, from: j.from, to: j.to, hold: true }));
+  const regionJobs: OutlinesJob[] = jobs.map((j) => ({
+    kind: 'outlines',
+    layers,
+    from: j.from,
+    to: j.to,
+    hold: true,
+  }));
   const p = await pool('ok', 2);
   const where: number[] = [];
-  const outlines: RangeResult[] = [];
+  const outlines: OutlinesResult[] = [];
   await p.run(regionJobs, { onResult: (id, r, w) => ((where[id] = w), (outlines[id] = r)) });
   assert.deepEqual(new Set(where), new Set([0, 1]), 'both workers made some ranges');
-  const held: RangeJob[] = jobs.map((j) => ({ kind: 'held', layers, from: j.from, to: j.to, modelPaths }));
-  const paths: RangeResult[] = [];
+  const held: HeldJob[] = jobs.map((j) => ({ kind: 'held', layers, from: j.from, to: j.to, modelPaths }));
+  const paths: PathsResult[] = [];
   await p.run(held, { placement: where, onResult: (id, r, w) => ((paths[id] = r), assert.equal(w, where[id])) });
-  // what a regions job with model paths gives on the calling thread
-  const inOneGo = jobs.map((j) => local({ kind: 'regions', layers, from: j.from, to: j.to, modelPaths }));
+  // what an outlines job that makes the model paths gives on the calling thread
+  const inOneGo = jobs.map((j) =>
+    local<OutlinesJob>({ kind: 'outlines', layers, from: j.from, to: j.to, hold: false, modelPaths }),
+  );
   assert.deepEqual(
     paths.map((r) => r.paths),
     inOneGo.map((r) => r.paths),
   );
   assert.deepEqual(
-    outlines.map((r) => r.regions),
-    inOneGo.map((r) => r.regions),
+    outlines.map((r) => r.outlines),
+    inOneGo.map((r) => r.outlines),
   );
-  assert.ok(inOneGo.every((r) => r.paths.length === r.regions.length && r.paths.length > 0));
+  assert.ok(inOneGo.every((r) => r.paths.length === r.outlines.length && r.paths.length > 0));
+  assert.ok(
+    outlines.every((r) => r.paths.length === 0 && r.outlines.every((l) => l.islands.every((i) => !('walls' in i)))),
+    'held: only the outlines come back',
+  );
   // held regions are used once: asked again, or on the other worker, there are none
   await assert.rejects(
     p.run(held.slice(0, 1), { placement: [where[0]] }),

@@ -66,9 +66,7 @@ export const lightning: InfillPattern = {
   followsRegion: true,
   prepare: prepareTrees,
   generate(layer, params, prepared) {
-    const lines = Array.isArray(prepared)
-      ? (prepared as Polyline[])
-      : prepareTrees({ layers: [layer], supportNeeded: [layer.region] }, params)[0];
+    const lines = prepared ?? prepareTrees({ layers: [layer], supportNeeded: [layer.region] }, params)[0];
     return { lines, loops: [], link: false };
   },
 };
