@@ -21,7 +21,7 @@
  * there instead): the medial axis prunes such branches.
  */
 import { area, boundsOf, difference, flatten, offset, pointInArea } from '../geometry/clip.js';
-import { medialAxis, type MedialChain } from '../geometry/medial-axis.js';
+import { medialAxis, medialScratch, type MedialChain, type MedialScratch } from '../geometry/medial-axis.js';
 import { PointGrid } from '../geometry/point-grid.js';
 import { hypot, segmentDistance2, UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
@@ -46,7 +46,7 @@ const MIDDLE_LINE_FRACTION = 0.75;
 /** Loop edges longer than this (µm) are split before widening, so a widening follows the strip beside it. */
 const WIDEN_STEP_UM = 250;
 
-/** The resolved limits, µm. */
+/** The resolved limits, µm, and the working memory of one call (one layer's walls). */
 interface Limits {
   /** Line width. */
   w: number;
@@ -60,6 +60,8 @@ interface Limits {
   pruneAngleDeg: number;
   /** Walls on each side that share a strip's width. */
   distribution: number;
+  /** The medial axis's working memory, for every leftover piece of the call's islands. */
+  axis: MedialScratch;
 }
 
 function limitsOf(cfg: Config, w: number): Limits {
@@ -75,6 +77,7 @@ function limitsOf(cfg: Config, w: number): Limits {
     minLength: (cfg.wallTransitionLength / 100) * nozzle,
     pruneAngleDeg: cfg.wallTransitionAngle,
     distribution: cfg.wallDistributionCount,
+    axis: medialScratch(),
   };
 }
 
@@ -162,7 +165,7 @@ function leftover(
   for (const piece of real) {
     // samples about a third of the piece's typical thickness apart: most pieces need no second pass
     const sampleUm = Math.max(AXIS_MIN_SAMPLE_UM, Math.min(AXIS_SAMPLE_UM, stripWidth(piece) / 3));
-    for (const chain of medialAxis([piece], { pruneAngleDeg: L.pruneAngleDeg, sampleUm })) {
+    for (const chain of medialAxis([piece], { pruneAngleDeg: L.pruneAngleDeg, sampleUm, scratch: L.axis })) {
       if (chain.points.length === 1) speck(piece, chain, loops, L, out);
       else classify(chain, loops, band, L, out);
     }

@@ -79,6 +79,7 @@ function nearbyMax(f: DistanceField): Float64Array {
 function predictedLength(f: DistanceField, near: Float64Array, sp: number, phase: number): number {
   const { nx, ny, v } = f;
   const W = nx + 1;
+  const crossings = new Float64Array(8);
   let total = 0;
   for (let j = 0; j < ny; j++) {
     for (let i = 0; i < nx; i++) {
@@ -95,7 +96,7 @@ function predictedLength(f: DistanceField, near: Float64Array, sp: number, phase
         k1 = Math.floor(hi / sp + phase);
       for (let k = k0; k <= k1; k++) {
         const t = (k - phase) * sp;
-        total += cellLength(a - t, b - t, c - t, d - t) * f.h * (near[j * nx + i] - t < sp / 4 ? 0.5 : 1);
+        total += cellLength(a - t, b - t, c - t, d - t, crossings) * f.h * (near[j * nx + i] - t < sp / 4 ? 0.5 : 1);
       }
     }
   }
@@ -125,16 +126,15 @@ function cellsByDepth(f: DistanceField, count: number, sp: number, phase: number
   return out;
 }
 
-/** The zero set's crossings of a cell's edges, x, y: scratch for cellLength (no closure made per cell). */
-const CROSSINGS = new Float64Array(8);
-
-/** Length of the zero set in a unit cell with corner values a (0,0), b (1,0), c (1,1), d (0,1). */
-function cellLength(a: number, b: number, c: number, d: number): number {
+/**
+ * Length of the zero set in a unit cell with corner values a (0,0), b (1,0), c (1,1), d (0,1).
+ * @param p room for the zero set's crossings of the cell's edges, x, y (the caller's, reused from cell to cell)
+ */
+function cellLength(a: number, b: number, c: number, d: number, p: Float64Array): number {
   const sa = a >= 0,
     sb = b >= 0,
     sc = c >= 0,
     sd = d >= 0;
-  const p = CROSSINGS;
   let n = 0;
   if (sa !== sb) {
     p[2 * n] = a / (a - b);
