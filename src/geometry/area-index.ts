@@ -7,6 +7,7 @@
 import { pointInArea } from './clip.js';
 import { ringBounds, segmentsMeet } from './contain.js';
 import { hypot, type Bounds, type ExPolygon } from './types.js';
+import { LENGTH_EPS_UM } from './tolerances.js';
 
 /** How far beyond the boundary a point pushed out of the areas lands, µm. */
 export const OUTSIDE_MARGIN_UM = 5;
@@ -260,7 +261,7 @@ export class AreaIndex {
     const ex = e[4 * bi + 2] - e[4 * bi],
       ey = e[4 * bi + 3] - e[4 * bi + 1];
     const el = hypot(ex, ey) || 1;
-    for (let way = d > 1e-6 ? 0 : 1; way < 2; way++) {
+    for (let way = d > LENGTH_EPS_UM ? 0 : 1; way < 2; way++) {
       const ux = way === 0 ? (bx - x) / d : ey / el,
         uy = way === 0 ? (by - y) / d : -ex / el;
       for (let k = 0; k < 2; k++) {
@@ -369,7 +370,8 @@ export class AreaIndex {
           if (db > reach) continue;
           const el = Math.sqrt(len2);
           this.#addCandidate(bx + (ey / el) * want, by - (ex / el) * want, x, y, maxUm);
-          if (db > 1e-6) this.#addCandidate(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want, x, y, maxUm);
+          if (db > LENGTH_EPS_UM)
+            this.#addCandidate(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want, x, y, maxUm);
         }
       }
     }

@@ -366,6 +366,12 @@ function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: 
   return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 
+/**
+ * A triangle whose doubled area is at most this share of the squared lengths of two of its sides is degenerate:
+ * its circumcentre is too far off to compute. Dimensionless.
+ */
+const DEGENERATE = 1e-12;
+
 /** Circumcentre and circumradius of triangle t, into `out`; false for a degenerate triangle. */
 function circumcentre(xy: Float64Array, tri: Int32Array, t: number, out: Float64Array): boolean {
   const a = tri[3 * t],
@@ -380,7 +386,7 @@ function circumcentre(xy: Float64Array, tri: Int32Array, t: number, out: Float64
   const d = 2 * (bx * cy - by * cx);
   const b2 = bx * bx + by * by,
     c2 = cx * cx + cy * cy;
-  if (Math.abs(d) <= 1e-12 * (b2 + c2)) return false;
+  if (Math.abs(d) <= DEGENERATE * (b2 + c2)) return false;
   const ux = (cy * b2 - by * c2) / d,
     uy = (bx * c2 - cx * b2) / d;
   out[0] = ax + ux;

@@ -46,6 +46,7 @@ import { planObjects } from './objects.js';
 import type { PlacedObject, PlateSetup } from './print-setup.js';
 import { Pacer, paced, wait, type Steps } from './pacer.js';
 import { liftZ, sequenceObjects } from './sequential.js';
+import { LENGTH_EPS_MM } from '../geometry/tolerances.js';
 
 export type { PlacedObject, PlateSetup } from './print-setup.js';
 
@@ -211,7 +212,7 @@ function anySupport(setup: PrintSetup): boolean {
 function noTopGap(c: Config, layers: readonly LayerZ[], uneven: boolean, i: number): boolean {
   if (!uneven) return c.supportTopGapLayers === 0;
   if (c.supportZGap === null) return false;
-  const half = (h: number) => h / 2 > c.supportZGap! + 1e-9;
+  const half = (h: number) => h / 2 > c.supportZGap! + LENGTH_EPS_MM;
   return i >= 0 ? half(layers[i].height) : layers.some((l) => half(l.height));
 }
 

@@ -15,6 +15,7 @@
 import { hypot, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { LayerPlan, PrintPlan } from './types.js';
+import { MIN_TIME_S } from '../geometry/tolerances.js';
 
 /** Length of the path through `points` (from `from` first, when given), mm. */
 function polyLength(points: readonly Pt[], closed: boolean, from?: Pt): number {
@@ -52,7 +53,7 @@ export function applyMinLayerTime(layer: LayerPlan, minLayerTime: number, minPri
   const { extrude, travel } = naiveLayerSeconds(layer);
   const total = extrude + travel;
   if (total >= minLayerTime || extrude <= 0) return;
-  const factor = extrude / Math.max(minLayerTime - travel, 1e-6);
+  const factor = extrude / Math.max(minLayerTime - travel, MIN_TIME_S);
   for (const s of layer.steps) {
     if (s.kind === 'extrude') s.speed = Math.max(Math.min(s.speed, minPrintSpeed), s.speed * factor);
   }

@@ -22,14 +22,17 @@ export interface IslandWalls {
   lostMm2: number;
 }
 
-/** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
-const MIN_LOOP_AREA_UM2 = 0.05 * 1000 * 0.05 * 1000;
+/**
+ * Smallest area a wall's centreline may enclose (holes taken off), µm²: a 50 µm square. A smaller one is a
+ * speck the nozzle cannot draw. (Gap loops have their own, smaller: MIN_GAP_LOOP_AREA_UM2 in gap-loops.ts.)
+ */
+const MIN_WALL_LOOP_AREA_UM2 = 0.05 * 1000 * 0.05 * 1000;
 
 /** The rings of the areas big enough to print as loops (wall centrelines). */
 export function rings(areas: readonly ExPolygon[]): Polygon[] {
   const out: Polygon[] = [];
   for (const a of areas) {
-    if (Math.abs(area([a])) < MIN_LOOP_AREA_UM2) continue;
+    if (Math.abs(area([a])) < MIN_WALL_LOOP_AREA_UM2) continue;
     out.push(a.outer);
     for (const h of a.holes) out.push(h);
   }

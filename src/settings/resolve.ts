@@ -5,6 +5,7 @@
 import { StrataError } from '../errors.js';
 import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey, type Settings, type SliceOptions } from './schema.js';
 import { findFilament, findPrinter, listPresets, printerWithoutPreset } from './presets/index.js';
+import { LAYER_SHARE_EPS, WHOLE_QUOTIENT_EPS } from '../geometry/tolerances.js';
 
 /** Values computed once from the settings; algorithms read these rather than re-deriving them. */
 export interface Derived {
@@ -155,7 +156,7 @@ export function parseSettingText(key: SettingKey, text: string): unknown {
 
 /** Throw for a key that is not a setting, suggesting the closest one. */
 export function checkKey(key: string, source = 'option'): SettingKey {
-  if (Object.prototype.hasOwnProperty.call(SCHEMA, key)) return key as SettingKey;
+  if (Object.hasOwn(SCHEMA, key)) return key as SettingKey;
   const s = suggest(key, SETTING_KEYS);
   throw new StrataError(
     'UNKNOWN_SETTING',
@@ -262,8 +263,8 @@ export function resolveConfig(options: SliceOptions = {}): Config {
   const minLayerHeightMm = s.minLayerHeight ?? Math.min(s.layerHeight, round3(s.nozzleDiameter * 0.175));
   const maxLayerHeightMm = s.maxLayerHeight ?? Math.max(s.layerHeight, round3(s.nozzleDiameter * 0.75));
   if (s.adaptiveLayerHeight) checkAdaptiveLimits(minLayerHeightMm, maxLayerHeightMm, s);
-  const walls = s.wallCount ?? Math.max(0, Math.round(s.shellWallThickness / lineWidthMm + 1e-9));
-  const layersFor = (t: number) => (t <= 0 ? 0 : Math.max(1, Math.ceil(t / s.layerHeight - 1e-6)));
+  const walls = s.wallCount ?? Math.max(0, Math.round(s.shellWallThickness / lineWidthMm + WHOLE_QUOTIENT_EPS));
+  const layersFor = (t: number) => (t <= 0 ? 0 : Math.max(1, Math.ceil(t / s.layerHeight - LAYER_SHARE_EPS)));
   const derived: Derived = {
     lineWidthMm,
     firstLayerLineWidthMm,
@@ -308,7 +309,7 @@ function checkAdaptiveLimits(min: number, max: number, s: Settings): void {
 
 /** A gap in mm as whole layers (rounded to the nearest). */
 function gapLayers(gapMm: number, layerHeight: number): number {
-  return Math.max(0, Math.round(gapMm / layerHeight + 1e-9));
+  return Math.max(0, Math.round(gapMm / layerHeight + WHOLE_QUOTIENT_EPS));
 }
 
 function round3(x: number): number {
