@@ -1656,7 +1656,7 @@ function relink(sc: MedialScratch, paths: readonly number[][], n: number): numbe
   return out;
 }
 
-function pathLength(p: readonly number[], nodes: Nodes): number {
+function pathLengthUm(p: readonly number[], nodes: Nodes): number {
   let l = 0;
   for (let k = 1; k < p.length; k++) l += hypot(nodes.x[p[k]] - nodes.x[p[k - 1]], nodes.y[p[k]] - nodes.y[p[k - 1]]);
   return l;
@@ -1679,7 +1679,7 @@ function prune(paths: number[][], nodes: Nodes, n: number, set: Settings, points
   const { sc } = set;
   for (;;) {
     const deg = degrees(sc, paths, n);
-    const lengths = paths.map((p) => pathLength(p, nodes));
+    const lengths = paths.map((p) => pathLengthUm(p, nodes));
     const drop = u8(sc, U.DROP, paths.length);
 
     // 1. short links between junctions

@@ -10,7 +10,7 @@ import { generateInfill } from '../infill/index.js';
 import type { InfillParams, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
 import { allSkin } from '../regions/skin-areas.js';
-import { gapLoopWidths, type GapLoop } from '../regions/gap-loops.js';
+import { gapLoopWidthsMm, type GapLoop } from '../regions/gap-loops.js';
 import type { IslandRegions, RegionFill, WallSet } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { CustomInfillGenerator } from '../shader/index.js';
@@ -180,7 +180,7 @@ function skinAngleOf(fill: RegionFill, cfg: Config, layerIndex: number): number 
 
 /** Gap loops with their own widths, as one entry of per-path widths. */
 function gapEntry(cfg: Config, role: 'skin-gap', gaps: readonly GapLoop[]): PathEntry {
-  const widths = gapLoopWidths(gaps);
+  const widths = gapLoopWidthsMm(gaps);
   return makeEntry(
     cfg,
     role,

@@ -142,7 +142,7 @@ function walk(ring: CombRing, c1: Crossing, c2: Crossing): Pt[] {
   return out;
 }
 
-export function pathLength(a: Pt, way: readonly Pt[]): number {
+export function pathLengthUm(a: Pt, way: readonly Pt[]): number {
   let len = 0;
   let p = a;
   for (const q of way) {

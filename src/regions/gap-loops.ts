@@ -5,7 +5,7 @@
  */
 import { area, difference, offset, opening, ringArea, strokeArea } from '../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon, type Polygon } from '../geometry/types.js';
-import { stripWidth } from './strip-width.js';
+import { stripWidthUm } from './strip-width.js';
 
 export interface GapLoop {
   loop: Polygon;
@@ -13,7 +13,7 @@ export interface GapLoop {
 }
 
 /** Each gap loop's width, mm, at every one of its points (the per-point widths a path entry carries). */
-export function gapLoopWidths(gaps: readonly GapLoop[]): Float64Array[] {
+export function gapLoopWidthsMm(gaps: readonly GapLoop[]): Float64Array[] {
   return gaps.map((g) => new Float64Array(g.loop.length).fill(g.widthUm / UM_PER_MM));
 }
 
@@ -46,7 +46,7 @@ function fillGaps(gaps: readonly ExPolygon[], w: number, rounds: number, out: Ga
   const pieces = gaps.filter((g) => area([g]) >= minWidth * minWidth);
   if (pieces.length === 0) return;
   for (const g of opening(pieces, minWidth / 2)) {
-    const d = stripWidth(g);
+    const d = stripWidthUm(g);
     if (d < minWidth || d > MAX_GAP_WIDTHS * w) continue;
     const bead = d / 2;
     const loops = offset([g], -bead / 2)

@@ -103,7 +103,7 @@ function ringsOver(
   const rings: ExtraWallRing[] = [];
   let past = RINGS_PAST_OVERHANG;
   for (let r = 0; r < MAX_EXTRA_WALL_RINGS && ring.length > 0; r++) {
-    const lines = joinEnds(clipLines(closedLines(ring), clip), w / 10).filter((l) => lineLength(l) >= minLength);
+    const lines = joinEnds(clipLines(closedLines(ring), clip), w / 10).filter((l) => lineLengthUm(l) >= minLength);
     // the next ring: one line further from the free edges, the anchoring side kept where it is
     const next = intersection(offset(anchoring.length ? union(ring, anchoring) : ring, -w), reach);
     if (next.length === 0) {
@@ -140,7 +140,7 @@ function closedLines(areas: readonly ExPolygon[]): Polyline[] {
   return out;
 }
 
-function lineLength(l: readonly Pt[]): number {
+function lineLengthUm(l: readonly Pt[]): number {
   let len = 0;
   for (let i = 1; i < l.length; i++) len += hypot(l[i].x - l[i - 1].x, l[i].y - l[i - 1].y);
   return len;

@@ -7,7 +7,7 @@
 import { offset, area, difference } from '../geometry/clip.js';
 import type { ExPolygon, Polygon } from '../geometry/types.js';
 import type { WallSet } from './types.js';
-import { gapLoops, gapLoopWidths, type GapLoop } from './gap-loops.js';
+import { gapLoops, gapLoopWidthsMm, type GapLoop } from './gap-loops.js';
 
 export type { GapLoop } from './gap-loops.js';
 
@@ -86,7 +86,7 @@ export function classicWalls(islands: readonly ExPolygon[], wallCount: number, l
         wall: 1,
         closed: true,
         paths: gapFill.map((g) => g.loop),
-        widths: gapLoopWidths(gapFill),
+        widths: gapLoopWidthsMm(gapFill),
       });
     }
     out.push({ outline: island, walls, inner: inside, lostMm2: 0 });
