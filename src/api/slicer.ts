@@ -178,7 +178,7 @@ export class Slicer {
   /** The resolved value of one setting. */
   get<K extends SettingKey>(key: K): Settings[K] {
     checkKey(key);
-    return this.#config[key] as Settings[K];
+    return this.#config.settings[key];
   }
 
   /** Choose a printer preset (validated now); chainable. */
@@ -260,7 +260,7 @@ export class Slicer {
     // every setting as resolved (presets included), so that the project slices the same anywhere
     const cfg = this.#config;
     const print: Record<string, unknown> = { printer: cfg.printerId, filament: cfg.filamentId };
-    for (const k of SETTING_KEYS) if (!RUNTIME_KEYS.has(k)) print[k] = cfg[k];
+    for (const k of SETTING_KEYS) if (!RUNTIME_KEYS.has(k)) print[k] = cfg.settings[k];
     // the objects are saved as placed: turned, scaled and stood up already
     Object.assign(print, PLACED);
     // loaded when first used: a slice that saves no project does not load the writer

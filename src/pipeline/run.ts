@@ -530,7 +530,12 @@ export function* runPipelineSteps(plate: PlateSetup, opts: RunOptions, pacer: Pa
       cfg.thumbnails,
     );
     yield* paced(
-      writeGcodeSteps(printPlan, cfg, estimate, opts.sink, { generator: `Strata ${VERSION}`, thumbnails }),
+      writeGcodeSteps(printPlan, cfg.settings, estimate, opts.sink, {
+        generator: `Strata ${VERSION}`,
+        thumbnails,
+        printerId: cfg.printerId,
+        filamentId: cfg.filamentId,
+      }),
       () => report('writing', 0.9 + (0.1 * ++k) / n),
     );
     report('writing', 1);

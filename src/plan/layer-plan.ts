@@ -667,8 +667,8 @@ export function planLayer(
     state.spiralEnd = { finish, into: plan.steps };
   }
   if (position === 1) {
-    if (cfg.nozzleTemperature !== cfg.firstLayerNozzleTemp) plan.nozzleTemperature = cfg.nozzleTemperature;
-    if (cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemp) plan.bedTemperature = cfg.bedTemperature;
+    if (cfg.nozzleTemperature !== cfg.firstLayerNozzleTemperature) plan.nozzleTemperature = cfg.nozzleTemperature;
+    if (cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemperature) plan.bedTemperature = cfg.bedTemperature;
   }
   return plan;
 }

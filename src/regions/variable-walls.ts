@@ -655,5 +655,5 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
 /** Variable-width walls of each island (see the file's comment). */
 export function variableWalls(islands: readonly ExPolygon[], cfg: Config, lineWidthUm: number): IslandWalls[] {
   const L = limitsOf(cfg, lineWidthUm);
-  return islands.map((island) => islandWalls(island, cfg.walls, L));
+  return islands.map((island) => islandWalls(island, cfg.wallCount, L));
 }

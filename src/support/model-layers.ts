@@ -231,8 +231,8 @@ export class ModelLayers {
     const roof = roofAbove.length ? intersection(s, roofAbove) : [];
     const bottom = this.bottomGap(j);
     const floorBelow =
-      cfg.supportFloorLayerCount > 0 && cfg.supportPlacement === 'everywhere'
-        ? this.sectionsBetween(j, -(bottom + cfg.supportFloorLayerCount), -(bottom + 1))
+      cfg.supportFloorLayers > 0 && cfg.supportPlacement === 'everywhere'
+        ? this.sectionsBetween(j, -(bottom + cfg.supportFloorLayers), -(bottom + 1))
         : [];
     let floor = floorBelow.length ? intersection(s, floorBelow) : [];
     if (roof.length && floor.length) floor = difference(floor, roof);

@@ -10,7 +10,7 @@ test('defaults resolve to Ender-3, PLA, 0.2 mm layers, 20 % grid, 2 walls, 4 ski
   assert.equal(c.layerHeight, 0.2);
   assert.equal(c.infillDensity, 20);
   assert.equal(c.infillPattern, 'grid');
-  assert.equal(c.walls, 2);
+  assert.equal(c.wallCount, 2);
   assert.equal(c.topLayers, 4);
   assert.equal(c.bottomLayers, 4);
   assert.equal(c.lineWidthMm, c.nozzleDiameter);
@@ -50,8 +50,8 @@ test('the caller options object is never mutated', () => {
 });
 
 test('wallCount overrides shellWallThickness; text values parse by type', () => {
-  assert.equal(resolveConfig({ wallCount: 3 }).walls, 3);
-  assert.equal(resolveConfig({ shellWallThickness: 1.2 }).walls, 3);
+  assert.equal(resolveConfig({ wallCount: 3 }).wallCount, 3);
+  assert.equal(resolveConfig({ shellWallThickness: 1.2 }).wallCount, 3);
   assert.equal(parseSettingText('infillDensity', '20%'), 20);
   assert.equal(parseSettingText('combing', 'off'), false);
   assert.equal(parseSettingText('lineWidth', 'auto'), null);
@@ -60,7 +60,10 @@ test('wallCount overrides shellWallThickness; text values parse by type', () => 
 test('setting the nozzle or bed temperature moves the first-layer one with it, keeping the preset offset', () => {
   const base = resolveConfig();
   const c = resolveConfig({ nozzleTemperature: 230, bedTemperature: 70 });
-  assert.equal(c.firstLayerNozzleTemp - 230, base.firstLayerNozzleTemp - base.nozzleTemperature);
-  assert.equal(c.firstLayerBedTemp - 70, base.firstLayerBedTemp - base.bedTemperature);
-  assert.equal(resolveConfig({ nozzleTemperature: 230, firstLayerNozzleTemperature: 240 }).firstLayerNozzleTemp, 240);
+  assert.equal(c.firstLayerNozzleTemperature - 230, base.firstLayerNozzleTemperature - base.nozzleTemperature);
+  assert.equal(c.firstLayerBedTemperature - 70, base.firstLayerBedTemperature - base.bedTemperature);
+  assert.equal(
+    resolveConfig({ nozzleTemperature: 230, firstLayerNozzleTemperature: 240 }).firstLayerNozzleTemperature,
+    240,
+  );
 });

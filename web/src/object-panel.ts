@@ -418,9 +418,9 @@ export class ObjectPanel {
         try {
           print = store.config();
         } catch {
-          return { values: { ...store.base(), ...(part ? it.settings : {}), ...own }, problem: null };
+          return { values: { ...store.base().settings, ...(part ? it.settings : {}), ...own }, problem: null };
         }
-        const inherited = { ...print, ...(part ? it.settings : {}) };
+        const inherited = { ...print.settings, ...(part ? it.settings : {}) };
         try {
           const table = new ConfigTable(store.options(), print);
           const layers: Array<{ settings: Overrides; use: ScopeUse; where: string }> = [
@@ -428,7 +428,7 @@ export class ObjectPanel {
           ];
           if (part) layers.push({ settings: part.settings, use, where: where() });
           const id = table.resolve(layers);
-          return { values: { ...table.configs[id], ...(part ? it.settings : {}), ...own }, problem: null };
+          return { values: { ...table.configs[id].settings, ...(part ? it.settings : {}), ...own }, problem: null };
         } catch (e) {
           return { values: { ...inherited, ...own }, problem: e instanceof Error ? e.message : String(e) };
         }

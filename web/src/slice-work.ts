@@ -240,7 +240,7 @@ async function handle(msg: ToWorker): Promise<void> {
       const cfg = resolveConfig(placed ? { ...msg.options, center: false } : msg.options);
       const prepared = prepareModel(input, cfg);
       // PrusaSlicer's copy of the print settings: every one resolved, in its keys
-      const resolved: Record<string, unknown> = { ...cfg };
+      const resolved: Record<string, unknown> = { ...cfg.settings };
       const bytes = writeProject3mf(prepared.objects, {
         printSettings: msg.printSettings,
         slic3rPrintSettings: toSlic3rKeys(resolved, cfg.layerHeight),
