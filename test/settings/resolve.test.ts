@@ -57,6 +57,18 @@ test('wallCount overrides shellWallThickness; text values parse by type', () => 
   assert.equal(parseSettingText('lineWidth', 'auto'), null);
 });
 
+test('the config holds each derived setting once, resolved; the settings as given keep it empty', () => {
+  const c = resolveConfig({ nozzleDiameter: 0.6, shellWallThickness: 1.8 });
+  assert.equal(c.lineWidthMm, 0.6);
+  assert.equal(c.wallCount, 3);
+  assert.equal(c.firstLayerNozzleTemperature, c.settings.firstLayerNozzleTemperature);
+  for (const key of ['lineWidth', 'firstLayerLineWidth', 'supportLineWidth', 'minLayerHeight', 'topSkinThickness'])
+    assert.ok(!(key in c), `${key} is only in its resolved form`);
+  assert.equal(c.settings.lineWidth, null, 'an empty setting stays empty where settings are written back out');
+  assert.equal(c.settings.wallCount, null);
+  assert.equal(resolveConfig({ wallCount: 4 }).settings.wallCount, 4);
+});
+
 test('setting the nozzle or bed temperature moves the first-layer one with it, keeping the preset offset', () => {
   const base = resolveConfig();
   const c = resolveConfig({ nozzleTemperature: 230, bedTemperature: 70 });
