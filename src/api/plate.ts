@@ -35,7 +35,7 @@ export function plateOf(
       const scope = SETTING_SCOPE[k as SettingKey];
       // another slicer's project may vary what Strata keeps per print (or per object): left to the print
       // (the same value as the print's changes nothing: PrusaSlicer repeats the layer height in every range)
-      const same = v === cfg[k as SettingKey];
+      const same = v === cfg.settings[k as SettingKey];
       if (
         src.format !== 'strata' &&
         (scope === 'print' || (scope === 'layer' && use !== 'layer range') || (scope === 'object' && use !== 'object'))

@@ -187,7 +187,7 @@ export class Slicer {
   /** The resolved value of one setting. */
   get<K extends SettingKey>(key: K): Settings[K] {
     checkKey(key);
-    return this.#config[key] as Settings[K];
+    return this.#config.settings[key];
   }
 
   /** Choose a printer preset (validated now); chainable. */
@@ -274,7 +274,7 @@ export class Slicer {
     // every setting as resolved (presets included), so that the project slices the same anywhere
     const cfg = this.#config;
     const print: Record<string, unknown> = { printer: cfg.printerId, filament: cfg.filamentId };
-    for (const k of SETTING_KEYS) if (!RUNTIME_KEYS.has(k)) print[k] = cfg[k];
+    for (const k of SETTING_KEYS) if (!RUNTIME_KEYS.has(k)) print[k] = cfg.settings[k];
     // the objects are saved as placed: turned, scaled and stood up already
     Object.assign(print, PLACED);
     const own = options.printSettings ? { ...options.printSettings, ...PLACED } : print;

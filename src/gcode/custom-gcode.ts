@@ -21,7 +21,7 @@
  * skips the first). A pause adds no time to the estimate: the printer waits for the user.
  */
 import type { LayerPlan, PlanEstimate, PrintPlan } from '../plan/types.js';
-import { filamentArea } from '../plan/moves.js';
+import { filamentAreaMm2 } from '../plan/moves.js';
 import type { Settings } from '../settings/schema.js';
 import { FLAVORS } from './flavor.js';
 import { templateForFlavor } from './flavor-templates.js';
@@ -103,7 +103,7 @@ const r3 = (v: number) => Math.round(v * 1000) / 1000;
 /** Compile and run every template of the print (the per-layer ones as the layers are written). */
 export function printCustomGcode(plan: PrintPlan, settings: Settings, estimate: PlanEstimate): PrintCustomGcode {
   const derived = derivedTemplateValues(plan, estimate);
-  const area = filamentArea(settings.filamentDiameter);
+  const area = filamentAreaMm2(settings.filamentDiameter);
   const volume = (filamentMm: number) => r3(filamentMm * area);
   const weight = (filamentMm: number) => r3((filamentMm * area * settings.filamentDensity) / 1000);
   const run = (name: string, t: ParsedTemplate, values: Record<string, number>): string[] =>

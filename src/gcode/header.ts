@@ -21,6 +21,9 @@ export interface GcodeMeta {
   comments?: readonly string[];
   /** Encoded preview images to embed (see thumbnail/), in the order given. */
   thumbnails?: readonly EncodedThumbnail[];
+  /** The printer and filament presets the settings came from (Config.printerId, filamentId): hosts read their names. */
+  printerId?: string;
+  filamentId?: string;
 }
 
 const oneLine = (text: string): string => text.replace(/[\r\n]+/g, ' ');

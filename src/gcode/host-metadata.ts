@@ -13,6 +13,7 @@
  */
 import type { PlanEstimate, PrintPlan } from '../plan/types.js';
 import type { Settings } from '../settings/schema.js';
+import type { GcodeMeta } from './header.js';
 import { findFilament, findPrinter } from '../settings/presets/index.js';
 import { compact, humanDuration, mm } from './format.js';
 
@@ -37,10 +38,14 @@ const quoted = (text: string) => `"${oneLine(text).replace(/"/g, '\\"')}"`;
  * The trailer after the end G-code: the estimates and the settings hosts show, as PrusaSlicer writes them
  * (`; key = value`).
  */
-export function hostTrailerLines(plan: PrintPlan, settings: Settings, estimate: PlanEstimate): string[] {
-  const ids = settings as Settings & { printerId?: string; filamentId?: string };
-  const printer = ids.printerId ? findPrinter(ids.printerId) : undefined;
-  const filament = ids.filamentId ? findFilament(ids.filamentId) : undefined;
+export function hostTrailerLines(
+  plan: PrintPlan,
+  settings: Settings,
+  estimate: PlanEstimate,
+  presets: Pick<GcodeMeta, 'printerId' | 'filamentId'> = {},
+): string[] {
+  const printer = presets.printerId ? findPrinter(presets.printerId) : undefined;
+  const filament = presets.filamentId ? findFilament(presets.filamentId) : undefined;
   const radius = settings.filamentDiameter / 2;
   const cm3 = (estimate.filamentMm * Math.PI * radius * radius) / 1000;
   const firstNozzle = settings.firstLayerNozzleTemperature ?? settings.nozzleTemperature;

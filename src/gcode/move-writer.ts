@@ -25,6 +25,7 @@ import type { MoveSink } from '../plan/moves.js';
 import type { ObjectLabels } from './object-labels.js';
 import type { LayerGcode } from './custom-gcode.js';
 import { layerChangeMarker } from './host-metadata.js';
+import { WHOLE_QUOTIENT_EPS } from '../geometry/tolerances.js';
 
 /** The `;TYPE:` marker of each feature, as Cura names them (Cura writes its brim as SKIRT, its raft as SUPPORT-INTERFACE); skin over air is BRIDGE, as OrcaSlicer names it. */
 export const TYPE_MARKERS = {
@@ -107,7 +108,7 @@ export class MoveWriter implements MoveSink {
   private progress(elapsed: number): void {
     const total = this.totalSeconds;
     const percent = total > 0 ? Math.min(100, Math.floor((100 * elapsed) / total)) : 0;
-    const left = Math.max(0, Math.ceil((total - elapsed) / 60 - 1e-9));
+    const left = Math.max(0, Math.ceil((total - elapsed) / 60 - WHOLE_QUOTIENT_EPS));
     const p = Math.max(percent, this.percent);
     const r = this.minutesLeft < 0 ? left : Math.min(left, this.minutesLeft);
     if (p === this.percent && r === this.minutesLeft) return;

@@ -9,7 +9,7 @@
  *   `floor` / `ceil` (also `math.floor` / `math.ceil`), `digits(x, width[, decimals])`, `zdigits` (zero
  *   padded), `is_nil(var)`, `empty(var)`, `size(var)`, `one_of(x, "text", /regex/…)` and
  *   `interpolate_table(x, (x0, y0), (x1, y1)…)` (held at the ends outside the table).
- * - `+` adds numbers and joins text; comparisons compare numbers (equal within 1e-9) or, where text is
+ * - `+` adds numbers and joins text; comparisons compare numbers (equal within 1e-9, TEMPLATE_NUMBER_EPS) or, where text is
  *   involved, text; `=~` matches the whole text. Conditions take booleans, numbers (not 0) and text (not
  *   empty). `/` divides exactly, as Cura's Python does (PrusaSlicer divides two whole numbers as whole
  *   numbers: `int(a / b)` gives that).
@@ -23,6 +23,7 @@
 import { StrataError } from '../errors.js';
 import { compact } from './format.js';
 import { legacyIsText, ON_VARIABLES, type Expr, type ParsedTemplate, type TemplateNode } from './template-parse.js';
+import { TEMPLATE_NUMBER_EPS } from '../geometry/tolerances.js';
 
 export type TemplateValue = number | string | boolean;
 
@@ -75,9 +76,9 @@ function num(v: TemplateValue, what: string): number {
 }
 
 function compare(op: string, a: TemplateValue, b: TemplateValue): boolean {
-  // -1, 0 or 1: numbers as numbers (equal within 1e-9), text (or text and a value) as text, booleans for (in)equality
+  // -1, 0 or 1: numbers as numbers (equal within TEMPLATE_NUMBER_EPS), text (or text and a value) as text, booleans for (in)equality
   let sign: number;
-  if (typeof a === 'number' && typeof b === 'number') sign = Math.abs(a - b) < 1e-9 ? 0 : a < b ? -1 : 1;
+  if (typeof a === 'number' && typeof b === 'number') sign = Math.abs(a - b) < TEMPLATE_NUMBER_EPS ? 0 : a < b ? -1 : 1;
   else if (typeof a === 'boolean' && typeof b === 'boolean' && (op === '==' || op === '!=')) sign = a === b ? 0 : 1;
   else if (typeof a === 'string' || typeof b === 'string') {
     const x = valueText(a);

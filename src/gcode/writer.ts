@@ -118,7 +118,7 @@ export function* writeGcodeSteps(
 
   for (const l of end) out.line(l);
   // what print hosts read (Moonraker, for Mainsail and Fluidd), after the G-code as PrusaSlicer writes it
-  for (const l of hostTrailerLines(plan, settings, estimate)) out.line(l);
+  for (const l of hostTrailerLines(plan, settings, estimate, meta)) out.line(l);
   out.flush();
 }
 

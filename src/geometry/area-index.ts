@@ -7,6 +7,7 @@
 import { pointInArea } from './clip.js';
 import { ringBounds, segmentsMeet } from './contain.js';
 import { hypot, type Bounds, type ExPolygon } from './types.js';
+import { LENGTH_EPS_UM } from './tolerances.js';
 
 /** How far beyond the boundary a point pushed out of the areas lands, µm. */
 export const OUTSIDE_MARGIN_UM = 5;
@@ -19,7 +20,7 @@ export interface Found {
   y: number;
 }
 
-/** Candidate points of AreaIndex.nearestClear (reused; every query is synchronous). */
+/** Candidate points of AreaIndex.nearestClear: x, y, distance, and the order they are tried in. */
 interface Candidates {
   x: Float64Array;
   y: Float64Array;
@@ -32,25 +33,6 @@ const makeCandidates = (n: number): Candidates => ({
   d: new Float64Array(n),
   order: new Int32Array(n),
 });
-let cand = makeCandidates(64);
-/** How many of `cand` the query in progress holds. */
-let candCount = 0;
-
-/** Keep (qx, qy), in whole µm (as the areas' own points are, and as the point queries are compiled for), when it lies within maxUm of (x, y). */
-function addCandidate(qx: number, qy: number, x: number, y: number, maxUm: number): void {
-  qx = Math.round(qx);
-  qy = Math.round(qy);
-  const dq = hypot(qx - x, qy - y);
-  if (!(dq <= maxUm)) return;
-  if (candCount === cand.d.length) cand = growCandidates(cand);
-  cand.x[candCount] = qx;
-  cand.y[candCount] = qy;
-  cand.d[candCount] = dq;
-  candCount++;
-}
-
-/** Candidates nearest first, the earliest kept on a tie. */
-const nearerCandidate = (a: number, b: number) => cand.d[a] - cand.d[b] || a - b;
 
 function growCandidates(c: Candidates): Candidates {
   const g = makeCandidates(2 * c.d.length);
@@ -60,9 +42,10 @@ function growCandidates(c: Candidates): Candidates {
   return g;
 }
 
-/** Edge indices found by AreaIndex.#edgesNear (reused; every query is synchronous). */
-let nearEdges = new Int32Array(256);
-
+/**
+ * The index of one set of areas. It owns the working arrays of its queries (the candidate points, the edges
+ * found), which each query fills afresh (every query is synchronous): made on first use, grown as needed.
+ */
 export class AreaIndex {
   /** Edges as x1, y1, x2, y2 (interior on the left: outer rings counter-clockwise, holes clockwise). */
   readonly #e: Float64Array;
@@ -80,6 +63,13 @@ export class AreaIndex {
   /** Per edge, the query that last looked at it (nearestClear visits each edge once). */
   #seen: Int32Array | null = null;
   #query = 0;
+  /** The candidates of the query in progress (nearestOutside, nearestClear), and how many it holds. */
+  #cand: Candidates | null = null;
+  #candCount = 0;
+  /** Edge indices found by #edgesNear for the query in progress. */
+  #near: Int32Array | null = null;
+  /** Candidates nearest first, the earliest kept on a tie. */
+  readonly #nearer = (a: number, b: number): number => this.#cand!.d[a] - this.#cand!.d[b] || a - b;
 
   constructor(areas: readonly ExPolygon[]) {
     let n = 0;
@@ -271,7 +261,7 @@ export class AreaIndex {
     const ex = e[4 * bi + 2] - e[4 * bi],
       ey = e[4 * bi + 3] - e[4 * bi + 1];
     const el = hypot(ex, ey) || 1;
-    for (let way = d > 1e-6 ? 0 : 1; way < 2; way++) {
+    for (let way = d > LENGTH_EPS_UM ? 0 : 1; way < 2; way++) {
       const ux = way === 0 ? (bx - x) / d : ey / el,
         uy = way === 0 ? (by - y) / d : -ex / el;
       for (let k = 0; k < 2; k++) {
@@ -334,10 +324,10 @@ export class AreaIndex {
     const best = this.#firstClear(d);
     if (best || !rings) return best;
     for (let k = 1; k <= 4; k++) {
-      candCount = 0;
+      this.#candCount = 0;
       for (let a = 0; a < 16; a++) {
         const ang = (a * Math.PI) / 8;
-        addCandidate(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang), x, y, maxUm);
+        this.#addCandidate(x + ((maxUm * k) / 4) * Math.cos(ang), y + ((maxUm * k) / 4) * Math.sin(ang), x, y, maxUm);
       }
       const q = this.#firstClear(d);
       if (q) return q;
@@ -346,7 +336,7 @@ export class AreaIndex {
   }
 
   /**
-   * The candidates (in `cand`) `want` off every edge within reach of (x, y): off the edge's nearest point along
+   * The candidates (in #cand) `want` off every edge within reach of (x, y): off the edge's nearest point along
    * its outward normal, and away from (x, y); only those within maxUm of (x, y).
    */
   #edgeCandidates(x: number, y: number, want: number, maxUm: number): void {
@@ -357,7 +347,7 @@ export class AreaIndex {
       r0 = this.#row(y - reach),
       r1 = this.#row(y + reach);
     // candidates within maxUm, then tested nearest first (the earliest found on a tie): the first clear one wins
-    candCount = 0;
+    this.#candCount = 0;
     const seen = (this.#seen ??= new Int32Array(e.length / 4));
     const query = ++this.#query;
     for (let r = r0; r <= r1; r++) {
@@ -379,19 +369,36 @@ export class AreaIndex {
           const db = hypot(x - bx, y - by);
           if (db > reach) continue;
           const el = Math.sqrt(len2);
-          addCandidate(bx + (ey / el) * want, by - (ex / el) * want, x, y, maxUm);
-          if (db > 1e-6) addCandidate(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want, x, y, maxUm);
+          this.#addCandidate(bx + (ey / el) * want, by - (ex / el) * want, x, y, maxUm);
+          if (db > LENGTH_EPS_UM)
+            this.#addCandidate(bx + ((x - bx) / db) * want, by + ((y - by) / db) * want, x, y, maxUm);
         }
       }
     }
   }
 
+  /** Keep (qx, qy), in whole µm (as the areas' own points are, and as the point queries are compiled for), when it lies within maxUm of (x, y). */
+  #addCandidate(qx: number, qy: number, x: number, y: number, maxUm: number): void {
+    qx = Math.round(qx);
+    qy = Math.round(qy);
+    const dq = hypot(qx - x, qy - y);
+    if (!(dq <= maxUm)) return;
+    let cand = (this.#cand ??= makeCandidates(64));
+    const n = this.#candCount;
+    if (n === cand.d.length) cand = this.#cand = growCandidates(cand);
+    cand.x[n] = qx;
+    cand.y[n] = qy;
+    cand.d[n] = dq;
+    this.#candCount = n + 1;
+  }
+
   /** The nearest of the candidates that lies more than d from the areas (d = 0: outside them), or null. */
   #firstClear(d: number): Found | null {
-    const { x: cx, y: cy, order } = cand;
-    const n = candCount;
+    const n = this.#candCount;
+    if (n === 0) return null;
+    const { x: cx, y: cy, order } = this.#cand!;
     for (let i = 0; i < n; i++) order[i] = i;
-    const ids = order.subarray(0, n).sort(nearerCandidate);
+    const ids = order.subarray(0, n).sort(this.#nearer);
     for (let k = 0; k < n; k++) {
       const i = ids[k];
       if (d > 0 ? !this.meetsDisc(cx[i], cy[i], d) : !this.contains(cx[i], cy[i])) return { x: cx[i], y: cy[i] };
@@ -412,7 +419,7 @@ export class AreaIndex {
     const found = this.#edgesNear(bounds);
     if (found === 0) return this.contains(a.outer[0].x, a.outer[0].y);
     const e = this.#e,
-      near = nearEdges;
+      near = this.#near!;
     for (let r = -1; r < a.holes.length; r++) {
       const ring = r < 0 ? a.outer : a.holes[r];
       if (ring.length && this.contains(ring[0].x, ring[0].y)) return true;
@@ -436,7 +443,7 @@ export class AreaIndex {
     return false;
   }
 
-  /** The areas' edges (in `nearEdges`, possibly repeated) whose bounds meet `bounds`; returns how many. */
+  /** The areas' edges (in #near, possibly repeated) whose bounds meet `bounds`; returns how many. */
   #edgesNear(bounds: Bounds): number {
     const { minX, minY, maxX, maxY } = bounds;
     const gx = this.#minX + this.#nx * this.#cell,
@@ -447,6 +454,7 @@ export class AreaIndex {
       c1 = this.#col(maxX),
       r0 = this.#row(minY),
       r1 = this.#row(maxY);
+    let near = (this.#near ??= new Int32Array(256));
     let n = 0;
     for (let r = r0; r <= r1; r++) {
       const row = r * this.#nx;
@@ -464,12 +472,12 @@ export class AreaIndex {
           (y1 < y2 ? y1 : y2) > maxY
         )
           continue;
-        if (n === nearEdges.length) {
+        if (n === near.length) {
           const grown = new Int32Array(2 * n);
-          grown.set(nearEdges);
-          nearEdges = grown;
+          grown.set(near);
+          near = this.#near = grown;
         }
-        nearEdges[n++] = i;
+        near[n++] = i;
       }
     }
     return n;
@@ -528,12 +536,13 @@ export class AreaIndex {
       maxX: Math.max(ax, bx),
       maxY: Math.max(ay, by),
     });
-    const e = this.#e;
+    const e = this.#e,
+      near = this.#near!;
     const dx = bx - ax,
       dy = by - ay;
     let touch = false;
     for (let j = 0; j < n; j++) {
-      const k = 4 * nearEdges[j];
+      const k = 4 * near[j];
       const cx = e[k],
         cy = e[k + 1];
       const ex = e[k + 2] - cx,

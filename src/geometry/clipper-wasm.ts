@@ -3,9 +3,15 @@
  * conversion of plain rings to and from it. Only the facade (`clip.ts`) uses this module.
  *
  * Coordinates cross as doubles with precision 0 (the engine's scale 1): integer micrometres stay exact
- * in both directions, and every point the engine makes is rounded to an integer. Rings go in through one
- * reused typed buffer and one reused path, and come back through views of the engine's memory; every
- * engine object made here is deleted before the call returns, so the engine's heap does not grow.
+ * in both directions, and every point the engine makes is rounded to an integer. Rings go in through a
+ * typed buffer of the call's own and one engine path, and come back through views of the engine's memory
+ * made for the call; every engine object made for a call is deleted before it returns, so the engine's
+ * heap does not grow.
+ *
+ * Module state, and why it is no state a slice could see: the engine (one WebAssembly instance per thread,
+ * loaded once with this module) and the few engine objects made with it below (path lists, a result tree,
+ * two clippers). Every call here is synchronous and leaves those objects empty, so they carry nothing from
+ * one call to the next: they are part of the instance, cached with it so that no call pays for making them.
  */
 import Clipper2Z from 'clipper2-wasm/dist/es/clipper2z.js';
 import type {
@@ -53,7 +59,7 @@ const ENDS: Record<EndKind, EndType> = {
   square: C.EndType.Square,
 };
 
-// Reused engine objects and buffer: every call here is synchronous and leaves them empty.
+// The engine objects every call uses (see the file comment): each call leaves them empty.
 const scratchPath: PathD = new C.PathD();
 const subjects: PathsD = new C.PathsD();
 const clips: PathsD = new C.PathsD();
@@ -61,15 +67,16 @@ const tree: PolyPathD = new C.PolyPathD();
 const keepCollinear = new C.ClipperD(PRECISION);
 const dropCollinear = new C.ClipperD(PRECISION);
 dropCollinear.SetPreserveCollinear(false);
-/** x, y, z triplets (z stays 0): the layout the engine's paths take in bulk. */
-let coords = new Float64Array(3 * 1024);
 
 /** Copy rings into an engine path list (cleared first). */
 function load(into: PathsD, rings: readonly (readonly Pt[])[]): PathsD {
   into.clear();
+  let most = 0;
+  for (const r of rings) if (r.length > most) most = r.length;
+  // x, y, z triplets (z stays 0), the layout the engine's paths take in bulk: one buffer for every ring
+  const coords = new Float64Array(3 * most);
   for (const r of rings) {
     const n = r.length;
-    if (coords.length < 3 * n) coords = new Float64Array(Math.max(3 * n, 2 * coords.length));
     for (let i = 0, k = 0; i < n; i++, k += 3) {
       const p = r[i];
       coords[k] = p.x;
@@ -135,27 +142,26 @@ function readTreeByHandle(node: PolyPathD, out: ExPolygon[]): void {
 const POINT_BYTES = 24;
 const CHILDREN_AT = 8;
 const POLYGON_AT = 32;
-let heapBuffer: ArrayBufferLike | undefined;
-let u32: Uint32Array<ArrayBufferLike> = new Uint32Array(0);
-let f64: Float64Array<ArrayBufferLike> = new Float64Array(0);
+
+/** The engine's memory, as words and as doubles. */
+interface Heap {
+  u32: Uint32Array<ArrayBufferLike>;
+  f64: Float64Array<ArrayBufferLike>;
+}
 
 /** Where an engine object lives in the engine's memory (embind keeps it on every handle). */
 function addressOf(handle: PathsD | PolyPathD): number {
   return (handle as unknown as { $$: { ptr: number } }).$$.ptr;
 }
 
-/** Views of the engine's memory, made again when it has grown. */
-function heapViews(): void {
+/** Views of the engine's memory as it is now (it may grow between calls, and its buffer with it). */
+function heapViews(): Heap {
   const buffer = (C as unknown as { HEAPU8: Uint8Array }).HEAPU8.buffer;
-  if (buffer !== heapBuffer) {
-    heapBuffer = buffer;
-    u32 = new Uint32Array(buffer);
-    f64 = new Float64Array(buffer);
-  }
+  return { u32: new Uint32Array(buffer), f64: new Float64Array(buffer) };
 }
 
 /** The ring held by a vector of points at byte `at`. */
-function ringAt(at: number): Pt[] {
+function ringAt({ u32, f64 }: Heap, at: number): Pt[] {
   const begin = u32[at >>> 2];
   const n = (u32[(at >>> 2) + 1] - begin) / POINT_BYTES;
   const out: Pt[] = [];
@@ -164,32 +170,33 @@ function ringAt(at: number): Pt[] {
 }
 
 function readPathsDirect(paths: PathsD, minPoints: number): Pt[][] {
-  heapViews();
+  const heap = heapViews();
+  const u32 = heap.u32;
   const at = addressOf(paths) >>> 2;
   const out: Pt[][] = [];
   for (let v = u32[at], end = u32[at + 1]; v < end; v += 12) {
     const n = (u32[(v >>> 2) + 1] - u32[v >>> 2]) / POINT_BYTES;
-    if (n >= minPoints) out.push(ringAt(v));
+    if (n >= minPoints) out.push(ringAt(heap, v));
   }
   return out;
 }
 
-function readTreeFrom(node: number, out: ExPolygon[]): void {
+function readTreeFrom(heap: Heap, node: number, out: ExPolygon[]): void {
+  const u32 = heap.u32;
   for (let c = u32[(node + CHILDREN_AT) >>> 2], end = u32[(node + CHILDREN_AT + 4) >>> 2]; c < end; c += 4) {
     const outer = u32[c >>> 2];
     const holes: Polygon[] = [];
     for (let h = u32[(outer + CHILDREN_AT) >>> 2], hEnd = u32[(outer + CHILDREN_AT + 4) >>> 2]; h < hEnd; h += 4) {
       const hole = u32[h >>> 2];
-      holes.push(ringAt(hole + POLYGON_AT));
-      readTreeFrom(hole, out);
+      holes.push(ringAt(heap, hole + POLYGON_AT));
+      readTreeFrom(heap, hole, out);
     }
-    out.push({ outer: ringAt(outer + POLYGON_AT), holes });
+    out.push({ outer: ringAt(heap, outer + POLYGON_AT), holes });
   }
 }
 
 function readTreeDirect(node: PolyPathD, out: ExPolygon[]): void {
-  heapViews();
-  readTreeFrom(addressOf(node), out);
+  readTreeFrom(heapViews(), addressOf(node), out);
 }
 
 /** Whether reading memory gives what the object interface gives, on a tree with a hole and an island in it. */

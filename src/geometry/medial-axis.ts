@@ -53,6 +53,11 @@ export interface MedialOptions {
   pruneAngleDeg?: number;
   /** Simplification tolerance, µm (default 10). */
   toleranceUm?: number;
+  /**
+   * Working memory to reuse (medialScratch): a caller with many calls to make (the areas of one layer) makes
+   * one for them all; without it a call makes its own.
+   */
+  scratch?: MedialScratch;
 }
 
 /** Options resolved to the numbers the passes use. */
@@ -64,6 +69,8 @@ interface Settings {
   /** sin(pruneAngle / 2): the radius slope of a wedge of the prune angle. */
   slopeLimit: number;
   toleranceUm: number;
+  /** The call's working memory. */
+  sc: MedialScratch;
 }
 
 /**
@@ -101,11 +108,24 @@ const MAX_WALK = 4096;
 // Scratch memory
 
 /**
- * Typed arrays reused from call to call (allocating them is a large part of a small area's time), grown as
- * needed: slot k of each kind holds one array at a time, so two arrays alive together use different slots.
- * Views handed out are valid until the slot is asked for again; nothing in the output refers to them.
+ * The typed arrays of the work (allocating them is a large part of a small area's time), grown as needed:
+ * slot k of each kind holds one array at a time, so two arrays alive together use different slots. Views
+ * handed out are valid until the slot is asked for again; nothing in the output refers to them. A call of
+ * medialAxis works in its own set, or in its caller's (MedialOptions.scratch), which the caller hands to
+ * one call after another (never shared beyond it: nothing of a slice lives at module level).
  */
-const scratch = { f64: [] as Float64Array[], i32: [] as Int32Array[], u8: [] as Uint8Array[] };
+export interface MedialScratch {
+  readonly f64: Float64Array[];
+  readonly i32: Int32Array[];
+  readonly u8: Uint8Array[];
+  /** The edges legalize has still to check. */
+  flips: Int32Array;
+}
+
+/** Empty working memory for medialAxis, to reuse over many calls (MedialOptions.scratch). */
+export function medialScratch(): MedialScratch {
+  return { f64: [], i32: [], u8: [], flips: new Int32Array(256) };
+}
 
 /** Slots of the scratch arrays. */
 const enum F {
@@ -165,31 +185,31 @@ function grow(n: number, old: number): number {
 }
 
 /** A Float64Array of n elements from slot k (contents undefined). */
-function f64(k: F, n: number): Float64Array {
-  let b = scratch.f64[k];
+function f64(sc: MedialScratch, k: F, n: number): Float64Array {
+  let b = sc.f64[k];
   if (!b || b.length < n) {
     b = new Float64Array(grow(n, b ? b.length : 0));
-    if (b.length <= SCRATCH_KEEP) scratch.f64[k] = b;
+    if (b.length <= SCRATCH_KEEP) sc.f64[k] = b;
   }
   return b.subarray(0, n);
 }
 
 /** An Int32Array of n elements from slot k (contents undefined). */
-function i32(k: I, n: number): Int32Array {
-  let b = scratch.i32[k];
+function i32(sc: MedialScratch, k: I, n: number): Int32Array {
+  let b = sc.i32[k];
   if (!b || b.length < n) {
     b = new Int32Array(grow(n, b ? b.length : 0));
-    if (b.length <= SCRATCH_KEEP) scratch.i32[k] = b;
+    if (b.length <= SCRATCH_KEEP) sc.i32[k] = b;
   }
   return b.subarray(0, n);
 }
 
 /** A Uint8Array of n zeros from slot k. */
-function u8(k: U, n: number): Uint8Array {
-  let b = scratch.u8[k];
+function u8(sc: MedialScratch, k: U, n: number): Uint8Array {
+  let b = sc.u8[k];
   if (!b || b.length < n) {
     b = new Uint8Array(grow(n, b ? b.length : 0));
-    if (b.length <= SCRATCH_KEEP) scratch.u8[k] = b;
+    if (b.length <= SCRATCH_KEEP) sc.u8[k] = b;
     return b.subarray(0, n);
   }
   return b.subarray(0, n).fill(0);
@@ -218,6 +238,7 @@ export function medialAxis(areas: readonly ExPolygon[], opts: MedialOptions = {}
     minSpacingUm: Math.min(sampleUm, Math.max(1, toleranceUm / 4)),
     slopeLimit: Math.sin(((Math.min(Math.max(angle, 0), 180) / 2) * Math.PI) / 180),
     toleranceUm,
+    sc: opts.scratch ?? medialScratch(),
   };
   const out: MedialChain[] = [];
   for (const area of areas) for (const c of areaAxis(area, set)) out.push(c);
@@ -345,6 +366,12 @@ function orient(ax: number, ay: number, bx: number, by: number, cx: number, cy: 
   return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax);
 }
 
+/**
+ * A triangle whose doubled area is at most this share of the squared lengths of two of its sides is degenerate:
+ * its circumcentre is too far off to compute. Dimensionless.
+ */
+const DEGENERATE = 1e-12;
+
 /** Circumcentre and circumradius of triangle t, into `out`; false for a degenerate triangle. */
 function circumcentre(xy: Float64Array, tri: Int32Array, t: number, out: Float64Array): boolean {
   const a = tri[3 * t],
@@ -359,7 +386,7 @@ function circumcentre(xy: Float64Array, tri: Int32Array, t: number, out: Float64
   const d = 2 * (bx * cy - by * cx);
   const b2 = bx * bx + by * by,
     c2 = cx * cx + cy * cy;
-  if (Math.abs(d) <= 1e-12 * (b2 + c2)) return false;
+  if (Math.abs(d) <= DEGENERATE * (b2 + c2)) return false;
   const ux = (cy * b2 - by * c2) / d,
     uy = (bx * c2 - cx * b2) / d;
   out[0] = ax + ux;
@@ -386,6 +413,8 @@ function inArea(rings: readonly Pt[][], p: Pt): boolean {
  * for samples inserted by the refinement (two triangles per sample).
  */
 interface Mesh {
+  /** The working memory the mesh's arrays come from. */
+  sc: MedialScratch;
   s: Samples;
   /** Number of samples. */
   n: number;
@@ -427,13 +456,13 @@ const FLAT = 1e-9;
  * Delaunay triangulation (delaunator) of the rings' samples (flat coordinates each), with room for `extra`
  * more samples.
  */
-function triangulate(rings: readonly number[][], extra: number): Mesh {
+function triangulate(rings: readonly number[][], extra: number, sc: MedialScratch): Mesh {
   let n = 0;
   for (const r of rings) n += r.length / 2;
   const cap = n + extra;
-  const xy = f64(F.XY, 2 * cap),
-    next = i32(I.NEXT, cap),
-    prev = i32(I.PREV, cap);
+  const xy = f64(sc, F.XY, 2 * cap),
+    next = i32(sc, I.NEXT, cap),
+    prev = i32(sc, I.PREV, cap);
   const ringStart: number[] = [];
   let base = 0;
   for (const r of rings) {
@@ -449,19 +478,20 @@ function triangulate(rings: readonly number[][], extra: number): Mesh {
   const d = new Delaunator(xy.subarray(0, 2 * n));
   const nt = d.triangles.length / 3,
     tcap = nt + 2 * extra;
-  const tri = i32(I.TRI, 3 * tcap),
-    half = i32(I.HALF, 3 * tcap);
+  const tri = i32(sc, I.TRI, 3 * tcap),
+    half = i32(sc, I.HALF, 3 * tcap);
   tri.set(d.triangles);
   half.set(d.halfedges);
   const m: Mesh = {
+    sc,
     s: { xy, next, prev },
     n,
     ringStart,
     tri,
     half,
     nt,
-    ivl: i32(I.IVL, 3 * tcap),
-    flat: u8(U.FLAT, tcap),
+    ivl: i32(sc, I.IVL, 3 * tcap),
+    flat: u8(sc, U.FLAT, tcap),
     bnd: null,
     dirty: null,
   };
@@ -485,13 +515,18 @@ const EAR_MAX = 128;
  * Where the samples are dense enough that the Delaunay triangulation of all of them has every boundary
  * interval as an edge (which the refinement ensures), its triangles inside the area are these.
  */
-function constrained(rings: readonly number[][], corners: readonly number[][], extra: number): Mesh | null {
+function constrained(
+  rings: readonly number[][],
+  corners: readonly number[][],
+  extra: number,
+  sc: MedialScratch,
+): Mesh | null {
   let n = 0;
   for (const r of rings) n += r.length / 2;
   const cap = n + extra;
-  const xy = f64(F.XY, 2 * cap),
-    next = i32(I.NEXT, cap),
-    prev = i32(I.PREV, cap);
+  const xy = f64(sc, F.XY, 2 * cap),
+    next = i32(sc, I.NEXT, cap),
+    prev = i32(sc, I.PREV, cap);
   const ringStart: number[] = [];
   const vertices: number[][] = [];
   let base = 0;
@@ -507,20 +542,21 @@ function constrained(rings: readonly number[][], corners: readonly number[][], e
     base += k;
   }
   const tcap = n + 2 * rings.length + 2 * extra;
-  const tri = i32(I.TRI, 3 * tcap),
-    half = i32(I.HALF, 3 * tcap),
-    bnd = i32(I.BND, cap);
+  const tri = i32(sc, I.TRI, 3 * tcap),
+    half = i32(sc, I.HALF, 3 * tcap),
+    bnd = i32(sc, I.BND, cap);
   const m: Mesh = {
+    sc,
     s: { xy, next, prev },
     n,
     ringStart,
     tri,
     half,
     nt: 0,
-    ivl: i32(I.IVL, 3 * tcap),
-    flat: u8(U.FLAT, tcap),
+    ivl: i32(sc, I.IVL, 3 * tcap),
+    flat: u8(sc, U.FLAT, tcap),
     bnd,
-    dirty: u8(U.DIRTY, tcap),
+    dirty: u8(sc, U.DIRTY, tcap),
   };
   const poly = bridged(xy, vertices);
   if (!poly || !clipEars(m, poly)) return null;
@@ -687,6 +723,7 @@ function locallyInside(
  * degenerate ring).
  */
 function clipEars(m: Mesh, poly: EarPolygon): boolean {
+  const { sc } = m;
   const { xy } = m.s;
   const { tri, half } = m;
   const bnd = m.bnd!;
@@ -695,10 +732,10 @@ function clipEars(m: Mesh, poly: EarPolygon): boolean {
   // the remaining polygon as a linked list, and for each position the half-edge beyond its edge to the
   // next: -1 while that edge is the boundary's, -2 while it is a bridge side (pend: its half-edge once a
   // triangle has it)
-  const vn = i32(I.VN, nv),
-    vp = i32(I.VP, nv),
-    side = i32(I.SIDE, nv),
-    pend = i32(I.PEND, nv);
+  const vn = i32(sc, I.VN, nv),
+    vp = i32(sc, I.VP, nv),
+    side = i32(sc, I.SIDE, nv),
+    pend = i32(sc, I.PEND, nv);
   for (let i = 0; i < nv; i++) {
     vn[i] = poly.nxt[i];
     vp[poly.nxt[i]] = i;
@@ -849,15 +886,16 @@ function makeRoom(m: Mesh, more: number): void {
   if (m.bnd) m.bnd = moved(m.bnd, new Int32Array(n2), m.n);
   if (m.dirty) m.dirty = moved(m.dirty, new Uint8Array(t2), m.nt);
   if (2 * n2 <= SCRATCH_KEEP) {
-    scratch.f64[F.XY] = m.s.xy;
-    scratch.i32[I.NEXT] = m.s.next;
-    scratch.i32[I.PREV] = m.s.prev;
-    scratch.i32[I.TRI] = m.tri;
-    scratch.i32[I.HALF] = m.half;
-    scratch.i32[I.IVL] = m.ivl;
-    scratch.u8[U.FLAT] = m.flat;
-    if (m.bnd) scratch.i32[I.BND] = m.bnd;
-    if (m.dirty) scratch.u8[U.DIRTY] = m.dirty;
+    const { sc } = m;
+    sc.f64[F.XY] = m.s.xy;
+    sc.i32[I.NEXT] = m.s.next;
+    sc.i32[I.PREV] = m.s.prev;
+    sc.i32[I.TRI] = m.tri;
+    sc.i32[I.HALF] = m.half;
+    sc.i32[I.IVL] = m.ivl;
+    sc.u8[U.FLAT] = m.flat;
+    if (m.bnd) sc.i32[I.BND] = m.bnd;
+    if (m.dirty) sc.u8[U.DIRTY] = m.dirty;
   }
 }
 
@@ -927,8 +965,8 @@ function flip(m: Mesh, a: number, b: number): void {
  * delaunator's _legalize).
  */
 function legalize(m: Mesh, a: number): void {
-  const { half } = m;
-  let stack = flipStack,
+  const { half, sc } = m;
+  let stack = sc.flips,
     top = 0;
   for (let flips = 0; flips < MAX_FLIPS; ) {
     const b = half[a];
@@ -937,7 +975,7 @@ function legalize(m: Mesh, a: number): void {
       if (top === stack.length) {
         const bigger = new Int32Array(2 * top);
         bigger.set(stack);
-        stack = flipStack = bigger;
+        stack = sc.flips = bigger;
       }
       stack[top++] = b - (b % 3) + ((b + 1) % 3);
       flips++;
@@ -947,9 +985,6 @@ function legalize(m: Mesh, a: number): void {
     a = stack[--top];
   }
 }
-
-/** The edges legalize has still to check. */
-let flipStack = new Int32Array(256);
 
 /** Whether p lies inside the circumcircle of a, b, c (counter-clockwise), as delaunator tests it. */
 function inCircle(
@@ -1048,9 +1083,10 @@ interface Refinement {
  * triangles changed are looked at, unless `all`.
  */
 function refinement(m: Mesh, set: Settings, all: boolean): Refinement | null {
+  const { sc } = m;
   const { xy, next } = m.s;
   const n = m.n;
-  const pieces = i32(I.PIECES, n).fill(1);
+  const pieces = i32(sc, I.PIECES, n).fill(1);
   const cc = new Float64Array(3);
   let any = false,
     missing = false;
@@ -1070,7 +1106,7 @@ function refinement(m: Mesh, set: Settings, all: boolean): Refinement | null {
     dirty.fill(0, 0, m.nt);
     return any ? { pieces, where: bnd, missing } : null;
   }
-  const where = i32(I.WHERE, n).fill(-1);
+  const where = i32(sc, I.WHERE, n).fill(-1);
   for (let e = 0; e < 3 * m.nt; e++) {
     const a = m.ivl[e];
     // only the triangle on the interval's inner side counts
@@ -1127,7 +1163,7 @@ function split(m: Mesh, a: number, e: number, set: Settings, cc: Float64Array): 
  * whose half-edge a previous insertion has flipped is left for the next pass.
  */
 function refine(m: Mesh, r: Refinement): Mesh {
-  if (r.missing) return triangulate(splitRings(m, r.pieces), (m.n >> 2) + 16);
+  if (r.missing) return triangulate(splitRings(m, r.pieces), (m.n >> 2) + 16, m.sc);
   let more = 0;
   for (let a = 0; a < m.n; a++) more += r.pieces[a] - 1;
   makeRoom(m, more);
@@ -1181,10 +1217,11 @@ function refine(m: Mesh, r: Refinement): Mesh {
  * A constrained triangulation has only inside triangles.
  */
 function classify(m: Mesh, rings: readonly Pt[][]): Uint8Array {
+  const { sc } = m;
   const { xy } = m.s;
-  const label = u8(U.LABEL, m.nt);
+  const label = u8(sc, U.LABEL, m.nt);
   if (m.bnd) return label.fill(1);
-  const queue = i32(I.QUEUE, m.nt);
+  const queue = i32(sc, I.QUEUE, m.nt);
   let qn = 0,
     clash = false;
   const mark = (t: number, l: number): void => {
@@ -1281,17 +1318,14 @@ function boundaryDistance(m: Mesh, t: number, px: number, py: number): number {
   return Math.sqrt(d2);
 }
 
-/** centred's answer. */
-const centre = new Float64Array(2);
-
 /**
  * A strip's triangle (two corners a boundary interval, the third elsewhere on the boundary) has its
  * circumcentre (px, py) nearer the interval than the far side when the samples on the two sides are
  * staggered, by about s²/(8t) for spacing s and thickness t: the node is moved along the interval's normal
- * to where it is as far from the interval as from the far corner's boundary. Null where this does not apply
- * (no interval, an ear, or a move of more than CENTRING_LIMIT).
+ * to where it is as far from the interval as from the far corner's boundary, into `centre`. False where this
+ * does not apply (no interval, an ear, or a move of more than CENTRING_LIMIT).
  */
-function centred(m: Mesh, t: number, px: number, py: number): Float64Array | null {
+function centred(m: Mesh, t: number, px: number, py: number, centre: Float64Array): boolean {
   const { xy, next, prev } = m.s;
   for (let k = 0; k < 3; k++) {
     const u = m.tri[3 * t + k],
@@ -1303,7 +1337,7 @@ function centred(m: Mesh, t: number, px: number, py: number): Float64Array | nul
       a = v;
       b = u;
     } else if (next[u] !== v) continue;
-    if (w === next[b] || w === prev[a]) return null;
+    if (w === next[b] || w === prev[a]) return false;
     // the interval a→b has the area on its left
     const ax = xy[2 * a],
       ay = xy[2 * a + 1],
@@ -1324,12 +1358,12 @@ function centred(m: Mesh, t: number, px: number, py: number): Float64Array | nul
       ),
     );
     const shift = (dw - db) / 2;
-    if (!(db > 0) || Math.abs(shift) > CENTRING_LIMIT * db) return null;
+    if (!(db > 0) || Math.abs(shift) > CENTRING_LIMIT * db) return false;
     centre[0] = px + shift * nx;
     centre[1] = py + shift * ny;
-    return centre;
+    return true;
   }
-  return null;
+  return false;
 }
 
 /** One area's medial chains. */
@@ -1349,8 +1383,8 @@ function areaAxis(area: ExPolygon, set: Settings): MedialChain[] {
   for (const c of coords) n += c.length / 2;
   for (const r of rings) positions += r.length + 2;
   const extra = (n >> 2) + 16;
-  let mesh = positions <= EAR_MAX ? constrained(coords, corners, extra) : null;
-  if (!mesh) mesh = triangulate(coords, extra);
+  let mesh = positions <= EAR_MAX ? constrained(coords, corners, extra, set.sc) : null;
+  if (!mesh) mesh = triangulate(coords, extra, set.sc);
   for (let pass = 1; pass < MAX_PASSES && mesh.nt > 0; pass++) {
     const r = refinement(mesh, set, pass === 1);
     if (!r) break;
@@ -1375,10 +1409,12 @@ function axisGraph(
   label: Uint8Array,
   rings: readonly Pt[][],
 ): { nodes: Nodes; paths: number[][]; points: Set<number> } {
+  const { sc } = mesh;
   const { xy } = mesh.s;
   const nt = mesh.nt;
-  const nodes: Nodes = { x: f64(F.NX, nt), y: f64(F.NY, nt), r: f64(F.NR, nt) };
-  const cc = new Float64Array(3);
+  const nodes: Nodes = { x: f64(sc, F.NX, nt), y: f64(sc, F.NY, nt), r: f64(sc, F.NR, nt) };
+  const cc = new Float64Array(3),
+    centre = new Float64Array(2);
   // slivers are left out of the graph by counting them as not inside from here on
   for (let t = 0; t < nt; t++) if (mesh.flat[t]) label[t] = 2;
   for (let t = 0; t < nt; t++) {
@@ -1387,10 +1423,9 @@ function axisGraph(
     if (circumcentre(xy, mesh.tri, t, cc) && reaches(mesh, label, rings, t, cc[0], cc[1])) {
       px = cc[0];
       py = cc[1];
-      const q = centred(mesh, t, px, py);
-      if (q) {
-        px = q[0];
-        py = q[1];
+      if (centred(mesh, t, px, py, centre)) {
+        px = centre[0];
+        py = centre[1];
       }
     } else {
       const a = mesh.tri[3 * t],
@@ -1406,10 +1441,10 @@ function axisGraph(
 
   // links (each inside triangle has three at most, each found once); nodes of (nearly) co-circular samples
   // coincide and are merged (union-find, lowest index leads)
-  const root = i32(I.ROOT, nt);
+  const root = i32(sc, I.ROOT, nt);
   for (let t = 0; t < nt; t++) root[t] = t;
   const find = (t: number): number => findRoot(root, t);
-  const ends = i32(I.ENDS, 3 * nt);
+  const ends = i32(sc, I.ENDS, 3 * nt);
   let ne = 0;
   let merged = false;
   for (let t = 0; t < nt; t++) {
@@ -1450,13 +1485,13 @@ function axisGraph(
 
   // the links as paths, joined through nodes of degree two (the order relink gives): incidences per node
   // as 2 * link + (0 at its first end, 1 at its second), in link order
-  const start = i32(I.START, nt + 1);
-  const fill = i32(I.FILL, nt);
-  let inc = incidences(ends, ne, nt, start, fill);
+  const start = i32(sc, I.START, nt + 1);
+  const fill = i32(sc, I.FILL, nt);
+  let inc = incidences(ends, ne, nt, start, fill, sc);
   if (merged) {
     // two triangles share at most one edge, so only merged nodes can be linked twice: the later links
     // between the same two nodes go
-    const dup = u8(U.DUP, ne);
+    const dup = u8(sc, U.DUP, ne);
     let any = false;
     for (let v = 0; v < nt; v++) {
       for (let k = start[v]; k < start[v + 1]; k++) {
@@ -1479,10 +1514,10 @@ function axisGraph(
         m++;
       }
       ne = m;
-      inc = incidences(ends, ne, nt, start, fill);
+      inc = incidences(ends, ne, nt, start, fill, sc);
     }
   }
-  const used = u8(U.USED, ne);
+  const used = u8(sc, U.USED, ne);
   const freeAt = (v: number): number => unused(start, inc, used, v);
   const paths: number[][] = [];
   for (let v = 0; v < nt; v++) {
@@ -1524,12 +1559,19 @@ function axisGraph(
  * Incidences of links (their two ends at ends[2i], ends[2i + 1]) per node, as 2 * link + (0 at its first
  * end, 1 at its second), in link order: node v's are inc[start[v]] .. inc[start[v + 1] - 1].
  */
-function incidences(ends: Int32Array, ne: number, nt: number, start: Int32Array, fill: Int32Array): Int32Array {
+function incidences(
+  ends: Int32Array,
+  ne: number,
+  nt: number,
+  start: Int32Array,
+  fill: Int32Array,
+  sc: MedialScratch,
+): Int32Array {
   start.fill(0);
   for (let i = 0; i < 2 * ne; i++) start[ends[i] + 1]++;
   for (let v = 0; v < nt; v++) start[v + 1] += start[v];
   fill.set(start.subarray(0, nt));
-  const inc = i32(I.INC, 2 * ne);
+  const inc = i32(sc, I.INC, 2 * ne);
   for (let i = 0; i < 2 * ne; i++) inc[fill[ends[i]]++] = i;
   return inc;
 }
@@ -1550,8 +1592,8 @@ function unused(start: Int32Array, inc: Int32Array, used: Uint8Array, v: number)
 // Chains: paths of nodes between nodes of degree other than two
 
 /** Degree of each node: how many path ends meet there. */
-function degrees(paths: readonly number[][], n: number, slot: I = I.DEG): Int32Array {
-  const deg = i32(slot, n).fill(0);
+function degrees(sc: MedialScratch, paths: readonly number[][], n: number, slot: I = I.DEG): Int32Array {
+  const deg = i32(sc, slot, n).fill(0);
   for (const p of paths) {
     deg[p[0]]++;
     deg[p[p.length - 1]]++;
@@ -1563,20 +1605,20 @@ function degrees(paths: readonly number[][], n: number, slot: I = I.DEG): Int32A
  * The paths joined through every node of degree two: open chains from each node of other degree (in node
  * order), then the cycles left over (first node repeated at the end).
  */
-function relink(paths: readonly number[][], n: number): number[][] {
-  const deg = degrees(paths, n, I.DEG3);
+function relink(sc: MedialScratch, paths: readonly number[][], n: number): number[][] {
+  const deg = degrees(sc, paths, n, I.DEG3);
   // incidences per node, as 2 * path + (0 at its start, 1 at its end)
-  const start = i32(I.RSTART, n + 1);
+  const start = i32(sc, I.RSTART, n + 1);
   start[0] = 0;
   for (let v = 0; v < n; v++) start[v + 1] = start[v] + deg[v];
-  const fill = i32(I.RFILL, n);
+  const fill = i32(sc, I.RFILL, n);
   fill.set(start.subarray(0, n));
-  const inc = i32(I.RINC, start[n]);
+  const inc = i32(sc, I.RINC, start[n]);
   paths.forEach((p, i) => {
     inc[fill[p[0]]++] = 2 * i;
     inc[fill[p[p.length - 1]]++] = 2 * i + 1;
   });
-  const used = u8(U.RUSED, paths.length);
+  const used = u8(sc, U.RUSED, paths.length);
   const freeAt = (v: number): number => unused(start, inc, used, v);
   /** Append path (inc >> 1), entered at its end (inc & 1), to `out` (its first node already there). */
   const extend = (out: number[], i: number): void => {
@@ -1614,7 +1656,7 @@ function relink(paths: readonly number[][], n: number): number[][] {
   return out;
 }
 
-function pathLength(p: readonly number[], nodes: Nodes): number {
+function pathLengthUm(p: readonly number[], nodes: Nodes): number {
   let l = 0;
   for (let k = 1; k < p.length; k++) l += hypot(nodes.x[p[k]] - nodes.x[p[k - 1]], nodes.y[p[k]] - nodes.y[p[k - 1]]);
   return l;
@@ -1634,10 +1676,11 @@ function pathLength(p: readonly number[], nodes: Nodes): number {
  * becomes a point (added to `points`).
  */
 function prune(paths: number[][], nodes: Nodes, n: number, set: Settings, points: Set<number>): number[][] {
+  const { sc } = set;
   for (;;) {
-    const deg = degrees(paths, n);
-    const lengths = paths.map((p) => pathLength(p, nodes));
-    const drop = u8(U.DROP, paths.length);
+    const deg = degrees(sc, paths, n);
+    const lengths = paths.map((p) => pathLengthUm(p, nodes));
+    const drop = u8(sc, U.DROP, paths.length);
 
     // 1. short links between junctions
     let contracted = false;
@@ -1666,7 +1709,7 @@ function prune(paths: number[][], nodes: Nodes, n: number, set: Settings, points
         if (q.length === 2 && q[0] === q[1]) return;
         kept.push(q);
       });
-      paths = relink(kept, n);
+      paths = relink(sc, kept, n);
       continue;
     }
 
@@ -1693,12 +1736,12 @@ function prune(paths: number[][], nodes: Nodes, n: number, set: Settings, points
     if (!removed) for (const i of shortest.values()) drop[i] = 1;
     if (!removed && shortest.size === 0) return paths;
     const kept = paths.filter((_, i) => !drop[i]);
-    const left = degrees(kept, n, I.DEG2);
+    const left = degrees(sc, kept, n, I.DEG2);
     paths.forEach((p, i) => {
       if (!drop[i]) return;
       for (const v of [p[0], p[p.length - 1]]) if (deg[v] >= 3 && left[v] === 0) points.add(v);
     });
-    paths = relink(kept, n);
+    paths = relink(sc, kept, n);
   }
 }
 
@@ -1726,8 +1769,9 @@ function leafSlope(p: readonly number[], len: number, nodes: Nodes): number {
  * a strip, ends where the strip stops narrowing; a sharp one keeps its line to the tip).
  */
 function tipCut(p: readonly number[], nodes: Nodes, set: Settings): number {
+  const { sc } = set;
   const n = p.length;
-  const dist = f64(F.DIST, n);
+  const dist = f64(sc, F.DIST, n);
   dist[0] = 0;
   for (let k = 1; k < n; k++)
     dist[k] = dist[k - 1] + hypot(nodes.x[p[k]] - nodes.x[p[k - 1]], nodes.y[p[k]] - nodes.y[p[k - 1]]);
@@ -1745,7 +1789,7 @@ function tipCut(p: readonly number[], nodes: Nodes, set: Settings): number {
 
 /** Final chains: leaf tips trimmed, simplified, rounded, in a canonical direction and start. */
 function chainsOut(paths: number[][], points: Set<number>, nodes: Nodes, n: number, set: Settings): MedialChain[] {
-  const deg = degrees(paths, n);
+  const deg = degrees(set.sc, paths, n);
   const out: MedialChain[] = [];
   for (let p of paths) {
     const a = p[0],
@@ -1769,7 +1813,7 @@ function chainsOut(paths: number[][], points: Set<number>, nodes: Nodes, n: numb
       }
       p = p.slice(cutA, p.length - cutB);
     }
-    const c = finish(p, closed, closed && deg[p[0]] > 2 ? p[0] : -1, nodes, set.toleranceUm);
+    const c = finish(set.sc, p, closed, closed && deg[p[0]] > 2 ? p[0] : -1, nodes, set.toleranceUm);
     if (c) out.push(c);
   }
   for (const v of points)
@@ -1790,11 +1834,18 @@ const before = (ax: number, ay: number, bx: number, by: number): boolean => ax <
  * One chain as output: canonical start and direction, simplified, rounded. `pin` is a node the
  * simplification must keep (the junction a cycle hangs on, where another chain ends), or -1.
  */
-function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes, tol: number): MedialChain | null {
+function finish(
+  sc: MedialScratch,
+  p: readonly number[],
+  closed: boolean,
+  pin: number,
+  nodes: Nodes,
+  tol: number,
+): MedialChain | null {
   const n = p.length;
   // node order: open chains run from their lower end (by x, then y); cycles start at their lowest node and
   // run counter-clockwise
-  const order = i32(I.ORDER, n);
+  const order = i32(sc, I.ORDER, n);
   for (let k = 0; k < n; k++) order[k] = p[k];
   if (closed) {
     let s = 0,
@@ -1809,9 +1860,9 @@ function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes
   } else if (before(nodes.x[p[n - 1]], nodes.y[p[n - 1]], nodes.x[p[0]], nodes.y[p[0]])) order.reverse();
   // a cycle is simplified as a path from its start round to its start again
   const m = closed ? n + 1 : n;
-  const xs = f64(F.XS, m),
-    ys = f64(F.YS, m),
-    rs = f64(F.RS, m);
+  const xs = f64(sc, F.XS, m),
+    ys = f64(sc, F.YS, m),
+    rs = f64(sc, F.RS, m);
   for (let k = 0; k < m; k++) {
     const v = order[k % n];
     xs[k] = nodes.x[v];
@@ -1819,7 +1870,7 @@ function finish(p: readonly number[], closed: boolean, pin: number, nodes: Nodes
     rs[k] = nodes.r[v];
   }
   // simplify between fixed nodes: the ends; for a cycle also the node farthest from its start, and the pin
-  const keep = u8(U.KEEP, m);
+  const keep = u8(sc, U.KEEP, m);
   keep[0] = keep[m - 1] = 1;
   if (closed) {
     let far = 0,

@@ -17,10 +17,22 @@ const CONCAVE = 1,
   SQUARE = 2,
   LOOP = 4;
 
-/** Per-vertex working arrays, reused between calls (grown as needed). */
-let scratch = makeScratch(256);
+/** Per-vertex working arrays of one call, for its longest ring (each ring overwrites what it reads). */
+interface Corners {
+  /** Unit normal of the edge from vertex i (pointing right of the ring's direction). */
+  nx: Float64Array;
+  ny: Float64Array;
+  /** Length of the edge from vertex i, µm. */
+  len: Float64Array;
+  /** cos of the turn at vertex i. */
+  cosA: Float64Array;
+  /** How much of each adjacent offset edge the concave corner at vertex i uses up, µm. */
+  used: Float64Array;
+  /** The corner's kind: CONCAVE, SQUARE, LOOP bits. */
+  flag: Uint8Array;
+}
 
-function makeScratch(n: number) {
+function makeCorners(n: number): Corners {
   return {
     nx: new Float64Array(n),
     ny: new Float64Array(n),
@@ -29,11 +41,6 @@ function makeScratch(n: number) {
     used: new Float64Array(n),
     flag: new Uint8Array(n),
   };
-}
-
-function scratchFor(n: number): typeof scratch {
-  if (scratch.nx.length < n) scratch = makeScratch(Math.max(n, 2 * scratch.nx.length));
-  return scratch;
 }
 
 /** cos of the turn beyond which a corner is a spike: squared off, whichever way it turns. */
@@ -62,10 +69,13 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
   const absDelta = Math.abs(delta);
   const out: Pt[][] = [];
   let loops = false;
+  let most = 0;
+  for (const ring of rings) if (ring.length > most) most = ring.length;
+  const corners = makeCorners(most);
+  const { nx, ny, len, cosA, used, flag } = corners;
   for (const ring of rings) {
     const n = ring.length;
     if (n < 3) return null;
-    const { nx, ny, len, cosA, used, flag } = scratchFor(n);
     for (let i = 0; i < n; i++) {
       const a = ring[i],
         b = ring[i + 1 === n ? 0 : i + 1];
@@ -106,7 +116,7 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
       }
     }
     // unless used-up edges lie between concave corners only: then they are dropped instead
-    const collapsed = usedUp ? dropUsedUpEdges(ring, delta) : null;
+    const collapsed = usedUp ? dropUsedUpEdges(ring, delta, corners) : null;
     if (collapsed) {
       out.push(collapsed);
       continue;
@@ -131,32 +141,23 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
   return { rings: out, loops };
 }
 
-/** Per-edge working arrays of dropUsedUpEdges, reused between calls. */
-let links = makeLinks(256);
-
-function makeLinks(n: number) {
-  return {
-    prev: new Int32Array(n),
-    next: new Int32Array(n),
-    cx: new Float64Array(n),
-    cy: new Float64Array(n),
-    stack: new Int32Array(2 * n),
-  };
-}
-
 /**
- * The raw offset of one ring (whose normals, turns and corner kinds are in the scratch arrays)
- * with every used-up offset edge between two concave corners dropped: its neighbours' offset lines
- * meet instead, as in the union of the looped version, repeated until no edge is used up. Null
- * when that does not settle it: a squared corner on the ring, a used-up edge next to a mitred
- * corner, a merged corner that is no longer concave, or fewer than three edges left.
+ * The raw offset of one ring (whose normals, turns and corner kinds are in `corners`) with every
+ * used-up offset edge between two concave corners dropped: its neighbours' offset lines meet
+ * instead, as in the union of the looped version, repeated until no edge is used up. Null when
+ * that does not settle it: a squared corner on the ring, a used-up edge next to a mitred corner, a
+ * merged corner that is no longer concave, or fewer than three edges left.
  */
-function dropUsedUpEdges(ring: Polygon, delta: number): Pt[] | null {
+function dropUsedUpEdges(ring: Polygon, delta: number, corners: Corners): Pt[] | null {
   const n = ring.length;
-  const { nx, ny, cosA, flag } = scratch;
-  if (links.prev.length < n) links = makeLinks(Math.max(n, 2 * links.prev.length));
-  const { prev, next, cx, cy, stack } = links;
+  const { nx, ny, cosA, flag } = corners;
   for (let e = 0; e < n; e++) if (flag[e] & SQUARE) return null;
+  // per edge: its neighbours still alive, the corner at its start, and the edges still to look at
+  const prev = new Int32Array(n),
+    next = new Int32Array(n),
+    cx = new Float64Array(n),
+    cy = new Float64Array(n),
+    stack = new Int32Array(2 * n);
   // cx, cy: the corner at the start of edge e, where the offset lines of prev[e] and e meet
   for (let e = 0, k = n - 1; e < n; k = e++) {
     prev[e] = k;

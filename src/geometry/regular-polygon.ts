@@ -9,7 +9,10 @@ export interface RegularPolygon {
   sides: number;
 }
 
-/** cos and sin of each vertex's angle, per side count (made on first use). */
+/**
+ * cos and sin of each vertex's angle, per side count: a constant table, each row made on first use and never
+ * changed (the same numbers for every slice).
+ */
 const units = new Map<number, Float64Array>();
 
 function unitsOf(sides: number): Float64Array {

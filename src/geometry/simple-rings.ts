@@ -92,21 +92,21 @@ function cleanRing(r: readonly Pt[]): Polygon | null {
 /** Edge sort keys pack the lower y with the edge index: at most this many edges. */
 const KEY_SPAN = 65536;
 
-/** Edge arrays reused between calls (grown as needed): per edge its ends, ring and index in the ring. */
-let edges = makeEdges(1024);
-
+/** Per edge its ends, ring and index in the ring: one call's arrays (views of two buffers, for n edges). */
 function makeEdges(n: number) {
+  const f = new Float64Array(6 * n),
+    i = new Int32Array(4 * n);
   return {
-    ax: new Float64Array(n),
-    ay: new Float64Array(n),
-    bx: new Float64Array(n),
-    by: new Float64Array(n),
-    maxY: new Float64Array(n),
-    key: new Float64Array(n),
-    ring: new Int32Array(n),
-    at: new Int32Array(n),
-    ringLen: new Int32Array(n),
-    open: new Int32Array(n),
+    ax: f.subarray(0, n),
+    ay: f.subarray(n, 2 * n),
+    bx: f.subarray(2 * n, 3 * n),
+    by: f.subarray(3 * n, 4 * n),
+    maxY: f.subarray(4 * n, 5 * n),
+    key: f.subarray(5 * n, 6 * n),
+    ring: i.subarray(0, n),
+    at: i.subarray(n, 2 * n),
+    ringLen: i.subarray(2 * n, 3 * n),
+    open: i.subarray(3 * n, 4 * n),
   };
 }
 
@@ -118,9 +118,7 @@ function edgesSimple(rings: readonly Polygon[]): boolean {
   let total = 0;
   for (const r of rings) total += r.length;
   if (total >= KEY_SPAN) return false;
-  if (edges.ax.length < total) edges = makeEdges(Math.max(total, 2 * edges.ax.length));
-  const { ax, ay, bx, by, maxY, ring, at, ringLen, open } = edges;
-  const key = edges.key.subarray(0, total);
+  const { ax, ay, bx, by, maxY, key, ring, at, ringLen, open } = makeEdges(total);
   let e = 0;
   for (let ri = 0; ri < rings.length; ri++) {
     const r = rings[ri];

@@ -4,7 +4,7 @@
  * paths too short to print are dropped.
  */
 import type { Pt } from '../geometry/types.js';
-import { polylineLength, pushPt } from './piece.js';
+import { polylineLengthUm, pushPt } from './piece.js';
 
 /** Remove consecutive repeated points. */
 export function dedupePoints(pts: readonly Pt[]): Pt[] {
@@ -151,5 +151,5 @@ export function cleanPaths(
       splitOpen(pts, shifted);
     });
   }
-  return { lines: outLines.filter((l) => polylineLength(l) >= minLengthUm), loops: outLoops };
+  return { lines: outLines.filter((l) => polylineLengthUm(l) >= minLengthUm), loops: outLoops };
 }

@@ -8,6 +8,7 @@ import type { RegionIndex } from './region-index.js';
 import type { ScalarGrid } from './contour.js';
 import { closestOnSegment } from './geom-util.js';
 import { hypot } from '../geometry/types.js';
+import { PARALLEL_SIN_EPS } from '../geometry/tolerances.js';
 
 export interface DistanceField extends ScalarGrid {
   /** Nearest boundary edge of each node (−1 if none). */
@@ -214,7 +215,7 @@ export function restoreCorners(ix: RegionIndex, pts: ContourPtIn[], closed: bool
     const da = dir(ea),
       db = dir(eb);
     const den = da.x * db.y - da.y * db.x;
-    if (Math.abs(den) < 1e-6) continue;
+    if (Math.abs(den) < PARALLEL_SIN_EPS) continue;
     // a + s·da = b + r·db
     const wx = b.x - a.x,
       wy = b.y - a.y;

@@ -24,7 +24,7 @@ import { clipPolylines } from './clip-polylines.js';
 import { linkPieces } from './link.js';
 import { cleanPaths } from './cleanup.js';
 import { orderLines, orderLoops } from '../order/index.js';
-import { type Piece, polylineLength } from './piece.js';
+import { type Piece, polylineLengthUm } from './piece.js';
 
 /** Ends are joined along the boundary when at most this many line spacings apart. */
 export const LINK_REACH = 2.5;
@@ -56,7 +56,7 @@ interface Run {
 function lengthOf(paths: readonly Pt[][], closed: boolean): number {
   let l = 0;
   for (const p of paths) {
-    l += polylineLength(p);
+    l += polylineLengthUm(p);
     if (closed && p.length > 2) l += hypot(p[0].x - p[p.length - 1].x, p[0].y - p[p.length - 1].y);
   }
   return l;
@@ -81,7 +81,7 @@ function runPattern(
   const w = params.lineWidth,
     A = ctx.geom.area;
   let own = out.loops.length ? lengthOf(out.loops, true) : 0;
-  for (const pc of pieces) own += polylineLength(pc.pts);
+  for (const pc of pieces) own += polylineLengthUm(pc.pts);
   const lineShare = (own * w) / A;
   const linkReach =
     p.connect && out.link !== false && out.linkSpacing && out.linkSpacing > 0 ? LINK_REACH * out.linkSpacing : 0;

@@ -7,7 +7,7 @@ export type { MonotonicOptions } from './monotonic.js';
 export { SKIN_PATTERNS, concentricLoops } from './skin-patterns.js';
 export type { SkinFill, SkinPattern } from './skin-patterns.js';
 export { PATTERNS, regionPattern } from './registry.js';
-export { extrudedArea, lineDensity, measuredDensity, pathLength } from './measure.js';
+export { extrudedAreaUm2, lineDensity, measuredDensity, pathLengthUm } from './measure.js';
 export { clipSweep } from './sweep.js';
 export { clipPolylines, clipToRegion } from './clip-polylines.js';
 export { linkPieces } from './link.js';

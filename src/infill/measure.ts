@@ -87,7 +87,7 @@ function drawRegion(R: Raster, region: readonly ExPolygon[]): void {
  * Extruded footprint of an infill result, µm²: the union of all lines and loops drawn `lineWidthUm` wide
  * (crossings counted once), measured by rasterising. With `region`, only the part inside the region counts.
  */
-export function extrudedArea(
+export function extrudedAreaUm2(
   result: InfillResult,
   lineWidthUm: number,
   region?: readonly ExPolygon[],
@@ -139,11 +139,11 @@ export function measuredDensity(
   pixelUm?: number,
 ): number {
   const a = regionArea(region);
-  return a > 0 ? extrudedArea(result, lineWidthUm, region, pixelUm) / a : 0;
+  return a > 0 ? extrudedAreaUm2(result, lineWidthUm, region, pixelUm) / a : 0;
 }
 
 /** Total length of all lines and loops, µm. */
-export function pathLength(result: InfillResult): number {
+export function pathLengthUm(result: InfillResult): number {
   let l = 0;
   for (const pts of result.lines)
     for (let i = 1; i < pts.length; i++) l += hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
@@ -172,5 +172,5 @@ export function lineDensity(
   const a = regionArea(inner);
   if (!(a > 0)) return 0;
   const paths = [...result.lines, ...result.loops.map((l) => [...l, l[0]])];
-  return (pathLength({ lines: clipLines(paths, inner), loops: [] }) * lineWidthUm) / a;
+  return (pathLengthUm({ lines: clipLines(paths, inner), loops: [] }) * lineWidthUm) / a;
 }

@@ -12,7 +12,7 @@ export interface Piece {
 }
 
 /** Length of a polyline, µm. */
-export function polylineLength(pts: readonly Pt[]): number {
+export function polylineLengthUm(pts: readonly Pt[]): number {
   let l = 0;
   for (let i = 1; i < pts.length; i++) l += hypot(pts[i].x - pts[i - 1].x, pts[i].y - pts[i - 1].y);
   return l;

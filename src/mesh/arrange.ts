@@ -3,6 +3,7 @@
  * the largest first, each at the free spot nearest the bed centre, next to what is placed already.
  * One object alone goes to the bed centre, where `strata slice` puts a model.
  */
+import { LENGTH_EPS_MM } from '../geometry/tolerances.js';
 
 /** What arranging knows of an object: the size of its bounding rectangle on the bed. */
 export interface Footprint {
@@ -29,15 +30,15 @@ export const ARRANGE_GAP_MM = 5;
 
 function overlaps(a: PlacedFootprint, b: PlacedFootprint, gap: number): boolean {
   return (
-    Math.abs(a.center[0] - b.center[0]) < (a.width + b.width) / 2 + gap - 1e-9 &&
-    Math.abs(a.center[1] - b.center[1]) < (a.depth + b.depth) / 2 + gap - 1e-9
+    Math.abs(a.center[0] - b.center[0]) < (a.width + b.width) / 2 + gap - LENGTH_EPS_MM &&
+    Math.abs(a.center[1] - b.center[1]) < (a.depth + b.depth) / 2 + gap - LENGTH_EPS_MM
   );
 }
 
 function insideBed(f: PlacedFootprint, bed: Bed): boolean {
   return (
-    Math.abs(f.center[0] - bed.center[0]) <= (bed.width - f.width) / 2 + 1e-9 &&
-    Math.abs(f.center[1] - bed.center[1]) <= (bed.depth - f.depth) / 2 + 1e-9
+    Math.abs(f.center[0] - bed.center[0]) <= (bed.width - f.width) / 2 + LENGTH_EPS_MM &&
+    Math.abs(f.center[1] - bed.center[1]) <= (bed.depth - f.depth) / 2 + LENGTH_EPS_MM
   );
 }
 
@@ -72,7 +73,7 @@ export function findSpot(
     const here = { ...f, center: c };
     if (!insideBed(here, bed) || placed.some((p) => overlaps(here, p, gap))) continue;
     const d = Math.hypot(c[0] - bed.center[0], c[1] - bed.center[1]);
-    if (d < bestD - 1e-9) {
+    if (d < bestD - LENGTH_EPS_MM) {
       bestD = d;
       best = c;
     }

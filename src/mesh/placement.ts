@@ -6,6 +6,7 @@
  */
 import { transformPoints, type Affine } from './transform.js';
 import type { MeshObject } from './types.js';
+import { OPPOSITE_COS_EPS } from '../geometry/tolerances.js';
 
 /** Where an object stands: its turn and scale, and where on the bed. */
 export interface Placement {
@@ -116,7 +117,7 @@ export function rotationBetween(from: readonly number[], to: readonly number[]):
     cy = az * bx - ax * bz,
     cz = ax * by - ay * bx;
   const c = ax * bx + ay * by + az * bz;
-  if (c < -1 + 1e-9) {
+  if (c < -1 + OPPOSITE_COS_EPS) {
     // opposite: half a turn about any axis perpendicular to `from`
     const p = Math.abs(ax) < 0.9 ? [1, 0, 0] : [0, 1, 0];
     let ux = ay * p[2] - az * p[1],

@@ -63,7 +63,10 @@ export function makeEntry(
   return e;
 }
 
-/** Level areas indexed once for all the entries of an island that read them (its wall sets, its extra walls). */
+/**
+ * Level areas indexed once for all the entries of an island that read them (its wall sets, its extra walls):
+ * a memo keyed by the island's own area lists (no other slice holds them), held no longer than they are.
+ */
 const gridded = new WeakMap<readonly ExPolygon[], AreaIndex>();
 const NONE = indexArea([]);
 

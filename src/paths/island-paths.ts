@@ -1,16 +1,17 @@
 /**
  * The paths of one island, from its regions: walls and wall gap fill as the regions stage found them, skin
- * walls and skin lines or loops by the skin patterns (bridge direction where the skin lies over air), skin gap
- * fill, sparse infill from the pattern, and ironing over the top surfaces. Walls over air and skin over air are
- * flagged so the planner slows them / prints them as bridges.
+ * walls and skin lines or loops by the skin patterns in the areas the regions stage lays out for them
+ * (regions/skin-layout.ts; bridge direction where the skin lies over air), skin gap fill, sparse infill from
+ * the pattern, and ironing over the top surfaces. Walls over air and skin over air are flagged so the planner
+ * slows them / prints them as bridges. Nothing here computes areas: it turns them into lines.
  */
-import { area, difference, flatten, offset, opening } from '../geometry/clip.js';
-import { UM_PER_MM, type ExPolygon, type Polygon, type Polyline, type Pt } from '../geometry/types.js';
+import { UM_PER_MM, type ExPolygon, type Polyline, type Pt } from '../geometry/types.js';
 import { generateInfill, regionPattern } from '../infill/index.js';
+import { SKIN_PATTERNS } from '../infill/skin-patterns.js';
 import type { InfillParams, InfillPattern, PatternId } from '../infill/types.js';
 import { skinGapFill } from '../regions/skin-gaps.js';
-import { allSkin } from '../regions/skin-areas.js';
-import { gapLoopWidths, type GapLoop } from '../regions/gap-loops.js';
+import { skinLayout, type BridgeLayout, type SkinLayout } from '../regions/skin-layout.js';
+import { gapLoopWidthsMm, type GapLoop } from '../regions/gap-loops.js';
 import type { IslandRegions, RegionFill, WallSet } from '../regions/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { LayerZ } from '../slice/types.js';
@@ -18,7 +19,6 @@ import { makeEntry } from './entry.js';
 import { solidFill } from '../infill/solid-fill.js';
 import { overAirMatters } from './roles.js';
 import { ironingEntry } from './ironing-paths.js';
-import { skinFills } from './skin-fill.js';
 import { fuzzyWalls } from './fuzzy-skin.js';
 import type { PathEntry, PathGroup } from './types.js';
 
@@ -43,51 +43,18 @@ interface FillContext extends IslandContext {
   cfg: Config;
 }
 
-/**
- * The skin of one region of an island, as skin-wall, skin and skin-gap entries, and its bridge lines.
- * @param bridgeFill the anchored bridge, printed as its own lines (and taken out of the rest of the skin), or null
- */
-function skinEntries(
-  island: RegionFill,
-  ctx: FillContext,
-  bridgeArea: readonly ExPolygon[],
-  bridgeFill: RegionFill['bridgeFill'] | null,
-): PathEntry[] {
+/** The skin of one region of an island, as bridge, skin-wall, skin and skin-gap entries, in its layout's areas. */
+function skinEntries(island: RegionFill, ctx: FillContext, layout: SkinLayout): PathEntry[] {
   const { cfg, widthUm: w, layer } = ctx;
-  let skinAll = allSkin({ top: island.topSkin, bottom: island.bottomSkin, exposed: island.exposed });
-  let exposed = island.exposed;
-  const out: PathEntry[] = [];
-  if (bridgeFill) {
-    out.push(...bridgeEntries(bridgeFill, ctx));
-    // the rest of the skin, less the bridge; whatever of it is narrower than a line is the bridge's (merged into it)
-    skinAll = opening(difference(skinAll, bridgeFill.area), w / 2);
-    exposed = difference(exposed, offset(bridgeFill.area, w / 2));
-  }
-  if (skinAll.length === 0 && exposed.length === 0) return out;
-  const overlapSkin = (cfg.skinOverlap / 100) * w;
-  let skinWalls: Polygon[] = [];
-  let fillArea: ExPolygon[];
-  if (cfg.skinWall && skinAll.length) {
-    const wallCentre = offset(skinAll, -w / 2);
-    skinWalls = flatten(wallCentre);
-    fillArea = offset(wallCentre, -(w - overlapSkin));
-    // pieces too narrow for a skin-wall loop still get their lines
-    if (skinAll.length > 1 || wallCentre.length === 0) {
-      for (const piece of skinAll) {
-        if (offset([piece], -w / 2).length === 0) fillArea.push(...offset([piece], -(w / 2 - overlapSkin)));
-      }
-    }
-  } else {
-    fillArea = offset(skinAll, -(w / 2 - overlapSkin));
-  }
+  const out: PathEntry[] = layout.bridge ? bridgeEntries(layout.bridge, ctx) : [];
   // lines, loops or both, by the region's top and bottom skin patterns
-  const fills = fillArea.length
-    ? skinFills(island, cfg, fillArea, skinAngleOf(island, cfg, layer.index), w, ctx.params.origin)
-    : [];
+  const angle = skinAngleOf(island, cfg, layer.index);
+  const fills = layout.parts.map((p) => SKIN_PATTERNS[p.pattern].fill(p.area, angle, w, ctx.params.origin));
   const lines = fills.length === 1 ? fills[0].lines : fills.flatMap((f) => f.lines);
   const loops = fills.flatMap((f) => f.loops);
-  const gaps = skinGapFill(exposed, loops.length ? skinWalls.concat(loops) : skinWalls, lines, w);
-  const air = bridgeArea.length ? bridgeArea : null;
+  const skinWalls = layout.walls;
+  const gaps = skinGapFill(layout.exposed, loops.length ? skinWalls.concat(loops) : skinWalls, lines, w);
+  const air = layout.overAir.length ? layout.overAir : null;
   if (skinWalls.length) out.push(makeEntry(cfg, 'skin-wall', true, skinWalls, w / UM_PER_MM, { overAir: air }));
   for (const f of fills) {
     for (const [closed, paths] of [
@@ -133,19 +100,16 @@ function pieceAngle(piece: ExPolygon, angle: number, minLengthUm: number): numbe
 }
 
 /**
- * The bridge lines of a region: straight lines in the bridge direction across each piece of the anchored bridge,
- * spread evenly from one side of the piece to the other at most bridgeSpacing apart (so no strip is left between
- * the last line and the walls), each a round bead of the nozzle's diameter at bridgeFlow (the entry's width is
- * that bead's cross-section over the layer height), every run printed as bridge.
+ * The bridge lines of a region: straight lines in the bridge direction across each piece of the anchored bridge
+ * (the area of its beads' centres), spread evenly from one side of the piece to the other at most bridgeSpacing
+ * apart (so no strip is left between the last line and the walls), each a round bead of the nozzle's diameter at
+ * bridgeFlow (the entry's width is that bead's cross-section over the layer height), every run printed as bridge.
  */
-function bridgeEntries(bridge: NonNullable<RegionFill['bridgeFill']>, ctx: FillContext): PathEntry[] {
-  const { cfg, widthUm: w, layer } = ctx;
-  const spacing = Math.round((cfg.bridgeSpacing ?? cfg.nozzleDiameter + 0.05) * UM_PER_MM);
-  const overlap = (cfg.skinOverlap / 100) * w;
-  // the beads' centres: half a bead in from the area's edge, as far into the walls as skin reaches
-  const centres = offset(bridge.area, -(Math.max(spacing, w) / 2 - overlap));
+function bridgeEntries(bridge: BridgeLayout, ctx: FillContext): PathEntry[] {
+  const { cfg, layer } = ctx;
+  const spacing = bridge.spacingUm;
   const lines: Pt[][] = [];
-  for (const piece of centres) {
+  for (const piece of bridge.centres) {
     const angle = pieceAngle(piece, bridge.angle, 4 * spacing);
     const a = (angle * Math.PI) / 180;
     const c = Math.cos(a),
@@ -180,7 +144,7 @@ function skinAngleOf(fill: RegionFill, cfg: Config, layerIndex: number): number 
 
 /** Gap loops with their own widths, as one entry of per-path widths. */
 function gapEntry(cfg: Config, role: 'skin-gap', gaps: readonly GapLoop[]): PathEntry {
-  const widths = gapLoopWidths(gaps);
+  const widths = gapLoopWidthsMm(gaps);
   return makeEntry(
     cfg,
     role,
@@ -217,12 +181,7 @@ function fillEntries(fill: RegionFill, ctx: IslandContext): PathEntry[] {
   const cfg = ctx.configs[fill.region];
   const fctx: FillContext = { ...ctx, cfg, params: regionParams(ctx.params, cfg) };
   const entries = infillEntries(fill, fctx);
-  // skin resting on support right below it (no Z gap) is not a bridge; over a Z gap it is, as over air
-  const bridgeArea =
-    fill.bridge.length && ctx.supportBelow.length ? difference(fill.bridge, ctx.supportBelow) : fill.bridge;
-  // the anchored bridge prints as bridge lines unless support holds part of it up
-  const held = ctx.supportBelow.length > 0 && fill.bridgeFill !== undefined && area(bridgeArea) < area(fill.bridge) - 1;
-  entries.push(...skinEntries(fill, fctx, bridgeArea, held ? null : (fill.bridgeFill ?? null)));
+  entries.push(...skinEntries(fill, fctx, skinLayout(fill, cfg, ctx.widthUm, ctx.supportBelow)));
   const iron = ironingEntry(fill, cfg, skinAngleOf(fill, cfg, ctx.layer.index), fctx.params.origin);
   if (iron) entries.push(iron);
   return entries;

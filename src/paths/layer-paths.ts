@@ -43,7 +43,7 @@ export function layerPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
  */
 export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): LayerPaths {
   const { cfg } = ctx;
-  const w = widthOf(regions, cfg);
+  const w = layerLineWidthUm(regions, cfg);
   const groups: PathGroup[] = [];
   if (regions.raft) {
     groups.push(...raftGroups(regions.raft, cfg, regions, ctx.params[0].origin));
@@ -67,7 +67,7 @@ export function modelPaths(regions: LayerRegions, ctx: LayerPathsContext): Layer
     z: regions.z + ctx.zOffset,
     height: regions.height,
     sliceZ: regions.sliceZ,
-    lineWidth: w / 1000,
+    lineWidthMm: w / 1000,
     groups,
   };
   let lost = 0;
@@ -94,7 +94,7 @@ export function withSharedGroups(paths: LayerPaths, regions: LayerOutlines, ctx:
         regions.islands.map((i) => i.outline),
         support,
         cfg,
-        widthOf(regions, cfg),
+        layerLineWidthUm(regions, cfg),
       ),
     );
   }
@@ -113,6 +113,6 @@ export function withSharedGroups(paths: LayerPaths, regions: LayerOutlines, ctx:
   return paths;
 }
 
-function widthOf(regions: LayerOutlines, cfg: Config): number {
+function layerLineWidthUm(regions: LayerOutlines, cfg: Config): number {
   return regions.raft ? Math.round(cfg.lineWidthMm * 1000) : lineWidthUm(cfg, regions.index);
 }

@@ -7,6 +7,7 @@ import { AreaIndex as EdgeGrid } from '../geometry/area-index.js';
 import { boundsOf, pointInArea } from '../geometry/clip.js';
 import { ringBounds } from '../geometry/contain.js';
 import { hypot, type Bounds, type ExPolygon, type Pt } from '../geometry/types.js';
+import { SEGMENT_T_EPS } from '../geometry/tolerances.js';
 
 /** Pieces shorter than this (µm) keep their neighbour's flag: no run is shorter than a few micrometres. */
 const MIN_PIECE_UM = 5;
@@ -183,7 +184,7 @@ function flagPath(
     let prevT = 0;
     let prev = a;
     const cuts = ts.filter(
-      (t, i) => (i === 0 || t - ts[i - 1] > 1e-9) && t * len > MIN_PIECE_UM && (1 - t) * len > MIN_PIECE_UM,
+      (t, i) => (i === 0 || t - ts[i - 1] > SEGMENT_T_EPS) && t * len > MIN_PIECE_UM && (1 - t) * len > MIN_PIECE_UM,
     );
     cuts.push(1);
     for (let c = 0; c < cuts.length; c++) {

@@ -147,6 +147,10 @@ export interface EntryStyle {
   scarf?: ScarfStyle;
 }
 
+/**
+ * Styles made so far, by config: a memo of a pure function of the (frozen) config, so a slice that shares
+ * a config with another gets the very styles it would make; held no longer than the config.
+ */
 const cache = new WeakMap<Config, Map<string, EntryStyle>>();
 
 /** The style of a role's entries (walls: of wall `wall`), resolved once per config and shared. */

@@ -194,10 +194,10 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   }
   // walls round the body only: roof and floor are dense lines of their own, as without walls (a wall round a
   // roof a few lines wide would print it solid)
-  for (let i = 0; i < all.length && cfg.supportWalls > 0; i++) {
+  for (let i = 0; i < all.length && cfg.supportWallCount > 0; i++) {
     const c = circles.get(all[i]);
     if (!c || !body.has(all[i])) continue;
-    for (let k = 0; k < cfg.supportWalls; k++) {
+    for (let k = 0; k < cfg.supportWallCount; k++) {
       const ring = shrunkRegularPolygon(c, w / 2 + k * w);
       if (!ring) break;
       add(components[i], 'support', true, ring);
@@ -206,8 +206,8 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
   // straight columns (a tree's pockets) have the walls normal support has, the rest the support's own
   const columns = new Set(s.columnBody ?? []);
   const walled = s.body.filter((a) => !circles.has(a) && !columns.has(a));
-  addWalls(walled, cfg.supportWalls, w, plain);
-  if (s.columnBody?.length) addWalls(s.columnBody, cfg.supportColumnWalls, w, plain);
+  addWalls(walled, cfg.supportWallCount, w, plain);
+  if (s.columnBody?.length) addWalls(s.columnBody, cfg.supportColumnWallCount, w, plain);
   const byArea = new Map<ExPolygon, Component>();
   for (const c of components) byArea.set(c.area, c);
   const to =
@@ -216,9 +216,9 @@ export function supportGroups(s: SupportAreas | null, cfg: Config, layer: LayerZ
       add((a && byArea.get(a)) || owner(components, line[0]), role, false, line);
   // the body's lines start inside its innermost wall, the roof's and floor's half a line in
   const branches = columns.size ? s.body.filter((a) => !columns.has(a)) : s.body;
-  bodyLines(branches, cfg, w / 2 + cfg.supportWalls * w, w, origin, circles, to('support'));
+  bodyLines(branches, cfg, w / 2 + cfg.supportWallCount * w, w, origin, circles, to('support'));
   if (s.columnBody?.length)
-    bodyLines(s.columnBody, cfg, w / 2 + cfg.supportColumnWalls * w, w, origin, circles, to('support'));
+    bodyLines(s.columnBody, cfg, w / 2 + cfg.supportColumnWallCount * w, w, origin, circles, to('support'));
   const iface = w / (cfg.supportInterfaceDensity / 100);
   const ifaceAngle = cfg.supportAngle + 90 + (layer.index % 2 === 1 ? 90 : 0);
   for (const [kind, role] of [

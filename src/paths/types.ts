@@ -71,7 +71,7 @@ export interface PathGroup {
 
 export interface LayerPaths extends LayerZ {
   /** Nominal line width of the layer, mm. */
-  lineWidth: number;
+  lineWidthMm: number;
   /** Area of the layer's islands too thin for any wall line (left out), mm²; absent when none. */
   lostMm2?: number;
   /** A spiral vase layer (LayerRegions.vase): the planner spirals it when it is one wall loop. */

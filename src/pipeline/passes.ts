@@ -10,6 +10,7 @@
  *   is raised.
  * A custom infill (IceSL) fills every layer on its own: it has none.
  */
+import { LENGTH_EPS_MM } from '../geometry/tolerances.js';
 import type { ExPolygon, Polyline } from '../geometry/types.js';
 import { PATTERNS } from '../infill/registry.js';
 import type { PatternId } from '../infill/types.js';
@@ -68,7 +69,7 @@ function anySupport(s: PassSetup): boolean {
 function noTopGap(c: Config, s: SliceSetup, i: number): boolean {
   if (!s.uneven) return c.supportTopGapLayers === 0;
   if (c.supportZGap === null) return false;
-  const half = (h: number) => h / 2 > c.supportZGap! + 1e-9;
+  const half = (h: number) => h / 2 > c.supportZGap! + LENGTH_EPS_MM;
   return i >= 0 ? half(s.layers[i].height) : s.layers.some((l) => half(l.height));
 }
 

@@ -122,8 +122,14 @@ export class Planner {
       objects.map((o) => o.mesh),
       cfg.thumbnails,
     );
-    yield* paced(writeGcodeSteps(printPlan, cfg, estimate, sink, { generator: `Strata ${VERSION}`, thumbnails }), () =>
-      progress('write', ++k, n),
+    yield* paced(
+      writeGcodeSteps(printPlan, cfg.settings, estimate, sink, {
+        generator: `Strata ${VERSION}`,
+        thumbnails,
+        printerId: cfg.printerId,
+        filamentId: cfg.filamentId,
+      }),
+      () => progress('write', ++k, n),
     );
     progress('written', n, n);
     return {

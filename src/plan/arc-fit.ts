@@ -17,6 +17,7 @@
  */
 import { hypot, type Pt } from '../geometry/types.js';
 import type { ExtrudeStep, PlanArc, PrintPlan } from './types.js';
+import { MIN_SAGITTA_MM } from '../geometry/tolerances.js';
 
 /** Fewest segments worth one arc. */
 export const MIN_ARC_SEGMENTS = 2;
@@ -92,7 +93,7 @@ function fitRun(path: readonly Pt[], i: number, j: number, tol: number, samples:
     }
     return max;
   };
-  const nonZero = (s: number) => (s === 0 ? 1e-9 : s);
+  const nonZero = (s: number) => (s === 0 ? MIN_SAGITTA_MM : s);
   let lo = -h,
     hi = h;
   let x1 = hi - GOLDEN * (hi - lo),

@@ -5,6 +5,7 @@
  */
 import { pointInRing } from '../geometry/contain.js';
 import { hypot, segmentDistance2, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
+import { SEGMENT_T_EPS } from '../geometry/tolerances.js';
 
 /** Parametric crossing of segment a→b with ring edge i: t along a→b, u along the edge. */
 interface Crossing {
@@ -96,7 +97,7 @@ function crossings(a: Pt, b: Pt, rings: readonly CombRing[]): Crossing[] {
         fy = p.y - a.y;
       const t = (fx * ey - fy * ex) / den;
       const u = (fx * dy - fy * dx) / den;
-      if (t <= 1e-9 || t >= 1 - 1e-9 || u < 0 || u >= 1) continue;
+      if (t <= SEGMENT_T_EPS || t >= 1 - SEGMENT_T_EPS || u < 0 || u >= 1) continue;
       out.push({ t, ring: r, edge: i, u, p: { x: Math.round(a.x + t * dx), y: Math.round(a.y + t * dy) } });
     }
   }
@@ -141,7 +142,7 @@ function walk(ring: CombRing, c1: Crossing, c2: Crossing): Pt[] {
   return out;
 }
 
-export function pathLength(a: Pt, way: readonly Pt[]): number {
+export function pathLengthUm(a: Pt, way: readonly Pt[]): number {
   let len = 0;
   let p = a;
   for (const q of way) {

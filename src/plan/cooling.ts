@@ -15,9 +15,10 @@
 import { hypot, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
 import type { LayerPlan, PrintPlan } from './types.js';
+import { MIN_TIME_S } from '../geometry/tolerances.js';
 
 /** Length of the path through `points` (from `from` first, when given), mm. */
-function polyLength(points: readonly Pt[], closed: boolean, from?: Pt): number {
+function pathLengthMm(points: readonly Pt[], closed: boolean, from?: Pt): number {
   let len = from ? hypot(points[0].x - from.x, points[0].y - from.y) : 0;
   for (let i = 1; i < points.length; i++) len += hypot(points[i].x - points[i - 1].x, points[i].y - points[i - 1].y);
   if (closed && points.length > 2) {
@@ -35,11 +36,11 @@ export function naiveLayerSeconds(layer: LayerPlan, from?: Pt): { extrude: numbe
   let at = from;
   for (const s of layer.steps) {
     if (s.kind === 'extrude') {
-      extrude += polyLength(s.points, s.closed) / s.speed;
+      extrude += pathLengthMm(s.points, s.closed) / s.speed;
       at = s.closed ? s.points[0] : s.points[s.points.length - 1];
     } else {
       // the travel from where the last step ended
-      travel += polyLength(s.points, false, at) / s.speed;
+      travel += pathLengthMm(s.points, false, at) / s.speed;
       at = s.points[s.points.length - 1];
     }
   }
@@ -52,7 +53,7 @@ export function applyMinLayerTime(layer: LayerPlan, minLayerTime: number, minPri
   const { extrude, travel } = naiveLayerSeconds(layer);
   const total = extrude + travel;
   if (total >= minLayerTime || extrude <= 0) return;
-  const factor = extrude / Math.max(minLayerTime - travel, 1e-6);
+  const factor = extrude / Math.max(minLayerTime - travel, MIN_TIME_S);
   for (const s of layer.steps) {
     if (s.kind === 'extrude') s.speed = Math.max(Math.min(s.speed, minPrintSpeed), s.speed * factor);
   }

@@ -29,7 +29,7 @@
  * Filament: Σ E of the extrusions (width × height × length over the filament cross-section × flow ×
  * flowRate) plus the extra prime after each retraction; weight from `filamentDensity` (g/cm³).
  */
-import { filamentArea, walkPlanSteps, type MoveSettings, type MoveSink } from './moves.js';
+import { filamentAreaMm2, walkPlanSteps, type MoveSettings, type MoveSink } from './moves.js';
 import { extrudeOnlyRatio, KlipperPlanner, type KlipperLimits } from './klipper-planner.js';
 import { MarlinPlanner, type MarlinLimits } from './marlin-planner.js';
 import { SCHEMA, type Settings } from '../settings/schema.js';
@@ -374,7 +374,7 @@ export function* estimatePlanSteps(plan: PrintPlan, s: EstimateSettings): Genera
   filament = timer.filament;
   let printTimeSeconds = 0;
   for (const t of layerSeconds) printTimeSeconds += t;
-  const volumeCm3 = (filament * filamentArea(s.filamentDiameter)) / 1000;
+  const volumeCm3 = (filament * filamentAreaMm2(s.filamentDiameter)) / 1000;
   return {
     printTimeSeconds,
     filamentMm: filament,

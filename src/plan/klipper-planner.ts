@@ -20,6 +20,7 @@
  *   extruder-only move, a reversal) ends what the ones before can depend on, so the queue is planned and
  *   emptied there. Klipper's lazy flushing in between gives the same speeds.
  */
+import { KLIPPER_MIN_MOVE_MM } from '../geometry/tolerances.js';
 
 /** Klipper's [printer] and [extruder] limits the planner uses (mm, s). */
 export interface KlipperLimits {
@@ -143,7 +144,7 @@ export class KlipperPlanner {
     let moveD = Math.sqrt(dx * dx + dy * dy + dz * dz);
     let velocity: number;
     let accel: number;
-    const kinematic = moveD >= 1e-9;
+    const kinematic = moveD >= KLIPPER_MIN_MOVE_MM;
     if (!kinematic) {
       moveD = Math.abs(de);
       if (!(moveD > 0)) return;

@@ -9,7 +9,7 @@ import { pointInArea } from '../geometry/clip.js';
 import { entryPoint, exitPoint, orderPaths, shortenOrder, type PathSet, type Visit } from '../order/index.js';
 import type { LayerPaths, PathEntry, PathGroup } from '../paths/types.js';
 import type { Config } from '../settings/resolve.js';
-import { combRoute, insideRings, makeCombArea, pathLength, type CombArea } from './comb.js';
+import { combRoute, insideRings, makeCombArea, pathLengthUm, type CombArea } from './comb.js';
 import { flagStyle, GROUP_ORDER, overAirMatters, type EntryStyle, type ExtrusionStyle } from '../paths/roles.js';
 import { sortEntries } from './print-order.js';
 import { scarfRuns } from './scarf.js';
@@ -131,7 +131,7 @@ function travelTo(ctx: Ctx, to: Pt, forceRetract = false): void {
     const route = combRoute(from, to, area);
     leaves = !(route && route.length === 1);
   }
-  const length = pathLength(from, points);
+  const length = pathLengthUm(from, points);
   let retract =
     cfg.retractionEnabled &&
     cfg.retractionDistance > 0 &&
@@ -177,12 +177,12 @@ function runFilament(ctx: Ctx, run: Run, flow: number): number {
  */
 function travelInside(ctx: Ctx, inner: CombArea, from: Pt, to: Pt): Pt[] | null {
   // a travel that starts where the innermost wall's loop ended is on it: half a line width of tolerance
-  const tolerance = ctx.layer.lineWidth * UM_PER_MM * 0.5;
+  const tolerance = ctx.layer.lineWidthMm * UM_PER_MM * 0.5;
   if (!insideRings(from, inner, tolerance) || !insideRings(to, inner, tolerance)) return null;
   const route = combRoute(from, to, inner);
   if (!route || (!ctx.cfg.combing && route.length > 1)) return null;
   const limit = ctx.cfg.combingMaxDistance * UM_PER_MM;
-  if (limit > 0 && pathLength(from, route) > limit) return null;
+  if (limit > 0 && pathLengthUm(from, route) > limit) return null;
   return route;
 }
 
@@ -281,7 +281,7 @@ function reverseChannel<T extends Float64Array | Uint8Array>(values: T | null): 
 }
 
 /** Per-point widths that are all one value are that one width. */
-function runWidth(entry: PathEntry, i: number): { width: number; widths: Float64Array | null } {
+function runWidthMm(entry: PathEntry, i: number): { width: number; widths: Float64Array | null } {
   const widths = entry.widths?.[i] ?? null;
   if (!widths || widths.length === 0) return { width: entry.width, widths: null };
   const w0 = widths[0];
@@ -291,7 +291,7 @@ function runWidth(entry: PathEntry, i: number): { width: number; widths: Float64
 
 /** Loop i of the entry, started at point s. */
 function loopRun(entry: PathEntry, i: number, s: number): Run {
-  const { width, widths } = runWidth(entry, i);
+  const { width, widths } = runWidthMm(entry, i);
   return {
     points: rotateLoop(entry.paths[i], s),
     closed: true,
@@ -304,7 +304,7 @@ function loopRun(entry: PathEntry, i: number, s: number): Run {
 
 /** Line i of the entry, from its first point or (flip) its last. */
 function lineRun(entry: PathEntry, i: number, flip: boolean): Run {
-  const { width, widths } = runWidth(entry, i);
+  const { width, widths } = runWidthMm(entry, i);
   const line = entry.paths[i];
   const z = entry.z?.[i] ?? null;
   const flags = entry.overAir?.[i] ?? null;
@@ -697,8 +697,8 @@ export function planLayer(
     state.spiralEnd = { finish, into: plan.steps };
   }
   if (position === 1) {
-    if (cfg.nozzleTemperature !== cfg.firstLayerNozzleTemp) plan.nozzleTemperature = cfg.nozzleTemperature;
-    if (cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemp) plan.bedTemperature = cfg.bedTemperature;
+    if (cfg.nozzleTemperature !== cfg.firstLayerNozzleTemperature) plan.nozzleTemperature = cfg.nozzleTemperature;
+    if (cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemperature) plan.bedTemperature = cfg.bedTemperature;
   }
   return plan;
 }

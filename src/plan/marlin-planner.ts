@@ -28,6 +28,7 @@
  *   stops); forward pass: at most what the previous block reaches from its entry. Each block is a
  *   trapezoid (or triangle) between its entry and the next block's.
  */
+import { MARLIN_MIN_MOVE_MM, MIN_ANGLE_RAD } from '../geometry/tolerances.js';
 
 /** The limits Marlin plans with (mm, s). Infinity: no limit. */
 export interface MarlinLimits {
@@ -105,9 +106,9 @@ export class MarlinPlanner {
   move(dx: number, dy: number, dz: number, de: number, speed: number): void {
     const L = this.#L;
     const xyz = Math.sqrt(dx * dx + dy * dy + dz * dz);
-    const eOnly = xyz < 1e-6;
+    const eOnly = xyz < MARLIN_MIN_MOVE_MM;
     const length = eOnly ? Math.abs(de) : xyz;
-    if (!(length > 1e-6) || !(speed > 0)) return;
+    if (!(length > MARLIN_MIN_MOVE_MM) || !(speed > 0)) return;
     const d = this.#d;
     d[0] = dx;
     d[1] = dy;
@@ -165,7 +166,7 @@ export class MarlinPlanner {
           const sinHalf = Math.sqrt(0.5 * (1 - cos));
           v2 = (ja * L.junctionDeviation * sinHalf) / (1 - sinHalf);
           if (length < 1 && cos < -0.7071067812) {
-            const theta = Math.max(Math.acos(-cos), 1e-9);
+            const theta = Math.max(Math.acos(-cos), MIN_ANGLE_RAD);
             const arc = (length * ja) / theta;
             if (arc < v2) v2 = arc;
           }

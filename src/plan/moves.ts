@@ -146,7 +146,7 @@ export function arcLengthMm(
 }
 
 /** Filament cross-section area, mm². */
-export function filamentArea(filamentDiameter: number): number {
+export function filamentAreaMm2(filamentDiameter: number): number {
   const r = filamentDiameter / 2;
   return Math.PI * r * r;
 }
@@ -157,7 +157,7 @@ export function filamentPerMm(
   s: Pick<MoveSettings, 'filamentDiameter' | 'flowRate'>,
   width = step.width,
 ): number {
-  return ((width * step.height) / filamentArea(s.filamentDiameter)) * step.flow * (s.flowRate / 100);
+  return ((width * step.height) / filamentAreaMm2(s.filamentDiameter)) * step.flow * (s.flowRate / 100);
 }
 
 /**
@@ -320,7 +320,7 @@ function arcChords(
  * The coasted length of an extrude step (mm, from its end), or 0 when it is not coasted: see the module
  * comment. `n` points, `last` segments.
  */
-function coastLength(s: MoveSettings, step: ExtrudeStep, n: number, last: number): number {
+function coastLengthMm(s: MoveSettings, step: ExtrudeStep, n: number, last: number): number {
   if (step.z) return 0;
   const width = step.widths ? step.widths[step.closed ? 0 : n - 1]! : step.width;
   const coast = s.coastingVolume / (width * step.height);
@@ -442,7 +442,7 @@ function walkLayer(w: Walk, layer: LayerPlan, li: number): void {
     const record = w.wipe;
     if (record) behind.push(pos.x, pos.y);
     // coasting: the step is extruded up to `coastFrom` mm along it, then moved along without extrusion
-    const coast = coasting && retractsNext(w, li, si) ? coastLength(s, step, n, last) : 0;
+    const coast = coasting && retractsNext(w, li, si) ? coastLengthMm(s, step, n, last) : 0;
     if (coast > 0) {
       walkCoasted(w, step, perMm, speed, last, coast);
       continue;

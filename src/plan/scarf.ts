@@ -29,7 +29,7 @@ export const SCARF_CLEARANCE_MM = 0.02;
  */
 export const SCARF_SHARP_CORNER = (40 * Math.PI) / 180;
 /** A cut of the ramp this close to a corner of the loop is that corner (no sliver of a move), µm. */
-const SAME_POINT_UM = 20;
+const RAMP_CUT_AT_CORNER_UM = 20;
 
 /** A loop as the planner holds it, turned to start at its seam. */
 export interface ScarfLoop {
@@ -92,7 +92,7 @@ export function scarfRuns(loop: ScarfLoop, scarf: ScarfStyle, layerHeight: numbe
     const a = pts[k],
       b = pts[k + 1 === n ? 0 : k + 1];
     const end = along + edges[k];
-    while (cut <= steps && cutAt(cut) < end - SAME_POINT_UM) {
+    while (cut <= steps && cutAt(cut) < end - RAMP_CUT_AT_CORNER_UM) {
       const t = (cutAt(cut) - along) / edges[k];
       ramp.push({ x: Math.round(a.x + t * (b.x - a.x)), y: Math.round(a.y + t * (b.y - a.y)) });
       dist.push(cutAt(cut));
@@ -103,7 +103,7 @@ export function scarfRuns(loop: ScarfLoop, scarf: ScarfStyle, layerHeight: numbe
     if (cut > steps) break;
     // the corner at the edge's end, which is the next cut when it lies on it
     ramp.push(b);
-    const onCut = cutAt(cut) <= end + SAME_POINT_UM;
+    const onCut = cutAt(cut) <= end + RAMP_CUT_AT_CORNER_UM;
     dist.push(onCut ? cutAt(cut) : end);
     width.push(widthAt(k + 1 === n ? 0 : k + 1));
     onEdge.push(k);

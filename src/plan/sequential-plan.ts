@@ -107,10 +107,10 @@ export function planSequential(input: SequentialInput, cfg: Config): LayerPlan[]
 function temperatures(layer: LayerPlan, cfg: Config, k: number, own: number): void {
   delete layer.nozzleTemperature;
   delete layer.bedTemperature;
-  const nozzleDiffers = cfg.nozzleTemperature !== cfg.firstLayerNozzleTemp;
-  if (own === 0 && k > 0 && nozzleDiffers) layer.nozzleTemperature = cfg.firstLayerNozzleTemp;
+  const nozzleDiffers = cfg.nozzleTemperature !== cfg.firstLayerNozzleTemperature;
+  if (own === 0 && k > 0 && nozzleDiffers) layer.nozzleTemperature = cfg.firstLayerNozzleTemperature;
   if (own === 1 && nozzleDiffers) layer.nozzleTemperature = cfg.nozzleTemperature;
-  if (own === 1 && k === 0 && cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemp)
+  if (own === 1 && k === 0 && cfg.heatedBed && cfg.bedTemperature !== cfg.firstLayerBedTemperature)
     layer.bedTemperature = cfg.bedTemperature;
 }
 

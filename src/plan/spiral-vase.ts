@@ -36,12 +36,12 @@ export interface VaseRun {
 }
 
 /** A point on a loop this close to a corner is that corner (no sliver of a move), µm. */
-const SAME_POINT_UM = 5;
+const VASE_POINT_AT_CORNER_UM = 5;
 
 /** Where a loop comes nearest to a point: on edge `edge` (from point edge to edge + 1), at `at`. */
 export interface NearestOnLoop {
   edge: number;
-  /** The nearest point, rounded to the µm; a corner of the loop when it is within SAME_POINT_UM of one. */
+  /** The nearest point, rounded to the µm; a corner of the loop when it is within VASE_POINT_AT_CORNER_UM of one. */
   at: Pt;
   /** Fraction of the edge's length from its start to `at`, 0..1. */
   t: number;
@@ -73,8 +73,8 @@ export function nearestOnLoop(points: readonly Pt[], p: Pt): NearestOnLoop {
   const a = points[edge],
     b = points[edge + 1 === n ? 0 : edge + 1];
   const len = hypot(b.x - a.x, b.y - a.y);
-  if (bestT * len <= SAME_POINT_UM) return { edge, at: a, t: 0 };
-  if ((1 - bestT) * len <= SAME_POINT_UM) return { edge: edge + 1 === n ? 0 : edge + 1, at: b, t: 0 };
+  if (bestT * len <= VASE_POINT_AT_CORNER_UM) return { edge, at: a, t: 0 };
+  if ((1 - bestT) * len <= VASE_POINT_AT_CORNER_UM) return { edge: edge + 1 === n ? 0 : edge + 1, at: b, t: 0 };
   return { edge, at: { x: Math.round(a.x + bestT * (b.x - a.x)), y: Math.round(a.y + bestT * (b.y - a.y)) }, t: bestT };
 }
 

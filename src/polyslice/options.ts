@@ -201,7 +201,7 @@ export const OPTIONS: Readonly<Partial<Record<OptionName, MappedOption | KeptOpt
   raftInterfaceThickness: kept(0.2, "Strata's raft interface layers are layerHeight thick", 'length'),
   raftAirGap: mapped('raftAirGap', 'length'),
   raftLineSpacing: mapped('raftBaseLineSpacing', 'length', {
-    from: (c) => c.raftBaseLineSpacing ?? 2 * (c.raftBaseLineWidth ?? 2 * c.nozzleDiameter),
+    from: (c) => c.raftBaseLineSpacingMm,
   }),
   testStrip: kept(false, "the printer preset's start G-code draws a prime line"),
   metadata: kept(true, HEADER),

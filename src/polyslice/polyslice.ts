@@ -257,7 +257,7 @@ export class Polyslice {
       return typeof v === 'number' ? fromInternal(v, def.quantity, this.#units) : v;
     }
     const cfg = this.#slicer.config;
-    const v = def.from ? def.from(cfg) : cfg[def.key];
+    const v = def.from ? def.from(cfg) : cfg.settings[def.key];
     return typeof v === 'number' ? fromInternal(v, def.quantity, this.#units) : v;
   }
 

@@ -22,6 +22,7 @@ import { SCHEMA } from '../settings/schema.js';
 import type { ImportContext } from './context.js';
 import { importTemplate } from './templates.js';
 import { bool, percentOfNozzle, tipSpacingOfDensity } from './values.js';
+import { WHOLE_QUOTIENT_EPS } from '../geometry/tolerances.js';
 
 const INFILL: Readonly<Record<string, PatternId>> = {
   grid: 'grid',
@@ -346,7 +347,7 @@ export function mapCuraKeys(c: ImportContext): void {
     const length = c.settings.scarfLength ?? (SCHEMA.scarfLength.default as number);
     c.set(
       'scarfSteps',
-      Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(length / split - 1e-9))),
+      Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(length / split - WHOLE_QUOTIENT_EPS))),
       'scarf_split_distance',
     );
   }

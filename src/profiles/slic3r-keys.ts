@@ -69,6 +69,7 @@ import {
   text,
   tipSpacingOfDensity,
 } from './values.js';
+import { WHOLE_QUOTIENT_EPS } from '../geometry/tolerances.js';
 
 export type Slic3rFlavor = 'prusaslicer' | 'superslicer' | 'orcaslicer';
 
@@ -1087,7 +1088,7 @@ function seamsAndSurface(c: ImportContext, layerHeight: number): void {
     const over = c.settings.scarfLength ?? (SCHEMA.scarfLength.default as number);
     c.set(
       'scarfSteps',
-      v && v > 0 ? Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(over / v - 1e-9))) : undefined,
+      v && v > 0 ? Math.min(SCHEMA.scarfSteps.max, Math.max(1, Math.ceil(over / v - WHOLE_QUOTIENT_EPS))) : undefined,
       segment.key,
       'not a length',
     );

@@ -5,6 +5,7 @@
  * everything else.
  */
 import type { PatternId } from '../infill/types.js';
+import { LAYER_SHARE_EPS } from '../geometry/tolerances.js';
 
 const PATTERNS: Readonly<Record<PatternId, string>> = {
   grid: 'grid',
@@ -41,7 +42,7 @@ export function toSlic3rKeys(settings: Readonly<Record<string, unknown>>, layerH
     const t = num(s[setting]);
     if (t === undefined) continue;
     // whole layers that fit, the thickness as the minimum: slic3r-keys.ts reads back max(layers × height, minimum)
-    out[`${side}_solid_layers`] = String(t > 0 ? Math.max(1, Math.floor(t / lh + 1e-6)) : 0);
+    out[`${side}_solid_layers`] = String(t > 0 ? Math.max(1, Math.floor(t / lh + LAYER_SHARE_EPS)) : 0);
     out[`${side}_solid_min_thickness`] = String(t);
   }
   // written only when on, so a project without the vase is written as before

@@ -5,7 +5,7 @@
  */
 import { area, difference, offset, opening, ringArea, strokeArea } from '../geometry/clip.js';
 import { UM_PER_MM, type ExPolygon, type Polygon } from '../geometry/types.js';
-import { stripWidth } from './strip-width.js';
+import { stripWidthUm } from './strip-width.js';
 
 export interface GapLoop {
   loop: Polygon;
@@ -13,7 +13,7 @@ export interface GapLoop {
 }
 
 /** Each gap loop's width, mm, at every one of its points (the per-point widths a path entry carries). */
-export function gapLoopWidths(gaps: readonly GapLoop[]): Float64Array[] {
+export function gapLoopWidthsMm(gaps: readonly GapLoop[]): Float64Array[] {
   return gaps.map((g) => new Float64Array(g.loop.length).fill(g.widthUm / UM_PER_MM));
 }
 
@@ -23,8 +23,11 @@ export const MIN_GAP_FRACTION = 0.3;
 const MAX_GAP_WIDTHS = 2;
 /** At most this many rounds of loops inside loops. */
 const MAX_ROUNDS = 3;
-/** Loops enclosing less than this (µm²) are specks the nozzle cannot draw. */
-const MIN_LOOP_AREA_UM2 = 25 * 25;
+/**
+ * Smallest area a gap loop's ring may enclose, µm²: a 25 µm square. A smaller one is a speck the nozzle
+ * cannot draw; gap loops are thinner than walls, so theirs is smaller than walls' (MIN_WALL_LOOP_AREA_UM2).
+ */
+const MIN_GAP_LOOP_AREA_UM2 = 25 * 25;
 
 /**
  * Loops filling thin strips. Parts of the strips thinner than a printable bead are dropped first: besides
@@ -43,11 +46,11 @@ function fillGaps(gaps: readonly ExPolygon[], w: number, rounds: number, out: Ga
   const pieces = gaps.filter((g) => area([g]) >= minWidth * minWidth);
   if (pieces.length === 0) return;
   for (const g of opening(pieces, minWidth / 2)) {
-    const d = stripWidth(g);
+    const d = stripWidthUm(g);
     if (d < minWidth || d > MAX_GAP_WIDTHS * w) continue;
     const bead = d / 2;
     const loops = offset([g], -bead / 2)
-      .filter((p) => Math.abs(ringArea(p.outer)) >= MIN_LOOP_AREA_UM2)
+      .filter((p) => Math.abs(ringArea(p.outer)) >= MIN_GAP_LOOP_AREA_UM2)
       .map((p) => p.outer);
     for (const loop of loops) out.push({ loop, widthUm: Math.round(bead) });
     if (loops.length && rounds > 1) fillGaps(difference([g], loopBeads(loops, bead)), w, rounds - 1, out);

@@ -95,7 +95,7 @@ export function vaseOutline(section: readonly ExPolygon[]): { kept: ExPolygon[];
 /** The walls' settings: regions that agree on these share their walls. */
 function wallsKey(cfg: Config): string {
   return [
-    cfg.walls,
+    cfg.wallCount,
     cfg.wallGenerator,
     cfg.minFeatureSize,
     cfg.minBeadWidth,
@@ -138,8 +138,8 @@ export class RegionsRun {
       : Int32Array.from(layers, (l) => Math.round(l.height * 1000));
     const counts = objectCfgs.map((c) => {
       if (!heights) return { top: null, bottom: null, maxTop: c.topLayers, maxBottom: c.bottomLayers };
-      const top = skinLayerCounts(heights, c.topSkinThickness ?? c.shellSkinThickness, 1);
-      const bottom = skinLayerCounts(heights, c.bottomSkinThickness ?? c.shellSkinThickness, -1);
+      const top = skinLayerCounts(heights, c.topSkinThicknessMm, 1);
+      const bottom = skinLayerCounts(heights, c.bottomSkinThicknessMm, -1);
       return {
         top,
         bottom,
@@ -314,6 +314,7 @@ export class RegionsRun {
       region,
       topSkin: skin.top,
       bottomSkin: skin.bottom,
+      skin: skinAll,
       exposed: skin.exposed,
       bridge: bridge?.area ?? [],
       bridgeAngle: bridge && bridge.mostly ? bridge.angle : null,
@@ -385,7 +386,7 @@ export class RegionsRun {
       for (const iw of computeWalls(area, wallCfg, w)) {
         // extra walls over the overhangs inside the walls that cannot bridge take their area from skin and infill
         const extra =
-          i > 0 && wallCfg.extraPerimetersOnOverhangs ? overhangWalls(iw.inner, below, w, wallCfg.walls) : null;
+          i > 0 && wallCfg.extraPerimetersOnOverhangs ? overhangWalls(iw.inner, below, w, wallCfg.wallCount) : null;
         const inside = extra ? difference(iw.inner, extra.covered) : iw.inner;
         const fills: RegionFill[] = [];
         // the island's top surface, where a region of it irons
@@ -443,7 +444,7 @@ export class RegionsRun {
     const o = this.#objects[k];
     const region = o.setup.regions[rangeAt(o.setup, this.#layers[i].sliceZ)][0];
     const cfg = this.#setup.configs[region];
-    const oneWall: Config = { ...cfg, walls: 1, extraPerimetersOnOverhangs: false };
+    const oneWall: Config = { ...cfg, wallCount: 1, extraPerimetersOnOverhangs: false };
     const { kept, droppedMm2 } = vaseOutline(this.#section(k, i));
     const islands = computeWalls(kept, oneWall, w).map((iw): IslandRegions => {
       const island: IslandRegions = {
@@ -451,6 +452,7 @@ export class RegionsRun {
         region,
         topSkin: [],
         bottomSkin: [],
+        skin: [],
         exposed: [],
         bridge: [],
         bridgeAngle: null,

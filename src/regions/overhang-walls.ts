@@ -28,7 +28,7 @@ const BRIDGEABLE_SHARE = 0.2;
 /** Rings made after the rings stop reaching the overhang (over the anchor, to hold the rest). */
 const RINGS_PAST_OVERHANG = 2;
 /** No piece gets more rings than this (a piece 8 cm across at 0.4 mm lines). */
-const MAX_RINGS = 100;
+const MAX_EXTRA_WALL_RINGS = 100;
 /** Lines shorter than this many line widths are left out (specks between a ring's clipped pieces). */
 const MIN_LINE_WIDTHS = 3;
 
@@ -102,8 +102,8 @@ function ringsOver(
   let ring = offset(anchoring.length ? union(offset([piece], 0.1 * w), anchoring) : [piece], -0.6 * w);
   const rings: ExtraWallRing[] = [];
   let past = RINGS_PAST_OVERHANG;
-  for (let r = 0; r < MAX_RINGS && ring.length > 0; r++) {
-    const lines = joinEnds(clipLines(closedLines(ring), clip), w / 10).filter((l) => lineLength(l) >= minLength);
+  for (let r = 0; r < MAX_EXTRA_WALL_RINGS && ring.length > 0; r++) {
+    const lines = joinEnds(clipLines(closedLines(ring), clip), w / 10).filter((l) => lineLengthUm(l) >= minLength);
     // the next ring: one line further from the free edges, the anchoring side kept where it is
     const next = intersection(offset(anchoring.length ? union(ring, anchoring) : ring, -w), reach);
     if (next.length === 0) {
@@ -140,7 +140,7 @@ function closedLines(areas: readonly ExPolygon[]): Polyline[] {
   return out;
 }
 
-function lineLength(l: readonly Pt[]): number {
+function lineLengthUm(l: readonly Pt[]): number {
   let len = 0;
   for (let i = 1; i < l.length; i++) len += hypot(l[i].x - l[i - 1].x, l[i].y - l[i - 1].y);
   return len;

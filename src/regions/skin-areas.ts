@@ -6,6 +6,7 @@
  */
 import { difference, intersection, opening, union } from '../geometry/clip.js';
 import type { ExPolygon } from '../geometry/types.js';
+import { LAYER_SHARE_EPS } from '../geometry/tolerances.js';
 
 export interface SkinAreas {
   top: ExPolygon[];
@@ -121,7 +122,7 @@ export function skinLayerCounts(heightsUm: ArrayLike<number>, thicknessMm: numbe
   const n = heightsUm.length;
   const out = new Int32Array(n);
   if (thicknessMm <= 0) return out;
-  // as ceil(t / h − 1e-6): a stack within a millionth of a layer of the thickness reaches it
+  // as ceil(t / h − LAYER_SHARE_EPS): a stack within that share of a layer of the thickness reaches it
   const need = thicknessMm * 1000;
   for (let i = 0; i < n; i++) {
     let k = 0,
@@ -130,7 +131,7 @@ export function skinLayerCounts(heightsUm: ArrayLike<number>, thicknessMm: numbe
     for (let j = i + dir; j >= 0 && j < n && !reached; j += dir) {
       k++;
       sum += heightsUm[j];
-      reached = sum >= need - 1e-6 * heightsUm[j];
+      reached = sum >= need - LAYER_SHARE_EPS * heightsUm[j];
     }
     out[i] = reached ? k : k + 1;
   }

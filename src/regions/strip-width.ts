@@ -16,7 +16,7 @@ export function perimeter(a: ExPolygon): number {
 }
 
 /** Width W of the W × L rectangle with the island's area and perimeter (L ≥ W), µm. */
-export function stripWidth(a: ExPolygon): number {
+export function stripWidthUm(a: ExPolygon): number {
   const A = area([a]);
   const halfP = perimeter(a) / 2;
   if (!(A > 0) || !(halfP > 0)) return 0;

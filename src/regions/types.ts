@@ -41,6 +41,8 @@ export interface RegionFill {
   topSkin: ExPolygon[];
   /** Bottom skin inside the walls: exposed within the bottom skin thickness below. */
   bottomSkin: ExPolygon[];
+  /** All skin inside the walls, top and bottom as one area (the one of them alone, when the other is empty). */
+  skin: ExPolygon[];
   /** Every exposed area inside the walls, slivers included: what skin gap fill must still reach. */
   exposed: ExPolygon[];
   /** The part of the bottom skin over nothing on the layer below (before support is known). */

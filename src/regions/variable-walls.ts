@@ -21,11 +21,11 @@
  * there instead): the medial axis prunes such branches.
  */
 import { area, boundsOf, difference, flatten, offset, pointInArea } from '../geometry/clip.js';
-import { medialAxis, type MedialChain } from '../geometry/medial-axis.js';
+import { medialAxis, medialScratch, type MedialChain, type MedialScratch } from '../geometry/medial-axis.js';
 import { PointGrid } from '../geometry/point-grid.js';
 import { hypot, segmentDistance2, UM_PER_MM, type ExPolygon, type Polygon, type Pt } from '../geometry/types.js';
 import type { Config } from '../settings/resolve.js';
-import { stripWidth } from './strip-width.js';
+import { stripWidthUm } from './strip-width.js';
 import type { WallSet } from './types.js';
 import { rings, type IslandWalls } from './walls.js';
 
@@ -46,7 +46,7 @@ const MIDDLE_LINE_FRACTION = 0.75;
 /** Loop edges longer than this (µm) are split before widening, so a widening follows the strip beside it. */
 const WIDEN_STEP_UM = 250;
 
-/** The resolved limits, µm. */
+/** The resolved limits, µm, and the working memory of one call (one layer's walls). */
 interface Limits {
   /** Line width. */
   w: number;
@@ -60,6 +60,8 @@ interface Limits {
   pruneAngleDeg: number;
   /** Walls on each side that share a strip's width. */
   distribution: number;
+  /** The medial axis's working memory, for every leftover piece of the call's islands. */
+  axis: MedialScratch;
 }
 
 function limitsOf(cfg: Config, w: number): Limits {
@@ -75,6 +77,7 @@ function limitsOf(cfg: Config, w: number): Limits {
     minLength: (cfg.wallTransitionLength / 100) * nozzle,
     pruneAngleDeg: cfg.wallTransitionAngle,
     distribution: cfg.wallDistributionCount,
+    axis: medialScratch(),
   };
 }
 
@@ -161,8 +164,8 @@ function leftover(
   if (loops.length) real = absorbThin(real, L, out);
   for (const piece of real) {
     // samples about a third of the piece's typical thickness apart: most pieces need no second pass
-    const sampleUm = Math.max(AXIS_MIN_SAMPLE_UM, Math.min(AXIS_SAMPLE_UM, stripWidth(piece) / 3));
-    for (const chain of medialAxis([piece], { pruneAngleDeg: L.pruneAngleDeg, sampleUm })) {
+    const sampleUm = Math.max(AXIS_MIN_SAMPLE_UM, Math.min(AXIS_SAMPLE_UM, stripWidthUm(piece) / 3));
+    for (const chain of medialAxis([piece], { pruneAngleDeg: L.pruneAngleDeg, sampleUm, scratch: L.axis })) {
       if (chain.points.length === 1) speck(piece, chain, loops, L, out);
       else classify(chain, loops, band, L, out);
     }
@@ -195,7 +198,7 @@ function absorbThin(pieces: ExPolygon[], L: Limits, out: LeftoverResult): ExPoly
       rest.push(pieces[i]);
       continue;
     }
-    const r = stripWidth(pieces[i]) / 2;
+    const r = stripWidthUm(pieces[i]) / 2;
     for (const ring of [pieces[i].outer, ...pieces[i].holes]) {
       for (const p of subdivide(ring, WIDEN_STEP_UM)) out.absorbed.push({ x: p.x, y: p.y, r });
     }
@@ -216,7 +219,7 @@ function speck(piece: ExPolygon, chain: MedialChain, loops: readonly Polygon[], 
     return;
   }
   if (g >= L.minFeature) {
-    const bead = beadWidth(g / 2, L);
+    const bead = beadWidthUm(g / 2, L);
     const ring = offset([piece], -Math.min(bead / 2, r / 2));
     if (ring.length && ring[0].outer.length >= 3) {
       out.beads.push({ points: ring[0].outer, widths: ring[0].outer.map(() => bead), closed: true });
@@ -294,7 +297,7 @@ function classify(
     out.beads.push(
       simplifyBead(
         points.slice(),
-        radii.map((r) => beadWidth(2 * r, L)),
+        radii.map((r) => beadWidthUm(2 * r, L)),
         true,
       ),
     );
@@ -318,7 +321,7 @@ function classify(
         out.beads.push(
           simplifyBead(
             pts,
-            run.map((k) => beadWidth(2 * radii[k], L)),
+            run.map((k) => beadWidthUm(2 * radii[k], L)),
             false,
           ),
         );
@@ -431,7 +434,7 @@ function touchesEnd(run: readonly number[], n: number, closed: boolean): boolean
   return !closed && (run[0] === 0 || run[run.length - 1] === n - 1);
 }
 
-function beadWidth(g: number, L: Limits): number {
+function beadWidthUm(g: number, L: Limits): number {
   return g < L.minBead ? L.minBead : g > L.maxBead ? L.maxBead : g;
 }
 
@@ -604,7 +607,7 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
   if (inside.length && levels.length) {
     const thin: ExPolygon[] = [];
     const kept: ExPolygon[] = [];
-    for (const piece of inside) (stripWidth(piece) < w ? thin : kept).push(piece);
+    for (const piece of inside) (stripWidthUm(piece) < w ? thin : kept).push(piece);
     if (thin.length) {
       levels.push({ loops: [], beads: [], absorbed: [], lostUm2: 0 });
       takeLeftover(levels, levels.length - 1, thin, [], L);
@@ -652,5 +655,5 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
 /** Variable-width walls of each island (see the file's comment). */
 export function variableWalls(islands: readonly ExPolygon[], cfg: Config, lineWidthUm: number): IslandWalls[] {
   const L = limitsOf(cfg, lineWidthUm);
-  return islands.map((island) => islandWalls(island, cfg.walls, L));
+  return islands.map((island) => islandWalls(island, cfg.wallCount, L));
 }

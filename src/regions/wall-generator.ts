@@ -10,7 +10,7 @@ import { classicWalls, type IslandWalls } from './walls.js';
 export type { IslandWalls } from './walls.js';
 
 export function computeWalls(islands: readonly ExPolygon[], cfg: Config, lineWidthUm: number): IslandWalls[] {
-  return cfg.wallGenerator === 'classic' || cfg.walls === 0
-    ? classicWalls(islands, cfg.walls, lineWidthUm)
+  return cfg.wallGenerator === 'classic' || cfg.wallCount === 0
+    ? classicWalls(islands, cfg.wallCount, lineWidthUm)
     : variableWalls(islands, cfg, lineWidthUm);
 }

@@ -7,7 +7,7 @@
 import { offset, area, difference } from '../geometry/clip.js';
 import type { ExPolygon, Polygon } from '../geometry/types.js';
 import type { WallSet } from './types.js';
-import { gapLoops, gapLoopWidths, type GapLoop } from './gap-loops.js';
+import { gapLoops, gapLoopWidthsMm, type GapLoop } from './gap-loops.js';
 
 export type { GapLoop } from './gap-loops.js';
 
@@ -22,14 +22,17 @@ export interface IslandWalls {
   lostMm2: number;
 }
 
-/** Smallest loop worth printing, µm²: anything smaller is a speck the nozzle cannot draw. */
-const MIN_LOOP_AREA_UM2 = 0.05 * 1000 * 0.05 * 1000;
+/**
+ * Smallest area a wall's centreline may enclose (holes taken off), µm²: a 50 µm square. A smaller one is a
+ * speck the nozzle cannot draw. (Gap loops have their own, smaller: MIN_GAP_LOOP_AREA_UM2 in gap-loops.ts.)
+ */
+const MIN_WALL_LOOP_AREA_UM2 = 0.05 * 1000 * 0.05 * 1000;
 
 /** The rings of the areas big enough to print as loops (wall centrelines). */
 export function rings(areas: readonly ExPolygon[]): Polygon[] {
   const out: Polygon[] = [];
   for (const a of areas) {
-    if (Math.abs(area([a])) < MIN_LOOP_AREA_UM2) continue;
+    if (Math.abs(area([a])) < MIN_WALL_LOOP_AREA_UM2) continue;
     out.push(a.outer);
     for (const h of a.holes) out.push(h);
   }
@@ -83,7 +86,7 @@ export function classicWalls(islands: readonly ExPolygon[], wallCount: number, l
         wall: 1,
         closed: true,
         paths: gapFill.map((g) => g.loop),
-        widths: gapLoopWidths(gapFill),
+        widths: gapLoopWidthsMm(gapFill),
       });
     }
     out.push({ outline: island, walls, inner: inside, lostMm2: 0 });

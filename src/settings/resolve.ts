@@ -5,17 +5,50 @@
 import { StrataError } from '../errors.js';
 import { SCHEMA, SETTING_KEYS, type SettingDef, type SettingKey, type Settings, type SliceOptions } from './schema.js';
 import { findFilament, findPrinter, listPresets, printerWithoutPreset } from './presets/index.js';
+import { LAYER_SHARE_EPS, WHOLE_QUOTIENT_EPS } from '../geometry/tolerances.js';
+
+/**
+ * The settings whose empty (null) value is derived from others: the config holds each only resolved, under
+ * the name Derived gives it (the same name where it says the unit already: wallCount, the first-layer
+ * temperatures, supportFloorLayers, supportWallCount), never beside its empty form.
+ */
+const RESOLVED = [
+  'lineWidth',
+  'firstLayerLineWidth',
+  'wallCount',
+  'topSkinThickness',
+  'bottomSkinThickness',
+  'firstLayerNozzleTemperature',
+  'firstLayerBedTemperature',
+  'supportLineWidth',
+  'supportFloorLayers',
+  'supportWallCount',
+  'supportTreeTipSpacing',
+  'raftBaseLineWidth',
+  'raftBaseLineSpacing',
+  'raftInterfaceLineSpacing',
+  'minLayerHeight',
+  'maxLayerHeight',
+] as const satisfies readonly SettingKey[];
+type ResolvedKey = (typeof RESOLVED)[number];
 
 /** Values computed once from the settings; algorithms read these rather than re-deriving them. */
 export interface Derived {
-  /** Resolved line width, mm. */
+  /** Line width (lineWidth, or the nozzle's diameter), mm. */
   lineWidthMm: number;
+  /** The first layer's line width (firstLayerLineWidth, or lineWidthMm), mm. */
   firstLayerLineWidthMm: number;
-  walls: number;
+  /** Walls round each island: wallCount, or as many line widths as make shellWallThickness. */
+  wallCount: number;
+  /** Top and bottom skin thickness (their own, or shellSkinThickness), mm. */
+  topSkinThicknessMm: number;
+  bottomSkinThicknessMm: number;
+  /** Layers of the layer height that make the top and bottom skin thickness. */
   topLayers: number;
   bottomLayers: number;
-  firstLayerNozzleTemp: number;
-  firstLayerBedTemp: number;
+  /** The first layer's temperatures (their own, or the other layers'), °C. */
+  firstLayerNozzleTemperature: number;
+  firstLayerBedTemperature: number;
   printerId: string;
   filamentId: string;
   /** Support line width, mm. */
@@ -23,10 +56,12 @@ export interface Derived {
   /** Layers left empty between the support's top and the part above / between the part and support on it. */
   supportTopGapLayers: number;
   supportBottomGapLayers: number;
-  supportFloorLayerCount: number;
-  supportWalls: number;
+  /** Dense layers where support stands on the part (supportFloorLayers, or supportInterfaceLayers). */
+  supportFloorLayers: number;
+  /** Walls round support (supportWallCount, or 1 round a tree's branches and 0 round normal support). */
+  supportWallCount: number;
   /** Walls round straight support columns (normal support's, and a tree's under its pockets). */
-  supportColumnWalls: number;
+  supportColumnWallCount: number;
   /** Distance between tree-support tips, mm. */
   supportTreeTipSpacingMm: number;
   /** Raft base line width and spacing, interface line spacing, mm. */
@@ -36,9 +71,16 @@ export interface Derived {
   /** Adaptive layer height's limits (minLayerHeight, maxLayerHeight resolved), mm. */
   minLayerHeightMm: number;
   maxLayerHeightMm: number;
+  /**
+   * The settings as they were given (schema defaults, presets and options merged, empty ones still empty):
+   * what is written back out as settings (G-code templates and the writer, project files, the API's getters).
+   * The slicer's stages read the resolved fields, never these.
+   */
+  settings: Readonly<Settings>;
 }
 
-export type Config = Readonly<Settings & Derived>;
+/** The resolved settings of a print, an object or a region: the settings less their empty forms, and Derived. */
+export type Config = Readonly<Omit<Settings, ResolvedKey> & Derived>;
 
 /** Tree-support tips this far apart hold a roof; with no roof they hold the part itself, closer together (CuraEngine 4.13: 1 mm; PrusaSlicer's 15 % tip density: about 2 mm). */
 export const TREE_TIP_SPACING_UNDER_ROOF_MM = 3;
@@ -155,7 +197,7 @@ export function parseSettingText(key: SettingKey, text: string): unknown {
 
 /** Throw for a key that is not a setting, suggesting the closest one. */
 export function checkKey(key: string, source = 'option'): SettingKey {
-  if (Object.prototype.hasOwnProperty.call(SCHEMA, key)) return key as SettingKey;
+  if (Object.hasOwn(SCHEMA, key)) return key as SettingKey;
   const s = suggest(key, SETTING_KEYS);
   throw new StrataError(
     'UNKNOWN_SETTING',
@@ -262,24 +304,28 @@ export function resolveConfig(options: SliceOptions = {}): Config {
   const minLayerHeightMm = s.minLayerHeight ?? Math.min(s.layerHeight, round3(s.nozzleDiameter * 0.175));
   const maxLayerHeightMm = s.maxLayerHeight ?? Math.max(s.layerHeight, round3(s.nozzleDiameter * 0.75));
   if (s.adaptiveLayerHeight) checkAdaptiveLimits(minLayerHeightMm, maxLayerHeightMm, s);
-  const walls = s.wallCount ?? Math.max(0, Math.round(s.shellWallThickness / lineWidthMm + 1e-9));
-  const layersFor = (t: number) => (t <= 0 ? 0 : Math.max(1, Math.ceil(t / s.layerHeight - 1e-6)));
+  const wallCount = s.wallCount ?? Math.max(0, Math.round(s.shellWallThickness / lineWidthMm + WHOLE_QUOTIENT_EPS));
+  const layersFor = (t: number) => (t <= 0 ? 0 : Math.max(1, Math.ceil(t / s.layerHeight - LAYER_SHARE_EPS)));
+  const topSkinThicknessMm = s.topSkinThickness ?? s.shellSkinThickness;
+  const bottomSkinThicknessMm = s.bottomSkinThickness ?? s.shellSkinThickness;
   const derived: Derived = {
     lineWidthMm,
     firstLayerLineWidthMm,
-    walls,
-    topLayers: layersFor(s.topSkinThickness ?? s.shellSkinThickness),
-    bottomLayers: layersFor(s.bottomSkinThickness ?? s.shellSkinThickness),
-    firstLayerNozzleTemp: s.firstLayerNozzleTemperature ?? s.nozzleTemperature,
-    firstLayerBedTemp: s.firstLayerBedTemperature ?? s.bedTemperature,
+    wallCount,
+    topSkinThicknessMm,
+    bottomSkinThicknessMm,
+    topLayers: layersFor(topSkinThicknessMm),
+    bottomLayers: layersFor(bottomSkinThicknessMm),
+    firstLayerNozzleTemperature: s.firstLayerNozzleTemperature ?? s.nozzleTemperature,
+    firstLayerBedTemperature: s.firstLayerBedTemperature ?? s.bedTemperature,
     printerId: printer.id,
     filamentId: filament.id,
     supportLineWidthMm: s.supportLineWidth ?? lineWidthMm,
     supportTopGapLayers: gapLayers(s.supportZGap ?? s.layerHeight, s.layerHeight),
     supportBottomGapLayers: gapLayers(s.supportBottomZGap ?? s.supportZGap ?? s.layerHeight, s.layerHeight),
-    supportFloorLayerCount: s.supportFloorLayers ?? s.supportInterfaceLayers,
-    supportWalls: s.supportWallCount ?? (s.supportType === 'tree' ? 1 : 0),
-    supportColumnWalls: s.supportWallCount ?? 0,
+    supportFloorLayers: s.supportFloorLayers ?? s.supportInterfaceLayers,
+    supportWallCount: s.supportWallCount ?? (s.supportType === 'tree' ? 1 : 0),
+    supportColumnWallCount: s.supportWallCount ?? 0,
     supportTreeTipSpacingMm:
       s.supportTreeTipSpacing ??
       (s.supportInterfaceLayers > 0 ? TREE_TIP_SPACING_UNDER_ROOF_MM : TREE_TIP_SPACING_NO_ROOF_MM),
@@ -288,8 +334,11 @@ export function resolveConfig(options: SliceOptions = {}): Config {
     raftInterfaceLineSpacingMm: s.raftInterfaceLineSpacing ?? 2.5 * lineWidthMm,
     minLayerHeightMm,
     maxLayerHeightMm,
+    settings: Object.freeze({ ...s }),
   };
-  return Object.freeze({ ...s, ...derived });
+  const resolved: Record<string, unknown> = { ...s };
+  for (const key of RESOLVED) delete resolved[key];
+  return Object.freeze({ ...resolved, ...derived }) as Config;
 }
 
 /** Adaptive layer height's limits must hold layerHeight between them and suit the nozzle: one error naming what is wrong. */
@@ -308,7 +357,7 @@ function checkAdaptiveLimits(min: number, max: number, s: Settings): void {
 
 /** A gap in mm as whole layers (rounded to the nearest). */
 function gapLayers(gapMm: number, layerHeight: number): number {
-  return Math.max(0, Math.round(gapMm / layerHeight + 1e-9));
+  return Math.max(0, Math.round(gapMm / layerHeight + WHOLE_QUOTIENT_EPS));
 }
 
 function round3(x: number): number {

@@ -19,7 +19,7 @@ export type Scope = 'print' | 'layer' | 'object' | 'region';
 const EXCEPTIONS: Partial<Record<SettingKey, Scope>> = {
   // one Z plan for the plate: a layer range may set the height of the plate's layers in its range
   layerHeight: 'layer',
-  // the layer's line width sets its plan (LayerPaths.lineWidth, the skirt, the first layer)
+  // the layer's line width sets its plan (LayerPaths.lineWidthMm, the skirt, the first layer)
   lineWidth: 'print',
   firstLayerLineWidth: 'print',
   // read by the planner for every loop of the layer

@@ -6,6 +6,7 @@
  */
 import type { Config } from './resolve.js';
 import type { SettingKey } from './schema.js';
+import { WHOLE_QUOTIENT_EPS } from '../geometry/tolerances.js';
 
 interface SetAside {
   key: SettingKey;
@@ -19,7 +20,7 @@ const SET_ASIDE: readonly SetAside[] = [
   { key: 'wallCount', ignored: (v) => typeof v === 'number' && v !== 1, instead: 'one wall' },
   {
     key: 'shellWallThickness',
-    ignored: (v, cfg) => typeof v === 'number' && Math.round(v / cfg.lineWidthMm + 1e-9) !== 1,
+    ignored: (v, cfg) => typeof v === 'number' && Math.round(v / cfg.lineWidthMm + WHOLE_QUOTIENT_EPS) !== 1,
     instead: 'one wall',
   },
   { key: 'infillDensity', ignored: (v) => typeof v === 'number' && v > 0, instead: 'no infill' },

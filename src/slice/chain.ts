@@ -13,6 +13,7 @@
  * flipped triangles do not reverse a loop.
  */
 import type { LayerSegments } from './intersect.js';
+import { VOTE_TIE_UM } from '../geometry/tolerances.js';
 
 /** Loops of one layer as slot sequences: closed rings (last slot not repeated) and open chains. */
 export interface Chains {
@@ -84,7 +85,7 @@ export function chainSegments(seg: LayerSegments): Chains {
     visited[s0] = 1;
     path.length = 0;
     path.push(segStart[s0], segEnd[s0]);
-    let vote = segLength(s0) + 1e-9;
+    let vote = segLength(s0) + VOTE_TIE_UM;
     let isClosed = false;
     // Forward from the end of s0.
     let ep = 2 * s0 + 1;

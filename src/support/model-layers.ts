@@ -11,6 +11,7 @@ import type { LayerOutlines, SupportAreas } from '../regions/types.js';
 import { sectionOf } from '../regions/types.js';
 import { evenLayers } from '../slice/layers.js';
 import { AreaIndex } from '../geometry/area-index.js';
+import { LENGTH_EPS_UM } from '../geometry/tolerances.js';
 
 /** Under an overhang, support may come this close to the part, in support line widths ("Z overrides XY"). */
 export const OVERHANG_XY_WIDTHS = 0.5;
@@ -230,8 +231,8 @@ export class ModelLayers {
     const roof = roofAbove.length ? intersection(s, roofAbove) : [];
     const bottom = this.bottomGap(j);
     const floorBelow =
-      cfg.supportFloorLayerCount > 0 && cfg.supportPlacement === 'everywhere'
-        ? this.sectionsBetween(j, -(bottom + cfg.supportFloorLayerCount), -(bottom + 1))
+      cfg.supportFloorLayers > 0 && cfg.supportPlacement === 'everywhere'
+        ? this.sectionsBetween(j, -(bottom + cfg.supportFloorLayers), -(bottom + 1))
         : [];
     let floor = floorBelow.length ? intersection(s, floorBelow) : [];
     if (roof.length && floor.length) floor = difference(floor, roof);
@@ -246,7 +247,7 @@ export class ModelLayers {
  * middle lies within it (with even layers, gap / height rounded, halves up, as the config's counts).
  */
 function gapLayers(heightsUm: Int32Array, j: number, gapMm: number, dir: 1 | -1): number {
-  const gap = gapMm * 1000 + 1e-6;
+  const gap = gapMm * 1000 + LENGTH_EPS_UM;
   let k = 0,
     below = 0;
   for (let i = j + dir; i >= 0 && i < heightsUm.length; i += dir) {

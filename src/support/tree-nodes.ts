@@ -71,7 +71,7 @@ export interface TreeRules {
 const dist = (ax: number, ay: number, bx: number, by: number) => hypot(bx - ax, by - ay);
 
 /** The radius a node grows to on its next layer, whole µm (as its centre is). */
-function wantRadius(n: TreeNode, rules: TreeRules, j: number): number {
+function wantRadiusUm(n: TreeNode, rules: TreeRules, j: number): number {
   const cap = rules.heightCapR(n.topUm);
   if (n.r >= cap) return n.r;
   if (n.r < rules.branchR) return Math.round(Math.min(rules.branchR, cap, n.r + rules.tipGrowth));
@@ -330,7 +330,7 @@ function grown(
   vol: TreeVolumes,
   rules: TreeRules,
 ): TreeNode {
-  const want = wantRadius(n, rules, j);
+  const want = wantRadiusUm(n, rules, j);
   let c = n.c;
   let r = want;
   const wc = classOf(rules.radii, want);
@@ -370,7 +370,7 @@ function merge(
 ): TreeNode | null {
   const big = a.r >= b.r ? a : b,
     small = big === a ? b : a;
-  const want = Math.max(wantRadius({ ...big, merged: true, topUm: Math.max(a.topUm, b.topUm) }, rules, j), a.r, b.r);
+  const want = Math.max(wantRadiusUm({ ...big, merged: true, topUm: Math.max(a.topUm, b.topUm) }, rules, j), a.r, b.r);
   let t: number;
   if (d <= 2 * m) {
     const wa = a.r * a.r,

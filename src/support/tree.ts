@@ -253,10 +253,9 @@ function* splitNear(
   for (let k = j + 1; k <= j + top + cfg.supportInterfaceLayers; k++) if (model.section(k).length) nearby.push(k);
   // floors only where support may stand on the part (model.split makes none in 'buildPlate' placement)
   if (cfg.supportPlacement === 'everywhere') {
-    for (let k = j - bottom - cfg.supportFloorLayerCount; k < j - bottom; k++)
-      if (model.section(k).length) nearby.push(k);
+    for (let k = j - bottom - cfg.supportFloorLayers; k < j - bottom; k++) if (model.section(k).length) nearby.push(k);
   }
-  model.releaseBelow(j - bottom - cfg.supportFloorLayerCount);
+  model.releaseBelow(j - bottom - cfg.supportFloorLayers);
   if (nearby.length === 0 || s.length === 0) return { body: s, roof: [], floor: [] };
   const { near, far } = nearOrFar(model, nearby, s, circles);
   // islands apart split apart: a few at a time

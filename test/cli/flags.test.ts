@@ -102,7 +102,7 @@ function setting(key: string, value: unknown): string[] {
   return [`--${kebab(key)}`, flagValue(value)];
 }
 
-const DEFAULTS = resolveConfig({});
+const DEFAULTS = resolveConfig({}).settings;
 const round = (v: number, integer: boolean) => (integer ? Math.round(v) : Math.round(v * 1000) / 1000);
 
 /** Values to try for a setting, other than its current one, in the order they are tried. */

@@ -34,8 +34,10 @@ test('stanford bunny: arcs cut the G-code lines by ≥ 30 % with the same footpr
   });
   const lines = analyse(chunks.join(''));
   const arcs = analyse(
-    gcodeToString(arcPlan, { ...cfg, arcFitting: true }, estimatePlan(arcPlan, cfg), {
+    gcodeToString(arcPlan, { ...cfg.settings, arcFitting: true }, estimatePlan(arcPlan, cfg), {
       generator: `Strata ${VERSION}`,
+      printerId: cfg.printerId,
+      filamentId: cfg.filamentId,
     }),
   );
   const count = (g: string) => g.split('\n').length;

@@ -68,7 +68,7 @@ export function analysisProfile(cfg: Config) {
     firstLayerHeight: cfg.firstLayerHeight,
     lineWidth: cfg.lineWidthMm,
     filamentDiameter: cfg.filamentDiameter,
-    wallThickness: cfg.walls * cfg.lineWidthMm,
+    wallThickness: cfg.wallCount * cfg.lineWidthMm,
     topThickness: cfg.topLayers * cfg.layerHeight,
     bottomThickness: cfg.bottomLayers * cfg.layerHeight,
   };

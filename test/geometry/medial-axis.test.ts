@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { medialAxis, type MedialChain } from '#strata/geometry/medial-axis.js';
+import { medialAxis, medialScratch, type MedialChain } from '#strata/geometry/medial-axis.js';
 import { pointInRing } from '#strata/geometry/contain.js';
 import { rect } from './test-shapes.js';
 import type { ExPolygon, Polygon, Pt } from '#strata/geometry/types.js';
@@ -508,6 +508,14 @@ test('deterministic: the same input twice gives the same output; ring orientatio
     holes: a.holes.map((h) => h.slice().reverse()),
   }));
   assert.deepEqual(medialAxis(flipped), medialAxis(areas));
+});
+
+test('working memory handed from call to call (one layer’s) gives what fresh memory gives, whatever came before', () => {
+  // large areas first, so the smaller ones after them run in arrays longer than they need, holding the larger ones' data
+  const areas = [circleRing, squareRing, star(5, 300, 5000), ell, tee];
+  const scratch = medialScratch();
+  for (const a of [...areas, ...areas.slice().reverse()])
+    assert.deepEqual(medialAxis([a], { scratch }), medialAxis([a]));
 });
 
 test('nothing for no areas or areas of no extent', () => {

@@ -1,13 +1,13 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { extrudedArea } from '#strata/infill/measure.js';
+import { extrudedAreaUm2 } from '#strata/infill/measure.js';
 import { familyDensity, familySpacing } from '#strata/infill/density.js';
 import { hexSide } from '#strata/infill/patterns/hexagons.js';
 
 const W = 400;
 
 test('one line: length × width plus two half-disc caps', () => {
-  const a = extrudedArea(
+  const a = extrudedAreaUm2(
     {
       lines: [
         [
@@ -24,7 +24,7 @@ test('one line: length × width plus two half-disc caps', () => {
 });
 
 test('a crossing counts once', () => {
-  const a = extrudedArea(
+  const a = extrudedAreaUm2(
     {
       lines: [
         [
@@ -56,7 +56,7 @@ test('inside a region only the inner part counts: a line on the boundary is half
       holes: [],
     },
   ];
-  const a = extrudedArea(
+  const a = extrudedAreaUm2(
     {
       lines: [
         [

@@ -30,7 +30,7 @@ function layer(groups: TestGroup[]): LayerPaths {
   const styled = groups.map(
     (g): PathGroup => ({ ...g, entries: g.entries.map((e) => ({ ...e, style: entryStyle(cfg, e.role, e.wall) })) }),
   );
-  return { index: 5, z: 1.2, height: 0.2, sliceZ: 1.1, lineWidth: 0.4, groups: styled };
+  return { index: 5, z: 1.2, height: 0.2, sliceZ: 1.1, lineWidthMm: 0.4, groups: styled };
 }
 
 const island: TestGroup = {
@@ -216,7 +216,7 @@ test('a wall graded by how much of it hangs over nothing: each level at its own 
       z: 1.2,
       height: 0.2,
       sliceZ: 1.1,
-      lineWidth: 0.4,
+      lineWidthMm: 0.4,
       groups: [{ kind: 'island', object: 0, entries: [entry] }],
     },
     graded,
@@ -240,7 +240,7 @@ test('a wall graded by how much of it hangs over nothing: each level at its own 
       z: 0.2,
       height: 0.2,
       sliceZ: 0.1,
-      lineWidth: 0.4,
+      lineWidthMm: 0.4,
       groups: [{ kind: 'island', object: 0, entries: [entry] }],
     },
     graded,

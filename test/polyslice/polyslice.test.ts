@@ -233,7 +233,7 @@ test("getters and setters: chainable, validated with the option's name, kept opt
   assert.throws(() => new Polyslice({ bogus: 1 } as never), /unknown Polyslice option "bogus"/);
   // Strata's own settings are options too, in Strata's units
   const strata = new Polyslice({ lengthUnit: 'inches', wallCount: 3, upAxis: 'y', brimWidth: 5, adhesionType: 'brim' });
-  assert.equal(strata.config.walls, 3);
+  assert.equal(strata.config.wallCount, 3);
   assert.equal(strata.config.upAxis, 'y');
   assert.equal(strata.config.brimWidth, 5);
   assert.throws(() => new Polyslice({ layerHeight: 'thin' as never }), /layerHeight must be a number/);

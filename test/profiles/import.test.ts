@@ -167,7 +167,7 @@ test('PrusaSlicer .ini: layer height, widths, walls, skin, infill, speeds, tempe
   assert.match(p.warnings[0]!, /^printer\.ini: \d+ settings with no Strata equivalent, not used: .*\bbridge_speed\b/);
   // and it resolves into a working configuration
   const cfg = resolveConfig({ printer: 'prusa-mk4', ...s });
-  assert.equal(cfg.walls, 3);
+  assert.equal(cfg.wallCount, 3);
   assert.equal(cfg.topLayers, 5);
 });
 

@@ -1,6 +1,6 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { stripWidth } from '#strata/regions/strip-width.js';
+import { stripWidthUm } from '#strata/regions/strip-width.js';
 
 const rect = (w: number, l: number) => ({
   outer: [
@@ -18,7 +18,7 @@ test('strip width is exact for rectangles, where the mean width 2A/P falls short
     [300, 1_000],
     [1_000, 1_000],
   ]) {
-    assert.ok(Math.abs(stripWidth(rect(w, l)) - w) < 1e-6, `${w} × ${l}`);
+    assert.ok(Math.abs(stripWidthUm(rect(w, l)) - w) < 1e-6, `${w} × ${l}`);
     assert.ok((2 * w * l) / (2 * (w + l)) < w);
   }
   const wedge = {
@@ -29,6 +29,6 @@ test('strip width is exact for rectangles, where the mean width 2A/P falls short
     ],
     holes: [],
   };
-  const d = stripWidth(wedge);
+  const d = stripWidthUm(wedge);
   assert.ok(d > 150 && d < 250, `wedge ${d}`);
 });

@@ -305,8 +305,8 @@ test('the measures see what they should: a bead off the part, a doubled bead, a 
     lostMm2: 0,
     walls: [{ role: 'wall', wall: 0, closed: false, paths, widths: paths.map((p) => Float64Array.from(p, () => w)) }],
   });
-  assert.equal(CFG2.walls, 2, 'default settings: two walls');
-  assert.equal(CFG3.walls, 3);
+  assert.equal(CFG2.wallCount, 2, 'default settings: two walls');
+  assert.equal(CFG3.wallCount, 3);
   assert.equal(LINE_MM, 0.4);
   const good = measureWalls(shape, walls([line(0)], 0.4));
   assert.ok(good.outside < 0.001 && good.overlap < 0.001 && Math.abs(good.fill - 1) < 0.03 && widthsInRange(good));
@@ -332,7 +332,7 @@ const WALLS: [string, Config][] = [
 
 const stripCache = new Map<string, Measure>();
 function stripMeasure(widthMm: number, deg: number, cfg: Config): Measure {
-  const key = `${widthMm}/${deg}/${cfg.walls}`;
+  const key = `${widthMm}/${deg}/${cfg.wallCount}`;
   let m = stripCache.get(key);
   if (!m) {
     m = measure(strip(widthMm, deg), cfg);

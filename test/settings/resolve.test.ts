@@ -10,7 +10,7 @@ test('defaults resolve to Ender-3, PLA, 0.2 mm layers, 20 % grid, 2 walls, 4 ski
   assert.equal(c.layerHeight, 0.2);
   assert.equal(c.infillDensity, 20);
   assert.equal(c.infillPattern, 'grid');
-  assert.equal(c.walls, 2);
+  assert.equal(c.wallCount, 2);
   assert.equal(c.topLayers, 4);
   assert.equal(c.bottomLayers, 4);
   assert.equal(c.lineWidthMm, c.nozzleDiameter);
@@ -50,17 +50,32 @@ test('the caller options object is never mutated', () => {
 });
 
 test('wallCount overrides shellWallThickness; text values parse by type', () => {
-  assert.equal(resolveConfig({ wallCount: 3 }).walls, 3);
-  assert.equal(resolveConfig({ shellWallThickness: 1.2 }).walls, 3);
+  assert.equal(resolveConfig({ wallCount: 3 }).wallCount, 3);
+  assert.equal(resolveConfig({ shellWallThickness: 1.2 }).wallCount, 3);
   assert.equal(parseSettingText('infillDensity', '20%'), 20);
   assert.equal(parseSettingText('combing', 'off'), false);
   assert.equal(parseSettingText('lineWidth', 'auto'), null);
 });
 
+test('the config holds each derived setting once, resolved; the settings as given keep it empty', () => {
+  const c = resolveConfig({ nozzleDiameter: 0.6, shellWallThickness: 1.8 });
+  assert.equal(c.lineWidthMm, 0.6);
+  assert.equal(c.wallCount, 3);
+  assert.equal(c.firstLayerNozzleTemperature, c.settings.firstLayerNozzleTemperature);
+  for (const key of ['lineWidth', 'firstLayerLineWidth', 'supportLineWidth', 'minLayerHeight', 'topSkinThickness'])
+    assert.ok(!(key in c), `${key} is only in its resolved form`);
+  assert.equal(c.settings.lineWidth, null, 'an empty setting stays empty where settings are written back out');
+  assert.equal(c.settings.wallCount, null);
+  assert.equal(resolveConfig({ wallCount: 4 }).settings.wallCount, 4);
+});
+
 test('setting the nozzle or bed temperature moves the first-layer one with it, keeping the preset offset', () => {
   const base = resolveConfig();
   const c = resolveConfig({ nozzleTemperature: 230, bedTemperature: 70 });
-  assert.equal(c.firstLayerNozzleTemp - 230, base.firstLayerNozzleTemp - base.nozzleTemperature);
-  assert.equal(c.firstLayerBedTemp - 70, base.firstLayerBedTemp - base.bedTemperature);
-  assert.equal(resolveConfig({ nozzleTemperature: 230, firstLayerNozzleTemperature: 240 }).firstLayerNozzleTemp, 240);
+  assert.equal(c.firstLayerNozzleTemperature - 230, base.firstLayerNozzleTemperature - base.nozzleTemperature);
+  assert.equal(c.firstLayerBedTemperature - 70, base.firstLayerBedTemperature - base.bedTemperature);
+  assert.equal(
+    resolveConfig({ nozzleTemperature: 230, firstLayerNozzleTemperature: 240 }).firstLayerNozzleTemperature,
+    240,
+  );
 });

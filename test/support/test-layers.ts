@@ -12,6 +12,7 @@ const island = (outline: ExPolygon): IslandRegions => ({
   lostMm2: 0,
   topSkin: [],
   bottomSkin: [],
+  skin: [],
   exposed: [],
   bridge: [],
   bridgeAngle: null,

@@ -9,7 +9,7 @@ import type { InfillLayerInput, InfillModelInput, PatternId } from '#strata/infi
 import { PATTERNS } from '#strata/infill/registry.js';
 import { generateInfill } from '#strata/infill/generate.js';
 import { hull, testParams, SHAPE_CENTRE } from '../../test/infill/test-shapes.js';
-import { pathLength } from '#strata/infill/measure.js';
+import { pathLengthUm } from '#strata/infill/measure.js';
 import { area } from '#strata/geometry/clip.js';
 
 function model(layers: number): InfillModelInput {
@@ -59,7 +59,7 @@ function main(): void {
       let len = 0;
       for (let i = 0; i < n; i++) {
         const r = generateInfill(id, m.layers[i], params, prepared ? prepared[i] : undefined);
-        len += pathLength(r);
+        len += pathLengthUm(r);
       }
       const t2 = performance.now();
       if ((t2 - t0) / n < best.ms)

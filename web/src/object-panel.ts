@@ -423,16 +423,16 @@ export class ObjectPanel {
         try {
           print = store.config();
         } catch {
-          return { values: { ...store.base(), ...(part ? it.settings : {}), ...own }, problem: null };
+          return { values: { ...store.base().settings, ...(part ? it.settings : {}), ...own }, problem: null };
         }
-        const inherited = { ...print, ...(part ? it.settings : {}) };
+        const inherited = { ...print.settings, ...(part ? it.settings : {}) };
         try {
           const layers: Array<{ settings: Overrides; use: ScopeUse; where: string }> = [
             { settings: it.settings, use: 'object', where: `object "${it.name}"` },
           ];
           if (part) layers.push({ settings: part.settings, use, where: where() });
           const config = resolveScopedConfig(store.options(), layers);
-          return { values: { ...config, ...(part ? it.settings : {}), ...own }, problem: null };
+          return { values: { ...config.settings, ...(part ? it.settings : {}), ...own }, problem: null };
         } catch (e) {
           return { values: { ...inherited, ...own }, problem: e instanceof Error ? e.message : String(e) };
         }

@@ -313,9 +313,12 @@ export function printSource(store: SettingsStore): PanelSource {
     isSet: (key) => key in store.overrides,
     values: () => {
       try {
-        return { values: { ...store.config(), ...store.overrides }, problem: null };
+        return { values: { ...store.config().settings, ...store.overrides }, problem: null };
       } catch (e) {
-        return { values: { ...store.base(), ...store.overrides }, problem: e instanceof Error ? e.message : String(e) };
+        return {
+          values: { ...store.base().settings, ...store.overrides },
+          problem: e instanceof Error ? e.message : String(e),
+        };
       }
     },
     set: (key, value) => store.set(key, value),

@@ -90,7 +90,7 @@ export class SettingsStore {
   /** Set one setting (validated; throws naming the allowed values); a value equal to the preset's is dropped. */
   set(key: SettingKey, value: unknown): void {
     const v = validateSetting(key, value, 'setting');
-    if (v === this.base()[key]) delete this.overrides[key];
+    if (v === this.base().settings[key]) delete this.overrides[key];
     else this.overrides[key] = v;
     this.changed();
   }
@@ -145,7 +145,7 @@ export class SettingsStore {
     // the presets and values must resolve together before anything is replaced
     const base = resolveConfig(next);
     resolveConfig({ ...next, ...overrides } as SliceOptions);
-    for (const k of Object.keys(overrides) as SettingKey[]) if (overrides[k] === base[k]) delete overrides[k];
+    for (const k of Object.keys(overrides) as SettingKey[]) if (overrides[k] === base.settings[k]) delete overrides[k];
     this.printer = base.printerId;
     this.filament = base.filamentId;
     this.overrides = overrides;
@@ -185,7 +185,7 @@ export class SettingsStore {
     }
     if (saved.overrides && typeof saved.overrides === 'object') {
       for (const [k, v] of Object.entries(saved.overrides)) {
-        if (!Object.prototype.hasOwnProperty.call(SCHEMA, k)) continue;
+        if (!Object.hasOwn(SCHEMA, k)) continue;
         try {
           this.overrides[k as SettingKey] = validateSetting(k as SettingKey, v, 'setting');
         } catch {

@@ -16,7 +16,7 @@ import {
   HemisphereLight,
   LineBasicMaterial,
   LineSegments,
-  Matrix4,
+  type Matrix4,
   Mesh,
   MeshStandardMaterial,
   PerspectiveCamera,

@@ -22,7 +22,7 @@ import { indexRegion, regionGeom } from '../region-index.js';
 import { type DistanceField, distanceField, refineToDepth, restoreCorners } from '../distance-field.js';
 import { contourScratch, traceContours } from '../contour.js';
 import { closestOnSegment } from '../geom-util.js';
-import { pathLength } from '../measure.js';
+import { pathLengthUm } from '../measure.js';
 import { ringArea } from '../../geometry/clip.js';
 
 /** Spacing factors tried, nearest to 1 first. */
@@ -76,9 +76,10 @@ function nearbyMax(f: DistanceField): Float64Array {
  * halved where the field gets no deeper than t + sp/4 within two cells (a ridge is near: the loop's two
  * sides are closer than sp/2 and it will be printed as one side).
  */
-function predictedLength(f: DistanceField, near: Float64Array, sp: number, phase: number): number {
+function predictedLengthUm(f: DistanceField, near: Float64Array, sp: number, phase: number): number {
   const { nx, ny, v } = f;
   const W = nx + 1;
+  const crossings = new Float64Array(8);
   let total = 0;
   for (let j = 0; j < ny; j++) {
     for (let i = 0; i < nx; i++) {
@@ -95,7 +96,7 @@ function predictedLength(f: DistanceField, near: Float64Array, sp: number, phase
         k1 = Math.floor(hi / sp + phase);
       for (let k = k0; k <= k1; k++) {
         const t = (k - phase) * sp;
-        total += cellLength(a - t, b - t, c - t, d - t) * f.h * (near[j * nx + i] - t < sp / 4 ? 0.5 : 1);
+        total += cellLength(a - t, b - t, c - t, d - t, crossings) * f.h * (near[j * nx + i] - t < sp / 4 ? 0.5 : 1);
       }
     }
   }
@@ -125,16 +126,15 @@ function cellsByDepth(f: DistanceField, count: number, sp: number, phase: number
   return out;
 }
 
-/** The zero set's crossings of a cell's edges, x, y: scratch for cellLength (no closure made per cell). */
-const CROSSINGS = new Float64Array(8);
-
-/** Length of the zero set in a unit cell with corner values a (0,0), b (1,0), c (1,1), d (0,1). */
-function cellLength(a: number, b: number, c: number, d: number): number {
+/**
+ * Length of the zero set in a unit cell with corner values a (0,0), b (1,0), c (1,1), d (0,1).
+ * @param p room for the zero set's crossings of the cell's edges, x, y (the caller's, reused from cell to cell)
+ */
+function cellLength(a: number, b: number, c: number, d: number, p: Float64Array): number {
   const sa = a >= 0,
     sb = b >= 0,
     sc = c >= 0,
     sd = d >= 0;
-  const p = CROSSINGS;
   let n = 0;
   if (sa !== sb) {
     p[2 * n] = a / (a - b);
@@ -157,7 +157,7 @@ function cellLength(a: number, b: number, c: number, d: number): number {
   return hypot(p[2] - p[0], p[3] - p[1]) + (n === 4 ? hypot(p[6] - p[2], p[7] - p[3]) : 0);
 }
 
-function ringLength(pts: readonly Pt[]): number {
+function ringLengthUm(pts: readonly Pt[]): number {
   let l = 0;
   for (let i = 0, j = pts.length - 1; i < pts.length; j = i++) l += hypot(pts[i].x - pts[j].x, pts[i].y - pts[j].y);
   return l;
@@ -332,7 +332,7 @@ export const concentric: InfillPattern = {
             if (!last || last.x !== p.x || last.y !== p.y) pts.push(p);
           }
           if (pts.length < 3) continue;
-          const len = ringLength(pts);
+          const len = ringLengthUm(pts);
           if ((2 * Math.abs(ringArea(pts))) / len < sp / 2) {
             centreLines.push(oneSide(pts));
             continue;
@@ -354,7 +354,7 @@ export const concentric: InfillPattern = {
       for (const centre of centreLines.length ? [centreLines, []] : [centreLines]) {
         const open = wideParts.concat(centre);
         const out = params.connect ? linkLevels(levels, open, sp) : { lines: open, loops: levels.flat() };
-        const printed = pathLength(out);
+        const printed = pathLengthUm(out);
         if (!best || Math.abs(printed - target) < Math.abs(best.printed - target)) best = { ...out, printed };
       }
       return best as { lines: Pt[][]; loops: Polygon[]; printed: number };
@@ -365,7 +365,7 @@ export const concentric: InfillPattern = {
     const cands: Array<{ sp: number; phase: number; err: number }> = [];
     for (const f of SPACING_FACTORS) for (const ph of PHASES) cands.push({ sp: s * f, phase: ph, err: NaN });
     const predict = (c: { sp: number; phase: number; err: number }) => {
-      if (Number.isNaN(c.err)) c.err = Math.abs(predictedLength(field, near, c.sp, c.phase) - target);
+      if (Number.isNaN(c.err)) c.err = Math.abs(predictedLengthUm(field, near, c.sp, c.phase) - target);
       return c.err;
     };
     const first =

@@ -16,6 +16,7 @@ import type { Pt } from '../../geometry/types.js';
 import { hypot, UM_PER_MM } from '../../geometry/types.js';
 import { traceContours } from '../contour.js';
 import { frameBounds } from '../geom-util.js';
+import { MIN_DENSITY } from '../../geometry/tolerances.js';
 
 /** Mean section length per area times the period (see above). */
 export const GYROID_KAPPA = 2.4587;
@@ -27,7 +28,7 @@ const NEWTON_STEPS = 1;
 
 /** Gyroid period (µm) for a density. */
 export function gyroidPeriod(params: InfillParams): number {
-  const d = Math.min(1, Math.max(1e-6, params.density));
+  const d = Math.min(1, Math.max(MIN_DENSITY, params.density));
   return (GYROID_KAPPA * params.lineWidth) / d;
 }
 

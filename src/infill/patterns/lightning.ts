@@ -16,6 +16,7 @@ import type { Polyline } from '../../geometry/types.js';
 import { UM_PER_MM } from '../../geometry/types.js';
 import { indexRegion, regionGeom } from '../region-index.js';
 import { type Forest, type ForestParams, emptyForest, forestPolylines, grow, propagate } from '../lightning-forest.js';
+import { MIN_DENSITY } from '../../geometry/tolerances.js';
 
 /** Largest angle from the vertical a branch may lean by (tips retract at this rate going down), degrees. */
 export const LIGHTNING_OVERHANG_DEG = 40;
@@ -23,7 +24,7 @@ export const LIGHTNING_OVERHANG_DEG = 40;
 export const LIGHTNING_STRAIGHTEN_DEG = 40;
 
 export function lightningRadius(params: InfillParams): number {
-  const d = Math.min(1, Math.max(1e-6, params.density));
+  const d = Math.min(1, Math.max(MIN_DENSITY, params.density));
   return params.lineWidth / d;
 }
 

@@ -4,7 +4,7 @@ import type { ExPolygon, Pt } from '#strata/geometry/types.js';
 import type { InfillModelInput, InfillResult } from '#strata/infill/types.js';
 import { PATTERNS } from '#strata/infill/registry.js';
 import { generateInfill } from '#strata/infill/generate.js';
-import { pathLength } from '#strata/infill/measure.js';
+import { pathLengthUm } from '#strata/infill/measure.js';
 import { square, testParams, SHAPE_CENTRE } from '../test-shapes.js';
 import {
   LIGHTNING_OVERHANG_DEG,
@@ -66,7 +66,7 @@ const prepared = PATTERNS.lightning.prepare!(patchModel, params) as Pt[][][];
 const results: InfillResult[] = patchModel.layers.map((l, i) => generateInfill('lightning', l, params, prepared[i]));
 
 test('lightning prints nothing where no top surface needs support', () => {
-  for (let i = PATCH_LAYER + 1; i < LAYERS; i++) assert.equal(pathLength(results[i]), 0, `layer ${i}`);
+  for (let i = PATCH_LAYER + 1; i < LAYERS; i++) assert.equal(pathLengthUm(results[i]), 0, `layer ${i}`);
 });
 
 test('lightning supports every point of the skin patch (within 1.35 radii of a branch or the wall)', () => {
@@ -86,7 +86,7 @@ test('lightning is confined to the patch support cone: it shrinks going down, ea
   const straighten = H * 1000 * Math.tan((LIGHTNING_STRAIGHTEN_DEG * Math.PI) / 180);
   let last = Infinity;
   for (let i = PATCH_LAYER; i >= 0; i--) {
-    const len = pathLength(results[i]);
+    const len = pathLengthUm(results[i]);
     assert.ok(len <= last + 1, `layer ${i} grows: ${len} > ${last}`);
     last = len;
     if (i < PATCH_LAYER && len > 0) {
@@ -101,8 +101,8 @@ test('lightning is confined to the patch support cone: it shrinks going down, ea
       assert.ok(p.x <= c.x - 3_000 + R && Math.abs(p.y - c.y) <= 2_000 + 2 * R, `layer ${i}: (${p.x}, ${p.y})`);
   }
   // the cone closes towards the wall: 40 layers down, the tips have retracted by 40 prune steps at least
-  const top = pathLength(results[PATCH_LAYER]),
-    bottom = pathLength(results[0]);
+  const top = pathLengthUm(results[PATCH_LAYER]),
+    bottom = pathLengthUm(results[0]);
   assert.ok(bottom <= top - PATCH_LAYER * prune && bottom < 0.5 * top, `${bottom} vs ${top}`);
 });
 
@@ -112,8 +112,8 @@ test('lightning uses much less material than grid under a full top skin', () => 
   let lightning = 0,
     grid = 0;
   full.layers.forEach((l, i) => {
-    lightning += pathLength(generateInfill('lightning', l, params, prep[i]));
-    grid += pathLength(generateInfill('grid', l, params));
+    lightning += pathLengthUm(generateInfill('lightning', l, params, prep[i]));
+    grid += pathLengthUm(generateInfill('grid', l, params));
   });
   assert.ok(lightning < 0.35 * grid, `lightning ${lightning} vs grid ${grid}`);
 });
