@@ -19,6 +19,7 @@ import { allSkin, CoverWindows, skinAreas, skinLayerCounts } from './skin-areas.
 import { rangeAt, type ObjectSetup, type PrintSetup } from './objects.js';
 import type { IslandRegions, LayerRegions, RegionFill } from './types.js';
 import { computeWalls } from './wall-generator.js';
+import { medialScratch } from '../geometry/medial-axis.js';
 
 export function lineWidthUm(cfg: Config, layerIndex: number): number {
   return Math.round((layerIndex === 0 ? cfg.firstLayerLineWidthMm : cfg.lineWidthMm) * UM_PER_MM);
@@ -123,6 +124,8 @@ export class RegionsRun {
   readonly #meshes: readonly PreparedMesh[];
   /** How many layers above a layer topmost ironing looks for more of the object (see #isTopmost). */
   readonly #reach: number;
+  /** The medial axis's working memory for this run's layers (variable walls), this run's own. */
+  readonly #axis = medialScratch();
 
   /** @param meshes the meshes the setup's objects point into, prepared for slicing */
   constructor(meshes: readonly PreparedMesh[], setup: PrintSetup, layers: readonly LayerZ[], from: number, to: number) {
@@ -383,7 +386,7 @@ export class RegionsRun {
       const first = group[0].region;
       const irons = group.some((p) => this.#irons(k, i, configs[p.region]));
       const wallCfg = configs[first];
-      for (const iw of computeWalls(area, wallCfg, w)) {
+      for (const iw of computeWalls(area, wallCfg, w, this.#axis)) {
         // extra walls over the overhangs inside the walls that cannot bridge take their area from skin and infill
         const extra =
           i > 0 && wallCfg.extraPerimetersOnOverhangs ? overhangWalls(iw.inner, below, w, wallCfg.wallCount) : null;
@@ -446,7 +449,7 @@ export class RegionsRun {
     const cfg = this.#setup.configs[region];
     const oneWall: Config = { ...cfg, wallCount: 1, extraPerimetersOnOverhangs: false };
     const { kept, droppedMm2 } = vaseOutline(this.#section(k, i));
-    const islands = computeWalls(kept, oneWall, w).map((iw): IslandRegions => {
+    const islands = computeWalls(kept, oneWall, w, this.#axis).map((iw): IslandRegions => {
       const island: IslandRegions = {
         object: k,
         region,

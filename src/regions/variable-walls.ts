@@ -64,7 +64,7 @@ interface Limits {
   axis: MedialScratch;
 }
 
-function limitsOf(cfg: Config, w: number): Limits {
+function limitsOf(cfg: Config, w: number, axis: MedialScratch): Limits {
   const nozzle = cfg.nozzleDiameter * UM_PER_MM;
   const minFeature = (cfg.minFeatureSize / 100) * nozzle;
   const minBead = Math.max(minFeature, (cfg.minBeadWidth / 100) * nozzle);
@@ -77,7 +77,7 @@ function limitsOf(cfg: Config, w: number): Limits {
     minLength: (cfg.wallTransitionLength / 100) * nozzle,
     pruneAngleDeg: cfg.wallTransitionAngle,
     distribution: cfg.wallDistributionCount,
-    axis: medialScratch(),
+    axis,
   };
 }
 
@@ -652,8 +652,17 @@ function islandWalls(island: ExPolygon, wallCount: number, L: Limits): IslandWal
   return { outline: island, walls, inner: inside, lostMm2: lostUm2 / (UM_PER_MM * UM_PER_MM) };
 }
 
-/** Variable-width walls of each island (see the file's comment). */
-export function variableWalls(islands: readonly ExPolygon[], cfg: Config, lineWidthUm: number): IslandWalls[] {
-  const L = limitsOf(cfg, lineWidthUm);
+/**
+ * Variable-width walls of each island (see the file's comment).
+ * @param scratch the medial axis's working memory: the caller's, to reuse over its layers (one slice's range), or
+ *   the call's own
+ */
+export function variableWalls(
+  islands: readonly ExPolygon[],
+  cfg: Config,
+  lineWidthUm: number,
+  scratch: MedialScratch = medialScratch(),
+): IslandWalls[] {
+  const L = limitsOf(cfg, lineWidthUm, scratch);
   return islands.map((island) => islandWalls(island, cfg.wallCount, L));
 }
