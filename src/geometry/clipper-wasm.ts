@@ -154,10 +154,19 @@ function addressOf(handle: PathsD | PolyPathD): number {
   return (handle as unknown as { $$: { ptr: number } }).$$.ptr;
 }
 
+// Views of the engine's memory, part of the instance cache (see the file comment): they show only the engine's
+// own memory, and are made again when it has grown (its buffer is then a new one).
+let heapBuffer: ArrayBufferLike | undefined;
+let heap: Heap = { u32: new Uint32Array(0), f64: new Float64Array(0) };
+
 /** Views of the engine's memory as it is now (it may grow between calls, and its buffer with it). */
 function heapViews(): Heap {
   const buffer = (C as unknown as { HEAPU8: Uint8Array }).HEAPU8.buffer;
-  return { u32: new Uint32Array(buffer), f64: new Float64Array(buffer) };
+  if (buffer !== heapBuffer) {
+    heapBuffer = buffer;
+    heap = { u32: new Uint32Array(buffer), f64: new Float64Array(buffer) };
+  }
+  return heap;
 }
 
 /** The ring held by a vector of points at byte `at`. */
