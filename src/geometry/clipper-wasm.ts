@@ -3,15 +3,15 @@
  * conversion of plain rings to and from it. Only the facade (`clip.ts`) uses this module.
  *
  * Coordinates cross as doubles with precision 0 (the engine's scale 1): integer micrometres stay exact
- * in both directions, and every point the engine makes is rounded to an integer. Rings go in through a
- * typed buffer of the call's own and one engine path, and come back through views of the engine's memory
- * made for the call; every engine object made for a call is deleted before it returns, so the engine's
- * heap does not grow.
+ * in both directions, and every point the engine makes is rounded to an integer. Rings go in through one
+ * typed staging buffer and one engine path, and come back through views of the engine's memory; every
+ * engine object made for a call is deleted before it returns, so the engine's heap does not grow.
  *
  * Module state, and why it is no state a slice could see: the engine (one WebAssembly instance per thread,
- * loaded once with this module) and the few engine objects made with it below (path lists, a result tree,
- * two clippers). Every call here is synchronous and leaves those objects empty, so they carry nothing from
- * one call to the next: they are part of the instance, cached with it so that no call pays for making them.
+ * loaded once with this module), the few engine objects made with it below (path lists, a result tree,
+ * two clippers) and the staging buffer rings cross in through. Every call here is synchronous, leaves those
+ * objects empty and overwrites the buffer before reading it, so they carry nothing from one call to the next:
+ * they are part of the instance, cached with it so that no call pays for making them.
  */
 import Clipper2Z from 'clipper2-wasm/dist/es/clipper2z.js';
 import type {
@@ -67,16 +67,15 @@ const tree: PolyPathD = new C.PolyPathD();
 const keepCollinear = new C.ClipperD(PRECISION);
 const dropCollinear = new C.ClipperD(PRECISION);
 dropCollinear.SetPreserveCollinear(false);
+/** The staging buffer (see the file comment): x, y, z triplets (z stays 0), the layout the engine's paths take in bulk. */
+let coords = new Float64Array(3 * 1024);
 
 /** Copy rings into an engine path list (cleared first). */
 function load(into: PathsD, rings: readonly (readonly Pt[])[]): PathsD {
   into.clear();
-  let most = 0;
-  for (const r of rings) if (r.length > most) most = r.length;
-  // x, y, z triplets (z stays 0), the layout the engine's paths take in bulk: one buffer for every ring
-  const coords = new Float64Array(3 * most);
   for (const r of rings) {
     const n = r.length;
+    if (coords.length < 3 * n) coords = new Float64Array(Math.max(3 * n, 2 * coords.length));
     for (let i = 0, k = 0; i < n; i++, k += 3) {
       const p = r[i];
       coords[k] = p.x;

@@ -17,30 +17,46 @@ const CONCAVE = 1,
   SQUARE = 2,
   LOOP = 4;
 
-/** Per-vertex working arrays of one call, for its longest ring (each ring overwrites what it reads). */
-interface Corners {
+/**
+ * The working arrays of rawMiterOffset, per vertex of the longest ring it has met (grown as needed): whoever
+ * makes one owns it and hands it to each call, which overwrites what it reads (the clip operations keep one;
+ * see clip.ts for why a kept one and not a fresh one per call).
+ */
+export class MiterWork {
   /** Unit normal of the edge from vertex i (pointing right of the ring's direction). */
-  nx: Float64Array;
-  ny: Float64Array;
+  nx = new Float64Array(0);
+  ny = new Float64Array(0);
   /** Length of the edge from vertex i, µm. */
-  len: Float64Array;
+  len = new Float64Array(0);
   /** cos of the turn at vertex i. */
-  cosA: Float64Array;
+  cosA = new Float64Array(0);
   /** How much of each adjacent offset edge the concave corner at vertex i uses up, µm. */
-  used: Float64Array;
+  used = new Float64Array(0);
   /** The corner's kind: CONCAVE, SQUARE, LOOP bits. */
-  flag: Uint8Array;
-}
+  flag = new Uint8Array(0);
+  /** dropUsedUpEdges, per edge: its neighbours still alive, the corner at its start, the edges to look at. */
+  prev = new Int32Array(0);
+  next = new Int32Array(0);
+  cx = new Float64Array(0);
+  cy = new Float64Array(0);
+  stack = new Int32Array(0);
 
-function makeCorners(n: number): Corners {
-  return {
-    nx: new Float64Array(n),
-    ny: new Float64Array(n),
-    len: new Float64Array(n),
-    cosA: new Float64Array(n),
-    used: new Float64Array(n),
-    flag: new Uint8Array(n),
-  };
+  /** Room for a ring of n points. */
+  reserve(n: number): void {
+    if (this.nx.length >= n) return;
+    const m = Math.max(n, 2 * this.nx.length, 64);
+    this.nx = new Float64Array(m);
+    this.ny = new Float64Array(m);
+    this.len = new Float64Array(m);
+    this.cosA = new Float64Array(m);
+    this.used = new Float64Array(m);
+    this.flag = new Uint8Array(m);
+    this.prev = new Int32Array(m);
+    this.next = new Int32Array(m);
+    this.cx = new Float64Array(m);
+    this.cy = new Float64Array(m);
+    this.stack = new Int32Array(2 * m);
+  }
 }
 
 /** cos of the turn beyond which a corner is a spike: squared off, whichever way it turns. */
@@ -61,8 +77,14 @@ export interface RawOffset {
  * @param rings outer rings counter-clockwise, holes clockwise, µm
  * @param delta offset distance, µm (> 0 grows)
  * @param miterLimit mitre limit as a multiple of delta
+ * @param work the working arrays (a fresh set when not given)
  */
-export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLimit: number): RawOffset | null {
+export function rawMiterOffset(
+  rings: readonly Polygon[],
+  delta: number,
+  miterLimit: number,
+  work: MiterWork = new MiterWork(),
+): RawOffset | null {
   if (!outermostIsCounterClockwise(rings)) return null;
   // a mitre is made while cos(turn) > mitreCos; beyond that the corner would be squared off
   const mitreCos = (miterLimit <= 1 ? 2 : 2 / (miterLimit * miterLimit)) - 1;
@@ -71,8 +93,8 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
   let loops = false;
   let most = 0;
   for (const ring of rings) if (ring.length > most) most = ring.length;
-  const corners = makeCorners(most);
-  const { nx, ny, len, cosA, used, flag } = corners;
+  work.reserve(most);
+  const { nx, ny, len, cosA, used, flag } = work;
   for (const ring of rings) {
     const n = ring.length;
     if (n < 3) return null;
@@ -116,7 +138,7 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
       }
     }
     // unless used-up edges lie between concave corners only: then they are dropped instead
-    const collapsed = usedUp ? dropUsedUpEdges(ring, delta, corners) : null;
+    const collapsed = usedUp ? dropUsedUpEdges(ring, delta, work) : null;
     if (collapsed) {
       out.push(collapsed);
       continue;
@@ -142,22 +164,16 @@ export function rawMiterOffset(rings: readonly Polygon[], delta: number, miterLi
 }
 
 /**
- * The raw offset of one ring (whose normals, turns and corner kinds are in `corners`) with every
+ * The raw offset of one ring (whose normals, turns and corner kinds are in `work`) with every
  * used-up offset edge between two concave corners dropped: its neighbours' offset lines meet
  * instead, as in the union of the looped version, repeated until no edge is used up. Null when
  * that does not settle it: a squared corner on the ring, a used-up edge next to a mitred corner, a
  * merged corner that is no longer concave, or fewer than three edges left.
  */
-function dropUsedUpEdges(ring: Polygon, delta: number, corners: Corners): Pt[] | null {
+function dropUsedUpEdges(ring: Polygon, delta: number, work: MiterWork): Pt[] | null {
   const n = ring.length;
-  const { nx, ny, cosA, flag } = corners;
+  const { nx, ny, cosA, flag, prev, next, cx, cy, stack } = work;
   for (let e = 0; e < n; e++) if (flag[e] & SQUARE) return null;
-  // per edge: its neighbours still alive, the corner at its start, and the edges still to look at
-  const prev = new Int32Array(n),
-    next = new Int32Array(n),
-    cx = new Float64Array(n),
-    cy = new Float64Array(n),
-    stack = new Int32Array(2 * n);
   // cx, cy: the corner at the start of edge e, where the offset lines of prev[e] and e meet
   for (let e = 0, k = n - 1; e < n; k = e++) {
     prev[e] = k;

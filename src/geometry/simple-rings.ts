@@ -14,8 +14,13 @@ export const MAX_RINGS = 12;
  * The islands the raw rings make, or null when the union has work to do (or this cannot tell).
  * @param raw one ring per ring of `areas`, in flatten() order (outer, then its holes, per island)
  * @param areas the islands that were offset
+ * @param work the working arrays (a fresh set when not given)
  */
-export function islandsIfSimple(raw: readonly Pt[][], areas: readonly ExPolygon[]): ExPolygon[] | null {
+export function islandsIfSimple(
+  raw: readonly Pt[][],
+  areas: readonly ExPolygon[],
+  work: EdgeWork = new EdgeWork(),
+): ExPolygon[] | null {
   if (raw.length > MAX_RINGS) return null;
   const rings: Polygon[] = [];
   for (const r of raw) {
@@ -29,7 +34,7 @@ export function islandsIfSimple(raw: readonly Pt[][], areas: readonly ExPolygon[
     if (!(twiceArea(rings[k++]) > 0)) return null;
     for (let h = 0; h < a.holes.length; h++) if (!(twiceArea(rings[k++]) < 0)) return null;
   }
-  if (!edgesSimple(rings)) return null;
+  if (!edgesSimple(rings, work)) return null;
   // nesting: with no contacts, ring j is inside ring i iff its first point is; the only nesting
   // allowed is each island's holes inside its own outer ring
   const ownerOf = new Int32Array(rings.length).fill(-1);
@@ -92,33 +97,51 @@ function cleanRing(r: readonly Pt[]): Polygon | null {
 /** Edge sort keys pack the lower y with the edge index: at most this many edges. */
 const KEY_SPAN = 65536;
 
-/** Per edge its ends, ring and index in the ring: one call's arrays (views of two buffers, for n edges). */
-function makeEdges(n: number) {
-  const f = new Float64Array(6 * n),
-    i = new Int32Array(4 * n);
-  return {
-    ax: f.subarray(0, n),
-    ay: f.subarray(n, 2 * n),
-    bx: f.subarray(2 * n, 3 * n),
-    by: f.subarray(3 * n, 4 * n),
-    maxY: f.subarray(4 * n, 5 * n),
-    key: f.subarray(5 * n, 6 * n),
-    ring: i.subarray(0, n),
-    at: i.subarray(n, 2 * n),
-    ringLen: i.subarray(2 * n, 3 * n),
-    open: i.subarray(3 * n, 4 * n),
-  };
+/**
+ * The working arrays of the simplicity test, per edge its ends, ring and index in the ring, and its sort key,
+ * for as many edges as the most it has met (grown as needed): whoever makes one owns it and hands it to each
+ * call, which overwrites what it reads (the clip operations keep one; see clip.ts).
+ */
+export class EdgeWork {
+  ax = new Float64Array(0);
+  ay = new Float64Array(0);
+  bx = new Float64Array(0);
+  by = new Float64Array(0);
+  maxY = new Float64Array(0);
+  key = new Float64Array(0);
+  ring = new Int32Array(0);
+  at = new Int32Array(0);
+  ringLen = new Int32Array(0);
+  open = new Int32Array(0);
+
+  /** Room for n edges. */
+  reserve(n: number): void {
+    if (this.ax.length >= n) return;
+    const m = Math.max(n, 2 * this.ax.length, 256);
+    this.ax = new Float64Array(m);
+    this.ay = new Float64Array(m);
+    this.bx = new Float64Array(m);
+    this.by = new Float64Array(m);
+    this.maxY = new Float64Array(m);
+    this.key = new Float64Array(m);
+    this.ring = new Int32Array(m);
+    this.at = new Int32Array(m);
+    this.ringLen = new Int32Array(m);
+    this.open = new Int32Array(m);
+  }
 }
 
 /**
  * Whether no two edges of the rings meet, other than consecutive edges of one ring at their shared
  * point. A sweep over y: edges sorted by their lower end, each tested against the edges still open.
  */
-function edgesSimple(rings: readonly Polygon[]): boolean {
+function edgesSimple(rings: readonly Polygon[], work: EdgeWork): boolean {
   let total = 0;
   for (const r of rings) total += r.length;
   if (total >= KEY_SPAN) return false;
-  const { ax, ay, bx, by, maxY, key, ring, at, ringLen, open } = makeEdges(total);
+  work.reserve(total);
+  const { ax, ay, bx, by, maxY, ring, at, ringLen, open } = work;
+  const key = work.key.subarray(0, total);
   let e = 0;
   for (let ri = 0; ri < rings.length; ri++) {
     const r = rings[ri];
@@ -166,11 +189,13 @@ function edgesSimple(rings: readonly Polygon[]): boolean {
  * in their order, then the union's.
  * @param raw one ring per ring of `areas`, in flatten() order
  * @param unite the clean-up union of some raw rings
+ * @param work the working arrays of the simplicity test (a fresh set when not given)
  */
 export function islandsApart(
   raw: readonly Pt[][],
   areas: readonly ExPolygon[],
   unite: (rings: Pt[][]) => ExPolygon[],
+  work: EdgeWork = new EdgeWork(),
 ): ExPolygon[] {
   const n = areas.length;
   const first = new Int32Array(n + 1);
@@ -199,7 +224,7 @@ export function islandsApart(
       for (const r of rings) rest.push(r);
       continue;
     }
-    const simple = islandsIfSimple(rings, [areas[i]]);
+    const simple = islandsIfSimple(rings, [areas[i]], work);
     if (simple) out.push(...simple);
     else out.push(...unite(rings));
   }

@@ -6,6 +6,7 @@
  * boundary (up to rounding to whole µm). Every segment end carries its boundary anchor for linking.
  */
 import type { Pt } from '../geometry/types.js';
+import { workArray } from '../geometry/work-arrays.js';
 import type { Sweep } from './types.js';
 import type { RegionGeom } from './region-index.js';
 import { type Piece, rnd } from './piece.js';
@@ -21,13 +22,13 @@ export function clipSweep(geom: RegionGeom, sweep: Sweep, origin: Pt, out: Piece
     s = Math.sin(a);
   const E = geom.edgeCount;
   // per edge, in the sweep frame: vLo, vHi, u at vLo, du/dv, and the arc data to anchor a crossing
-  const vLo = new Float64Array(E),
-    vHi = new Float64Array(E),
-    uLo = new Float64Array(E),
-    dudv = new Float64Array(E);
-  const ring = new Int32Array(E),
-    edgeLocal = new Int32Array(E),
-    fromStart = new Uint8Array(E);
+  const vLo = workArray(E),
+    vHi = workArray(E),
+    uLo = workArray(E),
+    dudv = workArray(E);
+  const ring = workArray(E),
+    edgeLocal = workArray(E),
+    fromStart = workArray(E);
   let m = 0;
   let vMin = Infinity,
     vMax = -Infinity;
@@ -64,7 +65,7 @@ export function clipSweep(geom: RegionGeom, sweep: Sweep, origin: Pt, out: Piece
     }
   }
   if (m === 0) return;
-  const order = new Int32Array(m);
+  const order = workArray(m);
   for (let i = 0; i < m; i++) order[i] = i;
   order.sort((p, q) => vLo[p] - vLo[q] || p - q);
 
@@ -122,11 +123,11 @@ function anchorOf(
   geom: RegionGeom,
   e: number,
   v: number,
-  vLo: Float64Array,
-  vHi: Float64Array,
-  fromStart: Uint8Array,
-  ring: Int32Array,
-  edgeLocal: Int32Array,
+  vLo: number[],
+  vHi: number[],
+  fromStart: number[],
+  ring: number[],
+  edgeLocal: number[],
 ) {
   const f = (v - vLo[e]) / (vHi[e] - vLo[e]);
   const t = fromStart[e] ? f : 1 - f;
