@@ -82,6 +82,35 @@ function dist(ax: number, ay: number, bx: number, by: number): number {
   return Math.sqrt(dx * dx + dy * dy);
 }
 
+/**
+ * The travel into each position lo … hi of a window (`gap[k - lo]`; into position hi: on to the end point, 0 when
+ * there is none), kept in step with the window's order by `refresh` as stretches of it change.
+ */
+class Gaps {
+  readonly gap: Float64Array;
+  constructor(
+    private readonly t: Tour,
+    private readonly lo: number,
+    private readonly hi: number,
+    private readonly from: Pt,
+    private readonly to: Pt | null,
+  ) {
+    this.gap = new Float64Array(hi - lo + 1);
+    this.refresh(lo, hi);
+  }
+
+  /** The travel into positions a … b again (lo ≤ a ≤ b ≤ hi). */
+  refresh(a: number, b: number): void {
+    const { ix, iy, ox, oy } = this.t;
+    const { lo, hi, from, to, gap } = this;
+    for (let k = a; k <= b; k++) {
+      const x = k === lo ? from.x : ox[k - 1],
+        y = k === lo ? from.y : oy[k - 1];
+      gap[k - lo] = k === hi ? (to === null ? 0 : dist(x, y, to.x, to.y)) : dist(x, y, ix[k], iy[k]);
+    }
+  }
+}
+
 /** Positions lo … hi - 1 of the tour, between the fixed points `from` and `to` (none: the tour ends there). */
 function shortenWindow(t: Tour, lo: number, hi: number, from: Pt, to: Pt | null): void {
   const { ix, iy, ox, oy } = t;
@@ -90,30 +119,23 @@ function shortenWindow(t: Tour, lo: number, hi: number, from: Pt, to: Pt | null)
   const open = to === null;
   const tx = to?.x ?? 0,
     ty = to?.y ?? 0;
-  // the exit before position k, and the travel from it into k (to the end point for k = hi)
-  const exitX = (k: number) => (k === lo ? fx : ox[k - 1]);
-  const exitY = (k: number) => (k === lo ? fy : oy[k - 1]);
-  const into = (k: number) => {
-    if (k === hi) return open ? 0 : dist(exitX(k), exitY(k), tx, ty);
-    return dist(exitX(k), exitY(k), ix[k], iy[k]);
-  };
-  /** Travel from (x, y) into position k (to the end point for k = hi). */
-  const toPos = (x: number, y: number, k: number) =>
-    k === hi ? (open ? 0 : dist(x, y, tx, ty)) : dist(x, y, ix[k], iy[k]);
+  const gaps = new Gaps(t, lo, hi, from, to);
+  const gap = gaps.gap;
   for (let pass = 0; pass < MAX_PASSES; pass++) {
     let improved = false;
     // 2-opt: positions i … j the other way round
     for (let i = lo; i < hi; i++) {
-      const px = exitX(i),
-        py = exitY(i);
-      let before0 = into(i);
+      const px = i === lo ? fx : ox[i - 1],
+        py = i === lo ? fy : oy[i - 1];
       for (let j = i; j < hi; j++) {
-        const before = before0 + into(j + 1);
-        const after = dist(px, py, ox[j], oy[j]) + toPos(ix[i], iy[i], j + 1);
+        const before = gap[i - lo] + gap[j + 1 - lo];
+        // the exit before i into j's exit (now the stretch's entry), and i's entry (now its exit) on into j + 1
+        const on = j + 1 === hi ? (open ? 0 : dist(ix[i], iy[i], tx, ty)) : dist(ix[i], iy[i], ix[j + 1], iy[j + 1]);
+        const after = dist(px, py, ox[j], oy[j]) + on;
         if (after < before - GAIN) {
           reverse(t, i, j);
+          gaps.refresh(i, j + 1);
           improved = true;
-          before0 = into(i);
         }
       }
     }
@@ -121,22 +143,39 @@ function shortenWindow(t: Tour, lo: number, hi: number, from: Pt, to: Pt | null)
     for (let len = 1; len <= MAX_MOVE; len++) {
       for (let s = lo; s + len <= hi; s++) {
         const e = s + len - 1;
-        const sx = exitX(s),
-          sy = exitY(s);
+        const sx = s === lo ? fx : ox[s - 1],
+          sy = s === lo ? fy : oy[s - 1];
         // travel saved by taking the run out
-        const gain = into(s) + into(e + 1) - toPos(sx, sy, e + 1);
+        const bridge = e + 1 === hi ? (open ? 0 : dist(sx, sy, tx, ty)) : dist(sx, sy, ix[e + 1], iy[e + 1]);
+        const gain = gap[s - lo] + gap[e + 1 - lo] - bridge;
         if (gain <= GAIN) continue;
+        const inX = ix[s],
+          inY = iy[s],
+          outX = ox[e],
+          outY = oy[e];
         let best = 0,
           bestAt = -1,
           bestBack = false;
         for (let p = lo; p <= hi; p++) {
           if (p >= s && p <= e + 1) continue;
           // inserted before position p: from the exit before p, into p
-          const qx = exitX(p),
-            qy = exitY(p);
-          const gap = into(p);
-          const fwd = dist(qx, qy, ix[s], iy[s]) + toPos(ox[e], oy[e], p) - gap;
-          const back = dist(qx, qy, ox[e], oy[e]) + toPos(ix[s], iy[s], p) - gap;
+          const qx = p === lo ? fx : ox[p - 1],
+            qy = p === lo ? fy : oy[p - 1];
+          const g = gap[p - lo];
+          // a move is worth it only when its cost is under gain - best - GAIN; no leg is shorter than its longer
+          // axis step, so a place both ways of which cost more than that even so is passed over (a margin keeps
+          // rounding from passing over one the exact test would take)
+          const limit = gain - best - GAIN + 1e-3 + g;
+          const endX = p === hi ? tx : ix[p],
+            endY = p === hi ? ty : iy[p];
+          const last = p === hi && open;
+          if (
+            axisStep(qx, qy, inX, inY) + (last ? 0 : axisStep(outX, outY, endX, endY)) > limit &&
+            axisStep(qx, qy, outX, outY) + (last ? 0 : axisStep(inX, inY, endX, endY)) > limit
+          )
+            continue;
+          const fwd = dist(qx, qy, inX, inY) + (last ? 0 : dist(outX, outY, endX, endY)) - g;
+          const back = dist(qx, qy, outX, outY) + (last ? 0 : dist(inX, inY, endX, endY)) - g;
           const cost = Math.min(fwd, back);
           if (gain - cost > best + GAIN) {
             best = gain - cost;
@@ -146,12 +185,20 @@ function shortenWindow(t: Tour, lo: number, hi: number, from: Pt, to: Pt | null)
         }
         if (bestAt >= 0) {
           moveRun(t, s, e, bestAt, bestBack);
+          gaps.refresh(lo, hi);
           improved = true;
         }
       }
     }
     if (!improved) break;
   }
+}
+
+/** The larger of the two axis steps from (ax, ay) to (bx, by): never more than their distance. */
+function axisStep(ax: number, ay: number, bx: number, by: number): number {
+  const dx = Math.abs(ax - bx),
+    dy = Math.abs(ay - by);
+  return dx > dy ? dx : dy;
 }
 
 /** Positions i … j in reverse order, each stop printed the other way round. */
