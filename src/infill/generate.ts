@@ -78,13 +78,13 @@ function runPattern(
     ctx.index ??= indexRegion(ctx.geom);
     clipPolylines(ctx.index, out.lines, pieces);
   }
-  const w = params.lineWidth,
+  const w = params.lineWidthUm,
     A = ctx.geom.area;
   let own = out.loops.length ? lengthOf(out.loops, true) : 0;
   for (const pc of pieces) own += polylineLengthUm(pc.pts);
   const lineShare = (own * w) / A;
   const linkReach =
-    p.connect && out.link !== false && out.linkSpacing && out.linkSpacing > 0 ? LINK_REACH * out.linkSpacing : 0;
+    p.connect && out.link !== false && out.linkSpacingUm && out.linkSpacingUm > 0 ? LINK_REACH * out.linkSpacingUm : 0;
   return { pieces, loops: out.loops, linkReach, fitted: !!out.fitted, lineShare, factor };
 }
 
@@ -164,7 +164,7 @@ export function generateInfill(
   const ctx: Ctx = { geom, index: null };
   const run = runCorrected(pattern, layer, params, prepared, ctx);
   const lines = run.linkReach > 0 ? linkPieces(geom, run.pieces, run.linkReach).lines : run.pieces.map((pc) => pc.pts);
-  const clean = cleanPaths(lines, run.loops, MIN_PRINTABLE_WIDTHS * params.lineWidth);
+  const clean = cleanPaths(lines, run.loops, MIN_PRINTABLE_WIDTHS * params.lineWidthUm);
   // loops first, nearest-first, then lines from where the loops end
   const loops = orderLoops(clean.loops, start ?? { x: geom.minX, y: geom.minY });
   return { loops: loops.loops, lines: orderLines(clean.lines, loops.end) };

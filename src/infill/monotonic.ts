@@ -36,7 +36,7 @@ interface Rows {
 
 function rowsOf(geom: RegionGeom, angleDeg: number, spacingUm: number, origin: Pt): Rows {
   const pieces: Piece[] = [];
-  clipSweep(geom, { angle: angleDeg, spacing: spacingUm, offset: 0 }, origin, pieces);
+  clipSweep(geom, { angle: angleDeg, spacingUm, offsetUm: 0 }, origin, pieces);
   const a = (angleDeg * Math.PI) / 180;
   const c = Math.cos(a),
     s = Math.sin(a);

@@ -34,7 +34,7 @@ export function solidFill(
   if (region.length === 0 || !(spacingUm > 0)) return [];
   const geom = regionGeom(region);
   const pieces: Piece[] = [];
-  clipSweep(geom, { angle: angleDeg, spacing: spacingUm, offset: 0 }, origin, pieces);
+  clipSweep(geom, { angle: angleDeg, spacingUm, offsetUm: 0 }, origin, pieces);
   const lines =
     options.connect === false ? pieces.map((p) => p.pts) : linkPieces(geom, pieces, LINK_REACH * spacingUm).lines;
   const clean = cleanPaths(lines, [], 0);

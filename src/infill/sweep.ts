@@ -16,7 +16,7 @@ const MIN_SEGMENT_UM = 1;
 
 /** Clip one family of parallel lines to the region; appends pieces to `out` (each pointing in +u). */
 export function clipSweep(geom: RegionGeom, sweep: Sweep, origin: Pt, out: Piece[]): void {
-  if (!(sweep.spacing > 0) || geom.edgeCount === 0) return;
+  if (!(sweep.spacingUm > 0) || geom.edgeCount === 0) return;
   const a = (sweep.angle * Math.PI) / 180;
   const c = Math.cos(a),
     s = Math.sin(a);
@@ -69,15 +69,15 @@ export function clipSweep(geom: RegionGeom, sweep: Sweep, origin: Pt, out: Piece
   for (let i = 0; i < m; i++) order[i] = i;
   order.sort((p, q) => vLo[p] - vLo[q] || p - q);
 
-  const v0 = -origin.x * s + origin.y * c + sweep.offset;
-  const kFirst = Math.ceil((vMin - v0) / sweep.spacing);
-  const kLast = Math.floor((vMax - v0) / sweep.spacing);
+  const v0 = -origin.x * s + origin.y * c + sweep.offsetUm;
+  const kFirst = Math.ceil((vMin - v0) / sweep.spacingUm);
+  const kLast = Math.floor((vMax - v0) / sweep.spacingUm);
   const active: number[] = [];
   const xu: number[] = [];
   const xe: number[] = [];
   let next = 0;
   for (let k = kFirst; k <= kLast; k++) {
-    const v = v0 + k * sweep.spacing;
+    const v = v0 + k * sweep.spacingUm;
     while (next < m && vLo[order[next]] <= v) active.push(order[next++]);
     // drop edges that ended; compute crossings
     let w = 0;
@@ -144,7 +144,7 @@ function anchorOf(
 export function sweepConvexRing(ring: readonly Pt[], sweep: Sweep, origin: Pt): Pt[][] {
   const out: Pt[][] = [];
   const n = ring.length;
-  if (!(sweep.spacing > 0) || n < 3) return out;
+  if (!(sweep.spacingUm > 0) || n < 3) return out;
   const a = (sweep.angle * Math.PI) / 180;
   const c = Math.cos(a),
     s = Math.sin(a);
@@ -155,11 +155,11 @@ export function sweepConvexRing(ring: readonly Pt[], sweep: Sweep, origin: Pt): 
     if (v < vMin) vMin = v;
     if (v > vMax) vMax = v;
   }
-  const v0 = -origin.x * s + origin.y * c + sweep.offset;
-  const kFirst = Math.ceil((vMin - v0) / sweep.spacing);
-  const kLast = Math.floor((vMax - v0) / sweep.spacing);
+  const v0 = -origin.x * s + origin.y * c + sweep.offsetUm;
+  const kFirst = Math.ceil((vMin - v0) / sweep.spacingUm);
+  const kLast = Math.floor((vMax - v0) / sweep.spacingUm);
   for (let k = kFirst; k <= kLast; k++) {
-    const v = v0 + k * sweep.spacing;
+    const v = v0 + k * sweep.spacingUm;
     let ua = Infinity,
       ub = -Infinity,
       crossings = 0;

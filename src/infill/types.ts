@@ -24,25 +24,25 @@ export type SkinPatternId = (typeof SKIN_PATTERN_IDS)[number];
 
 export type Centering = 'object' | 'global';
 
-/** Everything a pattern may know about the layer it fills. Lengths in µm, angles in degrees. */
+/** Everything a pattern may know about the layer it fills: its heights in mm, its region in µm. */
 export interface InfillLayerInput {
   layerIndex: number;
-  /** Print height of the layer (mm). */
-  z: number;
-  /** Layer thickness (mm). */
-  layerHeight: number;
+  /** Print height of the layer, mm. */
+  zMm: number;
+  /** Layer thickness, mm. */
+  layerHeightMm: number;
   /** The area to fill, µm. Lines must stay inside it. */
   region: ExPolygon[];
 }
 
-/** Settings-derived parameters, the same for every layer of one object. */
+/** Settings-derived parameters, the same for every layer of one object. Lengths in µm, angles in degrees. */
 export interface InfillParams {
   /** Infill density as a fraction, 0 < density ≤ 1. */
   density: number;
   /** Extrusion line width, µm. */
-  lineWidth: number;
+  lineWidthUm: number;
   /** Nozzle diameter, µm (the seed's spacing formulas are in terms of it). */
-  nozzleDiameter: number;
+  nozzleDiameterUm: number;
   /** Base angle of the pattern, degrees (setting infillAngle, default 45); patterns add their own sweeps to it. */
   angle: number;
   centering: Centering;
@@ -67,13 +67,13 @@ export interface InfillModelInput {
 
 /**
  * One family of parallel lines for the shared scanline clipper: lines in direction `angle` (degrees
- * counter-clockwise from +X), `spacing` µm apart, one of them passing through origin + offset·n, where n is
- * the unit normal (−sin angle, cos angle).
+ * counter-clockwise from +X), `spacingUm` µm apart, one of them passing through origin + offsetUm·n, where n
+ * is the unit normal (−sin angle, cos angle).
  */
 export interface Sweep {
   angle: number;
-  spacing: number;
-  offset: number;
+  spacingUm: number;
+  offsetUm: number;
 }
 
 /**
@@ -85,7 +85,7 @@ export interface PatternOutput extends InfillResult {
   /** Families of straight parallel lines, clipped exactly by the scanline engine (faster than `lines`). */
   sweeps?: Sweep[];
   /** Typical distance between neighbouring lines, µm; line ends closer than a small multiple of it along the boundary are joined. */
-  linkSpacing?: number;
+  linkSpacingUm?: number;
   /** false: never join these lines along the boundary (trees, loops the pattern linked itself). */
   link?: boolean;
   /** true: the pattern already fitted its spacing to this region's density; the engine runs it only once. */
@@ -94,7 +94,7 @@ export interface PatternOutput extends InfillResult {
 
 /**
  * How the density setting maps to material. 'layer' (default): every layer's extruded lines (length × width)
- * over the region's area is the setting. 'volume': the mean over one Z period (`zPeriod`) is the setting, single layers vary (gyroid).
+ * over the region's area is the setting. 'volume': the mean over one Z period (`zPeriodMm`) is the setting, single layers vary (gyroid).
  * 'support': the pattern prints only what top skins need and reports its own, lower, figure (lightning).
  */
 export type DensityModel = 'layer' | 'volume' | 'support';
@@ -113,7 +113,7 @@ export interface InfillPattern {
   /** true: the pattern follows the region (or the skins), so `params.origin` / centering has no effect. */
   readonly followsRegion?: boolean;
   /** Z period of a 'volume' pattern, mm. */
-  zPeriod?(params: InfillParams): number;
+  zPeriodMm?(params: InfillParams): number;
   /**
    * Optional whole-model pass run once before the per-layer calls (lightning's trees): the lines it draws
    * on each layer, handed back to `generate` as that layer's `prepared`.

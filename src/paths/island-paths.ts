@@ -158,8 +158,8 @@ function gapEntry(cfg: Config, role: 'skin-gap', gaps: readonly GapLoop[]): Path
 function infillEntries(island: RegionFill, ctx: FillContext): PathEntry[] {
   if (island.sparse.length === 0) return [];
   const { cfg, layer, widthUm } = ctx;
-  const input = { layerIndex: layer.index, z: layer.z, layerHeight: layer.height, region: island.sparse };
-  const params = { ...ctx.params, lineWidth: widthUm };
+  const input = { layerIndex: layer.index, zMm: layer.z, layerHeightMm: layer.height, region: island.sparse };
+  const params = { ...ctx.params, lineWidthUm: widthUm };
   const res = generateInfill(regionPattern(cfg.infillPattern as PatternId, ctx.custom), input, params, ctx.prepared);
   const out: PathEntry[] = [];
   const width = widthUm / UM_PER_MM;

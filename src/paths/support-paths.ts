@@ -90,7 +90,7 @@ function fill(
       const ring = shrunkRegularPolygon(c, insetUm);
       if (!ring) continue;
       // a branch crossed by one line needs no linking: its chord is the whole fill
-      const chords = sweepConvexRing(ring, { angle, spacing: spacingUm, offset: 0 }, origin);
+      const chords = sweepConvexRing(ring, { angle, spacingUm, offsetUm: 0 }, origin);
       if (chords.length <= 1) for (const line of chords) emit(line, a);
       else region.push({ outer: ring, holes: [] });
     }

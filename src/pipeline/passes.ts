@@ -128,8 +128,8 @@ const lightning: WholeModelPass<PassOutputs['lightning']> = {
       {
         layers: regions.map((r) => ({
           layerIndex: r.index,
-          z: r.z,
-          layerHeight: r.height,
+          zMm: r.z,
+          layerHeightMm: r.height,
           region: layerSparse(r, ofPattern),
         })),
         supportNeeded: regions.map((_, i) => (i + 1 < regions.length ? layerTopSkin(regions[i + 1]) : [])),

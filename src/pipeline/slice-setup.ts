@@ -84,8 +84,8 @@ function infillParamsFor(cfg: Config, object: PlacedObject): InfillParams {
   const objCentre: Pt = { x: Math.round(((x0 + x1) / 2) * UM_PER_MM), y: Math.round(((y0 + y1) / 2) * UM_PER_MM) };
   return {
     density: cfg.infillDensity / 100,
-    lineWidth: Math.round(cfg.lineWidthMm * UM_PER_MM),
-    nozzleDiameter: Math.round(cfg.nozzleDiameter * UM_PER_MM),
+    lineWidthUm: Math.round(cfg.lineWidthMm * UM_PER_MM),
+    nozzleDiameterUm: Math.round(cfg.nozzleDiameter * UM_PER_MM),
     angle: cfg.infillAngle,
     centering: cfg.infillPatternCentering,
     origin: cfg.infillPatternCentering === 'global' ? bedCentre(cfg) : objCentre,

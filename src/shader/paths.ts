@@ -48,6 +48,9 @@ export interface ShaderLayerInput {
   params?: ParamValues;
 }
 
+/** The least bisection accuracy, mm: a zero tolerance, or one below the float spacing, would bisect forever. */
+const MIN_BISECTION_TOLERANCE_MM = 1e-6;
+
 interface Resolved {
   h: number;
   tolerance: number;
@@ -66,7 +69,7 @@ function resolve(opts: ExtractOptions): Resolved {
     throw new StrataError('BAD_SETTING', `custom infill: nozzle diameter must be positive, got ${nozzle}`);
   return {
     h,
-    tolerance: Math.max(1e-6, Math.min(opts.tolerance ?? 0.0005, h / 4)),
+    tolerance: Math.max(MIN_BISECTION_TOLERANCE_MM, Math.min(opts.tolerance ?? 0.0005, h / 4)),
     simplify: opts.simplify ?? 0.005,
     minLength: opts.minLength ?? nozzle / 2,
     maxSamples: opts.maxSamples ?? 8_000_000,

@@ -24,7 +24,7 @@ test('output is integer micrometres, and the first path starts near the given st
     const start = { x: SHAPE_CENTRE.x + 16_000, y: SHAPE_CENTRE.y };
     const r = generateInfill(
       id,
-      { layerIndex: 2, z: 0.6, layerHeight: 0.2, region },
+      { layerIndex: 2, zMm: 0.6, layerHeightMm: 0.2, region },
       testParams(0.2),
       undefined,
       start,
@@ -44,7 +44,7 @@ test('an unknown pattern id is an error', () => {
   assert.throws(() =>
     generateInfill(
       'nope' as never,
-      { layerIndex: 0, z: 0.2, layerHeight: 0.2, region: TEST_SHAPES.square() },
+      { layerIndex: 0, zMm: 0.2, layerHeightMm: 0.2, region: TEST_SHAPES.square() },
       testParams(0.2),
     ),
   );
@@ -62,8 +62,8 @@ test('small, fragmented regions get the set density of lines: connectors on the 
   for (const [name, region] of Object.entries(regions)) {
     for (const id of ['grid', 'lines', 'triangles', 'hexagons'] as const) {
       const params = testParams(0.2);
-      const r = generateInfill(id, { layerIndex: 7, z: 1.4, layerHeight: 0.2, region }, params);
-      const d = lineDensity(r, region, params.lineWidth);
+      const r = generateInfill(id, { layerIndex: 7, zMm: 1.4, layerHeightMm: 0.2, region }, params);
+      const d = lineDensity(r, region, params.lineWidthUm);
       assert.ok(Math.abs(d - 0.2) <= 0.01, `${id} on ${name}: ${d.toFixed(4)}`);
     }
   }

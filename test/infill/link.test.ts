@@ -19,7 +19,7 @@ test('parallel lines in a convex region link into one zig-zag along the boundary
   const region = TEST_SHAPES.square();
   const geom = regionGeom(region);
   const pieces: Piece[] = [];
-  clipSweep(geom, { angle: 45, spacing: 3_000, offset: 0 }, SHAPE_CENTRE, pieces);
+  clipSweep(geom, { angle: 45, spacingUm: 3_000, offsetUm: 0 }, SHAPE_CENTRE, pieces);
   const { lines, connectorLength } = linkPieces(geom, pieces, LINK_REACH * 3_000);
   assert.equal(lines.length, 1);
   const raw = pieces.map((p) => len(p.pts)).reduce((a, b) => a + b, 0);
@@ -32,17 +32,17 @@ test('ends farther apart than the reach along the boundary stay apart', () => {
   const region = TEST_SHAPES.square();
   const geom = regionGeom(region);
   const pieces: Piece[] = [];
-  clipSweep(geom, { angle: 0, spacing: 10_000, offset: 0 }, SHAPE_CENTRE, pieces);
+  clipSweep(geom, { angle: 0, spacingUm: 10_000, offsetUm: 0 }, SHAPE_CENTRE, pieces);
   assert.equal(linkPieces(geom, pieces, 9_000).lines.length, pieces.length);
   assert.equal(linkPieces(geom, pieces, 11_000).lines.length, 1);
 });
 
 test('a hole: lines cut by it are linked round it without crossing it', () => {
   const region = TEST_SHAPES['disc with hole']();
-  const r = generateInfill('lines', { layerIndex: 0, z: 0.2, layerHeight: 0.2, region }, testParams(0.2));
+  const r = generateInfill('lines', { layerIndex: 0, zMm: 0.2, layerHeightMm: 0.2, region }, testParams(0.2));
   const unlinked = generateInfill(
     'lines',
-    { layerIndex: 0, z: 0.2, layerHeight: 0.2, region },
+    { layerIndex: 0, zMm: 0.2, layerHeightMm: 0.2, region },
     testParams(0.2, { connect: false }),
   );
   assert.ok(r.lines.length < unlinked.lines.length / 4, `${r.lines.length} vs ${unlinked.lines.length}`);

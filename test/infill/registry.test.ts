@@ -27,7 +27,7 @@ const TOLERANCE = 0.1;
 const W = 450;
 
 function layerAt(region: ExPolygon[], z: number, layerIndex = 7): InfillLayerInput {
-  return { layerIndex, z, layerHeight: 0.2, region };
+  return { layerIndex, zMm: z, layerHeightMm: 0.2, region };
 }
 
 function allPaths(r: InfillResult): Pt[][] {
@@ -78,7 +78,7 @@ for (const id of PATTERN_IDS) {
         // density
         let measured: number;
         if (model === 'volume') {
-          const period = pattern.zPeriod ? pattern.zPeriod(params) : 1;
+          const period = pattern.zPeriodMm ? pattern.zPeriodMm(params) : 1;
           const k = 8;
           measured = 0;
           for (let i = 0; i < k; i++)

@@ -37,7 +37,7 @@ for (const [name, make] of Object.entries(shapes)) {
     const geom = regionGeom(region);
     for (const angle of [0, 45, 90, 17.3, 135]) {
       const pieces: Piece[] = [];
-      clipSweep(geom, { angle, spacing: 1_700, offset: 333 }, SHAPE_CENTRE, pieces);
+      clipSweep(geom, { angle, spacingUm: 1_700, offsetUm: 333 }, SHAPE_CENTRE, pieces);
       // (offset: no line runs exactly along an edge, where either answer is right)
       const o = {
         x: SHAPE_CENTRE.x - 333 * Math.sin((angle * Math.PI) / 180),
@@ -56,7 +56,7 @@ test('every scanline segment end is anchored on the boundary point it reports', 
   const region = TEST_SHAPES['disc with hole']();
   const geom = regionGeom(region);
   const pieces: Piece[] = [];
-  clipSweep(geom, { angle: 30, spacing: 900, offset: 123 }, SHAPE_CENTRE, pieces);
+  clipSweep(geom, { angle: 30, spacingUm: 900, offsetUm: 123 }, SHAPE_CENTRE, pieces);
   assert.ok(pieces.length > 20);
   for (const p of pieces) {
     for (const [pt, a] of [
@@ -80,7 +80,7 @@ test('offset shifts a family along its normal; lines pass through origin + offse
   const region = TEST_SHAPES.square();
   const geom = regionGeom(region);
   const pieces: Piece[] = [];
-  clipSweep(geom, { angle: 0, spacing: 10_000, offset: 2_500 }, SHAPE_CENTRE, pieces);
+  clipSweep(geom, { angle: 0, spacingUm: 10_000, offsetUm: 2_500 }, SHAPE_CENTRE, pieces);
   const ys = pieces.map((p) => p.pts[0].y).sort((a, b) => a - b);
   assert.deepEqual(ys, [SHAPE_CENTRE.y - 7_500, SHAPE_CENTRE.y + 2_500, SHAPE_CENTRE.y + 12_500]);
 });
@@ -100,7 +100,7 @@ test('a scanline through vertices and along edges is counted once', () => {
     },
   ];
   const pieces: Piece[] = [];
-  clipSweep(regionGeom(diamond), { angle: 0, spacing: 5_000, offset: 0 }, c, pieces);
+  clipSweep(regionGeom(diamond), { angle: 0, spacingUm: 5_000, offsetUm: 0 }, c, pieces);
   assert.equal(pieces.length, 1);
   assert.deepEqual(pieces[0].pts, [
     { x: c.x - 5_000, y: c.y },
@@ -108,7 +108,7 @@ test('a scanline through vertices and along edges is counted once', () => {
   ]);
   const sq = TEST_SHAPES.square();
   const p2: Piece[] = [];
-  clipSweep(regionGeom(sq), { angle: 0, spacing: 15_000, offset: 0 }, c, p2);
+  clipSweep(regionGeom(sq), { angle: 0, spacingUm: 15_000, offsetUm: 0 }, c, p2);
   assert.ok(p2.length >= 1 && p2.length <= 3);
   for (const p of p2) assert.equal(Math.abs(p.pts[1].x - p.pts[0].x), 30_000);
 });
@@ -127,7 +127,7 @@ test('a convex ring swept on its own gives the segments the general sweep cuts',
       const a = (2 * Math.PI * k) / sides;
       ring.push({ x: Math.round(cx + r * Math.cos(a)), y: Math.round(cy + r * Math.sin(a)) });
     }
-    const sweep = { angle: rand() * 180, spacing: 200 + rand() * 3000, offset: 0 };
+    const sweep = { angle: rand() * 180, spacingUm: 200 + rand() * 3000, offsetUm: 0 };
     const origin = { x: Math.round(rand() * 1000), y: Math.round(rand() * 1000) };
     const pieces: Piece[] = [];
     clipSweep(regionGeom([{ outer: ring, holes: [] }]), sweep, origin, pieces);

@@ -84,8 +84,8 @@ export const TEST_SHAPES: Record<string, () => ExPolygon[]> = {
 export function testParams(density: number, over: Partial<InfillParams> = {}): InfillParams {
   return {
     density,
-    lineWidth: 450,
-    nozzleDiameter: 400,
+    lineWidthUm: 450,
+    nozzleDiameterUm: 400,
     angle: 45,
     centering: 'object',
     origin: SHAPE_CENTRE,

@@ -111,14 +111,14 @@ test('registry adapter: generate() signature, density from the settings, --infil
   const hex = await findInfiller('hexagon-grid');
   const params: InfillParams = {
     density: 0.2,
-    lineWidth: 400,
-    nozzleDiameter: 400,
+    lineWidthUm: 400,
+    nozzleDiameterUm: 400,
     angle: 45,
     centering: 'object',
     origin: { x: 0, y: 0 },
     connect: false,
   };
-  const layer = { layerIndex: 3, z: 0.8, layerHeight: 0.2, region: SQUARE };
+  const layer = { layerIndex: 3, zMm: 0.8, layerHeightMm: 0.2, region: SQUARE };
   const gen = customInfillGenerator(hex, { params: parseInfillParams(hex.params, ['angle=30', 'ui_alternate=true']) });
   const res = gen(layer, params);
   assert.ok(res.lines.length > 10);

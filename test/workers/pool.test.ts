@@ -82,8 +82,8 @@ const model = prepareModel(readFileSync(root + 'examples/calibration-cube.stl'),
 const layers = planLayers(20, cfg.firstLayerHeight, cfg.layerHeight);
 const params = {
   density: 0.2,
-  lineWidth: 400,
-  nozzleDiameter: 400,
+  lineWidthUm: 400,
+  nozzleDiameterUm: 400,
   angle: 45,
   centering: 'object' as const,
   origin: { x: 0, y: 0 },

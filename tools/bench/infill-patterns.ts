@@ -29,7 +29,7 @@ function model(layers: number): InfillModelInput {
   ];
   for (let i = 0; i < layers; i++) {
     const z = 0.2 * (i + 1);
-    ls.push({ layerIndex: i, z, layerHeight: 0.2, region: hull(z) });
+    ls.push({ layerIndex: i, zMm: z, layerHeightMm: 0.2, region: hull(z) });
     need.push(i === layers - 1 ? hull(z) : i === Math.floor(layers / 2) ? deck : []);
   }
   return { layers: ls, supportNeeded: need };
@@ -63,13 +63,13 @@ function main(): void {
       }
       const t2 = performance.now();
       if ((t2 - t0) / n < best.ms)
-        best = { ms: (t2 - t0) / n, prepMs: (t1 - t0) / n, density: (len * params.lineWidth) / regionArea };
+        best = { ms: (t2 - t0) / n, prepMs: (t1 - t0) / n, density: (len * params.lineWidthUm) / regionArea };
     }
     rows.push({ id, ...best });
   }
   const grid = rows.find((r) => r.id === 'grid')?.ms ?? 1;
   console.log(
-    `infill bench: ${n} layers, hull 60 × 30 mm, density ${(density * 100).toFixed(0)} %, line width ${params.lineWidth} µm`,
+    `infill bench: ${n} layers, hull 60 × 30 mm, density ${(density * 100).toFixed(0)} %, line width ${params.lineWidthUm} µm`,
   );
   console.log('pattern       ms/layer  (prepare)  × grid   length×width/area');
   for (const r of rows) {

@@ -293,7 +293,7 @@ export const concentric: InfillPattern = {
   description: 'Successive insets of the region until empty, each loop linked to the next.',
   followsRegion: true,
   generate(layer, params) {
-    const s = familySpacing(params.density, params.lineWidth, 1);
+    const s = familySpacing(params.density, params.lineWidthUm, 1);
     const geom = regionGeom(layer.region);
     if (!(geom.area > 0) || !isFinite(s)) return { lines: [], loops: [], link: false };
     const ix = indexRegion(geom);
@@ -305,7 +305,7 @@ export const concentric: InfillPattern = {
       const n = j * W + i;
       return (field.v[n] + field.v[n + 1] + field.v[n + W] + field.v[n + W + 1]) / 4;
     };
-    const target = (params.density * geom.area) / params.lineWidth;
+    const target = (params.density * geom.area) / params.lineWidthUm;
     const scratch = contourScratch(field);
     /** Trace the loops of one candidate, depth by depth; thin loops become centre lines. */
     const build = (sp: number, phase: number) => {

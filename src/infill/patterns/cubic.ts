@@ -15,23 +15,23 @@ import { UM_PER_MM } from '../../geometry/types.js';
 
 /** Line spacing of each family, µm. */
 export function cubicSpacing(params: InfillParams): number {
-  return familySpacing(params.density, params.lineWidth, 3);
+  return familySpacing(params.density, params.lineWidthUm, 3);
 }
 
 export const cubic: InfillPattern = {
   id: 'cubic',
   description: 'Three line families 120° apart whose offsets move with Z: cubes standing on a corner.',
   densityModel: 'volume',
-  zPeriod: (params) => (cubicSpacing(params) * Math.SQRT2) / 3 / UM_PER_MM,
+  zPeriodMm: (params) => (cubicSpacing(params) * Math.SQRT2) / 3 / UM_PER_MM,
   generate(layer, params) {
     const s = cubicSpacing(params);
-    const zMid = layer.z - layer.layerHeight / 2;
+    const zMid = layer.zMm - layer.layerHeightMm / 2;
     const shift = (zMid * UM_PER_MM) / Math.SQRT2;
     return {
       lines: [],
       loops: [],
-      sweeps: [0, 120, 240].map((d) => ({ angle: params.angle + d, spacing: s, offset: shift })),
-      linkSpacing: s,
+      sweeps: [0, 120, 240].map((d) => ({ angle: params.angle + d, spacingUm: s, offsetUm: shift })),
+      linkSpacingUm: s,
     };
   },
 };

@@ -82,13 +82,13 @@ export function customInfillGenerator(infiller: Infiller, settings: CustomInfill
     const lines = infiller.paths(
       {
         region: layer.region,
-        z: layer.z,
-        layerHeight: layer.layerHeight,
+        z: layer.zMm,
+        layerHeight: layer.layerHeightMm,
         density,
         params: infiller.kind === 'shader' ? settings.params : undefined,
       },
       {
-        nozzleDiameter: params.nozzleDiameter / 1000,
+        nozzleDiameter: params.nozzleDiameterUm / 1000,
         resolution: settings.resolution,
         pixelSize: settings.pixelSize,
         densityReference: settings.densityReference,

@@ -12,15 +12,15 @@ export const grid: InfillPattern = {
   id: 'grid',
   description: 'Two line families at ±45° (angle and angle + 90°) crossing in squares.',
   generate(_layer, params) {
-    const s = familySpacing(params.density, params.lineWidth, GRID_FAMILIES);
+    const s = familySpacing(params.density, params.lineWidthUm, GRID_FAMILIES);
     return {
       lines: [],
       loops: [],
       sweeps: [
-        { angle: params.angle, spacing: s, offset: 0 },
-        { angle: params.angle + 90, spacing: s, offset: 0 },
+        { angle: params.angle, spacingUm: s, offsetUm: 0 },
+        { angle: params.angle + 90, spacingUm: s, offsetUm: 0 },
       ],
-      linkSpacing: s,
+      linkSpacingUm: s,
     };
   },
 };

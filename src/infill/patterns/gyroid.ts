@@ -29,14 +29,14 @@ const NEWTON_STEPS = 1;
 /** Gyroid period (µm) for a density. */
 export function gyroidPeriod(params: InfillParams): number {
   const d = Math.min(1, Math.max(MIN_DENSITY, params.density));
-  return (GYROID_KAPPA * params.lineWidth) / d;
+  return (GYROID_KAPPA * params.lineWidthUm) / d;
 }
 
 export const gyroid: InfillPattern = {
   id: 'gyroid',
   description: 'Sections of the real gyroid surface at each layer height, traced as smooth curves.',
   densityModel: 'volume',
-  zPeriod: (params) => gyroidPeriod(params) / UM_PER_MM,
+  zPeriodMm: (params) => gyroidPeriod(params) / UM_PER_MM,
   generate(layer, params) {
     const L = gyroidPeriod(params);
     const k = (2 * Math.PI) / L;
@@ -44,7 +44,7 @@ export const gyroid: InfillPattern = {
       c = Math.cos(phi),
       s = Math.sin(phi);
     const o = params.origin;
-    const Z = k * (layer.z - layer.layerHeight / 2) * UM_PER_MM;
+    const Z = k * (layer.zMm - layer.layerHeightMm / 2) * UM_PER_MM;
     const sz = Math.sin(Z),
       cz = Math.cos(Z);
     const { uMin, uMax, vMin, vMax } = frameBounds(layer.region, o, phi);
@@ -111,6 +111,6 @@ export const gyroid: InfillPattern = {
       if (cn.closed) pts.push(pts[0]);
       return pts;
     });
-    return { lines, loops: [], linkSpacing: L / 2 };
+    return { lines, loops: [], linkSpacingUm: L / 2 };
   },
 };

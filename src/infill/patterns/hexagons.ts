@@ -34,7 +34,7 @@ export const hexagons: InfillPattern = {
   id: 'hexagons',
   description: 'Honeycomb of regular hexagons as continuous zig-zag chains, shared walls side by side.',
   generate(layer, params) {
-    const w = params.lineWidth;
+    const w = params.lineWidthUm;
     const a = hexSide(params.density, w);
     const A = (a * Math.sqrt(3)) / 4;
     const Ap = Math.max(0, A - w / 2);
@@ -68,6 +68,6 @@ export const hexagons: InfillPattern = {
       }
       lines.push(pts);
     }
-    return { lines, loops: [], linkSpacing: 2 * A };
+    return { lines, loops: [], linkSpacingUm: 2 * A };
   },
 };

@@ -25,7 +25,7 @@ export const LIGHTNING_STRAIGHTEN_DEG = 40;
 
 export function lightningRadius(params: InfillParams): number {
   const d = Math.min(1, Math.max(MIN_DENSITY, params.density));
-  return params.lineWidth / d;
+  return params.lineWidthUm / d;
 }
 
 function prepareTrees(model: InfillModelInput, params: InfillParams): Polyline[][] {
@@ -35,7 +35,7 @@ function prepareTrees(model: InfillModelInput, params: InfillParams): Polyline[]
   let forest: Forest = emptyForest();
   for (let i = n - 1; i >= 0; i--) {
     const layer = model.layers[i];
-    const h = layer.layerHeight * UM_PER_MM;
+    const h = layer.layerHeightMm * UM_PER_MM;
     const fp: ForestParams = {
       radius: lightningRadius(params),
       pruneDist: h * tan(LIGHTNING_OVERHANG_DEG),

@@ -9,13 +9,13 @@ export const lines: InfillPattern = {
   id: 'lines',
   description: 'One line family per layer, turning 90° each layer.',
   generate(layer, params) {
-    const s = familySpacing(params.density, params.lineWidth, 1);
+    const s = familySpacing(params.density, params.lineWidthUm, 1);
     const odd = ((layer.layerIndex % 2) + 2) % 2 === 1;
     return {
       lines: [],
       loops: [],
-      sweeps: [{ angle: params.angle + (odd ? 90 : 0), spacing: s, offset: 0 }],
-      linkSpacing: s,
+      sweeps: [{ angle: params.angle + (odd ? 90 : 0), spacingUm: s, offsetUm: 0 }],
+      linkSpacingUm: s,
     };
   },
 };

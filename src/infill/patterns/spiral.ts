@@ -43,7 +43,7 @@ export const spiral: InfillPattern = {
   description: 'One Archimedean spiral per island from its centre, clipped, broken arcs linked.',
   followsRegion: true,
   generate(_layer, params) {
-    const sp = familySpacing(params.density, params.lineWidth, 1);
+    const sp = familySpacing(params.density, params.lineWidthUm, 1);
     const lines: Pt[][] = [];
     const a0 = (params.angle * Math.PI) / 180;
     for (const isl of _layer.region) {
@@ -64,6 +64,6 @@ export const spiral: InfillPattern = {
       }
       lines.push(pts);
     }
-    return { lines, loops: [], linkSpacing: sp };
+    return { lines, loops: [], linkSpacingUm: sp };
   },
 };

@@ -11,12 +11,12 @@ export const triangles: InfillPattern = {
   id: 'triangles',
   description: 'Three line families 60° apart meeting at common points: equilateral triangles.',
   generate(_layer, params) {
-    const s = familySpacing(params.density, params.lineWidth, 3);
+    const s = familySpacing(params.density, params.lineWidthUm, 3);
     return {
       lines: [],
       loops: [],
-      sweeps: [0, 60, 120].map((d) => ({ angle: params.angle + d, spacing: s, offset: 0 })),
-      linkSpacing: s,
+      sweeps: [0, 60, 120].map((d) => ({ angle: params.angle + d, spacingUm: s, offsetUm: 0 })),
+      linkSpacingUm: s,
     };
   },
 };

@@ -9,7 +9,7 @@ test('gyroid: every vertex lies on the gyroid surface at the layer height (withi
   const k = (2 * Math.PI) / L;
   for (const z of [0.3, 1.1, 2.7]) {
     const out = gyroid.generate(
-      { layerIndex: 0, z, layerHeight: 0.2, region: TEST_SHAPES['disc with hole']() },
+      { layerIndex: 0, zMm: z, layerHeightMm: 0.2, region: TEST_SHAPES['disc with hole']() },
       params,
     );
     const Z = k * (z - 0.1) * 1000;
@@ -34,7 +34,7 @@ test('gyroid: every vertex lies on the gyroid surface at the layer height (withi
 
 test('gyroid: curves are smooth (no kinks sharper than the surface allows) and long', () => {
   const out = gyroid.generate(
-    { layerIndex: 0, z: 0.5, layerHeight: 0.2, region: TEST_SHAPES.square() },
+    { layerIndex: 0, zMm: 0.5, layerHeightMm: 0.2, region: TEST_SHAPES.square() },
     testParams(0.2),
   );
   let maxTurn = 0;

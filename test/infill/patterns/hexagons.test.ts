@@ -19,7 +19,7 @@ test('hexagons: continuous chains, no crossing or overlapping segments, neighbou
   const params = testParams(0.3, { connect: false });
   const r = generateInfill(
     'hexagons',
-    { layerIndex: 0, z: 0.2, layerHeight: 0.2, region: TEST_SHAPES.square() },
+    { layerIndex: 0, zMm: 0.2, layerHeightMm: 0.2, region: TEST_SHAPES.square() },
     params,
   );
   const segs = segments(r.lines);
@@ -38,5 +38,5 @@ test('hexagons: continuous chains, no crossing or overlapping segments, neighbou
     }
   }
   // the honeycomb's cell side follows the density
-  assert.ok(hexSide(0.3, params.lineWidth) > 4 * params.lineWidth);
+  assert.ok(hexSide(0.3, params.lineWidthUm) > 4 * params.lineWidthUm);
 });

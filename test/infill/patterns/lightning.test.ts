@@ -33,7 +33,12 @@ function rect(x0: number, y0: number, x1: number, y1: number): ExPolygon[] {
 
 function model(need: (i: number) => ExPolygon[]): InfillModelInput {
   const region = square();
-  const layers = Array.from({ length: LAYERS }, (_, i) => ({ layerIndex: i, z: H * (i + 1), layerHeight: H, region }));
+  const layers = Array.from({ length: LAYERS }, (_, i) => ({
+    layerIndex: i,
+    zMm: H * (i + 1),
+    layerHeightMm: H,
+    region,
+  }));
   return { layers, supportNeeded: layers.map((_, i) => need(i)) };
 }
 
@@ -137,8 +142,8 @@ test('lightning branches stay inside a region with holes and follow a shrinking 
   };
   const layers = Array.from({ length: 30 }, (_, i) => ({
     layerIndex: i,
-    z: H * (i + 1),
-    layerHeight: H,
+    zMm: H * (i + 1),
+    layerHeightMm: H,
     region: region(i),
   }));
   const m: InfillModelInput = { layers, supportNeeded: layers.map((l, i) => (i === 29 ? l.region : [])) };

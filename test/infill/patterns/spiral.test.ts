@@ -14,7 +14,7 @@ test('spiral: one unbroken line in a disc, few pieces in a square', () => {
       holes: [],
     },
   ];
-  const r = generateInfill('spiral', { layerIndex: 0, z: 0.2, layerHeight: 0.2, region: disc }, testParams(0.2));
+  const r = generateInfill('spiral', { layerIndex: 0, zMm: 0.2, layerHeightMm: 0.2, region: disc }, testParams(0.2));
   assert.equal(r.lines.length, 1);
   const first = r.lines[0][0],
     last = r.lines[0][r.lines[0].length - 1];
