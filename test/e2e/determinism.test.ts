@@ -39,6 +39,25 @@ for (const [name, options] of [
   });
 }
 
+// Slices in one process share its modules: nothing one slice leaves in them (a cache, a working buffer) may reach
+// another. Two slices at once take turns at every await; each must write what it writes alone.
+test('two slices at once in one process each give the G-code they give alone', { skip, timeout: 300_000 }, async () => {
+  const hole = readModel('HoleTest.stl');
+  const cube = readModel('CalibrationCube.stl');
+  const cubeOptions = { infillPattern: 'gyroid', infillDensity: 30, wallCount: 3 } as const;
+  for (const threads of [1, 2]) {
+    const aloneHole = (await new Slicer({ threads }).slice(hole)).gcode;
+    const aloneCube = (await new Slicer({ threads, ...cubeOptions }).slice(cube)).gcode;
+    const [withHole, withCube] = await Promise.all([
+      new Slicer({ threads }).slice(hole),
+      new Slicer({ threads, ...cubeOptions }).slice(cube),
+    ]);
+    assert.ok(aloneHole !== aloneCube);
+    assert.ok(withHole.gcode === aloneHole, `HoleTest beside the cube, ${threads} thread(s)`);
+    assert.ok(withCube.gcode === aloneCube, `the cube beside HoleTest, ${threads} thread(s)`);
+  }
+});
+
 test('absolute and relative E give the same filament total', { skip, timeout: 120_000 }, async () => {
   const bytes = readModel('CalibrationCube.stl');
   // start and end G-code without extrusion, so the file's E is exactly the print's
