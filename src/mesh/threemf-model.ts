@@ -72,181 +72,267 @@ const C_GROUP = 11;
 const C_VALUE = 12;
 
 const MAX_DEPTH = 64;
-export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
-  const x = new XmlScanner(bytes, `3MF model part ${partName}`, MAX_DEPTH);
-  const ctx = new Uint8Array(MAX_DEPTH + 1);
-  ctx[0] = C_DOC;
-  const corePrefixes: string[] = [];
-  let unitScale = 1;
-  let sawModel = false;
-  const objects = new Map<number, ModelObject>();
-  const items: ObjectRef[] = [];
-  const metadata = new Map<string, string>();
-  const namespaces = new Map<string, string>();
-  // the named value being read: where its text starts and which map it goes to
-  const value: { name: string; start: number; target: Map<string, string> | null } = {
+
+/** What has been read of one model part, and where the reader is in it. */
+class PartReader {
+  /** The context of each open element (what it is, for its children), by depth. */
+  readonly ctx = new Uint8Array(MAX_DEPTH + 1);
+  /** Prefixes bound to the 3MF core namespace. */
+  readonly corePrefixes: string[] = [];
+  unitScale = 1;
+  sawModel = false;
+  readonly objects = new Map<number, ModelObject>();
+  readonly items: ObjectRef[] = [];
+  readonly metadata = new Map<string, string>();
+  readonly namespaces = new Map<string, string>();
+  /** The named value being read: where its text starts and which map it goes to. */
+  readonly value: { name: string; start: number; target: Map<string, string> | null } = {
     name: '',
     start: 0,
     target: null,
   };
-  let groupTarget: Map<string, string> | null = null;
+  /** The map the open `<metadatagroup>` or `<settings>` fills. */
+  groupTarget: Map<string, string> | null = null;
+  /** The open object, and its mesh's vertices and triangles while its `<mesh>` is open. */
+  obj: ModelObject | null = null;
+  verts: GrowableF64 | null = null;
+  tris: GrowableU32 | null = null;
+  maxIndex = -1;
 
-  let obj: ModelObject | null = null;
-  let verts: GrowableF64 | null = null;
-  let tris: GrowableU32 | null = null;
-  let maxIndex = -1;
+  constructor(
+    readonly x: XmlScanner,
+    readonly bytes: Uint8Array,
+  ) {
+    this.ctx[0] = C_DOC;
+  }
 
-  const isCore = (): boolean => x.localStart === x.nameStart || corePrefixes.includes(x.prefix());
+  /** Whether the current element is in the core namespace. */
+  isCore(): boolean {
+    const x = this.x;
+    return x.localStart === x.nameStart || this.corePrefixes.includes(x.prefix());
+  }
 
-  for (let ev = x.next(); ev !== XML_EOF; ev = x.next()) {
-    if (ev === XML_END) {
-      const closed = ctx[x.depth + 1];
-      if (closed === C_MESH && obj !== null && verts !== null && tris !== null) {
-        finishMesh(x, obj, verts, tris, maxIndex);
-        verts = null;
-        tris = null;
-      } else if (closed === C_OBJECT) {
-        obj = null;
-      } else if (closed === C_VALUE && value.target !== null) {
-        value.target.set(value.name, x.textContent(value.start));
-        value.target = null;
-      }
-      continue;
+  /** An end tag: finish the mesh, object or named value it closes. */
+  endElement(): void {
+    const x = this.x;
+    const closed = this.ctx[x.depth + 1];
+    if (closed === C_MESH && this.obj !== null && this.verts !== null && this.tris !== null) {
+      finishMesh(x, this.obj, this.verts, this.tris, this.maxIndex);
+      this.verts = null;
+      this.tris = null;
+    } else if (closed === C_OBJECT) {
+      this.obj = null;
+    } else if (closed === C_VALUE && this.value.target !== null) {
+      this.value.target.set(this.value.name, x.textContent(this.value.start));
+      this.value.target = null;
     }
+  }
+
+  /** A start tag: read it as a child of its parent's context, and record its own context. */
+  startElement(): void {
+    const x = this.x;
     const parentDepth = x.selfClosing ? x.depth : x.depth - 1;
-    const parent = ctx[parentDepth];
     let here = C_OTHER;
-    switch (parent) {
+    switch (this.ctx[parentDepth]) {
       case C_VERTICES:
-        if (x.is('vertex') && isCore() && verts !== null) {
-          let vx = NaN,
-            vy = NaN,
-            vz = NaN;
-          while (x.nextAttr()) {
-            if (x.attrNameEnd - x.attrNameStart !== 1) continue;
-            const c = bytes[x.attrNameStart];
-            if (c === 120) vx = x.number();
-            else if (c === 121) vy = x.number();
-            else if (c === 122) vz = x.number();
-          }
-          if (!Number.isFinite(vx) || !Number.isFinite(vy) || !Number.isFinite(vz)) {
-            x.fail('a <vertex> needs finite numbers in x, y and z', x.nameStart);
-          }
-          verts.push3(vx * unitScale, vy * unitScale, vz * unitScale);
-        }
+        this.readVertex();
         break;
       case C_TRIANGLES:
-        if (x.is('triangle') && isCore() && tris !== null) {
-          let v1 = -1,
-            v2 = -1,
-            v3 = -1;
-          while (x.nextAttr()) {
-            if (x.attrNameEnd - x.attrNameStart !== 2 || bytes[x.attrNameStart] !== 118) continue;
-            const c = bytes[x.attrNameStart + 1];
-            if (c === 49) v1 = x.uint();
-            else if (c === 50) v2 = x.uint();
-            else if (c === 51) v3 = x.uint();
-          }
-          if (v1 < 0 || v2 < 0 || v3 < 0) x.fail('a <triangle> needs vertex indices v1, v2 and v3', x.nameStart);
-          if (v1 > maxIndex) maxIndex = v1;
-          if (v2 > maxIndex) maxIndex = v2;
-          if (v3 > maxIndex) maxIndex = v3;
-          tris.push3(v1, v2, v3);
-        }
+        this.readTriangle();
         break;
       case C_DOC:
-        if (!x.is('model')) x.fail(`the root element is <${x.text(x.nameStart, x.nameEnd)}>, not <model>`, x.nameStart);
-        sawModel = true;
-        here = C_MODEL;
-        while (x.nextAttr()) {
-          if (x.attrIs('unit')) {
-            const u = x.value();
-            const s = UNIT_MM[u];
-            if (s === undefined)
-              x.fail(
-                `unknown unit "${printable(u)}" (expected micron, millimeter, centimeter, inch, foot or meter)`,
-                x.nameStart,
-              );
-            unitScale = s;
-          } else if (x.attrNameEnd - x.attrNameStart > 6 && x.attrName().startsWith('xmlns:')) {
-            const uri = x.value();
-            namespaces.set(x.attrName().slice(6), uri);
-            if (uri === CORE_NS) corePrefixes.push(x.attrName().slice(6));
-          }
-        }
+        here = this.readModel();
         break;
       case C_MODEL:
-        if (isCore()) {
-          if (x.is('resources')) here = C_RESOURCES;
-          else if (x.is('build')) here = C_BUILD;
-          else if (x.is('metadata')) here = startValue(x, 'name', metadata);
-        }
+        here = this.modelChild();
         break;
       case C_RESOURCES:
-        if (x.is('object') && isCore()) {
-          here = C_OBJECT;
-          let id = -1;
-          let name = '';
-          while (x.nextAttr()) {
-            if (x.attrIs('id')) id = x.uint();
-            else if (x.attrIs('name')) name = printable(x.value(), 200);
-          }
-          if (id < 0) x.fail('an <object> needs a numeric id', x.nameStart);
-          if (objects.has(id)) x.fail(`two objects have the id ${id}`, x.nameStart);
-          obj = { id, name, vertices: null, triangles: null, components: [], metadata: null };
-          objects.set(id, obj);
-        }
+        here = this.readObject();
         break;
       case C_OBJECT:
-        if (isCore()) {
-          if (x.is('mesh')) {
-            here = C_MESH;
-            verts = new GrowableF64(3 * 1024);
-            tris = new GrowableU32(3 * 2048);
-            maxIndex = -1;
-          } else if (x.is('components')) {
-            here = C_COMPONENTS;
-          } else if ((x.is('metadatagroup') || x.is('settings')) && obj !== null) {
-            here = C_GROUP;
-            groupTarget = obj.metadata ??= new Map();
-          }
-        }
+        here = this.objectChild();
         break;
       case C_ITEM:
-        if (isCore() && x.is('metadatagroup') && items.length > 0) {
-          here = C_GROUP;
-          groupTarget = items[items.length - 1].metadata ??= new Map();
-        }
+        here = this.itemChild();
         break;
       case C_GROUP:
-        if (isCore() && groupTarget !== null) {
-          if (x.is('metadata')) here = startValue(x, 'name', groupTarget);
-          else if (x.is('setting')) here = startValue(x, 'key', groupTarget);
-        }
+        here = this.groupChild();
         break;
       case C_MESH:
-        if (isCore()) {
-          if (x.is('vertices')) here = C_VERTICES;
-          else if (x.is('triangles')) here = C_TRIANGLES;
-        }
+        here = this.meshChild();
         break;
       case C_COMPONENTS:
-        if (x.is('component') && isCore() && obj !== null) obj.components.push(readRef(x, unitScale, 'component'));
+        this.readComponent();
         break;
       case C_BUILD:
-        if (x.is('item') && isCore()) {
-          items.push(readRef(x, unitScale, 'build item'));
-          here = C_ITEM;
-        }
+        here = this.readItem();
         break;
     }
-    if (!x.selfClosing) ctx[x.depth] = here;
+    if (!x.selfClosing) this.ctx[x.depth] = here;
   }
-  if (!sawModel) throw new StrataError('BAD_FILE', `3MF model part ${partName} has no <model> element`);
-  return { unitScale, objects, items, metadata, namespaces };
+
+  /** The root `<model>`: its unit and namespace prefixes. */
+  readModel(): number {
+    const x = this.x;
+    if (!x.is('model')) x.fail(`the root element is <${x.text(x.nameStart, x.nameEnd)}>, not <model>`, x.nameStart);
+    this.sawModel = true;
+    while (x.nextAttr()) {
+      if (x.attrIs('unit')) {
+        const u = x.value();
+        const s = UNIT_MM[u];
+        if (s === undefined)
+          x.fail(
+            `unknown unit "${printable(u)}" (expected micron, millimeter, centimeter, inch, foot or meter)`,
+            x.nameStart,
+          );
+        this.unitScale = s;
+      } else if (x.attrNameEnd - x.attrNameStart > 6 && x.attrName().startsWith('xmlns:')) {
+        const uri = x.value();
+        this.namespaces.set(x.attrName().slice(6), uri);
+        if (uri === CORE_NS) this.corePrefixes.push(x.attrName().slice(6));
+      }
+    }
+    return C_MODEL;
+  }
+
+  /** A child of `<model>`: `<resources>`, `<build>` or the model's `<metadata>`. */
+  modelChild(): number {
+    const x = this.x;
+    if (this.isCore()) {
+      if (x.is('resources')) return C_RESOURCES;
+      if (x.is('build')) return C_BUILD;
+      if (x.is('metadata')) return this.startValue('name', this.metadata);
+    }
+    return C_OTHER;
+  }
+
+  /** An `<object>` of `<resources>`: its id and name. */
+  readObject(): number {
+    const x = this.x;
+    if (!(x.is('object') && this.isCore())) return C_OTHER;
+    let id = -1;
+    let name = '';
+    while (x.nextAttr()) {
+      if (x.attrIs('id')) id = x.uint();
+      else if (x.attrIs('name')) name = printable(x.value(), 200);
+    }
+    if (id < 0) x.fail('an <object> needs a numeric id', x.nameStart);
+    if (this.objects.has(id)) x.fail(`two objects have the id ${id}`, x.nameStart);
+    this.obj = { id, name, vertices: null, triangles: null, components: [], metadata: null };
+    this.objects.set(id, this.obj);
+    return C_OBJECT;
+  }
+
+  /** A child of an object: its `<mesh>`, `<components>`, or `<metadatagroup>` (or Cura's `<settings>`). */
+  objectChild(): number {
+    const x = this.x;
+    if (!this.isCore()) return C_OTHER;
+    if (x.is('mesh')) {
+      this.verts = new GrowableF64(3 * 1024);
+      this.tris = new GrowableU32(3 * 2048);
+      this.maxIndex = -1;
+      return C_MESH;
+    }
+    if (x.is('components')) return C_COMPONENTS;
+    if ((x.is('metadatagroup') || x.is('settings')) && this.obj !== null) {
+      this.groupTarget = this.obj.metadata ??= new Map();
+      return C_GROUP;
+    }
+    return C_OTHER;
+  }
+
+  /** A child of a mesh: `<vertices>` or `<triangles>`. */
+  meshChild(): number {
+    const x = this.x;
+    if (this.isCore()) {
+      if (x.is('vertices')) return C_VERTICES;
+      if (x.is('triangles')) return C_TRIANGLES;
+    }
+    return C_OTHER;
+  }
+
+  /** A `<vertex>`: x, y and z in mm. */
+  readVertex(): void {
+    const x = this.x;
+    const verts = this.verts;
+    if (!(x.is('vertex') && this.isCore() && verts !== null)) return;
+    const bytes = this.bytes;
+    let vx = NaN,
+      vy = NaN,
+      vz = NaN;
+    while (x.nextAttr()) {
+      if (x.attrNameEnd - x.attrNameStart !== 1) continue;
+      const c = bytes[x.attrNameStart];
+      if (c === 120) vx = x.number();
+      else if (c === 121) vy = x.number();
+      else if (c === 122) vz = x.number();
+    }
+    if (!Number.isFinite(vx) || !Number.isFinite(vy) || !Number.isFinite(vz)) {
+      x.fail('a <vertex> needs finite numbers in x, y and z', x.nameStart);
+    }
+    const unitScale = this.unitScale;
+    verts.push3(vx * unitScale, vy * unitScale, vz * unitScale);
+  }
+
+  /** A `<triangle>`: its vertex indices v1, v2, v3 (checked against the vertices when the mesh ends). */
+  readTriangle(): void {
+    const x = this.x;
+    const tris = this.tris;
+    if (!(x.is('triangle') && this.isCore() && tris !== null)) return;
+    const bytes = this.bytes;
+    let v1 = -1,
+      v2 = -1,
+      v3 = -1;
+    while (x.nextAttr()) {
+      if (x.attrNameEnd - x.attrNameStart !== 2 || bytes[x.attrNameStart] !== 118) continue;
+      const c = bytes[x.attrNameStart + 1];
+      if (c === 49) v1 = x.uint();
+      else if (c === 50) v2 = x.uint();
+      else if (c === 51) v3 = x.uint();
+    }
+    if (v1 < 0 || v2 < 0 || v3 < 0) x.fail('a <triangle> needs vertex indices v1, v2 and v3', x.nameStart);
+    if (v1 > this.maxIndex) this.maxIndex = v1;
+    if (v2 > this.maxIndex) this.maxIndex = v2;
+    if (v3 > this.maxIndex) this.maxIndex = v3;
+    tris.push3(v1, v2, v3);
+  }
+
+  /** A `<component>` of the open object. */
+  readComponent(): void {
+    const x = this.x;
+    if (x.is('component') && this.isCore() && this.obj !== null)
+      this.obj.components.push(readRef(x, this.unitScale, 'component'));
+  }
+
+  /** A build `<item>`. */
+  readItem(): number {
+    const x = this.x;
+    if (!(x.is('item') && this.isCore())) return C_OTHER;
+    this.items.push(readRef(x, this.unitScale, 'build item'));
+    return C_ITEM;
+  }
+
+  /** A child of a build item: its `<metadatagroup>`. */
+  itemChild(): number {
+    const x = this.x;
+    if (!(this.isCore() && x.is('metadatagroup') && this.items.length > 0)) return C_OTHER;
+    this.groupTarget = this.items[this.items.length - 1].metadata ??= new Map();
+    return C_GROUP;
+  }
+
+  /** A child of a metadata group: a `<metadata name>` or a `<setting key>`. */
+  groupChild(): number {
+    const x = this.x;
+    if (this.isCore() && this.groupTarget !== null) {
+      if (x.is('metadata')) return this.startValue('name', this.groupTarget);
+      if (x.is('setting')) return this.startValue('key', this.groupTarget);
+    }
+    return C_OTHER;
+  }
 
   /** At a named value's start tag: remember where its text goes (C_VALUE), or store an empty one. */
-  function startValue(x: XmlScanner, nameAttr: string, target: Map<string, string>): number {
+  startValue(nameAttr: string, target: Map<string, string>): number {
+    const x = this.x;
     let key = '';
     while (x.nextAttr()) if (x.attrIs(nameAttr)) key = x.value();
     if (key === '') return C_OTHER;
@@ -254,11 +340,23 @@ export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
       target.set(key, '');
       return C_OTHER;
     }
-    value.name = key;
-    value.start = x.contentStart();
-    value.target = target;
+    this.value.name = key;
+    this.value.start = x.contentStart();
+    this.value.target = target;
     return C_VALUE;
   }
+}
+
+/** Read one model part: its unit, objects, build items, metadata and namespaces. */
+export function parseModelPart(bytes: Uint8Array, partName: string): ModelPart {
+  const x = new XmlScanner(bytes, `3MF model part ${partName}`, MAX_DEPTH);
+  const r = new PartReader(x, bytes);
+  for (let ev = x.next(); ev !== XML_EOF; ev = x.next()) {
+    if (ev === XML_END) r.endElement();
+    else r.startElement();
+  }
+  if (!r.sawModel) throw new StrataError('BAD_FILE', `3MF model part ${partName} has no <model> element`);
+  return { unitScale: r.unitScale, objects: r.objects, items: r.items, metadata: r.metadata, namespaces: r.namespaces };
 }
 
 function finishMesh(x: XmlScanner, obj: ModelObject, verts: GrowableF64, tris: GrowableU32, maxIndex: number): void {

@@ -194,8 +194,36 @@ function overhangSpeeds(
   c.set('overhangWallSpeed', speedAt(1), key);
 }
 
-/** Map the Cura keys of `c` onto Strata settings. */
-export function mapCuraKeys(c: ImportContext): void {
+/** Round to `d` decimals. */
+function round(v: number, d = 4): number {
+  return Math.round(v * 10 ** d) / 10 ** d;
+}
+
+/**
+ * A skin pattern: lines and zigzag are lines (monotonic with `monotonic` true), concentric concentric;
+ * a pattern the profile does not give is lines.
+ */
+function skinPattern(
+  pattern: string | undefined,
+  monotonic: string | undefined,
+): Settings['topSkinPattern'] | undefined {
+  const id = CURA_SKIN[pattern ?? 'lines'];
+  return id === 'lines' && bool(monotonic) ? 'monotonic' : id;
+}
+
+/** What every topic's mapping shares: the import and the ways to read its keys. */
+interface CuraKeys {
+  readonly c: ImportContext;
+  /** The number a Cura key stands for: its value, its formula, or its fallback. */
+  readonly value: (key: string) => number | undefined;
+  /** The text of a key, unless it is a formula. */
+  readonly str: (key: string) => string | undefined;
+  /** Set `setting` from the first of `keys` that has a value (given or by fallback). */
+  readonly take: <K extends keyof Settings>(setting: K, keys: string[], convert?: (v: number) => Settings[K]) => void;
+}
+
+/** The shared readers of the Cura keys of `c`. */
+function curaKeys(c: ImportContext): CuraKeys {
   const resolving = new Set<string>();
   /** The number a Cura key stands for: its value, its formula, or its fallback. */
   const value = (key: string): number | undefined => {
@@ -239,9 +267,12 @@ export function mapCuraKeys(c: ImportContext): void {
       if (present) return c.reject(key, 'a formula Strata cannot evaluate');
     }
   };
-  const round = (v: number, d = 4) => Math.round(v * 10 ** d) / 10 ** d;
+  return { c, value, str, take };
+}
 
-  // machine
+/** The machine: bed, nozzle, filament, firmware switches, G-code flavour and start and end G-code. */
+function mapMachine(m: CuraKeys): void {
+  const { c, str, take } = m;
   take('buildPlateWidth', ['machine_width']);
   take('buildPlateLength', ['machine_depth']);
   take('buildVolumeHeight', ['machine_height']);
@@ -267,6 +298,11 @@ export function mapCuraKeys(c: ImportContext): void {
   ] as const) {
     importTemplate(c, [key], setting, (v) => v.replace(/^"""|"""$/g, ''));
   }
+}
+
+/** The machine's limits: feed rates, accelerations and jerk, and the print acceleration. */
+function mapMachineLimits(m: CuraKeys): void {
+  const { c, str, take } = m;
   take('maxSpeedX', ['machine_max_feedrate_x']);
   take('maxSpeedY', ['machine_max_feedrate_y']);
   take('maxSpeedZ', ['machine_max_feedrate_z']);
@@ -283,8 +319,11 @@ export function mapCuraKeys(c: ImportContext): void {
   const accelOn = str('acceleration_enabled');
   if (accelOn !== undefined ? bool(accelOn) : c.has('acceleration_print')) take('acceleration', ['acceleration_print']);
   else take('acceleration', ['machine_acceleration']);
+}
 
-  // layers, lines, walls, skin
+/** Layer heights and adaptive layers; returns the layer height the other mappings use. */
+function mapLayers(m: CuraKeys): number {
+  const { c, value, str, take } = m;
   take('layerHeight', ['layer_height']);
   take('firstLayerHeight', ['layer_height_0']);
   const layerHeight = c.settings.layerHeight ?? (SCHEMA.layerHeight.default as number);
@@ -314,6 +353,12 @@ export function mapCuraKeys(c: ImportContext): void {
       'adaptive_layer_height_threshold',
       "Cura's target distance between layer edges has no Strata equivalent (adaptiveLayerQuality sets the stair-step depth)",
     );
+  return layerHeight;
+}
+
+/** Line widths, wall count, top and bottom thickness, wall order, seam and skin overlap. */
+function mapWallsAndSkins(m: CuraKeys, layerHeight: number): void {
+  const { c, value, str, take } = m;
   take('lineWidth', ['line_width', 'wall_line_width', 'wall_line_width_0']);
   const factor = value('initial_layer_line_width_factor');
   if (factor !== undefined) {
@@ -335,6 +380,11 @@ export function mapCuraKeys(c: ImportContext): void {
   const seam = str('z_seam_type');
   if (seam !== undefined) c.set('seamPosition', SEAM[seam], 'z_seam_type', `seam "${seam}" has no Strata equivalent`);
   take('skinOverlap', ['skin_overlap']);
+}
+
+/** Scarf seam, fuzzy skin and spiral vase. */
+function mapSeamAndSurface(m: CuraKeys): void {
+  const { c, value, str, take } = m;
   // scarf seam (Cura 5.9: the outer wall only; a length of 0 is none) and fuzzy skin
   const scarf = value('scarf_joint_seam_length');
   if (scarf !== undefined) {
@@ -367,7 +417,11 @@ export function mapCuraKeys(c: ImportContext): void {
   take('fuzzySkinThickness', ['magic_fuzzy_skin_thickness']);
   if (c.has('magic_fuzzy_skin_point_dist')) take('fuzzySkinPointDistance', ['magic_fuzzy_skin_point_dist']);
   else take('fuzzySkinPointDistance', ['magic_fuzzy_skin_point_density'], (perMm) => round(1 / perMm));
-  // variable-width walls (Cura 5): mm → % of the nozzle
+}
+
+/** Cura 5's variable-width (Arachne) walls, its mm turned into % of the nozzle. */
+function mapVariableWalls(m: CuraKeys): void {
+  const { c, take } = m;
   const arachne = [
     'min_feature_size',
     'min_bead_width',
@@ -382,8 +436,11 @@ export function mapCuraKeys(c: ImportContext): void {
   take('wallTransitionLength', ['wall_transition_length'], (mm) => percentOfNozzle(mm, nozzle));
   take('wallTransitionAngle', ['wall_transition_angle']);
   take('wallDistributionCount', ['wall_distribution_count'], (v) => Math.round(v));
+}
 
-  // infill
+/** Infill density, pattern, angle and overlap. */
+function mapInfill(m: CuraKeys): void {
+  const { c, str, take } = m;
   take('infillDensity', ['infill_sparse_density']);
   const pattern = str('infill_pattern');
   if (pattern !== undefined) {
@@ -393,16 +450,12 @@ export function mapCuraKeys(c: ImportContext): void {
   }
   take('infillAngle', ['infill_angles']);
   take('infillOverlap', ['infill_overlap']);
+}
 
-  // skin patterns: lines and zigzag are lines (monotonic with skin_monotonic), concentric concentric; the top
-  // skin takes the roofing's (Cura's topmost skin layers) unless the profile has no roofing layers
-  const skinPattern = (
-    pattern: string | undefined,
-    monotonic: string | undefined,
-  ): Settings['topSkinPattern'] | undefined => {
-    const id = CURA_SKIN[pattern ?? 'lines'];
-    return id === 'lines' && bool(monotonic) ? 'monotonic' : id;
-  };
+/** Skin patterns of the top (from the roofing) and bottom skins. */
+function mapSkinPatterns(m: CuraKeys): void {
+  const { c, value, str } = m;
+  // the top skin takes the roofing's pattern (Cura's topmost skin layers) unless the profile has no roofing layers
   const bottomKey = ['top_bottom_pattern', 'skin_monotonic'].find((k) => c.has(k));
   const base = str('top_bottom_pattern'),
     monotonic = str('skin_monotonic');
@@ -436,8 +489,12 @@ export function mapCuraKeys(c: ImportContext): void {
       "Strata's bottom skin has one pattern on every layer (bottomSkinPattern, from top_bottom_pattern)",
     );
   }
+}
 
-  // ironing: its flow is a share of a skin line's in Cura, of a line as wide as the ironing's spacing in Strata
+/** Ironing: on or off, which layers, spacing, speed and flow. */
+function mapIroning(m: CuraKeys): void {
+  const { c, value, str, take } = m;
+  // its flow is a share of a skin line's in Cura, of a line as wide as the ironing's spacing in Strata
   const ironing = str('ironing_enabled');
   if (ironing !== undefined) c.set('ironingEnabled', bool(ironing), 'ironing_enabled', 'not True or False');
   const highest = str('ironing_only_highest_layer');
@@ -460,8 +517,11 @@ export function mapCuraKeys(c: ImportContext): void {
     const spacing = c.settings.ironingSpacing ?? (SCHEMA.ironingSpacing.default as number);
     c.set('ironingFlow', round((ironingFlow * skinWidth) / spacing, 2), 'ironing_flow');
   } else if (c.has('ironing_flow')) c.reject('ironing_flow', 'a formula Strata cannot evaluate');
+}
 
-  // speeds
+/** Print and travel speeds, and the overhanging walls' speeds. */
+function mapSpeeds(m: CuraKeys, layerHeight: number): void {
+  const { c, value, str, take } = m;
   take('perimeterSpeed', ['speed_wall_0']);
   take('innerWallSpeed', ['speed_wall_x']);
   take('skinSpeed', ['speed_topbottom']);
@@ -470,8 +530,11 @@ export function mapCuraKeys(c: ImportContext): void {
   take('travelSpeed', ['speed_travel']);
   take('firstLayerTravelSpeed', ['speed_travel_layer_0']);
   overhangSpeeds(c, str, value, layerHeight);
+}
 
-  // temperatures and cooling
+/** Temperatures, fan and cooling, and flow. */
+function mapTemperaturesAndCooling(m: CuraKeys): void {
+  const { c, value, str, take } = m;
   take('nozzleTemperature', ['material_print_temperature']);
   if (c.has('material_print_temperature_layer_0'))
     take('firstLayerNozzleTemperature', ['material_print_temperature_layer_0']);
@@ -491,8 +554,11 @@ export function mapCuraKeys(c: ImportContext): void {
   take('minLayerTime', ['cool_min_layer_time']);
   take('minPrintSpeed', ['cool_min_speed']);
   take('flowRate', ['material_flow']);
+}
 
-  // retraction
+/** Retraction, combing, retraction at layer change, z-hop and the retraction limits. */
+function mapRetraction(m: CuraKeys): void {
+  const { c, value, str, take } = m;
   const retract = str('retraction_enable');
   if (retract !== undefined) c.set('retractionEnabled', bool(retract), 'retraction_enable', 'not True or False');
   take('retractionDistance', ['retraction_amount']);
@@ -531,13 +597,20 @@ export function mapCuraKeys(c: ImportContext): void {
   else if (countMax !== undefined) c.set('retractionCountMax', Math.round(countMax), 'retraction_count_max');
   else if (c.has('retraction_count_max')) c.reject('retraction_count_max', 'a formula Strata cannot evaluate');
   take('retractionExtrusionWindow', ['retraction_extrusion_window']);
-  // coasting: off unless coasting_enable
+}
+
+/** Coasting: off unless coasting_enable. */
+function mapCoasting(m: CuraKeys): void {
+  const { c, str, take } = m;
   const coasting = str('coasting_enable');
   if (coasting !== undefined && bool(coasting) === false) c.set('coastingVolume', 0, 'coasting_enable');
   else if (coasting !== undefined) take('coastingVolume', ['coasting_volume']);
   take('coastingMinVolume', ['coasting_min_volume']);
+}
 
-  // adhesion
+/** Adhesion type, skirt, brim and raft margin. */
+function mapAdhesion(m: CuraKeys): void {
+  const { c, str, take } = m;
   const adhesion = str('adhesion_type');
   if (adhesion !== undefined) {
     const map: Record<string, Settings['adhesionType']> = { skirt: 'skirt', brim: 'brim', raft: 'raft', none: 'none' };
@@ -552,7 +625,11 @@ export function mapCuraKeys(c: ImportContext): void {
   take('skirtDistance', ['skirt_gap']);
   take('brimWidth', ['brim_width']);
   take('raftMargin', ['raft_margin']);
+}
 
+/** One at a time printing and the head's clearances, then the raft's air gap. */
+function mapPrintSequence(m: CuraKeys): void {
+  const { c, str, take } = m;
   // one at a time: Cura's gantry height as the clearance height; the print head's outline (with its fans,
   // round the nozzle) as the radius of the circle round the nozzle that holds it
   const sequence = str('print_sequence');
@@ -568,20 +645,20 @@ export function mapCuraKeys(c: ImportContext): void {
   take('extruderClearanceHeight', ['gantry_height']);
   const head = str('machine_head_with_fans_polygon');
   if (head !== undefined) {
-    const corners = [...head.matchAll(/\[\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\]/g)].map((m) =>
-      Math.hypot(Number(m[1]), Number(m[2])),
+    const corners = [...head.matchAll(/\[\s*(-?[\d.]+)\s*,\s*(-?[\d.]+)\s*\]/g)].map((corner) =>
+      Math.hypot(Number(corner[1]), Number(corner[2])),
     );
     const reach = corners.length >= 3 && corners.every(Number.isFinite) ? round(Math.max(...corners), 2) : undefined;
     c.set('extruderClearanceRadius', reach, 'machine_head_with_fans_polygon', 'not a list of [x, y] corners');
   }
   take('raftAirGap', ['raft_airgap']);
+}
 
+/** Support: on or off, structure, placement, angle, pattern, density and gaps. */
+function mapSupport(m: CuraKeys): void {
+  const { c, str, take } = m;
   // support: Cura's overhang angle is measured from vertical, as Strata's; interface heights become layers
-  const flag = (key: string, setting: 'supportEnabled' | 'supportLimitRetractions') => {
-    const v = str(key);
-    if (v !== undefined) c.set(setting, bool(v), key, 'not True or False');
-  };
-  flag('support_enable', 'supportEnabled');
+  flag(m, 'support_enable', 'supportEnabled');
   const structure = str('support_structure');
   if (structure !== undefined) {
     c.set(
@@ -614,6 +691,11 @@ export function mapCuraKeys(c: ImportContext): void {
   take('supportZGap', ['support_top_distance', 'support_z_distance']);
   take('supportBottomZGap', ['support_bottom_distance']);
   take('supportXYGap', ['support_xy_distance']);
+}
+
+/** Support roofs and floors, interface density, line width, speeds, walls and minimum area. */
+function mapSupportLayers(m: CuraKeys, layerHeight: number): void {
+  const { c, str, take } = m;
   // roof and floor: on (Cura's default is off) for their height in layers, else none
   for (const [side, setting] of [
     ['roof', 'supportInterfaceLayers'],
@@ -632,6 +714,11 @@ export function mapCuraKeys(c: ImportContext): void {
   take('supportInterfaceSpeed', ['speed_support_roof', 'speed_support_interface']);
   take('supportWallCount', ['support_wall_count'], (v) => Math.round(v));
   take('supportMinArea', ['minimum_support_area']);
+}
+
+/** Tree support branches, then whether support travels limit retractions. */
+function mapTreeSupport(m: CuraKeys): void {
+  const { c, take } = m;
   take('supportTreeBranchAngle', ['support_tree_angle']);
   take('supportTreeBranchDiameter', ['support_tree_branch_diameter']);
   take('supportTreeTipDiameter', ['support_tree_tip_diameter']);
@@ -646,5 +733,35 @@ export function mapCuraKeys(c: ImportContext): void {
       (v) => tipSpacingOfDensity(lw, v) as Settings['supportTreeTipSpacing'],
     );
   }
-  flag('limit_support_retractions', 'supportLimitRetractions');
+  flag(m, 'limit_support_retractions', 'supportLimitRetractions');
+}
+
+/** Set a support switch from a True/False key. */
+function flag(m: CuraKeys, key: string, setting: 'supportEnabled' | 'supportLimitRetractions'): void {
+  const { c, str } = m;
+  const v = str(key);
+  if (v !== undefined) c.set(setting, bool(v), key, 'not True or False');
+}
+
+/** Map the Cura keys of `c` onto Strata settings (in this order: later mappings read earlier ones). */
+export function mapCuraKeys(c: ImportContext): void {
+  const m = curaKeys(c);
+  mapMachine(m);
+  mapMachineLimits(m);
+  const layerHeight = mapLayers(m);
+  mapWallsAndSkins(m, layerHeight);
+  mapSeamAndSurface(m);
+  mapVariableWalls(m);
+  mapInfill(m);
+  mapSkinPatterns(m);
+  mapIroning(m);
+  mapSpeeds(m, layerHeight);
+  mapTemperaturesAndCooling(m);
+  mapRetraction(m);
+  mapCoasting(m);
+  mapAdhesion(m);
+  mapPrintSequence(m);
+  mapSupport(m);
+  mapSupportLayers(m, layerHeight);
+  mapTreeSupport(m);
 }
