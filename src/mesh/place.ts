@@ -8,6 +8,7 @@
 import { StrataError } from '../errors.js';
 import { arrangeAll } from './arrange.js';
 import { isIdentity, modelMatrix, NO_TRANSFORM, type ModelTransform } from './model-transform.js';
+import { usedVertexBounds } from './prepare.js';
 import { transformPoints } from './transform.js';
 import type { Mesh, MeshObject, SettingsSource } from './types.js';
 
@@ -90,11 +91,11 @@ function usedBounds(mesh: Mesh, what: string, box: Box): void {
         'BAD_MESH',
         `${what}: triangle ${Math.floor(i / 3)} uses vertex ${v} but there are only ${nVerts} vertices`,
       );
-    for (let k = 0; k < 3; k++) {
-      const c = positions[v * 3 + k];
-      if (c < box.min[k]) box.min[k] = c;
-      if (c > box.max[k]) box.max[k] = c;
-    }
+  }
+  const { min, max } = usedVertexBounds(positions, indices);
+  for (let k = 0; k < 3; k++) {
+    if (min[k] < box.min[k]) box.min[k] = min[k];
+    if (max[k] > box.max[k]) box.max[k] = max[k];
   }
   if (![...box.min, ...box.max].every(Number.isFinite)) {
     throw new StrataError('BAD_MESH', `${what}: the model has coordinates that are not finite numbers`);

@@ -4,6 +4,7 @@
  * printing the objects' order (with the print head's clearances checked).
  */
 import { StrataError } from '../errors.js';
+import { usedVertexBounds } from '../mesh/prepare.js';
 import { UM_PER_MM, type Pt } from '../geometry/types.js';
 import type { InfillParams } from '../infill/types.js';
 import type { PrintSetup } from '../regions/objects.js';
@@ -66,21 +67,9 @@ function bedCentre(cfg: Config): Pt {
 
 /** Infill parameters of one object: its bounding-box centre is the pattern origin with object centering. */
 function infillParamsFor(cfg: Config, object: PlacedObject): InfillParams {
-  const p = object.mesh.positions;
-  let x0 = Infinity,
-    y0 = Infinity,
-    x1 = -Infinity,
-    y1 = -Infinity;
-  const idx = object.mesh.indices;
-  for (let i = 0; i < idx.length; i++) {
-    const v = idx[i];
-    const x = p[3 * v],
-      y = p[3 * v + 1];
-    if (x < x0) x0 = x;
-    if (x > x1) x1 = x;
-    if (y < y0) y0 = y;
-    if (y > y1) y1 = y;
-  }
+  const { min, max } = usedVertexBounds(object.mesh.positions, object.mesh.indices);
+  const [x0, y0] = min,
+    [x1, y1] = max;
   const objCentre: Pt = { x: Math.round(((x0 + x1) / 2) * UM_PER_MM), y: Math.round(((y0 + y1) / 2) * UM_PER_MM) };
   return {
     density: cfg.infillDensity / 100,
