@@ -118,7 +118,8 @@ function overlapGroups(
   objects: readonly PlacedObject[],
   objectConfig: readonly number[],
 ): { groupOf: number[]; overlapPairs: Array<[number, number]> } {
-  const boxes: Box[] = objects.map((o) => positionBounds(o.mesh.positions));
+  // one object overlaps nothing: its bounds (a pass over every vertex) are not needed
+  const boxes: Box[] = objects.length > 1 ? objects.map((o) => positionBounds(o.mesh.positions)) : [];
   const parent = objects.map((_, i) => i);
   const find = (i: number): number => (parent[i] === i ? i : (parent[i] = find(parent[i])));
   const overlapPairs: Array<[number, number]> = [];
