@@ -187,20 +187,36 @@ function countEdges(indices: Uint32Array, nVerts: number): EdgeCounts {
   return { open, nonManifold, flipped };
 }
 
+/** A bounding box, mm. */
+interface Box3 {
+  min: [number, number, number];
+  max: [number, number, number];
+}
+
 /**
  * Bounding box of the vertices the triangles use, mm (all Infinity / -Infinity when they use none): the box of the
  * triangles' corners, found by marking the vertices used and then reading those in memory order (on 3DBenchy about
  * half the time of reading the corners in triangle order, which jumps about the positions). Every index must be below
  * the vertex count.
  */
-export function usedVertexBounds(
-  p: Float32Array,
-  indices: Uint32Array,
-): { min: [number, number, number]; max: [number, number, number] } {
-  // a last vertex cut short is still read (its missing coordinates compare false, as they would in triangle order)
-  const n = Math.ceil(p.length / 3);
-  const used = new Uint8Array(n);
+export function usedVertexBounds(p: Float32Array, indices: Uint32Array): Box3 {
+  const used = new Uint8Array(Math.ceil(p.length / 3));
   for (let i = 0; i < indices.length; i++) used[indices[i]] = 1;
+  return vertexBounds(p, used);
+}
+
+/** Bounding box of a position array (x,y,z per vertex), mm. */
+export function positionBounds(p: Float32Array): Box3 {
+  if (p.length === 0) return { min: [0, 0, 0], max: [0, 0, 0] };
+  return vertexBounds(p, null);
+}
+
+/**
+ * The box of the vertices `used` marks (of every vertex without it). A last vertex cut short is still read: its
+ * missing coordinates compare false.
+ */
+function vertexBounds(p: Float32Array, used: Uint8Array | null): Box3 {
+  const n = Math.ceil(p.length / 3);
   let x0 = Infinity,
     y0 = Infinity,
     z0 = Infinity;
@@ -208,30 +224,7 @@ export function usedVertexBounds(
     y1 = -Infinity,
     z1 = -Infinity;
   for (let v = 0, i = 0; v < n; v++, i += 3) {
-    if (used[v] === 0) continue;
-    const x = p[i],
-      y = p[i + 1],
-      z = p[i + 2];
-    if (x < x0) x0 = x;
-    if (x > x1) x1 = x;
-    if (y < y0) y0 = y;
-    if (y > y1) y1 = y;
-    if (z < z0) z0 = z;
-    if (z > z1) z1 = z;
-  }
-  return { min: [x0, y0, z0], max: [x1, y1, z1] };
-}
-
-/** Bounding box of a position array (x,y,z per vertex), mm. */
-export function positionBounds(p: Float32Array): { min: [number, number, number]; max: [number, number, number] } {
-  if (p.length === 0) return { min: [0, 0, 0], max: [0, 0, 0] };
-  let x0 = Infinity,
-    y0 = Infinity,
-    z0 = Infinity;
-  let x1 = -Infinity,
-    y1 = -Infinity,
-    z1 = -Infinity;
-  for (let i = 0; i < p.length; i += 3) {
+    if (used !== null && used[v] === 0) continue;
     const x = p[i],
       y = p[i + 1],
       z = p[i + 2];
