@@ -23,6 +23,12 @@ const MAX_PASSES = 6;
 const GAIN = 1;
 /** Longest run of stops or-opt moves. */
 const MAX_MOVE = 3;
+/**
+ * Or-opt passes over a place only when the axis steps of its legs exceed what the move may cost by this, µm: far
+ * more than the rounding of the distances it bounds (whole-µm points, sums of a few square roots), so the places
+ * passed over are exactly those the full test would refuse.
+ */
+const PRUNE_MARGIN_UM = 1e-3;
 
 /**
  * A shorter order of `stops` (given in print order, from `from`, then on to `to` when given): the stops'
@@ -101,13 +107,17 @@ class Gaps {
 
   /** The travel into positions a … b again (lo ≤ a ≤ b ≤ hi). */
   refresh(a: number, b: number): void {
-    const { ix, iy, ox, oy } = this.t;
-    const { lo, hi, from, to, gap } = this;
+    const { ox, oy } = this.t;
+    const { lo, from, gap } = this;
     for (let k = a; k <= b; k++) {
-      const x = k === lo ? from.x : ox[k - 1],
-        y = k === lo ? from.y : oy[k - 1];
-      gap[k - lo] = k === hi ? (to === null ? 0 : dist(x, y, to.x, to.y)) : dist(x, y, ix[k], iy[k]);
+      gap[k - lo] = k === lo ? this.into(from.x, from.y, k) : this.into(ox[k - 1], oy[k - 1], k);
     }
+  }
+
+  /** The travel from (x, y) into position k (lo ≤ k ≤ hi; into hi: on to the end point, 0 when there is none). */
+  into(x: number, y: number, k: number): number {
+    if (k === this.hi) return this.to === null ? 0 : dist(x, y, this.to.x, this.to.y);
+    return dist(x, y, this.t.ix[k], this.t.iy[k]);
   }
 }
 
@@ -130,8 +140,7 @@ function shortenWindow(t: Tour, lo: number, hi: number, from: Pt, to: Pt | null)
       for (let j = i; j < hi; j++) {
         const before = gap[i - lo] + gap[j + 1 - lo];
         // the exit before i into j's exit (now the stretch's entry), and i's entry (now its exit) on into j + 1
-        const on = j + 1 === hi ? (open ? 0 : dist(ix[i], iy[i], tx, ty)) : dist(ix[i], iy[i], ix[j + 1], iy[j + 1]);
-        const after = dist(px, py, ox[j], oy[j]) + on;
+        const after = dist(px, py, ox[j], oy[j]) + gaps.into(ix[i], iy[i], j + 1);
         if (after < before - GAIN) {
           reverse(t, i, j);
           gaps.refresh(i, j + 1);
@@ -146,8 +155,7 @@ function shortenWindow(t: Tour, lo: number, hi: number, from: Pt, to: Pt | null)
         const sx = s === lo ? fx : ox[s - 1],
           sy = s === lo ? fy : oy[s - 1];
         // travel saved by taking the run out
-        const bridge = e + 1 === hi ? (open ? 0 : dist(sx, sy, tx, ty)) : dist(sx, sy, ix[e + 1], iy[e + 1]);
-        const gain = gap[s - lo] + gap[e + 1 - lo] - bridge;
+        const gain = gap[s - lo] + gap[e + 1 - lo] - gaps.into(sx, sy, e + 1);
         if (gain <= GAIN) continue;
         const inX = ix[s],
           inY = iy[s],
@@ -165,7 +173,7 @@ function shortenWindow(t: Tour, lo: number, hi: number, from: Pt, to: Pt | null)
           // a move is worth it only when its cost is under gain - best - GAIN; no leg is shorter than its longer
           // axis step, so a place both ways of which cost more than that even so is passed over (a margin keeps
           // rounding from passing over one the exact test would take)
-          const limit = gain - best - GAIN + 1e-3 + g;
+          const limit = gain - best - GAIN + PRUNE_MARGIN_UM + g;
           const endX = p === hi ? tx : ix[p],
             endY = p === hi ? ty : iy[p];
           const last = p === hi && open;
